@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common/file_io.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+
+namespace tactus {
+
+Result<std::string> read_file(const std::filesystem::path& path, std::size_t max_bytes) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        return fail("is a directory, not a file", path.string());
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fail(std::string("cannot open: ") + std::strerror(errno), path.string());
+    in.seekg(0, std::ios::end);
+    const auto size = in.tellg();
+    if (size < 0) return fail("cannot determine file size", path.string());
+    if (static_cast<std::size_t>(size) > max_bytes)
+        return fail("file is " + std::to_string(static_cast<long long>(size)) +
+                        " bytes, above the limit of " + std::to_string(max_bytes),
+                    path.string());
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.seekg(0, std::ios::beg);
+    in.read(bytes.data(), size);
+    if (!in) return fail("read error", path.string());
+    return bytes;
+}
+
+Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
+    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::random_device rd;
+    const auto tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) return fail(std::string("cannot create: ") + std::strerror(errno), tmp.string());
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const auto n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const std::string why = std::strerror(errno);
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            return fail("write failed: " + why, path.string());
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        const std::string why = std::strerror(errno);
+        ::unlink(tmp.c_str());
+        return fail("cannot flush to disk: " + why, path.string());
+    }
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        ::unlink(tmp.c_str());
+        return fail("cannot replace file: " + why, path.string());
+    }
+    return {};
+}
+
+}  // namespace tactus

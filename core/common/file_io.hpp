@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "common/result.hpp"
+
+namespace tactus {
+
+// Reads a whole file as bytes. Refuses files above `max_bytes` with a clear error
+// instead of exhausting memory on a mistaken argument.
+Result<std::string> read_file(const std::filesystem::path& path,
+                              std::size_t max_bytes = std::size_t{512} << 20);
+
+// Writes atomically: a temporary file in the same directory, fsync, rename.
+// A crash leaves either the old file or the new one, never half of either.
+Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+
+}  // namespace tactus

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The document model every importer produces and the translator consumes:
+// a flat list of blocks, each a run of styled text, or braille taken verbatim.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "document/cell.hpp"
+
+namespace tactus {
+
+// Bit flags, combinable; mapped to liblouis typeforms by the translator.
+enum Emphasis : std::uint8_t {
+    emphasis_none = 0,
+    emphasis_italic = 1u << 0,
+    emphasis_bold = 1u << 1,
+    emphasis_underline = 1u << 2,
+};
+
+struct Span {
+    std::string text;  // UTF-8
+    std::uint8_t emphasis = emphasis_none;
+    bool operator==(const Span&) const = default;
+};
+
+enum class BlockKind : std::uint8_t {
+    heading,          // level 1..6
+    paragraph,
+    list_item,        // level = nesting depth, 1-based
+    print_page_break, // source page break; `label` is the print page that starts here
+    braille_page_break,  // force a new braille page (BRF form feed, PEF page end)
+    braille,          // verbatim braille lines (BRF, PEF); not translated
+};
+
+struct Block {
+    BlockKind kind = BlockKind::paragraph;
+    int level = 0;
+    std::vector<Span> spans;                 // heading, paragraph, list_item
+    std::vector<BrailleLine> braille_lines;  // kind == braille
+    std::string label;                       // print_page_break: page number as printed
+    int source_line = 0;                     // 1-based line in the source, 0 if unknown
+    bool operator==(const Block&) const = default;
+
+    // The plain text of all spans, for display and tests.
+    [[nodiscard]] std::string text() const {
+        std::string out;
+        for (const auto& s : spans) out += s.text;
+        return out;
+    }
+};
+
+struct Document {
+    std::vector<Block> blocks;
+    std::string source_name;  // file name the document came from, for messages
+    std::string encoding;     // detected or given source encoding (text imports)
+    bool operator==(const Document&) const = default;
+};
+
+}  // namespace tactus

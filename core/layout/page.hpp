@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The output of layout: braille pages on sheets. Planning, export, preview and the
+// spool all read these types.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "document/cell.hpp"
+
+namespace tactus {
+
+struct Page {
+    std::vector<BrailleLine> lines;  // at most lines_per_page; each at most cells_per_line
+    int braille_number = 0;          // 1-based braille page number
+    std::string print_page;          // print page in effect at the top of this page ("" if none)
+    bool operator==(const Page&) const = default;
+};
+
+// One physical sheet. On interpoint paper the back is the next page, embossed
+// on the reverse; single-sided sheets have no back.
+struct Sheet {
+    std::size_t number = 0;  // 1-based
+    const Page* front = nullptr;
+    const Page* back = nullptr;
+};
+
+struct PageGeometry {
+    int cells_per_line = 27;  // the source embosser's A4 format
+    int lines_per_page = 24;
+    bool interpoint = true;
+    bool eight_dot = false;
+    bool operator==(const PageGeometry&) const = default;
+};
+
+struct PagedDocument {
+    PageGeometry geometry;
+    std::vector<Page> pages;
+
+    [[nodiscard]] std::size_t sheet_count() const {
+        return geometry.interpoint ? (pages.size() + 1) / 2 : pages.size();
+    }
+    // Sheet n (1-based) points into `pages`; valid while this object lives unchanged.
+    [[nodiscard]] Sheet sheet(std::size_t number) const {
+        Sheet s;
+        s.number = number;
+        if (geometry.interpoint) {
+            const auto i = 2 * (number - 1);
+            s.front = i < pages.size() ? &pages[i] : nullptr;
+            s.back = i + 1 < pages.size() ? &pages[i + 1] : nullptr;
+        } else {
+            s.front = number - 1 < pages.size() ? &pages[number - 1] : nullptr;
+        }
+        return s;
+    }
+};
+
+}  // namespace tactus
