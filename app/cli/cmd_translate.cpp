@@ -1,0 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "command.hpp"
+
+namespace tactus::cli {
+void add_translate_command(CLI::App& app) { app.add_subcommand("translate", "(not yet implemented)"); }
+}  // namespace tactus::cli

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <iostream>
+
+#include "command.hpp"
+
+int main(int argc, char** argv) {
+    using namespace tactus::cli;
+    CLI::App app{"Tactus: translate, lay out and emboss braille", "tactus-cli"};
+    app.set_version_flag("--version", "tactus-cli 0.1.0");
+    app.require_subcommand(1);
+    add_translate_command(app);
+    add_layout_command(app);
+    add_tables_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    } catch (const CommandFailed& e) {
+        std::cerr << "tactus-cli: " << e.what() << '\n';
+        return e.code;
+    }
+    return exit_ok;
+}
