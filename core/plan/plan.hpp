@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The plan: what the controller executes for a job. Produced by the plan stage,
+// timed by estimate, encoded into frames by encode, executed by the (simulated)
+// 89C52. The host plans everything; the controller only counts steps and fires.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tactus::plan {
+
+enum class Side : std::uint8_t { front, back };
+// The convex hammer raises dots toward the front side, the concave one toward the back.
+enum class Hammer : std::uint8_t { convex, concave };
+
+// Klipper-style step compression: `count` steps, the first `interval` timer ticks
+// after the previous step, each following interval `add` ticks longer (negative:
+// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz, so the
+// controller only adds 16-bit numbers.
+struct StepSegment {
+    std::uint16_t interval = 0;
+    std::uint16_t count = 0;
+    std::int16_t add = 0;
+    bool operator==(const StepSegment&) const = default;
+};
+
+inline constexpr double kTickHz = 11'059'200.0 / 12.0;
+
+// One axis move in whole motor steps, with its step timing.
+struct StepMove {
+    std::int32_t steps = 0;  // signed: direction is the sign
+    std::vector<StepSegment> segments;
+    double duration_s = 0;
+    bool operator==(const StepMove&) const = default;
+};
+
+struct Strike {
+    Hammer hammer = Hammer::convex;
+    Side side = Side::front;
+    double x_mm = 0;  // dot position on the paper, in that side's reading coordinates
+    double y_mm = 0;
+    std::int32_t carriage_step = 0;  // absolute carriage position when it fires
+    double time_s = 0;               // from the start of the job
+    bool operator==(const Strike&) const = default;
+};
+
+// One paper position (dot row) and the strikes of either hammer made there.
+struct Pass {
+    std::size_t sheet = 0;  // 1-based
+    Side side = Side::front;
+    double y_mm = 0;               // paper position of this dot row
+    std::int32_t feed_step = 0;    // absolute paper-feed position
+    int direction = +1;            // carriage sweep direction, +1 or -1
+    StepMove feed;                 // paper feed from the previous pass
+    std::vector<StepMove> moves;   // moves[i] brings the carriage to strikes[i]
+    std::vector<Strike> strikes;
+    double duration_s = 0;
+    bool operator==(const Pass&) const = default;
+};
+
+struct SheetPlan {
+    std::size_t index = 0;  // 1-based
+    std::vector<Pass> passes;
+    double duration_s = 0;
+};
+
+struct JobPlan {
+    std::vector<SheetPlan> sheets;
+    double duration_s = 0;
+    double lower_bound_s = 0;
+    std::size_t strikes = 0;
+    double max_residual_um = 0;
+};
+
+}  // namespace tactus::plan
