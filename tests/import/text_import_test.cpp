@@ -36,6 +36,21 @@ TEST(TextImport, CrLfAndLoneCrEndLinesLikeLf) {
     EXPECT_EQ(lf->blocks[1].source_line, 4);
 }
 
+// A text without a single blank line between lines (verse per line, a list of
+// words) has no paragraph marks but its line ends: each line is a paragraph.
+TEST(TextImport, WithoutAnyBlankLineEachLineIsAParagraph) {
+    const auto doc = import_bytes("Ge1:1 In the beginning.\nGe1:2 And the earth.\n\n", "kjv.txt");
+    ASSERT_TRUE(doc);
+    ASSERT_EQ(doc->blocks.size(), 2u);
+    EXPECT_EQ(doc->blocks[0].text(), "Ge1:1 In the beginning.");
+    EXPECT_EQ(doc->blocks[1].text(), "Ge1:2 And the earth.");
+    EXPECT_EQ(doc->blocks[1].source_line, 2);
+    // One blank line anywhere between text switches to blank-line paragraphs.
+    const auto wrapped = import_bytes("a\nb\n\nc\n", "x.txt");
+    ASSERT_TRUE(wrapped);
+    EXPECT_EQ(wrapped->blocks.size(), 2u);
+}
+
 TEST(TextImport, FormFeedInsideALineSplitsTheParagraphAndPagesAreNumbered) {
     const auto doc = import_bytes("one\ftwo\n\fthree\n", "x.txt");
     ASSERT_TRUE(doc);
