@@ -8,7 +8,7 @@ if [ "$(id -u)" -ne 0 ]; then
   SUDO=sudo
 fi
 packages=(
-  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev
+  build-essential cmake ninja-build pkg-config clang-16 libclang-rt-16-dev
   liblouis-dev liblouis-bin liblouis-data
   libserialport-dev libhidapi-dev libieee1284-3-dev libsqlite3-dev
   libpugixml-dev nlohmann-json3-dev libcli11-dev libuchardet-dev libicu-dev
