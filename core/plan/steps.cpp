@@ -14,10 +14,28 @@ std::int32_t StepAxis::steps_for(double mm) const {
 
 std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps,
                                      double steps_per_mm) {
+    // Step targets ascend, and so does time: walk the pieces once, and inside a
+    // piece bisect only to a small fraction of a tick.
     std::vector<double> t;
     t.reserve(steps);
-    for (std::uint32_t k = 1; k <= steps; ++k)
-        t.push_back(shape.time_at((k - 0.5) / steps_per_mm) * kTickHz);
+    const auto& pcs = shape.pieces;
+    std::size_t i = 0;
+    for (std::uint32_t k = 1; k <= steps; ++k) {
+        const double p = (k - 0.5) / steps_per_mm;
+        while (i + 1 < pcs.size() && pcs[i + 1].d[0] < p) ++i;
+        if (pcs.empty()) {
+            t.push_back(0);
+            continue;
+        }
+        const Piece& pc = pcs[i];
+        double lo = 0, hi = pc.dt;
+        while (hi - lo > 1e-4 / kTickHz) {
+            const double mid = 0.5 * (lo + hi);
+            if (advance_derivs(pc.d, mid)[0] < p) lo = mid;
+            else hi = mid;
+        }
+        t.push_back((pc.t0 + hi) * kTickHz);
+    }
     return t;
 }
 
