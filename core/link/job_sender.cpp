@@ -26,6 +26,7 @@ struct JobState {
     double fault_since = -1;
     double last_resume = -1;
     std::string last_note;
+    ControllerState last_state = ControllerState::idle;
 
     [[nodiscard]] std::size_t sheet_of(std::size_t pass) const {
         if (pass < table.size()) return table[pass].sheet;
@@ -166,6 +167,11 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             step = send(FrameType::resume, {});
         }
         report_executed();
+        if (ack.state != js.last_state) {
+            js.last_state = ack.state;
+            if (ack.state == ControllerState::paused || ack.state == ControllerState::fault)
+                note(std::string("controller ") + encode::state_name(ack.state));
+        }
 
         const bool this_job = ack.job_id == js.job_id;
         if (js.reported == js.table.size() && js.next_chunk == js.chunks.size() && unacked.empty() &&

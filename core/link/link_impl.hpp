@@ -4,6 +4,7 @@
 // controller last reported. link.cpp has the request/reply calls, job_sender.cpp
 // the job streaming.
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <deque>
 #include <optional>
@@ -195,7 +196,9 @@ struct Link::Impl {
     // Reads whatever arrives within `timeout` and handles each frame.
     Result<void> pump(double timeout_s) {
         std::array<std::uint8_t, 512> buf{};
-        auto n = s->read(buf, microseconds(static_cast<std::int64_t>(std::max(0.0, timeout_s) * 1e6)));
+        // Rounded up and at least 1 us, so a wait always moves the clock forward.
+        auto n = s->read(buf, microseconds(std::max<std::int64_t>(
+                                  1, static_cast<std::int64_t>(std::ceil(timeout_s * 1e6)))));
         if (!n) return std::unexpected(device_error(n.error()));
         std::vector<Frame> frames;
         decoder.push(std::span(buf).first(*n), frames);
