@@ -37,6 +37,8 @@ struct PageGeometry {
 struct PagedDocument {
     PageGeometry geometry;
     std::vector<Page> pages;
+    // Things the reader should know that did not stop the layout, as "line N: why".
+    std::vector<std::string> warnings;
 
     [[nodiscard]] std::size_t sheet_count() const {
         return geometry.interpoint ? (pages.size() + 1) / 2 : pages.size();

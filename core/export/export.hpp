@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Paged braille to the formats embossers and braille readers take.
+#include <string>
+#include <string_view>
+
+#include "common/result.hpp"
+#include "layout/page.hpp"
+
+namespace tactus {
+
+enum class ExportFormat { brf, pef, unicode };
+
+Result<ExportFormat> parse_export_format(std::string_view);
+
+struct PefMetadata {
+    std::string title = "Untitled";
+    std::string identifier;  // empty: derived from the content
+    std::string language;    // BCP 47, e.g. "en" or "zh-TW"; empty: omitted
+    std::string date;        // YYYY-MM-DD; empty: omitted
+};
+
+// Braille ASCII: CRLF after every line, a form feed after every page (blank
+// backs included, so an interpoint embosser stays in step). Fails on dots 7-8,
+// which BRF cannot carry, naming the page and line.
+Result<std::string> to_brf(const PagedDocument& doc);
+
+// PEF 2008-1: one volume, one section; duplex from the geometry.
+Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta = {});
+
+// Unicode braille text: LF line ends, a form feed between pages.
+std::string to_unicode(const PagedDocument& doc);
+
+Result<std::string> export_document(const PagedDocument& doc, ExportFormat format,
+                                    const PefMetadata& meta = {});
+
+}  // namespace tactus

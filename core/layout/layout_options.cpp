@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "layout/layout_options.hpp"
+
+#include <algorithm>
+
+namespace tactus {
+
+const std::vector<LayoutPreset>& layout_presets() {
+    static const std::vector<LayoutPreset> presets = {
+        {"a4", "A4, 27 cells x 24 lines, interpoint (the source embosser)", 210.0, 297.0,
+         {27, 24, true, false}},
+        {"a4-single", "A4, 27 cells x 24 lines, single-sided", 210.0, 297.0,
+         {27, 24, false, false}},
+        {"us-braille", "11 x 11.5 in, 40 cells x 25 lines, interpoint", 279.4, 292.1,
+         {40, 25, true, false}},
+        {"letter", "8.5 x 11 in, 34 cells x 25 lines, interpoint", 215.9, 279.4,
+         {34, 25, true, false}},
+    };
+    return presets;
+}
+
+std::optional<LayoutPreset> find_layout_preset(std::string_view name) {
+    const auto& p = layout_presets();
+    const auto it = std::ranges::find(p, name, &LayoutPreset::name);
+    if (it == p.end()) return std::nullopt;
+    return *it;
+}
+
+Result<PageNumberPosition> parse_page_number_position(std::string_view s) {
+    if (s == "none") return PageNumberPosition::none;
+    if (s == "top-right") return PageNumberPosition::top_right;
+    if (s == "bottom-right") return PageNumberPosition::bottom_right;
+    if (s == "bottom-centre" || s == "bottom-center") return PageNumberPosition::bottom_centre;
+    return fail("unknown page number position '" + std::string(s) +
+                    "' (none, top-right, bottom-right, bottom-centre)",
+                "--page-numbers");
+}
+
+Result<void> validate(const LayoutOptions& o) {
+    const auto& g = o.geometry;
+    if (g.cells_per_line < 4 || g.cells_per_line > 200)
+        return fail("cells per line must be between 4 and 200", "cells_per_line");
+    if (g.lines_per_page < 3 || g.lines_per_page > 200)
+        return fail("lines per page must be between 3 and 200", "lines_per_page");
+    if (o.left_margin < 0 || o.right_margin < 0 || o.top_margin < 0 || o.bottom_margin < 0)
+        return fail("margins cannot be negative", "margins");
+    const int width = g.cells_per_line - o.left_margin - o.right_margin;
+    if (width < 4) return fail("margins leave fewer than 4 cells per line", "margins");
+    if (g.lines_per_page - o.top_margin - o.bottom_margin < 3)
+        return fail("margins leave fewer than 3 lines per page", "margins");
+    if (o.paragraph_indent < 0 || o.paragraph_indent >= width)
+        return fail("paragraph indent must be smaller than the line", "paragraph_indent");
+    if (o.list_runover < 0 || o.list_runover >= width / 2)
+        return fail("list runover indent too large for the line", "list_runover");
+    if (o.first_page_number < 0) return fail("page numbers start at 0 or above", "first_page_number");
+    return {};
+}
+
+}  // namespace tactus

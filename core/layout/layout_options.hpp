@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.hpp"
+#include "layout/page.hpp"
+
+namespace tactus {
+
+enum class PageNumberPosition { none, top_right, bottom_right, bottom_centre };
+
+struct LayoutOptions {
+    PageGeometry geometry;  // 27 x 24, interpoint: the source embosser's A4 format
+    // Margins inside the cell grid (the paper margins live in the printer profile).
+    int left_margin = 0;    // cells
+    int right_margin = 0;   // cells
+    int top_margin = 0;     // lines
+    int bottom_margin = 0;  // lines
+    int paragraph_indent = 2;        // blank cells before a paragraph's first line
+    int list_runover = 2;            // extra indent of a list item's following lines
+    bool centre_headings = true;     // levels 1 and 2; deeper headings start at cell 5
+    bool blank_line_before_heading = true;
+    bool blank_line_after_heading = true;  // after level-1 headings
+    bool blank_line_between_paragraphs = false;
+    PageNumberPosition page_numbers = PageNumberPosition::bottom_right;
+    bool print_page_indicators = true;
+    int first_page_number = 1;
+};
+
+// Named formats a teacher picks from; the default is the source embosser's.
+struct LayoutPreset {
+    std::string name;
+    std::string description;
+    double paper_width_mm = 0;
+    double paper_height_mm = 0;
+    PageGeometry geometry;
+};
+
+const std::vector<LayoutPreset>& layout_presets();
+std::optional<LayoutPreset> find_layout_preset(std::string_view name);
+
+Result<PageNumberPosition> parse_page_number_position(std::string_view);
+
+// Rejects geometries in which no text fits, naming the offending option.
+Result<void> validate(const LayoutOptions& options);
+
+}  // namespace tactus

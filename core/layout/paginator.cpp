@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "layout/paginator.hpp"
+
+#include <algorithm>
+
+#include "layout/line_breaker.hpp"
+
+namespace tactus {
+namespace {
+
+constexpr Cell kGuideDots{0x24};  // dots 3-6: the print-page separator line
+
+bool is_blank(const BrailleLine& l) { return std::ranges::all_of(l, &Cell::blank); }
+
+void trim_right(BrailleLine& l) {
+    while (!l.empty() && l.back().blank()) l.pop_back();
+}
+
+}  // namespace
+
+Paginator::Paginator(LayoutOptions options, std::function<BrailleLine(int)> number_cells)
+    : o_(std::move(options)), number_cells_(std::move(number_cells)) {
+    doc_.geometry = o_.geometry;
+}
+
+bool Paginator::numbered(std::size_t page_index) const {
+    if (o_.page_numbers == PageNumberPosition::none) return false;
+    // Interpoint: only the front of each sheet carries a number.
+    return !o_.geometry.interpoint || page_index % 2 == 0;
+}
+
+int Paginator::width() const {
+    return o_.geometry.cells_per_line - o_.left_margin - o_.right_margin;
+}
+
+int Paginator::body_capacity() const {
+    const int lines = o_.geometry.lines_per_page - o_.top_margin - o_.bottom_margin;
+    return numbered(doc_.pages.size()) ? lines - 1 : lines;
+}
+
+void Paginator::add_line(BrailleLine line, int source_line) {
+    if (static_cast<int>(body_.size()) >= body_capacity()) close_page();
+    if (!o_.geometry.eight_dot) {
+        bool stripped = false;
+        for (auto& c : line) {
+            if (c.dots & 0xC0) {
+                c.dots &= 0x3F;
+                stripped = true;
+            }
+        }
+        if (stripped)
+            doc_.warnings.push_back(
+                (source_line > 0 ? "line " + std::to_string(source_line) + ": " : std::string{}) +
+                "cells with dots 7-8 (often a character the table does not know) shown as 6-dot;"
+                " use 8-dot layout to keep them");
+    }
+    trim_right(line);
+    if (body_.empty()) page_top_print_page_ = print_page_;
+    body_.push_back(std::move(line));
+}
+
+void Paginator::add_blank_line() {
+    // Never at the top of a page, never two in a row, never as the last body line.
+    if (body_.empty() || is_blank(body_.back())) return;
+    if (static_cast<int>(body_.size()) + 1 >= body_capacity()) {
+        close_page();
+        return;
+    }
+    body_.emplace_back();
+}
+
+void Paginator::break_page() {
+    if (!body_.empty()) close_page();
+}
+
+void Paginator::close_page() {
+    Page page;
+    const std::size_t index = doc_.pages.size();
+    page.braille_number = o_.first_page_number + static_cast<int>(index);
+    page.print_page = body_.empty() ? print_page_ : page_top_print_page_;
+    const auto& g = o_.geometry;
+    page.lines.assign(static_cast<std::size_t>(g.lines_per_page), BrailleLine{});
+
+    // Remove a trailing blank line left by a block rule.
+    while (!body_.empty() && is_blank(body_.back())) body_.pop_back();
+
+    const bool has_number = numbered(index);
+    const bool number_on_top = has_number && o_.page_numbers == PageNumberPosition::top_right;
+    std::size_t row = static_cast<std::size_t>(o_.top_margin) + (number_on_top ? 1 : 0);
+    const BrailleLine indent(static_cast<std::size_t>(o_.left_margin), Cell{});
+    for (auto& l : body_) {
+        if (!l.empty()) {
+            BrailleLine full = indent;
+            full.insert(full.end(), l.begin(), l.end());
+            page.lines[row] = std::move(full);
+        }
+        ++row;
+    }
+    if (has_number) {
+        const auto number = number_cells_(page.braille_number);
+        const auto line_index = number_on_top
+                                    ? static_cast<std::size_t>(o_.top_margin)
+                                    : static_cast<std::size_t>(g.lines_per_page - o_.bottom_margin - 1);
+        const int right_edge = g.cells_per_line - o_.right_margin;
+        const int len = static_cast<int>(number.size());
+        int start = o_.page_numbers == PageNumberPosition::bottom_centre
+                        ? o_.left_margin + (width() - len) / 2
+                        : right_edge - len;
+        start = std::max(start, 0);
+        BrailleLine l(static_cast<std::size_t>(start), Cell{});
+        l.insert(l.end(), number.begin(), number.end());
+        if (static_cast<int>(l.size()) > g.cells_per_line)
+            l.resize(static_cast<std::size_t>(g.cells_per_line));
+        page.lines[line_index] = std::move(l);
+    }
+    doc_.pages.push_back(std::move(page));
+    body_.clear();
+}
+
+void Paginator::add_wrapped(const BrailleLine& cells, int first, int runover, bool centre,
+                            int source_line) {
+    auto lines = break_lines(cells, width(), first, runover);
+    for (auto& l : lines) {
+        if (centre) {
+            trim_right(l);
+            const auto pad = static_cast<std::size_t>(std::max(0, (width() - static_cast<int>(l.size())) / 2));
+            l.insert(l.begin(), pad, Cell{});
+        }
+        add_line(std::move(l), source_line);
+    }
+}
+
+void Paginator::add(const TranslatedBlock& b) {
+    switch (b.kind) {
+        case BlockKind::heading: {
+            if (o_.blank_line_before_heading) add_blank_line();
+            // Keep a heading off the last body line of a page: it would head nothing.
+            if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
+            const bool centred = o_.centre_headings && b.level <= 2;
+            add_wrapped(b.cells, centred ? 0 : 4, centred ? 0 : 4, centred, b.source_line);
+            if (o_.blank_line_after_heading && b.level <= 1) add_blank_line();
+            break;
+        }
+        case BlockKind::paragraph:
+            if (o_.blank_line_between_paragraphs) add_blank_line();
+            add_wrapped(b.cells, o_.paragraph_indent, 0, false, b.source_line);
+            break;
+        case BlockKind::list_item: {
+            const int indent = std::min(2 * std::max(b.level - 1, 0), width() / 2);
+            add_wrapped(b.cells, indent, indent + o_.list_runover, false, b.source_line);
+            break;
+        }
+        case BlockKind::print_page_break: {
+            print_page_ = to_unicode_text(b.label);
+            if (!o_.print_page_indicators || body_.empty()) break;
+            // A separator line of dots 3-6 ending in the new print page number.
+            const auto w = static_cast<std::size_t>(width());
+            BrailleLine l(w, kGuideDots);
+            const auto n = std::min(b.label.size(), w / 2);
+            std::copy(b.label.begin(), b.label.begin() + static_cast<std::ptrdiff_t>(n),
+                      l.end() - static_cast<std::ptrdiff_t>(n));
+            if (static_cast<int>(body_.size()) + 1 >= body_capacity()) {
+                close_page();  // a separator as a page's last line separates nothing
+                page_top_print_page_ = print_page_;
+                break;
+            }
+            add_line(std::move(l), b.source_line);
+            break;
+        }
+        case BlockKind::braille_page_break:
+            break_page();
+            break;
+        case BlockKind::braille:
+            for (const auto& line : b.lines) {
+                // Verbatim lines keep their spacing; overlong ones are cut, not lost.
+                const auto w = static_cast<std::size_t>(width());
+                if (line.empty()) {
+                    if (static_cast<int>(body_.size()) >= body_capacity()) close_page();
+                    body_.emplace_back();
+                    continue;
+                }
+                for (std::size_t s = 0; s < line.size(); s += w)
+                    add_line(BrailleLine(line.begin() + static_cast<std::ptrdiff_t>(s),
+                                         line.begin() + static_cast<std::ptrdiff_t>(std::min(line.size(), s + w))),
+                             b.source_line);
+            }
+            break;
+    }
+}
+
+PagedDocument Paginator::finish() && {
+    if (!body_.empty() || doc_.pages.empty()) close_page();
+    return std::move(doc_);
+}
+
+}  // namespace tactus

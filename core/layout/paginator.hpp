@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Lays translated blocks out into braille pages, one block at a time, so the
+// pipeline can feed it while translation of later blocks is still running.
+#include <functional>
+#include <string>
+
+#include "layout/layout_options.hpp"
+#include "layout/page.hpp"
+#include "translate/translated_document.hpp"
+
+namespace tactus {
+
+class Paginator {
+public:
+    // `number_cells` renders a braille page number in the document's braille code
+    // (the translator's digits and number sign).
+    Paginator(LayoutOptions options, std::function<BrailleLine(int)> number_cells);
+
+    void add(const TranslatedBlock& block);
+    // Closes the last page and returns the pages. An interpoint document with an
+    // odd page count simply has no back on its last sheet.
+    PagedDocument finish() &&;
+
+private:
+    [[nodiscard]] bool numbered(std::size_t page_index) const;
+    [[nodiscard]] int body_capacity() const;
+    [[nodiscard]] int width() const;
+    void add_line(BrailleLine line, int source_line);
+    void add_blank_line();
+    void break_page();
+    void close_page();
+    void add_wrapped(const BrailleLine& cells, int first, int runover, bool centre,
+                     int source_line);
+
+    LayoutOptions o_;
+    std::function<BrailleLine(int)> number_cells_;
+    PagedDocument doc_;
+    std::vector<BrailleLine> body_;  // body lines of the page being filled
+    std::string print_page_;         // print page label in effect (UTF-8 of the label cells)
+    std::string page_top_print_page_;
+};
+
+}  // namespace tactus

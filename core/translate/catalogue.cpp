@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "translate/catalogue.hpp"
+
+#include <liblouis/liblouis.h>
+#include <unicode/locid.h>
+#include <unicode/unistr.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <string_view>
+
+#include "translate/louis.hpp"
+
+namespace tactus {
+namespace {
+
+// The tables the product is specified with: English UEB and both Chinese systems.
+constexpr std::array<std::string_view, 5> kRecommended = {
+    "en-ueb-g1.ctb", "en-ueb-g2.ctb", "zh-tw.ctb", "zhcn-g1.ctb", "zhcn-g2.ctb"};
+
+std::string info(const char* table, const char* key) {
+    char* v = lou_getTableInfo(table, key);
+    if (!v) return {};
+    std::string s(v);
+    std::free(v);  // NOLINT: liblouis hands ownership to the caller
+    return s;
+}
+
+// "cmn-TW" -> "Chinese (Taiwan)" via ICU's locale display names; falls back to the tag.
+std::string language_name(const std::string& tag) {
+    if (tag.empty()) return "Other";
+    UErrorCode status = U_ZERO_ERROR;
+    const icu::Locale locale = icu::Locale::forLanguageTag(tag, status);
+    if (U_FAILURE(status)) return tag;
+    icu::UnicodeString display;
+    locale.getDisplayName(icu::Locale::getEnglish(), display);
+    std::string out;
+    display.toUTF8String(out);
+    return out.empty() ? tag : out;
+}
+
+}  // namespace
+
+std::vector<TableInfo> table_catalogue() {
+    louis::install_log_capture();
+    std::vector<TableInfo> out;
+    std::lock_guard guard(louis::lock());
+    char** tables = lou_listTables();
+    if (!tables) return out;
+    for (char** t = tables; *t; ++t) {
+        TableInfo ti;
+        ti.file = std::filesystem::path(*t).filename().string();
+        ti.language_tag = info(*t, "language");
+        const auto region = info(*t, "region");
+        if (!region.empty()) ti.language_tag = region;  // region tags are fuller: "cmn-TW"
+        ti.language = language_name(ti.language_tag);
+        ti.name = info(*t, "display-name");
+        if (ti.name.empty()) ti.name = info(*t, "index-name");
+        ti.grade = info(*t, "grade");
+        ti.recommended = std::ranges::find(kRecommended, ti.file) != kRecommended.end();
+        out.push_back(std::move(ti));
+        std::free(*t);  // NOLINT
+    }
+    std::free(tables);  // NOLINT
+    louis::take_log();
+    std::ranges::sort(out, [](const TableInfo& a, const TableInfo& b) {
+        if (a.recommended != b.recommended) return a.recommended;
+        if (a.language != b.language) return a.language < b.language;
+        return a.file < b.file;
+    });
+    return out;
+}
+
+}  // namespace tactus

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The tables a user can pick, by language name rather than file name: built from
+// liblouis's own table metadata (lou_listTables / lou_getTableInfo).
+#include <string>
+#include <vector>
+
+namespace tactus {
+
+struct TableInfo {
+    std::string file;          // what to pass as --table, e.g. "en-ueb-g2.ctb"
+    std::string language_tag;  // BCP 47 from the table, e.g. "en", "cmn-TW"
+    std::string language;      // human-readable, e.g. "English", "Chinese (Taiwan)"
+    std::string name;          // the table's display name, e.g. "Unified English contracted braille"
+    std::string grade;         // "1", "2" or ""
+    bool recommended = false;  // the tables Tactus is specified and tested with
+};
+
+// Every installed table with metadata, recommended ones first, then by language.
+std::vector<TableInfo> table_catalogue();
+
+// The table Tactus uses when none is chosen.
+inline constexpr const char* kDefaultTable = "en-ueb-g2.ctb";
+
+}  // namespace tactus

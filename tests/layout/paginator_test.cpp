@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "cells.hpp"
+#include "layout/paginator.hpp"
+
+using namespace tactus;
+
+namespace {
+
+// Page numbers as "#" + digits in BRF, like UEB's number sign with letters a-j
+// would be; a plain digit rendering is enough to check placement.
+BrailleLine number(int n) {
+    std::string s = "#";
+    for (char d : std::to_string(n)) s.push_back(d == '0' ? 'J' : static_cast<char>('A' + (d - '1')));
+    return brf(s);
+}
+
+TranslatedBlock para(std::string_view text) {
+    TranslatedBlock b;
+    b.kind = BlockKind::paragraph;
+    b.cells = brf(text);
+    return b;
+}
+
+TranslatedBlock heading(std::string_view text, int level = 1) {
+    TranslatedBlock b;
+    b.kind = BlockKind::heading;
+    b.level = level;
+    b.cells = brf(text);
+    return b;
+}
+
+LayoutOptions small(int cells, int lines, bool interpoint) {
+    LayoutOptions o;
+    o.geometry = {cells, lines, interpoint, false};
+    return o;
+}
+
+std::vector<std::string> rows(const Page& p) {
+    std::vector<std::string> out;
+    for (const auto& l : p.lines) out.push_back(brf(l));
+    return out;
+}
+
+}  // namespace
+
+TEST(Paginator, DefaultIsTheSourceEmbosserFormat) {
+    LayoutOptions o;
+    EXPECT_EQ(o.geometry.cells_per_line, 27);
+    EXPECT_EQ(o.geometry.lines_per_page, 24);
+    EXPECT_TRUE(o.geometry.interpoint);
+    EXPECT_TRUE(validate(o));
+}
+
+TEST(Paginator, ParagraphIndentAndBottomRightNumber) {
+    Paginator p(small(12, 4, false), number);
+    p.add(para("ONE TWO THREE FOUR"));
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.pages.size(), 1u);
+    EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"  ONE TWO", "THREE FOUR", "", "          #A"}));
+}
+
+TEST(Paginator, FlowsOntoNewPagesAndNumbersThem) {
+    Paginator p(small(10, 3, false), number);  // 2 body lines per numbered page
+    p.add(para("AA BB CC DD EE FF GG HH"));
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.pages.size(), 2u);
+    EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"  AA BB CC", "DD EE FF", "        #A"}));
+    EXPECT_EQ(rows(doc.pages[1]), (std::vector<std::string>{"GG HH", "", "        #B"}));
+}
+
+TEST(Paginator, InterpointNumbersOnlyFronts) {
+    Paginator p(small(10, 3, true), number);
+    for (int i = 0; i < 5; ++i) p.add(para("WORD"));
+    auto doc = std::move(p).finish();
+    // Front pages: 2 body lines + number; back pages: 3 body lines, no number.
+    ASSERT_EQ(doc.pages.size(), 2u);
+    EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"  WORD", "  WORD", "        #A"}));
+    EXPECT_EQ(rows(doc.pages[1]), (std::vector<std::string>{"  WORD", "  WORD", "  WORD"}));
+    EXPECT_EQ(doc.sheet_count(), 1u);
+    const auto sheet = doc.sheet(1);
+    EXPECT_EQ(sheet.front, &doc.pages[0]);
+    EXPECT_EQ(sheet.back, &doc.pages[1]);
+}
+
+TEST(Paginator, CentredHeadingWithBlankLineAfter) {
+    Paginator p(small(12, 6, false), number);
+    p.add(heading("TITLE"));
+    p.add(para("TEXT"));
+    auto doc = std::move(p).finish();
+    EXPECT_EQ(rows(doc.pages[0])[0], "   TITLE");
+    EXPECT_EQ(rows(doc.pages[0])[1], "");
+    EXPECT_EQ(rows(doc.pages[0])[2], "  TEXT");
+}
+
+TEST(Paginator, NoBlankLineAtTheTopOfAPage) {
+    Paginator p(small(10, 4, false), number);
+    p.add(para("A"));
+    p.add(para("B"));
+    p.add(para("C"));
+    p.add(heading("H", 2));  // blank line before would fall at the top of page 2
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.pages.size(), 2u);
+    EXPECT_EQ(rows(doc.pages[1])[0], "    H");
+}
+
+TEST(Paginator, PrintPageIndicatorLine) {
+    Paginator p(small(10, 5, false), number);
+    p.add(para("A"));
+    TranslatedBlock pb;
+    pb.kind = BlockKind::print_page_break;
+    pb.label = brf("#B");
+    p.add(pb);
+    p.add(para("B"));
+    auto doc = std::move(p).finish();
+    EXPECT_EQ(rows(doc.pages[0])[1], "--------#B");
+    EXPECT_EQ(rows(doc.pages[0])[2], "  B");
+}
+
+TEST(Paginator, PrintPageAtTopOfPageNeedsNoSeparator) {
+    Paginator p(small(10, 3, false), number);
+    p.add(para("A"));
+    p.add(para("B"));
+    TranslatedBlock pb;
+    pb.kind = BlockKind::print_page_break;
+    pb.label = brf("#C");
+    p.add(pb);
+    p.add(para("C"));
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.pages.size(), 2u);
+    EXPECT_EQ(rows(doc.pages[1])[0], "  C");
+    EXPECT_EQ(doc.pages[1].print_page, to_unicode_text(brf("#C")));
+}
+
+TEST(Paginator, BraillePageBreakStartsNewPage) {
+    Paginator p(small(10, 5, false), number);
+    p.add(para("A"));
+    TranslatedBlock br;
+    br.kind = BlockKind::braille_page_break;
+    p.add(br);
+    p.add(br);  // a second break on an empty page adds no blank page
+    p.add(para("B"));
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.pages.size(), 2u);
+    EXPECT_EQ(rows(doc.pages[1])[0], "  B");
+}
+
+TEST(Paginator, VerbatimBrailleKeepsSpacingAndCutsLongLines) {
+    Paginator p(small(6, 5, false), number);
+    TranslatedBlock b;
+    b.kind = BlockKind::braille;
+    b.lines = {brf("A  B"), brf(""), brf("ABCDEFGH")};
+    p.add(b);
+    auto doc = std::move(p).finish();
+    EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"A  B", "", "ABCDEF", "GH", "    #A"}));
+}
+
+TEST(Paginator, MarginsAndTopNumber) {
+    auto o = small(12, 4, false);
+    o.left_margin = 2;
+    o.right_margin = 1;
+    o.page_numbers = PageNumberPosition::top_right;
+    Paginator p(o, number);
+    p.add(para("AAA BBB"));
+    auto doc = std::move(p).finish();
+    EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"         #A", "    AAA BBB", "", ""}));
+}
+
+TEST(Paginator, ListItemsHangingIndentByLevel) {
+    Paginator p(small(9, 6, false), number);
+    TranslatedBlock li;
+    li.kind = BlockKind::list_item;
+    li.level = 2;
+    li.cells = brf("AA BB CC");
+    p.add(li);
+    auto doc = std::move(p).finish();
+    EXPECT_EQ(rows(doc.pages[0])[0], "  AA BB");
+    EXPECT_EQ(rows(doc.pages[0])[1], "    CC");
+}
+
+TEST(Paginator, SixDotLayoutStripsDots78WithAWarning) {
+    Paginator p(small(10, 4, false), number);
+    auto b = para("A");
+    b.source_line = 3;
+    b.cells.push_back(Cell{0xC1});
+    p.add(b);
+    auto doc = std::move(p).finish();
+    ASSERT_EQ(doc.warnings.size(), 1u);
+    EXPECT_NE(doc.warnings[0].find("line 3"), std::string::npos);
+    EXPECT_EQ(rows(doc.pages[0])[0], "  AA");
+}
+
+TEST(LayoutOptions, RejectsImpossibleGeometry) {
+    LayoutOptions o;
+    o.geometry.cells_per_line = 2;
+    EXPECT_EQ(validate(o).error().where, "cells_per_line");
+    o = {};
+    o.left_margin = 20;
+    o.right_margin = 5;
+    EXPECT_EQ(validate(o).error().where, "margins");
+}

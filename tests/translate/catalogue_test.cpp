@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "translate/catalogue.hpp"
+
+using namespace tactus;
+
+TEST(Catalogue, NamesTheSpecifiedTablesByLanguage) {
+    const auto tables = table_catalogue();
+    auto find = [&](std::string_view file) {
+        return std::ranges::find(tables, file, &TableInfo::file);
+    };
+    for (auto f : {"en-ueb-g1.ctb", "en-ueb-g2.ctb", "zh-tw.ctb", "zhcn-g1.ctb", "zhcn-g2.ctb"}) {
+        const auto it = find(f);
+        ASSERT_NE(it, tables.end()) << f;
+        EXPECT_TRUE(it->recommended) << f;
+        EXPECT_FALSE(it->name.empty()) << f;
+    }
+    EXPECT_EQ(find("en-ueb-g2.ctb")->language, "English");
+    EXPECT_EQ(find("en-ueb-g2.ctb")->grade, "2");
+    EXPECT_EQ(find("zh-tw.ctb")->language, "Chinese (Taiwan)");
+    EXPECT_EQ(find("zhcn-g2.ctb")->language, "Chinese (China)");
+    // Recommended tables come first.
+    EXPECT_TRUE(tables.front().recommended);
+    EXPECT_GT(tables.size(), 50u);  // Debian's liblouis-data ships about 200
+}

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <vector>
+
+#include "common/utf8.hpp"
+#include "document/document.hpp"
+#include "translate/translated_document.hpp"
+#include "translate/translator.hpp"
+
+using namespace tactus;
+
+namespace {
+
+std::string unicode(const Result<BrailleLine>& r) {
+    EXPECT_TRUE(r.has_value()) << (r ? "" : r.error().to_string());
+    return r ? to_unicode_text(*r) : std::string{};
+}
+
+std::u32string u32(std::string_view s) { return *utf8_to_utf32(s); }
+
+}  // namespace
+
+TEST(Translator, UebGrade2ContractsWords) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    // "the" and "and" are whole-word contractions in UEB grade 2.
+    EXPECT_EQ(unicode(t->translate(u32("the cat and dog"))), "⠮⠀⠉⠁⠞⠀⠯⠀⠙⠕⠛");
+}
+
+TEST(Translator, UebGrade1SpellsOut) {
+    auto t = Translator::open("en-ueb-g1.ctb");
+    ASSERT_TRUE(t);
+    EXPECT_EQ(unicode(t->translate(u32("the"))), "⠞⠓⠑");
+}
+
+TEST(Translator, CapitalAndNumberIndicators) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    EXPECT_EQ(unicode(t->translate(u32("Hi 42"))), "⠠⠓⠊⠀⠼⠙⠃");
+}
+
+TEST(Translator, EmphasisBecomesIndicators) {
+    auto t = Translator::open("en-ueb-g1.ctb");
+    ASSERT_TRUE(t);
+    const auto text = u32("a big b");
+    std::vector<std::uint8_t> emph(text.size(), emphasis_none);
+    emph[2] = emph[3] = emph[4] = emphasis_bold;
+    const auto plain = unicode(t->translate(text));
+    const auto bold = unicode(t->translate(text, emph));
+    // UEB bold word indicator is dots 45, 2 before the word.
+    EXPECT_EQ(bold, "⠁⠀⠘⠂⠃⠊⠛⠀⠃");
+    EXPECT_NE(plain, bold);
+}
+
+TEST(Translator, ChineseTaiwanAndMainland) {
+    auto tw = Translator::open("zh-tw.ctb");
+    auto cn = Translator::open("zhcn-g1.ctb");
+    ASSERT_TRUE(tw);
+    ASSERT_TRUE(cn);
+    const auto tw_cells = tw->translate(u32("我們"));
+    const auto cn_cells = cn->translate(u32("我们"));
+    ASSERT_TRUE(tw_cells && cn_cells);
+    EXPECT_FALSE(tw_cells->empty());
+    EXPECT_FALSE(cn_cells->empty());
+    // Different braille systems: bopomofo-based vs. mainland current braille.
+    EXPECT_NE(to_unicode_text(*tw_cells), to_unicode_text(*cn_cells));
+    for (Cell c : *tw_cells) EXPECT_FALSE(c.dots & 0xC0) << "6-dot expected";
+}
+
+TEST(Translator, BackTranslationRoundTrip) {
+    auto t = Translator::open("en-ueb-g1.ctb");
+    ASSERT_TRUE(t);
+    const auto cells = t->translate(u32("Braille is read by touch."));
+    ASSERT_TRUE(cells);
+    const auto back = t->back_translate(*cells);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(utf32_to_utf8(*back), "Braille is read by touch.");
+}
+
+TEST(Translator, BrfDisplayTable) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    const auto brf = t->translate_with_display(u32("Hello"), "en-us-brf.dis");
+    ASSERT_TRUE(brf);
+    EXPECT_EQ(utf32_to_utf8(*brf), ",HELLO");
+}
+
+TEST(Translator, UnknownTableIsAClearError) {
+    auto t = Translator::open("no-such-table.ctb");
+    ASSERT_FALSE(t);
+    EXPECT_NE(t.error().message.find("no-such-table.ctb"), std::string::npos);
+    EXPECT_EQ(t.error().where, "--table");
+}
+
+TEST(Translator, BrokenTableIsAClearError) {
+    const auto path = std::filesystem::temp_directory_path() / "tactus-broken-table.ctb";
+    {
+        std::ofstream(path) << "this is not a liblouis opcode\n";
+    }
+    auto t = Translator::open(path.string());
+    ASSERT_FALSE(t);
+    EXPECT_NE(t.error().message.find("broken"), std::string::npos);
+    std::filesystem::remove(path);
+}
+
+TEST(Translator, LongTextIsNotTruncated) {
+    auto t = Translator::open("en-ueb-g1.ctb");
+    ASSERT_TRUE(t);
+    std::u32string text;
+    for (int i = 0; i < 3000; ++i) text += U"word ";
+    const auto cells = t->translate(text);
+    ASSERT_TRUE(cells);
+    // Every "word" is 4 cells plus one blank, except the trailing space.
+    EXPECT_GE(cells->size(), 3000u * 5 - 1);
+}
+
+// liblouis is not thread-safe; the translator serialises calls, so concurrent
+// use must give exactly the single-threaded result.
+TEST(Translator, ConcurrentCallsGiveTheSameResult) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    const auto text = u32("The quick brown fox jumps over the lazy dog, and then some.");
+    const auto expected = unicode(t->translate(text));
+    std::vector<std::thread> threads;
+    std::atomic<int> mismatches{0};
+    for (int k = 0; k < 4; ++k)
+        threads.emplace_back([&] {
+            for (int i = 0; i < 200; ++i)
+                if (to_unicode_text(*t->translate(text)) != expected) ++mismatches;
+        });
+    for (auto& th : threads) th.join();
+    EXPECT_EQ(mismatches.load(), 0);
+}
+
+TEST(TranslateBlock, LongParagraphCutAtSpacesMatchesWholeTranslation) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    std::string text;
+    for (int i = 0; i < 900; ++i) text += "and the children ";
+    Block b;
+    b.spans = {Span{text, emphasis_none}};
+    const auto chunked = translate_block(b, *t);
+    ASSERT_TRUE(chunked);
+    const auto whole = t->translate(u32(text));
+    ASSERT_TRUE(whole);
+    EXPECT_EQ(to_unicode_text(chunked->cells), to_unicode_text(*whole));
+}
+
+TEST(TranslateBlock, InvalidUtf8NamesTheLine) {
+    auto t = Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(t);
+    Block b;
+    b.source_line = 7;
+    b.spans = {Span{"ok \xC3", emphasis_none}};
+    const auto r = translate_block(b, *t);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().where, "line 7:byte 3");
+}
