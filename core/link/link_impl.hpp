@@ -201,6 +201,7 @@ struct Link::Impl {
                                   1, static_cast<std::int64_t>(std::ceil(timeout_s * 1e6)))));
         if (!n) return std::unexpected(device_error(n.error()));
         std::vector<Frame> frames;
+        if (*n == 0 && timeout_s >= 0.05) decoder.idle(frames);  // quiet line: drop false starts
         decoder.push(std::span(buf).first(*n), frames);
         stats.crc_errors = decoder.stats().crc_errors;
         for (const auto& f : frames)
