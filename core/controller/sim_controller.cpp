@@ -246,8 +246,8 @@ void SimController::on_frame(const encode::Frame& f, double now) {
         max_ring_used_ = std::max(max_ring_used_, ring_.size());
         ++expected_seq_;
         ++frames_accepted_;
+        advance(now);  // an idle executor starts at once, so the ACK reports the room it makes
         ack();
-        advance(now);  // an idle executor starts at once
         return;
     }
     immediate(f, now);

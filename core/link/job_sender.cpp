@@ -60,8 +60,9 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         auto stream = encode::encode_job(plan, js.job_id, st);
         if (!stream) return std::unexpected(stream.error());
         js.stream = std::move(*stream);
-        const std::size_t max_payload =
+        std::size_t max_payload =
             std::min<std::size_t>(encode::kMaxPayload, std::max<std::uint8_t>(info.max_payload, 8));
+        if (opt.max_payload > 0) max_payload = std::min(max_payload, std::max<std::size_t>(opt.max_payload, 8));
         js.chunks = encode::chunk_stream(js.stream, max_payload);
         js.next_chunk = 0;
         js.bytes_total += js.stream.bytes.size();

@@ -68,7 +68,9 @@ struct Link::Impl {
     }
 
     std::size_t window_frames() const {
-        return session ? std::max<std::size_t>(1, info.window_frames) : 1;
+        std::size_t w = session ? std::max<std::size_t>(1, info.window_frames) : 1;
+        if (opt.max_window_frames > 0) w = std::min(w, opt.max_window_frames);
+        return w;
     }
 
     double rto() const {
