@@ -40,6 +40,9 @@ T require(Result<T> r, int code = exit_bad_input) {
 void add_translate_command(CLI::App& app);
 void add_layout_command(CLI::App& app);
 void add_tables_command(CLI::App& app);
+void add_plan_command(CLI::App& app);
+void add_profile_command(CLI::App& app);
+void add_vibration_command(CLI::App& app);
 void add_sim_command(CLI::App& app);
 void add_ports_command(CLI::App& app);
 void add_emboss_command(CLI::App& app);

@@ -15,14 +15,24 @@ enum class Hammer : std::uint8_t { convex, concave };
 
 // Klipper-style step compression: `count` steps, the first `interval` timer ticks
 // after the previous step, each following interval `add` ticks longer (negative:
-// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz, so the
-// controller only adds 16-bit numbers.
+// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz.
+//
+// interval and add are fixed point with 16 fractional bits (Q16.16): a carriage
+// cruising at 38.4 ticks per step, or an acceleration ramp whose interval shrinks
+// by 0.3 ticks per step, is then one segment instead of one every few steps
+// (whole-tick intervals made the schedule larger than a 115200-baud link can
+// carry). The controller still only adds: per step it adds the 16-bit fraction of
+// `interval` into a fraction accumulator that starts at 0 with each segment, loads
+// its timer with the integer part plus the carry, and adds `add` (32-bit) to
+// `interval`. expand_steps() in plan/steps.hpp is that arithmetic, exactly.
 struct StepSegment {
-    std::uint16_t interval = 0;
+    std::uint32_t interval_q16 = 0;  // ticks << 16; integer part 1..65535
     std::uint16_t count = 0;
-    std::int16_t add = 0;
+    std::int32_t add_q16 = 0;  // ticks << 16 added to the interval after each step
     bool operator==(const StepSegment&) const = default;
 };
+
+inline constexpr int kStepFractionBits = 16;
 
 inline constexpr double kTickHz = 11'059'200.0 / 12.0;
 
@@ -41,6 +51,11 @@ struct Strike {
     double y_mm = 0;
     std::int32_t carriage_step = 0;  // absolute carriage position when it fires
     double time_s = 0;               // from the start of the job
+    // Added by the plan stage for estimate and preview:
+    double paper_x_mm = 0;  // the dot in paper coordinates: the sheet as it runs
+    double paper_y_mm = 0;  // through the machine, front side up
+    double residual_um = 0;        // head position error while the hammer is down, nominal machine
+    double worst_residual_um = 0;  // the same, worst case over the damping/frequency band
     bool operator==(const Strike&) const = default;
 };
 
@@ -55,6 +70,9 @@ struct Pass {
     std::vector<StepMove> moves;   // moves[i] brings the carriage to strikes[i]
     std::vector<Strike> strikes;
     double duration_s = 0;
+    // Added by the plan stage:
+    double lower_bound_s = 0;    // time-optimal jerk-limited moves, same limits, dwell and feed
+    std::size_t segments = 0;    // encoded step segments (feed + carriage) of this pass
     bool operator==(const Pass&) const = default;
 };
 
@@ -62,6 +80,7 @@ struct SheetPlan {
     std::size_t index = 0;  // 1-based
     std::vector<Pass> passes;
     double duration_s = 0;
+    double lower_bound_s = 0;
 };
 
 struct JobPlan {
@@ -70,6 +89,10 @@ struct JobPlan {
     double lower_bound_s = 0;
     std::size_t strikes = 0;
     double max_residual_um = 0;
+    // Added by the plan stage:
+    double max_worst_residual_um = 0;      // over the damping/frequency band
+    std::size_t strikes_over_tolerance = 0;  // only with a fixed (not auto-tuned) profile/shaper
+    std::size_t segments = 0;
 };
 
 }  // namespace tactus::plan
