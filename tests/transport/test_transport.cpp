@@ -173,7 +173,7 @@ TEST_P(HidEndToEnd, JobThroughTheBridge) {
     EXPECT_GT(chip->reports_out_.size(), 4U);
 }
 INSTANTIATE_TEST_SUITE_P(Chips, HidEndToEnd, ::testing::Values(HidBridge::cp2110, HidBridge::ft260),
-                         [](const auto& info) { return std::string(info.param == HidBridge::cp2110 ? "CP2110" : "FT260"); });
+                         [](const auto& p) { return std::string(p.param == HidBridge::cp2110 ? "CP2110" : "FT260"); });
 
 // ---------------------------------------------------------------- LPT
 
