@@ -1,6 +1,97 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// tactus-cli layout: import, translate and paginate a document, then write BRF,
+// PEF or Unicode braille.
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
 #include "command.hpp"
+#include "common/file_io.hpp"
+#include "export/export.hpp"
+#include "layout_args.hpp"
+#include "pipeline/pipeline.hpp"
 
 namespace tactus::cli {
-void add_layout_command(CLI::App& app) { app.add_subcommand("layout", "(not yet implemented)"); }
+namespace {
+
+struct LayoutCommandArgs {
+    LayoutArgs layout;
+    std::string to;
+    std::string output;
+    bool summary = false;
+};
+
+std::string today() {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    ::gmtime_r(&now, &tm);
+    char buf[16];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+    return buf;
+}
+
+void print_summary(std::ostream& out, const PagedDocument& doc, const PipelineOptions& o,
+                   const std::string& file) {
+    std::size_t cells = 0;
+    std::size_t dots = 0;
+    std::size_t lines = 0;
+    for (const auto& p : doc.pages)
+        for (const auto& l : p.lines) {
+            if (!l.empty()) ++lines;
+            for (Cell c : l) {
+                if (!c.blank()) ++cells;
+                dots += static_cast<std::size_t>(__builtin_popcount(c.dots));
+            }
+        }
+    const auto& g = doc.geometry;
+    out << "document:   " << file << '\n'
+        << "table:      " << o.tables << '\n'
+        << "format:     " << g.cells_per_line << " cells x " << g.lines_per_page << " lines, "
+        << (g.interpoint ? "interpoint" : "single-sided") << ", "
+        << (g.eight_dot ? "8-dot" : "6-dot") << '\n'
+        << "pages:      " << doc.pages.size() << " braille pages on " << doc.sheet_count()
+        << " sheets\n"
+        << "content:    " << lines << " lines, " << cells << " cells, " << dots << " dots\n";
+    for (const auto& w : doc.warnings) out << "warning:    " << w << '\n';
+}
+
+void run_layout(const LayoutCommandArgs& a) {
+    const auto options = a.layout.pipeline_options();
+    const auto doc = require(lay_out_file(a.layout.file, options));
+    for (const auto& w : doc.warnings) std::cerr << "tactus-cli: " << a.layout.file << ": " << w << '\n';
+    if (a.summary) {
+        print_summary(std::cout, doc, options, a.layout.file);
+        if (a.to.empty()) return;
+    }
+    if (a.to.empty())
+        throw CLI::RequiredError("--to (or --summary)");
+    const auto format = require(parse_export_format(a.to), exit_usage);
+    PefMetadata meta;
+    meta.title = std::filesystem::path(a.layout.file).stem().string();
+    meta.date = today();
+    const auto bytes = require(export_document(doc, format, meta));
+    if (a.output.empty() || a.output == "-") {
+        std::cout << bytes;
+        return;
+    }
+    require(write_file_atomic(a.output, bytes), exit_failure);
+    std::cerr << "wrote " << a.output << ": " << doc.pages.size() << " pages on "
+              << doc.sheet_count() << " sheets (" << doc.geometry.cells_per_line << "x"
+              << doc.geometry.lines_per_page << ", "
+              << (doc.geometry.interpoint ? "interpoint" : "single-sided") << ")\n";
+}
+
+}  // namespace
+
+void add_layout_command(CLI::App& app) {
+    auto args = std::make_shared<LayoutCommandArgs>();
+    auto* cmd = app.add_subcommand("layout", "Lay out a document into braille pages (BRF, PEF, Unicode)");
+    args->layout.add_to(*cmd);
+    cmd->add_option("--to", args->to, "Output format: brf, pef or unicode")
+        ->check(CLI::IsMember({"brf", "pef", "unicode"}));
+    cmd->add_option("-o,--output", args->output, "Output file (written atomically); default stdout");
+    cmd->add_flag("--summary", args->summary, "Print a summary of the pages instead of (or before) the output");
+    cmd->callback([args] { run_layout(*args); });
+}
+
 }  // namespace tactus::cli

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/utf8.hpp"
 #include "export/export.hpp"
 
 namespace tactus {
@@ -28,17 +29,16 @@ std::string content_id(const PagedDocument& doc) {
     return buf;
 }
 
+
 }  // namespace
 
 Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
-    pugi::xml_document xml;
-    auto decl = xml.append_child(pugi::node_declaration);
-    decl.append_attribute("version") = "1.0";
-    decl.append_attribute("encoding") = "UTF-8";
-    auto pef = xml.append_child("pef");
-    pef.append_attribute("version") = "2008-1";
-    pef.append_attribute("xmlns") = "http://www.daisy.org/ns/2008/pef";
-    auto head = pef.append_child("head");
+    // The head carries user text (title), so pugixml writes and escapes it. The
+    // body is only braille code points (U+2800..U+28FF), which never need
+    // escaping; it is streamed straight into the output so a book-length PEF
+    // costs its own size in memory, not a DOM of every row.
+    pugi::xml_document head_xml;
+    auto head = head_xml.append_child("head");
     auto m = head.append_child("meta");
     m.append_attribute("xmlns:dc") = "http://purl.org/dc/elements/1.1/";
     m.append_child("dc:format").text() = "application/x-pef+xml";
@@ -47,33 +47,51 @@ Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
     m.append_child("dc:title").text() = meta.title.c_str();
     if (!meta.language.empty()) m.append_child("dc:language").text() = meta.language.c_str();
     if (!meta.date.empty()) m.append_child("dc:date").text() = meta.date.c_str();
+    std::ostringstream head_text;
+    head_xml.save(head_text, "  ", pugi::format_indent | pugi::format_no_declaration,
+                  pugi::encoding_utf8);
 
     const auto& g = doc.geometry;
-    auto volume = pef.append_child("body").append_child("volume");
-    volume.append_attribute("cols") = g.cells_per_line;
-    volume.append_attribute("rows") = g.lines_per_page;
-    volume.append_attribute("rowgap") = g.eight_dot ? 1 : 0;
-    volume.append_attribute("duplex") = g.interpoint ? "true" : "false";
-    auto section = volume.append_child("section");
+    std::size_t cells = 0;
+    for (const auto& page : doc.pages)
+        for (const auto& line : page.lines) cells += line.size();
+    std::string out;
+    out.reserve(512 + cells * 3 + doc.pages.size() * (30 + 20 * static_cast<std::size_t>(g.lines_per_page)));
+    out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\">\n";
+    std::istringstream head_lines(head_text.str());
+    for (std::string line; std::getline(head_lines, line);) out += "  " + line + "\n";
+    out += "  <body>\n    <volume cols=\"" + std::to_string(g.cells_per_line) + "\" rows=\"" +
+           std::to_string(g.lines_per_page) + "\" rowgap=\"" + (g.eight_dot ? "1" : "0") +
+           "\" duplex=\"" + (g.interpoint ? "true" : "false") + "\">\n      <section>\n";
     for (const auto& page : doc.pages) {
-        auto p = section.append_child("page");
         if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
             return fail("page has more rows than the volume allows",
                         "page " + std::to_string(page.braille_number));
         std::size_t used = page.lines.size();
         while (used > 0 && page.lines[used - 1].empty()) --used;
+        if (used == 0) {
+            out += "        <page />\n";
+            continue;
+        }
+        out += "        <page>\n";
         for (std::size_t i = 0; i < used; ++i) {
             if (page.lines[i].size() > static_cast<std::size_t>(g.cells_per_line))
                 return fail("row longer than cols", "page " + std::to_string(page.braille_number) +
                                                         " row " + std::to_string(i + 1));
-            auto row = p.append_child("row");
-            if (!page.lines[i].empty()) row.text() = to_unicode_text(page.lines[i]).c_str();
+            if (page.lines[i].empty()) {
+                out += "          <row />\n";
+                continue;
+            }
+            out += "          <row>";
+            for (Cell c : page.lines[i]) append_utf8(out, c.unicode());
+            out += "</row>\n";
         }
+        out += "        </page>\n";
     }
-    if (doc.pages.empty()) section.append_child("page");  // a section needs a page
-    std::ostringstream out;
-    xml.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
-    return out.str();
+    if (doc.pages.empty()) out += "        <page />\n";  // a section needs a page
+    out += "      </section>\n    </volume>\n  </body>\n</pef>\n";
+    return out;
 }
 
 }  // namespace tactus

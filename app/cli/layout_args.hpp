@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The options every command that lays out a document shares (layout, plan,
+// emboss), so they read the same everywhere.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "pipeline/pipeline.hpp"
+
+namespace tactus::cli {
+
+struct LayoutArgs {
+    std::string file;
+    std::string tables = kDefaultTable;
+    std::string preset;
+    std::string format = "auto";
+    std::string encoding;
+    std::string page_numbers = "bottom-right";
+    int cells = 0;  // 0: from the preset
+    int lines = 0;
+    bool interpoint = false;
+    bool eight_dot = false;
+    bool no_print_pages = false;
+    int indent = 2;
+    int margin_left = 0, margin_right = 0, margin_top = 0, margin_bottom = 0;
+
+    void add_to(CLI::App& cmd, bool with_interpoint = true);
+    // Validated options; a bad value ends the command with a usage error.
+    [[nodiscard]] PipelineOptions pipeline_options() const;
+};
+
+}  // namespace tactus::cli

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import/document_builder.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace tactus::import_detail {
+namespace {
+
+bool is_page_break(const Block& b) {
+    return b.kind == BlockKind::print_page_break || b.kind == BlockKind::braille_page_break;
+}
+
+bool visible(std::string_view text) {
+    return std::any_of(text.begin(), text.end(), [](char c) {
+        return c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v';
+    });
+}
+
+}  // namespace
+
+void DocumentBuilder::begin(BlockKind kind, int level, int source_line) {
+    end();
+    current_ = Block{};
+    current_.kind = kind;
+    current_.level = level;
+    current_.source_line = source_line;
+    open_ = true;
+}
+
+void DocumentBuilder::note_line(int source_line) {
+    if (open_ && current_.source_line == 0) current_.source_line = source_line;
+}
+
+void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
+    if (utf8.empty()) return;
+    if (!open_) begin(BlockKind::paragraph, 0, 0);
+    auto& spans = current_.spans;
+    if (!spans.empty() && spans.back().emphasis == emphasis)
+        spans.back().text.append(utf8);
+    else
+        spans.push_back(Span{std::string(utf8), emphasis});
+}
+
+void DocumentBuilder::end() {
+    if (!open_) return;
+    open_ = false;
+    const bool keep = std::any_of(current_.spans.begin(), current_.spans.end(),
+                                  [](const Span& s) { return visible(s.text); });
+    if (keep) push(std::move(current_));
+    current_ = Block{};
+}
+
+void DocumentBuilder::print_page_break(int source_line, std::string label) {
+    end();
+    if (!has_content_) return;  // nothing printed yet: page 1 has not even started
+    ++print_page_;
+    Block b;
+    b.kind = BlockKind::print_page_break;
+    b.label = label.empty() ? std::to_string(print_page_) : std::move(label);
+    b.source_line = source_line;
+    push(std::move(b));
+}
+
+void DocumentBuilder::braille_page_break(int source_line) {
+    end();
+    if (!has_content_) return;
+    Block b;
+    b.kind = BlockKind::braille_page_break;
+    b.source_line = source_line;
+    push(std::move(b));
+}
+
+void DocumentBuilder::braille_block(std::vector<BrailleLine> lines, int source_line) {
+    end();
+    Block b;
+    b.kind = BlockKind::braille;
+    b.braille_lines = std::move(lines);
+    b.source_line = source_line;
+    push(std::move(b));
+}
+
+void DocumentBuilder::push(Block block) {
+    if (full()) return;
+    if (blocks_.size() >= max_import_blocks) {
+        overflow_line_ = block.source_line;
+        blocks_ = {};  // give the memory back now; the import has failed
+        return;
+    }
+    if (!is_page_break(block)) has_content_ = true;
+    blocks_.push_back(std::move(block));
+}
+
+Result<Document> DocumentBuilder::finish() {
+    end();
+    if (full())
+        return fail("more than " + std::to_string(max_import_blocks) +
+                        " blocks (paragraphs, pages); split the document",
+                    overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
+    // A break with nothing after it would only add an empty page.
+    while (!blocks_.empty() && is_page_break(blocks_.back())) blocks_.pop_back();
+    Document doc;
+    doc.blocks = std::move(blocks_);
+    blocks_ = {};
+    return doc;
+}
+
+}  // namespace tactus::import_detail

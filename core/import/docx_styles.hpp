@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// WordprocessingML styles (word/styles.xml) and list numbering (word/numbering.xml),
+// resolved to what the document model needs: heading level, list membership,
+// page-break-before and bold/italic/underline.
+#include <pugixml.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+#include "document/document.hpp"
+
+namespace tactus::import_detail {
+
+// Toggle properties; unset = inherit.
+struct RunFormat {
+    std::optional<bool> bold, italic, underline;
+    void apply(const RunFormat& over);
+    [[nodiscard]] std::uint8_t emphasis() const;
+};
+RunFormat read_run_format(const pugi::xml_node& rPr);
+
+struct NumberingRef {
+    std::string num_id;  // "0" means "no numbering" (used to switch a style's list off)
+    int ilvl = 0;
+};
+std::optional<NumberingRef> read_numbering_ref(const pugi::xml_node& pPr);
+// <w:b/>, <w:b w:val="true"/>, <w:b w:val="0"/>: unset when the element is absent.
+std::optional<bool> read_toggle(const pugi::xml_node& element);
+
+struct ParagraphStyle {
+    int heading_level = 0;  // 1..6, 0 = not a heading
+    std::optional<NumberingRef> numbering;
+    bool page_break_before = false;
+    RunFormat run;
+};
+
+class DocxStyles {
+public:
+    DocxStyles() = default;
+    explicit DocxStyles(const pugi::xml_node& styles_root);
+    // Empty id = the default paragraph style. Unknown ids resolve like the default.
+    [[nodiscard]] ParagraphStyle paragraph(std::string_view style_id) const;
+    [[nodiscard]] RunFormat character(std::string_view style_id) const;
+
+private:
+    struct Style {
+        std::string name;
+        std::string based_on;
+        std::optional<int> outline_level;  // 0-based, as in w:outlineLvl
+        std::optional<NumberingRef> numbering;
+        std::optional<bool> page_break_before;
+        RunFormat run;
+    };
+    [[nodiscard]] const Style* find(std::string_view id) const;
+    std::unordered_map<std::string, Style> styles_;
+    std::string default_paragraph_;
+    RunFormat defaults_;
+};
+
+class DocxNumbering {
+public:
+    DocxNumbering() = default;
+    explicit DocxNumbering(const pugi::xml_node& numbering_root);
+    // The label of the next item of this list at this level ("3.", "b)", "1.2.");
+    // empty for bullets. Deeper levels restart, as in a word processor.
+    std::string next_label(const NumberingRef& ref);
+
+private:
+    struct Level {
+        std::string format = "decimal";
+        std::string text;  // lvlText, e.g. "%1." or "%1.%2"
+        int start = 1;
+    };
+    using Levels = std::array<Level, 9>;
+    std::unordered_map<std::string, std::string> abstract_of_num_;
+    std::unordered_map<std::string, Levels> abstracts_;
+    std::unordered_map<std::string, std::array<int, 9>> counters_;  // per abstract list
+};
+
+}  // namespace tactus::import_detail

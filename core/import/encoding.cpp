@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import/encoding.hpp"
+
+#include <unicode/ucnv.h>
+#include <unicode/utf16.h>
+#include <uchardet.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstring>
+#include <memory>
+
+#include "common/utf8.hpp"
+#include "import/text_position.hpp"
+
+namespace tactus::import_detail {
+namespace {
+
+struct ConverterCloser {
+    void operator()(UConverter* c) const { ucnv_close(c); }
+};
+using Converter = std::unique_ptr<UConverter, ConverterCloser>;
+
+struct DetectorFree {
+    void operator()(uchardet_t d) const { uchardet_delete(d); }
+};
+using Detector = std::unique_ptr<std::remove_pointer_t<uchardet_t>, DetectorFree>;
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    for (auto& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string byte_at(std::size_t offset) { return "byte " + std::to_string(offset); }
+
+struct Bom {
+    std::string_view encoding;
+    std::size_t length = 0;
+};
+
+Bom sniff_bom(std::string_view b) {
+    auto starts = [&](std::string_view p) { return b.substr(0, p.size()) == p; };
+    using namespace std::string_view_literals;
+    if (starts("\xEF\xBB\xBF"sv)) return {"UTF-8", 3};
+    if (starts("\xFF\xFE\x00\x00"sv)) return {"UTF-32LE", 4};
+    if (starts("\x00\x00\xFE\xFF"sv)) return {"UTF-32BE", 4};
+    if (starts("\xFF\xFE"sv)) return {"UTF-16LE", 2};
+    if (starts("\xFE\xFF"sv)) return {"UTF-16BE", 2};
+    return {};
+}
+
+Result<Converter> open_converter(const std::string& name) {
+    UErrorCode err = U_ZERO_ERROR;
+    Converter cnv(ucnv_open(name.c_str(), &err));
+    if (U_FAILURE(err) || !cnv)
+        return fail("unknown encoding '" + name +
+                        "' (try UTF-8, UTF-16LE, GB18030, Big5, windows-1252, ...)",
+                    "encoding");
+    // Stop at the first byte sequence the encoding does not define: a silent
+    // substitution character would lose the teacher's text without a word.
+    ucnv_setToUCallBack(cnv.get(), UCNV_TO_U_CALLBACK_STOP, nullptr, nullptr, nullptr, &err);
+    if (U_FAILURE(err)) return fail("cannot configure converter for '" + name + "'", "encoding");
+    return cnv;
+}
+
+bool is_utf8_converter(UConverter* cnv) {
+    UErrorCode err = U_ZERO_ERROR;
+    return std::strcmp(ucnv_getName(cnv, &err), "UTF-8") == 0;
+}
+
+// Streams `bytes` through ICU into UTF-8 in bounded chunks, so the peak is the
+// input plus the output. `skip` bytes (a byte-order mark) are not converted.
+Result<std::string> convert(std::string_view bytes, UConverter* cnv, const std::string& label) {
+    std::string out;
+    out.reserve(bytes.size() + bytes.size() / 2);  // CJK: 2 bytes -> 3 bytes of UTF-8
+    std::array<UChar, 16384> buffer{};
+    const char* const begin = bytes.data();
+    const char* source = begin;
+    const char* const end = begin + bytes.size();
+    UChar pending_high = 0;  // a surrogate pair split across two chunks
+    for (;;) {
+        UErrorCode err = U_ZERO_ERROR;
+        UChar* target = buffer.data();
+        ucnv_toUnicode(cnv, &target, buffer.data() + buffer.size(), &source, end, nullptr,
+                       /*flush=*/true, &err);
+        for (const UChar* p = buffer.data(); p != target; ++p) {
+            const UChar u = *p;
+            if (pending_high != 0) {
+                if (U16_IS_TRAIL(u)) {
+                    append_utf8(out, static_cast<char32_t>(U16_GET_SUPPLEMENTARY(pending_high, u)));
+                    pending_high = 0;
+                    continue;
+                }
+                pending_high = 0;  // cannot happen: ICU emits well-formed UTF-16
+            }
+            if (U16_IS_LEAD(u))
+                pending_high = u;
+            else
+                append_utf8(out, u);
+        }
+        if (err == U_BUFFER_OVERFLOW_ERROR) continue;
+        if (U_FAILURE(err)) {
+            std::array<char, 32> bad{};
+            auto bad_length = static_cast<std::int8_t>(bad.size());
+            UErrorCode e2 = U_ZERO_ERROR;
+            ucnv_getInvalidChars(cnv, bad.data(), &bad_length, &e2);
+            const auto consumed = static_cast<std::size_t>(source - begin);
+            const auto skip = U_SUCCESS(e2) ? static_cast<std::size_t>(bad_length) : 0;
+            const auto offset = consumed >= skip ? consumed - skip : consumed;
+            std::string what = err == U_TRUNCATED_CHAR_FOUND ? "text ends inside a character"
+                                                             : "byte sequence not valid";
+            return fail(what + " in " + label + " (wrong encoding? name it explicitly)",
+                        byte_at(offset));
+        }
+        break;
+    }
+    return out;
+}
+
+// uchardet returns "" when unsure; it may be fed in pieces and settles early.
+std::string detect_with_uchardet(std::string_view bytes) {
+    Detector det(uchardet_new());
+    constexpr std::size_t chunk = 64 * 1024;
+    constexpr std::size_t enough = 16u << 20;  // more does not change its mind
+    for (std::size_t i = 0; i < bytes.size() && i < enough; i += chunk) {
+        const auto piece = bytes.substr(i, chunk);
+        if (uchardet_handle_data(det.get(), piece.data(), piece.size()) != 0) break;
+    }
+    uchardet_data_end(det.get());
+    return uchardet_get_charset(det.get());
+}
+
+// Control characters mean binary data or a wrong decoding, never teacher text.
+Result<void> check_controls(std::string_view utf8) {
+    for (std::size_t i = 0; i < utf8.size(); ++i) {
+        const auto b = static_cast<unsigned char>(utf8[i]);
+        unsigned code = 0;
+        if ((b < 0x20 && b != '\t' && b != '\n' && b != '\v' && b != '\f' && b != '\r') ||
+            b == 0x7F)
+            code = b;
+        else if (b == 0xC2 && i + 1 < utf8.size() &&
+                 static_cast<unsigned char>(utf8[i + 1]) >= 0x80 &&
+                 static_cast<unsigned char>(utf8[i + 1]) <= 0x9F)
+            code = static_cast<unsigned char>(utf8[i + 1]);
+        else
+            continue;
+        std::array<char, 16> hex{};
+        std::snprintf(hex.data(), hex.size(), "U+%04X", code);
+        return fail(std::string("not text: control character ") + hex.data(),
+                    position_at(utf8, i).to_string());
+    }
+    return {};
+}
+
+Result<DecodedText> decode_utf8(std::string_view bytes, std::size_t bom, std::string label) {
+    const auto invalid = find_invalid_utf8(bytes.substr(bom));
+    if (invalid != std::string_view::npos)
+        return fail("invalid UTF-8 (wrong encoding? name it explicitly)",
+                    byte_at(invalid + bom));
+    DecodedText out;
+    out.bom_bytes = bom;
+    out.encoding = std::move(label);
+    return out;
+}
+
+Result<DecodedText> decode_with(std::string_view bytes, const std::string& name,
+                                std::string label) {
+    auto cnv = open_converter(name);
+    if (!cnv) return std::unexpected(cnv.error());
+    if (is_utf8_converter(cnv->get()))
+        return decode_utf8(bytes, sniff_bom(bytes).encoding == "UTF-8" ? 3 : 0, std::move(label));
+    auto text = convert(bytes, cnv->get(), label);
+    if (!text) return std::unexpected(text.error());
+    DecodedText out;
+    out.converted = std::move(*text);
+    // Explicit UTF-16LE/BE and friends keep a byte-order mark as U+FEFF.
+    if (std::string_view(out.converted).starts_with("\xEF\xBB\xBF")) out.converted.erase(0, 3);
+    out.is_copy = true;
+    out.encoding = std::move(label);
+    return out;
+}
+
+Result<DecodedText> detect_and_decode(std::string_view bytes) {
+    if (const auto bom = sniff_bom(bytes); bom.length != 0) {
+        if (bom.encoding == "UTF-8") return decode_utf8(bytes, 3, "UTF-8");
+        return decode_with(bytes, std::string(bom.encoding), std::string(bom.encoding));
+    }
+    if (const auto* nul = static_cast<const char*>(std::memchr(bytes.data(), 0, bytes.size()))) {
+        const auto at = static_cast<std::size_t>(nul - bytes.data());
+        const bool utf16_like = bytes.size() >= 4 && (bytes[1] == 0 || bytes[0] == 0);
+        return fail(std::string("not text: NUL byte") +
+                        (utf16_like ? " (UTF-16 without a byte-order mark? name the encoding)"
+                                    : ""),
+                    byte_at(at));
+    }
+    const auto invalid = find_invalid_utf8(bytes);
+    if (invalid == std::string_view::npos) return decode_utf8(bytes, 0, "UTF-8");
+
+    std::string detected = upper(detect_with_uchardet(bytes));
+    if (detected.empty() || detected == "ASCII")
+        return fail("cannot tell the text encoding; name it explicitly (e.g. GB18030, Big5)",
+                    byte_at(invalid));
+    if (detected == "UTF-8")
+        return fail("invalid UTF-8", byte_at(invalid));
+    // Latin-1 text with curly quotes or a euro sign is really Windows-1252: in
+    // ISO-8859-1 those bytes would become invisible C1 control characters.
+    if (detected == "ISO-8859-1") detected = "WINDOWS-1252";
+    auto decoded = decode_with(bytes, detected, detected);
+    if (!decoded && decoded.error().where == "encoding")
+        return fail("detected encoding " + detected +
+                        " is not supported; convert the file to UTF-8 or name the encoding",
+                    byte_at(invalid));
+    return decoded;
+}
+
+}  // namespace
+
+Result<DecodedText> decode_text(std::string_view bytes, std::string_view declared) {
+    auto name = std::string(declared);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (!declared.empty() && name.empty()) return fail("empty encoding name", "encoding");
+    auto decoded = declared.empty() ? detect_and_decode(bytes) : decode_with(bytes, name, name);
+    if (!decoded) return decoded;
+    if (auto ok = check_controls(decoded->text(bytes)); !ok) return std::unexpected(ok.error());
+    return decoded;
+}
+
+}  // namespace tactus::import_detail

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import/import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "common/file_io.hpp"
+#include "import/encoding.hpp"
+#include "import/importers.hpp"
+
+namespace tactus {
+namespace {
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    for (auto& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string extension_of(std::string_view name) {
+    const auto slash = name.find_last_of("/\\");
+    const auto base = slash == std::string_view::npos ? name : name.substr(slash + 1);
+    const auto dot = base.rfind('.');
+    return dot == std::string_view::npos || dot == 0 ? std::string{} : lower(base.substr(dot + 1));
+}
+
+std::optional<SourceFormat> format_from_extension(const std::string& ext) {
+    if (ext == "txt" || ext == "text") return SourceFormat::text;
+    if (ext == "md" || ext == "markdown") return SourceFormat::markdown;
+    if (ext == "docx") return SourceFormat::docx;
+    if (ext == "brf" || ext == "brl") return SourceFormat::brf;
+    if (ext == "pef") return SourceFormat::pef;
+    return std::nullopt;
+}
+
+// An XML document whose root element is <pef> (any prefix). Looks only at the
+// start: the root comes after at most a declaration, comments and a doctype.
+bool looks_like_pef(std::string_view bytes) {
+    auto head = bytes.substr(0, 4096);
+    if (head.starts_with("\xEF\xBB\xBF")) head.remove_prefix(3);
+    const auto first = head.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos || head[first] != '<') return false;
+    for (std::size_t at = head.find('<'); at != std::string_view::npos; at = head.find('<', at + 1)) {
+        const auto next = head.substr(at + 1);
+        if (next.starts_with('?') || next.starts_with('!')) continue;
+        const auto name_end = next.find_first_of(" \t\r\n/>");
+        auto name = next.substr(0, name_end);
+        if (const auto colon = name.find(':'); colon != std::string_view::npos)
+            name = name.substr(colon + 1);
+        return name == "pef";
+    }
+    return false;
+}
+
+}  // namespace
+
+Result<SourceFormat> parse_source_format(std::string_view name) {
+    const auto n = lower(name);
+    if (n == "auto" || n == "automatic") return SourceFormat::automatic;
+    if (const auto f = format_from_extension(n); f && n != "brl" && n != "text") return *f;
+    if (n == "text") return SourceFormat::text;
+    return fail("unknown input format '" + std::string(name) +
+                    "' (expected auto, txt, md, docx, brf or pef)",
+                "format");
+}
+
+std::string_view source_format_name(SourceFormat format) {
+    switch (format) {
+        case SourceFormat::automatic: return "auto";
+        case SourceFormat::text: return "txt";
+        case SourceFormat::markdown: return "md";
+        case SourceFormat::docx: return "docx";
+        case SourceFormat::brf: return "brf";
+        case SourceFormat::pef: return "pef";
+    }
+    return "auto";
+}
+
+SourceFormat detect_source_format(std::string_view bytes, std::string_view name) {
+    if (const auto f = format_from_extension(extension_of(name))) return *f;
+    if (bytes.starts_with("PK\x03\x04")) return SourceFormat::docx;
+    if (looks_like_pef(bytes)) return SourceFormat::pef;
+    // Braille ASCII cannot be told from upper-case English by content, and
+    // Markdown is valid plain text: both need their extension or an explicit format.
+    return SourceFormat::text;
+}
+
+Result<Document> import_bytes(std::string_view bytes, std::string_view name,
+                              const ImportOptions& options) {
+    const std::string where(name);
+    if (bytes.size() > max_import_bytes)
+        return fail("input is " + std::to_string(bytes.size()) + " bytes, above the limit of " +
+                        std::to_string(max_import_bytes),
+                    where);
+    const auto format = options.format == SourceFormat::automatic
+                            ? detect_source_format(bytes, name)
+                            : options.format;
+    if (!options.encoding.empty() && format != SourceFormat::text &&
+        format != SourceFormat::markdown)
+        return fail("an encoding can only be given for text and Markdown input, not " +
+                        std::string(source_format_name(format)),
+                    where);
+
+    Result<Document> doc = Document{};
+    std::string encoding;
+    switch (format) {
+        case SourceFormat::text:
+        case SourceFormat::markdown: {
+            auto decoded = import_detail::decode_text(bytes, options.encoding);
+            if (!decoded) return std::unexpected(located(decoded.error(), where));
+            const auto text = decoded->text(bytes);
+            doc = format == SourceFormat::text ? import_detail::import_text(text)
+                                               : import_detail::import_markdown(text);
+            encoding = decoded->encoding;
+            break;
+        }
+        case SourceFormat::docx:
+            if (bytes.empty()) return fail("empty file is not a DOCX document", where);
+            doc = import_detail::import_docx(bytes);
+            break;
+        case SourceFormat::brf: doc = import_detail::import_brf(bytes); break;
+        case SourceFormat::pef:
+            if (bytes.empty()) return fail("empty file is not a PEF document", where);
+            doc = import_detail::import_pef(bytes);
+            break;
+        case SourceFormat::automatic: break;  // resolved above
+    }
+    if (!doc) return std::unexpected(located(doc.error(), where));
+    doc->source_name = where;
+    doc->encoding = std::move(encoding);
+    return doc;
+}
+
+Result<Document> import_file(const std::filesystem::path& path, const ImportOptions& options) {
+    auto bytes = read_file(path, max_import_bytes);
+    if (!bytes) return std::unexpected(bytes.error());
+    return import_bytes(*bytes, path.string(), options);
+}
+
+}  // namespace tactus

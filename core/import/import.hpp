@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The import stage: turns a teacher's file (plain text, Markdown, DOCX, BRF, PEF)
+// into the document model. Policies (encodings, page-break conventions, lists,
+// limits) are described in docs/import.md.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "common/result.hpp"
+#include "document/document.hpp"
+
+namespace tactus {
+
+enum class SourceFormat { automatic, text, markdown, docx, brf, pef };
+
+struct ImportOptions {
+    SourceFormat format = SourceFormat::automatic;
+    std::string encoding;  // text and Markdown only; empty = detect
+};
+
+// Inputs above this are refused before anything is decoded, so a mistaken
+// argument (a disk image, a video) fails fast instead of exhausting memory.
+inline constexpr std::size_t max_import_bytes = std::size_t{256} << 20;
+
+Result<Document> import_file(const std::filesystem::path& path, const ImportOptions& options = {});
+// `name` is used in messages and, when the format is automatic, for its extension.
+Result<Document> import_bytes(std::string_view bytes, std::string_view name,
+                              const ImportOptions& options = {});
+
+// "txt"/"text", "md"/"markdown", "docx", "brf", "pef", "auto"/"automatic"; case-insensitive.
+Result<SourceFormat> parse_source_format(std::string_view name);
+// The canonical short name ("txt", "md", ...), for messages and the CLI.
+std::string_view source_format_name(SourceFormat format);
+
+// The format `import_bytes` would use for these bytes: extension first, then content.
+SourceFormat detect_source_format(std::string_view bytes, std::string_view name);
+
+}  // namespace tactus

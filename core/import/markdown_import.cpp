@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Markdown (CommonMark, md4c). Conventions, see docs/import.md:
+//  - ordered list items keep their number as text ("3. "), bullets are dropped
+//    (braille shows list structure by indentation, not by a print bullet);
+//  - print page break: a form feed, a thematic break (---, ***), or an HTML
+//    comment <!-- pagebreak --> (<!-- pagebreak 12 --> sets the printed label);
+//  - code is plain text, one paragraph per line of a code block;
+//  - link and image text are kept, URLs dropped; inline HTML tags are dropped,
+//    other HTML comments are dropped, HTML blocks keep their text without tags.
+#include <md4c.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "common/utf8.hpp"
+#include "import/document_builder.hpp"
+#include "import/importers.hpp"
+#include "import/text_position.hpp"
+
+namespace tactus::import_detail {
+namespace {
+
+std::string_view trim(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) return {};
+    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+// md4c hands entities over undecoded ("&amp;", "&#233;"). Numeric ones are
+// decoded exactly; of the named ones the common typographic set is known, and
+// an unknown name is kept literally rather than dropped.
+std::string decode_entity(std::string_view e) {
+    std::string out;
+    if (e.size() > 3 && e[1] == '#') {
+        const bool hex = e[2] == 'x' || e[2] == 'X';
+        const std::string digits(e.substr(hex ? 3 : 2, e.size() - (hex ? 4 : 3)));
+        char* end = nullptr;
+        const unsigned long cp = std::strtoul(digits.c_str(), &end, hex ? 16 : 10);
+        if (end && *end == '\0' && cp > 0 && cp <= 0x10FFFF && (cp < 0xD800 || cp > 0xDFFF))
+            append_utf8(out, static_cast<char32_t>(cp));
+        else
+            append_utf8(out, 0xFFFD);  // CommonMark: invalid code points become U+FFFD
+        return out;
+    }
+    struct Named {
+        std::string_view name;
+        char32_t cp;
+    };
+    static constexpr Named named[] = {
+        {"&amp;", '&'},      {"&lt;", '<'},        {"&gt;", '>'},       {"&quot;", '"'},
+        {"&apos;", '\''},    {"&nbsp;", 0xA0},     {"&copy;", 0xA9},    {"&reg;", 0xAE},
+        {"&deg;", 0xB0},     {"&plusmn;", 0xB1},   {"&middot;", 0xB7},  {"&frac12;", 0xBD},
+        {"&times;", 0xD7},   {"&divide;", 0xF7},   {"&ndash;", 0x2013}, {"&mdash;", 0x2014},
+        {"&lsquo;", 0x2018}, {"&rsquo;", 0x2019},  {"&ldquo;", 0x201C}, {"&rdquo;", 0x201D},
+        {"&bull;", 0x2022},  {"&hellip;", 0x2026}, {"&euro;", 0x20AC},  {"&trade;", 0x2122},
+        {"&larr;", 0x2190},  {"&rarr;", 0x2192},   {"&minus;", 0x2212}, {"&le;", 0x2264},
+        {"&ge;", 0x2265},    {"&ne;", 0x2260},     {"&pi;", 0x3C0},     {"&sect;", 0xA7},
+    };
+    for (const auto& n : named)
+        if (n.name == e) {
+            append_utf8(out, n.cp);
+            return out;
+        }
+    return std::string(e);
+}
+
+// Text of an HTML block with the tags removed (a <div> around a sentence).
+std::string strip_tags(std::string_view html) {
+    std::string out;
+    bool in_tag = false;
+    for (const char c : html) {
+        if (c == '<') in_tag = true;
+        else if (c == '>' && in_tag) in_tag = false;
+        else if (!in_tag) out.push_back(c == '\n' ? ' ' : c);
+    }
+    return out;
+}
+
+class MarkdownReader {
+public:
+    MarkdownReader(std::string_view all, const LineIndex& lines) : all_(all), lines_(lines) {}
+
+    // One form-feed-free piece of the input, a substring of `all`.
+    Result<void> parse(std::string_view segment) {
+        MD_PARSER parser{};
+        parser.abi_version = 0;
+        parser.flags = MD_FLAG_STRIKETHROUGH;
+        parser.enter_block = [](MD_BLOCKTYPE t, void* d, void* self) {
+            return static_cast<MarkdownReader*>(self)->enter_block(t, d);
+        };
+        parser.leave_block = [](MD_BLOCKTYPE t, void* d, void* self) {
+            return static_cast<MarkdownReader*>(self)->leave_block(t, d);
+        };
+        parser.enter_span = [](MD_SPANTYPE t, void*, void* self) {
+            return static_cast<MarkdownReader*>(self)->span(t, +1);
+        };
+        parser.leave_span = [](MD_SPANTYPE t, void*, void* self) {
+            return static_cast<MarkdownReader*>(self)->span(t, -1);
+        };
+        parser.text = [](MD_TEXTTYPE t, const MD_CHAR* s, MD_SIZE n, void* self) {
+            return static_cast<MarkdownReader*>(self)->text(t, std::string_view(s, n));
+        };
+        segment_start_ = line_of(segment.data());
+        if (md_parse(segment.data(), static_cast<MD_SIZE>(segment.size()), &parser, this) != 0)
+            return fail(builder_.full() ? "too many blocks" : "Markdown parser failed",
+                        std::to_string(segment_start_));
+        return {};
+    }
+
+    void page_break(int line) { builder_.print_page_break(line); }
+    DocumentBuilder& builder() { return builder_; }
+
+private:
+    struct List {
+        bool ordered = false;
+        unsigned next = 1;
+        char delimiter = '.';
+    };
+
+    int enter_block(MD_BLOCKTYPE type, void* detail) {
+        switch (type) {
+            case MD_BLOCK_UL:
+                builder_.end();
+                lists_.push_back(List{});
+                break;
+            case MD_BLOCK_OL: {
+                builder_.end();
+                const auto* d = static_cast<MD_BLOCK_OL_DETAIL*>(detail);
+                lists_.push_back(List{true, d->start, d->mark_delimiter});
+                break;
+            }
+            case MD_BLOCK_LI:
+                builder_.end();
+                item_prefix_.clear();
+                if (!lists_.empty() && lists_.back().ordered)
+                    item_prefix_ = std::to_string(lists_.back().next++) + lists_.back().delimiter + " ";
+                item_pending_ = true;
+                break;
+            case MD_BLOCK_H:
+                builder_.begin(BlockKind::heading,
+                               static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level), 0);
+                break;
+            case MD_BLOCK_P:
+                open_text_block();
+                break;
+            case MD_BLOCK_HR:
+                builder_.print_page_break(0);
+                break;
+            case MD_BLOCK_CODE:
+                builder_.end();
+                in_code_ = true;
+                break;
+            case MD_BLOCK_HTML:
+                builder_.end();
+                html_.clear();
+                in_html_ = true;
+                break;
+            default:
+                break;
+        }
+        return builder_.full() ? 1 : 0;
+    }
+
+    int leave_block(MD_BLOCKTYPE type, void*) {
+        switch (type) {
+            case MD_BLOCK_UL:
+            case MD_BLOCK_OL:
+                builder_.end();
+                lists_.pop_back();
+                break;
+            case MD_BLOCK_LI:
+                builder_.end();
+                item_pending_ = false;
+                break;
+            case MD_BLOCK_CODE:
+                builder_.end();
+                in_code_ = false;
+                break;
+            case MD_BLOCK_HTML:
+                in_html_ = false;
+                leave_html();
+                break;
+            case MD_BLOCK_H:
+            case MD_BLOCK_P:
+                builder_.end();
+                break;
+            default:
+                break;
+        }
+        return builder_.full() ? 1 : 0;
+    }
+
+    int span(MD_SPANTYPE type, int delta) {
+        switch (type) {
+            case MD_SPAN_EM: italic_ += delta; break;
+            case MD_SPAN_STRONG: bold_ += delta; break;
+            case MD_SPAN_U: underline_ += delta; break;
+            default: break;
+        }
+        return 0;
+    }
+
+    int text(MD_TEXTTYPE type, std::string_view s) {
+        if (in_html_) {
+            html_.append(s);
+            html_line_ = html_line_ ? html_line_ : line_of(s.data());
+            return 0;
+        }
+        switch (type) {
+            case MD_TEXT_HTML: return 0;  // inline tags: their content arrives as text
+            case MD_TEXT_SOFTBR: add(" ", s); return 0;
+            case MD_TEXT_BR: add("\n", s); return 0;
+            case MD_TEXT_NULLCHAR: add("\xEF\xBF\xBD", s); return 0;
+            case MD_TEXT_ENTITY: add(decode_entity(s), s); return 0;
+            default: break;
+        }
+        if (!in_code_) {
+            add(s, s);
+            return 0;
+        }
+        // Code block: one paragraph per line, indentation kept.
+        while (!s.empty()) {
+            const auto nl = s.find('\n');
+            add(s.substr(0, nl), s);
+            if (nl == std::string_view::npos) break;
+            builder_.end();
+            s.remove_prefix(nl + 1);
+        }
+        return 0;
+    }
+
+    void open_text_block() {
+        if (!lists_.empty())
+            builder_.begin(BlockKind::list_item, static_cast<int>(lists_.size()), 0);
+        else
+            builder_.begin(BlockKind::paragraph, 0, 0);
+    }
+
+    void add(std::string_view s, std::string_view where) {
+        if (s.empty()) return;
+        if (!builder_.is_open()) open_text_block();
+        builder_.note_line(line_of(where.data()));
+        if (item_pending_ && builder_.open_kind() == BlockKind::list_item) {
+            item_pending_ = false;
+            builder_.add_text(item_prefix_);
+        }
+        const auto emphasis = static_cast<std::uint8_t>(
+            (italic_ > 0 ? emphasis_italic : 0) | (bold_ > 0 ? emphasis_bold : 0) |
+            (underline_ > 0 ? emphasis_underline : 0));
+        builder_.add_text(s, emphasis);
+    }
+
+    void leave_html() {
+        const auto html = trim(html_);
+        const int line = html_line_;
+        html_line_ = 0;
+        if (html.starts_with("<!--") && html.ends_with("-->")) {
+            const auto body = trim(html.substr(4, html.size() - 7));
+            if (body.starts_with("pagebreak")) {
+                auto label = trim(body.substr(9));
+                if (label.starts_with(':')) label = trim(label.substr(1));
+                builder_.print_page_break(line, std::string(label));
+            }
+            return;  // any other comment is not content
+        }
+        const auto text = strip_tags(html);
+        if (trim(text).empty()) return;
+        builder_.begin(BlockKind::paragraph, 0, line);
+        builder_.add_text(trim(text));
+        builder_.end();
+    }
+
+    int line_of(const char* p) const {
+        if (p < all_.data() || p >= all_.data() + all_.size()) return 0;  // md4c's own buffer
+        return lines_.line_at(static_cast<std::size_t>(p - all_.data()));
+    }
+
+    std::string_view all_;
+    const LineIndex& lines_;
+    DocumentBuilder builder_;
+    std::vector<List> lists_;
+    std::string item_prefix_;
+    bool item_pending_ = false;
+    bool in_code_ = false;
+    bool in_html_ = false;
+    std::string html_;
+    int html_line_ = 0;
+    int segment_start_ = 1;
+    int italic_ = 0, bold_ = 0, underline_ = 0;
+};
+
+}  // namespace
+
+Result<Document> import_markdown(std::string_view utf8) {
+    const LineIndex lines(utf8);
+    MarkdownReader reader(utf8, lines);
+    // CommonMark treats a form feed as blank space; as the print page break of
+    // plain text it splits the input, and each piece is parsed on its own.
+    std::size_t start = 0;
+    for (;;) {
+        const auto ff = utf8.find('\f', start);
+        const auto piece = utf8.substr(start, ff == std::string_view::npos ? ff : ff - start);
+        if (auto ok = reader.parse(piece); !ok) {
+            if (reader.builder().full()) break;  // finish() reports it
+            return std::unexpected(ok.error());
+        }
+        if (ff == std::string_view::npos) break;
+        reader.page_break(lines.line_at(ff));
+        start = ff + 1;
+    }
+    return reader.builder().finish();
+}
+
+}  // namespace tactus::import_detail

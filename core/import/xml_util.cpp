@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import/xml_util.hpp"
+
+#include <string>
+
+#include "import/text_position.hpp"
+
+namespace tactus::import_detail {
+
+Result<void> parse_xml(pugi::xml_document& doc, std::string_view bytes, std::string_view part) {
+    // parse_ws_pcdata keeps <w:t xml:space="preserve"> </w:t>: a space is text.
+    const auto result = doc.load_buffer(bytes.data(), bytes.size(),
+                                        pugi::parse_default | pugi::parse_ws_pcdata,
+                                        pugi::encoding_auto);
+    if (result) return {};
+    const auto pos = position_at(bytes, static_cast<std::size_t>(std::max<std::ptrdiff_t>(result.offset, 0)));
+    std::string where = part.empty() ? pos.to_string() : std::string(part) + ":" + pos.to_string();
+    return fail(std::string("invalid XML: ") + result.description(), std::move(where));
+}
+
+std::string_view local_name(const pugi::xml_node& node) {
+    const std::string_view name = node.name();
+    const auto colon = name.find(':');
+    return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+std::string_view namespace_uri(const pugi::xml_node& node) {
+    const std::string_view name = node.name();
+    const auto colon = name.find(':');
+    const std::string attr =
+        colon == std::string_view::npos ? "xmlns" : "xmlns:" + std::string(name.substr(0, colon));
+    for (auto n = node; n; n = n.parent()) {
+        if (n.type() != pugi::node_element) break;
+        if (const auto a = n.attribute(attr.c_str())) return a.value();
+    }
+    return {};
+}
+
+std::string_view attribute(const pugi::xml_node& node, std::string_view local) {
+    for (const auto& a : node.attributes()) {
+        const std::string_view name = a.name();
+        const auto colon = name.find(':');
+        if ((colon == std::string_view::npos ? name : name.substr(colon + 1)) == local)
+            return a.value();
+    }
+    return {};
+}
+
+pugi::xml_node child(const pugi::xml_node& node, std::string_view local) {
+    for (const auto& c : node.children())
+        if (c.type() == pugi::node_element && local_name(c) == local) return c;
+    return {};
+}
+
+}  // namespace tactus::import_detail

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "../layout/cells.hpp"
+#include "export/export.hpp"
+#include "pef_checks.hpp"
+
+using namespace tactus;
+
+namespace {
+
+PagedDocument two_pages(bool interpoint) {
+    PagedDocument d;
+    d.geometry = {6, 3, interpoint, false};
+    Page a;
+    a.braille_number = 1;
+    a.lines = {brf(",HI"), {}, brf("    #A")};
+    Page b;
+    b.braille_number = 2;
+    b.lines = {brf("BYE"), {}, {}};
+    d.pages = {a, b};
+    return d;
+}
+
+}  // namespace
+
+TEST(BrfExport, CrlfLinesAndFormFeedAfterEveryPage) {
+    const auto brf_text = to_brf(two_pages(true));
+    ASSERT_TRUE(brf_text);
+    EXPECT_EQ(*brf_text, ",HI\r\n\r\n    #A\r\n\fBYE\r\n\f");
+}
+
+TEST(BrfExport, EightDotCellsAreRefusedWithTheirPlace) {
+    auto d = two_pages(false);
+    d.pages[1].lines[0][1].dots |= 0x80;
+    const auto r = to_brf(d);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().where, "page 2 line 1");
+}
+
+TEST(UnicodeExport, LinesAndFormFeedsBetweenPages) {
+    EXPECT_EQ(to_unicode(two_pages(false)), "⠠⠓⠊\n\n⠀⠀⠀⠀⠼⠁\n\f⠃⠽⠑\n");
+}
+
+TEST(PefExport, ValidatesAgainstTheSchemaAndSchematronRules) {
+    for (bool duplex : {false, true}) {
+        PefMetadata meta;
+        meta.title = "Test & <escape>";
+        meta.language = "en";
+        meta.date = "2026-11-21";
+        const auto pef = to_pef(two_pages(duplex), meta);
+        ASSERT_TRUE(pef);
+        EXPECT_EQ(validate_pef_schema(*pef), "");
+        EXPECT_EQ(check_pef_schematron(*pef), "");
+        EXPECT_NE(pef->find(duplex ? "duplex=\"true\"" : "duplex=\"false\""), std::string::npos);
+        EXPECT_NE(pef->find("<row>⠠⠓⠊</row>"), std::string::npos);
+        EXPECT_NE(pef->find("Test &amp; &lt;escape&gt;"), std::string::npos);
+    }
+}
+
+TEST(PefExport, IdentifierIsStableAndContentDerived) {
+    const auto a = to_pef(two_pages(true));
+    const auto b = to_pef(two_pages(true));
+    auto other = two_pages(true);
+    other.pages[1].lines[0] = brf("BYF");
+    const auto c = to_pef(other);
+    ASSERT_TRUE(a && b && c);
+    EXPECT_EQ(*a, *b);
+    EXPECT_NE(*a, *c);
+}
+
+TEST(PefChecks, DetectViolations) {
+    // The checks themselves must be able to fail.
+    const std::string too_long =
+        R"(<pef xmlns="http://www.daisy.org/ns/2008/pef"><body><volume cols="2" rows="1" rowgap="0" duplex="false"><section><page><row>⠁⠁⠁</row></page></section></volume></body></pef>)";
+    EXPECT_NE(check_pef_schematron(too_long), "");
+    const std::string too_many =
+        R"(<pef xmlns="http://www.daisy.org/ns/2008/pef"><body><volume cols="2" rows="1" rowgap="0" duplex="false"><section><page><row>⠁</row><row>⠁</row></page></section></volume></body></pef>)";
+    EXPECT_NE(check_pef_schematron(too_many), "");
+    EXPECT_NE(validate_pef_schema("<pef/>"), "");
+}
+
+TEST(ExportFormat, ParsesNamesAndRejectsOthers) {
+    EXPECT_EQ(*parse_export_format("pef"), ExportFormat::pef);
+    EXPECT_FALSE(parse_export_format("docx"));
+}

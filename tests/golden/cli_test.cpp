@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tactus-cli end to end: the real binary, its exit codes and messages.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <algorithm>
+
+#include "../common/run.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kText =
+    "The quick brown fox.\n"
+    "Braille, 42 times; \"quoted\" and (bracketed).\n"
+    "\n"
+    "Knowledge is power!\n";
+
+fs::path temp_file(const std::string& name, const std::string& content) {
+    const auto p = fs::temp_directory_path() / ("tactus-cli-test-" + name);
+    std::ofstream(p, std::ios::binary) << content;
+    return p;
+}
+
+}  // namespace
+
+// The fixed contract: one output line per input line, exactly what liblouis's own
+// lou_translate gives with the same display table.
+TEST(CliTranslate, MatchesLouTranslateLineByLine) {
+    const auto input = temp_file("in.txt", kText);
+    for (const auto& [to, display] : {std::pair{"unicode", "unicode.dis"}, std::pair{"brf", "en-us-brf.dis"}}) {
+        const auto ours = run_command(cli(std::string("translate --table en-ueb-g2.ctb --to ") + to + " '" +
+                                          input.string() + "'"));
+        ASSERT_EQ(ours.exit_code, 0) << ours.err;
+        const auto peer = run_command(std::string("lou_translate ") + display + ",en-ueb-g2.ctb", kText);
+        ASSERT_EQ(peer.exit_code, 0) << peer.err;
+        EXPECT_EQ(ours.out, peer.out) << to;
+    }
+    const auto from_stdin = run_command(cli("translate --to brf -"), "Hello\n");
+    EXPECT_EQ(from_stdin.out, ",HELLO\n");
+}
+
+TEST(CliTranslate, InvalidUtf8IsBadInputWithFileAndLine) {
+    const auto input = temp_file("bad.txt", "fine\nbroken \xFF here\n");
+    const auto r = run_command(cli("translate '" + input.string() + "'"));
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find(input.string() + ":2:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("invalid UTF-8"), std::string::npos) << r.err;
+}
+
+TEST(CliTranslate, UnknownTableIsBadInput) {
+    const auto r = run_command(cli("translate --table xx-nonexistent.ctb -"), "a\n");
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("xx-nonexistent.ctb"), std::string::npos) << r.err;
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(run_command(cli("")).exit_code, 2);
+    EXPECT_EQ(run_command(cli("layout --cells 1 x.md --to brf")).exit_code, 2);
+    EXPECT_EQ(run_command(cli("translate --to docx -")).exit_code, 2);
+    EXPECT_EQ(run_command(cli("layout --preset nope --to brf " TACTUS_RESOURCES_DIR "/samples/welcome.md")).exit_code, 2);
+}
+
+TEST(Cli, EveryCommandHasHelp) {
+    for (const char* c : {"", "translate", "layout", "tables"}) {
+        const auto r = run_command(cli(std::string(c) + " --help"));
+        EXPECT_EQ(r.exit_code, 0) << c;
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << c;
+    }
+}
+
+TEST(CliLayout, WritesAtomicallyAndSummarises) {
+    const auto out = fs::temp_directory_path() / "tactus-cli-test-out.brf";
+    fs::remove(out);
+    const auto r = run_command(cli("layout --interpoint --to brf -o '" + out.string() + "' " TACTUS_RESOURCES_DIR
+                                   "/samples/welcome.md"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_NE(r.err.find("interpoint"), std::string::npos);
+    const auto s = run_command(cli("layout --summary " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    EXPECT_EQ(s.exit_code, 0);
+    EXPECT_NE(s.out.find("27 cells x 24 lines"), std::string::npos) << s.out;
+}
+
+TEST(CliLayout, CustomGeometryIsHonoured) {
+    const auto r = run_command(cli("layout --cells 40 --lines 25 --to unicode " TACTUS_RESOURCES_DIR
+                                   "/samples/welcome.md"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::size_t longest = 0;
+    std::istringstream lines(r.out);
+    std::string line;
+    bool wider_than_27 = false;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line[0] == '\f') line.erase(0, 1);
+        const auto cells = line.size() / 3;  // every braille code point is 3 UTF-8 bytes
+        longest = std::max(longest, cells);
+        wider_than_27 = wider_than_27 || cells > 27;
+    }
+    EXPECT_LE(longest, 40u);
+    EXPECT_TRUE(wider_than_27);
+}
+
+TEST(CliLayout, BadInputNamesTheFile) {
+    const auto junk = temp_file("junk.docx", std::string("PK\x03\x04\x14\x00 truncated zip", 20));
+    const auto r = run_command(cli("layout --to brf '" + junk.string() + "'"));
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find(junk.string()), std::string::npos) << r.err;
+    const auto missing = run_command(cli("layout --to brf /nonexistent/file.txt"));
+    EXPECT_EQ(missing.exit_code, 3);
+    EXPECT_NE(missing.err.find("/nonexistent/file.txt"), std::string::npos) << missing.err;
+}

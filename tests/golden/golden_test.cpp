@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../export/pef_checks.hpp"
+#include "common/file_io.hpp"
+#include "export/export.hpp"
+#include "import/import.hpp"
+#include "pipeline/pipeline.hpp"
+
+using namespace tactus;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSamples = fs::path(TACTUS_RESOURCES_DIR) / "samples";
+
+struct GoldenCase {
+    std::string name;     // expected file name
+    std::string input;    // under resources/samples
+    std::string tables;
+    bool interpoint;
+    ExportFormat format;
+};
+
+std::string render(const GoldenCase& c) {
+    PipelineOptions o;
+    o.tables = c.tables;
+    o.layout.geometry.interpoint = c.interpoint;
+    auto doc = lay_out_file(kSamples / c.input, o);
+    EXPECT_TRUE(doc) << doc.error().to_string();
+    if (!doc) return {};
+    PefMetadata meta;
+    meta.title = c.input;
+    meta.date = "2026-01-01";
+    auto out = export_document(*doc, c.format, meta);
+    EXPECT_TRUE(out) << out.error().to_string();
+    return out ? *out : std::string{};
+}
+
+class Golden : public ::testing::TestWithParam<GoldenCase> {};
+
+}  // namespace
+
+TEST_P(Golden, MatchesExpectedBytes) {
+    const auto& c = GetParam();
+    const auto actual = render(c);
+    const auto path = fs::path(TACTUS_GOLDEN_DIR) / c.name;
+    if (std::getenv("TACTUS_UPDATE_GOLDEN")) {
+        ASSERT_TRUE(write_file_atomic(path, actual));
+        GTEST_SKIP() << "updated " << path;
+    }
+    const auto expected = read_file(path);
+    ASSERT_TRUE(expected) << expected.error().to_string();
+    EXPECT_EQ(actual, *expected) << "golden mismatch for " << c.name
+                                 << " (TACTUS_UPDATE_GOLDEN=1 regenerates; review the diff)";
+    if (c.format == ExportFormat::pef) {
+        EXPECT_EQ(validate_pef_schema(actual), "");
+        EXPECT_EQ(check_pef_schematron(actual), "");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Samples, Golden,
+    ::testing::Values(
+        GoldenCase{"welcome.brf", "welcome.md", "en-ueb-g2.ctb", false, ExportFormat::brf},
+        GoldenCase{"welcome-interpoint.brf", "welcome.md", "en-ueb-g2.ctb", true, ExportFormat::brf},
+        GoldenCase{"welcome-g1.pef", "welcome.md", "en-ueb-g1.ctb", true, ExportFormat::pef},
+        GoldenCase{"chinese-tw.brf", "chinese-tw.txt", "zh-tw.ctb", true, ExportFormat::brf},
+        GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, ExportFormat::unicode}),
+    [](const auto& param_info) {
+        std::string n = param_info.param.name;
+        for (auto& ch : n)
+            if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        return n;
+    });
+
+// BRF written by Tactus and read back lays out to the same pages.
+TEST(RoundTrip, BrfExportImportLayout) {
+    PipelineOptions o;
+    o.layout.geometry.interpoint = true;
+    auto doc = lay_out_file(kSamples / "welcome.md", o);
+    ASSERT_TRUE(doc);
+    const auto brf = to_brf(*doc);
+    ASSERT_TRUE(brf);
+    auto imported = import_bytes(*brf, "welcome.brf");
+    ASSERT_TRUE(imported) << imported.error().to_string();
+    // Page numbers are already in the BRF text: lay it out without adding more.
+    o.layout.page_numbers = PageNumberPosition::none;
+    auto again = lay_out(*imported, o);
+    ASSERT_TRUE(again) << again.error().to_string();
+    EXPECT_EQ(to_brf(*again).value(), *brf);
+}
+
+TEST(RoundTrip, PefExportImportLayout) {
+    PipelineOptions o;
+    o.tables = "zh-tw.ctb";
+    o.layout.geometry.interpoint = true;
+    auto doc = lay_out_file(kSamples / "chinese-tw.txt", o);
+    ASSERT_TRUE(doc);
+    const auto pef = to_pef(*doc);
+    ASSERT_TRUE(pef);
+    auto imported = import_bytes(*pef, "x.pef");
+    ASSERT_TRUE(imported) << imported.error().to_string();
+    o.layout.page_numbers = PageNumberPosition::none;
+    auto again = lay_out(*imported, o);
+    ASSERT_TRUE(again);
+    ASSERT_EQ(again->pages.size(), doc->pages.size());
+    for (std::size_t p = 0; p < doc->pages.size(); ++p)
+        EXPECT_EQ(again->pages[p].lines, doc->pages[p].lines) << "page " << p + 1;
+}

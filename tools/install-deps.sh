@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs everything Tactus needs to build, test and run on Debian 12.
+# SPDX-License-Identifier: GPL-3.0-or-later
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo" >&2; exit 1; }
+  SUDO=sudo
+fi
+packages=(
+  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev
+  liblouis-dev liblouis-bin liblouis-data
+  libserialport-dev libhidapi-dev libieee1284-3-dev libsqlite3-dev
+  libpugixml-dev nlohmann-json3-dev libcli11-dev libuchardet-dev libicu-dev
+  libmd4c-dev libzip-dev libgtest-dev libgmock-dev googletest
+  qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
+  qt6-l10n-tools libgl-dev
+  libxml2-utils bible-kjv time
+  xvfb xauth xdotool at-spi2-core python3-pyatspi dbus dbus-x11 imagemagick
+)
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
