@@ -76,8 +76,9 @@ enum class NakReason : std::uint8_t {
     unknown_type = 5,
 };
 
-// The short status carried by every ACK and NAK (7 bytes).
+// The short status carried by every ACK and NAK (8 bytes).
 struct AckInfo {
+    std::uint16_t job_id = 0;            // job the counts below belong to (0: none yet)
     std::uint8_t buffer_free = 0;        // ring bytes free, after everything acknowledged
     std::uint16_t executed_passes = 0;   // passes of the current job fully executed
     ControllerState state = ControllerState::idle;
@@ -86,7 +87,7 @@ struct AckInfo {
     bool operator==(const AckInfo&) const = default;
 };
 
-// The full status (STATUS_REPLY, 22 bytes).
+// The full status (STATUS_REPLY, 24 bytes).
 struct Status {
     AckInfo ack;
     std::uint8_t flags = 0;

@@ -30,6 +30,9 @@ public:
     // Seconds on this stream's clock: monotonic wall time for real devices,
     // simulated time for the in-process simulator (which runs faster than real time).
     [[nodiscard]] virtual double now() const;
+    // Waits on this stream's clock (reconnect back-off, pacing): the simulator
+    // runs its controller meanwhile instead of sleeping.
+    virtual void sleep(std::chrono::microseconds duration);
     // Line rate in bytes per second (start and stop bits included), 0 if unknown.
     [[nodiscard]] virtual double bytes_per_second() const { return 0; }
     [[nodiscard]] virtual std::string describe() const = 0;
