@@ -11,6 +11,9 @@ int main(int argc, char** argv) {
     add_translate_command(app);
     add_layout_command(app);
     add_tables_command(app);
+    add_queue_command(app);
+    add_serve_command(app);
+    add_emboss_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

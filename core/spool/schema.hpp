@@ -17,7 +17,6 @@ CREATE TABLE printers(
   device        TEXT NOT NULL,
   profile_json  TEXT NOT NULL,
   runner        TEXT NOT NULL DEFAULT '',
-  next_link_job INTEGER NOT NULL DEFAULT 1,
   created_at    REAL NOT NULL
 );
 CREATE TABLE jobs(

@@ -512,24 +512,21 @@ Result<void> Spool::spoil_sheet(JobId id, std::size_t sheet, std::string_view me
     return tx.commit();
 }
 
-Result<std::uint16_t> Spool::next_link_job(PrinterId printer_id) {
+Result<void> Spool::restart_sheet(JobId id, std::size_t sheet, std::string_view message) {
     SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("UPDATE printers SET next_link_job = CASE WHEN next_link_job >= 65535 "
-                             "THEN 1 ELSE next_link_job + 1 END WHERE id = ? RETURNING "
-                             "CASE WHEN next_link_job = 1 THEN 65535 ELSE next_link_job - 1 END"));
-    s.bind(1, printer_id);
-    SPOOL_LET(row, s.step());
-    if (!row) return fail("no printer with id " + std::to_string(printer_id));
-    const auto value = static_cast<std::uint16_t>(s.int64(0));
+    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0 WHERE job_id = ? AND sheet = ?"));
+    s.bind(1, id).bind(2, i64(sheet));
     SPOOL_TRY(s.run());
-    SPOOL_TRY(tx.commit());
-    return value;
+    SPOOL_TRY(insert_event(id, {}, "reprint", message));
+    return tx.commit();
 }
 
-Result<void> Spool::begin_run(JobId id, std::uint16_t link_job, std::size_t start_sheet) {
+Result<void> Spool::begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet) {
     SPOOL_LET(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_open = 1, "
                              "updated_at = ? WHERE id = ?"));
-    s.bind(1, std::int64_t{link_job}).bind(2, i64(start_sheet)).bind(3, now_seconds()).bind(4, id);
+    std::optional<std::int64_t> lj;
+    if (link_job) lj = *link_job;
+    s.bind(1, lj).bind(2, i64(start_sheet)).bind(3, now_seconds()).bind(4, id);
     return s.run();
 }
 

@@ -82,10 +82,12 @@ public:
     Result<void> record_passes(JobId id, std::size_t sheet, std::size_t passes_done);
     // A partly embossed sheet was ejected: its progress restarts, spoiled++.
     Result<void> spoil_sheet(JobId id, std::size_t sheet, std::string_view message);
-    // A fresh 16-bit job number for the link (never 0), per printer.
-    Result<std::uint16_t> next_link_job(PrinterId printer);
-    // Write-ahead: a stream of `link_job` from `start_sheet` is about to be sent.
-    Result<void> begin_run(JobId id, std::uint16_t link_job, std::size_t start_sheet);
+    // Sheets embossed before that the operator asked to emboss again: their
+    // progress restarts (not counted as spoiled: they were finished).
+    Result<void> restart_sheet(JobId id, std::size_t sheet, std::string_view message);
+    // Write-ahead: a stream from `start_sheet` is about to be sent (the link's
+    // job number is added once the controller has reported it).
+    Result<void> begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet);
     Result<void> end_run(JobId id);
     // Runner-side state change with its event (`kind`) and reason.
     Result<void> set_state(JobId id, JobState state, std::string_view reason,

@@ -179,18 +179,6 @@ TEST(SpoolStore, ProgressOnlyGrowsAndSpoilingRestartsASheet) {
     EXPECT_TRUE((*s.progress(id))[0].done());
 }
 
-TEST(SpoolStore, LinkJobNumbersAreFreshAndNeverZero) {
-    TempDir dir;
-    Spool s = open_with_printer(dir / "spool.db");
-    const auto pid = s.printer("lab")->id;
-    EXPECT_EQ(*s.next_link_job(pid), 1);
-    EXPECT_EQ(*s.next_link_job(pid), 2);
-    sql::Database raw = *sql::Database::open(dir / "spool.db", false, 1000);
-    ASSERT_TRUE(raw.exec("UPDATE printers SET next_link_job = 65535"));
-    EXPECT_EQ(*s.next_link_job(pid), 65535);
-    EXPECT_EQ(*s.next_link_job(pid), 1);
-}
-
 TEST(SpoolStore, ADeadRunnersJobsAreReleasedWithTheirWriteAheadRecord) {
     TempDir dir;
     Spool s = open_with_printer(dir / "spool.db");
@@ -206,7 +194,7 @@ TEST(SpoolStore, ADeadRunnersJobsAreReleasedWithTheirWriteAheadRecord) {
     ASSERT_FALSE(runner_alive(dead));
     ASSERT_TRUE(s.claim_printer(pid, dead));
     ASSERT_TRUE(s.claim_next(pid, dead, now_seconds()).value());
-    ASSERT_TRUE(s.begin_run(id, 7, 2));
+    ASSERT_TRUE(s.begin_run(id, std::uint16_t{7}, 2));
 
     const auto me = this_runner_token();
     ASSERT_TRUE(s.claim_printer(pid, me)) << "a dead holder must not block the printer";
