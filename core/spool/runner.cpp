@@ -256,7 +256,6 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     std::atomic<bool> operator_cancel{false};
     std::mutex state_mutex;  // the watcher and the progress callback both change the state
     bool fault_paused = false;
-    bool operator_paused = false;
     std::optional<Error> db_error;
     std::uint8_t last_faults = 0;
     bool link_job_recorded = false;
@@ -275,15 +274,14 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                 switch (*control) {
                 case Control::pause:
                     link.request_pause();
-                    operator_paused = true;
                     (void)ws->set_state(job.id, JobState::paused, "paused by the operator", "paused",
-                                        "pause sent: the printer stops at the end of the current pass");
+                                        "pause sent: the printer stops at the end of the current pass",
+                                        true);
                     break;
                 case Control::resume:
                     link.request_resume();
-                    operator_paused = false;
                     fault_paused = false;
-                    (void)ws->set_state(job.id, JobState::running, "", "resumed", "resume sent to the printer");
+                    (void)ws->set_state(job.id, JobState::running, "", "resumed", "resume sent to the printer", true);
                     break;
                 case Control::cancel:
                     operator_cancel = true;
@@ -318,7 +316,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
             std::lock_guard lock(state_mutex);
             if (fault_paused) {
                 fault_paused = false;
-                (void)s.set_state(job.id, JobState::running, "", "resumed", "the printer is running again");
+                (void)s.set_state(job.id, JobState::running, "", "resumed", "the printer is running again", true);
             }
             return;
         }
@@ -328,7 +326,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
             std::lock_guard lock(state_mutex);
             if (!fault_paused) {
                 fault_paused = true;
-                (void)s.set_state(job.id, JobState::paused, p.note, "fault", p.note);
+                (void)s.set_state(job.id, JobState::paused, p.note, "fault", p.note, true);
             }
         }
     };
@@ -363,7 +361,13 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     case link::JobEnd::failed: break;
     }
     const std::string why = outcome->error.to_string();
-    if ((last_faults & kOperatorFaults) != 0 || why.find("lost power") != std::string::npos) {
+    // The link names the fault in its error; the last status says it too
+    // unless the failure came before any report.
+    const bool needs_operator = (last_faults & kOperatorFaults) != 0 ||
+                                why.find("lost power") != std::string::npos ||
+                                why.find("hammer fault") != std::string::npos ||
+                                why.find("paper out") != std::string::npos;
+    if (needs_operator) {
         // The run stays open: the next start reads the controller's count.
         link_.reset();
         SPOOL_TRY(s.set_state(job.id, JobState::paused, why, "fault", why));

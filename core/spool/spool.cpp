@@ -537,13 +537,11 @@ Result<void> Spool::end_run(JobId id) {
 }
 
 Result<void> Spool::set_state(JobId id, JobState state, std::string_view reason,
-                              std::string_view kind, std::string_view message) {
+                              std::string_view kind, std::string_view message, bool held) {
     SPOOL_LET(tx, sql::Transaction::begin(db_));
     SPOOL_LET(j, job_locked(id));
     const double now = now_seconds();
-    // A job that leaves the printer (terminal or back in the queue) is no
-    // longer held; a paused one stays held while its runner keeps the session.
-    const bool release = is_terminal(state) || state == JobState::queued;
+    const bool release = !held || is_terminal(state) || state == JobState::queued;
     SPOOL_LET(s, db_.prepare(
                      "UPDATE jobs SET state = ?, reason = ?, updated_at = ?, "
                      "runner = CASE WHEN ? THEN '' ELSE runner END, "

@@ -89,9 +89,11 @@ public:
     // job number is added once the controller has reported it).
     Result<void> begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet);
     Result<void> end_run(JobId id);
-    // Runner-side state change with its event (`kind`) and reason.
+    // Runner-side state change with its event (`kind`) and reason. `held`:
+    // the runner keeps the job on its printer (running, or paused inside a
+    // stream it can resume); otherwise the job is let go.
     Result<void> set_state(JobId id, JobState state, std::string_view reason,
-                           std::string_view kind, std::string_view message);
+                           std::string_view kind, std::string_view message, bool held = false);
     // Back to the queue after a transient failure, not before `not_before`.
     Result<void> requeue(JobId id, std::string_view reason, double not_before, bool count_retry);
     // Reads and clears the operator's request for the runner.

@@ -133,7 +133,7 @@ TEST(SpoolStore, OperatorActionsFollowTheStateMachineAndAreLogged) {
     EXPECT_EQ(paused->control, Control::pause);
     EXPECT_EQ(*s.take_control(id), Control::pause);
     EXPECT_EQ(*s.take_control(id), Control::none);  // taken once
-    ASSERT_TRUE(s.set_state(id, JobState::paused, "paused by the operator", "paused", "stopped"));
+    ASSERT_TRUE(s.set_state(id, JobState::paused, "paused by the operator", "paused", "stopped", /*held=*/true));
     EXPECT_EQ(s.act(id, Action::resume)->control, Control::resume);
     EXPECT_EQ(s.act(id, Action::cancel)->control, Control::cancel);
     ASSERT_TRUE(s.set_state(id, JobState::cancelled, "cancelled by the operator", "cancelled", "aborted"));
