@@ -1,102 +1,181 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// tactus-cli emboss: lay a document out and emboss it. With --queue it is laid
-// out, stored in the spool (pages and the printer's profile as they are now)
-// and the command returns; `tactus-cli serve` embosses it.
-#include <cstdlib>
-#include <filesystem>
-#include <iostream>
-#include <pwd.h>
+// tactus-cli emboss: lay out, plan, encode and send a document to the embosser.
+// Exit 0 only when the controller has confirmed executing every pass.
 #include <unistd.h>
 
+#include <csignal>
+#include <iostream>
+
 #include "command.hpp"
+#include "emboss_queue.hpp"
+#include "encode/frame.hpp"
+#include "encode/plan_json.hpp"
+#include "encode/stream.hpp"
 #include "layout_args.hpp"
-#include "pipeline/pipeline.hpp"
-#include "spool/snapshot.hpp"
-#include "spool_args.hpp"
+#include "link/link.hpp"
+#include "transport/device.hpp"
+
+#if __has_include("plan/planner.hpp") && __has_include("profile/profile_json.hpp")
+#define TACTUS_EMBOSS_HAS_PLANNER 1
+#include "plan/planner.hpp"
+#include "profile/profile_json.hpp"
+#endif
 
 namespace tactus::cli {
 namespace {
 
-struct EmbossArgs {
-    LayoutArgs layout;
-    bool queue = false;
-    std::string db;
-    std::string printer;
-    std::size_t copies = 1;
-    std::string pages;
-    int priority = 0;
-    std::string title;
-};
-
-std::string user_name() {
-    if (const char* u = std::getenv("USER"); u && *u) return u;
-    if (const passwd* pw = getpwuid(getuid())) return pw->pw_name;
-    return "uid " + std::to_string(getuid());
+link::CancelToken* g_cancel = nullptr;
+extern "C" void on_interrupt(int) {
+    if (g_cancel) g_cancel->cancel();
 }
 
-std::pair<std::size_t, std::size_t> parse_range(const std::string& r) {
-    if (r.empty()) return {0, 0};
-    std::size_t first = 0, last = 0;
-    const auto dash = r.find('-');
-    try {
-        first = std::stoul(r.substr(0, dash));
-        last = dash == std::string::npos ? first : (dash + 1 == r.size() ? 0 : std::stoul(r.substr(dash + 1)));
-    } catch (const std::exception&) {
-        throw CLI::ValidationError("--pages", "expected FIRST-LAST, FIRST- or N, e.g. 3-10");
+struct EmbossArgs {
+    LayoutArgs layout;
+    std::string profile;
+    std::string device;
+    bool dry_run = false;
+    bool plan_file = false;
+    std::size_t start_sheet = 1;
+    EmbossQueueArgs queue;
+};
+
+struct Prepared {
+    plan::JobPlan plan;
+    encode::ControllerConfig config;
+};
+
+#ifdef TACTUS_EMBOSS_HAS_PLANNER
+// What the controller needs from the printer profile, in its own units.
+encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
+    encode::ControllerConfig c;
+    c.carriage_steps_per_m = static_cast<std::uint32_t>(p.carriage.steps_per_mm * 1000 + 0.5);
+    c.feed_steps_per_m = static_cast<std::uint32_t>(p.feed.steps_per_mm * 1000 + 0.5);
+    c.carriage_travel_steps = static_cast<std::int32_t>(
+        (p.paper.width_mm + p.head.concave_offset_mm) * p.carriage.steps_per_mm);
+    // Homing and seeking at a gentle 40 mm/s.
+    c.home_interval_ticks = static_cast<std::uint16_t>(
+        std::clamp(plan::kTickHz / (40.0 * p.carriage.steps_per_mm), 1.0, 65535.0));
+    c.hammer_ticks = static_cast<std::uint16_t>(std::clamp(p.head.dwell_s * plan::kTickHz, 1.0, 65535.0));
+    return c;
+}
+#endif
+
+Prepared prepare(const EmbossArgs& a) {
+    Prepared out;
+    if (a.plan_file) {
+        out.plan = require(encode::load_plan(a.layout.file));
+        return out;
     }
-    if (first == 0) throw CLI::ValidationError("--pages", "pages count from 1");
-    return {first, last};
+#ifdef TACTUS_EMBOSS_HAS_PLANNER
+    const auto profile = a.profile.empty() ? profile::default_profile()
+                                           : require(profile::load_profile(a.profile));
+    const auto doc = require(lay_out_file(a.layout.file, a.layout.pipeline_options()));
+    out.plan = require(plan::plan_job(doc, profile));
+    out.config = controller_config(profile);
+    return out;
+#else
+    throw CommandFailed(exit_failure, "this build has no planner yet: pass a saved plan with --plan");
+#endif
+}
+
+void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
+    const int width = 30;
+    const auto filled = total ? static_cast<int>(width * done / total) : width;
+    std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+              << std::string(static_cast<std::size_t>(width - filled), ' ') << "] "
+              << (total ? 100 * done / total : 100) << "%  sheet " << e.sheet << "  pass "
+              << done << '/' << total << std::flush;
 }
 
 void run_emboss(const EmbossArgs& a) {
-    if (!a.queue)
-        fail_with(exit_usage, Error{"direct embossing is not available yet: queue the job with --queue and run "
-                                    "`tactus-cli serve`",
-                                    "--queue"});
-    // The printer first: an unknown printer should not cost a layout.
-    spool::Spool s = open_spool(a.db, false);
-    std::string printer = a.printer;
-    if (printer.empty()) {
-        const auto all = require(s.printers());
-        if (all.size() != 1)
-            fail_with(exit_usage, Error{all.empty() ? "no printers are set up; add one with `tactus-cli queue printer add`"
-                                                    : "several printers are set up; choose one with --printer",
-                                        "--printer"});
-        printer = all.front().name;
+    if (a.queue.enabled) return enqueue_emboss(a.layout, a.queue);
+    const auto prepared = prepare(a);
+    const auto& plan = prepared.plan;
+    if (a.dry_run) {
+        std::size_t first = 0;
+        for (const auto& s : plan.sheets) {
+            if (s.index >= a.start_sheet) break;
+            first += s.passes.size();
+        }
+        const auto stream = require(encode::encode_job(plan, 1, {first, 0, false}));
+        const auto chunks = encode::chunk_stream(stream, encode::kMaxPayload);
+        std::size_t line = 0;
+        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead;
+        std::cout << stream.bytes.size() << " bytes of job stream in " << chunks.size()
+                  << " frames (" << line << " bytes on the line) for " << plan.sheets.size()
+                  << " sheets, " << plan.strikes << " strikes\n";
+        return;
     }
-    require(s.printer(printer));
-    const auto [first, last] = parse_range(a.pages);
-    const auto doc = require(lay_out_file(a.layout.file, a.layout.pipeline_options()));
-    const auto part = require(spool::select_pages(doc, first, last));
-    spool::JobSubmission job;
-    job.printer = printer;
-    job.title = a.title.empty() ? std::filesystem::path(a.layout.file).filename().string() : a.title;
-    job.document = spool::to_snapshot(part);
-    job.sheets_per_copy = part.sheet_count();
-    job.copies = a.copies;
-    job.first_page = first;
-    job.last_page = first ? (last ? last : doc.pages.size()) : 0;
-    job.priority = a.priority;
-    job.user = user_name();
-    const auto id = require(s.submit(job), exit_failure);
-    std::cout << "queued job " << id << ": " << job.title << ", " << job.sheets_per_copy << " sheet(s) x "
-              << job.copies << " on " << printer << '\n';
+    if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
+    // A malformed device string is a usage error; a device that is not there is a device error.
+    const auto spec = transport::parse_device(a.device);
+    if (!spec) fail_with(exit_usage, spec.error());
+    if (auto u = transport::uart_settings(*spec); !u) fail_with(exit_usage, u.error());
+    auto link = link::Link::open(a.device);
+    if (!link) fail_with(exit_device, link.error());
+    if (auto h = link->hello(); !h) fail_with(exit_device, h.error());
+    if (auto c = link->configure(prepared.config); !c) fail_with(exit_device, c.error());
+
+    const bool tty = isatty(STDERR_FILENO) != 0;
+    link::CancelToken cancel;
+    g_cancel = &cancel;
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+    bool bar_drawn = false;
+    auto out = link->send_job(
+        plan, a.start_sheet,
+        [&](const link::Progress& p) {
+            if (p.executed) {
+                if (tty) {
+                    print_bar(p.executed->passes_done, p.executed->passes_total, *p.executed);
+                    bar_drawn = true;
+                } else {
+                    std::cout << "pass " << p.executed->passes_done << '/' << p.executed->passes_total
+                              << " executed (sheet " << p.executed->sheet << ")\n";
+                }
+                return;
+            }
+            if (tty && bar_drawn) std::cerr << '\n';
+            bar_drawn = false;
+            (tty ? std::cerr : std::cout) << "emboss: " << p.note << '\n';
+        },
+        cancel);
+    g_cancel = nullptr;
+    if (bar_drawn) std::cerr << '\n';
+    if (!out) fail_with(exit_bad_input, out.error());
+    const auto& s = out->stats;
+    switch (out->end) {
+        case link::JobEnd::completed:
+            std::cout << "embossed " << out->passes_done << " passes on " << a.device << ": "
+                      << s.bytes_written << " bytes sent, " << s.frames_resent
+                      << " frames resent, " << s.reconnects << " reconnects, " << s.restarts
+                      << " restarts\n";
+            return;
+        case link::JobEnd::cancelled:
+            throw CommandFailed(exit_failure, "cancelled after " + std::to_string(out->passes_done) +
+                                                  " passes; resume with --start-sheet " +
+                                                  std::to_string(out->resume_sheet));
+        case link::JobEnd::failed:
+            throw CommandFailed(exit_failure, out->error.to_string() + "; resume with --start-sheet " +
+                                                  std::to_string(out->resume_sheet));
+    }
 }
 
 }  // namespace
 
 void add_emboss_command(CLI::App& app) {
-    auto a = std::make_shared<EmbossArgs>();
-    auto* cmd = app.add_subcommand("emboss", "Lay out a document and emboss it (--queue: through the print queue)");
-    a->layout.add_to(*cmd);
-    cmd->add_flag("--queue", a->queue, "Store the job in the print queue and return (run `tactus-cli serve` to emboss)");
-    add_db_option(*cmd, a->db);
-    cmd->add_option("--printer,-p", a->printer, "Printer (default: the only one set up)");
-    cmd->add_option("--copies", a->copies, "Copies")->capture_default_str()->check(CLI::Range(1, 10000));
-    cmd->add_option("--pages", a->pages, "Braille page range, e.g. 3-10, 5- or 7 (default: all)");
-    cmd->add_option("--priority", a->priority, "Higher runs first")->capture_default_str();
-    cmd->add_option("--title", a->title, "Job title (default: the file name)");
-    cmd->callback([a] { run_emboss(*a); });
+    auto args = std::make_shared<EmbossArgs>();
+    auto* cmd = app.add_subcommand("emboss", "Emboss a document (or a saved plan) on a device");
+    args->layout.add_to(*cmd);
+    cmd->add_option("--profile,-p", args->profile, "Printer profile (JSON); default: the source embosser");
+    cmd->add_option("--device,-d", args->device,
+                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim");
+    cmd->add_flag("--dry-run", args->dry_run, "Stop after encoding and print the byte count");
+    cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
+    cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
+        ->check(CLI::PositiveNumber);
+    add_emboss_queue_options(*cmd, args->queue);
+    cmd->callback([args] { run_emboss(*args); });
 }
 
 }  // namespace tactus::cli

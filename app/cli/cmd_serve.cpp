@@ -26,7 +26,7 @@ struct ServeArgs {
 };
 
 std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int) { g_stop.store(true); }
+extern "C" void on_serve_signal(int) { g_stop.store(true); }
 
 void run_serve(const ServeArgs& a) {
     spool::Spool s = open_spool(a.db, false);
@@ -48,8 +48,8 @@ void run_serve(const ServeArgs& a) {
     const auto link_options = options.link;
     auto connect = [link_options](const spool::PrinterRecord& p) { return link::Link::open(p.device, link_options); };
 
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_serve_signal);
+    std::signal(SIGTERM, on_serve_signal);
     std::vector<std::unique_ptr<spool::Runner>> runners;
     for (const auto& n : names) {
         auto r = std::make_unique<spool::Runner>(s.path(), n, connect, options);

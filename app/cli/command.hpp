@@ -42,6 +42,8 @@ void add_layout_command(CLI::App& app);
 void add_tables_command(CLI::App& app);
 void add_queue_command(CLI::App& app);
 void add_serve_command(CLI::App& app);
+void add_sim_command(CLI::App& app);
+void add_ports_command(CLI::App& app);
 void add_emboss_command(CLI::App& app);
 
 }  // namespace tactus::cli

@@ -161,6 +161,9 @@ void SimController::load_paper() {
 void SimController::receive(std::span<const std::uint8_t> bytes, double now) {
     advance(now);
     std::vector<encode::Frame> frames;
+    // A gap longer than a frame at the slowest rate: whatever is pending was garbage.
+    if (now - last_byte_ > kIdleGap) decoder_.idle(frames);
+    last_byte_ = now;
     decoder_.push(bytes, frames);
     for (const auto& f : frames) on_frame(f, now);
 }
@@ -243,8 +246,8 @@ void SimController::on_frame(const encode::Frame& f, double now) {
         max_ring_used_ = std::max(max_ring_used_, ring_.size());
         ++expected_seq_;
         ++frames_accepted_;
+        advance(now);  // an idle executor starts at once, so the ACK reports the room it makes
         ack();
-        advance(now);  // an idle executor starts at once
         return;
     }
     immediate(f, now);
@@ -370,7 +373,9 @@ void SimController::advance(double t) {
             } else if (reload_at_ && *reload_at_ <= now_) {
                 load_paper();
             }
-            if (!current_) start_next_op(now_);
+            // Zero-length ops finish at once; run them at this instant, not at t.
+            while (!current_ && start_next_op(now_)) {
+            }
             continue;
         }
         now_ = std::max(now_, t);
@@ -416,6 +421,10 @@ bool SimController::start_next_op(double now) {
     }
     const Op& op = decoded->first;
     if (in_move_ && !continuation) in_move_ = false;
+    if (!job_active_ && op.code != OpCode::job_begin) {  // ops outside a job: a host bug
+        stop_job(fault::stream_error, now);
+        return false;
+    }
     if (op.code == OpCode::sheet_begin && paper_out_sheet_ && *paper_out_sheet_ == op.id)
         paper_present_ = false;
     if (op.code == OpCode::sheet_begin && !paper_present_) {

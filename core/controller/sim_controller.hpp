@@ -109,8 +109,10 @@ private:
     [[nodiscard]] encode::AckInfo ack_info() const;
     [[nodiscard]] std::size_t ring_free() const;
 
+    static constexpr double kIdleGap = 0.1;  // s; one 86-byte frame at 9600 baud
     SimOptions options_;
     encode::FrameDecoder decoder_;
+    double last_byte_ = 0;
     std::vector<std::uint8_t> out_;
     double now_ = 0;
 

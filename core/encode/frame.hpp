@@ -50,6 +50,13 @@ public:
     // Decodes `bytes`, appending complete frames to `frames`.
     void push(std::span<const std::uint8_t> bytes, std::vector<Frame>& frames);
     void reset() { buf_.clear(); }
+    // The line has been quiet for longer than a frame takes: a partial frame
+    // still pending began at a false SYNC (garbage whose LEN promised more), so
+    // rescan it. Without this a real frame after such garbage would wait for
+    // the next traffic.
+    void idle(std::vector<Frame>& frames) {
+        if (!buf_.empty()) resync(frames);
+    }
     [[nodiscard]] const DecoderStats& stats() const { return stats_; }
     [[nodiscard]] std::size_t pending() const { return buf_.size(); }
 

@@ -335,7 +335,8 @@ std::vector<std::pair<std::size_t, std::size_t>> chunk_stream(const JobStream& s
     std::size_t begin = 0;
     std::size_t end = 0;
     for (const std::size_t op_end : stream.op_ends) {
-        if (op_end - begin > max_payload) {
+        // An op larger than max_payload (never above kMaxPayload) travels alone.
+        if (op_end - begin > max_payload && end > begin) {
             chunks.emplace_back(begin, end);
             begin = end;
         }

@@ -26,6 +26,7 @@ struct JobState {
     double fault_since = -1;
     double last_resume = -1;
     std::string last_note;
+    ControllerState last_state = ControllerState::idle;
 
     [[nodiscard]] std::size_t sheet_of(std::size_t pass) const {
         if (pass < table.size()) return table[pass].sheet;
@@ -59,8 +60,9 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         auto stream = encode::encode_job(plan, js.job_id, st);
         if (!stream) return std::unexpected(stream.error());
         js.stream = std::move(*stream);
-        const std::size_t max_payload =
+        std::size_t max_payload =
             std::min<std::size_t>(encode::kMaxPayload, std::max<std::uint8_t>(info.max_payload, 8));
+        if (opt.max_payload > 0) max_payload = std::min(max_payload, std::max<std::size_t>(opt.max_payload, 8));
         js.chunks = encode::chunk_stream(js.stream, max_payload);
         js.next_chunk = 0;
         js.bytes_total += js.stream.bytes.size();
@@ -166,6 +168,11 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             step = send(FrameType::resume, {});
         }
         report_executed();
+        if (ack.state != js.last_state) {
+            js.last_state = ack.state;
+            if (ack.state == ControllerState::paused || ack.state == ControllerState::fault)
+                note(std::string("controller ") + encode::state_name(ack.state));
+        }
 
         const bool this_job = ack.job_id == js.job_id;
         if (js.reported == js.table.size() && js.next_chunk == js.chunks.size() && unacked.empty() &&

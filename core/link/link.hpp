@@ -45,6 +45,10 @@ struct LinkOptions {
     std::chrono::milliseconds fault_wait{120000};
     std::chrono::milliseconds keepalive_period{500};
     std::uint16_t job_id = 1;
+    // Limits below what the controller offers (0: its own). Window 1 with small
+    // payloads is the stop-and-wait style of Marlin-like senders (benchmarks).
+    std::size_t max_window_frames = 0;
+    std::size_t max_payload = 0;
 };
 
 // One pass the controller has executed (called in execution order).

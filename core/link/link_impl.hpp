@@ -4,6 +4,7 @@
 // controller last reported. link.cpp has the request/reply calls, job_sender.cpp
 // the job streaming.
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <deque>
 #include <optional>
@@ -67,7 +68,9 @@ struct Link::Impl {
     }
 
     std::size_t window_frames() const {
-        return session ? std::max<std::size_t>(1, info.window_frames) : 1;
+        std::size_t w = session ? std::max<std::size_t>(1, info.window_frames) : 1;
+        if (opt.max_window_frames > 0) w = std::min(w, opt.max_window_frames);
+        return w;
     }
 
     double rto() const {
@@ -198,9 +201,12 @@ struct Link::Impl {
     // Reads whatever arrives within `timeout` and handles each frame.
     Result<void> pump(double timeout_s) {
         std::array<std::uint8_t, 512> buf{};
-        auto n = s->read(buf, microseconds(static_cast<std::int64_t>(std::max(0.0, timeout_s) * 1e6)));
+        // Rounded up and at least 1 us, so a wait always moves the clock forward.
+        auto n = s->read(buf, microseconds(std::max<std::int64_t>(
+                                  1, static_cast<std::int64_t>(std::ceil(timeout_s * 1e6)))));
         if (!n) return std::unexpected(device_error(n.error()));
         std::vector<Frame> frames;
+        if (*n == 0 && timeout_s >= 0.05) decoder.idle(frames);  // quiet line: drop false starts
         decoder.push(std::span(buf).first(*n), frames);
         stats.crc_errors = decoder.stats().crc_errors;
         for (const auto& f : frames)

@@ -60,11 +60,19 @@ private:
     parport* p_;
 };
 
+// How a port is named in a device string: its ppdev node (/dev/parport0), or
+// for a port libieee1284 drives by direct I/O (through /dev/port) its address.
+std::string port_name(const parport* p) {
+    const std::string file = p->filename ? p->filename : "";
+    if (!file.empty() && file != "/dev/port") return file;
+    return p->name ? p->name : "?";
+}
+
 std::string port_list(const parport_list& list) {
     std::string s;
     for (int i = 0; i < list.portc; ++i) {
         if (!s.empty()) s += ", ";
-        s += list.portv[i]->filename ? list.portv[i]->filename : list.portv[i]->name;
+        s += port_name(list.portv[i]);
     }
     return s.empty() ? "none found" : s;
 }
@@ -80,8 +88,8 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
         parport* found = nullptr;
         for (int i = 0; i < list.portc; ++i) {
             const std::string name = list.portv[i]->name ? list.portv[i]->name : "";
-            const std::string file = list.portv[i]->filename ? list.portv[i]->filename : "";
-            if (wanted == name || wanted == file || "/dev/" + name == wanted) found = list.portv[i];
+            if (wanted == name || wanted == port_name(list.portv[i]) || "/dev/" + name == wanted)
+                found = list.portv[i];
         }
         if (!found) {
             const auto ports = port_list(list);
@@ -113,8 +121,7 @@ Result<std::vector<PortInfo>> list_parallel_ports() {
     std::vector<PortInfo> out;
     for (int i = 0; i < list.portc; ++i) {
         PortInfo p;
-        const std::string file = list.portv[i]->filename ? list.portv[i]->filename : "";
-        p.device = "lpt:" + (file.empty() ? std::string(list.portv[i]->name) : file);
+        p.device = "lpt:" + port_name(list.portv[i]);
         p.kind = "lpt";
         p.description = std::string("parallel port ") + list.portv[i]->name;
         out.push_back(std::move(p));
