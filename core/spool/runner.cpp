@@ -39,6 +39,17 @@ std::vector<std::size_t> first_passes(const std::vector<SheetProgress>& progress
     return first;
 }
 
+// The sheet a stream stopped on (1-based; 0: none) goes out of the machine
+// unfinished: report it, and emboss it again in full next time.
+Result<void> spoil_interrupted(Spool& s, JobId id, std::size_t sheet, const std::string& why) {
+    if (sheet == 0) return {};
+    SPOOL_LET(progress, s.progress(id));
+    if (sheet > progress.size() || progress[sheet - 1].done()) return {};
+    return s.spoil_sheet(id, sheet,
+                         sheet_word(sheet) + " was in the printer when " + why +
+                             ": discard it (it may be blank); it is embossed again in full");
+}
+
 }  // namespace
 
 const char* to_string(RunEnd e) {
@@ -58,7 +69,7 @@ Runner::Runner(std::filesystem::path db, std::string printer, ConnectFn connect,
       printer_name_(std::move(printer)),
       connect_(std::move(connect)),
       options_(options),
-      token_(this_runner_token() + ":" + printer_name_) {}
+      token_(this_runner_token()) {}
 
 Runner::~Runner() { finish(); }
 
@@ -136,6 +147,15 @@ Result<void> Runner::reconcile(const JobRecord& job) {
                                   "the controller had executed " + std::to_string(executed - recorded) +
                                       " pass(es) not yet recorded; recorded now"));
         }
+    }
+    if (active && st.sheet != 0) {
+        // The sheet in the machine when the stream stopped: if it is not
+        // complete it has (or may have) dots on it and is ejected by the abort.
+        SPOOL_LET(progress, spool_->progress(job.id));
+        if (st.sheet <= progress.size() && !progress[st.sheet - 1].done())
+            SPOOL_TRY(spool_->spoil_sheet(job.id, st.sheet,
+                                          sheet_word(st.sheet) + " was in the printer, unfinished, when the "
+                                              "stream stopped: discard it; it is embossed again in full"));
     }
     if (active) {
         if (auto a = link_->abort(); !a) return a;
@@ -347,8 +367,10 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                               "all " + std::to_string(job.total_sheets()) + " sheets embossed"));
         return RunEnd::completed;
     case link::JobEnd::cancelled: {
-        // The link aborted the controller's job: nothing is left to reconcile.
+        // The link aborted the controller's job: nothing is left to reconcile,
+        // and the sheet it was on is ejected unfinished.
         SPOOL_TRY(s.end_run(job.id));
+        SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was stopped"));
         if (operator_cancel) {
             SPOOL_TRY(s.set_state(job.id, JobState::cancelled, "cancelled by the operator", "cancelled",
                                   "aborted on the controller at " + sheet_word(outcome->resume_sheet)));
@@ -369,7 +391,11 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                                 why.find("paper out") != std::string::npos;
     if (needs_operator) {
         // The run stays open: the next start reads the controller's count.
+        // After a power loss there is no count left to read: the sheet in the
+        // machine is reported now.
         link_.reset();
+        if (why.find("lost power") != std::string::npos)
+            SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the controller lost power"));
         SPOOL_TRY(s.set_state(job.id, JobState::paused, why, "fault", why));
         return RunEnd::paused;
     }
