@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,17 @@ inline std::pair<int, std::string> run(const std::vector<std::string>& args) {
     Process p(args);
     std::string out = p.read_all();
     return {p.wait(), out};
+}
+
+inline std::string read_text(const std::string& path) {
+    std::string out;
+    if (FILE* f = std::fopen(path.c_str(), "rb")) {
+        char buf[4096];
+        std::size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
+        std::fclose(f);
+    }
+    return out;
 }
 
 }  // namespace tactus::spool::test
