@@ -15,11 +15,8 @@
 #include "link/link.hpp"
 #include "transport/device.hpp"
 
-#if __has_include("plan/planner.hpp") && __has_include("profile/profile_json.hpp")
-#define TACTUS_EMBOSS_HAS_PLANNER 1
 #include "plan/planner.hpp"
-#include "profile/profile_json.hpp"
-#endif
+#include "profile_arg.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -44,7 +41,6 @@ struct Prepared {
     encode::ControllerConfig config;
 };
 
-#ifdef TACTUS_EMBOSS_HAS_PLANNER
 // What the controller needs from the printer profile, in its own units.
 encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
     encode::ControllerConfig c;
@@ -58,7 +54,6 @@ encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
     c.hammer_ticks = static_cast<std::uint16_t>(std::clamp(p.head.dwell_s * plan::kTickHz, 1.0, 65535.0));
     return c;
 }
-#endif
 
 Prepared prepare(const EmbossArgs& a) {
     Prepared out;
@@ -66,16 +61,17 @@ Prepared prepare(const EmbossArgs& a) {
         out.plan = require(encode::load_plan(a.layout.file));
         return out;
     }
-#ifdef TACTUS_EMBOSS_HAS_PLANNER
-    const auto profile = a.profile.empty() ? profile::default_profile()
-                                           : require(profile::load_profile(a.profile));
-    const auto doc = require(lay_out_file(a.layout.file, a.layout.pipeline_options()));
+    const auto profile = load_profile_arg(a.profile);
+    auto options = a.layout.pipeline_options();
+    // The page format is the machine's unless the command line overrides it.
+    options.layout.geometry.interpoint = profile.geometry.interpoint;
+    if (a.layout.cells == 0) options.layout.geometry.cells_per_line = profile.geometry.cells_per_line;
+    if (a.layout.lines == 0) options.layout.geometry.lines_per_page = profile.geometry.lines_per_page;
+    options.layout.geometry.eight_dot = profile.geometry.eight_dot || a.layout.eight_dot;
+    const auto doc = require(lay_out_file(a.layout.file, options));
     out.plan = require(plan::plan_job(doc, profile));
     out.config = controller_config(profile);
     return out;
-#else
-    throw CommandFailed(exit_failure, "this build has no planner yet: pass a saved plan with --plan");
-#endif
 }
 
 void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
@@ -166,7 +162,7 @@ void run_emboss(const EmbossArgs& a) {
 void add_emboss_command(CLI::App& app) {
     auto args = std::make_shared<EmbossArgs>();
     auto* cmd = app.add_subcommand("emboss", "Emboss a document (or a saved plan) on a device");
-    args->layout.add_to(*cmd);
+    args->layout.add_to(*cmd, /*with_interpoint=*/false);
     cmd->add_option("--profile,-p", args->profile, "Printer profile (JSON); default: the source embosser");
     cmd->add_option("--device,-d", args->device,
                     "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim");

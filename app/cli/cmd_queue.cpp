@@ -195,6 +195,8 @@ void add_queue_command(CLI::App& app) {
     auto a = std::make_shared<QueueArgs>();
     auto* q = app.add_subcommand("queue", "Show and steer the print queue (the spool database)");
     q->require_subcommand(1);
+    // `--db` may come anywhere: subcommands pass options they do not know up.
+    q->fallthrough();
     add_db_option(*q, a->db);
 
     auto* l = q->add_subcommand("list", "Jobs waiting or printing, in queue order");

@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
     add_tables_command(app);
     add_queue_command(app);
     add_serve_command(app);
+    add_plan_command(app);
+    add_profile_command(app);
+    add_vibration_command(app);
     add_sim_command(app);
     add_ports_command(app);
     add_emboss_command(app);

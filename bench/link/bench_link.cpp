@@ -19,7 +19,7 @@
 
 #if __has_include("plan/planner.hpp") && __has_include("profile/profile_json.hpp")
 #define BENCH_HAS_PLANNER 1
-#include "export/brf.hpp"
+#include "export/export.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/profile_json.hpp"
@@ -142,7 +142,7 @@ int main() {
                 double d = 0;
                 for (const auto& pass : sheet_plan.sheets[0].passes) d += pass.duration_s;
                 sheet_plan.duration_s = d;
-                brf_bytes = export_brf(*doc).size() / std::max<std::size_t>(1, doc->sheet_count());
+                if (auto brf = to_brf(*doc)) brf_bytes = brf->size() / std::max<std::size_t>(1, doc->sheet_count());
             }
         }
     }

@@ -12,7 +12,7 @@ using nlohmann::json;
 
 json move_json(const plan::StepMove& m) {
     json segs = json::array();
-    for (const auto& s : m.segments) segs.push_back({s.interval, s.count, s.add});
+    for (const auto& s : m.segments) segs.push_back({s.interval_q16, s.count, s.add_q16});
     return {{"steps", m.steps}, {"segments", segs}, {"duration_s", m.duration_s}};
 }
 
@@ -46,12 +46,12 @@ Result<plan::StepMove> move_from(const json& j, const std::string& where) {
         const auto w = where + ".segments[" + std::to_string(i) + "]";
         if (!s.is_array() || s.size() != 3 || !s[0].is_number_integer() ||
             !s[1].is_number_integer() || !s[2].is_number_integer())
-            return fail("expected [interval, count, add]", w);
+            return fail("expected [interval_q16, count, add_q16]", w);
         const auto iv = s[0].get<std::int64_t>(), n = s[1].get<std::int64_t>(), a = s[2].get<std::int64_t>();
-        if (iv < 0 || iv > 0xFFFF || n < 0 || n > 0xFFFF || a < -32768 || a > 32767)
-            return fail("out of the 16-bit range", w);
-        m.segments.push_back({static_cast<std::uint16_t>(iv), static_cast<std::uint16_t>(n),
-                              static_cast<std::int16_t>(a)});
+        if (iv < 0 || iv > 0xFFFFFFFFLL || n < 0 || n > 0xFFFF || a < INT32_MIN || a > INT32_MAX)
+            return fail("out of range", w);
+        m.segments.push_back({static_cast<std::uint32_t>(iv), static_cast<std::uint16_t>(n),
+                              static_cast<std::int32_t>(a)});
     }
     return m;
 }

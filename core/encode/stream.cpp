@@ -6,6 +6,7 @@
 
 #include "encode/frame.hpp"
 #include "encode/varint.hpp"
+#include "plan/steps.hpp"
 
 namespace tactus::encode {
 namespace {
@@ -46,9 +47,9 @@ void append_op(std::vector<std::uint8_t>& out, const Op& op) {
                                                     (op.continuation ? 0x04U : 0U)));
             out.push_back(static_cast<std::uint8_t>(op.segments.size()));
             for (const auto& s : op.segments) {
-                put_uvar(out, s.interval);
+                put_uvar(out, s.interval_q16);
                 put_uvar(out, s.count);
-                put_svar(out, s.add);
+                put_svar(out, s.add_q16);
             }
             break;
         case OpCode::strike:
@@ -110,14 +111,14 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         if (n == 0 || n > kMaxSegmentsPerOp)
             return fail("move with " + std::to_string(n) + " segments", at_byte(pos - 1));
         for (std::uint8_t i = 0; i < n; ++i) {
-            const auto interval = get_uvar(in, pos, 0xFFFF, 3);
+            const auto interval = get_uvar(in, pos);
             const auto count = get_uvar(in, pos, 0xFFFF, 3);
             const auto add = get_svar(in, pos);
             if (!interval || !count || !add) return truncated();
-            if (*add < -32768 || *add > 32767) return fail("step add out of range", at_byte(pos));
-            op.segments.push_back({static_cast<std::uint16_t>(*interval),
-                                   static_cast<std::uint16_t>(*count),
-                                   static_cast<std::int16_t>(*add)});
+            // The first interval must fit the 16-bit timer; later ones are checked as run.
+            if ((*interval >> plan::kStepFractionBits) < 1 || (*interval >> plan::kStepFractionBits) > 0xFFFF)
+                return fail("step interval outside the 16-bit timer", at_byte(pos));
+            op.segments.push_back({*interval, static_cast<std::uint16_t>(*count), *add});
         }
     } else if (code == 0x30 || code == 0x31) {
         op.code = OpCode::strike;
@@ -142,24 +143,18 @@ std::uint32_t segment_steps(std::span<const plan::StepSegment> segments) {
     return n;
 }
 
+// The controller's own arithmetic (plan::expand_steps): Q16.16 intervals with a
+// fraction accumulator, so simulated time is exactly the firmware's.
 std::uint64_t segment_ticks(std::span<const plan::StepSegment> segments) {
-    std::int64_t t = 0;
-    for (const auto& s : segments) {
-        const std::int64_t n = s.count;
-        t += n * s.interval + static_cast<std::int64_t>(s.add) * n * (n - 1) / 2;
-    }
-    return t < 0 ? 0 : static_cast<std::uint64_t>(t);
+    const auto t = plan::expand_steps(segments);
+    return t.empty() ? 0 : static_cast<std::uint64_t>(t.back());
 }
 
 std::uint64_t tick_of_step(std::span<const plan::StepSegment> segments, std::uint32_t k) {
-    std::int64_t t = 0;
-    for (const auto& s : segments) {
-        const std::int64_t n = std::min<std::int64_t>(s.count, k);
-        t += n * s.interval + static_cast<std::int64_t>(s.add) * n * (n - 1) / 2;
-        k -= static_cast<std::uint32_t>(n);
-        if (k == 0) break;
-    }
-    return t < 0 ? 0 : static_cast<std::uint64_t>(t);
+    if (k == 0) return 0;
+    const auto t = plan::expand_steps(segments);
+    if (t.empty()) return 0;
+    return static_cast<std::uint64_t>(t[std::min<std::size_t>(k, t.size()) - 1]);
 }
 
 std::vector<PassRef> pass_table(const plan::JobPlan& plan) {
@@ -179,13 +174,10 @@ std::string pass_where(const PassRef& r) {
 // Checks a move the controller will run with 16-bit interval arithmetic.
 Result<void> check_move(const plan::StepMove& m, const std::string& where) {
     std::int64_t steps = 0;
-    for (const auto& s : m.segments) {
-        if (s.count == 0) continue;
-        const std::int64_t last = s.interval + static_cast<std::int64_t>(s.add) * (s.count - 1);
-        if (s.interval == 0 || last < 1 || last > 0xFFFF)
-            return fail("step interval leaves the 16-bit timer range", where);
-        steps += s.count;
-    }
+    for (const auto& s : m.segments) steps += s.count;
+    // Replayed with the controller's arithmetic: every interval must stay in its timer's range.
+    if (plan::expand_steps(m.segments).size() != static_cast<std::size_t>(steps))
+        return fail("step interval leaves the 16-bit timer range", where);
     if (steps != std::llabs(m.steps))
         return fail("move of " + std::to_string(m.steps) + " steps has " + std::to_string(steps) +
                         " steps in its segments",

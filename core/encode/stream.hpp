@@ -8,7 +8,7 @@
 //   JOB_BEGIN   0x10 u16 job, u16 first pass          JOB_END    0x11
 //   SHEET_BEGIN 0x12 u16 sheet, svar feed origin      SHEET_END  0x13
 //   PASS_BEGIN  0x14 u16 pass, u8 flags, u8 skip      PASS_END   0x15
-//   MOVE        0x20|axis|neg<<1|cont<<2, u8 n, n x (uvar interval, uvar count, svar add)
+//   MOVE        0x20|axis|neg<<1|cont<<2, u8 n, n x (uvar interval_q16, uvar count, svar add_q16)
 //   STRIKE      0x30|hammer                           HOME       0x40
 //   SEEK        0x42 carriage / 0x43 feed, svar absolute target
 #include <cstddef>
@@ -42,8 +42,9 @@ inline constexpr std::uint8_t back_side = 0x01;
 inline constexpr std::uint8_t no_feed = 0x02;  // restart: the feed was done before a reset
 }  // namespace pass_flag
 
-// Segments per MOVE op: the most that fit one payload at worst-case varint size.
-inline constexpr std::size_t kMaxSegmentsPerOp = 8;
+// Segments per MOVE op: the most that fit one payload at worst-case varint size
+// (5 + 3 + 5 bytes each after a 2-byte header).
+inline constexpr std::size_t kMaxSegmentsPerOp = 6;
 
 struct Op {
     OpCode code = OpCode::job_end;

@@ -20,17 +20,27 @@ std::string fmt(int digits, double v) {
     return buf;
 }
 
-std::string describe(ProfileShape s, ShaperKind k, double scale) {
+std::string describe(ProfileShape s, ShaperKind k, double scale, double settle) {
     return std::string(profile::to_string(s)) + "/" + profile::to_string(k) + " at " +
-           fmt(0, scale * 100) + "% speed";
+           fmt(0, scale * 100) + "% speed" +
+           (settle > 0 ? " + " + fmt(1, settle * 1000) + " ms settle" : std::string());
 }
 
 struct Candidate {
     ProfileShape shape;
     ShaperKind shaper;
     double scale;
+    double settle;
     plan::MoveShape move;
 };
+
+// The move followed by `settle` seconds at rest on the target before the strike.
+plan::MoveShape with_settle(plan::MoveShape m, double settle) {
+    if (settle <= 0 || m.pieces.empty()) return m;
+    m.pieces.push_back(plan::Piece{m.duration, settle, plan::Derivs{m.distance, 0, 0, 0, 0, 0}});
+    m.duration += settle;
+    return m;
+}
 
 }  // namespace
 
@@ -82,8 +92,18 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                                p_.carriage.j_max_mm_s3 * s * s * s};
         for (auto shape : shapes) {
             const auto base = plan::make_move(shape, distance, lim);
-            for (auto k : kinds) cands.push_back({shape, k, s, plan::shape_move(base, design_shaper(k))});
+            for (auto k : kinds)
+                cands.push_back({shape, k, s, 0.0, plan::shape_move(base, design_shaper(k))});
         }
+    }
+    // A machine whose damping may be far above nominal creeps onto the target
+    // after the command stops; a short rest before the strike can be cheaper
+    // than a shaper or a slower move.
+    if (auto_shape || auto_shaper) {
+        const plan::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
+        const auto base = plan::make_move(shapes.front(), distance, lim);
+        for (double ms : {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0})
+            cands.push_back({shapes.front(), ShaperKind::none, 1.0, ms / 1000, with_settle(base, ms / 1000)});
     }
     std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
         return a.move.duration < b.move.duration;
@@ -106,6 +126,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
             t.choice.shape = c.shape;
             t.choice.shaper = c.shaper;
             t.choice.speed_scale = c.scale;
+            t.choice.settle_s = c.settle;
             t.choice.duration_s = c.move.duration;
             t.choice.residual_um = steps == 0 ? 0.0 : nominal_residual_um(c.move);
             t.choice.worst_residual_um = worst;
@@ -123,9 +144,9 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
             t.shape = std::move(c.move);
             return &cache_.emplace(steps, std::move(t)).first->second;
         }
-        if (worst < best_worst) best_worst = worst, best_name = describe(c.shape, c.shaper, c.scale);
+        if (worst < best_worst) best_worst = worst, best_name = describe(c.shape, c.shaper, c.scale, c.settle);
         if (n_rejected < 3)
-            rejected += (n_rejected ? ", " : "") + describe(c.shape, c.shaper, c.scale) + " " +
+            rejected += (n_rejected ? ", " : "") + describe(c.shape, c.shaper, c.scale, c.settle) + " " +
                         fmt(1, worst) + " um";
         ++n_rejected;
         if (last) break;

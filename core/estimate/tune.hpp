@@ -24,6 +24,7 @@ struct TuneChoice {
     profile::ProfileShape shape = profile::ProfileShape::jerk;
     profile::ShaperKind shaper = profile::ShaperKind::none;
     double speed_scale = 1.0;  // v, a, j scaled by s, s^2, s^3 (the same move, slowed in time)
+    double settle_s = 0;       // rest before the strike, included in duration_s
     double duration_s = 0;
     double residual_um = 0;        // nominal machine
     double worst_residual_um = 0;  // over the damping/frequency band

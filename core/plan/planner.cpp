@@ -157,6 +157,8 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
 
         const double t0 = clock_s_;
         double t = t0;
+        pass.moves.reserve(end - first);
+        pass.strikes.reserve(end - first);
         for (std::size_t k = 0; k < end - first; ++k) {
             const Hit& hit = pass.direction > 0 ? h[first + k] : h[end - 1 - k];
             const std::int32_t target = hit.head_step;

@@ -187,7 +187,8 @@ TEST(Stream, OpsRoundTrip) {
     o.axis = Axis::feed;
     o.negative = true;
     o.continuation = true;
-    o.segments = {{400, 20, -8}, {65535, 65535, -32768}, {1, 1, 32767}};
+    o.segments = {{400U << 16, 20, -8 << 16}, {0xFFFFFFFFU, 65535, INT32_MIN}, {1U << 16, 1, INT32_MAX},
+                  {(240U << 16) + 16384, 7, 3}, {70000, 1, 0}, {1U << 16, 2, -1}};
     ops.push_back(o);
     o = {};
     o.code = OpCode::strike;
@@ -218,14 +219,17 @@ TEST(Stream, RejectsMalformedOps) {
     EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x14, 0, 1, 0x80, 0}));  // unknown pass flag
 }
 
-TEST(Stream, SegmentTimingIsClosedForm) {
-    const std::vector<plan::StepSegment> segs{{400, 20, -8}, {240, 100, 0}};
+TEST(Stream, SegmentTimingIsTheControllersArithmetic) {
+    // Whole-tick values: the closed form 20*400 - 8*20*19/2 + 100*240.
+    const std::vector<plan::StepSegment> segs{{400U << 16, 20, -8 << 16}, {240U << 16, 100, 0}};
     EXPECT_EQ(segment_steps(segs), 120U);
-    // 20*400 - 8*20*19/2 + 100*240
     EXPECT_EQ(segment_ticks(segs), 20U * 400 - 8U * 190 + 24000);
     EXPECT_EQ(tick_of_step(segs, 1), 400U);
     EXPECT_EQ(tick_of_step(segs, 2), 400U + 392);
     EXPECT_EQ(tick_of_step(segs, 120), segment_ticks(segs));
+    // A quarter-tick fraction: the carry makes every fourth interval one tick longer.
+    const std::vector<plan::StepSegment> q{{(240U << 16) + (1U << 14), 8, 0}};
+    EXPECT_EQ(segment_ticks(q), 8U * 240 + 2);
 }
 
 TEST(Stream, WholeOpsPerChunkWithinThePayload) {
@@ -250,7 +254,7 @@ TEST(Stream, PlansTheControllerCannotRunAreRefusedWithTheirPlace) {
     ASSERT_FALSE(s);
     EXPECT_EQ(s.error().where, "sheet 1 pass 2 strike 1");
     plan = testing::make_plan(1, 3, 5);
-    plan.sheets[0].passes[0].feed.segments[0].add = -1000;  // interval would go negative
+    plan.sheets[0].passes[0].feed.segments[0].add_q16 = -1000 << 16;  // interval would go negative
     s = encode_job(plan, 1, {});
     ASSERT_FALSE(s);
     EXPECT_NE(s.error().message.find("16-bit timer"), std::string::npos);

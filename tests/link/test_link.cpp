@@ -312,3 +312,34 @@ TEST(Link, StatusReportsThePosition) {
 
 }  // namespace
 }  // namespace tactus
+
+// The real front half of the pipeline and the real planner: the bundled sample,
+// embossed on the simulator, strikes exactly what was planned (a cross-check of
+// the plan's step bookkeeping as much as of the link).
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus {
+namespace {
+
+TEST(LinkWithPlanner, BundledSampleStrikesExactlyThePlanUnderNoise) {
+    const auto profile = profile::default_profile();
+    PipelineOptions po;
+    po.layout.geometry.interpoint = profile.geometry.interpoint;
+    const auto doc = lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md", po);
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    const auto plan = plan::plan_job(*doc, profile);
+    ASSERT_TRUE(plan) << plan.error().to_string();
+    transport::SimLineOptions line;
+    line.noise = {1e-3, 1e-3, 1e-3, 77};
+    auto rig = make_rig(line);
+    rig.ctl->reset_at_strike(700, true);
+    const auto out = run(rig, *plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(*plan));
+    EXPECT_GT(rig.ctl->strike_log().size(), 1000U);
+}
+
+}  // namespace
+}  // namespace tactus

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "plan/plan.hpp"
+#include "plan/steps.hpp"
 
 namespace tactus::testing {
 
@@ -15,13 +16,13 @@ inline plan::StepMove make_move(std::int32_t steps) {
     const auto d = static_cast<std::uint16_t>(std::abs(steps));
     if (d == 0) return m;
     const auto a = static_cast<std::uint16_t>(std::min<int>(20, d / 2));
-    if (a > 0) m.segments.push_back({400, a, -8});
-    if (d - 2 * a > 0) m.segments.push_back({240, static_cast<std::uint16_t>(d - 2 * a), 0});
-    if (a > 0) m.segments.push_back({static_cast<std::uint16_t>(400 - 8 * a), a, 8});
-    double ticks = 0;
-    for (const auto& s : m.segments)
-        ticks += s.count * s.interval + s.add * s.count * (s.count - 1) / 2.0;
-    m.duration_s = ticks / plan::kTickHz;
+    // Q16.16: accelerate from 400 ticks per step by -7.5 per step, cruise at 240.25, decelerate.
+    constexpr std::uint32_t one = 1U << plan::kStepFractionBits;
+    if (a > 0) m.segments.push_back({400 * one, a, -static_cast<std::int32_t>(15 * one / 2)});
+    if (d - 2 * a > 0) m.segments.push_back({240 * one + one / 4, static_cast<std::uint16_t>(d - 2 * a), 0});
+    if (a > 0) m.segments.push_back({400 * one - a * (15 * one / 2), a, static_cast<std::int32_t>(15 * one / 2)});
+    const auto t = plan::expand_steps(m.segments);
+    m.duration_s = static_cast<double>(t.back()) / plan::kTickHz;
     return m;
 }
 

@@ -172,7 +172,8 @@ TEST_P(HidEndToEnd, JobThroughTheBridge) {
     EXPECT_EQ(ctl->strike_log(), controller::planned_strikes(plan));
     EXPECT_GT(chip->reports_out_.size(), 4U);
 }
-INSTANTIATE_TEST_SUITE_P(Chips, HidEndToEnd, ::testing::Values(HidBridge::cp2110, HidBridge::ft260));
+INSTANTIATE_TEST_SUITE_P(Chips, HidEndToEnd, ::testing::Values(HidBridge::cp2110, HidBridge::ft260),
+                         [](const auto& p) { return std::string(p.param == HidBridge::cp2110 ? "CP2110" : "FT260"); });
 
 // ---------------------------------------------------------------- LPT
 
