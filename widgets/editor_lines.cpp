@@ -136,7 +136,8 @@ std::optional<Block> parse_editor_line(std::string_view line) {
     if (is_braille_line(t)) {
         b.kind = BlockKind::braille;
         BrailleLine cells;
-        for (char32_t c : *utf8_to_utf32(t)) cells.push_back(Cell::from_unicode(c));
+        const auto text = utf8_to_utf32(t);
+        for (char32_t c : *text) cells.push_back(Cell::from_unicode(c));
         b.braille_lines.push_back(std::move(cells));
         return b;
     }

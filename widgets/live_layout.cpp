@@ -73,6 +73,12 @@ void LiveLayout::translate_entry(std::size_t i) {
         return;
     }
     e.translated = std::move(*tb);
+    // A braille line longer than a page line is a paragraph typed or edited as
+    // braille: wrap it at word spaces instead of cutting it.
+    const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
+    if (e.translated.kind == BlockKind::braille && e.translated.lines.size() == 1 &&
+        e.translated.lines.front().size() > static_cast<std::size_t>(width))
+        e.translated.lines = break_lines(e.translated.lines.front(), width, 0, 0);
 }
 
 bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress) {
@@ -141,6 +147,8 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
 Result<void> LiveLayout::set_options(LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
     options_ = std::move(options);
+    for (std::size_t i = 0; i < entries_.size(); ++i)  // braille lines wrap to the new width
+        if (entries_[i].block && entries_[i].block->kind == BlockKind::braille) translate_entry(i);
     paged_ = {};
     relayout_from(0);
     return {};
@@ -262,8 +270,9 @@ BrailleLine LiveLayout::braille_of(std::size_t i) const {
     if (!e.block || e.error) return {};
     switch (e.translated.kind) {
         case BlockKind::braille: {
+            // The line as written, before any wrapping (so columns match the print line).
             BrailleLine all;
-            for (const auto& l : e.translated.lines) all.insert(all.end(), l.begin(), l.end());
+            for (const auto& l : e.block->braille_lines) all.insert(all.end(), l.begin(), l.end());
             return all;
         }
         case BlockKind::print_page_break:
@@ -304,7 +313,7 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
         // Count the written cells before the target; blanks at line ends vanish when wrapping.
         cell = std::min(cell, tb.cells.size());
         std::size_t target = 0;
-        for (std::size_t c = 0; c < cell; ++c) target += tb.cells[c].blank() ? 0 : 1;
+        for (std::size_t c = 0; c < cell; ++c) if (!tb.cells[c].blank()) ++target;
         const auto lines = break_lines(tb.cells, width, first, runover);
         std::size_t seen = 0;
         for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -356,11 +365,22 @@ std::size_t LiveLayout::line_at(std::size_t page, int line) const {
 }
 
 std::string LiveLayout::print_page_of(std::size_t page) const {
-    for (std::size_t i = line_at(page, options_.geometry.lines_per_page) + 1; i-- > 0;) {
+    if (entries_.empty()) return {};
+    for (std::size_t i = line_at(page, 0) + 1; i-- > 0;) {
         const auto& b = entries_[i].block;
-        if (b && b->kind == BlockKind::print_page_break && entries_[i].pages_before <= page) return b->label;
+        if (b && b->kind == BlockKind::print_page_break &&
+            (entries_[i].pages_before < page || (entries_[i].pages_before == page && entries_[i].lines_before == 0)))
+            return b->label;
     }
-    return {};
+    return "1";
+}
+
+std::string LiveLayout::print_page_at(std::size_t line) const {
+    for (std::size_t i = std::min(line + 1, entries_.size()); i-- > 0;) {
+        const auto& b = entries_[i].block;
+        if (b && b->kind == BlockKind::print_page_break) return b->label;
+    }
+    return "1";
 }
 
 std::string LiveLayout::back_translate(const BrailleLine& cells) const {

@@ -64,8 +64,10 @@ public:
     [[nodiscard]] PagePosition position_of(std::size_t i, std::size_t cell = 0) const;
     // The editor line whose braille starts at or before this page line.
     [[nodiscard]] std::size_t line_at(std::size_t page, int line) const;
-    // The print page in effect on a page ("" when the document has none).
+    // The print page in effect at the top of a page, and at an editor line
+    // (print pages count from "1" until the first page break).
     [[nodiscard]] std::string print_page_of(std::size_t page) const;
+    [[nodiscard]] std::string print_page_at(std::size_t line) const;
 
     // What liblouis reads back from cells, for the proofreader and screen readers.
     [[nodiscard]] std::string back_translate(const BrailleLine& cells) const;
