@@ -176,7 +176,11 @@ std::optional<Block> parse_editor_line(std::string_view line) {
         } else {
             // Numbered items keep their number as text, as core's Markdown import does.
             b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
-            b.spans.insert(b.spans.begin(), Span{std::string(rest.substr(0, ordinal)) + " "});
+            const auto number = std::string(rest.substr(0, ordinal)) + " ";
+            if (!b.spans.empty() && b.spans.front().emphasis == emphasis_none)
+                b.spans.front().text.insert(0, number);
+            else
+                b.spans.insert(b.spans.begin(), Span{number});
         }
         return b;
     }

@@ -157,12 +157,12 @@ void MainWindow::build_actions() {
     });
     open_ = make(tr("&Open or Import..."), QKeySequence::Open, QStringLiteral("fileOpen"), [this] { open_dialog(); });
     save_ = make(tr("&Save"), QKeySequence::Save, QStringLiteral("fileSave"), [this] { save(); });
-    save_as_ = make(tr("Save &As..."), QKeySequence::SaveAs, QStringLiteral("fileSaveAs"), [this] { save_as(); });
+    save_as_ = make(tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")), QStringLiteral("fileSaveAs"), [this] { save_as(); });
     export_brf_ = make(tr("Export &BRF..."), QKeySequence(tr("Ctrl+E")), QStringLiteral("exportBrf"),
                        [this] { export_dialog(QStringLiteral("brf")); });
     export_pef_ = make(tr("Export &PEF..."), QKeySequence(tr("Ctrl+Shift+E")), QStringLiteral("exportPef"),
                        [this] { export_dialog(QStringLiteral("pef")); });
-    quit_ = make(tr("&Quit"), QKeySequence::Quit, QStringLiteral("fileQuit"), [this] { close(); });
+    quit_ = make(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), QStringLiteral("fileQuit"), [this] { close(); });
     undo_ = editor_->undo_stack()->createUndoAction(this, tr("&Undo"));
     undo_->setShortcut(QKeySequence::Undo);
     undo_->setObjectName(QStringLiteral("editUndo"));
@@ -305,6 +305,7 @@ void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, 
         }
         progress_->deleteLater();
         progress_ = nullptr;
+        busy_ = nullptr;
         watcher->deleteLater();
         editor_->print_pane()->setReadOnly(false);
         finish_load(r, replace_text);
