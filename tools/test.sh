@@ -16,7 +16,7 @@ ctest --preset default -j"$jobs"
 echo "== AddressSanitizer + UBSan build"
 cmake --preset asan >/dev/null
 cmake --build build/asan -j"$jobs"
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j"$jobs"
+ctest --preset asan -j"$jobs"
 
 echo "== fuzz targets (libFuzzer, ${TACTUS_FUZZ_SECONDS:-30} s each)"
 cmake --preset fuzz >/dev/null

@@ -127,7 +127,6 @@ private:
             label_ = numbering_.next_label(*numbering);
             if (!label_.empty()) label_ += ' ';
         }
-        paragraph_run_ = style.run;
         builder_.begin(kind_, level_, 0);
         inline_content(p);
         builder_.end();
@@ -157,7 +156,9 @@ private:
 
     void run(const pugi::xml_node& r) {
         const auto rPr = child(r, "rPr");
-        RunFormat format = paragraph_run_;
+        // Only character styles and direct formatting are emphasis: the bold of a
+        // heading style or the italic of a quote style is the paragraph's typeface.
+        RunFormat format;
         format.apply(styles_.character(attribute(child(rPr, "rStyle"), "val")));
         format.apply(read_run_format(rPr));
         const auto emphasis = format.emphasis();
@@ -204,7 +205,6 @@ private:
     BlockKind kind_ = BlockKind::paragraph;
     int level_ = 0;
     std::string label_;  // list label not yet written (waits for the first text)
-    RunFormat paragraph_run_;
 };
 
 }  // namespace

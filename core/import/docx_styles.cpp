@@ -102,8 +102,6 @@ std::optional<NumberingRef> read_numbering_ref(const pugi::xml_node& pPr) {
 }
 
 DocxStyles::DocxStyles(const pugi::xml_node& root) {
-    if (const auto defaults = child(child(child(root, "docDefaults"), "rPrDefault"), "rPr"))
-        defaults_ = read_run_format(defaults);
     for (const auto& s : root.children()) {
         if (local_name(s) != "style") continue;
         const std::string id(attribute(s, "styleId"));
@@ -149,8 +147,6 @@ ParagraphStyle DocxStyles::paragraph(std::string_view style_id) const {
         if (!page_break && st->page_break_before) page_break = st->page_break_before;
     }
     out.page_break_before = page_break.value_or(false);
-    out.run = defaults_;
-    for (auto it = chain.rbegin(); it != chain.rend(); ++it) out.run.apply((*it)->run);
     return out;
 }
 

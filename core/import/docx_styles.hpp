@@ -36,7 +36,6 @@ struct ParagraphStyle {
     int heading_level = 0;  // 1..6, 0 = not a heading
     std::optional<NumberingRef> numbering;
     bool page_break_before = false;
-    RunFormat run;
 };
 
 class DocxStyles {
@@ -59,7 +58,6 @@ private:
     [[nodiscard]] const Style* find(std::string_view id) const;
     std::unordered_map<std::string, Style> styles_;
     std::string default_paragraph_;
-    RunFormat defaults_;
 };
 
 class DocxNumbering {

@@ -71,7 +71,7 @@ bool is_utf8_converter(UConverter* cnv) {
 }
 
 // Streams `bytes` through ICU into UTF-8 in bounded chunks, so the peak is the
-// input plus the output. `skip` bytes (a byte-order mark) are not converted.
+// input plus the output; a byte-order mark comes out as U+FEFF (removed by the caller).
 Result<std::string> convert(std::string_view bytes, UConverter* cnv, const std::string& label) {
     std::string out;
     out.reserve(bytes.size() + bytes.size() / 2);  // CJK: 2 bytes -> 3 bytes of UTF-8
@@ -130,6 +130,45 @@ std::string detect_with_uchardet(std::string_view bytes) {
     }
     uchardet_data_end(det.get());
     return uchardet_get_charset(det.get());
+}
+
+// uchardet is unreliable on short texts (a one-line Chinese note may come back as
+// ISO-8859-16, a Spanish one as ISO-8859-10), so its answer is only trusted
+// within the shape of the text:
+//  - CJK multi-byte encodings are taken as they are;
+//  - a text whose non-ASCII bytes come in runs (as CJK characters do) but that
+//    uchardet calls single-byte is refused: mojibake is worse than a question;
+//  - single-byte Latin-script guesses become Windows-1252, the legacy Western
+//    encoding teachers actually have; other scripts (Cyrillic, Greek, ...) are kept.
+bool is_cjk(const std::string& e) {
+    static constexpr std::string_view cjk[] = {"BIG5", "GB18030", "GB2312", "GBK", "EUC-TW",
+                                               "EUC-JP", "EUC-KR", "SHIFT_JIS", "UHC",
+                                               "ISO-2022-JP", "ISO-2022-KR", "ISO-2022-CN",
+                                               "HZ-GB-2312", "JOHAB"};
+    return std::find(std::begin(cjk), std::end(cjk), e) != std::end(cjk);
+}
+
+bool is_latin_single_byte(const std::string& e) {
+    static constexpr std::string_view latin[] = {
+        "ISO-8859-1",  "ISO-8859-2",   "ISO-8859-3",   "ISO-8859-4",   "ISO-8859-9",
+        "ISO-8859-10", "ISO-8859-13",  "ISO-8859-14",  "ISO-8859-15",  "ISO-8859-16",
+        "WINDOWS-1250", "WINDOWS-1252", "WINDOWS-1254", "WINDOWS-1257", "WINDOWS-1258",
+        "IBM852",      "IBM850",       "MAC-CENTRALEUROPE", "MAC-ROMAN", "VISCII"};
+    return std::find(std::begin(latin), std::end(latin), e) != std::end(latin);
+}
+
+// Share of non-ASCII bytes that have a non-ASCII neighbour: near 1 for CJK
+// double-byte text, near 0 for accented Latin text ("café", "niño").
+bool non_ascii_comes_in_runs(std::string_view bytes) {
+    std::size_t high = 0, paired = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        if (static_cast<unsigned char>(bytes[i]) < 0x80) continue;
+        ++high;
+        const bool prev = i > 0 && static_cast<unsigned char>(bytes[i - 1]) >= 0x80;
+        const bool next = i + 1 < bytes.size() && static_cast<unsigned char>(bytes[i + 1]) >= 0x80;
+        if (prev || next) ++paired;
+    }
+    return high > 0 && paired * 2 >= high;
 }
 
 // Control characters mean binary data or a wrong decoding, never teacher text.
@@ -199,14 +238,17 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
     if (invalid == std::string_view::npos) return decode_utf8(bytes, 0, "UTF-8");
 
     std::string detected = upper(detect_with_uchardet(bytes));
-    if (detected.empty() || detected == "ASCII")
-        return fail("cannot tell the text encoding; name it explicitly (e.g. GB18030, Big5)",
+    const bool runs = non_ascii_comes_in_runs(bytes);
+    if (detected.empty() || detected == "ASCII" || detected == "UTF-8" ||
+        (runs && !is_cjk(detected)))
+        return fail("not valid UTF-8 and the encoding cannot be told reliably" +
+                        (detected.empty() ? std::string{} : " (a guess would be " + detected + ")") +
+                        "; name it explicitly (e.g. GB18030, Big5, windows-1252)",
                     byte_at(invalid));
-    if (detected == "UTF-8")
-        return fail("invalid UTF-8", byte_at(invalid));
-    // Latin-1 text with curly quotes or a euro sign is really Windows-1252: in
-    // ISO-8859-1 those bytes would become invisible C1 control characters.
-    if (detected == "ISO-8859-1") detected = "WINDOWS-1252";
+    // Latin-1 text with curly quotes or a euro sign is really Windows-1252 (in
+    // ISO-8859-1 those bytes would be invisible C1 controls), and short Western
+    // texts get wild Latin guesses.
+    if (is_latin_single_byte(detected)) detected = "WINDOWS-1252";
     auto decoded = decode_with(bytes, detected, detected);
     if (!decoded && decoded.error().where == "encoding")
         return fail("detected encoding " + detected +

@@ -58,8 +58,8 @@ bool looks_like_pef(std::string_view bytes) {
 Result<SourceFormat> parse_source_format(std::string_view name) {
     const auto n = lower(name);
     if (n == "auto" || n == "automatic") return SourceFormat::automatic;
-    if (const auto f = format_from_extension(n); f && n != "brl" && n != "text") return *f;
-    if (n == "text") return SourceFormat::text;
+    // The format names are the extensions (plus their long forms).
+    if (const auto f = format_from_extension(n)) return *f;
     return fail("unknown input format '" + std::string(name) +
                     "' (expected auto, txt, md, docx, brf or pef)",
                 "format");

@@ -104,7 +104,7 @@ TEST(CliLayout, CustomGeometryIsHonoured) {
 }
 
 TEST(CliLayout, BadInputNamesTheFile) {
-    const auto junk = temp_file("junk.docx", std::string("PK\x03\x04 truncated zip", 20));
+    const auto junk = temp_file("junk.docx", std::string("PK\x03\x04\x14\x00 truncated zip", 20));
     const auto r = run_command(cli("layout --to brf '" + junk.string() + "'"));
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find(junk.string()), std::string::npos) << r.err;

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import_test_util.hpp"
+
+namespace tactus::test {
+namespace {
+
+const auto H = BlockKind::heading;
+const auto P = BlockKind::paragraph;
+const auto LI = BlockKind::list_item;
+constexpr std::uint8_t I = emphasis_italic;
+constexpr std::uint8_t B = emphasis_bold;
+constexpr std::uint8_t U = emphasis_underline;
+
+// lesson.docx was written by LibreOffice 7.4 from lesson.html (both committed).
+TEST(DocxImport, DocumentWrittenByLibreOffice) {
+    const auto doc = import_data_file("lesson.docx");
+    const std::vector<Block> expected = {
+        text_block(H, 1, {{"Weather Lesson"}}),
+        text_block(P, 0,
+                   {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I},
+                    {", and the "}, {"water cycle", U}, {"."}}),
+        text_block(H, 2, {{"Kinds of clouds"}}),
+        text_block(LI, 1, {{"Cumulus "}}),
+        text_block(LI, 1, {{"Stratus "}}),
+        text_block(LI, 2, {{"Nimbostratus"}}),
+        text_block(LI, 1, {{"1. Look at the sky. "}}),
+        text_block(LI, 1, {{"2. Write what you see. "}}),
+        page_break("2"),
+        text_block(P, 0, {{"今天的天气很好，我们一起去公园散步吧。"}}),
+        text_block(H, 3, {{"Summary"}}),
+        text_block(P, 0,
+                   {{"Plain "}, {"bold italic", B | I}, {" end. A "}, {"strong", B},
+                    {" and an "}, {"emphasised", I}, {" word."}}),
+        text_block(P, 0, {{"Cloud"}}),
+        text_block(P, 0, {{"雲"}}),
+    };
+    EXPECT_EQ(doc.blocks, expected);
+    EXPECT_EQ(doc.encoding, "");
+}
+
+// features.docx is hand-made (see tests/data/import/README.md) to reach what
+// LibreOffice did not write: renamed parts, style chains, numbering formats,
+// section breaks, tracked changes.
+TEST(DocxImport, StylesNumberingBreaksAndRevisions) {
+    const auto doc = import_data_file("features.docx");
+    const std::vector<Block> expected = {
+        text_block(H, 1, {{"The Title"}}),  // bold of the Title style is not emphasis
+        text_block(P, 0, {{"Tab\tand\nline kept"}}),  // lastRenderedPageBreak is no break
+        text_block(P, 0, {{"styled", I | U}, {"link", B | U}}),
+        text_block(LI, 1, {{"III. first"}}),
+        text_block(LI, 2, {{"III.a) sub"}}),
+        page_break("2"),
+        text_block(LI, 1, {{"IV. second"}}),
+        text_block(P, 0, {{"not a list"}}),
+        page_break("3"),
+        text_block(P, 0, {{"after break"}}),
+        page_break("4"),  // pageBreakBefore from the style
+        text_block(H, 1, {{"Chapter"}}),
+        text_block(H, 2, {{"Sub"}}),  // continuous section break: no page
+        text_block(P, 0, {{"end of section"}}),
+        page_break("5"),  // section break (next page) after the paragraph
+        text_block(H, 4, {{"Outline four"}}),
+    };
+    EXPECT_EQ(doc.blocks, expected);
+}
+
+TEST(DocxImport, TruncatedZipIsAClearError) {
+    const auto e = import_data_file_error("truncated.docx");
+    EXPECT_THAT(e.message, testing::HasSubstr("not a valid ZIP package"));
+    EXPECT_EQ(e.where, import_data("truncated.docx").string());
+}
+
+TEST(DocxImport, MissingDocumentPartIsNamed) {
+    const auto e = import_data_file_error("no_document.docx");
+    EXPECT_THAT(e.message, testing::HasSubstr("missing part word/document.xml"));
+    EXPECT_EQ(e.where, import_data("no_document.docx").string() + ":word/document.xml");
+}
+
+TEST(DocxImport, InvalidXmlNamesPartLineAndColumn) {
+    const auto e = import_data_file_error("invalid_xml.docx");
+    EXPECT_THAT(e.message, testing::HasSubstr("invalid XML"));
+    EXPECT_THAT(e.where, testing::MatchesRegex(".*invalid_xml\\.docx:word/document\\.xml:2:[0-9]+"));
+}
+
+TEST(DocxImport, EmptyAndNonZipInputsAreErrors) {
+    const auto empty = import_bytes("", "e.docx");
+    ASSERT_FALSE(empty);
+    EXPECT_THAT(empty.error().message, testing::HasSubstr("empty file"));
+    const auto text = import_bytes("just words", "w.docx");
+    ASSERT_FALSE(text);
+    EXPECT_THAT(text.error().message, testing::HasSubstr("not a valid ZIP"));
+}
+
+}  // namespace
+}  // namespace tactus::test

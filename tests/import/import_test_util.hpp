@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "common/file_io.hpp"
+#include "import/import.hpp"
+
+namespace tactus {
+// Readable failure output for block comparisons.
+inline void PrintTo(const Block& b, std::ostream* os) {
+    *os << "Block{kind=" << static_cast<int>(b.kind) << " level=" << b.level << " line="
+        << b.source_line << " label='" << b.label << "' spans=[";
+    for (const auto& s : b.spans) *os << "('" << s.text << "'," << int{s.emphasis} << ")";
+    *os << "] braille_lines=" << b.braille_lines.size() << "}";
+}
+}  // namespace tactus
+
+namespace tactus::test {
+
+inline std::filesystem::path import_data(const std::string& name) {
+    return std::filesystem::path(TACTUS_TEST_DATA) / "import" / name;
+}
+
+inline std::string read_data(const std::string& name) {
+    auto bytes = read_file(import_data(name));
+    EXPECT_TRUE(bytes.has_value()) << name;
+    return bytes.value_or(std::string{});
+}
+
+// Imports a file from tests/data/import, failing the test with the error text.
+inline Document import_data_file(const std::string& name, const ImportOptions& options = {}) {
+    auto doc = import_file(import_data(name), options);
+    EXPECT_TRUE(doc.has_value()) << (doc ? "" : doc.error().to_string());
+    return doc.value_or(Document{});
+}
+
+// Imports a file that must fail; returns the error.
+inline Error import_data_file_error(const std::string& name, const std::string& encoding = {},
+                                    SourceFormat format = SourceFormat::automatic) {
+    auto doc = import_file(import_data(name), {format, encoding});
+    EXPECT_FALSE(doc.has_value()) << name << " imported although it should not";
+    return doc ? Error{} : doc.error();
+}
+
+inline std::vector<BlockKind> kinds(const Document& doc) {
+    std::vector<BlockKind> out;
+    for (const auto& b : doc.blocks) out.push_back(b.kind);
+    return out;
+}
+
+inline Block text_block(BlockKind kind, int level, std::vector<Span> spans, int line = 0) {
+    Block b;
+    b.kind = kind;
+    b.level = level;
+    b.spans = std::move(spans);
+    b.source_line = line;
+    return b;
+}
+
+inline Block page_break(std::string label, int line = 0) {
+    Block b;
+    b.kind = BlockKind::print_page_break;
+    b.label = std::move(label);
+    b.source_line = line;
+    return b;
+}
+
+}  // namespace tactus::test

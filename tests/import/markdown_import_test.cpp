@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import_test_util.hpp"
+
+namespace tactus::test {
+namespace {
+
+const auto H = BlockKind::heading;
+const auto P = BlockKind::paragraph;
+const auto LI = BlockKind::list_item;
+constexpr std::uint8_t I = emphasis_italic;
+constexpr std::uint8_t B = emphasis_bold;
+
+Document md(std::string_view text) {
+    auto doc = import_bytes(text, "t.md");
+    EXPECT_TRUE(doc) << (doc ? "" : doc.error().to_string());
+    return doc.value_or(Document{});
+}
+
+TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
+    const auto doc = import_data_file("lesson.md");
+    const std::vector<Block> expected = {
+        text_block(H, 1, {{"Weather Lesson"}}, 1),
+        text_block(P, 0,
+                   {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I},
+                    {", and the water cycle & more."}},
+                   3),
+        text_block(H, 2, {{"Kinds of clouds"}}, 6),
+        text_block(LI, 1, {{"Cumulus"}}, 8),
+        text_block(LI, 1, {{"Stratus"}}, 9),
+        text_block(LI, 2, {{"Nimbostratus"}}, 10),
+        text_block(LI, 3, {{"1. Low"}}, 11),
+        text_block(LI, 3, {{"2. Grey"}}, 12),
+        text_block(LI, 1, {{"3. Look at the sky."}}, 14),
+        text_block(LI, 1, {{"4. Write what you see."}}, 15),
+        page_break("2", 17),
+        text_block(P, 0, {{"今天的天气很好。"}}, 19),
+        page_break("3", 0),
+        text_block(H, 3, {{"Summary"}}, 23),
+        text_block(P, 0, {{"Plain "}, {"bold italic", B | I}, {" end."}}, 25),
+    };
+    EXPECT_EQ(doc.blocks, expected);
+    EXPECT_EQ(doc.encoding, "UTF-8");
+}
+
+TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
+    const auto doc = md("one\n\n<!-- pagebreak: xii -->\n\ntwo\n\n<!-- just a note -->\n\nthree\n");
+    const std::vector<Block> expected = {text_block(P, 0, {{"one"}}, 1), page_break("xii", 3),
+                                         text_block(P, 0, {{"two"}}, 5),
+                                         text_block(P, 0, {{"three"}}, 9)};
+    EXPECT_EQ(doc.blocks, expected);
+}
+
+TEST(MarkdownImport, FormFeedIsAPrintPageBreakAndLinesStayRight) {
+    const auto doc = md("# A\n\nbefore\n\f\nafter\n");
+    const std::vector<Block> expected = {text_block(H, 1, {{"A"}}, 1),
+                                         text_block(P, 0, {{"before"}}, 3), page_break("2", 4),
+                                         text_block(P, 0, {{"after"}}, 5)};
+    EXPECT_EQ(doc.blocks, expected);
+}
+
+TEST(MarkdownImport, CodeBlockLinesArePlainParagraphs) {
+    const auto doc = md("```\nint x = 1;\n\n  return *x;\n```\n");
+    ASSERT_EQ(doc.blocks.size(), 2u);
+    EXPECT_EQ(doc.blocks[0].text(), "int x = 1;");
+    EXPECT_EQ(doc.blocks[1].text(), "  return *x;");
+    EXPECT_EQ(doc.blocks[1].spans[0].emphasis, emphasis_none);
+}
+
+TEST(MarkdownImport, LooseListItemsWithSeveralParagraphsAndHardBreaks) {
+    const auto doc = md("1. first\n\n   more of first\n2. second  \n   line two\n");
+    const std::vector<Block> expected = {text_block(LI, 1, {{"1. first"}}, 1),
+                                         text_block(LI, 1, {{"more of first"}}, 3),
+                                         text_block(LI, 1, {{"2. second\nline two"}}, 4)};
+    EXPECT_EQ(doc.blocks, expected);
+}
+
+TEST(MarkdownImport, EntitiesLinksImagesAndInlineHtml) {
+    const auto doc = md("&eacute;&#233;&#x41;&copy; [site](http://x.org) ![a cat](c.png) <b>tag</b>\n");
+    ASSERT_EQ(doc.blocks.size(), 1u);
+    // &eacute; is not in the known set: kept literally rather than lost.
+    EXPECT_EQ(doc.blocks[0].text(), "&eacute;éA© site a cat tag");
+}
+
+TEST(MarkdownImport, HtmlBlockKeepsItsTextWithoutTags) {
+    const auto doc = md("<div class=\"x\">\nInside <em>div</em>\n</div>\n");
+    ASSERT_EQ(doc.blocks.size(), 1u);
+    EXPECT_EQ(doc.blocks[0].text(), "Inside div");
+}
+
+TEST(MarkdownImport, SetextHeadingIsNotAPageBreak) {
+    const auto doc = md("Title\n-----\n\ntext\n");
+    ASSERT_EQ(doc.blocks.size(), 2u);
+    EXPECT_EQ(doc.blocks[0].kind, H);
+    EXPECT_EQ(doc.blocks[0].level, 2);
+}
+
+TEST(MarkdownImport, LegacyEncodedMarkdownIsDecodedFirst) {
+    // "# 標題" in Big5, with the encoding named.
+    const auto doc = import_bytes("# \xBC\xD0\xC3\x44\n", "b.md", {SourceFormat::automatic, "Big5"});
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    ASSERT_EQ(doc->blocks.size(), 1u);
+    EXPECT_EQ(doc->blocks[0].text(), "標題");
+    EXPECT_EQ(doc->encoding, "Big5");
+}
+
+}  // namespace
+}  // namespace tactus::test
