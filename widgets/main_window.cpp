@@ -98,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     status_->setObjectName(QStringLiteral("positionLabel"));
     status_->setAccessibleName(tr("Position"));
     statusBar()->addPermanentWidget(status_);
+    statusBar()->setSizeGripEnabled(false);  // a grip has no accessible role; the window manager resizes
     statusBar()->setAccessibleName(tr("Status"));
 
     find_ = new FindReplaceDialog(editor_->print_pane(), this);
