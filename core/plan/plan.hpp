@@ -41,6 +41,11 @@ struct Strike {
     double y_mm = 0;
     std::int32_t carriage_step = 0;  // absolute carriage position when it fires
     double time_s = 0;               // from the start of the job
+    // Added by the plan stage for estimate and preview:
+    double paper_x_mm = 0;  // the dot in paper coordinates: the sheet as it runs
+    double paper_y_mm = 0;  // through the machine, front side up
+    double residual_um = 0;        // head position error while the hammer is down, nominal machine
+    double worst_residual_um = 0;  // the same, worst case over the damping/frequency band
     bool operator==(const Strike&) const = default;
 };
 
@@ -55,6 +60,9 @@ struct Pass {
     std::vector<StepMove> moves;   // moves[i] brings the carriage to strikes[i]
     std::vector<Strike> strikes;
     double duration_s = 0;
+    // Added by the plan stage:
+    double lower_bound_s = 0;    // time-optimal jerk-limited moves, same limits, dwell and feed
+    std::size_t segments = 0;    // encoded step segments (feed + carriage) of this pass
     bool operator==(const Pass&) const = default;
 };
 
@@ -62,6 +70,7 @@ struct SheetPlan {
     std::size_t index = 0;  // 1-based
     std::vector<Pass> passes;
     double duration_s = 0;
+    double lower_bound_s = 0;
 };
 
 struct JobPlan {
@@ -70,6 +79,10 @@ struct JobPlan {
     double lower_bound_s = 0;
     std::size_t strikes = 0;
     double max_residual_um = 0;
+    // Added by the plan stage:
+    double max_worst_residual_um = 0;      // over the damping/frequency band
+    std::size_t strikes_over_tolerance = 0;  // only with a fixed (not auto-tuned) profile/shaper
+    std::size_t segments = 0;
 };
 
 }  // namespace tactus::plan

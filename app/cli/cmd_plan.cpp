@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tactus-cli plan: where the hammers stop, how long the job takes, and how much
+// the head still rings when it strikes. Sheets are planned and printed one at a
+// time, so a whole book needs no more memory than one sheet.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "layout_args.hpp"
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+#include "profile_arg.hpp"
+
+namespace tactus::cli {
+namespace {
+
+struct PlanArgs {
+    LayoutArgs layout;
+    std::string profile;
+    bool json = false;
+};
+
+nlohmann::json pass_json(const plan::Pass& p) {
+    nlohmann::json strikes = nlohmann::json::array();
+    double worst = 0;
+    for (const auto& s : p.strikes) {
+        strikes.push_back(s.paper_x_mm);
+        worst = std::max(worst, s.worst_residual_um);
+    }
+    return {{"side", p.side == plan::Side::front ? "front" : "back"},
+            {"y_mm", p.y_mm},
+            {"direction", p.direction > 0 ? "+" : "-"},
+            {"strikes_mm", strikes},
+            {"duration_s", p.duration_s},
+            {"lower_bound_s", p.lower_bound_s},
+            {"feed_steps", p.feed.steps},
+            {"segments", p.segments},
+            {"schedule_bytes", p.segments * 6},  // interval, count, add: three 16-bit words
+            {"worst_residual_um", worst}};
+}
+
+nlohmann::json tuning_json(const estimate::MoveTuner& t) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& [steps, m] : t.decisions()) {
+        const auto& c = m.choice;
+        out.push_back({{"steps", steps},
+                       {"distance_mm", c.distance_mm},
+                       {"profile", profile::to_string(c.shape)},
+                       {"shaper", profile::to_string(c.shaper)},
+                       {"speed_scale", c.speed_scale},
+                       {"settle_s", c.settle_s},
+                       {"duration_s", c.duration_s},
+                       {"residual_um", c.residual_um},
+                       {"worst_residual_um", c.worst_residual_um},
+                       {"why", c.why}});
+    }
+    return out;
+}
+
+void run_plan(const PlanArgs& a) {
+    const auto prof = load_profile_arg(a.profile);
+    auto options = a.layout.pipeline_options();
+    // The page format is the machine's unless the command line overrides it
+    // (the planner then refuses pages that do not fit the profile).
+    options.layout.geometry.interpoint = prof.geometry.interpoint;
+    if (a.layout.cells == 0) options.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+    if (a.layout.lines == 0) options.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    options.layout.geometry.eight_dot = prof.geometry.eight_dot || a.layout.eight_dot;
+    const auto doc = require(lay_out_file(a.layout.file, options));
+    auto planner = require(plan::Planner::create(prof));
+    auto& out = std::cout;
+    if (a.json) out << "{\"profile\":" << nlohmann::json(prof.name).dump() << ",\"sheets\":[";
+    std::size_t passes = 0;
+    for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
+        auto sheet = planner.plan_sheet(doc, s);
+        if (!sheet) fail_with(exit_bad_input, located(sheet.error(), a.layout.file));
+        passes += sheet->passes.size();
+        if (!a.json) continue;
+        nlohmann::json pj = nlohmann::json::array();
+        for (const auto& p : sheet->passes) pj.push_back(pass_json(p));
+        out << (s > 1 ? "," : "")
+            << nlohmann::json{{"index", sheet->index},
+                              {"duration_s", sheet->duration_s},
+                              {"lower_bound_s", sheet->lower_bound_s},
+                              {"passes", pj}}
+                   .dump();
+    }
+    const auto& t = planner.totals();
+    const double ratio = t.lower_bound_s > 0 ? t.duration_s / t.lower_bound_s : 1.0;
+    if (a.json) {
+        out << "],\"totals\":"
+            << nlohmann::json{{"duration_s", t.duration_s},
+                              {"lower_bound_s", t.lower_bound_s},
+                              {"plan_over_lower_bound", ratio},
+                              {"strikes", t.strikes},
+                              {"passes", passes},
+                              {"sheets", doc.sheet_count()},
+                              {"max_residual_um", t.max_residual_um},
+                              {"max_worst_residual_um", t.max_worst_residual_um},
+                              {"tolerance_um", prof.vibration.tolerance_um},
+                              {"strikes_over_tolerance", t.strikes_over_tolerance},
+                              {"segments", t.segments},
+                              {"schedule_bytes", t.segments * 6}}
+                   .dump()
+            << ",\"tuning\":" << tuning_json(planner.tuner()).dump() << "}\n";
+        return;
+    }
+    const auto hms = [](double s) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%d:%02d:%04.1f", static_cast<int>(s / 3600),
+                      static_cast<int>(s / 60) % 60, s - 60 * static_cast<int>(s / 60));
+        return std::string(buf);
+    };
+    std::printf("profile:          %s\n", prof.name.c_str());
+    std::printf("sheets / passes:  %zu / %zu, %zu strikes\n", doc.sheet_count(), passes, t.strikes);
+    std::printf("duration:         %s (%.1f s)\n", hms(t.duration_s).c_str(), t.duration_s);
+    std::printf("lower bound:      %s (%.1f s): plan / bound = %.3f\n", hms(t.lower_bound_s).c_str(),
+                t.lower_bound_s, ratio);
+    std::printf("residual:         %.2f um nominal, %.2f um worst case in the band (tolerance %.1f um)\n",
+                t.max_residual_um, t.max_worst_residual_um, prof.vibration.tolerance_um);
+    if (t.strikes_over_tolerance)
+        std::printf("WARNING:          %zu strikes over tolerance (profile and shaper fixed by the profile)\n",
+                    t.strikes_over_tolerance);
+    std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, t.segments * 6);
+    std::printf("moves chosen (carriage steps: profile/shaper, speed, settle, duration, worst residual):\n");
+    for (const auto& [steps, m] : planner.tuner().decisions()) {
+        const auto& c = m.choice;
+        std::printf("  %6u  %s/%s  %3.0f%%  %4.1f ms  %7.2f ms  %6.2f um\n", steps,
+                    profile::to_string(c.shape), profile::to_string(c.shaper), c.speed_scale * 100,
+                    c.settle_s * 1e3, c.duration_s * 1e3, c.worst_residual_um);
+    }
+}
+
+}  // namespace
+
+void add_plan_command(CLI::App& app) {
+    static PlanArgs a;
+    auto* cmd = app.add_subcommand("plan", "Plan the embossing: passes, strikes, moves, steps, time, vibration");
+    a.layout.add_to(*cmd, /*with_interpoint=*/false);
+    cmd->add_option("--profile,-p", a.profile, "Printer profile JSON (default: the bundled one)");
+    cmd->add_flag("--json", a.json, "Print the plan as JSON");
+    cmd->callback([] { run_plan(a); });
+}
+
+}  // namespace tactus::cli

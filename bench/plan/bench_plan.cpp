@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Plans and estimates a whole book (the KJV from Debian's bible-kjv) on the
+// default profile, in the same run as its layout, and one page alone.
+// Figures: pages per second; planning time / layout time (goal <= 1); the
+// embossing-time ratio plan / lower bound (goal <= 1.10); the speed-up over a
+// naive plan (one direction, a stop at every dot column).
+// Usage: bench_plan BOOK.txt [TABLE]
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+
+using namespace tactus;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s BOOK.txt [TABLE]\n", argv[0]);
+        return 2;
+    }
+    const auto prof = profile::default_profile();
+    PipelineOptions options;
+    if (argc > 2) options.tables = argv[2];
+    options.layout.geometry.interpoint = prof.geometry.interpoint;
+    options.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+    options.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+
+    auto t0 = Clock::now();
+    auto doc = lay_out_file(argv[1], options);
+    if (!doc) {
+        std::fprintf(stderr, "%s\n", doc.error().to_string().c_str());
+        return 1;
+    }
+    const double layout_s = seconds_since(t0);
+
+    // The whole book, one sheet at a time (as the CLI and the spool do).
+    t0 = Clock::now();
+    auto planner = plan::Planner::create(prof);
+    if (!planner) return 1;
+    std::size_t passes = 0, max_pass_bytes = 0;
+    for (std::size_t s = 1; s <= doc->sheet_count(); ++s) {
+        auto sheet = planner->plan_sheet(*doc, s);
+        if (!sheet) {
+            std::fprintf(stderr, "%s\n", sheet.error().to_string().c_str());
+            return 1;
+        }
+        passes += sheet->passes.size();
+        for (const auto& p : sheet->passes) max_pass_bytes = std::max(max_pass_bytes, p.segments * 6);
+    }
+    const double plan_s = seconds_since(t0);
+    const plan::JobPlan t = planner->totals();  // a copy: the warm single-page runs below add to the totals
+
+    t0 = Clock::now();
+    auto naive = plan::naive_duration(*doc, prof);
+    const double naive_s = seconds_since(t0);
+    if (!naive) return 1;
+
+    // One page alone, repeated for a stable figure (each run a fresh planner:
+    // this includes tuning its moves from cold).
+    PagedDocument one;
+    one.geometry = doc->geometry;
+    one.pages.push_back(doc->pages.at(doc->pages.size() / 2));
+    const int reps = 20;
+    double page_emboss = 0;
+    t0 = Clock::now();
+    for (int i = 0; i < reps; ++i) {
+        auto j = plan::plan_job(one, prof);
+        if (!j) return 1;
+        page_emboss = j->duration_s;
+    }
+    const double page_s = seconds_since(t0) / reps;
+    // The same page on a planner that has tuned its moves already (as within a book).
+    t0 = Clock::now();
+    for (int i = 0; i < reps; ++i)
+        if (!planner->plan_sheet(one, 1)) return 1;
+    const double page_warm_s = seconds_since(t0) / reps;
+
+    rusage self{};
+    ::getrusage(RUSAGE_SELF, &self);
+    std::printf("book:                 %s: %zu pages on %zu sheets, %zu passes, %zu strikes\n", argv[1],
+                doc->pages.size(), doc->sheet_count(), passes, t.strikes);
+    std::printf("layout:               %.3f s\n", layout_s);
+    std::printf("plan + estimate:      %.3f s = %.0f pages/s\n", plan_s,
+                static_cast<double>(doc->pages.size()) / plan_s);
+    std::printf("ratio plan/layout:    %.3f (goal <= 1.0)\n", plan_s / layout_s);
+    std::printf("one page (cold):      %.2f ms = %.0f pages/s; embosses in %.1f s\n", page_s * 1e3,
+                1.0 / page_s, page_emboss);
+    std::printf("one page (warm):      %.3f ms = %.0f pages/s\n", page_warm_s * 1e3, 1.0 / page_warm_s);
+    std::printf("embossing time:       %.0f s = %.1f h (%.1f s per sheet)\n", t.duration_s,
+                t.duration_s / 3600, t.duration_s / static_cast<double>(doc->sheet_count()));
+    std::printf("lower bound:          %.0f s = %.1f h\n", t.lower_bound_s, t.lower_bound_s / 3600);
+    std::printf("ratio plan/bound:     %.3f (goal <= 1.10)\n", t.duration_s / t.lower_bound_s);
+    std::printf("naive plan:           %.0f s = %.1f h (computed in %.2f s)\n", *naive, *naive / 3600, naive_s);
+    std::printf("speed-up vs naive:    %.2fx\n", *naive / t.duration_s);
+    std::printf("residual at strikes:  %.2f um nominal, %.2f um worst case (tolerance %.0f um)\n",
+                t.max_residual_um, t.max_worst_residual_um, prof.vibration.tolerance_um);
+    std::printf("step schedule:        %zu segments = %.1f MB; largest pass %zu bytes\n", t.segments,
+                static_cast<double>(t.segments) * 6 / 1048576.0, max_pass_bytes);
+    std::printf("distinct moves tuned: %zu\n", planner->tuner().decisions().size());
+    std::printf("peak memory:          %.1f MB\n", static_cast<double>(self.ru_maxrss) / 1024.0);
+    return 0;
+}

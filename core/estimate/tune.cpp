@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "estimate/tune.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "estimate/dynamics.hpp"
+
+namespace tactus::estimate {
+namespace {
+
+using profile::ProfileShape;
+using profile::ShaperKind;
+
+// Fixed-point with `digits` decimals (snprintf needs a literal format under -Wformat=2).
+std::string fmt(int digits, double v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+std::string describe(ProfileShape s, ShaperKind k, double scale, double settle) {
+    return std::string(profile::to_string(s)) + "/" + profile::to_string(k) + " at " +
+           fmt(0, scale * 100) + "% speed" +
+           (settle > 0 ? " + " + fmt(1, settle * 1000) + " ms settle" : std::string());
+}
+
+struct Candidate {
+    ProfileShape shape;
+    ShaperKind shaper;
+    double scale;
+    double settle;
+    plan::MoveShape move;
+};
+
+// The move followed by `settle` seconds at rest on the target before the strike.
+plan::MoveShape with_settle(plan::MoveShape m, double settle) {
+    if (settle <= 0 || m.pieces.empty()) return m;
+    m.pieces.push_back(plan::Piece{m.duration, settle, plan::Derivs{m.distance, 0, 0, 0, 0, 0}});
+    m.duration += settle;
+    return m;
+}
+
+}  // namespace
+
+MoveTuner::MoveTuner(const profile::PrinterProfile& p)
+    : p_(p), nominal_(build_model(p.dynamics)) {
+    const double db = p.vibration.damping_band, fb = p.vibration.frequency_band;
+    for (double ds : {1 - db, 1.0, 1 + db})
+        for (double fs : {1 - fb, 1 - fb / 2, 1.0, 1 + fb / 2, 1 + fb})
+            band_.emplace_back(build_model(p.dynamics, ModelVariant{ds, fs}));
+    const double f = dominant_frequency_hz(p.dynamics);
+    for (auto k : {ShaperKind::none, ShaperKind::zv, ShaperKind::mzv, ShaperKind::zvd, ShaperKind::ei})
+        shapers_.push_back(plan::design_shaper(k, f, p.dynamics.damping_ratio));
+}
+
+const plan::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
+    const auto i = static_cast<std::size_t>(k);
+    return shapers_[i < shapers_.size() ? i : 0];
+}
+
+double MoveTuner::nominal_residual_um(const plan::MoveShape& m) {
+    return 1000.0 * nominal_.residual_mm(m, p_.head.dwell_s);
+}
+
+double MoveTuner::worst_residual_um(const plan::MoveShape& m) {
+    double worst = 0;
+    for (auto& sim : band_) worst = std::max(worst, sim.residual_mm(m, p_.head.dwell_s));
+    return 1000.0 * worst;
+}
+
+Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
+    if (auto it = cache_.find(steps); it != cache_.end()) return &it->second;
+    const double distance = steps / p_.carriage.steps_per_mm;
+    const bool auto_shape = p_.motion.shape == ProfileShape::automatic;
+    const bool auto_shaper = p_.motion.shaper == ShaperKind::automatic;
+    // Automatic shape choice keeps to the profiles that honour j_max; the
+    // trapezoid (unbounded jerk) is used only when the profile asks for it.
+    std::vector<ProfileShape> shapes = auto_shape ? std::vector{ProfileShape::jerk, ProfileShape::scurve}
+                                                  : std::vector{p_.motion.shape};
+    std::vector<ShaperKind> kinds = auto_shaper ? std::vector{ShaperKind::none, ShaperKind::zv,
+                                                              ShaperKind::mzv, ShaperKind::zvd,
+                                                              ShaperKind::ei}
+                                                : std::vector{p_.motion.shaper};
+    std::vector<double> scales = (auto_shape || auto_shaper)
+                                     ? std::vector{1.0, 0.8, 0.64, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05}
+                                     : std::vector{1.0};
+    std::vector<Candidate> cands;
+    for (double s : scales) {
+        const plan::Limits lim{p_.carriage.v_max_mm_s * s, p_.carriage.a_max_mm_s2 * s * s,
+                               p_.carriage.j_max_mm_s3 * s * s * s};
+        for (auto shape : shapes) {
+            const auto base = plan::make_move(shape, distance, lim);
+            for (auto k : kinds)
+                cands.push_back({shape, k, s, 0.0, plan::shape_move(base, design_shaper(k))});
+        }
+    }
+    // A machine whose damping may be far above nominal creeps onto the target
+    // after the command stops; a short rest before the strike can be cheaper
+    // than a shaper or a slower move.
+    if (auto_shape || auto_shaper) {
+        const plan::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
+        const auto base = plan::make_move(shapes.front(), distance, lim);
+        for (double ms : {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0})
+            cands.push_back({shapes.front(), ShaperKind::none, 1.0, ms / 1000, with_settle(base, ms / 1000)});
+    }
+    std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
+        return a.move.duration < b.move.duration;
+    });
+
+    const double tol = p_.vibration.tolerance_um;
+    std::string rejected;
+    int n_rejected = 0;
+    double best_worst = 1e300;
+    std::string best_name;
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+        auto& c = cands[i];
+        const double worst = steps == 0 ? 0.0 : worst_residual_um(c.move);
+        const bool last = i + 1 == cands.size();
+        const bool fixed = !(auto_shape || auto_shaper);
+        if (worst <= tol || fixed) {
+            TunedMove t;
+            t.choice.steps = steps;
+            t.choice.distance_mm = distance;
+            t.choice.shape = c.shape;
+            t.choice.shaper = c.shaper;
+            t.choice.speed_scale = c.scale;
+            t.choice.settle_s = c.settle;
+            t.choice.duration_s = c.move.duration;
+            t.choice.residual_um = steps == 0 ? 0.0 : nominal_residual_um(c.move);
+            t.choice.worst_residual_um = worst;
+            t.choice.within_tolerance = worst <= tol;
+            if (fixed) {
+                t.choice.why = "fixed by the profile (motion.profile, motion.shaper); worst case " +
+                               fmt(1, worst) + " um against a tolerance of " + fmt(1, tol) + " um";
+            } else {
+                t.choice.why = "fastest of " + std::to_string(cands.size()) +
+                               " candidates whose worst-case residual (" + fmt(1, worst) +
+                               " um) is within " + fmt(1, tol) + " um";
+                if (n_rejected > 0)
+                    t.choice.why += "; " + std::to_string(n_rejected) + " faster rejected: " + rejected;
+            }
+            t.shape = std::move(c.move);
+            return &cache_.emplace(steps, std::move(t)).first->second;
+        }
+        if (worst < best_worst) best_worst = worst, best_name = describe(c.shape, c.shaper, c.scale, c.settle);
+        if (n_rejected < 3)
+            rejected += (n_rejected ? ", " : "") + describe(c.shape, c.shaper, c.scale, c.settle) + " " +
+                        fmt(1, worst) + " um";
+        ++n_rejected;
+        if (last) break;
+    }
+    return fail("no profile, shaper or speed keeps the worst-case residual of a " +
+                    fmt(3, distance) + " mm carriage move within " + fmt(3, tol) +
+                    " um (best: " + best_name + ", " + fmt(1, best_worst) +
+                    " um): unreachable at any speed",
+                "field vibration.tolerance_um");
+}
+
+}  // namespace tactus::estimate

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Auto-tune: for each carriage move length, the fastest profile/shaper/speed
+// whose worst-case residual at the strike stays within the profile's tolerance,
+// the worst case taken over a band of damping and natural frequency around the
+// nominal machine (real machines drift). Moves of equal length are identical,
+// so each length is tuned once and cached.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/result.hpp"
+#include "estimate/simulate.hpp"
+#include "plan/motion.hpp"
+#include "plan/shaper.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus::estimate {
+
+struct TuneChoice {
+    std::uint32_t steps = 0;
+    double distance_mm = 0;
+    profile::ProfileShape shape = profile::ProfileShape::jerk;
+    profile::ShaperKind shaper = profile::ShaperKind::none;
+    double speed_scale = 1.0;  // v, a, j scaled by s, s^2, s^3 (the same move, slowed in time)
+    double settle_s = 0;       // rest before the strike, included in duration_s
+    double duration_s = 0;
+    double residual_um = 0;        // nominal machine
+    double worst_residual_um = 0;  // over the damping/frequency band
+    bool within_tolerance = true;
+    std::string why;
+};
+
+struct TunedMove {
+    plan::MoveShape shape;
+    TuneChoice choice;
+};
+
+class MoveTuner {
+public:
+    explicit MoveTuner(const profile::PrinterProfile& p);
+    // The move for `steps` carriage steps; fails (naming vibration.tolerance_um)
+    // only when auto-tuning finds nothing within tolerance.
+    Result<const TunedMove*> carriage(std::uint32_t steps);
+    [[nodiscard]] const std::map<std::uint32_t, TunedMove>& decisions() const { return cache_; }
+    [[nodiscard]] const plan::Shaper& design_shaper(profile::ShaperKind k) const;
+
+    // Residual of an arbitrary move on the nominal machine and its band worst case, um.
+    double nominal_residual_um(const plan::MoveShape& m);
+    double worst_residual_um(const plan::MoveShape& m);
+
+private:
+    profile::PrinterProfile p_;
+    MoveSimulator nominal_;
+    std::vector<MoveSimulator> band_;
+    std::vector<plan::Shaper> shapers_;  // indexed by ShaperKind
+    std::map<std::uint32_t, TunedMove> cache_;
+};
+
+}  // namespace tactus::estimate

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plan/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "plan/geometry.hpp"
+#include "plan/motion.hpp"
+#include "profile/profile_json.hpp"
+
+namespace tactus::plan {
+namespace {
+
+// One dot to strike, with where the feed and the head must stand for it.
+struct Hit {
+    std::int32_t feed_step;
+    std::int32_t head_step;
+    Side side;
+    DotPlace place;
+};
+
+Result<void> check_page(const profile::PrinterProfile& p, const Page& page, std::size_t index) {
+    const auto& g = p.geometry;
+    const std::string where = "page " + std::to_string(index + 1);
+    if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
+        return fail("has " + std::to_string(page.lines.size()) + " lines, the profile allows " +
+                        std::to_string(g.lines_per_page) + " (geometry.lines_per_page)",
+                    where);
+    for (std::size_t l = 0; l < page.lines.size(); ++l) {
+        const auto& line = page.lines[l];
+        const auto lw = where + " line " + std::to_string(l + 1);
+        if (line.size() > static_cast<std::size_t>(g.cells_per_line))
+            return fail("has " + std::to_string(line.size()) + " cells, the profile allows " +
+                            std::to_string(g.cells_per_line) + " (geometry.cells_per_line)",
+                        lw);
+        if (!g.eight_dot)
+            for (std::size_t c = 0; c < line.size(); ++c)
+                if (line[c].dots & 0xC0)
+                    return fail("cell " + std::to_string(c + 1) +
+                                    " has dot 7 or 8 but the profile is six-dot (geometry.eight_dot)",
+                                lw);
+    }
+    return {};
+}
+
+// Every dot of one sheet, sorted by feed position then carriage position.
+Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const PagedDocument& doc,
+                                      std::size_t sheet_number, const StepAxis& carriage,
+                                      const StepAxis& feed, bool check) {
+    std::vector<Hit> hits;
+    const Sheet sheet = doc.sheet(sheet_number);
+    const int dots = p.geometry.eight_dot ? 8 : 6;
+    for (const auto& [side, page] : {std::pair{Side::front, sheet.front}, std::pair{Side::back, sheet.back}}) {
+        if (!page) continue;
+        const auto index = static_cast<std::size_t>(page - doc.pages.data());
+        if (check)
+            if (auto r = check_page(p, *page, index); !r) return std::unexpected(r.error());
+        const Hammer h = hammer_for(side);
+        for (std::size_t l = 0; l < page->lines.size(); ++l) {
+            const auto& line = page->lines[l];
+            for (std::size_t c = 0; c < line.size(); ++c) {
+                const Cell cell = line[c];
+                if (cell.blank()) continue;
+                for (int d = 1; d <= dots; ++d) {
+                    if (!cell.has_dot(d)) continue;
+                    const auto place = dot_place(p, side, static_cast<int>(l), static_cast<int>(c), d);
+                    hits.push_back({feed.steps_for(place.paper_y_mm),
+                                    carriage.steps_for(carriage_target_mm(p, h, place.paper_x_mm)),
+                                    side, place});
+                }
+            }
+        }
+    }
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+        return a.feed_step != b.feed_step ? a.feed_step < b.feed_step : a.head_step < b.head_step;
+    });
+    return hits;
+}
+
+Limits limits(const profile::Axis& a) { return {a.v_max_mm_s, a.a_max_mm_s2, a.j_max_mm_s3}; }
+
+profile::ProfileShape feed_shape(const profile::PrinterProfile& p) {
+    // The paper axis has no vibration model: automatic means the time-optimal jerk-limited move.
+    return p.motion.shape == profile::ProfileShape::automatic ? profile::ProfileShape::jerk
+                                                              : p.motion.shape;
+}
+
+}  // namespace
+
+Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
+    : p_(p),
+      o_(o),
+      tuner_(std::make_unique<estimate::MoveTuner>(p)),
+      carriage_axis_(p.carriage.steps_per_mm),
+      feed_axis_(p.feed.steps_per_mm) {}
+
+Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOptions& o) {
+    if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
+    return Planner(p, o);
+}
+
+Result<StepMove> Planner::carriage_steps(std::uint32_t steps, const MoveShape& shape) {
+    auto it = carriage_cache_.find(steps);
+    if (it == carriage_cache_.end()) {
+        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm);
+        if (!m) return std::unexpected(located(m.error(), "carriage"));
+        it = carriage_cache_.emplace(steps, std::move(*m)).first;
+    }
+    return it->second;
+}
+
+Result<std::pair<const StepMove*, const MoveShape*>> Planner::feed_move(std::uint32_t steps) {
+    auto it = feed_cache_.find(steps);
+    if (it == feed_cache_.end()) {
+        auto shape = make_move(feed_shape(p_), steps / p_.feed.steps_per_mm, limits(p_.feed));
+        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm);
+        if (!m) return std::unexpected(located(m.error(), "feed"));
+        it = feed_cache_.emplace(steps, std::pair{std::move(*m), std::move(shape)}).first;
+    }
+    return std::pair{&it->second.first, &it->second.second};
+}
+
+Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t sheet_number) {
+    if (o_.check_layout && doc.geometry.interpoint != p_.geometry.interpoint)
+        return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
+                                            : "the document is laid out single-sided but the profile is interpoint",
+                    "field geometry.interpoint");
+    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout);
+    if (!hits) return std::unexpected(hits.error());
+    SheetPlan sheet;
+    sheet.index = sheet_number;
+    const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
+    const Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
+    const double dwell = p_.head.dwell_s;
+    std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
+    const auto& h = *hits;
+    for (std::size_t first = 0; first < h.size();) {
+        std::size_t end = first;
+        while (end < h.size() && h[end].feed_step == h[first].feed_step) ++end;
+        Pass pass;
+        pass.sheet = sheet_number;
+        pass.side = h[first].side;
+        pass.y_mm = h[first].place.paper_y_mm;
+        pass.feed_step = h[first].feed_step;
+        pass.direction = p_.motion.bidirectional ? next_direction_ : +1;
+        if (p_.motion.bidirectional) next_direction_ = -next_direction_;
+
+        const auto feed_steps = static_cast<std::uint32_t>(pass.feed_step - feed_pos);
+        auto fm = feed_move(feed_steps);
+        if (!fm) return std::unexpected(fm.error());
+        pass.feed = *fm->first;
+        pass.segments += pass.feed.segments.size();
+        feed_pos = pass.feed_step;
+        const double feed_time = fm->second->duration;
+        const double feed_bound = jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
+
+        const double t0 = clock_s_;
+        double t = t0;
+        pass.moves.reserve(end - first);
+        pass.strikes.reserve(end - first);
+        for (std::size_t k = 0; k < end - first; ++k) {
+            const Hit& hit = pass.direction > 0 ? h[first + k] : h[end - 1 - k];
+            const std::int32_t target = hit.head_step;
+            std::int32_t n = 0;
+            const double head_mm = std::abs(target - head_cur_) / p_.carriage.steps_per_mm;
+            if (target != head_cur_) {
+                // The sources' reversal test on the last, current and next stops.
+                const bool reversal = static_cast<std::int64_t>(head_cur_ - head_prev_) *
+                                          static_cast<std::int64_t>(target - head_cur_) < 0;
+                const int dir = target > head_cur_ ? 1 : -1;
+                n = target - head_cur_ + (reversal ? dir * backlash : 0);
+                head_prev_ = head_cur_;
+                head_cur_ = target;
+            }
+            motor_step_ += n;
+            auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
+            if (!tuned) return std::unexpected(tuned.error());
+            const auto& choice = (*tuned)->choice;
+            auto sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), (*tuned)->shape);
+            if (!sm) return std::unexpected(sm.error());
+            sm->steps = n;
+            pass.segments += sm->segments.size();
+            const double move_time = (*tuned)->shape.duration;
+            const double bound = jerk_min_time(head_mm, carriage_lim);
+            if (k == 0) {
+                // The feed and the carriage's first move run at the same time.
+                t += std::max(feed_time, move_time);
+                pass.lower_bound_s += std::max(feed_bound, bound);
+            } else {
+                t += move_time;
+                pass.lower_bound_s += bound;
+            }
+            pass.lower_bound_s += dwell;
+            Strike s;
+            s.hammer = hammer_for(hit.side);
+            s.side = hit.side;
+            s.x_mm = hit.place.read_x_mm;
+            s.y_mm = hit.place.read_y_mm;
+            s.paper_x_mm = hit.place.paper_x_mm;
+            s.paper_y_mm = hit.place.paper_y_mm;
+            s.carriage_step = motor_step_;
+            s.time_s = t;
+            s.residual_um = choice.residual_um;
+            s.worst_residual_um = choice.worst_residual_um;
+            totals_.max_residual_um = std::max(totals_.max_residual_um, s.residual_um);
+            totals_.max_worst_residual_um = std::max(totals_.max_worst_residual_um, s.worst_residual_um);
+            if (!choice.within_tolerance) ++totals_.strikes_over_tolerance;
+            pass.moves.push_back(std::move(*sm));
+            pass.strikes.push_back(s);
+            t += dwell;
+        }
+        pass.duration_s = t - t0;
+        clock_s_ = t;
+        sheet.duration_s += pass.duration_s;
+        sheet.lower_bound_s += pass.lower_bound_s;
+        totals_.strikes += pass.strikes.size();
+        totals_.segments += pass.segments;
+        sheet.passes.push_back(std::move(pass));
+        first = end;
+    }
+    totals_.duration_s += sheet.duration_s;
+    totals_.lower_bound_s += sheet.lower_bound_s;
+    return sheet;
+}
+
+Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+                         const PlanOptions& o) {
+    auto planner = Planner::create(p, o);
+    if (!planner) return std::unexpected(planner.error());
+    std::vector<SheetPlan> sheets;
+    for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
+        auto sheet = planner->plan_sheet(doc, s);
+        if (!sheet) return std::unexpected(sheet.error());
+        sheets.push_back(std::move(*sheet));
+    }
+    JobPlan job = planner->totals();
+    job.sheets = std::move(sheets);
+    return job;
+}
+
+Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p) {
+    if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
+    estimate::MoveTuner tuner(p);
+    const StepAxis carriage(p.carriage.steps_per_mm), feed(p.feed.steps_per_mm);
+    const auto backlash = carriage.steps_for(p.carriage.backlash_mm);
+    // Every dot column of each side, as carriage stops for that side's hammer.
+    std::vector<std::int32_t> columns[2];
+    for (Side side : {Side::front, Side::back}) {
+        auto& cols = columns[side == Side::front ? 0 : 1];
+        for (int c = 0; c < p.geometry.cells_per_line; ++c)
+            for (int dot : {1, 4})
+                cols.push_back(carriage.steps_for(
+                    carriage_target_mm(p, hammer_for(side), dot_place(p, side, 0, c, dot).paper_x_mm)));
+        std::sort(cols.begin(), cols.end());
+    }
+    auto move_time = [&](std::int32_t steps) -> Result<double> {
+        auto t = tuner.carriage(static_cast<std::uint32_t>(std::abs(steps)));
+        if (!t) return std::unexpected(t.error());
+        return (*t)->shape.duration;
+    };
+    double total = 0;
+    std::int32_t head = 0;
+    for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
+        auto hits = collect_hits(p, doc, s, carriage, feed, false);
+        if (!hits) return std::unexpected(hits.error());
+        const auto& h = *hits;
+        std::int32_t feed_pos = 0;
+        for (std::size_t first = 0; first < h.size();) {
+            std::size_t end = first;
+            bool sides[2] = {false, false};
+            while (end < h.size() && h[end].feed_step == h[first].feed_step)
+                sides[h[end++].side == Side::front ? 0 : 1] = true;
+            std::vector<std::int32_t> stops;
+            for (int i = 0; i < 2; ++i)
+                if (sides[i]) stops.insert(stops.end(), columns[i].begin(), columns[i].end());
+            std::sort(stops.begin(), stops.end());
+            stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
+            const auto feed_steps = h[first].feed_step - feed_pos;
+            feed_pos = h[first].feed_step;
+            const double feed_time = jerk_min_time(feed_steps / p.feed.steps_per_mm,
+                                                   {p.feed.v_max_mm_s, p.feed.a_max_mm_s2, p.feed.j_max_mm_s3});
+            // Return to the first column (a reversal: backlash), then step right column by column.
+            auto back = move_time(std::abs(stops.front() - head) + (head != stops.front() ? backlash : 0));
+            if (!back) return std::unexpected(back.error());
+            total += std::max(feed_time, *back);
+            for (std::size_t i = 1; i < stops.size(); ++i) {
+                auto m = move_time(stops[i] - stops[i - 1] + (i == 1 ? backlash : 0));
+                if (!m) return std::unexpected(m.error());
+                total += *m;
+            }
+            head = stops.back();
+            total += static_cast<double>(end - first) * p.head.dwell_s;
+            first = end;
+        }
+    }
+    return total;
+}
+
+}  // namespace tactus::plan

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The plan stage: laid-out pages -> passes, strikes, moves and steps, timed.
+// A Planner keeps the machine state (carriage, feed, clock, sweep direction)
+// from sheet to sheet, so a long book can be planned one sheet at a time in
+// constant memory; plan_job collects every sheet for small documents.
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "common/result.hpp"
+#include "estimate/tune.hpp"
+#include "layout/page.hpp"
+#include "plan/plan.hpp"
+#include "plan/steps.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus::plan {
+
+struct PlanOptions {
+    // Check the layout against the profile (lines and cells per page, interpoint).
+    bool check_layout = true;
+};
+
+class Planner {
+public:
+    static Result<Planner> create(const profile::PrinterProfile& p, const PlanOptions& o = {});
+
+    // Plans the next sheet of `doc` (sheets must come in order).
+    Result<SheetPlan> plan_sheet(const PagedDocument& doc, std::size_t sheet_number);
+    // Running totals over the sheets planned so far (sheets left empty).
+    [[nodiscard]] const JobPlan& totals() const { return totals_; }
+    [[nodiscard]] estimate::MoveTuner& tuner() { return *tuner_; }
+    [[nodiscard]] const profile::PrinterProfile& profile() const { return p_; }
+
+private:
+    Planner(const profile::PrinterProfile& p, const PlanOptions& o);
+    Result<StepMove> carriage_steps(std::uint32_t steps, const MoveShape& shape);
+    Result<std::pair<const StepMove*, const MoveShape*>> feed_move(std::uint32_t steps);
+
+    profile::PrinterProfile p_;
+    PlanOptions o_;
+    std::unique_ptr<estimate::MoveTuner> tuner_;
+    StepAxis carriage_axis_, feed_axis_;
+    std::unordered_map<std::uint32_t, StepMove> carriage_cache_;
+    std::unordered_map<std::uint32_t, std::pair<StepMove, MoveShape>> feed_cache_;
+    JobPlan totals_;
+    // Machine state carried across passes and sheets.
+    double clock_s_ = 0;
+    std::int32_t motor_step_ = 0;   // the controller's carriage step counter
+    std::int32_t head_prev_ = -1;   // P1 of the reversal rule: homing ends moving +x
+    std::int32_t head_cur_ = 0;     // P2: where the head stands (in carriage steps)
+    int next_direction_ = +1;
+};
+
+Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+                         const PlanOptions& o = {});
+
+// The naive plan for comparison: one sweep direction (+x), the carriage stopping
+// at every dot column of the line whether or not a dot is struck there. Only its
+// duration is computed. Uses the same tuned moves as the real plan.
+Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p);
+
+}  // namespace tactus::plan

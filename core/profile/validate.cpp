@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What makes a profile physically possible. Each check names the field to fix;
+// the planner may then assume every quantity is finite and in range, so no NaN
+// or infinity can reach a plan.
+#include <cmath>
+#include <string>
+
+#include "plan/plan.hpp"
+#include "profile/profile_json.hpp"
+
+namespace tactus::profile {
+namespace {
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+struct Checker {
+    Result<void> first;
+    // Records the first failure only: one clear message beats a cascade.
+    void require(bool ok, const char* field, const std::string& why) {
+        if (first && !ok) first = fail(why, std::string("field ") + field);
+    }
+    void range(double v, double lo, double hi, const char* field, const char* unit = "") {
+        require(std::isfinite(v) && v >= lo && v <= hi, field,
+                "is " + num(v) + unit + ", must be between " + num(lo) + " and " + num(hi) + unit);
+    }
+    void positive(double v, double hi, const char* field, const char* unit = "") {
+        require(std::isfinite(v) && v > 0 && v <= hi, field,
+                v <= 0 ? "is " + num(v) + unit + ", must be above 0"
+                       : "is " + num(v) + unit + ", must not exceed " + num(hi) + unit);
+    }
+};
+
+void check_axis(Checker& c, const Axis& a, const std::string& name) {
+    // Field names are built once per axis; keep them alive for the checker's char*.
+    static thread_local std::string f[5];
+    f[0] = name + ".steps_per_mm";
+    f[1] = name + ".v_max_mm_s";
+    f[2] = name + ".a_max_mm_s2";
+    f[3] = name + ".j_max_mm_s3";
+    f[4] = name + ".backlash_mm";
+    c.positive(a.steps_per_mm, 1e4, f[0].c_str());
+    c.positive(a.v_max_mm_s, 1e4, f[1].c_str(), " mm/s");
+    c.positive(a.a_max_mm_s2, 1e7, f[2].c_str(), " mm/s2");
+    c.positive(a.j_max_mm_s3, 1e11, f[3].c_str(), " mm/s3");
+    c.range(a.backlash_mm, 0, 1, f[4].c_str(), " mm");
+    // The controller times each step with the 89C52 timer; it needs at least a
+    // few ticks between steps to do its additions.
+    const double steps_per_s = a.v_max_mm_s * a.steps_per_mm;
+    c.require(!std::isfinite(steps_per_s) || steps_per_s <= plan::kTickHz / 8, f[1].c_str(),
+              "needs " + num(steps_per_s) + " steps/s, more than the controller can time (" +
+                  num(plan::kTickHz / 8) + " steps/s, 8 timer ticks per step)");
+}
+
+}  // namespace
+
+Result<void> validate(const PrinterProfile& p) {
+    Checker c;
+    const auto& pa = p.paper;
+    const auto& g = p.geometry;
+    c.positive(pa.width_mm, 2000, "paper.width_mm", " mm");
+    c.positive(pa.height_mm, 5000, "paper.height_mm", " mm");
+    c.range(pa.margin_left_mm, 0, pa.width_mm, "paper.margin_left_mm", " mm");
+    c.range(pa.margin_right_mm, 0, pa.width_mm, "paper.margin_right_mm", " mm");
+    c.range(pa.margin_top_mm, 0, pa.height_mm, "paper.margin_top_mm", " mm");
+    c.range(pa.margin_bottom_mm, 0, pa.height_mm, "paper.margin_bottom_mm", " mm");
+
+    c.positive(g.dot_pitch_mm, 20, "geometry.dot_pitch_mm", " mm");
+    c.require(g.cell_pitch_mm > g.dot_pitch_mm && g.cell_pitch_mm <= 100, "geometry.cell_pitch_mm",
+              "is " + num(g.cell_pitch_mm) + " mm, must exceed the dot pitch (" +
+                  num(g.dot_pitch_mm) + " mm) so neighbouring cells stay apart");
+    const int rows = g.eight_dot ? 4 : 3;
+    c.require(g.line_pitch_mm > (rows - 1) * g.dot_pitch_mm && g.line_pitch_mm <= 200,
+              "geometry.line_pitch_mm",
+              "is " + num(g.line_pitch_mm) + " mm, must exceed the cell height (" +
+                  num((rows - 1) * g.dot_pitch_mm) + " mm)");
+    c.range(g.cells_per_line, 1, 1000, "geometry.cells_per_line");
+    c.range(g.lines_per_page, 1, 1000, "geometry.lines_per_page");
+    if (!c.first) return c.first;
+
+    const double line_w = (g.cells_per_line - 1) * g.cell_pitch_mm + g.dot_pitch_mm;
+    const double room_w = pa.width_mm - pa.margin_left_mm - pa.margin_right_mm;
+    c.require(line_w <= room_w + 1e-9, "geometry.cells_per_line",
+              std::to_string(g.cells_per_line) + " cells need " + num(line_w) +
+                  " mm but the paper leaves " + num(room_w) + " mm between the margins");
+    const double page_h = (g.lines_per_page - 1) * g.line_pitch_mm + (rows - 1) * g.dot_pitch_mm;
+    const double room_h = pa.height_mm - pa.margin_top_mm - pa.margin_bottom_mm;
+    c.require(page_h <= room_h + 1e-9, "geometry.lines_per_page",
+              std::to_string(g.lines_per_page) + " lines need " + num(page_h) +
+                  " mm but the paper leaves " + num(room_h) + " mm between the margins");
+    if (g.interpoint) {
+        // The back grid, mirrored and offset, must still land on the paper.
+        const double x_lo = g.back_mirror == BackMirror::x ? pa.width_mm - pa.margin_left_mm - line_w
+                                                          : pa.margin_left_mm;
+        const double y_lo = g.back_mirror == BackMirror::y ? pa.height_mm - pa.margin_top_mm - page_h
+                                                          : pa.margin_top_mm;
+        c.require(x_lo + g.back_offset_x_mm >= 0 && x_lo + line_w + g.back_offset_x_mm <= pa.width_mm,
+                  "geometry.back_offset_x_mm",
+                  "is " + num(g.back_offset_x_mm) + " mm, which puts back-side dots off the paper");
+        c.require(y_lo + g.back_offset_y_mm >= 0 && y_lo + page_h + g.back_offset_y_mm <= pa.height_mm,
+                  "geometry.back_offset_y_mm",
+                  "is " + num(g.back_offset_y_mm) + " mm, which puts back-side dots off the paper");
+    }
+
+    c.require(std::isfinite(p.head.concave_offset_mm) &&
+                  std::fabs(p.head.concave_offset_mm) < pa.width_mm,
+              "head.concave_offset_mm",
+              "is " + num(p.head.concave_offset_mm) + " mm, wider than the paper (" +
+                  num(pa.width_mm) + " mm): one hammer could never reach it");
+    c.positive(p.head.dwell_s, 10, "head.dwell_s", " s");
+
+    check_axis(c, p.carriage, "carriage");
+    check_axis(c, p.feed, "feed");
+
+    const auto& d = p.dynamics;
+    c.positive(d.head_mass_kg, 1000, "dynamics.head_mass_kg", " kg");
+    c.positive(d.belt_stiffness_n_m, 1e9, "dynamics.belt_stiffness_n_m", " N/m");
+    c.range(d.damping_ratio, 0, 0.99, "dynamics.damping_ratio");
+    c.range(d.rotor_inertia_kg_m2, 0, 1, "dynamics.rotor_inertia_kg_m2", " kg m2");
+    if (d.rotor_inertia_kg_m2 > 0) {
+        c.positive(d.pulley_radius_m, 1, "dynamics.pulley_radius_m", " m");
+        c.positive(d.motor_stiffness_nm_rad, 1e6, "dynamics.motor_stiffness_nm_rad", " N m/rad");
+    }
+
+    const auto& v = p.vibration;
+    c.range(v.damping_band, 0, 0.95, "vibration.damping_band");
+    c.range(v.frequency_band, 0, 0.9, "vibration.frequency_band");
+    c.positive(v.tolerance_um, 1e5, "vibration.tolerance_um", " um");
+    // The head can only stop on whole steps: an error tolerance finer than half a
+    // step is unreachable however slowly it moves.
+    const double half_step_um = 500.0 / p.carriage.steps_per_mm;
+    c.require(!(v.tolerance_um < half_step_um), "vibration.tolerance_um",
+              "is " + num(v.tolerance_um) + " um, finer than half a carriage step (" +
+                  num(half_step_um) + " um): unreachable at any speed");
+    return c.first;
+}
+
+}  // namespace tactus::profile

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "plan/shaper.hpp"
+#include "plan/steps.hpp"
+
+using namespace tactus::plan;
+
+TEST(Steps, NoDriftOverThousandsOfMoves) {
+    // 10 000 moves of 1.2345 mm (98.76 steps each): rounding each move would lose
+    // 0.24 steps per move, 2400 steps (30 mm) over the run. Planning between
+    // absolute positions keeps every stop within half a step of its target.
+    const StepAxis axis(80.0);
+    std::int64_t motor = 0, naive = 0;
+    double target = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const double next = target + (i % 3 == 2 ? -1.2345 : 1.2345);
+        const std::int32_t steps = axis.steps_for(next) - axis.steps_for(target);
+        motor += steps;
+        naive += std::lround((next - target) * 80.0);
+        target = next;
+        ASSERT_LE(std::fabs(static_cast<double>(motor) - target * 80.0), 0.5);
+    }
+    EXPECT_EQ(motor, axis.steps_for(target));
+    EXPECT_NE(naive, motor);  // the per-move rounding it replaces does drift
+}
+
+TEST(Steps, EncodedScheduleWithinOneTick) {
+    const Limits lim{250, 20000, 4e6};
+    const double spm = 80.0;
+    std::size_t steps_total = 0, segments_total = 0;
+    for (double d : {0.0125, 0.5, 2.5, 3.5, 6.0, 14.0, 60.0, 180.0}) {
+        for (auto shape : {tactus::profile::ProfileShape::trapezoid, tactus::profile::ProfileShape::scurve,
+                           tactus::profile::ProfileShape::jerk}) {
+            for (auto k : {tactus::profile::ShaperKind::none, tactus::profile::ShaperKind::ei}) {
+                const auto n = static_cast<std::int32_t>(std::lround(d * spm));
+                const auto m = shape_move(make_move(shape, n / spm, lim), design_shaper(k, 90, 0.3));
+                const auto ideal = step_times_ticks(m, static_cast<std::uint32_t>(n), spm);
+                auto seg = compress_steps(ideal);
+                ASSERT_TRUE(seg.has_value()) << seg.error().to_string();
+                const auto got = expand_steps(*seg);
+                ASSERT_EQ(got.size(), ideal.size());
+                for (std::size_t i = 0; i < got.size(); ++i)
+                    ASSERT_LE(std::fabs(static_cast<double>(got[i]) - ideal[i]), 1.0) << "step " << i;
+                // The planned profile is reproduced in time too: the last step fires
+                // before the move ends and within a step period of it.
+                EXPECT_LE(static_cast<double>(got.back()), m.duration * kTickHz + 1);
+                steps_total += got.size();
+                segments_total += seg->size();
+                auto enc = encode_move(m, -n, spm);
+                ASSERT_TRUE(enc.has_value());
+                EXPECT_EQ(enc->steps, -n);
+                EXPECT_EQ(enc->segments, *seg);
+            }
+        }
+    }
+    // Compression is what makes the schedule fit the link and the 8051: several
+    // steps per 6-byte segment on average.
+    EXPECT_GT(static_cast<double>(steps_total) / static_cast<double>(segments_total), 4.0);
+}
+
+TEST(Steps, KnownConstantRateCompressesToOneSegment) {
+    // Steps every 100 ticks exactly: one segment, add 0.
+    std::vector<double> t;
+    for (int i = 1; i <= 500; ++i) t.push_back(100.0 * i);
+    auto seg = compress_steps(t);
+    ASSERT_TRUE(seg.has_value());
+    ASSERT_EQ(seg->size(), 1u);
+    EXPECT_EQ((*seg)[0], (StepSegment{100, 500, 0}));
+    // A constant change of interval (+3 ticks per step) is also one segment.
+    t.clear();
+    double now = 0;
+    for (int i = 0; i < 200; ++i) t.push_back(now += 50 + 3 * i);
+    seg = compress_steps(t);
+    ASSERT_TRUE(seg.has_value());
+    ASSERT_EQ(seg->size(), 1u);
+    EXPECT_EQ((*seg)[0], (StepSegment{50, 200, 3}));
+}
+
+TEST(Steps, IntervalBeyondTheTimerIsAnError) {
+    std::vector<double> t{100.0, 70000.0 + 100.0};
+    auto seg = compress_steps(t);
+    ASSERT_FALSE(seg.has_value());
+    EXPECT_NE(seg.error().message.find("16-bit"), std::string::npos);
+}
