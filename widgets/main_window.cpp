@@ -21,7 +21,9 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QSaveFile>
+#include <QDoubleSpinBox>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -34,7 +36,11 @@
 #include "editor_widget.hpp"
 #include "export/export.hpp"
 #include "find_replace.hpp"
+#include "motion_view.hpp"
+#include "profile_editor.hpp"
+#include "vibration_view.hpp"
 #include "preview_panel.hpp"
+#include "sheet_geometry.hpp"
 #include "system_look.hpp"
 #include "table_picker.hpp"
 #include "translate/catalogue.hpp"
@@ -78,12 +84,25 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (empty) editor_->adopt(std::move(*empty));
 
     preview_ = new PreviewPanel(this);
-    auto* dock = new QDockWidget(tr("Preview"), this);
-    dock->setObjectName(QStringLiteral("previewDock"));
-    dock->setAccessibleName(tr("Preview"));
-    dock->setWidget(preview_);
-    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
+    add_dock(tr("Preview"), QStringLiteral("previewDock"), preview_, Qt::RightDockWidgetArea);
+    motion_ = new MotionView(this);
+    vibration_ = new VibrationView(this);
+    profile_ = new ProfileEditor(this);
+    auto* motion_dock = add_dock(tr("Motion"), QStringLiteral("motionDock"), motion_, Qt::BottomDockWidgetArea);
+    auto* vibration_dock = add_dock(tr("Vibration"), QStringLiteral("vibrationDock"), vibration_, Qt::BottomDockWidgetArea);
+    auto* profile_dock = add_dock(tr("Printer profile"), QStringLiteral("profileDock"), profile_, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(motion_dock, vibration_dock);
+    tabifyDockWidget(vibration_dock, profile_dock);
+    motion_dock->raise();
+    plan_timer_.setSingleShot(true);
+    plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
+    connect(&plan_timer_, &QTimer::timeout, this, &MainWindow::start_plan);
+    connect(profile_, &ProfileEditor::profile_changed, this, [this](const profile::PrinterProfile& p) {
+        preview_->preview()->set_geometry(sheet_geometry(p));
+        vibration_->set_profile(p);
+        schedule_plan();
+    });
+    connect(profile_, &ProfileEditor::message, this, [this](const QString& m, bool error) { report(m, error && false); });
 
     tables_ = new TablePicker(this);
     auto* bar = addToolBar(tr("Braille"));
@@ -111,6 +130,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
         sp->set_document(&editor_->layout().paged());
         update_status();
+        schedule_plan();
     });
     connect(editor_, &EditorWidget::position_changed, this, [this, sp](const PagePosition& p) {
         if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
@@ -189,6 +209,18 @@ void MainWindow::build_actions() {
         tables_->setFocus(Qt::ShortcutFocusReason);
         tables_->showPopup();
     });
+    focus_motion_ = make(tr("Go to &motion"), QKeySequence(tr("Ctrl+4")), QStringLiteral("focusMotion"), [this] {
+        motion_->parentWidget()->raise();
+        if (auto* first = motion_->findChild<QSpinBox*>()) first->setFocus(Qt::ShortcutFocusReason);
+    });
+    focus_vibration_ = make(tr("Go to vi&bration"), QKeySequence(tr("Ctrl+5")), QStringLiteral("focusVibration"), [this] {
+        vibration_->parentWidget()->raise();
+        vibration_->metrics()->setFocus(Qt::ShortcutFocusReason);
+    });
+    focus_profile_ = make(tr("Go to printer pro&file"), QKeySequence(tr("Ctrl+6")), QStringLiteral("focusProfile"), [this] {
+        profile_->parentWidget()->raise();
+        profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
+    });
     shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
                       [this] { show_shortcuts(); });
     about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
@@ -210,7 +242,8 @@ void MainWindow::build_menus() {
     edit->addActions({find_action_, find_next_});
     editor_->print_pane()->addActions({undo_, redo_, find_action_});
     auto* view = menuBar()->addMenu(tr("&View"));
-    view->addActions({focus_print_, focus_braille_, focus_preview_, focus_table_});
+    view->addActions({focus_print_, focus_braille_, focus_preview_, focus_table_, focus_motion_, focus_vibration_,
+                      focus_profile_});
     view->addSeparator();
     for (auto* a : preview_->view_actions())
         if (a != preview_->pdf_action()) view->addAction(a);
@@ -230,6 +263,7 @@ void MainWindow::restore_settings() {
     QSettings s;
     resize(1280, 800);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {660}, Qt::Horizontal);
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("motionDock"))}, {250}, Qt::Vertical);
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
@@ -516,6 +550,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
         return;
     }
     if (busy_) busy_->cancel();
+    if (planning_) planning_->cancel();
     QSettings s;
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
     s.setValue(QStringLiteral("window/state"), saveState());
@@ -532,6 +567,63 @@ void MainWindow::dropEvent(QDropEvent* e) {
     if (urls.isEmpty() || !urls.front().isLocalFile()) return;
     e->acceptProposedAction();
     if (maybe_save()) open_file(urls.front().toLocalFile());
+}
+
+void MainWindow::show_panel(const QString& name) {
+    const auto dock_name = name + QStringLiteral("Dock");
+    if (auto* dock = findChild<QDockWidget*>(dock_name)) {
+        dock->show();
+        dock->raise();
+        // A technician's view gets the room it needs.
+        if (dock->objectName() != QLatin1String("previewDock")) resizeDocks({dock}, {520}, Qt::Vertical);
+    }
+}
+
+QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setAccessibleName(title);
+    dock->setWidget(w);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+// ---- planning for the motion and vibration views ----
+
+namespace {
+constexpr std::size_t kPlannedSheetsKept = 20;  // sheets the views can show in full
+}
+
+void MainWindow::schedule_plan() { plan_timer_.start(); }
+
+void MainWindow::start_plan() {
+    if (!editor_->has_layout()) return;
+    if (planning_) planning_->cancel();  // its result is stale; the watcher is dropped when done
+    auto* watcher = new QFutureWatcher<DocumentPlanPtr>(this);
+    planning_ = watcher;
+    connect(watcher, &QFutureWatcher<DocumentPlanPtr>::finished, this, [this, watcher] {
+        watcher->deleteLater();
+        if (watcher != planning_ || watcher->future().resultCount() == 0) return;
+        planning_ = nullptr;
+        show_plan(watcher->future().result());
+    });
+    watcher->setFuture(plan_document_async(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept));
+}
+
+DocumentPlanPtr MainWindow::plan_now() {
+    auto plan = plan_document(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept);
+    show_plan(plan);
+    return plan;
+}
+
+void MainWindow::show_plan(const DocumentPlanPtr& plan) {
+    if (!plan || plan->cancelled) return;
+    motion_->set_plan(plan);
+    vibration_->set_plan(plan);
+    if (plan->error)
+        statusBar()->showMessage(tr("Cannot plan the job: %1").arg(QString::fromStdString(plan->error->to_string())), 10000);
+    Q_EMIT planned(plan);
 }
 
 // ---- autosave and recovery ----

@@ -10,7 +10,9 @@
 #include <QTimer>
 
 #include "document_loader.hpp"
+#include "motion_model.hpp"
 
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressDialog;
@@ -19,6 +21,9 @@ namespace tactus::gui {
 
 class Announcer;
 class EditorWidget;
+class MotionView;
+class ProfileEditor;
+class VibrationView;
 class FindReplaceDialog;
 class PreviewPanel;
 class TablePicker;
@@ -49,6 +54,13 @@ public:
     [[nodiscard]] PreviewPanel* preview_panel() const { return preview_; }
     [[nodiscard]] Announcer* announcer() const { return announcer_; }
     [[nodiscard]] TablePicker* table_picker() const { return tables_; }
+    [[nodiscard]] MotionView* motion_view() const { return motion_; }
+    [[nodiscard]] VibrationView* vibration_view() const { return vibration_; }
+    [[nodiscard]] ProfileEditor* profile_editor() const { return profile_; }
+    // Plans the document now (tests); normally planning follows edits after a pause.
+    DocumentPlanPtr plan_now();
+    // Brings a dock to the front: "preview", "motion", "vibration", "profile", "printer".
+    void show_panel(const QString& name);
     [[nodiscard]] QString status_text() const;
     [[nodiscard]] QString document_path() const { return path_; }
     [[nodiscard]] QStringList recent_files() const;
@@ -66,6 +78,7 @@ public:
     [[nodiscard]] QString autosave_path() const { return autosave_path_; }
 
 Q_SIGNALS:
+    void planned(const tactus::gui::DocumentPlanPtr& plan);
     void opened(const QString& path);
     void failed(const QString& message);
 
@@ -95,6 +108,10 @@ private:
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
     void remove_autosave();
+    QDockWidget* add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
+    void schedule_plan();
+    void start_plan();
+    void show_plan(const DocumentPlanPtr& plan);
 
     EditorWidget* editor_ = nullptr;
     PreviewPanel* preview_ = nullptr;
@@ -112,6 +129,12 @@ private:
     QProgressDialog* progress_ = nullptr;
 
     QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
+    MotionView* motion_ = nullptr;
+    VibrationView* vibration_ = nullptr;
+    ProfileEditor* profile_ = nullptr;
+    QTimer plan_timer_;
+    QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
+    QAction *focus_motion_, *focus_vibration_, *focus_profile_;
     QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
         *focus_table_, *shortcuts_, *about_;
 };

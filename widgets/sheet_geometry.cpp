@@ -20,8 +20,11 @@ std::vector<DotPoint> dots(const Page& page, bool back, const SheetGeometry& g) 
                 if (!line[c].has_dot(d)) continue;
                 DotPoint p = cell_origin(static_cast<int>(l), static_cast<int>(c), back, g);
                 const double dx = kColumn[d - 1] * g.dot_pitch_mm;
-                p.x_mm += back ? -dx : dx;  // mirrored: dot 4 lies left of dot 1 seen from the front
-                p.y_mm += kRow[d - 1] * g.dot_pitch_mm;
+                const double dy = kRow[d - 1] * g.dot_pitch_mm;
+                // Mirrored: seen from the front, dot 4 lies left of dot 1 (x mirror)
+                // or the rows run upwards (y mirror).
+                p.x_mm += back && g.back_mirror == profile::BackMirror::x ? -dx : dx;
+                p.y_mm += back && g.back_mirror == profile::BackMirror::y ? -dy : dy;
                 p.dot = d;
                 out.push_back(p);
             }
@@ -37,9 +40,33 @@ DotPoint cell_origin(int line, int cell, bool back, const SheetGeometry& g) {
     p.line = line;
     p.cell = cell;
     const double x = g.left_margin_mm + cell * g.cell_pitch_mm;
-    p.x_mm = back ? g.paper_width_mm - x + g.back_offset_x_mm : x;
-    p.y_mm = g.top_margin_mm + line * g.line_pitch_mm + (back ? g.back_offset_y_mm : 0.0);
+    const double y = g.top_margin_mm + line * g.line_pitch_mm;
+    p.x_mm = x;
+    p.y_mm = y;
+    if (back) {
+        if (g.back_mirror == profile::BackMirror::x) p.x_mm = g.paper_width_mm - x;
+        if (g.back_mirror == profile::BackMirror::y) p.y_mm = g.paper_height_mm - y;
+        p.x_mm += g.back_offset_x_mm;
+        p.y_mm += g.back_offset_y_mm;
+    }
     return p;
+}
+
+SheetGeometry sheet_geometry(const profile::PrinterProfile& p) {
+    SheetGeometry g;
+    g.paper_width_mm = p.paper.width_mm;
+    g.paper_height_mm = p.paper.height_mm;
+    g.left_margin_mm = p.paper.margin_left_mm;
+    g.top_margin_mm = p.paper.margin_top_mm;
+    g.dot_pitch_mm = p.geometry.dot_pitch_mm;
+    g.cell_pitch_mm = p.geometry.cell_pitch_mm;
+    g.line_pitch_mm = p.geometry.line_pitch_mm;
+    g.dot_diameter_mm = 0.6 * p.geometry.dot_pitch_mm;
+    g.back_offset_x_mm = p.geometry.back_offset_x_mm;
+    g.back_offset_y_mm = p.geometry.back_offset_y_mm;
+    g.back_mirror = p.geometry.back_mirror;
+    g.min_separation_mm = p.geometry.dot_pitch_mm / 2;
+    return g;
 }
 
 std::vector<DotPoint> front_dots(const Page& page, const SheetGeometry& g) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "layout/page.hpp"
+#include "profile/profile.hpp"
 
 namespace tactus::gui {
 
@@ -22,8 +23,14 @@ struct SheetGeometry {
     double dot_diameter_mm = 1.5;
     double back_offset_x_mm = 1.25;  // back dots shifted from the mirrored grid
     double back_offset_y_mm = 1.25;
-    double min_separation_mm = 1.5;  // a front and a back dot closer than this can tear
+    double min_separation_mm = 1.25;  // a front and a back dot closer than this crush each other
+    profile::BackMirror back_mirror = profile::BackMirror::x;
 };
+
+// The sheet as the printer profile places it (the same formulas as plan::dot_place).
+// A front and a back dot may not come closer than half the dot pitch: the
+// distance the profile's default interpoint offset is designed to keep.
+SheetGeometry sheet_geometry(const profile::PrinterProfile& p);
 
 struct DotPoint {
     double x_mm = 0;

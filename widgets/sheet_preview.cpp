@@ -107,6 +107,7 @@ SheetPreview::SheetPreview(QWidget* parent) : QWidget(parent) {
     setAccessibleDescription(tr("Arrow keys move between cells; Page Up and Page Down change sheet"));
     options_.cursor_line = 0;
     options_.cursor_cell = 0;
+    geometry_ = sheet_geometry(profile::default_profile());
 }
 
 std::size_t SheetPreview::sheet_count() const { return doc_ ? std::max<std::size_t>(1, doc_->sheet_count()) : 0; }

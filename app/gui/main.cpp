@@ -63,9 +63,12 @@ int main(int argc, char** argv) {
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                         QApplication::translate("main", "Save a picture of the window and quit."),
                                         QStringLiteral("png"));
+    const QCommandLineOption panel_name(QStringLiteral("panel"),
+                                   QApplication::translate("main", "Panel to show: preview, motion, vibration, profile, printer."),
+                                   QStringLiteral("name"));
     const QCommandLineOption no_recovery(QStringLiteral("no-recovery"),
                                          QApplication::translate("main", "Do not offer to recover autosaved work."));
-    cli.addOptions({table, side, sheet, language, screenshot, no_recovery});
+    cli.addOptions({table, side, sheet, language, screenshot, panel_name, no_recovery});
     cli.process(app);
 
     const QLocale locale = cli.isSet(language) ? QLocale(cli.value(language)) : QLocale::system();
@@ -84,12 +87,14 @@ int main(int argc, char** argv) {
     window.show();
 
     auto* panel = window.preview_panel();
+    const auto& panel_option = panel_name;
     const auto apply_view = [&] {
         const auto s = cli.value(side);
         if (s == QLatin1String("front")) panel->front_action()->trigger();
         else if (s == QLatin1String("back")) panel->back_action()->trigger();
         else if (s == QLatin1String("both")) panel->both_action()->trigger();
         if (cli.isSet(sheet)) panel->preview()->set_sheet(cli.value(sheet).toULongLong());
+        if (cli.isSet(panel_option)) window.show_panel(cli.value(panel_option));
     };
     const auto shoot = [&] {
         if (!shooting) return;
@@ -99,7 +104,11 @@ int main(int argc, char** argv) {
             QApplication::exit(ok ? 0 : 1);
         });
     };
-    QObject::connect(&window, &MainWindow::opened, &window, [&] {
+    // A picture is taken once the document is open and planned (the motion views need the plan).
+    QObject::connect(&window, &MainWindow::opened, &window, [&] { apply_view(); });
+    QObject::connect(&window, &MainWindow::planned, &window, [&, shot = false]() mutable {
+        if (shot) return;
+        shot = true;
         apply_view();
         shoot();
     });
@@ -112,7 +121,6 @@ int main(int argc, char** argv) {
         window.open_file(files.front());
     } else {
         apply_view();
-        shoot();
         if (!cli.isSet(no_recovery) && !shooting) QTimer::singleShot(0, &window, [&] { window.offer_recovery(); });
     }
     return QApplication::exec();
