@@ -102,7 +102,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         vibration_->set_profile(p);
         schedule_plan();
     });
-    connect(profile_, &ProfileEditor::message, this, [this](const QString& m, bool error) { report(m, error && false); });
+    // Profile problems are spoken and shown in the status bar, not in a box: the technician is typing.
+    connect(profile_, &ProfileEditor::message, this, [this](const QString& m, bool) { report(m, false); });
 
     tables_ = new TablePicker(this);
     auto* bar = addToolBar(tr("Braille"));
