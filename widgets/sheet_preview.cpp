@@ -8,6 +8,7 @@
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QPixmap>
 #include <QRadialGradient>
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,34 @@ Palette palette_for(bool high_contrast) {
 }
 
 QString cell_text(Cell c) { return QString::fromStdString(dot_numbers(c)); }
+
+// One dot drawn once per size and look, then blitted: a sheet holds thousands of
+// dots and the preview repaints on every keystroke.
+QPixmap dot_sprite(double radius, bool raised, const Palette& pal, bool high_contrast) {
+    const int size = static_cast<int>(std::ceil(2 * radius + 4));
+    QPixmap pm(size, size);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QPointF c(size / 2.0, size / 2.0);
+    if (raised) {
+        p.setPen(Qt::NoPen);
+        if (high_contrast) {
+            p.setBrush(pal.front);
+        } else {
+            QRadialGradient grad(c - QPointF(radius / 3, radius / 3), radius * 1.2);  // lit from the top left
+            grad.setColorAt(0, QColor(170, 170, 170));
+            grad.setColorAt(1, pal.front);
+            p.setBrush(grad);
+        }
+        p.drawEllipse(c, radius, radius);
+    } else {
+        p.setPen(QPen(pal.back, std::max(1.0, radius * 0.35)));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(c, radius * 0.9, radius * 0.9);
+    }
+    return pm;
+}
 
 }  // namespace
 
@@ -54,29 +83,18 @@ void paint_sheet(QPainter& p, const Sheet& sheet, const SheetGeometry& g, const 
                    .arg(sheet.number)
                    .arg(side, label(sheet.front), label(sheet.back)));
 
+    const auto blit = [&p](const QPixmap& sprite, double x, double y) {
+        p.drawPixmap(QPointF(x - sprite.width() / 2.0, y - sprite.height() / 2.0), sprite);
+    };
     if (o.mode == SideMode::both && sheet.back) {
         // Recessed: the back's dots are pits seen from the front, drawn hollow.
-        p.setPen(QPen(pal.back, std::max(1.0, 0.3 * s)));
-        p.setBrush(Qt::NoBrush);
-        for (const auto& d : back_dots(*sheet.back, g))
-            p.drawEllipse(QPointF(d.x_mm * s, d.y_mm * s), r * 0.9, r * 0.9);
+        const auto pit = dot_sprite(r, false, pal, o.high_contrast);
+        for (const auto& d : back_dots(*sheet.back, g)) blit(pit, d.x_mm * s, d.y_mm * s);
     }
     const Page* shown = o.mode == SideMode::back ? sheet.back : sheet.front;
     if (shown) {
-        p.setPen(Qt::NoPen);
-        for (const auto& d : front_dots(*shown, g)) {
-            const QPointF c(d.x_mm * s, d.y_mm * s);
-            if (o.high_contrast) {
-                p.setBrush(pal.front);
-            } else {
-                // Raised: lit from the top left.
-                QRadialGradient grad(c - QPointF(r / 3, r / 3), r * 1.2);
-                grad.setColorAt(0, QColor(170, 170, 170));
-                grad.setColorAt(1, pal.front);
-                p.setBrush(grad);
-            }
-            p.drawEllipse(c, r, r);
-        }
+        const auto bump = dot_sprite(r, true, pal, o.high_contrast);
+        for (const auto& d : front_dots(*shown, g)) blit(bump, d.x_mm * s, d.y_mm * s);
     }
     if (o.mode == SideMode::both) {
         p.setPen(QPen(pal.conflict, std::max(1.5, 0.4 * s)));
