@@ -88,12 +88,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     motion_ = new MotionView(this);
     vibration_ = new VibrationView(this);
     profile_ = new ProfileEditor(this);
-    auto* motion_dock = add_dock(tr("Motion"), QStringLiteral("motionDock"), motion_, Qt::BottomDockWidgetArea);
-    auto* vibration_dock = add_dock(tr("Vibration"), QStringLiteral("vibrationDock"), vibration_, Qt::BottomDockWidgetArea);
-    auto* profile_dock = add_dock(tr("Printer profile"), QStringLiteral("profileDock"), profile_, Qt::BottomDockWidgetArea);
+    // The technicians' views share the right-hand area with the preview, as tabs:
+    // a teacher sees print, braille and the sheet; one key brings up the others.
+    auto* preview_dock = findChild<QDockWidget*>(QStringLiteral("previewDock"));
+    auto* motion_dock = add_dock(tr("Motion"), QStringLiteral("motionDock"), motion_, Qt::RightDockWidgetArea);
+    auto* vibration_dock = add_dock(tr("Vibration"), QStringLiteral("vibrationDock"), vibration_, Qt::RightDockWidgetArea);
+    auto* profile_dock = add_dock(tr("Printer profile"), QStringLiteral("profileDock"), profile_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(preview_dock, motion_dock);
     tabifyDockWidget(motion_dock, vibration_dock);
     tabifyDockWidget(vibration_dock, profile_dock);
-    motion_dock->raise();
+    preview_dock->raise();
     plan_timer_.setSingleShot(true);
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
     connect(&plan_timer_, &QTimer::timeout, this, &MainWindow::start_plan);
@@ -205,21 +209,24 @@ void MainWindow::build_actions() {
     focus_braille_ = make(tr("Go to &braille"), QKeySequence(tr("Ctrl+2")), QStringLiteral("focusBraille"),
                           [this] { editor_->braille_pane()->setFocus(Qt::ShortcutFocusReason); });
     focus_preview_ = make(tr("Go to pre&view"), QKeySequence(tr("Ctrl+3")), QStringLiteral("focusPreview"),
-                          [this] { preview_->preview()->setFocus(Qt::ShortcutFocusReason); });
+                          [this] {
+                              show_panel(QStringLiteral("preview"));
+                              preview_->preview()->setFocus(Qt::ShortcutFocusReason);
+                          });
     focus_table_ = make(tr("Choose braille &table"), QKeySequence(tr("Ctrl+T")), QStringLiteral("focusTable"), [this] {
         tables_->setFocus(Qt::ShortcutFocusReason);
         tables_->showPopup();
     });
     focus_motion_ = make(tr("Go to &motion"), QKeySequence(tr("Ctrl+4")), QStringLiteral("focusMotion"), [this] {
-        motion_->parentWidget()->raise();
+        show_panel(QStringLiteral("motion"));
         if (auto* first = motion_->findChild<QSpinBox*>()) first->setFocus(Qt::ShortcutFocusReason);
     });
     focus_vibration_ = make(tr("Go to vi&bration"), QKeySequence(tr("Ctrl+5")), QStringLiteral("focusVibration"), [this] {
-        vibration_->parentWidget()->raise();
+        show_panel(QStringLiteral("vibration"));
         vibration_->metrics()->setFocus(Qt::ShortcutFocusReason);
     });
     focus_profile_ = make(tr("Go to printer pro&file"), QKeySequence(tr("Ctrl+6")), QStringLiteral("focusProfile"), [this] {
-        profile_->parentWidget()->raise();
+        show_panel(QStringLiteral("profile"));
         profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
     });
     shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
@@ -263,8 +270,7 @@ QList<QAction*> MainWindow::all_actions() const {
 void MainWindow::restore_settings() {
     QSettings s;
     resize(1280, 800);
-    resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {660}, Qt::Horizontal);
-    resizeDocks({findChild<QDockWidget*>(QStringLiteral("motionDock"))}, {250}, Qt::Vertical);
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {700}, Qt::Horizontal);
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
@@ -575,8 +581,6 @@ void MainWindow::show_panel(const QString& name) {
     if (auto* dock = findChild<QDockWidget*>(dock_name)) {
         dock->show();
         dock->raise();
-        // A technician's view gets the room it needs.
-        if (dock->objectName() != QLatin1String("previewDock")) resizeDocks({dock}, {520}, Qt::Vertical);
     }
 }
 

@@ -200,7 +200,7 @@ void MotionView::refresh() {
     add_row(tr("Planned (auto-tuned)"), pass.duration_s);
     for (const auto& [shape, name, colour] : shapes) {
         const auto curves = pass_curves_with(pass, plan_->profile, shape);
-        add_row(name, curves.duration_s);
+        add_row(name, curves.duration_s + pass.feed.duration_s);  // the paper feed comes with every pass
         if (compare_->isChecked()) {
             auto* s = series_of(curves, q, name);
             s->setPen(QPen(colour, 1.5, Qt::DashLine));
