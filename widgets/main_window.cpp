@@ -21,6 +21,7 @@
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QSaveFile>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSpinBox>
@@ -37,6 +38,10 @@
 #include "export/export.hpp"
 #include "find_replace.hpp"
 #include "motion_view.hpp"
+#if __has_include("link/link.hpp")
+#define TACTUS_GUI_HAS_PRINTER 1
+#include "printer_panel.hpp"
+#endif
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
@@ -97,6 +102,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(preview_dock, motion_dock);
     tabifyDockWidget(motion_dock, vibration_dock);
     tabifyDockWidget(vibration_dock, profile_dock);
+#ifdef TACTUS_GUI_HAS_PRINTER
+    printer_ = new PrinterPanel(this);
+    auto* printer_dock = add_dock(tr("Printer"), QStringLiteral("printerDock"), printer_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(profile_dock, printer_dock);
+    connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
+#endif
     preview_dock->raise();
     plan_timer_.setSingleShot(true);
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
@@ -229,6 +240,14 @@ void MainWindow::build_actions() {
         show_panel(QStringLiteral("profile"));
         profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
     });
+#ifdef TACTUS_GUI_HAS_PRINTER
+    focus_printer_ = make(tr("Go to p&rinter"), QKeySequence(tr("Ctrl+7")), QStringLiteral("focusPrinter"), [this] {
+        show_panel(QStringLiteral("printer"));
+        printer_->setFocus(Qt::ShortcutFocusReason);
+        if (auto* first = printer_->findChild<QComboBox*>()) first->setFocus(Qt::ShortcutFocusReason);
+    });
+    emboss_ = make(tr("&Emboss"), QKeySequence(tr("Ctrl+P")), QStringLiteral("fileEmboss"), [this] { emboss(); });
+#endif
     shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
                       [this] { show_shortcuts(); });
     about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
@@ -242,6 +261,7 @@ void MainWindow::build_menus() {
     recent_menu_->setObjectName(QStringLiteral("recentMenu"));
     file->addSeparator();
     file->addActions({save_, save_as_, export_brf_, export_pef_, preview_->pdf_action()});
+    if (emboss_) file->addAction(emboss_);
     file->addSeparator();
     file->addAction(quit_);
     auto* edit = menuBar()->addMenu(tr("&Edit"));
@@ -252,6 +272,7 @@ void MainWindow::build_menus() {
     auto* view = menuBar()->addMenu(tr("&View"));
     view->addActions({focus_print_, focus_braille_, focus_preview_, focus_table_, focus_motion_, focus_vibration_,
                       focus_profile_});
+    if (focus_printer_) view->addAction(focus_printer_);
     view->addSeparator();
     for (auto* a : preview_->view_actions())
         if (a != preview_->pdf_action()) view->addAction(a);
@@ -582,6 +603,18 @@ void MainWindow::show_panel(const QString& name) {
         dock->show();
         dock->raise();
     }
+}
+
+bool MainWindow::emboss() {
+#ifdef TACTUS_GUI_HAS_PRINTER
+    if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) return false;
+    const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
+    printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
+    return true;
+#else
+    report(tr("This build of Tactus has no embosser link"), true);
+    return false;
+#endif
 }
 
 QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {

@@ -22,6 +22,7 @@ namespace tactus::gui {
 class Announcer;
 class EditorWidget;
 class MotionView;
+class PrinterPanel;
 class ProfileEditor;
 class VibrationView;
 class FindReplaceDialog;
@@ -57,6 +58,10 @@ public:
     [[nodiscard]] MotionView* motion_view() const { return motion_; }
     [[nodiscard]] VibrationView* vibration_view() const { return vibration_; }
     [[nodiscard]] ProfileEditor* profile_editor() const { return profile_; }
+    // Null when this build has no link stage.
+    [[nodiscard]] PrinterPanel* printer_panel() const { return printer_; }
+    // Queues the document on the printer panel (connecting to the chosen embosser).
+    bool emboss();
     // Plans the document now (tests); normally planning follows edits after a pause.
     DocumentPlanPtr plan_now();
     // Brings a dock to the front: "preview", "motion", "vibration", "profile", "printer".
@@ -132,9 +137,10 @@ private:
     MotionView* motion_ = nullptr;
     VibrationView* vibration_ = nullptr;
     ProfileEditor* profile_ = nullptr;
+    PrinterPanel* printer_ = nullptr;
     QTimer plan_timer_;
     QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
-    QAction *focus_motion_, *focus_vibration_, *focus_profile_;
+    QAction *focus_motion_, *focus_vibration_, *focus_profile_, *focus_printer_ = nullptr, *emboss_ = nullptr;
     QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
         *focus_table_, *shortcuts_, *about_;
 };
