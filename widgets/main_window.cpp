@@ -107,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* printer_dock = add_dock(tr("Printer"), QStringLiteral("printerDock"), printer_, Qt::RightDockWidgetArea);
     tabifyDockWidget(profile_dock, printer_dock);
     connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
+    connect(printer_, &PrinterPanel::job_finished, this,
+            [this](int, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
 #endif
     preview_dock->raise();
     plan_timer_.setSingleShot(true);

@@ -84,6 +84,7 @@ public:
 
 Q_SIGNALS:
     void planned(const tactus::gui::DocumentPlanPtr& plan);
+    void job_finished(bool completed, const QString& text);
     void opened(const QString& path);
     void failed(const QString& message);
 

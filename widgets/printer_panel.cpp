@@ -450,7 +450,11 @@ void PrinterPanel::resume_from_page(int page) {
         Q_EMIT message(tr("Page %1 is not in %2 (it has %3 pages)").arg(page).arg(j->name).arg(j->pages->pages.size()), true);
         return;
     }
-    enqueue(j->name, *j->pages, j->profile, sheet);
+    // Copies: enqueue grows jobs_, which moves the job `j` points at.
+    const auto name = j->name;
+    const auto pages = j->pages;
+    const auto prof = j->profile;
+    enqueue(name, *pages, prof, sheet);
 }
 
 }  // namespace tactus::gui

@@ -66,9 +66,11 @@ int main(int argc, char** argv) {
     const QCommandLineOption panel_name(QStringLiteral("panel"),
                                    QApplication::translate("main", "Panel to show: preview, motion, vibration, profile, printer."),
                                    QStringLiteral("name"));
+    const QCommandLineOption emboss_option(QStringLiteral("emboss"),
+                                           QApplication::translate("main", "Emboss the file on the last used embosser once it is open."));
     const QCommandLineOption no_recovery(QStringLiteral("no-recovery"),
                                          QApplication::translate("main", "Do not offer to recover autosaved work."));
-    cli.addOptions({table, side, sheet, language, screenshot, panel_name, no_recovery});
+    cli.addOptions({table, side, sheet, language, screenshot, panel_name, emboss_option, no_recovery});
     cli.process(app);
 
     const QLocale locale = cli.isSet(language) ? QLocale(cli.value(language)) : QLocale::system();
@@ -105,12 +107,20 @@ int main(int argc, char** argv) {
         });
     };
     // A picture is taken once the document is open and planned (the motion views need the plan).
-    QObject::connect(&window, &MainWindow::opened, &window, [&] { apply_view(); });
+    const bool embossing = cli.isSet(emboss_option);
+    QObject::connect(&window, &MainWindow::opened, &window, [&] {
+        apply_view();
+        if (embossing && !window.emboss()) QApplication::exit(4);
+    });
     QObject::connect(&window, &MainWindow::planned, &window, [&, shot = false]() mutable {
-        if (shot) return;
+        if (shot || embossing) return;
         shot = true;
         apply_view();
         shoot();
+    });
+    // With --emboss the picture waits for the job (the printer panel has something to show).
+    QObject::connect(&window, &MainWindow::job_finished, &window, [&] {
+        if (embossing) shoot();
     });
     QObject::connect(&window, &MainWindow::failed, &window, [&](const QString& message) {
         std::fprintf(stderr, "tactus: %s\n", qPrintable(message));

@@ -5,7 +5,11 @@ Opens a sample through the Open dialog, switches to uncontracted braille with th
 table picker, previews the back side, exports BRF, and checks the result against
 `tactus-cli layout` and what the screen reader is told (AT-SPI).
 
-usage: keyboard_walkthrough.py TACTUS TACTUS_CLI SAMPLE [SCREENSHOT_DIR]
+With --emboss (builds that have the link stage) it then embosses to the built-in
+simulator with Ctrl+P and waits for the app to report every strike checked against
+the plan.
+
+usage: keyboard_walkthrough.py [--emboss] TACTUS TACTUS_CLI SAMPLE [SCREENSHOT_DIR]
 """
 import filecmp
 import os
@@ -48,8 +52,11 @@ def announcement(app):
 
 
 def main():
-    tactus, cli, sample = (os.path.abspath(a) for a in sys.argv[1:4])
-    shots = sys.argv[4] if len(sys.argv) > 4 else None
+    args = sys.argv[1:]
+    emboss = "--emboss" in args
+    args = [a for a in args if a != "--emboss"]
+    tactus, cli, sample = (os.path.abspath(a) for a in args[:3])
+    shots = args[3] if len(args) > 3 else None
     work = os.environ.get("TACTUS_WORK", "/tmp")
     brf = os.path.join(work, "walkthrough.brf")
     expected = os.path.join(work, "expected.brf")
@@ -105,6 +112,17 @@ def main():
         key("Return")
         wait_for(lambda: os.path.exists(brf) and "Exported" in announcement(app), "the BRF export", 30)
         print("export:", announcement(app))
+
+        # 5. Emboss to the simulator (Ctrl+P); the app checks the simulator's strikes.
+        if emboss:
+            focus_main()
+            key("ctrl+p")
+            wait_for(lambda: "Embossed" in announcement(app) or "stopped" in announcement(app),
+                     "the job to finish", 120)
+            said = announcement(app)
+            print("emboss:", said)
+            if "strikes checked against the plan" not in said:
+                raise SystemExit(f"FAIL: embossing did not check out: {said!r}")
     finally:
         proc.terminate()
         try:
@@ -117,7 +135,8 @@ def main():
     if not filecmp.cmp(brf, expected, shallow=False):
         print("FAIL: the exported BRF differs from tactus-cli layout")
         return 1
-    print("PASS: keyboard-only open, table, back side and export; BRF equals tactus-cli's")
+    print("PASS: keyboard-only open, table, back side and export" + (", emboss" if emboss else "")
+          + "; BRF equals tactus-cli's")
     return 0
 
 
