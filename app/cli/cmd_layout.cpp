@@ -6,7 +6,6 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "common/file_io.hpp"
 #include "export/export.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
@@ -69,12 +68,11 @@ void run_layout(const LayoutCommandArgs& a) {
     PefMetadata meta;
     meta.title = std::filesystem::path(a.layout.file).stem().string();
     meta.date = today();
-    const auto bytes = require(export_document(doc, format, meta));
     if (a.output.empty() || a.output == "-") {
-        std::cout << bytes;
+        require(write_document(doc, format, meta, std::cout));
         return;
     }
-    require(write_file_atomic(a.output, bytes), exit_failure);
+    require(export_to_file(doc, format, meta, a.output), exit_failure);
     std::cerr << "wrote " << a.output << ": " << doc.pages.size() << " pages on "
               << doc.sheet_count() << " sheets (" << doc.geometry.cells_per_line << "x"
               << doc.geometry.lines_per_page << ", "

@@ -16,6 +16,10 @@
 namespace tactus::cli {
 namespace {
 
+// Bytes of one step segment on the wire at most: interval (Q16.16, 4), count (2),
+// add (Q16.16, 4). The protocol varint-encodes them, so this is an upper bound.
+constexpr std::size_t kSegmentBytes = 10;
+
 struct PlanArgs {
     LayoutArgs layout;
     std::string profile;
@@ -37,7 +41,7 @@ nlohmann::json pass_json(const plan::Pass& p) {
             {"lower_bound_s", p.lower_bound_s},
             {"feed_steps", p.feed.steps},
             {"segments", p.segments},
-            {"schedule_bytes", p.segments * 6},  // interval, count, add: three 16-bit words
+            {"schedule_bytes", p.segments * kSegmentBytes},
             {"worst_residual_um", worst}};
 }
 
@@ -102,7 +106,7 @@ void run_plan(const PlanArgs& a) {
                               {"tolerance_um", prof.vibration.tolerance_um},
                               {"strikes_over_tolerance", t.strikes_over_tolerance},
                               {"segments", t.segments},
-                              {"schedule_bytes", t.segments * 6}}
+                              {"schedule_bytes", t.segments * kSegmentBytes}}
                    .dump()
             << ",\"tuning\":" << tuning_json(planner.tuner()).dump() << "}\n";
         return;
@@ -123,7 +127,7 @@ void run_plan(const PlanArgs& a) {
     if (t.strikes_over_tolerance)
         std::printf("WARNING:          %zu strikes over tolerance (profile and shaper fixed by the profile)\n",
                     t.strikes_over_tolerance);
-    std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, t.segments * 6);
+    std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, t.segments * kSegmentBytes);
     std::printf("moves chosen (carriage steps: profile/shaper, speed, settle, duration, worst residual):\n");
     for (const auto& [steps, m] : planner.tuner().decisions()) {
         const auto& c = m.choice;

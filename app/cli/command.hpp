@@ -43,5 +43,8 @@ void add_tables_command(CLI::App& app);
 void add_plan_command(CLI::App& app);
 void add_profile_command(CLI::App& app);
 void add_vibration_command(CLI::App& app);
+void add_sim_command(CLI::App& app);
+void add_ports_command(CLI::App& app);
+void add_emboss_command(CLI::App& app);
 
 }  // namespace tactus::cli

@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
     add_plan_command(app);
     add_profile_command(app);
     add_vibration_command(app);
+    add_sim_command(app);
+    add_ports_command(app);
+    add_emboss_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

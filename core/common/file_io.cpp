@@ -63,4 +63,34 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::string_vi
     return {};
 }
 
+Result<void> write_file_atomic(const std::filesystem::path& path,
+                               const std::function<Result<void>(std::ostream&)>& produce) {
+    const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::random_device rd;
+    const auto tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
+    auto discard = [&](Error e) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        return std::unexpected(std::move(e));
+    };
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) return fail(std::string("cannot create: ") + std::strerror(errno), tmp.string());
+        if (auto ok = produce(out); !ok) return discard(ok.error());
+        out.flush();
+        if (!out) return discard(Error{"write failed (disk full?)", path.string()});
+    }
+    // Make the data durable before the rename makes it visible.
+    const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || ::fsync(fd) != 0) {
+        const std::string why = std::strerror(errno);
+        if (fd >= 0) ::close(fd);
+        return discard(Error{"cannot flush to disk: " + why, path.string()});
+    }
+    ::close(fd);
+    if (::rename(tmp.c_str(), path.c_str()) != 0)
+        return discard(Error{std::string("cannot replace file: ") + std::strerror(errno), path.string()});
+    return {};
+}
+
 }  // namespace tactus

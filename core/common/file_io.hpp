@@ -2,6 +2,8 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -17,5 +19,10 @@ Result<std::string> read_file(const std::filesystem::path& path,
 // Writes atomically: a temporary file in the same directory, fsync, rename.
 // A crash leaves either the old file or the new one, never half of either.
 Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
+
+// The same for output too big to hold in memory: `produce` writes into a stream
+// on the temporary file; its error (or a write error) leaves the old file alone.
+Result<void> write_file_atomic(const std::filesystem::path& path,
+                               const std::function<Result<void>(std::ostream&)>& produce);
 
 }  // namespace tactus

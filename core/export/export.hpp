@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Paged braille to the formats embossers and braille readers take.
+#include <filesystem>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -33,5 +35,15 @@ std::string to_unicode(const PagedDocument& doc);
 
 Result<std::string> export_document(const PagedDocument& doc, ExportFormat format,
                                     const PefMetadata& meta = {});
+
+// Streaming forms: a book is written without holding its output in memory.
+Result<void> write_brf(const PagedDocument& doc, std::ostream& out);
+Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::ostream& out);
+void write_unicode(const PagedDocument& doc, std::ostream& out);
+Result<void> write_document(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+                            std::ostream& out);
+// Atomically (temporary file, fsync, rename).
+Result<void> export_to_file(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+                            const std::filesystem::path& path);
 
 }  // namespace tactus

@@ -32,11 +32,11 @@ std::string content_id(const PagedDocument& doc) {
 
 }  // namespace
 
-Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
+Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::ostream& out) {
     // The head carries user text (title), so pugixml writes and escapes it. The
     // body is only braille code points (U+2800..U+28FF), which never need
-    // escaping; it is streamed straight into the output so a book-length PEF
-    // costs its own size in memory, not a DOM of every row.
+    // escaping; it is streamed row by row, so a book-length PEF is never held in
+    // memory, neither as a DOM nor as one string.
     pugi::xml_document head_xml;
     auto head = head_xml.append_child("head");
     auto m = head.append_child("meta");
@@ -52,18 +52,14 @@ Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
                   pugi::encoding_utf8);
 
     const auto& g = doc.geometry;
-    std::size_t cells = 0;
-    for (const auto& page : doc.pages)
-        for (const auto& line : page.lines) cells += line.size();
-    std::string out;
-    out.reserve(512 + cells * 3 + doc.pages.size() * (30 + 20 * static_cast<std::size_t>(g.lines_per_page)));
-    out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\">\n";
     std::istringstream head_lines(head_text.str());
-    for (std::string line; std::getline(head_lines, line);) out += "  " + line + "\n";
-    out += "  <body>\n    <volume cols=\"" + std::to_string(g.cells_per_line) + "\" rows=\"" +
-           std::to_string(g.lines_per_page) + "\" rowgap=\"" + (g.eight_dot ? "1" : "0") +
-           "\" duplex=\"" + (g.interpoint ? "true" : "false") + "\">\n      <section>\n";
+    for (std::string line; std::getline(head_lines, line);) out << "  " << line << '\n';
+    out << "  <body>\n    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page
+        << "\" rowgap=\"" << (g.eight_dot ? 1 : 0) << "\" duplex=\""
+        << (g.interpoint ? "true" : "false") << "\">\n      <section>\n";
+    std::string row;
     for (const auto& page : doc.pages) {
         if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
             return fail("page has more rows than the volume allows",
@@ -71,27 +67,34 @@ Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
         std::size_t used = page.lines.size();
         while (used > 0 && page.lines[used - 1].empty()) --used;
         if (used == 0) {
-            out += "        <page />\n";
+            out << "        <page />\n";
             continue;
         }
-        out += "        <page>\n";
+        out << "        <page>\n";
         for (std::size_t i = 0; i < used; ++i) {
             if (page.lines[i].size() > static_cast<std::size_t>(g.cells_per_line))
                 return fail("row longer than cols", "page " + std::to_string(page.braille_number) +
                                                         " row " + std::to_string(i + 1));
             if (page.lines[i].empty()) {
-                out += "          <row />\n";
+                out << "          <row />\n";
                 continue;
             }
-            out += "          <row>";
-            for (Cell c : page.lines[i]) append_utf8(out, c.unicode());
-            out += "</row>\n";
+            row = "          <row>";
+            for (Cell c : page.lines[i]) append_utf8(row, c.unicode());
+            row += "</row>\n";
+            out << row;
         }
-        out += "        </page>\n";
+        out << "        </page>\n";
     }
-    if (doc.pages.empty()) out += "        <page />\n";  // a section needs a page
-    out += "      </section>\n    </volume>\n  </body>\n</pef>\n";
-    return out;
+    if (doc.pages.empty()) out << "        <page />\n";  // a section needs a page
+    out << "      </section>\n    </volume>\n  </body>\n</pef>\n";
+    return {};
+}
+
+Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
+    std::ostringstream out;
+    if (auto ok = write_pef(doc, meta, out); !ok) return std::unexpected(ok.error());
+    return std::move(out).str();
 }
 
 }  // namespace tactus

@@ -10,6 +10,7 @@
 
 #include "common/utf8.hpp"
 #include "layout/paginator.hpp"
+#include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
@@ -75,6 +76,22 @@ Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& o
         return numbers.emplace(n, std::move(*cells)).first->second;
     };
     Paginator paginator(options.layout, number_cells);
+
+    const unsigned workers = options.translation_workers != 0
+                                 ? options.translation_workers
+                                 : TranslationWorkers::suggested_workers(document);
+    if (workers > 1) {
+        auto pool = TranslationWorkers::start(document, *translator, workers);
+        if (!pool) return std::unexpected(pool.error());
+        for (;;) {
+            auto block = pool->next();
+            if (!block) return std::unexpected(block.error());
+            if (!*block) break;
+            paginator.add(**block);
+        }
+        if (number_error) return std::unexpected(*number_error);
+        return std::move(paginator).finish();
+    }
 
     BlockQueue queue;
     std::jthread producer([&] {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The front half of the pipeline in one call: import -> translate -> layout.
-// Translation (liblouis, one thread at a time) and layout run concurrently:
-// a translator thread hands finished blocks to the paginator on the caller's
-// thread through a bounded queue.
+// Translation (liblouis, one thread at a time) and layout run concurrently: a
+// translator thread hands finished blocks to the paginator on the caller's thread
+// through a bounded queue; a big document is translated by several forked
+// worker processes instead (pipeline/translation_workers.hpp).
 #include <filesystem>
 #include <string>
 
@@ -20,6 +21,9 @@ struct PipelineOptions {
     ImportOptions import;
     std::string tables = kDefaultTable;
     LayoutOptions layout;
+    // Translation processes for big documents: 0 picks by size and cores
+    // (TranslationWorkers::suggested_workers), 1 keeps everything in-process.
+    unsigned translation_workers = 0;
 };
 
 Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& options);

@@ -15,14 +15,24 @@ enum class Hammer : std::uint8_t { convex, concave };
 
 // Klipper-style step compression: `count` steps, the first `interval` timer ticks
 // after the previous step, each following interval `add` ticks longer (negative:
-// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz, so the
-// controller only adds 16-bit numbers.
+// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz.
+//
+// interval and add are fixed point with 16 fractional bits (Q16.16): a carriage
+// cruising at 38.4 ticks per step, or an acceleration ramp whose interval shrinks
+// by 0.3 ticks per step, is then one segment instead of one every few steps
+// (whole-tick intervals made the schedule larger than a 115200-baud link can
+// carry). The controller still only adds: per step it adds the 16-bit fraction of
+// `interval` into a fraction accumulator that starts at 0 with each segment, loads
+// its timer with the integer part plus the carry, and adds `add` (32-bit) to
+// `interval`. expand_steps() in plan/steps.hpp is that arithmetic, exactly.
 struct StepSegment {
-    std::uint16_t interval = 0;
+    std::uint32_t interval_q16 = 0;  // ticks << 16; integer part 1..65535
     std::uint16_t count = 0;
-    std::int16_t add = 0;
+    std::int32_t add_q16 = 0;  // ticks << 16 added to the interval after each step
     bool operator==(const StepSegment&) const = default;
 };
+
+inline constexpr int kStepFractionBits = 16;
 
 inline constexpr double kTickHz = 11'059'200.0 / 12.0;
 

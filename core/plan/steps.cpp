@@ -41,46 +41,61 @@ std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps
 
 namespace {
 
-constexpr std::int64_t kMaxInterval = std::numeric_limits<std::uint16_t>::max();
+constexpr std::int64_t kOne = std::int64_t{1} << kStepFractionBits;
+constexpr std::int64_t kMaxIntervalQ = (std::int64_t{0xFFFF} << kStepFractionBits) | 0xFFFF;
+
+// Firing times relative to the segment start, computed as the controller does.
+template <typename Fn>
+bool replay(std::int64_t iv, std::int64_t add, std::size_t n, Fn&& on_step) {
+    std::int64_t now = 0;   // whole ticks
+    std::int64_t frac = 0;  // fraction accumulator, < kOne
+    for (std::size_t k = 0; k < n; ++k) {
+        if (iv < kOne || iv > kMaxIntervalQ) return false;
+        frac += iv & (kOne - 1);
+        now += (iv >> kStepFractionBits) + (frac >> kStepFractionBits);
+        frac &= kOne - 1;
+        if (!on_step(k, now)) return false;
+        iv += add;
+    }
+    return true;
+}
 
 struct Fit {
     std::int64_t interval = 0;
     std::int64_t add = 0;
 };
 
-// Can steps [first, first+n) be one segment starting after `prev`? Tries every
-// integer interval allowed by the first step and every integer add allowed by
-// the last; the rest are checked one by one. Exhaustive over integers, so
-// feasibility is monotone in n (more steps only add constraints).
+// Can steps [first, first+n) be one segment starting at integer tick `prev`?
+// The reconstruction x_k = k*iv + add*k(k-1)/2 is fitted by least squares to the
+// ideal times, `add` quantised to Q16.16 first (over hundreds of steps one unit of
+// its last bit moves the last step by several ticks) and `iv` refitted for it;
+// then the candidate is replayed with the controller's exact arithmetic. The fit
+// aims at the ideal times, then at the middle of each step's window (the
+// controller truncates, so that is ideal + tol/2).
 bool fits(std::span<const double> t, std::size_t first, std::size_t n, std::int64_t prev,
           double tol, Fit& out) {
-    const double t1 = t[first] - static_cast<double>(prev);
-    const auto i_lo = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(t1 - tol)));
-    const auto i_hi = std::min<std::int64_t>(kMaxInterval, static_cast<std::int64_t>(std::floor(t1 + tol)));
-    const double tn = t[first + n - 1] - static_cast<double>(prev);
-    const double tri = static_cast<double>(n) * static_cast<double>(n - 1) / 2.0;
-    for (std::int64_t iv = i_lo; iv <= i_hi; ++iv) {
-        std::int64_t a_lo = 0, a_hi = 0;
-        if (n > 1) {
-            const double base = static_cast<double>(n) * static_cast<double>(iv);
-            a_lo = static_cast<std::int64_t>(std::ceil((tn - tol - base) / tri));
-            a_hi = static_cast<std::int64_t>(std::floor((tn + tol - base) / tri));
-            a_lo = std::max<std::int64_t>(a_lo, std::numeric_limits<std::int16_t>::min());
-            a_hi = std::min<std::int64_t>(a_hi, std::numeric_limits<std::int16_t>::max());
+    const auto one = static_cast<double>(kOne);
+    for (const double offset : {0.0, tol / 2}) {
+        double saa = 0, sab = 0, sbb = 0, say = 0, sby = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double k = static_cast<double>(i + 1);
+            const double a = k, b = k * (k - 1) / 2;
+            const double y = t[first + i] - static_cast<double>(prev) + offset;
+            saa += a * a, sab += a * b, sbb += b * b, say += a * y, sby += b * y;
         }
-        for (std::int64_t add = a_lo; add <= a_hi; ++add) {
-            // Every interval of the segment must be a positive 16-bit count.
-            const std::int64_t last_iv = iv + add * static_cast<std::int64_t>(n - 1);
-            if (last_iv < 1 || last_iv > kMaxInterval) continue;
-            bool ok = true;
-            std::int64_t r = prev, step_iv = iv;
-            for (std::size_t k = 0; k < n && ok; ++k) {
-                r += step_iv;
-                step_iv += add;
-                ok = std::fabs(static_cast<double>(r) - t[first + k]) <= tol;
-            }
+        const double det = saa * sbb - sab * sab;
+        const double add = (n == 1 || det <= 0) ? 0.0 : (saa * sby - sab * say) / det;
+        const double add_scaled = add * one;
+        if (std::fabs(add_scaled) > static_cast<double>(std::numeric_limits<std::int32_t>::max())) continue;
+        const auto add_round = static_cast<std::int64_t>(std::llround(add_scaled));
+        for (const std::int64_t add_q : {add_round, add_round - 1, add_round + 1}) {
+            const double iv = (say - static_cast<double>(add_q) / one * sab) / saa;
+            const auto iv_q = static_cast<std::int64_t>(std::llround(iv * one));
+            const bool ok = replay(iv_q, add_q, n, [&](std::size_t k, std::int64_t now) {
+                return std::fabs(static_cast<double>(prev + now) - t[first + k]) <= tol;
+            });
             if (ok) {
-                out = {iv, add};
+                out = {iv_q, add_q};
                 return true;
             }
         }
@@ -103,7 +118,7 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
                             "16-bit timer can count (65535)",
                         "steps");
         // Grow the segment by doubling, then bisect the first n that no longer fits.
-        const std::size_t left = std::min<std::size_t>(t.size() - first, kMaxInterval);
+        const std::size_t left = std::min<std::size_t>(t.size() - first, 0xFFFF);
         std::size_t good = 1, bad = 0;
         Fit best = fit;
         for (std::size_t n = 2;; n *= 2) {
@@ -124,12 +139,16 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
             if (fits(t, first, mid, prev, tol, fit)) good = mid, best = fit;
             else bad = mid;
         }
-        out.push_back(StepSegment{static_cast<std::uint16_t>(best.interval),
+        out.push_back(StepSegment{static_cast<std::uint32_t>(best.interval),
                                   static_cast<std::uint16_t>(good),
-                                  static_cast<std::int16_t>(best.add)});
-        // Continue from the reconstructed (integer) time so errors never accumulate.
-        const auto n = static_cast<std::int64_t>(good);
-        prev += n * best.interval + best.add * n * (n - 1) / 2;
+                                  static_cast<std::int32_t>(best.add)});
+        // The next segment starts from the integer time of this one's last step.
+        std::int64_t last = 0;
+        replay(best.interval, best.add, good, [&](std::size_t, std::int64_t now) {
+            last = now;
+            return true;
+        });
+        prev += last;
         first += good;
     }
     return out;
@@ -137,14 +156,15 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
 
 std::vector<std::int64_t> expand_steps(std::span<const StepSegment> segments) {
     std::vector<std::int64_t> t;
-    std::int64_t now = 0;
+    std::int64_t start = 0;
     for (const auto& s : segments) {
-        std::int64_t iv = s.interval;
-        for (std::uint16_t k = 0; k < s.count; ++k) {
-            now += iv;
-            t.push_back(now);
-            iv += s.add;
-        }
+        std::int64_t last = 0;
+        replay(s.interval_q16, s.add_q16, s.count, [&](std::size_t, std::int64_t now) {
+            t.push_back(start + now);
+            last = now;
+            return true;
+        });
+        start += last;
     }
     return t;
 }

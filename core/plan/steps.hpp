@@ -32,12 +32,14 @@ private:
 std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps,
                                      double steps_per_mm);
 
-// Compresses ideal step times into (interval, count, add) segments whose
-// integer reconstruction stays within `tolerance_ticks` of every ideal time.
-// Fails when an interval does not fit the controller's 16-bit timer.
+// Compresses ideal step times into Q16.16 (interval, count, add) segments whose
+// reconstruction by the controller's arithmetic (expand_steps) fires every step
+// within `tolerance_ticks` (at most 1) of its ideal time. Fails when an interval
+// does not fit the controller's 16-bit timer.
 Result<std::vector<StepSegment>> compress_steps(std::span<const double> ticks,
                                                 double tolerance_ticks = 1.0);
-// The integer firing times (ticks from the move start) the controller will produce.
+// The integer firing times (ticks from the move start) the controller will
+// produce: the reference for the simulated controller and for the tests.
 std::vector<std::int64_t> expand_steps(std::span<const StepSegment> segments);
 
 // A complete StepMove for a move of `steps` (signed) along an axis.

@@ -57,9 +57,9 @@ TEST(Steps, EncodedScheduleWithinOneTick) {
             }
         }
     }
-    // Compression is what makes the schedule fit the link and the 8051: several
-    // steps per 6-byte segment on average.
-    EXPECT_GT(static_cast<double>(steps_total) / static_cast<double>(segments_total), 4.0);
+    // Compression is what makes the schedule fit the link: with Q16.16 intervals
+    // a segment covers dozens of steps on average (whole-tick intervals gave ~5).
+    EXPECT_GT(static_cast<double>(steps_total) / static_cast<double>(segments_total), 20.0);
 }
 
 TEST(Steps, KnownConstantRateCompressesToOneSegment) {
@@ -69,7 +69,7 @@ TEST(Steps, KnownConstantRateCompressesToOneSegment) {
     auto seg = compress_steps(t);
     ASSERT_TRUE(seg.has_value());
     ASSERT_EQ(seg->size(), 1u);
-    EXPECT_EQ((*seg)[0], (StepSegment{100, 500, 0}));
+    EXPECT_EQ((*seg)[0], (StepSegment{100u << 16, 500, 0}));
     // A constant change of interval (+3 ticks per step) is also one segment.
     t.clear();
     double now = 0;
@@ -77,7 +77,24 @@ TEST(Steps, KnownConstantRateCompressesToOneSegment) {
     seg = compress_steps(t);
     ASSERT_TRUE(seg.has_value());
     ASSERT_EQ(seg->size(), 1u);
-    EXPECT_EQ((*seg)[0], (StepSegment{50, 200, 3}));
+    EXPECT_EQ(expand_steps(*seg).back(), static_cast<std::int64_t>(t.back()));
+    // A fractional rate (38.4 ticks per step) is one segment too: whole-tick
+    // intervals would need a new segment every few steps.
+    t.clear();
+    for (int i = 1; i <= 1000; ++i) t.push_back(38.4 * i);
+    seg = compress_steps(t);
+    ASSERT_TRUE(seg.has_value());
+    EXPECT_EQ(seg->size(), 1u);
+    const auto fired = expand_steps(*seg);
+    for (std::size_t i = 0; i < t.size(); ++i) ASSERT_LE(std::fabs(static_cast<double>(fired[i]) - t[i]), 1.0);
+}
+
+// The controller's arithmetic, worked by hand: interval 2.5 ticks, add 0.25.
+TEST(Steps, ExpandIsTheControllersFixedPointArithmetic) {
+    const std::vector<StepSegment> segs{{(5u << 16) / 2, 4, 1 << 14}, {3u << 16, 2, 0}};
+    // Intervals 2.5, 2.75, 3.0, 3.25: cumulative 2.5, 5.25, 8.25, 11.5 -> 2, 5, 8, 11;
+    // the next segment starts from tick 11 with a fresh fraction: 14, 17.
+    EXPECT_EQ(expand_steps(segs), (std::vector<std::int64_t>{2, 5, 8, 11, 14, 17}));
 }
 
 TEST(Steps, IntervalBeyondTheTimerIsAnError) {

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tactus-cli emboss: lay out, plan, encode and send a document to the embosser.
+// Exit 0 only when the controller has confirmed executing every pass.
+#include <unistd.h>
+
+#include <csignal>
+#include <iostream>
+
+#include "command.hpp"
+#include "encode/frame.hpp"
+#include "encode/plan_json.hpp"
+#include "encode/stream.hpp"
+#include "layout_args.hpp"
+#include "link/link.hpp"
+#include "transport/device.hpp"
+
+#include "plan/planner.hpp"
+#include "profile_arg.hpp"
+
+namespace tactus::cli {
+namespace {
+
+link::CancelToken* g_cancel = nullptr;
+extern "C" void on_interrupt(int) {
+    if (g_cancel) g_cancel->cancel();
+}
+
+struct EmbossArgs {
+    LayoutArgs layout;
+    std::string profile;
+    std::string device;
+    bool dry_run = false;
+    bool plan_file = false;
+    std::size_t start_sheet = 1;
+};
+
+struct Prepared {
+    plan::JobPlan plan;
+    encode::ControllerConfig config;
+};
+
+// What the controller needs from the printer profile, in its own units.
+encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
+    encode::ControllerConfig c;
+    c.carriage_steps_per_m = static_cast<std::uint32_t>(p.carriage.steps_per_mm * 1000 + 0.5);
+    c.feed_steps_per_m = static_cast<std::uint32_t>(p.feed.steps_per_mm * 1000 + 0.5);
+    c.carriage_travel_steps = static_cast<std::int32_t>(
+        (p.paper.width_mm + p.head.concave_offset_mm) * p.carriage.steps_per_mm);
+    // Homing and seeking at a gentle 40 mm/s.
+    c.home_interval_ticks = static_cast<std::uint16_t>(
+        std::clamp(plan::kTickHz / (40.0 * p.carriage.steps_per_mm), 1.0, 65535.0));
+    c.hammer_ticks = static_cast<std::uint16_t>(std::clamp(p.head.dwell_s * plan::kTickHz, 1.0, 65535.0));
+    return c;
+}
+
+Prepared prepare(const EmbossArgs& a) {
+    Prepared out;
+    if (a.plan_file) {
+        out.plan = require(encode::load_plan(a.layout.file));
+        return out;
+    }
+    const auto profile = load_profile_arg(a.profile);
+    auto options = a.layout.pipeline_options();
+    // The page format is the machine's unless the command line overrides it.
+    options.layout.geometry.interpoint = profile.geometry.interpoint;
+    if (a.layout.cells == 0) options.layout.geometry.cells_per_line = profile.geometry.cells_per_line;
+    if (a.layout.lines == 0) options.layout.geometry.lines_per_page = profile.geometry.lines_per_page;
+    options.layout.geometry.eight_dot = profile.geometry.eight_dot || a.layout.eight_dot;
+    const auto doc = require(lay_out_file(a.layout.file, options));
+    out.plan = require(plan::plan_job(doc, profile));
+    out.config = controller_config(profile);
+    return out;
+}
+
+void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
+    const int width = 30;
+    const auto filled = total ? static_cast<int>(width * done / total) : width;
+    std::cerr << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+              << std::string(static_cast<std::size_t>(width - filled), ' ') << "] "
+              << (total ? 100 * done / total : 100) << "%  sheet " << e.sheet << "  pass "
+              << done << '/' << total << std::flush;
+}
+
+void run_emboss(const EmbossArgs& a) {
+    const auto prepared = prepare(a);
+    const auto& plan = prepared.plan;
+    if (a.dry_run) {
+        std::size_t first = 0;
+        for (const auto& s : plan.sheets) {
+            if (s.index >= a.start_sheet) break;
+            first += s.passes.size();
+        }
+        const auto stream = require(encode::encode_job(plan, 1, {first, 0, false}));
+        const auto chunks = encode::chunk_stream(stream, encode::kMaxPayload);
+        std::size_t line = 0;
+        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead;
+        std::cout << stream.bytes.size() << " bytes of job stream in " << chunks.size()
+                  << " frames (" << line << " bytes on the line) for " << plan.sheets.size()
+                  << " sheets, " << plan.strikes << " strikes\n";
+        return;
+    }
+    if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
+    // A malformed device string is a usage error; a device that is not there is a device error.
+    const auto spec = transport::parse_device(a.device);
+    if (!spec) fail_with(exit_usage, spec.error());
+    if (auto u = transport::uart_settings(*spec); !u) fail_with(exit_usage, u.error());
+    auto link = link::Link::open(a.device);
+    if (!link) fail_with(exit_device, link.error());
+    if (auto h = link->hello(); !h) fail_with(exit_device, h.error());
+    if (auto c = link->configure(prepared.config); !c) fail_with(exit_device, c.error());
+
+    const bool tty = isatty(STDERR_FILENO) != 0;
+    link::CancelToken cancel;
+    g_cancel = &cancel;
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+    bool bar_drawn = false;
+    auto out = link->send_job(
+        plan, a.start_sheet,
+        [&](const link::Progress& p) {
+            if (p.executed) {
+                if (tty) {
+                    print_bar(p.executed->passes_done, p.executed->passes_total, *p.executed);
+                    bar_drawn = true;
+                } else {
+                    std::cout << "pass " << p.executed->passes_done << '/' << p.executed->passes_total
+                              << " executed (sheet " << p.executed->sheet << ")\n";
+                }
+                return;
+            }
+            if (tty && bar_drawn) std::cerr << '\n';
+            bar_drawn = false;
+            (tty ? std::cerr : std::cout) << "emboss: " << p.note << '\n';
+        },
+        cancel);
+    g_cancel = nullptr;
+    if (bar_drawn) std::cerr << '\n';
+    if (!out) fail_with(exit_bad_input, out.error());
+    const auto& s = out->stats;
+    switch (out->end) {
+        case link::JobEnd::completed:
+            std::cout << "embossed " << out->passes_done << " passes on " << a.device << ": "
+                      << s.bytes_written << " bytes sent, " << s.frames_resent
+                      << " frames resent, " << s.reconnects << " reconnects, " << s.restarts
+                      << " restarts\n";
+            return;
+        case link::JobEnd::cancelled:
+            throw CommandFailed(exit_failure, "cancelled after " + std::to_string(out->passes_done) +
+                                                  " passes; resume with --start-sheet " +
+                                                  std::to_string(out->resume_sheet));
+        case link::JobEnd::failed:
+            throw CommandFailed(exit_failure, out->error.to_string() + "; resume with --start-sheet " +
+                                                  std::to_string(out->resume_sheet));
+    }
+}
+
+}  // namespace
+
+void add_emboss_command(CLI::App& app) {
+    auto args = std::make_shared<EmbossArgs>();
+    auto* cmd = app.add_subcommand("emboss", "Emboss a document (or a saved plan) on a device");
+    args->layout.add_to(*cmd, /*with_interpoint=*/false);
+    cmd->add_option("--profile,-p", args->profile, "Printer profile (JSON); default: the source embosser");
+    cmd->add_option("--device,-d", args->device,
+                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim");
+    cmd->add_flag("--dry-run", args->dry_run, "Stop after encoding and print the byte count");
+    cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
+    cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
+        ->check(CLI::PositiveNumber);
+    cmd->callback([args] { run_emboss(*args); });
+}
+
+}  // namespace tactus::cli

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// tactus-cli sim --pty: the simulated 89C52 behind a pseudo-terminal. Prints the
+// pty path on the first line of stdout and serves until killed.
+#include <csignal>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.hpp"
+#include "controller/pty_server.hpp"
+
+namespace tactus::cli {
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop.store(true); }
+
+struct SimArgs {
+    bool pty = false;
+    controller::PtyServerOptions server;
+    std::string strike_log;
+    int paper_out_at = 0;
+    int reset_at_strike = 0;
+    int power_loss_at_strike = 0;
+    int limit_at_strike = 0;
+};
+
+void run_sim(const SimArgs& a) {
+    if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required (the in-process simulator is the device \"sim\")");
+    auto server = controller::PtyServer::open(a.server);
+    if (!server) fail_with(exit_device, server.error());
+    auto& ctl = server->controller();
+    if (a.paper_out_at > 0) ctl.inject_paper_out_at_sheet(static_cast<std::uint16_t>(a.paper_out_at));
+    if (a.reset_at_strike > 0) ctl.reset_at_strike(static_cast<std::size_t>(a.reset_at_strike), true);
+    if (a.power_loss_at_strike > 0)
+        ctl.reset_at_strike(static_cast<std::size_t>(a.power_loss_at_strike), false);
+    if (a.limit_at_strike > 0) ctl.inject_limit_switch_at_strike(static_cast<std::size_t>(a.limit_at_strike));
+    std::ofstream log;
+    if (!a.strike_log.empty()) {
+        log.open(a.strike_log, std::ios::trunc);
+        if (!log) throw CommandFailed(exit_bad_input, a.strike_log + ": cannot write the strike log");
+    }
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGPIPE, SIG_IGN);
+    std::cout << server->path() << std::endl;
+    auto r = server->serve(g_stop, [&](const controller::LoggedStrike& s) {
+        if (!log) return;
+        // One JSON object per line, flushed: a reader sees every strike at once.
+        log << nlohmann::json{{"sheet", s.sheet},
+                              {"side", s.side == plan::Side::front ? "front" : "back"},
+                              {"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
+                              {"carriage_step", s.carriage_step},
+                              {"feed_step", s.feed_step},
+                              {"x_mm", s.x_mm},
+                              {"y_mm", s.y_mm},
+                              {"time_s", s.time_s}}
+                   .dump()
+            << '\n'
+            << std::flush;
+    });
+    if (!r) fail_with(exit_device, r.error());
+    std::cerr << "sim: " << ctl.strike_log().size() << " strikes, " << ctl.frames_accepted()
+              << " frames accepted, " << ctl.duplicates() << " duplicates ignored, "
+              << ctl.crc_errors() << " corrupt frames dropped\n";
+}
+
+}  // namespace
+
+void add_sim_command(CLI::App& app) {
+    auto args = std::make_shared<SimArgs>();
+    auto* cmd = app.add_subcommand("sim", "Run the simulated embosser controller behind a pseudo-terminal");
+    cmd->add_flag("--pty", args->pty, "Serve on a new pseudo-terminal; its path is printed first");
+    cmd->add_option("--baud", args->server.baud, "Line rate the simulated UART paces bytes at")
+        ->capture_default_str()->check(CLI::Range(300.0, 1e6));
+    cmd->add_option("--time-scale", args->server.time_scale,
+                    "Run motion this many times faster than real time")
+        ->capture_default_str()->check(CLI::Range(0.01, 1e6));
+    cmd->add_option("--noise", args->server.noise,
+                    "Per-byte rate of dropped, flipped and duplicated bytes (each)")
+        ->check(CLI::Range(0.0, 0.5));
+    cmd->add_option("--seed", args->server.seed, "Noise seed");
+    cmd->add_option("--disconnect-at", args->server.disconnect_at_s,
+                    "Kill the line this many seconds after start ...");
+    cmd->add_option("--disconnect-for", args->server.disconnect_for_s, "... for this many seconds");
+    cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(CLI::PositiveNumber);
+    cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,
+                    "Seconds (simulated) until the operator loads paper after a paper-out");
+    cmd->add_option("--reset-at-strike", args->reset_at_strike,
+                    "Watchdog reset right after strike N")->check(CLI::PositiveNumber);
+    cmd->add_option("--power-loss-at-strike", args->power_loss_at_strike,
+                    "Power loss right after strike N")->check(CLI::PositiveNumber);
+    cmd->add_option("--limit-at-strike", args->limit_at_strike,
+                    "Limit switch trips before strike N")->check(CLI::PositiveNumber);
+    cmd->add_flag("--instant", args->server.sim.instant_motion,
+                  "Execute motion in no time (link benchmarks)");
+    cmd->add_option("--strike-log", args->strike_log, "Append each strike to FILE as a JSON line");
+    cmd->callback([args] { run_sim(*args); });
+}
+
+}  // namespace tactus::cli

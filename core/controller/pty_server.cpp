@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "controller/pty_server.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <random>
+
+namespace tactus::controller {
+namespace {
+
+double wall_now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+Result<void> raw(int fd) {
+    termios t{};
+    if (tcgetattr(fd, &t) != 0) return fail(std::strerror(errno), "pty");
+    cfmakeraw(&t);
+    if (tcsetattr(fd, TCSANOW, &t) != 0) return fail(std::strerror(errno), "pty");
+    return {};
+}
+
+}  // namespace
+
+Result<PtyServer> PtyServer::open(const PtyServerOptions& options) {
+    if (options.baud < 300) return fail("baud rate below 300", "--baud");
+    if (options.time_scale <= 0) return fail("time scale must be positive", "--time-scale");
+    PtyServer s(options);
+    s.ctl_ = SimController([&] {
+        SimOptions o = options.sim;
+        o.keepalive_scale = options.time_scale;  // keep-alive stays in wall time
+        return o;
+    }());
+    s.master_ = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (s.master_ < 0) return fail("cannot open a pseudo-terminal: " + std::string(std::strerror(errno)), "pty");
+    if (grantpt(s.master_) != 0 || unlockpt(s.master_) != 0)
+        return fail("cannot unlock the pseudo-terminal", "pty");
+    const char* name = ptsname(s.master_);
+    if (!name) return fail("pseudo-terminal has no name", "pty");
+    s.path_ = name;
+    s.slave_keep_ = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (s.slave_keep_ < 0) return fail("cannot open " + s.path_, "pty");
+    if (auto r = raw(s.slave_keep_); !r) return std::unexpected(r.error());
+    const int flags = fcntl(s.master_, F_GETFL);
+    fcntl(s.master_, F_SETFL, flags | O_NONBLOCK);
+    return s;
+}
+
+PtyServer::PtyServer(PtyServer&& o) noexcept
+    : options_(o.options_), ctl_(std::move(o.ctl_)), master_(std::exchange(o.master_, -1)),
+      slave_keep_(std::exchange(o.slave_keep_, -1)), path_(std::move(o.path_)) {}
+
+PtyServer::~PtyServer() {
+    if (master_ >= 0) ::close(master_);
+    if (slave_keep_ >= 0) ::close(slave_keep_);
+}
+
+Result<void> PtyServer::serve(const std::atomic<bool>& stop,
+                              const std::function<void(const LoggedStrike&)>& on_strike) {
+    struct Timed {
+        double at;  // wall time the byte has fully crossed the line
+        std::uint8_t byte;
+    };
+    std::deque<Timed> inbound, outbound;
+    const double char_time = 10.0 / options_.baud;
+    double in_free = 0, out_free = 0;
+    const double t0 = wall_now();
+    auto sim_time = [&](double wall) { return (wall - t0) * options_.time_scale; };
+    auto wall_of = [&](double sim) { return t0 + sim / options_.time_scale; };
+    std::mt19937_64 rng(options_.seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    auto line_dead = [&](double wall) {
+        const double t = wall - t0;
+        return options_.disconnect_at_s >= 0 && t >= options_.disconnect_at_s &&
+               t < options_.disconnect_at_s + options_.disconnect_for_s;
+    };
+    // Puts bytes on one direction of the line with the noise model.
+    auto put = [&](std::deque<Timed>& q, double& line_free, double now, std::uint8_t b) {
+        line_free = std::max(line_free, now) + char_time;
+        if (line_dead(line_free)) return;
+        if (options_.noise > 0) {
+            if (u(rng) < options_.noise) return;
+            if (u(rng) < options_.noise) b = static_cast<std::uint8_t>(b ^ (1U << (rng() % 8)));
+            if (u(rng) < options_.noise) {
+                q.push_back({line_free, b});
+                line_free += char_time;
+            }
+        }
+        q.push_back({line_free, b});
+    };
+    std::size_t logged = 0;
+    std::vector<std::uint8_t> buf(4096);
+    while (!stop.load()) {
+        const double now = wall_now();
+        // Host -> controller: bytes that have crossed the line by now.
+        while (!inbound.empty() && inbound.front().at <= now) {
+            const Timed t = inbound.front();
+            inbound.pop_front();
+            ctl_.receive(std::span(&t.byte, 1), sim_time(t.at));
+        }
+        ctl_.advance(sim_time(now));
+        for (const std::uint8_t b : ctl_.take_output()) put(outbound, out_free, now, b);
+        // Controller -> host: write what has crossed the line.
+        std::vector<std::uint8_t> due;
+        while (!outbound.empty() && outbound.front().at <= now) {
+            due.push_back(outbound.front().byte);
+            outbound.pop_front();
+        }
+        if (!due.empty()) {
+            std::size_t done = 0;
+            while (done < due.size()) {
+                const auto n = ::write(master_, due.data() + done, due.size() - done);
+                if (n > 0) done += static_cast<std::size_t>(n);
+                else if (n < 0 && errno == EAGAIN) break;  // no reader: the bytes are lost, as on a wire
+                else if (n < 0 && errno != EINTR) return fail(std::strerror(errno), path_);
+            }
+        }
+        const auto& log = ctl_.strike_log();
+        for (; logged < log.size(); ++logged)
+            if (on_strike) on_strike(log[logged]);
+
+        double next = now + 0.05;
+        if (!inbound.empty()) next = std::min(next, inbound.front().at);
+        // Reply bytes go out when the whole burst has crossed the line: the host
+        // acts on whole frames only, and one write per burst keeps the loop idle.
+        if (!outbound.empty()) next = std::min(next, outbound.back().at);
+        if (const auto e = ctl_.next_event()) next = std::min(next, wall_of(*e));
+        // Microsecond wake-ups: at 115200 baud a byte takes 87 us.
+        const double wait = std::max(0.0, next - wall_now());
+        timespec ts{static_cast<time_t>(wait), static_cast<long>((wait - std::floor(wait)) * 1e9)};
+        pollfd p{master_, POLLIN, 0};
+        const int r = ::ppoll(&p, 1, &ts, nullptr);
+        if (r < 0 && errno != EINTR) return fail(std::strerror(errno), path_);
+        if (r > 0 && (p.revents & POLLIN)) {
+            const auto n = ::read(master_, buf.data(), buf.size());
+            const double at = wall_now();
+            for (ssize_t i = 0; i < n; ++i) put(inbound, in_free, at, buf[static_cast<std::size_t>(i)]);
+        }
+    }
+    return {};
+}
+
+}  // namespace tactus::controller

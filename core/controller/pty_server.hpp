@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The simulated controller behind a pseudo-terminal, so any program can talk to
+// it over a real tty (`tactus-cli sim --pty`). The line is paced at its baud
+// rate in wall time; motion runs `time_scale` times faster than real time so a
+// test does not wait for the paper.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "common/result.hpp"
+#include "controller/sim_controller.hpp"
+
+namespace tactus::controller {
+
+struct PtyServerOptions {
+    double baud = 115200;
+    double time_scale = 1.0;
+    double noise = 0;            // drop, flip and duplicate rate per byte, each
+    std::uint64_t seed = 1;
+    double disconnect_at_s = -1;  // line dead from this wall time (s after start) ...
+    double disconnect_for_s = 0;  // ... for this long
+    SimOptions sim;
+};
+
+class PtyServer {
+public:
+    static Result<PtyServer> open(const PtyServerOptions& options);
+    PtyServer(PtyServer&&) noexcept;
+    PtyServer& operator=(PtyServer&&) = delete;
+    ~PtyServer();
+
+    // The slave side a client opens (/dev/pts/N).
+    [[nodiscard]] const std::string& path() const { return path_; }
+    [[nodiscard]] SimController& controller() { return ctl_; }
+
+    // Serves until `stop` is set. `on_strike` sees each strike as it is logged.
+    Result<void> serve(const std::atomic<bool>& stop,
+                       const std::function<void(const LoggedStrike&)>& on_strike);
+
+private:
+    explicit PtyServer(const PtyServerOptions& o) : options_(o), ctl_(o.sim) {}
+    PtyServerOptions options_;
+    SimController ctl_;
+    int master_ = -1;
+    int slave_keep_ = -1;  // held open so the pty survives a client closing it
+    std::string path_;
+};
+
+}  // namespace tactus::controller

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The simulated 89C52: executes the Tactus protocol as the firmware does, with
+// the firmware's RAM budget (ram_budget.hpp). Bytes go in, bytes come out, and
+// the job stream is executed in simulated time from the step schedule, so a
+// test can compare what was struck with what was planned, step for step.
+//
+// It is a pure state machine driven by the caller's clock: receive() bytes that
+// arrived at time t, advance(t) to execute up to t, take_output() for the reply
+// bytes. SimTransport runs it in-process on virtual time; `tactus-cli sim --pty`
+// runs it behind a pseudo-terminal on (scaled) wall time.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "controller/ram_budget.hpp"
+#include "encode/frame.hpp"
+#include "encode/messages.hpp"
+#include "encode/stream.hpp"
+#include "plan/plan.hpp"
+
+namespace tactus::controller {
+
+// One dot embossed, in the controller's own units.
+struct LoggedStrike {
+    std::uint16_t sheet = 0;
+    plan::Side side = plan::Side::front;
+    plan::Hammer hammer = plan::Hammer::convex;
+    std::int32_t carriage_step = 0;
+    std::int32_t feed_step = 0;
+    std::uint16_t pass_index = 0;
+    double time_s = 0;  // simulated time
+    double x_mm = 0;    // carriage_step mapped back with the configured steps/mm
+    double y_mm = 0;
+    // Time is not part of identity: a retried job strikes later, not differently.
+    bool operator==(const LoggedStrike& o) const {
+        return sheet == o.sheet && side == o.side && hammer == o.hammer &&
+               carriage_step == o.carriage_step && feed_step == o.feed_step;
+    }
+};
+
+// The strikes a plan asks for, in the form the controller logs them.
+std::vector<LoggedStrike> planned_strikes(const plan::JobPlan& plan);
+
+struct SimOptions {
+    bool paper_present = true;
+    // Scale factor between controller time and keep-alive time (a pty server
+    // running motion 20x faster keeps the host's keep-alive in wall time).
+    double keepalive_scale = 1.0;
+    // Execute motion instantly (link-efficiency benchmark: the link is the only limit).
+    bool instant_motion = false;
+    // After a paper-out fault, the operator loads paper this many seconds later
+    // (negative: never; load_paper() does it).
+    double reload_paper_after_s = -1;
+    double sheet_load_s = 0.8;  // pick up and position a sheet
+    double sheet_eject_s = 0.8;
+};
+
+class SimController {
+public:
+    explicit SimController(SimOptions options = {});
+
+    // Bytes from the host, arriving at simulated time `now` (seconds).
+    void receive(std::span<const std::uint8_t> bytes, double now);
+    // Runs the executor up to `now`.
+    void advance(double now);
+    // When something next happens on its own (a step, a strike, a timeout), if anything.
+    [[nodiscard]] std::optional<double> next_event() const;
+    // Reply bytes produced so far (and clears them).
+    std::vector<std::uint8_t> take_output();
+
+    // Fault injection.
+    void inject_paper_out_at_sheet(std::uint16_t sheet);  // sheet N has no paper when loaded
+    void load_paper();                                    // operator loads paper
+    void inject_limit_switch_at_strike(std::size_t nth);  // trips before the nth strike (1-based)
+    void inject_hammer_fault_at_strike(std::size_t nth);
+    void warm_reset(double now);   // watchdog/RST: registers reset, RAM (progress) kept
+    void power_loss(double now);   // power cycle: RAM lost
+    void reset_at_strike(std::size_t nth, bool keep_ram);  // reset just after the nth strike
+
+    [[nodiscard]] const std::vector<LoggedStrike>& strike_log() const { return log_; }
+    [[nodiscard]] encode::Status status() const;
+    [[nodiscard]] std::size_t ring_used() const { return ring_.size(); }
+    [[nodiscard]] std::size_t max_ring_used() const { return max_ring_used_; }
+    [[nodiscard]] std::size_t frames_accepted() const { return frames_accepted_; }
+    [[nodiscard]] std::size_t duplicates() const { return duplicates_; }
+    [[nodiscard]] std::size_t crc_errors() const { return decoder_.stats().crc_errors; }
+    [[nodiscard]] double starved_seconds() const { return starved_s_; }
+    [[nodiscard]] std::size_t resets() const { return resets_; }
+    [[nodiscard]] const encode::ControllerConfig& config() const { return config_; }
+
+private:
+    void on_frame(const encode::Frame& f, double now);
+    void reply(encode::FrameType type, std::span<const std::uint8_t> payload);
+    void ack();
+    void nak(encode::NakReason why);
+    void immediate(const encode::Frame& f, double now);
+    bool start_next_op(double now);
+    void finish_op();
+    void interrupt_op(double now);
+    void stop_job(std::uint8_t fault_bits, double now);
+    void boot(double now, bool keep_ram);
+    void maybe_report_space();
+    void set_waiting(bool waiting, double now);
+    [[nodiscard]] double ticks_to_s(std::uint64_t ticks) const;
+    [[nodiscard]] std::optional<double> keepalive_deadline() const;
+    [[nodiscard]] encode::AckInfo ack_info() const;
+    [[nodiscard]] std::size_t ring_free() const;
+
+    static constexpr double kIdleGap = 0.1;  // s; one 86-byte frame at 9600 baud
+    SimOptions options_;
+    encode::FrameDecoder decoder_;
+    double last_byte_ = 0;
+    std::vector<std::uint8_t> out_;
+    double now_ = 0;
+
+    // --- SFRs and registers: lost on any reset
+    std::uint8_t expected_seq_ = 0;
+    bool session_ = false;
+    std::uint16_t nonce_ = 0;
+    bool homed_ = false;
+    double last_host_frame_ = 0;
+    std::size_t free_reported_ = 0;
+
+    // --- RAM: kept by a warm reset, lost by power loss
+    encode::ControllerConfig config_{};
+    bool configured_ = false;
+    encode::ControllerState state_ = encode::ControllerState::idle;
+    std::uint8_t faults_ = 0;
+    std::vector<std::uint8_t> ring_;  // job-stream ring, at most ram::kRingBytes
+    std::uint16_t job_id_ = 0;
+    bool job_active_ = false;
+    std::uint16_t sheet_ = 0;
+    std::uint16_t pass_index_ = 0;
+    bool pass_active_ = false;
+    std::uint8_t skip_ = 0;
+    std::uint16_t executed_passes_ = 0;
+    std::uint8_t strikes_in_pass_ = 0;
+    std::int32_t carriage_ = 0;
+    std::int32_t feed_ = 0;
+    std::uint16_t underruns_ = 0;
+    bool pause_requested_ = false;
+    bool in_move_ = false;  // the last op was a move whose continuation may follow
+
+    // --- executor: the op under way
+    std::optional<encode::Op> current_;
+    double op_start_ = 0;
+    double op_end_ = 0;
+    std::int32_t seek_from_ = 0;
+
+    // --- fault injection and statistics
+    bool paper_present_ = true;
+    std::optional<std::uint16_t> paper_out_sheet_;
+    std::optional<double> reload_at_;
+    std::size_t strike_count_ = 0;
+    std::optional<std::size_t> limit_at_, hammer_at_, reset_at_;
+    bool reset_keeps_ram_ = true;
+    std::vector<LoggedStrike> log_;
+    std::size_t max_ring_used_ = 0;
+    std::size_t frames_accepted_ = 0;
+    std::size_t duplicates_ = 0;
+    std::size_t resets_ = 0;
+    double starved_since_ = -1;
+    double starved_s_ = 0;
+};
+
+}  // namespace tactus::controller

@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Streaming a job: keep the controller's ring full through a sliding window,
+// resend what the line lost, and recover from a paused, faulted, restarted or
+// unplugged controller without losing or repeating a dot.
+#include <string>
+
+#include "link/link_impl.hpp"
+
+namespace tactus::link {
+
+namespace {
+
+struct JobState {
+    explicit JobState(const plan::JobPlan& p) : plan(p), table(encode::pass_table(p)) {}
+    const plan::JobPlan& plan;
+    std::vector<encode::PassRef> table;
+    std::size_t first = 0;     // first pass of this call
+    std::size_t reported = 0;  // passes reported executed (job-wide index of the next one)
+    std::uint16_t job_id = 0;
+    encode::JobStream stream;
+    std::vector<std::pair<std::size_t, std::size_t>> chunks;
+    std::size_t next_chunk = 0;
+    std::size_t bytes_sent = 0;
+    std::size_t bytes_total = 0;
+    bool user_paused = false;
+    double fault_since = -1;
+    double last_resume = -1;
+    std::string last_note;
+    ControllerState last_state = ControllerState::idle;
+
+    [[nodiscard]] std::size_t sheet_of(std::size_t pass) const {
+        if (pass < table.size()) return table[pass].sheet;
+        return plan.sheets.empty() ? 0 : plan.sheets.back().index;
+    }
+};
+
+}  // namespace
+
+Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t start_sheet,
+                                        const ProgressFn& progress, const CancelToken& cancel) {
+    if (!session) return fail("no session: call hello() first", device);
+    JobState js(plan);
+    std::size_t sp = 0;
+    js.first = 0;
+    while (sp < plan.sheets.size() && plan.sheets[sp].index != start_sheet) {
+        js.first += plan.sheets[sp].passes.size();
+        ++sp;
+    }
+    if (sp == plan.sheets.size())
+        return fail("sheet " + std::to_string(start_sheet) + " is not in the plan (it has " +
+                        std::to_string(plan.sheets.size()) + " sheets)",
+                    "start_sheet");
+    js.reported = js.first;
+    // A fresh job id per call, so counts left from an earlier job are never
+    // mistaken for this one's.
+    js.job_id = static_cast<std::uint16_t>(opt.job_id + (rng() % 0x7FFF) + 1);
+    if (js.job_id == 0) js.job_id = 1;
+
+    auto build = [&](const encode::StreamStart& st) -> Result<void> {
+        auto stream = encode::encode_job(plan, js.job_id, st);
+        if (!stream) return std::unexpected(stream.error());
+        js.stream = std::move(*stream);
+        std::size_t max_payload =
+            std::min<std::size_t>(encode::kMaxPayload, std::max<std::uint8_t>(info.max_payload, 8));
+        if (opt.max_payload > 0) max_payload = std::min(max_payload, std::max<std::size_t>(opt.max_payload, 8));
+        js.chunks = encode::chunk_stream(js.stream, max_payload);
+        js.next_chunk = 0;
+        js.bytes_total += js.stream.bytes.size();
+        return {};
+    };
+    if (auto r = build({js.first, 0, false}); !r) return std::unexpected(r.error());
+
+    const std::size_t total = js.table.size() - js.first;
+    double data_start = -1;
+    double data_end = -1;
+
+    auto snapshot = [&] {
+        Status st;
+        st.ack = ack;
+        return st;
+    };
+    auto note = [&](const std::string& text) {
+        if (text == js.last_note) return;
+        js.last_note = text;
+        if (!progress) return;
+        Progress p;
+        p.note = text;
+        p.bytes_sent = js.bytes_sent;
+        p.bytes_total = js.bytes_total;
+        p.status = snapshot();
+        progress(p);
+    };
+    auto report_executed = [&] {
+        if (ack.job_id != js.job_id) return;
+        while (js.reported < ack.executed_passes && js.reported < js.table.size()) {
+            const auto& ref = js.table[js.reported];
+            ++js.reported;
+            if (!progress) continue;
+            PassExecuted e{ref.sheet, ref.pass_in_sheet, js.reported - js.first, total};
+            Progress p;
+            p.executed = &e;
+            p.bytes_sent = js.bytes_sent;
+            p.bytes_total = js.bytes_total;
+            p.status = snapshot();
+            progress(p);
+        }
+    };
+    auto finish = [&](JobEnd end, Error e) -> JobOutcome {
+        JobOutcome out;
+        out.end = end;
+        out.passes_done = js.reported - js.first;
+        out.resume_sheet = end == JobEnd::completed ? 0 : js.sheet_of(js.reported);
+        out.error = std::move(e);
+        if (data_start >= 0) stats.data_seconds = (data_end >= 0 ? data_end : s->now()) - data_start;
+        out.stats = stats;
+        return out;
+    };
+    auto where = [&] {
+        return "sheet " + std::to_string(js.sheet_of(js.reported)) + " (pass " +
+               std::to_string(js.reported + 1) + " of the job)";
+    };
+
+    // Rebuilds the stream from what the controller reports it has done, after
+    // it restarted or stopped on a fault that dropped its buffer.
+    auto restart = [&]() -> Result<void> {
+        ++stats.restarts;
+        if (auto h = hello(); !h) return std::unexpected(h.error());
+        if (config)
+            if (auto r = transact(FrameType::configure, encode::encode_config(*config)); !r) return r;
+        auto st = status();
+        if (!st) return std::unexpected(st.error());
+        ack = st->ack;
+        report_executed();
+        encode::StreamStart start{js.reported, 0, false};
+        if (st->ack.job_id == js.job_id && (st->flags & encode::flag::job_active)) {
+            const bool in_pass = (st->flags & encode::flag::pass_active) != 0;
+            start.skip = in_pass ? st->ack.strikes_in_pass : 0;
+            start.mid_sheet = st->sheet != 0 && st->sheet == js.sheet_of(js.reported);
+        }
+        note("controller " + std::string(saw_power_loss ? "lost power" : "restarted") +
+             ": resuming at " + where() +
+             (start.skip ? " after strike " + std::to_string(start.skip) : ""));
+        if (auto r = transact(FrameType::resume, {}); !r) return r;
+        return build(start);
+    };
+
+    // The device failed: reopen it, then resend whatever is unacknowledged.
+    auto recover_device = [&](const Error& why) -> Result<void> {
+        note("connection lost (" + why.message + "): reconnecting");
+        if (auto r = reconnect_device(); !r) return r;
+        note("reconnected");
+        return resend_all();
+    };
+
+    for (;;) {
+        if (refused) return finish(JobEnd::failed, *refused);
+        if (cancel.cancelled()) {
+            (void)transact(FrameType::abort, {});
+            return finish(JobEnd::cancelled, {});
+        }
+        Result<void> step{};
+        if (pause_req.exchange(false)) {
+            js.user_paused = true;
+            step = send(FrameType::pause, {});
+        }
+        if (step && resume_req.exchange(false)) {
+            js.user_paused = false;
+            step = send(FrameType::resume, {});
+        }
+        report_executed();
+        if (ack.state != js.last_state) {
+            js.last_state = ack.state;
+            if (ack.state == ControllerState::paused || ack.state == ControllerState::fault)
+                note(std::string("controller ") + encode::state_name(ack.state));
+        }
+
+        const bool this_job = ack.job_id == js.job_id;
+        if (js.reported == js.table.size() && js.next_chunk == js.chunks.size() && unacked.empty() &&
+            this_job && ack.state == ControllerState::idle) {
+            if (data_end < 0) data_end = s->now();
+            return finish(JobEnd::completed, {});
+        }
+        if (saw_power_loss)
+            return finish(JobEnd::failed,
+                          Error{"the controller lost power during " + where() +
+                                    ": positions and buffered data are gone; put a fresh sheet in "
+                                    "and resume from that sheet",
+                                device});
+        if (step && (session_lost || (ack.faults & kRestartFaults) != 0)) {
+            if (auto r = restart(); !r) return finish(JobEnd::failed, r.error());
+            continue;
+        }
+        if (ack.faults & fault::hammer)
+            return finish(JobEnd::failed,
+                          Error{"hammer fault at " + where() +
+                                    ": check the print head, then resume from that sheet",
+                                device});
+        if (ack.faults & fault::paper_out) {
+            if (js.fault_since < 0) js.fault_since = s->now();
+            note("paper out at " + where() + ": load paper");
+            if (s->now() - js.fault_since > seconds(opt.fault_wait))
+                return finish(JobEnd::failed,
+                              Error{"paper out at " + where() + " and not loaded within " +
+                                        std::to_string(opt.fault_wait.count() / 1000) + " s",
+                                    device});
+        } else {
+            js.fault_since = -1;
+        }
+        // Paused by the controller itself (paper loaded again, keep-alive lost
+        // while the cable was out): carry on unless the user paused.
+        if (step && ack.state == ControllerState::paused && this_job && !js.user_paused &&
+            (ack.faults & fault::paper_out) == 0 && s->now() - js.last_resume > rto()) {
+            js.last_resume = s->now();
+            note("resuming");
+            step = send(FrameType::resume, {});
+        }
+
+        // Fill the window with whole chunks the controller has room for.
+        while (step && js.next_chunk < js.chunks.size() && unacked.size() < window_frames()) {
+            const auto [b, e] = js.chunks[js.next_chunk];
+            if (e - b > credit()) break;
+            if (data_start < 0) data_start = s->now();
+            step = send(FrameType::data,
+                        std::vector<std::uint8_t>(js.stream.bytes.begin() + static_cast<std::ptrdiff_t>(b),
+                                                  js.stream.bytes.begin() + static_cast<std::ptrdiff_t>(e)));
+            js.bytes_sent += e - b;
+            ++js.next_chunk;
+        }
+        if (step && js.next_chunk == js.chunks.size() && unacked.empty() && data_end < 0)
+            data_end = s->now();
+
+        const double now = s->now();
+        if (step && !unacked.empty() && now >= unacked.front().sent_at + rto()) {
+            ++stats.timeouts;
+            step = resend_all();
+        }
+        if (step && now - last_rx > seconds(opt.silence_timeout)) {
+            step = fail("no answer from the controller for " +
+                            std::to_string(opt.silence_timeout.count()) + " ms",
+                        device);
+        }
+        // Nothing outstanding: poll, so a lost ACK never stalls the window and
+        // the controller's keep-alive watchdog stays quiet. Poll faster while
+        // data is waiting for room in the ring.
+        const bool blocked = js.next_chunk < js.chunks.size();
+        const double poll = blocked ? std::min(0.1, seconds(opt.keepalive_period))
+                                    : seconds(opt.keepalive_period);
+        if (step && unacked.empty() && now - last_tx >= poll) step = send(FrameType::keepalive, {});
+
+        double wait = unacked.empty() ? poll - (s->now() - last_tx)
+                                      : unacked.front().sent_at + rto() - s->now();
+        wait = std::clamp(wait, 0.0005, 0.5);
+        if (step) step = pump(wait);
+        if (!step) {
+            if (refused) return finish(JobEnd::failed, *refused);
+            if (auto r = recover_device(step.error()); !r) return finish(JobEnd::failed, r.error());
+        }
+    }
+}
+
+}  // namespace tactus::link

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "link/link.hpp"
+
+#include "link/link_impl.hpp"
+#include "transport/device.hpp"
+
+namespace tactus::link {
+
+Link::Link(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Link::Link(Link&&) noexcept = default;
+Link& Link::operator=(Link&&) noexcept = default;
+Link::~Link() = default;
+
+Result<Link> Link::open(std::string_view device, LinkOptions options) {
+    auto s = transport::open_device(device);
+    if (!s) return std::unexpected(s.error());
+    auto link = over(std::move(*s), options);
+    link.impl_->device = std::string(device);
+    return link;
+}
+
+Link Link::over(std::unique_ptr<transport::ByteStream> stream, LinkOptions options) {
+    auto impl = std::make_unique<Impl>();
+    impl->device = stream->describe();
+    impl->s = std::move(stream);
+    impl->opt = options;
+    return Link(std::move(impl));
+}
+
+Result<HelloReply> Link::hello() { return impl_->hello(); }
+
+Result<void> Link::configure(const ControllerConfig& config) {
+    impl_->config = config;
+    return impl_->transact(FrameType::configure, encode::encode_config(config));
+}
+
+Result<Status> Link::status() { return impl_->status(); }
+Result<void> Link::pause() { return impl_->transact(FrameType::pause, {}); }
+Result<void> Link::resume() { return impl_->transact(FrameType::resume, {}); }
+Result<void> Link::abort() { return impl_->transact(FrameType::abort, {}); }
+
+Result<void> Link::reconnect() {
+    if (auto r = impl_->reconnect_device(); !r) return r;
+    auto h = impl_->hello();
+    if (!h) return std::unexpected(h.error());
+    return {};
+}
+
+void Link::request_pause() { impl_->pause_req = true; }
+void Link::request_resume() { impl_->resume_req = true; }
+const LinkStats& Link::stats() const { return impl_->stats; }
+std::string Link::device() const { return impl_->device; }
+transport::ByteStream& Link::stream() { return *impl_->s; }
+
+Result<JobOutcome> Link::send_job(const plan::JobPlan& plan, std::size_t start_sheet,
+                                  const ProgressFn& progress, const CancelToken& cancel) {
+    return impl_->send_job(plan, start_sheet, progress, cancel);
+}
+
+}  // namespace tactus::link

@@ -1,0 +1,319 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Private to core/link: the session, the go-back-N send queue and what the
+// controller last reported. link.cpp has the request/reply calls, job_sender.cpp
+// the job streaming.
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <deque>
+#include <optional>
+#include <random>
+
+#include "encode/frame.hpp"
+#include "encode/stream.hpp"
+#include "link/link.hpp"
+#include "transport/byte_stream.hpp"
+
+namespace tactus::link {
+
+using encode::AckInfo;
+using encode::Frame;
+using encode::FrameType;
+namespace fault = encode::fault;
+using std::chrono::microseconds;
+
+inline double seconds(std::chrono::milliseconds ms) { return static_cast<double>(ms.count()) / 1000.0; }
+inline constexpr std::uint8_t kRestartFaults =
+    fault::limit_switch | fault::warm_reset | fault::stream_error | fault::underrun;
+
+struct Link::Impl {
+    std::unique_ptr<transport::ByteStream> s;
+    LinkOptions opt;
+    std::string device;
+    encode::FrameDecoder decoder;
+    LinkStats stats;
+    std::atomic<bool> pause_req{false}, resume_req{false};
+
+    // session
+    bool session = false;
+    std::uint16_t nonce = 0;
+    std::uint8_t next_seq = 0;
+    HelloReply info;
+    std::optional<ControllerConfig> config;
+    std::mt19937 rng{std::random_device{}()};
+
+    // what the controller last told us
+    AckInfo ack;
+    std::optional<Status> last_status;
+    std::optional<HelloReply> last_hello;
+    bool session_lost = false;   // NAK no_session: the controller rebooted
+    bool saw_power_loss = false;
+    std::optional<Error> refused;  // bad_payload / unknown_type: a protocol mismatch
+    double last_rx = 0;
+    double last_tx = 0;
+
+    // go-back-N send queue
+    struct Outgoing {
+        std::uint8_t seq;
+        FrameType type;
+        std::vector<std::uint8_t> payload;
+        double sent_at;
+    };
+    std::deque<Outgoing> unacked;
+    double last_goback = -1;
+
+    Error device_error(const Error& e) const {
+        return Error{e.message, device};
+    }
+
+    std::size_t window_frames() const {
+        std::size_t w = session ? std::max<std::size_t>(1, info.window_frames) : 1;
+        if (opt.max_window_frames > 0) w = std::min(w, opt.max_window_frames);
+        return w;
+    }
+
+    double rto() const {
+        double inflight = 0;
+        for (const auto& o : unacked) inflight += static_cast<double>(o.payload.size() + encode::kFrameOverhead);
+        const double bps = s->bytes_per_second();
+        const double line = bps > 0 ? (inflight + 2 * encode::kMaxFrame) / bps : 0;
+        return seconds(opt.retransmit_timeout) + line;
+    }
+
+    Result<void> raw_write(const std::vector<std::uint8_t>& bytes) {
+        auto r = s->write(bytes);
+        if (!r) return std::unexpected(device_error(r.error()));
+        stats.bytes_written += bytes.size();
+        last_tx = s->now();
+        return {};
+    }
+
+    Result<void> transmit(const Outgoing& o) {
+        ++stats.frames_sent;
+        return raw_write(encode::encode_frame(o.seq, o.type, o.payload));
+    }
+
+    Result<void> send(FrameType type, std::vector<std::uint8_t> payload) {
+        Outgoing o{next_seq++, type, std::move(payload), s->now()};
+        unacked.push_back(o);
+        return transmit(unacked.back());
+    }
+
+    Result<void> resend_all() {
+        for (auto& o : unacked) {
+            o.sent_at = s->now();
+            ++stats.frames_resent;
+            if (auto r = transmit(o); !r) return r;
+        }
+        last_goback = s->now();
+        return {};
+    }
+
+    std::size_t data_in_flight() const {
+        std::size_t n = 0;
+        for (const auto& o : unacked)
+            if (o.type == FrameType::data) n += o.payload.size();
+        return n;
+    }
+    std::size_t credit() const {
+        const std::size_t inflight = data_in_flight();
+        return ack.buffer_free > inflight ? ack.buffer_free - inflight : 0;
+    }
+
+    // Every controller frame carries the next sequence number it expects:
+    // everything before it has been accepted.
+    void acknowledge_through(std::uint8_t expected) {
+        while (!unacked.empty()) {
+            const auto d = static_cast<std::uint8_t>(expected - unacked.front().seq);
+            if (d == 0 || d > 128) break;
+            if (unacked.front().type == FrameType::data)
+                stats.payload_bytes += unacked.front().payload.size();
+            unacked.pop_front();
+        }
+    }
+
+    Result<void> handle(const Frame& f) {
+        last_rx = s->now();
+        const auto type = static_cast<FrameType>(f.type);
+        switch (type) {
+            case FrameType::hello_reply: {
+                auto h = encode::decode_hello_reply(f.payload);
+                if (!h) return std::unexpected(h.error());
+                last_hello = *h;
+                if (!unacked.empty() && unacked.front().type == FrameType::hello &&
+                    f.seq == static_cast<std::uint8_t>(unacked.front().seq + 1))
+                    unacked.pop_front();
+                return {};
+            }
+            case FrameType::ack: {
+                auto a = encode::decode_ack(f.payload);
+                if (!a) return std::unexpected(a.error());
+                ack = *a;
+                break;
+            }
+            case FrameType::status_reply: {
+                auto st = encode::decode_status(f.payload);
+                if (!st) return std::unexpected(st.error());
+                last_status = *st;
+                ack = st->ack;
+                break;
+            }
+            case FrameType::nak: {
+                auto n = encode::decode_nak(f.payload);
+                if (!n) return std::unexpected(n.error());
+                ack = n->second;
+                ++stats.naks;
+                switch (n->first) {
+                    case encode::NakReason::no_session: session_lost = true; break;
+                    case encode::NakReason::bad_payload:
+                    case encode::NakReason::unknown_type:
+                        refused = Error{"the controller refused a frame (" +
+                                            std::string(n->first == encode::NakReason::bad_payload
+                                                            ? "malformed payload"
+                                                            : "unknown type") +
+                                            "): firmware and host disagree on the protocol",
+                                        device};
+                        break;
+                    case encode::NakReason::out_of_order:
+                    case encode::NakReason::no_space: break;
+                }
+                if (n->first != encode::NakReason::no_session) {
+                    acknowledge_through(f.seq);
+                    // Go back to the first frame it lacks, at most once per round trip.
+                    if (!unacked.empty() && s->now() - last_goback > rto() / 2) {
+                        if (auto r = resend_all(); !r) return r;
+                    }
+                }
+                if (ack.faults & fault::power_on_reset) saw_power_loss = true;
+                return {};
+            }
+            default: return {};  // a host-side type echoed by line noise: ignore
+        }
+        if (ack.faults & fault::power_on_reset) saw_power_loss = true;
+        acknowledge_through(f.seq);
+        return {};
+    }
+
+    // Reads whatever arrives within `timeout` and handles each frame.
+    Result<void> pump(double timeout_s) {
+        std::array<std::uint8_t, 512> buf{};
+        // Rounded up and at least 1 us, so a wait always moves the clock forward.
+        auto n = s->read(buf, microseconds(std::max<std::int64_t>(
+                                  1, static_cast<std::int64_t>(std::ceil(timeout_s * 1e6)))));
+        if (!n) return std::unexpected(device_error(n.error()));
+        std::vector<Frame> frames;
+        if (*n == 0 && timeout_s >= 0.05) decoder.idle(frames);  // quiet line: drop false starts
+        decoder.push(std::span(buf).first(*n), frames);
+        stats.crc_errors = decoder.stats().crc_errors;
+        for (const auto& f : frames)
+            if (auto r = handle(f); !r) return r;
+        return {};
+    }
+
+    // Sends one frame and waits until the controller has accepted it.
+    Result<void> transact(FrameType type, std::vector<std::uint8_t> payload) {
+        if (!session) return fail("no session: call hello() first", device);
+        if (auto r = send(type, std::move(payload)); !r) return r;
+        const double start = s->now();
+        while (!unacked.empty()) {
+            if (refused) return std::unexpected(*std::exchange(refused, std::nullopt));
+            if (session_lost) return fail("the controller restarted; open a new session", device);
+            if (s->now() - start > seconds(opt.silence_timeout))
+                return fail("no answer from the controller within " +
+                                std::to_string(opt.silence_timeout.count()) + " ms",
+                            device);
+            const double due = unacked.front().sent_at + rto();
+            if (s->now() >= due) {
+                ++stats.timeouts;
+                if (auto r = resend_all(); !r) return r;
+                continue;
+            }
+            if (auto r = pump(due - s->now()); !r) return r;
+        }
+        return {};
+    }
+
+    Result<HelloReply> hello() {
+        nonce = static_cast<std::uint16_t>(rng() & 0xFFFF);
+        if (nonce == 0) nonce = 1;
+        unacked.clear();
+        session = false;
+        session_lost = false;
+        refused.reset();
+        last_hello.reset();
+        decoder.reset();
+        const std::uint8_t seq = next_seq++;
+        const auto payload = encode::encode_hello({nonce, encode::kProtocolVersion});
+        unacked.push_back({seq, FrameType::hello, payload, s->now()});
+        const double start = s->now();
+        if (auto r = transmit(unacked.back()); !r) return std::unexpected(r.error());
+        while (!last_hello) {
+            const double waited = s->now() - start;
+            if (waited > seconds(opt.silence_timeout))
+                return fail("no answer to HELLO within " +
+                                std::to_string(opt.silence_timeout.count()) +
+                                " ms: is the embosser on, the cable in, and the baud rate right?",
+                            device);
+            if (s->now() >= unacked.front().sent_at + rto()) {
+                ++stats.timeouts;
+                unacked.front().sent_at = s->now();
+                ++stats.frames_resent;
+                if (auto r = transmit(unacked.front()); !r) return std::unexpected(r.error());
+            }
+            if (auto r = pump(unacked.front().sent_at + rto() - s->now()); !r)
+                return std::unexpected(r.error());
+            if (refused) return std::unexpected(*refused);
+        }
+        if (last_hello->protocol != encode::kProtocolVersion)
+            return fail("controller speaks protocol version " +
+                            std::to_string(last_hello->protocol) + ", this host " +
+                            std::to_string(encode::kProtocolVersion),
+                        device);
+        info = *last_hello;
+        unacked.clear();
+        session = true;
+        last_rx = s->now();
+        return info;
+    }
+
+    Result<Status> status() {
+        last_status.reset();
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            if (auto r = transact(FrameType::status, {}); !r) return std::unexpected(r.error());
+            // The reply may have been lost while a later ACK got through; wait a little.
+            const double until = s->now() + rto();
+            while (!last_status && s->now() < until)
+                if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
+            if (last_status) return *last_status;
+        }
+        return fail("no status reply from the controller", device);
+    }
+
+    // The device went away: reopen it until the deadline.
+    Result<void> reconnect_device() {
+        const double start = s->now();
+        auto backoff = std::chrono::milliseconds(100);
+        for (;;) {
+            auto r = s->reopen();
+            if (r) {
+                decoder.reset();
+                ++stats.reconnects;
+                last_rx = s->now();
+                return {};
+            }
+            if (s->now() - start > seconds(opt.reconnect_deadline))
+                return fail("device gone and not back within " +
+                                std::to_string(opt.reconnect_deadline.count()) +
+                                " ms: " + r.error().message,
+                            device);
+            s->sleep(backoff);
+            backoff = std::min(backoff * 2, std::chrono::milliseconds(2000));
+        }
+    }
+
+    Result<JobOutcome> send_job(const plan::JobPlan& plan, std::size_t start_sheet,
+                                const ProgressFn& progress, const CancelToken& cancel);
+};
+
+}  // namespace tactus::link

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Parallel translation for big documents. liblouis cannot be called from two
+// threads (docs/translation.md), but it can run in two processes: the workers
+// are forked after the table is compiled, so each starts with the document and
+// the compiled table already in memory (copy-on-write) and has its own liblouis
+// globals. Worker w translates chunks w, w+N, w+2N, ... and streams the cells
+// back through a pipe; the caller reads the chunks in document order, so the
+// pipes' own buffers are the only look-ahead and memory stays bounded.
+#include <sys/types.h>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "common/result.hpp"
+#include "document/document.hpp"
+#include "translate/translated_document.hpp"
+#include "translate/translator.hpp"
+
+namespace tactus {
+
+class TranslationWorkers {
+public:
+    // The document and translator must outlive this object.
+    static Result<TranslationWorkers> start(const Document& document, const Translator& translator,
+                                            unsigned workers, std::size_t chunk_blocks = 64);
+    TranslationWorkers(TranslationWorkers&&) noexcept;
+    TranslationWorkers& operator=(TranslationWorkers&&) = delete;
+    ~TranslationWorkers();
+
+    // The next block in document order; nullopt after the last one.
+    Result<std::optional<TranslatedBlock>> next();
+
+    // How many workers a document of this size deserves on this machine.
+    static unsigned suggested_workers(const Document& document);
+
+private:
+    TranslationWorkers(const Document& document, std::size_t chunk_blocks)
+        : document_(&document), chunk_blocks_(chunk_blocks) {}
+    void stop();
+
+    const Document* document_;
+    std::size_t chunk_blocks_;
+    std::vector<pid_t> pids_;
+    std::vector<int> fds_;  // read ends, one per worker
+    std::size_t next_block_ = 0;
+};
+
+}  // namespace tactus

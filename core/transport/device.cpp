@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "transport/device.hpp"
+
+#include <charconv>
+
+#include "transport/hid_uart.hpp"
+#include "transport/lpt_port.hpp"
+#include "transport/serial_port.hpp"
+#include "transport/sim_transport.hpp"
+#include "transport/tty_port.hpp"
+
+namespace tactus::transport {
+namespace {
+
+std::optional<double> to_double(const std::string& s) {
+    double v = 0;
+    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+Result<DeviceSpec> parse_device(std::string_view device) {
+    const std::string where = "device \"" + std::string(device) + "\"";
+    DeviceSpec spec;
+    const auto q = device.find('?');
+    const std::string_view head = device.substr(0, q);
+    const auto colon = head.find(':');
+    spec.scheme = std::string(head.substr(0, colon));
+    if (colon != std::string_view::npos) spec.path = std::string(head.substr(colon + 1));
+    if (spec.scheme != "serial" && spec.scheme != "pty" && spec.scheme != "hid" &&
+        spec.scheme != "lpt" && spec.scheme != "sim")
+        return fail("unknown device type \"" + spec.scheme +
+                        "\" (expected serial:, pty:, hid:, lpt: or sim)",
+                    where);
+    if (spec.scheme != "sim" && spec.path.empty())
+        return fail("missing the device path after \"" + spec.scheme + ":\"", where);
+    if (q != std::string_view::npos) {
+        std::string_view rest = device.substr(q + 1);
+        while (!rest.empty()) {
+            const auto amp = rest.find('&');
+            const auto kv = rest.substr(0, amp);
+            const auto eq = kv.find('=');
+            if (eq == std::string_view::npos || eq == 0)
+                return fail("option \"" + std::string(kv) + "\" is not key=value", where);
+            spec.options[std::string(kv.substr(0, eq))] = std::string(kv.substr(eq + 1));
+            if (amp == std::string_view::npos) break;
+            rest = rest.substr(amp + 1);
+        }
+    }
+    return spec;
+}
+
+Result<UartSettings> uart_settings(const DeviceSpec& spec) {
+    UartSettings u;
+    for (const auto& [k, v] : spec.options) {
+        const std::string where = spec.scheme + " option " + k;
+        if (k == "baud") {
+            const auto b = to_double(v);
+            if (!b || *b < 300 || *b > 1'000'000 || *b != static_cast<int>(*b))
+                return fail("baud rate \"" + v + "\" is not a whole number from 300 to 1000000", where);
+            u.baud = static_cast<int>(*b);
+        } else if (k == "parity") {
+            if (v != "none" && v != "odd" && v != "even")
+                return fail("parity must be none, odd or even", where);
+            u.parity = v[0];
+        } else if (k == "stop") {
+            if (v != "1" && v != "2") return fail("stop bits must be 1 or 2", where);
+            u.stop_bits = v == "2" ? 2 : 1;
+        } else if (k == "flow") {
+            if (v == "none") u.flow = UartSettings::Flow::none;
+            else if (v == "rtscts") u.flow = UartSettings::Flow::rtscts;
+            else if (v == "xonxoff") u.flow = UartSettings::Flow::xonxoff;
+            else return fail("flow must be none, rtscts or xonxoff", where);
+        } else if (spec.scheme != "sim") {
+            return fail("unknown option", where);
+        }
+    }
+    return u;
+}
+
+Result<std::unique_ptr<ByteStream>> open_device(std::string_view device) {
+    auto spec = parse_device(device);
+    if (!spec) return std::unexpected(spec.error());
+    if (spec->scheme == "hid") return open_hid(*spec);
+    if (spec->scheme == "lpt") {
+        if (!spec->options.empty()) return fail("lpt takes no options", "lpt:" + spec->path);
+        return open_lpt(*spec);
+    }
+    if (spec->scheme == "sim") {
+        SimLineOptions line;
+        controller::SimOptions sim;
+        for (const auto& [k, v] : spec->options) {
+            const auto d = to_double(v);
+            const std::string where = "sim option " + k;
+            if (!d || *d < 0) return fail("\"" + v + "\" is not a non-negative number", where);
+            if (k == "baud") line.baud = *d;
+            else if (k == "noise") line.noise.drop = line.noise.flip = line.noise.dup = *d;
+            else if (k == "seed") line.noise.seed = static_cast<std::uint64_t>(*d);
+            else if (k == "paper-reload") sim.reload_paper_after_s = *d;
+            else return fail("unknown option (baud, noise, seed, paper-reload)", where);
+        }
+        if (line.baud < 300) return fail("baud rate below 300", "sim option baud");
+        auto ctl = std::make_shared<controller::SimController>(sim);
+        return std::unique_ptr<ByteStream>(std::make_unique<SimTransport>(ctl, line));
+    }
+    auto uart = uart_settings(*spec);
+    if (!uart) return std::unexpected(uart.error());
+    if (spec->scheme == "pty") {
+        auto p = TtyPort::open(spec->path, *uart);
+        if (!p) return std::unexpected(p.error());
+        return std::unique_ptr<ByteStream>(std::move(*p));
+    }
+    auto p = SerialPort::open(spec->path, *uart);
+    if (!p) return std::unexpected(p.error());
+    return std::unique_ptr<ByteStream>(std::move(*p));
+}
+
+}  // namespace tactus::transport

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Device strings: one line chooses the cable (docs/transports.md).
+//   serial:/dev/ttyUSB0?baud=57600&parity=none&flow=rtscts
+//   pty:/dev/pts/3?baud=115200
+//   hid:10c4:ea80[:serial]?baud=115200
+//   lpt:/dev/parport0
+//   sim?baud=115200&noise=1e-3&seed=7
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "common/result.hpp"
+#include "transport/byte_stream.hpp"
+
+namespace tactus::transport {
+
+struct DeviceSpec {
+    std::string scheme;  // serial, pty, hid, lpt, sim
+    std::string path;    // what follows "scheme:" up to '?'
+    std::map<std::string, std::string> options;
+};
+
+Result<DeviceSpec> parse_device(std::string_view device);
+
+// Serial line settings shared by serial, pty and hid.
+struct UartSettings {
+    int baud = 115200;
+    char parity = 'n';  // n, o, e
+    int stop_bits = 1;
+    enum class Flow { none, rtscts, xonxoff } flow = Flow::none;
+};
+Result<UartSettings> uart_settings(const DeviceSpec& spec);
+
+// Opens the device. Errors say which device and why: "no such device",
+// "busy (in use by another program)", "permission denied (add yourself to the
+// dialout group)", "not a terminal".
+Result<std::unique_ptr<ByteStream>> open_device(std::string_view device);
+
+}  // namespace tactus::transport

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A terminal device driven directly through termios: pseudo-terminals (socat,
+// emulators, `tactus-cli sim --pty`), which libserialport refuses to open.
+#include <string>
+
+#include "transport/byte_stream.hpp"
+#include "transport/device.hpp"
+
+namespace tactus::transport {
+
+class TtyPort final : public ByteStream {
+public:
+    static Result<std::unique_ptr<TtyPort>> open(const std::string& path, const UartSettings& uart);
+    ~TtyPort() override;
+
+    Result<void> write(std::span<const std::uint8_t> bytes) override;
+    Result<std::size_t> read(std::span<std::uint8_t> buffer,
+                             std::chrono::microseconds timeout) override;
+    Result<void> reopen() override;
+    [[nodiscard]] double bytes_per_second() const override;
+    [[nodiscard]] std::string describe() const override { return "pty:" + path_; }
+
+private:
+    TtyPort(std::string path, UartSettings uart) : path_(std::move(path)), uart_(uart) {}
+    Result<void> open_fd();
+    void close_fd();
+    std::string path_;
+    UartSettings uart_;
+    int fd_ = -1;
+};
+
+// Puts a terminal file descriptor in raw 8-bit mode at the given settings.
+Result<void> make_raw(int fd, const UartSettings& uart, const std::string& where);
+
+}  // namespace tactus::transport
