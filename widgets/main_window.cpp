@@ -771,6 +771,7 @@ void MainWindow::show_shortcuts() {
     table->setColumnCount(2);
     table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut")});
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     table->setSelectionBehavior(QAbstractItemView::SelectRows);
     auto rows = shortcut_rows();
     table->setRowCount(static_cast<int>(rows.size()));

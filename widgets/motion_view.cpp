@@ -84,6 +84,7 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     chart_view_->setFocusPolicy(Qt::StrongFocus);
     chart_view_->setRenderHint(QPainter::Antialiasing);
     chart_view_->setMinimumHeight(220);
+    chart_view_->viewport()->setAccessibleName(chart_view_->accessibleName());
     times_ = new QLabel(this);
     times_->setObjectName(QStringLiteral("motionTimes"));
     times_->setAccessibleName(tr("Time estimates"));
@@ -95,12 +96,14 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     shapes_->setAccessibleName(tr("Profile shapes on this pass"));
     shapes_->setHorizontalHeaderLabels({tr("Profile shape"), tr("Pass time"), tr("Versus lower bound")});
     shapes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    shapes_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     shapes_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     strikes_ = new QTableWidget(0, 4, this);
     strikes_->setObjectName(QStringLiteral("strikeTable"));
     strikes_->setAccessibleName(tr("Strikes of this pass"));
     strikes_->setHorizontalHeaderLabels({tr("Time (ms)"), tr("Carriage (mm)"), tr("Side"), tr("Residual (\u00b5m)")});
     strikes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    strikes_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     strikes_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
 
     auto* tables = new QSplitter(Qt::Horizontal, this);

@@ -78,6 +78,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     queue_->setAccessibleName(tr("Job queue"));
     queue_->setHorizontalHeaderLabels({tr("Document"), tr("State"), tr("Progress"), tr("Sheet")});
     queue_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    queue_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     queue_->setSelectionBehavior(QAbstractItemView::SelectRows);
     queue_->setSelectionMode(QAbstractItemView::SingleSelection);
     queue_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);

@@ -26,6 +26,7 @@ VibrationView::VibrationView(QWidget* parent) : QWidget(parent) {
     metrics_->setAccessibleName(tr("Step response against the targets"));
     metrics_->setHorizontalHeaderLabels({tr("Quantity"), tr("Value"), tr("Target"), tr("Result")});
     metrics_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    metrics_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     metrics_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     metrics_->setMinimumHeight(130);
     metrics_->setMaximumHeight(150);
@@ -47,7 +48,10 @@ VibrationView::VibrationView(QWidget* parent) : QWidget(parent) {
     response_->setAccessibleName(tr("Frequency response chart"));
     response_->setFocusPolicy(Qt::StrongFocus);
     response_->setMinimumHeight(180);
-    for (auto* v : {histogram_, response_}) v->setRenderHint(QPainter::Antialiasing);
+    for (auto* v : {histogram_, response_}) {
+        v->setRenderHint(QPainter::Antialiasing);
+        v->viewport()->setAccessibleName(v->accessibleName());  // the focusable part of a chart view
+    }
     auto* charts = new QSplitter(Qt::Vertical, this);
     charts->addWidget(histogram_);
     charts->addWidget(response_);
