@@ -22,6 +22,15 @@ public:
     // odd page count simply has no back on its last sheet.
     PagedDocument finish() &&;
 
+    // The paginator's state between blocks, read by the editor's live layout: it
+    // restarts layout after an edit from a sheet front, and stops early once it is
+    // back in the state (page, body lines) the previous layout had at that block.
+    [[nodiscard]] std::size_t pages_closed() const { return doc_.pages.size(); }
+    [[nodiscard]] std::size_t body_lines() const { return body_.size(); }
+    [[nodiscard]] const std::vector<BrailleLine>& body() const { return body_; }
+    // The pages closed so far (finish() would also close the one being filled).
+    [[nodiscard]] const PagedDocument& closed() const { return doc_; }
+
 private:
     [[nodiscard]] bool numbered(std::size_t page_index) const;
     [[nodiscard]] int body_capacity() const;

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The desktop app on a 1,000-page book (the KJV's first verses, one paragraph
+// each): keystroke-to-updated-preview latency (median, 95th percentile; goal
+// under 16 ms median), time to open the book against `tactus-cli layout` on the
+// same file, and resident memory with it open. Runs offscreen.
+// Usage: bench_gui BOOK.txt [PAGES]
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "braille_pane.hpp"
+#include "editor_widget.hpp"
+#include "live_layout.hpp"
+#include "main_window.hpp"
+#include "preview_panel.hpp"
+
+using namespace tactus;
+using namespace tactus::gui;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+long rss_kb() {
+    std::ifstream f("/proc/self/status");
+    std::string key;
+    long value = 0;
+    while (f >> key) {
+        if (key == "VmRSS:") {
+            f >> value;
+            return value;
+        }
+        f.ignore(1 << 12, '\n');
+    }
+    return 0;
+}
+
+double time_cli(const std::string& file) {
+    const auto t0 = Clock::now();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::execl(TACTUS_CLI, TACTUS_CLI, "layout", "--preset", "a4", "--interpoint", "--to", "brf", "-o", "/dev/null",
+                file.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) std::fprintf(stderr, "tactus-cli layout failed\n");
+    return ms_since(t0);
+}
+
+double percentile(std::vector<double> v, double p) {
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s BOOK.txt [PAGES]\n", argv[0]);
+        return 2;
+    }
+    const std::size_t target_pages = argc > 2 ? std::stoul(argv[2]) : 1000;
+
+    // The first verses of the book, one paragraph each, until they fill the pages.
+    std::ifstream in(argv[1]);
+    std::vector<std::string> verses;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) verses.push_back(line);
+    auto created = LiveLayout::create("en-ueb-g2.ctb", {});
+    if (!created) return 1;
+    auto probe = std::make_unique<LiveLayout>(std::move(*created));
+    std::size_t n = std::min<std::size_t>(verses.size(), target_pages * 5);
+    probe->reset(std::vector<std::string>(verses.begin(), verses.begin() + static_cast<std::ptrdiff_t>(n)));
+    while (probe->paged().pages.size() > target_pages && n > 10) {
+        n = n * target_pages / probe->paged().pages.size();
+        probe->reset(std::vector<std::string>(verses.begin(), verses.begin() + static_cast<std::ptrdiff_t>(n)));
+    }
+    while (probe->paged().pages.size() < target_pages && n + 10 <= verses.size()) {
+        n += 10;
+        probe->reset(std::vector<std::string>(verses.begin(), verses.begin() + static_cast<std::ptrdiff_t>(n)));
+    }
+    QTemporaryDir dir;
+    const auto book = dir.filePath(QStringLiteral("book.md")).toStdString();
+    {
+        std::ofstream out(book);
+        for (std::size_t i = 0; i < n; ++i) out << verses[i] << "\n\n";
+    }
+    probe.reset();
+
+    const long rss_empty = rss_kb();
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    QSignalSpy opened(&window, &MainWindow::opened);
+    const auto t_open = Clock::now();
+    window.open_file(QString::fromStdString(book));
+    if (!opened.wait(600000)) {
+        std::fprintf(stderr, "open timed out\n");
+        return 1;
+    }
+    const double open_ms = ms_since(t_open);
+    const double cli_ms = time_cli(book);
+    QApplication::processEvents();
+    const long rss_open = rss_kb();
+    const auto pages = window.editor()->layout().paged().pages.size();
+
+    // Keystrokes at random places; each is timed until the preview has repainted.
+    auto* print = window.editor()->print_pane();
+    auto* preview = window.preview_panel()->preview();
+    print->setFocus();
+    std::mt19937 rng(1);
+    std::vector<double> latency;
+    std::size_t relaid = 0;
+    for (int k = 0; k < 300; ++k) {
+        const auto line = std::uniform_int_distribution<int>(0, print->document()->blockCount() - 1)(rng);
+        const auto block = print->document()->findBlockByNumber(line);
+        QTextCursor c(block);
+        c.setPosition(block.position() + std::max(0, block.length() - 1) / 2);
+        print->setTextCursor(c);
+        QApplication::processEvents();
+        const auto t0 = Clock::now();
+        QTest::keyClick(print, k % 2 ? Qt::Key_Backspace : Qt::Key_E);
+        preview->repaint();
+        latency.push_back(ms_since(t0));
+        relaid += window.editor()->last_stats().pages_relaid;
+    }
+
+    std::printf("document: %zu verses, %zu braille pages, %zu sheets (en-ueb-g2, 27x24 interpoint)\n", n, pages,
+                window.editor()->layout().paged().sheet_count());
+    std::printf("keystroke -> updated preview: median %.2f ms, p95 %.2f ms, max %.2f ms (goal: median < 16 ms)\n",
+                percentile(latency, 0.5), percentile(latency, 0.95), percentile(latency, 1.0));
+    std::printf("  pages re-laid per keystroke: %.1f on average\n", static_cast<double>(relaid) / 300.0);
+    std::printf("open: tactus %.0f ms, tactus-cli layout %.0f ms, ratio %.2f\n", open_ms, cli_ms, open_ms / cli_ms);
+    std::printf("resident memory: %.1f MB with the book open (%.1f MB before opening)\n", static_cast<double>(rss_open) / 1024.0,
+                static_cast<double>(rss_empty) / 1024.0);
+    return 0;
+}

@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Fills resources/i18n/tactus_zh_TW.ts from this glossary (Traditional Chinese,
+Taiwan usage: 點字 braille, 點字印表機 embosser, 雙面點字 interpoint). Run after
+`lupdate`; strings missing here stay unfinished and show in English."""
+import sys
+import xml.etree.ElementTree as ET
+
+T = {
+    "typing": "輸入",
+    "Cannot write %1: %2": "無法寫入 %1：%2",
+    "Saving %1 failed: %2": "儲存 %1 失敗：%2",
+    "front": "正面", "back": "背面", "front and back": "正面與背面",
+    "back, as read after turning the sheet": "背面（翻頁後閱讀的方向）",
+    "Sheet %1 (%2) - pages %3 / %4": "第 %1 張（%2）－ 第 %3 / %4 頁",
+    "Tactus interpoint proof": "Tactus 雙面點字校稿",
+    "Cannot write %1": "無法寫入 %1", "Cannot finish %1": "無法完成 %1",
+    "Divider between print and braille": "明眼字與點字的分隔線",
+    "%1 s": "%1 秒", "%1 min %2 s": "%1 分 %2 秒", "%1 h %2 min": "%1 小時 %2 分",
+    "Braille editor and embosser print manager: edit print and braille side by side, preview interpoint sheets, emboss.":
+        "點字編輯器與點字印表機管理：並排編輯明眼字與點字、預覽雙面點字、送印。",
+    "Document to open (Markdown, text, DOCX, BRF, PEF).": "要開啟的文件（Markdown、純文字、DOCX、BRF、PEF）。",
+    "liblouis table, e.g. en-ueb-g2.ctb or zh-tw.ctb.": "liblouis 點字表，例如 en-ueb-g2.ctb 或 zh-tw.ctb。",
+    "Preview side: front, back or both.": "預覽面：front、back 或 both。",
+    "Sheet to preview.": "要預覽的紙張。",
+    "User interface language, e.g. zh_TW.": "介面語言，例如 zh_TW。",
+    "Save a picture of the window and quit.": "儲存視窗畫面後結束。",
+    "Panel to show: preview, motion, vibration, profile, printer.": "要顯示的面板：preview、motion、vibration、profile、printer。",
+    "Do not offer to recover autosaved work.": "不要詢問是否復原自動儲存的內容。",
+    "Braille": "點字",
+    "The braille of each paragraph. Type with S D F J K L as dots 3 2 1 4 5 6; space, backspace and delete edit cells":
+        "每一段的點字。以 S D F J K L 輸入第 3 2 1 4 5 6 點；空白鍵、退格鍵與刪除鍵編輯點字方",
+    "Find and Replace": "尋找與取代", "Find": "尋找", "Replace with": "取代為",
+    "&Match case": "大小寫須相符(&M)", "&Whole words": "全字拼寫須相符(&W)", "Search result": "搜尋結果",
+    "F&ind:": "尋找(&I)：", "Re&place with:": "取代為(&P)：", "Find &Next": "找下一個(&N)",
+    "Find Pre&vious": "找上一個(&V)", "&Replace": "取代(&R)", "Replace &All": "全部取代(&A)",
+    "\u201c%1\u201d not found": "找不到「%1」", "Found on line %1": "在第 %1 行找到", "%n replaced": "已取代 %n 處",
+    "Tactus": "Tactus", "Preview": "預覽", "Motion": "運動", "Vibration": "振動", "Printer profile": "印表機設定檔",
+    "Braille toolbar": "點字工具列", "&Table:": "點字表(&T)：", "Position": "位置", "Status": "狀態",
+    "&New": "新增(&N)", "&Open or Import...": "開啟或匯入(&O)...", "&Save": "儲存(&S)", "Save &As...": "另存新檔(&A)...",
+    "Export &BRF...": "匯出 BRF(&B)...", "Export &PEF...": "匯出 PEF(&P)...", "&Quit": "結束(&Q)",
+    "&Undo": "復原(&U)", "&Redo": "重做(&R)", "&Find and Replace...": "尋找與取代(&F)...",
+    "Go to &print text": "移到明眼字(&P)", "Go to &braille": "移到點字(&B)", "Go to pre&view": "移到預覽(&V)",
+    "Choose braille &table": "選擇點字表(&T)", "Go to &motion": "移到運動(&M)", "Go to vi&bration": "移到振動(&B)",
+    "Go to printer pro&file": "移到印表機設定檔(&F)", "&Keyboard Shortcuts": "鍵盤快速鍵(&K)", "&About Tactus": "關於 Tactus(&A)",
+    "&File": "檔案(&F)", "Open &Recent": "最近開啟(&R)", "&Edit": "編輯(&E)", "&View": "檢視(&V)", "&Help": "說明(&H)",
+    "Translating with %1": "正在以 %1 轉譯", "Cannot use table %1: %2": "無法使用點字表 %1：%2", "Braille table: %1": "點字表：%1",
+    "Open or import": "開啟或匯入",
+    "Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)",
+    "Opening %1": "正在開啟 %1", "Cancel": "取消", "%1 percent": "百分之 %1",
+    "Cancelled; the document is unchanged": "已取消，文件未變更", "Cannot open %1: %2": "無法開啟 %1：%2",
+    "the document": "文件", "Opened %1: %n sheet(s)": "已開啟 %1：%n 張",
+    "%n line(s) could not be translated; they are left out of the braille": "有 %n 行無法轉譯，未列入點字",
+    "Sheet %1 of %2%3 | line %4 | cell %5 | print page %6": "第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁",
+    ", back": "，背面", ", front": "，正面", "Untitled": "未命名", "Save as Markdown": "另存為 Markdown",
+    "Markdown (*.md)": "Markdown (*.md)", "Saved %1": "已儲存 %1", "untitled": "未命名", "PEF (*.pef)": "PEF (*.pef)",
+    "Braille ASCII (*.brf)": "點字 ASCII (*.brf)", "Export": "匯出", "Cannot export %1: %2": "無法匯出 %1：%2",
+    "Exported %1 (%n sheet(s))": "已匯出 %1（%n 張）", "Print preview to PDF": "將預覽列印為 PDF", "PDF (*.pdf)": "PDF (*.pdf)",
+    "Wrote proof %1": "已寫出校稿 %1", "Save the changes to %1?": "要儲存對 %1 的變更嗎？",
+    "Cannot plan the job: %1": "無法規劃列印工作：%1", "Cannot read the autosaved copy %1: %2": "無法讀取自動儲存的副本 %1：%2",
+    "Recovered": "已復原", "Recovered unsaved changes to %1": "已復原 %1 未儲存的變更", "an untitled document": "未命名文件",
+    "Recover unsaved work": "復原未儲存的內容",
+    "Tactus closed without saving %1 (autosaved %2). Recover it?": "Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？",
+    "Keyboard Shortcuts": "鍵盤快速鍵", "Shortcuts": "快速鍵", "Action": "動作", "Shortcut": "快速鍵",
+    "Braille pane: dots 1 2 3 4 5 6 (chord, released together)": "點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）",
+    "F D S J K L": "F D S J K L", "Braille pane: blank cell / erase cell": "點字窗格：空方 / 刪除點字方",
+    "Space / Backspace, Delete": "空白鍵 / 退格鍵、刪除鍵", "Preview: move between cells / lines": "預覽：在點字方 / 行之間移動",
+    "Arrow keys": "方向鍵", "Preview: turn to the other side": "預覽：翻到另一面", "Space": "空白鍵",
+    "Preview: previous / next sheet": "預覽：上一張 / 下一張", "PgUp / PgDown": "PgUp / PgDown",
+    "Move between panes": "在窗格之間移動", "Tab / Shift+Tab": "Tab / Shift+Tab", "About Tactus": "關於 Tactus",
+    "<p><b>Tactus %1</b></p><p>Braille editor and embosser print manager.</p><p>Licensed under the GNU GPL, version 3 or later.</p>":
+        "<p><b>Tactus %1</b></p><p>點字編輯器與點字印表機管理程式。</p><p>依 GNU GPL 第 3 版或更新版本授權。</p>",
+    "Sheet": "紙張", "Pass": "行程", "Quantity": "物理量", "Position (mm)": "位置 (mm)", "Velocity (mm/s)": "速度 (mm/s)",
+    "Acceleration (mm/s\u00b2)": "加速度 (mm/s\u00b2)", "Jerk (mm/s\u00b3)": "加加速度 (mm/s\u00b3)",
+    "Compare &profile shapes": "比較運動曲線(&P)", "S&heet:": "紙張(&H)：", "P&ass:": "行程(&A)：", "&Show:": "顯示(&S)：",
+    "Carriage motion chart": "筆架運動圖", "Time estimates": "時間估計", "Profile shapes on this pass": "此行程的各種運動曲線",
+    "Profile shape": "運動曲線", "Pass time": "行程時間", "Versus lower bound": "相對於下限", "Strikes of this pass": "此行程的擊點",
+    "Time (ms)": "時間 (ms)", "Carriage (mm)": "筆架 (mm)", "Side": "面", "Residual (\u00b5m)": "殘留振動 (\u00b5m)",
+    "No plan yet": "尚未規劃",
+    "Sheet %1: %2 (lower bound %3, %4). Document, %5 sheets: %6 (lower bound %7, %8).":
+        "第 %1 張：%2（下限 %3，%4）。整份文件 %5 張：%6（下限 %7，%8）。",
+    "This sheet is blank.": "這張是空白的。", "Pass %1 (%2, %3 strikes): %4, lower bound %5.": "行程 %1（%2，%3 個擊點）：%4，下限 %5。",
+    "Planned (auto-tuned)": "規劃（自動調校）", "Strikes": "擊點", "Trapezoid": "梯形", "S-curve (smoothstep)": "S 曲線（smoothstep）",
+    "Jerk-limited (7 segments)": "限制加加速度（7 段）", "Sheet %1, pass %2": "第 %1 張，行程 %2",
+    "%1 against time for sheet %2, pass %3: %4 strikes over %5; from %6 to %7. The strike table lists the same data.":
+        "第 %2 張行程 %3 的%1對時間：%4 個擊點，歷時 %5；範圍 %6 到 %7。擊點表列出相同資料。",
+    "Preview scroll area": "預覽捲動區", "&Front": "正面(&F)", "&Back": "背面(&B)", "Front &and back": "正面與背面(&A)",
+    "&Previous sheet": "上一張(&P)", "&Next sheet": "下一張(&N)", "Zoom &in": "放大(&I)", "Zoom &out": "縮小(&O)",
+    "&High contrast": "高對比(&H)", "Print preview to P&DF...": "將預覽列印為 PDF(&D)...", "Preview controls": "預覽控制",
+    "Preview status": "預覽狀態", "Print text": "明眼字",
+    "One paragraph per line: # for headings, - for list items, *italic*, **bold**": "每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**",
+    "Paper": "紙張", "Width": "寬度", "mm": "mm", "Height": "高度", "Left margin": "左邊界", "Top margin": "上邊界",
+    "Braille geometry": "點字幾何", "Dot pitch": "點距", "Cell pitch": "方距", "Line pitch": "行距",
+    "Back offset across": "背面水平偏移", "Back offset down": "背面垂直偏移", "Head and carriage": "打點頭與筆架",
+    "Concave hammer offset": "凹錘偏移", "Hammer dwell": "擊錘停留", "s": "秒", "Carriage steps": "筆架步數", "steps/mm": "步/mm",
+    "Carriage top speed": "筆架最高速度", "mm/s": "mm/s", "Carriage acceleration": "筆架加速度", "mm/s\u00b2": "mm/s\u00b2",
+    "Carriage jerk": "筆架加加速度", "mm/s\u00b3": "mm/s\u00b3", "Carriage backlash": "筆架背隙", "Dynamics and vibration": "動態與振動",
+    "Head mass": "打點頭質量", "kg": "kg", "Belt stiffness": "皮帶剛性", "N/m": "N/m", "Damping ratio": "阻尼比",
+    "Position tolerance at the strike": "擊點時的位置容許誤差", "\u00b5m": "\u00b5m", "Profile fields": "設定檔欄位",
+    "Profile check": "設定檔檢查", "&Load profile...": "載入設定檔(&L)...", "Sa&ve profile...": "儲存設定檔(&V)...",
+    "&Defaults": "預設值(&D)", "Load printer profile": "載入印表機設定檔", "Profiles (*.json)": "設定檔 (*.json)",
+    "Save printer profile": "儲存印表機設定檔", "%1 to %2 %3": "%1 到 %2 %3", "%1 in %2": "%1（%2）",
+    "Range %1; profile field %2": "範圍 %1；設定檔欄位 %2",
+    "%1 %2. The plan and preview keep the last valid profile.": "%1 %2。規劃與預覽仍使用上一個有效的設定檔。",
+    "Profile is valid.": "設定檔有效。", "Cannot load %1: %2": "無法載入 %1：%2", "Loaded profile %1": "已載入設定檔 %1",
+    "Cannot save %1: %2": "無法儲存 %1：%2", "Saved profile to %1": "已將設定檔儲存到 %1",
+    "Interpoint preview": "雙面點字預覽",
+    "Arrow keys move between cells; Page Up and Page Down change sheet": "方向鍵在點字方之間移動；Page Up 與 Page Down 換頁",
+    "Sheet %1 %2, line %3, cell %4": "第 %1 張%2，第 %3 行，第 %4 方", ": no page": "：沒有這一頁", ": blank": "：空方",
+    "dots %1": "第 %1 點", ", in the word \u201c%1\u201d": "，在「%1」中", "No document": "沒有文件", "Sheet %1 of %2": "第 %1 張，共 %2 張",
+    "; %n front and back dots too close": "；有 %n 組正背面點距離過近", "Braille table": "點字表",
+    "The language and braille code the print is translated with": "用來轉譯明眼字的語言與點字系統",
+    "Step response against the targets": "步階響應與目標比較", "Value": "數值", "Target": "目標", "Result": "結果",
+    "Natural frequencies": "自然頻率", "Residual vibration at the strikes": "擊點時的殘留振動",
+    "Residual vibration histogram": "殘留振動直方圖", "Frequency response chart": "頻率響應圖", "pass": "通過", "FAIL": "未通過",
+    "Overshoot": "超越量", "%1 %": "%1 %", "< %1 %": "< %1 %", "Rise time (10-90 %)": "上升時間（10-90 %）", "%1 ms": "%1 ms",
+    "< %1 ms": "< %1 ms", "Settling time (2 %)": "安定時間（2 %）", "never settles": "無法安定",
+    "%1 model; natural frequencies %2 Hz; \u221a(k/m) = %3 rad/s; damping ratio %4.": "%1模型；自然頻率 %2 Hz；\u221a(k/m) = %3 rad/s；阻尼比 %4。",
+    "Two-inertia": "雙慣量", "One-inertia": "單慣量", "Magnitude (dB)": "增益 (dB)", "Phase (degrees)": "相位（度）",
+    "Frequency (Hz)": "頻率 (Hz)", "dB": "dB", "degrees": "度", "Head position versus command": "打點頭位置對命令",
+    "Peak %1 dB at %2 Hz; %3 points from %4 to %5 Hz.": "峰值 %1 dB 於 %2 Hz；%3 個點，從 %4 到 %5 Hz。",
+    "All targets met": "全部達到目標", "Some targets are not met": "部分未達目標", "sheet %1, pass %2": "第 %1 張行程 %2",
+    "Nominal machine": "標稱機器", "Worst case over the band": "參數範圍內最差情況", "Residual up to (\u00b5m)": "殘留振動上限 (\u00b5m)",
+    "Residual vibration per strike": "每個擊點的殘留振動", "Strikes": "擊點",
+    "%1 strikes on %2 planned sheets: worst case %3 \u00b5m at %4 (tolerance %5 \u00b5m) \u2014 %6.":
+        "已規劃 %2 張共 %1 個擊點：最差 %3 \u00b5m，位於%4（容許 %5 \u00b5m）\u2014 %6。",
+    "within tolerance": "在容許範圍內", "OVER TOLERANCE": "超出容許範圍",
+}
+
+
+def main(path):
+    tree = ET.parse(path)
+    done = missing = 0
+    for message in tree.iter("message"):
+        source = message.findtext("source")
+        tr = message.find("translation")
+        if tr is None:
+            tr = ET.SubElement(message, "translation")
+        text = T.get(source)
+        if text is None and source and source.startswith("Ctrl") or source in ("Shift+F1",):
+            text = source  # key names stay as they are
+        if text is None:
+            missing += 1
+            continue
+        for child in list(tr):
+            tr.remove(child)
+        if message.get("numerus") == "yes":
+            tr.text = None
+            ET.SubElement(tr, "numerusform").text = text
+        else:
+            tr.text = text
+        tr.attrib.pop("type", None)
+        done += 1
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    print(f"{done} translated, {missing} left in English")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "resources/i18n/tactus_zh_TW.ts")

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The braille side of the editor: one paragraph per print paragraph, in Unicode
+// braille. It is never edited as text; keys become cell edits that the editor
+// applies to the document (so one undo stack covers print and braille), with
+// six-key chord entry, space and backspace, and Unicode braille typed or pasted.
+#include <QPlainTextEdit>
+
+#include "document/cell.hpp"
+#include "six_key.hpp"
+
+namespace tactus::gui {
+
+class BraillePane : public QPlainTextEdit {
+    Q_OBJECT
+public:
+    explicit BraillePane(QWidget* parent = nullptr);
+    SixKeyChord& chord() { return chord_; }
+
+Q_SIGNALS:
+    void cells_typed(const tactus::BrailleLine& cells);  // replaces the selection
+    void erase_backward();
+    void erase_forward();
+    void new_paragraph();
+
+protected:
+    void keyPressEvent(QKeyEvent* e) override;
+    void keyReleaseEvent(QKeyEvent* e) override;
+    void focusOutEvent(QFocusEvent* e) override;
+    void insertFromMimeData(const QMimeData* source) override;
+    bool canInsertFromMimeData(const QMimeData* source) const override;
+    bool event(QEvent* e) override;
+
+private:
+    SixKeyChord chord_;
+};
+
+// The print side: forwards dropped files to the window instead of pasting their
+// names, and leaves undo/redo to the window's undo stack.
+class PrintPane : public QPlainTextEdit {
+    Q_OBJECT
+public:
+    explicit PrintPane(QWidget* parent = nullptr);
+
+Q_SIGNALS:
+    void files_dropped(const QStringList& paths);
+
+protected:
+    bool canInsertFromMimeData(const QMimeData* source) const override;
+    void insertFromMimeData(const QMimeData* source) override;
+    bool event(QEvent* e) override;
+};
+
+}  // namespace tactus::gui

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "document_loader.hpp"
+
+#include <QPromise>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "editor_lines.hpp"
+#include "import/import.hpp"
+
+namespace tactus::gui {
+namespace {
+
+constexpr int kImportShare = 10;  // percent of the progress bar for reading the file
+
+LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const LayoutOptions& options,
+                    const std::function<bool(int)>& progress) {
+    auto result = std::make_shared<LoadResult>();
+    auto layout = LiveLayout::create(tables, options);
+    if (!layout) {
+        result->error = layout.error();
+        return result;
+    }
+    const bool done = layout->reset(std::move(lines), [&](std::size_t i, std::size_t n) {
+        const int pct = kImportShare + static_cast<int>((100 - kImportShare) * (n ? static_cast<double>(i) / static_cast<double>(n) : 1.0));
+        return progress ? progress(pct) : false;
+    });
+    if (!done) {
+        result->cancelled = true;
+        return result;
+    }
+    result->layout = std::move(*layout);
+    return result;
+}
+
+LoadResultPtr load(const QString& path, const std::string& tables, const LayoutOptions& options,
+                   const std::function<bool(int)>& progress) {
+    auto doc = import_file(path.toStdString());
+    if (!doc) {
+        auto r = std::make_shared<LoadResult>();
+        r->error = doc.error();
+        r->path = path;
+        return r;
+    }
+    if (progress && progress(kImportShare)) {
+        auto r = std::make_shared<LoadResult>();
+        r->cancelled = true;
+        return r;
+    }
+    auto r = build(render_editor_lines(*doc), tables, options, progress);
+    r->path = path;
+    return r;
+}
+
+std::function<bool(int)> reporter(QPromise<LoadResultPtr>& promise) {
+    promise.setProgressRange(0, 100);
+    return [&promise](int pct) {
+        promise.setProgressValue(pct);
+        return promise.isCanceled();
+    };
+}
+
+}  // namespace
+
+QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const LayoutOptions& options) {
+    return QtConcurrent::run([path, tables, options](QPromise<LoadResultPtr>& promise) {
+        promise.addResult(load(path, tables, options, reporter(promise)));
+    });
+}
+
+QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
+                                     const LayoutOptions& options) {
+    return QtConcurrent::run([lines = std::move(lines), tables, options](QPromise<LoadResultPtr>& promise) mutable {
+        promise.addResult(build(std::move(lines), tables, options, reporter(promise)));
+    });
+}
+
+LoadResultPtr load_file_now(const QString& path, const std::string& tables, const LayoutOptions& options) {
+    return load(path, tables, options, {});
+}
+
+}  // namespace tactus::gui

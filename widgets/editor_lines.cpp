@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "editor_lines.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "common/utf8.hpp"
+#include "import/import.hpp"
+
+namespace tactus::gui {
+namespace {
+
+constexpr std::string_view kInlineSpecials = "\\*_[]<>`&~";
+
+bool is_space(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (is_space(s.front()) || s.front() == '\r')) s.remove_prefix(1);
+    while (!s.empty() && (is_space(s.back()) || s.back() == '\r' || s.back() == '\n'))
+        s.remove_suffix(1);
+    return s;
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Length of "12." / "3)" at the start of s, 0 when there is none.
+std::size_t ordinal_length(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && i < 9 && is_digit(s[i])) ++i;
+    if (i == 0 || i >= s.size() || (s[i] != '.' && s[i] != ')')) return 0;
+    return i + 1;
+}
+
+// Thematic break: three or more of one of - * _, nothing else but spaces.
+bool is_thematic_break(std::string_view s) {
+    if (s.empty() || (s[0] != '-' && s[0] != '*' && s[0] != '_')) return false;
+    int count = 0;
+    for (char c : s) {
+        if (c == s[0]) ++count;
+        else if (!is_space(c)) return false;
+    }
+    return count >= 3;
+}
+
+// "<!-- name rest -->" -> rest (trimmed), when the comment starts with `name`.
+std::optional<std::string> comment_argument(std::string_view s, std::string_view name) {
+    if (!s.starts_with("<!--") || !s.ends_with("-->") || s.size() < 7) return std::nullopt;
+    auto body = trim(s.substr(4, s.size() - 7));
+    if (!body.starts_with(name)) return std::nullopt;
+    auto rest = body.substr(name.size());
+    if (!rest.empty() && !is_space(rest.front()) && rest.front() != ':') return std::nullopt;
+    rest = trim(rest);
+    if (rest.starts_with(':')) rest = trim(rest.substr(1));
+    return std::string(rest);
+}
+
+// Inline Markdown (emphasis, escapes) through core's importer; plain text takes
+// the fast path, which is nearly every line of a real book.
+std::vector<Span> parse_inline(std::string_view content) {
+    if (content.find_first_of(kInlineSpecials) == std::string_view::npos)
+        return content.empty() ? std::vector<Span>{} : std::vector<Span>{Span{std::string(content)}};
+    ImportOptions options;
+    options.format = SourceFormat::markdown;
+    options.encoding = "UTF-8";
+    auto doc = import_bytes(content, "line.md", options);
+    if (!doc) return {Span{std::string(content)}};
+    std::vector<Span> spans;
+    for (const auto& b : doc->blocks)
+        for (const auto& s : b.spans) {
+            if (!spans.empty() && spans.back().emphasis == s.emphasis) spans.back().text += s.text;
+            else spans.push_back(s);
+        }
+    return spans;
+}
+
+std::string escape_inline(std::string_view text) {
+    std::string out;
+    out.reserve(text.size() + 8);
+    for (char c : text) {
+        if (kInlineSpecials.find(c) != std::string_view::npos) out.push_back('\\');
+        out.push_back(c);
+    }
+    return out;
+}
+
+// Keeps a paragraph's first characters from reading as a heading, list or break.
+std::string guard_line_start(std::string s) {
+    if (s.empty()) return s;
+    if (const auto n = ordinal_length(s); n > 0 && n < s.size() + 1) {
+        s.insert(n - 1, 1, '\\');
+        return s;
+    }
+    if (std::string_view("#-+=>|").find(s[0]) != std::string_view::npos) s.insert(0, 1, '\\');
+    return s;
+}
+
+std::string render_spans(const std::vector<Span>& spans) {
+    std::string out;
+    for (const auto& span : spans) {
+        std::string_view t = span.text;
+        const auto mark = (span.emphasis & emphasis_bold) && (span.emphasis & emphasis_italic)
+                              ? std::string_view("***")
+                          : (span.emphasis & emphasis_bold)   ? std::string_view("**")
+                          : (span.emphasis & emphasis_italic) ? std::string_view("*")
+                                                              : std::string_view();
+        const auto core = trim(t);
+        if (mark.empty() || core.empty()) {
+            out += escape_inline(t);
+            continue;
+        }
+        // Emphasis marks must touch the words: keep surrounding spaces outside.
+        const auto lead = static_cast<std::size_t>(core.data() - t.data());
+        out += std::string(t.substr(0, lead));
+        out += mark;
+        out += escape_inline(core);
+        out += mark;
+        out += std::string(t.substr(lead + core.size()));
+    }
+    return out;
+}
+
+}  // namespace
+
+bool is_braille_line(std::string_view utf8) {
+    if (utf8.empty()) return false;
+    auto text = utf8_to_utf32(utf8);
+    if (!text || text->empty()) return false;
+    return std::ranges::all_of(*text, [](char32_t c) { return Cell::is_unicode_braille(c); });
+}
+
+std::optional<Block> parse_editor_line(std::string_view line) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.remove_suffix(1);
+    const auto t = trim(line);
+    if (t.empty()) return std::nullopt;
+    Block b;
+    if (is_braille_line(t)) {
+        b.kind = BlockKind::braille;
+        BrailleLine cells;
+        const auto text = utf8_to_utf32(t);
+        for (char32_t c : *text) cells.push_back(Cell::from_unicode(c));
+        b.braille_lines.push_back(std::move(cells));
+        return b;
+    }
+    if (is_thematic_break(t)) {
+        b.kind = BlockKind::print_page_break;
+        return b;
+    }
+    if (auto label = comment_argument(t, "pagebreak")) {
+        b.kind = BlockKind::print_page_break;
+        b.label = *label;
+        return b;
+    }
+    if (comment_argument(t, "braillepage")) {
+        b.kind = BlockKind::braille_page_break;
+        return b;
+    }
+    std::size_t hashes = 0;
+    while (hashes < t.size() && t[hashes] == '#') ++hashes;
+    if (hashes >= 1 && hashes <= 6 && (hashes == t.size() || is_space(t[hashes]))) {
+        b.kind = BlockKind::heading;
+        b.level = static_cast<int>(hashes);
+        b.spans = parse_inline(trim(t.substr(hashes)));
+        return b;
+    }
+    std::size_t indent = 0;
+    while (indent < line.size() && line[indent] == ' ') ++indent;
+    const auto rest = line.substr(indent);
+    const bool bullet = rest.size() >= 2 && (rest[0] == '-' || rest[0] == '*' || rest[0] == '+') &&
+                        is_space(rest[1]);
+    const auto ordinal = ordinal_length(rest);
+    if (bullet || (ordinal > 0 && ordinal < rest.size() && is_space(rest[ordinal]))) {
+        b.kind = BlockKind::list_item;
+        b.level = static_cast<int>(indent / 2) + 1;
+        if (bullet) {
+            b.spans = parse_inline(trim(rest.substr(2)));
+        } else {
+            // Numbered items keep their number as text, as core's Markdown import does.
+            b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
+            const auto number = std::string(rest.substr(0, ordinal)) + " ";
+            if (!b.spans.empty() && b.spans.front().emphasis == emphasis_none)
+                b.spans.front().text.insert(0, number);
+            else
+                b.spans.insert(b.spans.begin(), Span{number});
+        }
+        return b;
+    }
+    b.kind = BlockKind::paragraph;
+    b.spans = parse_inline(t);
+    return b;
+}
+
+std::string render_editor_line(const Block& b) {
+    switch (b.kind) {
+        case BlockKind::heading:
+            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " +
+                   render_spans(b.spans);
+        case BlockKind::list_item: {
+            std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
+            auto spans = b.spans;
+            const auto ordinal =
+                spans.empty() ? 0 : ordinal_length(spans.front().text);
+            if (ordinal > 0 && ordinal < spans.front().text.size() &&
+                spans.front().text[ordinal] == ' ') {
+                out += spans.front().text.substr(0, ordinal + 1);
+                spans.front().text.erase(0, ordinal + 1);
+                return out + render_spans(spans);
+            }
+            return out + "- " + render_spans(spans);
+        }
+        case BlockKind::print_page_break:
+            return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
+        case BlockKind::braille_page_break:
+            return "<!-- braillepage -->";
+        case BlockKind::braille: {
+            std::string out;
+            for (std::size_t i = 0; i < b.braille_lines.size(); ++i) {
+                if (i) out += '\n';
+                out += b.braille_lines[i].empty() ? to_unicode_text({Cell{}})
+                                                  : to_unicode_text(b.braille_lines[i]);
+            }
+            return out;
+        }
+        case BlockKind::paragraph:
+            break;
+    }
+    return guard_line_start(render_spans(b.spans));
+}
+
+std::vector<std::string> render_editor_lines(const Document& document) {
+    std::vector<std::string> lines;
+    lines.reserve(document.blocks.size());
+    for (const auto& b : document.blocks) {
+        if (b.kind == BlockKind::braille) {
+            for (const auto& l : b.braille_lines)
+                lines.push_back(l.empty() ? to_unicode_text({Cell{}}) : to_unicode_text(l));
+            continue;
+        }
+        auto line = render_editor_line(b);
+        if (b.kind == BlockKind::paragraph && trim(line).empty()) continue;
+        lines.push_back(std::move(line));
+    }
+    return lines;
+}
+
+std::string editor_line_content(std::string_view line) {
+    const auto block = parse_editor_line(line);
+    if (!block) return {};
+    if (block->kind == BlockKind::braille || block->kind == BlockKind::print_page_break ||
+        block->kind == BlockKind::braille_page_break)
+        return {};
+    return block->text();
+}
+
+}  // namespace tactus::gui

@@ -1,0 +1,343 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "editor_widget.hpp"
+
+#include <QRegularExpression>
+#include <QTextBlock>
+#include <QTextCursor>
+
+#include "braille_pane.hpp"
+#include "cursor_map.hpp"
+#include "editor_lines.hpp"
+
+namespace tactus::gui {
+namespace {
+
+// One step of the print document's own undo history, driven by the window's stack.
+class TextUndoCommand : public QUndoCommand {
+public:
+    explicit TextUndoCommand(QTextDocument* doc) : doc_(doc) { setText(QObject::tr("typing")); }
+    void undo() override { doc_->undo(); }
+    void redo() override {
+        if (first_) {  // the edit has already happened when the command is pushed
+            first_ = false;
+            return;
+        }
+        doc_->redo();
+    }
+
+private:
+    QTextDocument* doc_;
+    bool first_ = true;
+};
+
+int prefix_length(const QString& line) {
+    static const QRegularExpression prefix(QStringLiteral(R"(^(#{1,6}\s+|\s*[-*+]\s+))"));
+    const auto m = prefix.match(line);
+    return m.hasMatch() ? static_cast<int>(m.capturedLength()) : 0;
+}
+
+bool is_mark(QChar c) { return c == QLatin1Char('*') || c == QLatin1Char('_') || c == QLatin1Char('\\'); }
+
+}  // namespace
+
+int content_column(const QString& line, int column) {
+    const int start = prefix_length(line);
+    int out = 0;
+    for (int i = start; i < std::min(column, static_cast<int>(line.size())); ++i)
+        if (!is_mark(line[i])) ++out;
+    return out;
+}
+
+int line_column(const QString& line, int content) {
+    int i = prefix_length(line);
+    for (int seen = 0; i < line.size(); ++i) {
+        if (is_mark(line[i])) continue;
+        if (seen++ == content) return i;
+    }
+    return static_cast<int>(line.size());
+}
+
+EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) {
+    setObjectName(QStringLiteral("editor"));
+    setChildrenCollapsible(false);
+    print_ = new PrintPane(this);
+    braille_ = new BraillePane(this);
+    undo_ = new QUndoStack(this);
+    // Braille cells need more size than letters for the dots to be told apart.
+    QFont mono(QStringLiteral("DejaVu Sans Mono"));
+    mono.setStyleHint(QFont::Monospace);
+    mono.setPointSizeF(font().pointSizeF() * 1.6);
+    braille_->setFont(mono);
+    addWidget(print_);
+    addWidget(braille_);
+    setStretchFactor(0, 1);
+    setStretchFactor(1, 1);
+
+    auto* doc = print_->document();
+    doc->setUndoRedoEnabled(true);
+    connect(doc, &QTextDocument::undoCommandAdded, this,
+            [this, doc] { undo_->push(new TextUndoCommand(doc)); });
+    connect(doc, &QTextDocument::contentsChange, this, &EditorWidget::on_contents_change);
+    connect(print_, &QPlainTextEdit::cursorPositionChanged, this, &EditorWidget::sync_from_print);
+    connect(print_, &QPlainTextEdit::selectionChanged, this, &EditorWidget::sync_from_print);
+    connect(braille_, &QPlainTextEdit::cursorPositionChanged, this, &EditorWidget::sync_from_braille);
+    connect(braille_, &BraillePane::cells_typed, this, &EditorWidget::braille_typed);
+    connect(braille_, &BraillePane::erase_backward, this, [this] { braille_erase(true); });
+    connect(braille_, &BraillePane::erase_forward, this, [this] { braille_erase(false); });
+    connect(braille_, &BraillePane::new_paragraph, this, &EditorWidget::braille_new_paragraph);
+    connect(print_, &PrintPane::files_dropped, this, &EditorWidget::files_dropped);
+}
+
+EditorWidget::~EditorWidget() = default;
+
+QString EditorWidget::braille_text(std::size_t line) const {
+    return QString::fromStdString(to_unicode_text(layout_->braille_of(line)));
+}
+
+void EditorWidget::adopt(LiveLayout layout) {
+    layout_ = std::move(layout);
+    syncing_ = true;
+    QStringList print, braille;
+    print.reserve(static_cast<qsizetype>(layout_->line_count()));
+    for (std::size_t i = 0; i < layout_->line_count(); ++i) {
+        print << QString::fromStdString(layout_->line(i));
+        braille << braille_text(i);
+    }
+    {
+        const QSignalBlocker block(print_->document());
+        print_->document()->setPlainText(print.join(QLatin1Char('\n')));
+    }
+    braille_->document()->setPlainText(braille.join(QLatin1Char('\n')));
+    known_blocks_ = print_->document()->blockCount();
+    // An empty document is one empty line for the widget: keep the layout in step.
+    if (layout_->line_count() != static_cast<std::size_t>(known_blocks_))
+        layout_->replace(0, layout_->line_count(), std::vector<std::string>(static_cast<std::size_t>(known_blocks_)));
+    undo_->clear();
+    undo_->setClean();
+    print_->document()->clearUndoRedoStacks();
+    print_->moveCursor(QTextCursor::Start);
+    syncing_ = false;
+    Q_EMIT layout_changed();
+    sync_from_print();
+}
+
+void EditorWidget::swap_layout(LiveLayout layout) {
+    layout_ = std::move(layout);
+    refresh_braille();
+}
+
+Result<void> EditorWidget::set_tables(const std::string& tables) {
+    if (!layout_) return fail("no document", "table");
+    if (auto ok = layout_->set_tables(tables); !ok) return ok;
+    refresh_braille();
+    return {};
+}
+
+void EditorWidget::refresh_braille() {
+    syncing_ = true;
+    QStringList braille;
+    for (std::size_t i = 0; i < layout_->line_count(); ++i) braille << braille_text(i);
+    braille_->document()->setPlainText(braille.join(QLatin1Char('\n')));
+    syncing_ = false;
+    Q_EMIT layout_changed();
+    sync_from_print();
+}
+
+Result<void> EditorWidget::set_layout_options(const LayoutOptions& options) {
+    if (!layout_) return fail("no document", "layout");
+    if (auto ok = layout_->set_options(options); !ok) return ok;
+    Q_EMIT layout_changed();
+    sync_from_print();
+    return {};
+}
+
+QString EditorWidget::text() const { return print_->document()->toPlainText(); }
+
+void EditorWidget::on_contents_change(int position, int removed, int added) {
+    if (!layout_) return;
+    Q_UNUSED(removed);
+    auto* doc = print_->document();
+    const int first = doc->findBlock(position).blockNumber();
+    const int last = doc->findBlock(position + added).blockNumber();
+    const int now = doc->blockCount();
+    const int count = std::max(0, last - first + 1);
+    const int old_count = count - (now - known_blocks_);
+    known_blocks_ = now;
+    std::vector<std::string> lines;
+    lines.reserve(static_cast<std::size_t>(count));
+    for (auto b = doc->findBlockByNumber(first); b.isValid() && b.blockNumber() <= last; b = b.next())
+        lines.push_back(b.text().toStdString());
+    last_stats_ = layout_->replace(static_cast<std::size_t>(first), static_cast<std::size_t>(std::max(0, old_count)),
+                                   std::move(lines));
+    replace_braille_blocks(first, std::max(0, old_count), count);
+    Q_EMIT layout_changed();
+}
+
+void EditorWidget::replace_braille_blocks(int first, int removed, int count) {
+    const bool was = syncing_;
+    syncing_ = true;
+    auto* doc = braille_->document();
+    QStringList lines;
+    for (int i = first; i < first + count; ++i) lines << braille_text(static_cast<std::size_t>(i));
+    QTextCursor c(doc);
+    const auto start = doc->findBlockByNumber(first);
+    if (removed > 0 && start.isValid()) {
+        const auto end = doc->findBlockByNumber(first + removed - 1);
+        c.setPosition(start.position());
+        c.setPosition(end.position() + end.length() - 1, QTextCursor::KeepAnchor);
+        c.insertText(lines.join(QLatin1Char('\n')));
+    } else if (start.isValid()) {
+        c.setPosition(start.position());
+        c.insertText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+    } else {
+        c.movePosition(QTextCursor::End);
+        c.insertText(QLatin1Char('\n') + lines.join(QLatin1Char('\n')));
+    }
+    syncing_ = was;
+}
+
+int EditorWidget::current_line() const { return print_->textCursor().blockNumber(); }
+
+std::size_t EditorWidget::current_cell() const {
+    if (!layout_) return 0;
+    const auto c = print_->textCursor();
+    const auto line = c.block().text();
+    const auto i = static_cast<std::size_t>(c.blockNumber());
+    if (i >= layout_->line_count()) return 0;
+    const auto cells = layout_->braille_of(i);
+    if (is_braille_line(line.toStdString()))
+        return std::min(static_cast<std::size_t>(c.positionInBlock()), cells.size());
+    const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
+    return print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock())), cells);
+}
+
+PagePosition EditorWidget::current_position() const {
+    if (!layout_) return {};
+    return layout_->position_of(static_cast<std::size_t>(current_line()), current_cell());
+}
+
+void EditorWidget::sync_from_print() {
+    if (syncing_ || !layout_) return;
+    syncing_ = true;
+    const auto pc = print_->textCursor();
+    const auto map_pos = [&](int pos) {
+        const auto block = print_->document()->findBlock(pos);
+        const auto line = block.text();
+        const auto i = static_cast<std::size_t>(block.blockNumber());
+        const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : BrailleLine{};
+        std::size_t cell;
+        if (is_braille_line(line.toStdString())) {
+            cell = std::min(static_cast<std::size_t>(pos - block.position()), cells.size());
+        } else {
+            const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
+            cell = print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position())), cells);
+        }
+        const auto bb = braille_->document()->findBlockByNumber(block.blockNumber());
+        return bb.isValid() ? bb.position() + std::min(static_cast<int>(cell), bb.length() - 1) : 0;
+    };
+    QTextCursor bc(braille_->document());
+    bc.setPosition(map_pos(pc.anchor()));
+    bc.setPosition(map_pos(pc.position()), QTextCursor::KeepAnchor);
+    braille_->setTextCursor(bc);
+    braille_->ensureCursorVisible();
+    syncing_ = false;
+    Q_EMIT position_changed(current_position());
+}
+
+void EditorWidget::sync_from_braille() {
+    if (syncing_ || !layout_) return;
+    syncing_ = true;
+    const auto bc = braille_->textCursor();
+    const auto map_pos = [&](int pos) {
+        const auto bblock = braille_->document()->findBlock(pos);
+        const auto i = static_cast<std::size_t>(bblock.blockNumber());
+        const auto pblock = print_->document()->findBlockByNumber(bblock.blockNumber());
+        if (!pblock.isValid() || i >= layout_->line_count()) return 0;
+        const auto line = pblock.text();
+        const auto cell = static_cast<std::size_t>(pos - bblock.position());
+        if (is_braille_line(line.toStdString()))
+            return pblock.position() + std::min(static_cast<int>(cell), pblock.length() - 1);
+        const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
+        const auto col = braille_to_print(layout_->braille_of(i), cell, content);
+        return pblock.position() + std::min(line_column(line, static_cast<int>(col)), pblock.length() - 1);
+    };
+    QTextCursor pc(print_->document());
+    pc.setPosition(map_pos(bc.anchor()));
+    pc.setPosition(map_pos(bc.position()), QTextCursor::KeepAnchor);
+    print_->setTextCursor(pc);
+    print_->ensureCursorVisible();
+    syncing_ = false;
+    if (layout_) {
+        const auto i = static_cast<std::size_t>(bc.blockNumber());
+        Q_EMIT position_changed(layout_->position_of(i, static_cast<std::size_t>(bc.positionInBlock())));
+    }
+}
+
+void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t to, const BrailleLine& cells) {
+    if (!layout_ || line >= layout_->line_count()) return;
+    auto current = layout_->braille_of(line);
+    from = std::min(from, current.size());
+    to = std::clamp(to, from, current.size());
+    current.erase(current.begin() + static_cast<std::ptrdiff_t>(from), current.begin() + static_cast<std::ptrdiff_t>(to));
+    current.insert(current.begin() + static_cast<std::ptrdiff_t>(from), cells.begin(), cells.end());
+    // The paragraph becomes verbatim braille: the print line holds its cells.
+    const auto block = print_->document()->findBlockByNumber(static_cast<int>(line));
+    QTextCursor c(block);
+    c.beginEditBlock();
+    c.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+    c.insertText(QString::fromStdString(to_unicode_text(current)));
+    c.endEditBlock();
+    // Put the braille caret after what was typed.
+    const auto bb = braille_->document()->findBlockByNumber(static_cast<int>(line));
+    QTextCursor bc(bb);
+    bc.setPosition(bb.position() + static_cast<int>(from + cells.size()));
+    braille_->setTextCursor(bc);
+}
+
+void EditorWidget::braille_typed(const BrailleLine& cells) {
+    const auto c = braille_->textCursor();
+    const auto line = static_cast<std::size_t>(braille_->document()->findBlock(c.selectionStart()).blockNumber());
+    const auto start_block = braille_->document()->findBlock(c.selectionStart());
+    const auto end_block = braille_->document()->findBlock(c.selectionEnd());
+    const auto from = static_cast<std::size_t>(c.selectionStart() - start_block.position());
+    // A selection running over several paragraphs is cut at the end of the first.
+    const auto to = end_block == start_block ? static_cast<std::size_t>(c.selectionEnd() - start_block.position())
+                                             : static_cast<std::size_t>(start_block.length() - 1);
+    edit_braille(line, from, to, cells);
+}
+
+void EditorWidget::braille_erase(bool backward) {
+    const auto c = braille_->textCursor();
+    const auto block = c.block();
+    const auto line = static_cast<std::size_t>(block.blockNumber());
+    if (c.hasSelection()) {
+        braille_typed({});
+        return;
+    }
+    const auto at = static_cast<std::size_t>(c.positionInBlock());
+    if (backward && at == 0) {
+        // At the start of a paragraph backspace joins it to the one above, as in print.
+        if (line == 0) return;
+        QTextCursor pc(print_->document()->findBlockByNumber(static_cast<int>(line)));
+        pc.deletePreviousChar();
+        return;
+    }
+    if (backward) edit_braille(line, at - 1, at, {});
+    else if (at < static_cast<std::size_t>(block.length() - 1)) edit_braille(line, at, at + 1, {});
+    if (!backward) {
+        QTextCursor bc(block);
+        bc.setPosition(block.position() + static_cast<int>(at));
+        braille_->setTextCursor(bc);
+    }
+}
+
+void EditorWidget::braille_new_paragraph() {
+    const auto line = braille_->textCursor().blockNumber();
+    QTextCursor pc(print_->document()->findBlockByNumber(line));
+    pc.movePosition(QTextCursor::EndOfBlock);
+    pc.insertText(QStringLiteral("\n"));
+    const auto bb = braille_->document()->findBlockByNumber(line + 1);
+    braille_->setTextCursor(QTextCursor(bb));
+}
+
+}  // namespace tactus::gui

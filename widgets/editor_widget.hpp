@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Print and braille side by side over one live layout. Typing in the print pane
+// re-translates the lines it touched and re-lays pages from their sheet; cell
+// edits in the braille pane turn that paragraph into verbatim braille. Both go
+// through the print document, so one QUndoStack undoes either.
+#include <QSplitter>
+#include <QUndoStack>
+#include <memory>
+#include <optional>
+
+#include "live_layout.hpp"
+
+namespace tactus::gui {
+
+class BraillePane;
+class PrintPane;
+
+class EditorWidget : public QSplitter {
+    Q_OBJECT
+public:
+    explicit EditorWidget(QWidget* parent = nullptr);
+    ~EditorWidget() override;
+
+    // Takes a layout built elsewhere (a worker thread) and shows its lines.
+    void adopt(LiveLayout layout);
+    [[nodiscard]] bool has_layout() const { return layout_.has_value(); }
+    [[nodiscard]] const LiveLayout& layout() const { return *layout_; }
+    // A layout of the same lines built elsewhere (new table or options off-thread):
+    // the print text and its undo history stay.
+    void swap_layout(LiveLayout layout);
+    Result<void> set_tables(const std::string& tables);
+    Result<void> set_layout_options(const LayoutOptions& options);
+
+    [[nodiscard]] QString text() const;  // the document as Markdown, one block per line
+    [[nodiscard]] PrintPane* print_pane() const { return print_; }
+    [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
+    [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
+    [[nodiscard]] const RelayoutStats& last_stats() const { return last_stats_; }
+
+    // The print line and column of the cursor; the braille cell it maps to.
+    [[nodiscard]] int current_line() const;
+    [[nodiscard]] std::size_t current_cell() const;
+    [[nodiscard]] PagePosition current_position() const;
+
+    // Cell edits on line `line`: replace cells [from, to) with `cells`.
+    void edit_braille(std::size_t line, std::size_t from, std::size_t to, const BrailleLine& cells);
+
+Q_SIGNALS:
+    void layout_changed();
+    void position_changed(const tactus::gui::PagePosition& position);
+    void files_dropped(const QStringList& paths);
+
+private:
+    void refresh_braille();
+    void on_contents_change(int position, int removed, int added);
+    void replace_braille_blocks(int first, int removed, int count);
+    void sync_from_print();
+    void sync_from_braille();
+    void braille_typed(const BrailleLine& cells);
+    void braille_erase(bool backward);
+    void braille_new_paragraph();
+    [[nodiscard]] QString braille_text(std::size_t line) const;
+
+    PrintPane* print_ = nullptr;
+    BraillePane* braille_ = nullptr;
+    QUndoStack* undo_ = nullptr;
+    std::optional<LiveLayout> layout_;
+    int known_blocks_ = 1;
+    bool syncing_ = false;
+    RelayoutStats last_stats_;
+};
+
+// Column in the editor line <-> column in its content (without Markdown marks).
+int content_column(const QString& line, int column);
+int line_column(const QString& line, int content_column);
+
+}  // namespace tactus::gui

@@ -1,0 +1,391 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "live_layout.hpp"
+
+#include <algorithm>
+
+#include "common/utf8.hpp"
+#include "editor_lines.hpp"
+#include "layout/line_breaker.hpp"
+#include "layout/paginator.hpp"
+
+namespace tactus::gui {
+namespace {
+
+BrailleLine cells_of_unicode(const std::string& utf8) {
+    BrailleLine cells;
+    if (auto u = utf8_to_utf32(utf8))
+        for (char32_t c : *u)
+            if (Cell::is_unicode_braille(c)) cells.push_back(Cell::from_unicode(c));
+    return cells;
+}
+
+// "12" -> "13"; "iv" or "" -> "" (the reader sees no number rather than a wrong one).
+std::string next_label(const std::string& label) {
+    if (label.empty() || !std::ranges::all_of(label, [](char c) { return c >= '0' && c <= '9'; }))
+        return {};
+    return std::to_string(std::stol(label) + 1);
+}
+
+// Mirrors Paginator::numbered: interpoint backs carry no page number.
+bool numbered_page(const LayoutOptions& o, std::size_t page) {
+    return o.page_numbers != PageNumberPosition::none && (!o.geometry.interpoint || page % 2 == 0);
+}
+
+}  // namespace
+
+Result<LiveLayout> LiveLayout::create(const std::string& tables, LayoutOptions options) {
+    if (auto ok = validate(options); !ok) return std::unexpected(ok.error());
+    auto translator = Translator::open(tables);
+    if (!translator) return std::unexpected(translator.error());
+    LiveLayout l(std::move(*translator), std::move(options));
+    l.relayout_from(0);
+    return l;
+}
+
+BrailleLine LiveLayout::number_cells(int n) {
+    if (auto it = numbers_.find(n); it != numbers_.end()) return it->second;
+    const auto digits = std::to_string(n);
+    auto cells = translator_.translate(std::u32string(digits.begin(), digits.end()));
+    return numbers_.emplace(n, cells ? std::move(*cells) : BrailleLine{}).first->second;
+}
+
+void LiveLayout::translate_entry(std::size_t i) {
+    auto& e = entries_[i];
+    e.block = parse_editor_line(e.line);
+    e.error.reset();
+    e.translated = TranslatedBlock{};
+    if (!e.block) return;
+    if (e.block->kind == BlockKind::print_page_break && e.block->label.empty()) {
+        // "---" continues the numbering of the page break above it; the first is page 2.
+        std::string label = "2";
+        for (std::size_t j = i; j-- > 0;) {
+            const auto& b = entries_[j].block;
+            if (b && b->kind == BlockKind::print_page_break) {
+                label = next_label(b->label);
+                break;
+            }
+        }
+        e.block->label = label;
+    }
+    auto tb = translate_block(*e.block, translator_);
+    if (!tb) {
+        e.error = located(tb.error(), "line " + std::to_string(i + 1));
+        return;
+    }
+    e.translated = std::move(*tb);
+    // A braille line longer than a page line is a paragraph typed or edited as
+    // braille: wrap it at word spaces instead of cutting it.
+    const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
+    if (e.translated.kind == BlockKind::braille && e.translated.lines.size() == 1 &&
+        e.translated.lines.front().size() > static_cast<std::size_t>(width))
+        e.translated.lines = break_lines(e.translated.lines.front(), width, 0, 0);
+}
+
+bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress) {
+    entries_.clear();
+    entries_.resize(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i) entries_[i].line = std::move(lines[i]);
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+        translate_entry(i);
+        if (progress && i % 256 == 0 && progress(i, entries_.size())) return false;
+    }
+    paged_ = {};
+    relayout_from(0);
+    if (progress) progress(entries_.size(), entries_.size());
+    return true;
+}
+
+RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
+                                  std::vector<std::string> lines) {
+    first = std::min(first, entries_.size());
+    removed = std::min(removed, entries_.size() - first);
+    const auto at = entries_.begin() + static_cast<std::ptrdiff_t>(first);
+    const bool removed_breaks = std::any_of(at, at + static_cast<std::ptrdiff_t>(removed), [](const Entry& e) {
+        return e.block && e.block->kind == BlockKind::print_page_break;
+    });
+    entries_.erase(at, at + static_cast<std::ptrdiff_t>(removed));
+    std::vector<Entry> fresh(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i) fresh[i].line = std::move(lines[i]);
+    entries_.insert(entries_.begin() + static_cast<std::ptrdiff_t>(first),
+                    std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
+    RelayoutStats stats;
+    // Page breaks change the print page of every page after them: no early stop then.
+    bool breaks_touched = removed_breaks;
+    for (std::size_t i = first; i < first + fresh.size(); ++i) {
+        translate_entry(i);
+        ++stats.lines_translated;
+        const auto& b = entries_[i].block;
+        breaks_touched = breaks_touched || (b && b->kind == BlockKind::print_page_break);
+    }
+    // A changed page break renumbers the unlabelled breaks after it, up to the next labelled one.
+    for (std::size_t i = first + fresh.size(); i < entries_.size(); ++i) {
+        const auto& b = entries_[i].block;
+        if (!b || b->kind != BlockKind::print_page_break) continue;
+        if (parse_editor_line(entries_[i].line)->label.empty()) {
+            translate_entry(i);
+            ++stats.lines_translated;
+            continue;
+        }
+        break;
+    }
+    auto layout = relayout_from(first, breaks_touched ? npos : first + fresh.size());
+    layout.lines_translated = stats.lines_translated;
+    return layout;
+}
+
+Result<void> LiveLayout::set_tables(const std::string& tables) {
+    auto translator = Translator::open(tables);
+    if (!translator) return std::unexpected(translator.error());
+    translator_ = std::move(*translator);
+    numbers_.clear();
+    for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
+    paged_ = {};
+    relayout_from(0);
+    return {};
+}
+
+Result<void> LiveLayout::set_options(LayoutOptions options) {
+    if (auto ok = validate(options); !ok) return ok;
+    options_ = std::move(options);
+    for (std::size_t i = 0; i < entries_.size(); ++i)  // braille lines wrap to the new width
+        if (entries_[i].block && entries_[i].block->kind == BlockKind::braille) translate_entry(i);
+    paged_ = {};
+    relayout_from(0);
+    return {};
+}
+
+int LiveLayout::body_top(std::size_t page) const {
+    const bool on_top = numbered_page(options_, page) &&
+                        options_.page_numbers == PageNumberPosition::top_right;
+    return options_.top_margin + (on_top ? 1 : 0);
+}
+
+int LiveLayout::body_capacity(std::size_t page) const {
+    const int lines = options_.geometry.lines_per_page - options_.top_margin - options_.bottom_margin;
+    return numbered_page(options_, page) ? lines - 1 : lines;
+}
+
+RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged_from) {
+    // Restart point: an entry before the edit that starts on a sheet front, moved
+    // back to the first entry starting on that page so no page break lies between
+    // the top of the page and the restart (the page's own print page then holds).
+    std::size_t k = first == 0 || entries_.empty() ? 0 : std::min(first, entries_.size()) - 1;
+    const auto sheet_front = [&](std::size_t p) {
+        return !options_.geometry.interpoint || p % 2 == 0;
+    };
+    while (k > 0 && !sheet_front(entries_[k].pages_before)) --k;
+    while (k > 0 && entries_[k - 1].pages_before == entries_[k].pages_before) --k;
+    std::size_t base = k == 0 ? 0 : entries_[k].pages_before;
+    if (k > 0 && (base > paged_.pages.size() ||
+                  (base == paged_.pages.size() && entries_[k].lines_before > 0))) {
+        k = 0;
+        base = 0;
+    }
+
+    LayoutOptions opts = options_;
+    opts.first_page_number = options_.first_page_number + static_cast<int>(base);
+    Paginator pag(opts, [this](int n) { return number_cells(n); });
+    if (k > 0 && base < paged_.pages.size()) {
+        const Page& top = paged_.pages[base];
+        TranslatedBlock mark;
+        mark.kind = BlockKind::print_page_break;
+        mark.label = cells_of_unicode(top.print_page);
+        pag.add(mark);  // empty body: sets the print page without drawing a separator
+        const auto lines = entries_[k].lines_before;
+        if (lines > 0) {
+            // The body lines already on the restart page, as the page holds them.
+            TranslatedBlock body;
+            body.kind = BlockKind::braille;
+            const auto row0 = static_cast<std::size_t>(body_top(base));
+            const auto margin = static_cast<std::ptrdiff_t>(options_.left_margin);
+            for (std::size_t r = row0; r < row0 + lines && r < top.lines.size(); ++r) {
+                const auto& l = top.lines[r];
+                body.lines.emplace_back(l.size() > static_cast<std::size_t>(margin) ? l.begin() + margin : l.end(),
+                                        l.end());
+            }
+            pag.add(body);
+        }
+    }
+    std::vector<Page> old = std::move(paged_.pages);
+    paged_.pages.clear();
+    paged_.pages.reserve(old.size() + 8);
+    for (std::size_t p = 0; p < base && p < old.size(); ++p) paged_.pages.push_back(std::move(old[p]));
+
+    // Same page, same lines on it, same content: everything after is what it was.
+    const auto same_state = [&](const Entry& e) {
+        const auto page = base + pag.pages_closed();
+        if (page != e.pages_before || pag.body_lines() != e.lines_before || page >= old.size())
+            return false;
+        const auto& rows = old[page].lines;
+        const auto row0 = static_cast<std::size_t>(body_top(page));
+        const auto margin = static_cast<std::size_t>(options_.left_margin);
+        for (std::size_t r = 0; r < pag.body().size(); ++r) {
+            const auto& mine = pag.body()[r];
+            const auto& theirs = rows[row0 + r];
+            if (mine.empty() ? !theirs.empty()
+                             : theirs.size() != mine.size() + margin ||
+                                   !std::equal(mine.begin(), mine.end(), theirs.begin() + static_cast<std::ptrdiff_t>(margin)))
+                return false;
+        }
+        return true;
+    };
+
+    RelayoutStats stats;
+    stats.first_page_relaid = base;
+    std::vector<std::string> warnings;
+    std::size_t j = k;
+    for (; j < entries_.size(); ++j) {
+        auto& e = entries_[j];
+        if (j >= unchanged_from && same_state(e)) {
+            stats.converged = true;
+            break;
+        }
+        e.pages_before = base + pag.pages_closed();
+        e.lines_before = pag.body_lines();
+        if (e.block && !e.error) pag.add(e.translated);
+    }
+    if (stats.converged) {
+        const auto resume = base + pag.pages_closed();
+        const auto& tail = pag.closed();
+        stats.pages_relaid = tail.pages.size();
+        paged_.pages.insert(paged_.pages.end(), tail.pages.begin(), tail.pages.end());
+        for (std::size_t p = resume; p < old.size(); ++p) paged_.pages.push_back(std::move(old[p]));
+        warnings = tail.warnings;
+    } else if (!(base > 0 && pag.pages_closed() == 0 && pag.body_lines() == 0)) {
+        auto tail = std::move(pag).finish();
+        stats.pages_relaid = tail.pages.size();
+        for (auto& p : tail.pages) paged_.pages.push_back(std::move(p));
+        warnings = std::move(tail.warnings);
+    }
+    paged_.geometry = options_.geometry;
+    if (base == 0) paged_.warnings.clear();
+    for (auto& w : warnings)
+        if (std::ranges::find(paged_.warnings, w) == paged_.warnings.end())
+            paged_.warnings.push_back(std::move(w));
+    return stats;
+}
+
+BrailleLine LiveLayout::braille_of(std::size_t i) const {
+    const auto& e = entries_[i];
+    if (!e.block || e.error) return {};
+    switch (e.translated.kind) {
+        case BlockKind::braille: {
+            // The line as written, before any wrapping (so columns match the print line).
+            BrailleLine all;
+            for (const auto& l : e.block->braille_lines) all.insert(all.end(), l.begin(), l.end());
+            return all;
+        }
+        case BlockKind::print_page_break:
+            return e.translated.label;
+        case BlockKind::braille_page_break:
+            return {};
+        default:
+            return e.translated.cells;
+    }
+}
+
+std::size_t LiveLayout::error_count() const {
+    return static_cast<std::size_t>(std::ranges::count_if(entries_, [](const Entry& e) { return e.error.has_value(); }));
+}
+
+PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
+    PagePosition pos;
+    if (entries_.empty()) return pos;
+    i = std::min(i, entries_.size() - 1);
+    const auto& e = entries_[i];
+    pos.page = e.pages_before;
+    int line = static_cast<int>(e.lines_before);
+    int column = 0;
+    const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
+    const auto& tb = e.translated;
+    if (e.block && !e.error &&
+        (tb.kind == BlockKind::paragraph || tb.kind == BlockKind::heading || tb.kind == BlockKind::list_item)) {
+        int first = options_.paragraph_indent, runover = 0;
+        bool centre = false;
+        if (tb.kind == BlockKind::heading) {
+            centre = options_.centre_headings && tb.level <= 2;
+            first = runover = centre ? 0 : 4;
+            if (options_.blank_line_before_heading && line > 0) ++line;
+        } else if (tb.kind == BlockKind::list_item) {
+            first = std::min(2 * std::max(tb.level - 1, 0), width / 2);
+            runover = first + options_.list_runover;
+        }
+        // Count the written cells before the target; blanks at line ends vanish when wrapping.
+        cell = std::min(cell, tb.cells.size());
+        std::size_t target = 0;
+        for (std::size_t c = 0; c < cell; ++c) if (!tb.cells[c].blank()) ++target;
+        const auto lines = break_lines(tb.cells, width, first, runover);
+        std::size_t seen = 0;
+        for (std::size_t l = 0; l < lines.size(); ++l) {
+            int pad = 0;
+            if (centre) {
+                auto len = lines[l].size();
+                while (len > 0 && lines[l][len - 1].blank()) --len;
+                pad = std::max(0, (width - static_cast<int>(len)) / 2);
+            }
+            const auto& cells = lines[l];
+            std::size_t c = 0;
+            while (c < cells.size() && cells[c].blank()) ++c;
+            bool found = false;
+            for (; c < cells.size(); ++c) {
+                if (cells[c].blank()) continue;
+                if (seen == target) {
+                    found = true;
+                    break;
+                }
+                ++seen;
+            }
+            if (found || l + 1 == lines.size()) {
+                line += static_cast<int>(l);
+                column = pad + static_cast<int>(std::min(c, cells.size()));
+                break;
+            }
+        }
+    }
+    while (line >= body_capacity(pos.page) && pos.page + 1 < paged_.pages.size()) {
+        line -= body_capacity(pos.page);
+        ++pos.page;
+    }
+    pos.line = body_top(pos.page) + line;
+    pos.cell = options_.left_margin + column;
+    if (pos.page >= paged_.pages.size() && !paged_.pages.empty()) pos.page = paged_.pages.size() - 1;
+    return pos;
+}
+
+std::size_t LiveLayout::line_at(std::size_t page, int line) const {
+    if (entries_.empty()) return 0;
+    const auto row = static_cast<std::size_t>(std::max(0, line - body_top(page)));
+    auto it = std::upper_bound(entries_.begin(), entries_.end(), std::pair{page, row},
+                               [](const std::pair<std::size_t, std::size_t>& key, const Entry& e) {
+                                   return key < std::pair{e.pages_before, e.lines_before};
+                               });
+    std::size_t i = it == entries_.begin() ? 0 : static_cast<std::size_t>(it - entries_.begin()) - 1;
+    while (i > 0 && !entries_[i].block) --i;
+    return i;
+}
+
+std::string LiveLayout::print_page_of(std::size_t page) const {
+    if (entries_.empty()) return {};
+    for (std::size_t i = line_at(page, 0) + 1; i-- > 0;) {
+        const auto& b = entries_[i].block;
+        if (b && b->kind == BlockKind::print_page_break &&
+            (entries_[i].pages_before < page || (entries_[i].pages_before == page && entries_[i].lines_before == 0)))
+            return b->label;
+    }
+    return "1";
+}
+
+std::string LiveLayout::print_page_at(std::size_t line) const {
+    for (std::size_t i = std::min(line + 1, entries_.size()); i-- > 0;) {
+        const auto& b = entries_[i].block;
+        if (b && b->kind == BlockKind::print_page_break) return b->label;
+    }
+    return "1";
+}
+
+std::string LiveLayout::back_translate(const BrailleLine& cells) const {
+    auto text = translator_.back_translate(cells);
+    return text ? utf32_to_utf8(*text) : std::string{};
+}
+
+}  // namespace tactus::gui

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The editor's incremental pipeline: one entry per editor line with its parsed
+// block and cached translation. An edit re-translates only the lines it changed,
+// then lays pages out again from the start of the sheet holding the first changed
+// line (the pages before it cannot change). No Qt here: the widgets, the tests and
+// the benchmark all drive it directly.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "common/result.hpp"
+#include "layout/layout_options.hpp"
+#include "layout/page.hpp"
+#include "translate/translated_document.hpp"
+#include "translate/translator.hpp"
+
+namespace tactus::gui {
+
+// Where a cell of the document sits on paper.
+struct PagePosition {
+    std::size_t page = 0;  // 0-based index into PagedDocument::pages
+    int line = 0;          // 0-based line on the page
+    int cell = 0;          // 0-based cell on the line
+};
+
+struct RelayoutStats {
+    std::size_t lines_translated = 0;  // editor lines sent to liblouis
+    std::size_t first_page_relaid = 0; // layout restarted at this page (a sheet front)
+    std::size_t pages_relaid = 0;      // pages the paginator produced again
+    bool converged = false;            // the old layout was reused after the edit
+};
+
+class LiveLayout {
+public:
+    // Cancels a long build when it returns true; receives (done, total).
+    using Progress = std::function<bool(std::size_t, std::size_t)>;
+
+    static Result<LiveLayout> create(const std::string& tables, LayoutOptions options);
+
+    // Replaces everything; translates every line. Returns false when cancelled.
+    bool reset(std::vector<std::string> lines, const Progress& progress = {});
+    // Replaces `removed` lines starting at `first` with `lines`.
+    RelayoutStats replace(std::size_t first, std::size_t removed, std::vector<std::string> lines);
+    // New table or layout options: everything is translated and laid out again.
+    Result<void> set_tables(const std::string& tables);
+    Result<void> set_options(LayoutOptions options);
+
+    [[nodiscard]] const PagedDocument& paged() const { return paged_; }
+    [[nodiscard]] const LayoutOptions& options() const { return options_; }
+    [[nodiscard]] const std::string& tables() const { return translator_.tables(); }
+    [[nodiscard]] std::size_t line_count() const { return entries_.size(); }
+    [[nodiscard]] const std::string& line(std::size_t i) const { return entries_[i].line; }
+    // The braille of one editor line as the braille pane shows it (unwrapped).
+    [[nodiscard]] BrailleLine braille_of(std::size_t i) const;
+    [[nodiscard]] const std::optional<Error>& error_of(std::size_t i) const { return entries_[i].error; }
+    [[nodiscard]] std::size_t error_count() const;
+
+    // Where cell `cell` of line `i`'s braille lands on paper (after wrapping).
+    [[nodiscard]] PagePosition position_of(std::size_t i, std::size_t cell = 0) const;
+    // The editor line whose braille starts at or before this page line.
+    [[nodiscard]] std::size_t line_at(std::size_t page, int line) const;
+    // The print page in effect at the top of a page, and at an editor line
+    // (print pages count from "1" until the first page break).
+    [[nodiscard]] std::string print_page_of(std::size_t page) const;
+    [[nodiscard]] std::string print_page_at(std::size_t line) const;
+
+    // What liblouis reads back from cells, for the proofreader and screen readers.
+    [[nodiscard]] std::string back_translate(const BrailleLine& cells) const;
+    [[nodiscard]] const Translator& translator() const { return translator_; }
+
+private:
+    struct Entry {
+        std::string line;
+        std::optional<Block> block;
+        TranslatedBlock translated;
+        std::optional<Error> error;
+        std::size_t pages_before = 0;  // paginator state before this entry
+        std::size_t lines_before = 0;
+    };
+
+    LiveLayout(Translator translator, LayoutOptions options)
+        : translator_(std::move(translator)), options_(std::move(options)) {}
+
+    void translate_entry(std::size_t i);
+    // Lays out entries from `first` on, restarting at a sheet boundary at or before it.
+    // From entry `unchanged_from` on, the old layout is reused as soon as the
+    // paginator reaches exactly the state it had there before (npos: never).
+    RelayoutStats relayout_from(std::size_t first, std::size_t unchanged_from = npos);
+    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+    BrailleLine number_cells(int n);
+    [[nodiscard]] int body_top(std::size_t page) const;
+    [[nodiscard]] int body_capacity(std::size_t page) const;
+
+    Translator translator_;
+    LayoutOptions options_;
+    std::vector<Entry> entries_;
+    PagedDocument paged_;
+    std::unordered_map<int, BrailleLine> numbers_;
+};
+
+}  // namespace tactus::gui

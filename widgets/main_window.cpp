@@ -1,0 +1,817 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "main_window.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressDialog>
+#include <QSaveFile>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <unistd.h>
+
+#include "announcer.hpp"
+#include "braille_pane.hpp"
+#include "editor_widget.hpp"
+#include "export/export.hpp"
+#include "find_replace.hpp"
+#include "motion_view.hpp"
+#if __has_include("link/link.hpp")
+#define TACTUS_GUI_HAS_PRINTER 1
+#include "printer_panel.hpp"
+#endif
+#include "profile_editor.hpp"
+#include "vibration_view.hpp"
+#include "preview_panel.hpp"
+#include "sheet_geometry.hpp"
+#include "system_look.hpp"
+#include "table_picker.hpp"
+#include "translate/catalogue.hpp"
+
+namespace tactus::gui {
+namespace {
+
+constexpr int kMaxRecent = 8;
+constexpr std::size_t kSynchronousRelayoutLines = 3000;  // above: new tables re-lay off-thread
+
+QString autosave_dir() {
+    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave");
+}
+
+bool write_atomically(const QString& path, const QByteArray& bytes, QString* error) {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        *error = QObject::tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), f.errorString());
+        return false;
+    }
+    if (f.write(bytes) != bytes.size() || !f.commit()) {
+        *error = QObject::tr("Saving %1 failed: %2").arg(QDir::toNativeSeparators(path), f.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool process_alive(qint64 pid) { return pid > 0 && QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid)); }
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName(QStringLiteral("mainWindow"));
+    setAccessibleName(tr("Tactus"));
+    setAcceptDrops(true);
+    announcer_ = new Announcer(this);
+
+    editor_ = new EditorWidget(this);
+    setCentralWidget(editor_);
+    auto empty = LiveLayout::create(kDefaultTable, {});
+    if (empty) editor_->adopt(std::move(*empty));
+
+    preview_ = new PreviewPanel(this);
+    add_dock(tr("Preview"), QStringLiteral("previewDock"), preview_, Qt::RightDockWidgetArea);
+    motion_ = new MotionView(this);
+    vibration_ = new VibrationView(this);
+    profile_ = new ProfileEditor(this);
+    // The technicians' views share the right-hand area with the preview, as tabs:
+    // a teacher sees print, braille and the sheet; one key brings up the others.
+    auto* preview_dock = findChild<QDockWidget*>(QStringLiteral("previewDock"));
+    auto* motion_dock = add_dock(tr("Motion"), QStringLiteral("motionDock"), motion_, Qt::RightDockWidgetArea);
+    auto* vibration_dock = add_dock(tr("Vibration"), QStringLiteral("vibrationDock"), vibration_, Qt::RightDockWidgetArea);
+    auto* profile_dock = add_dock(tr("Printer profile"), QStringLiteral("profileDock"), profile_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(preview_dock, motion_dock);
+    tabifyDockWidget(motion_dock, vibration_dock);
+    tabifyDockWidget(vibration_dock, profile_dock);
+#ifdef TACTUS_GUI_HAS_PRINTER
+    printer_ = new PrinterPanel(this);
+    auto* printer_dock = add_dock(tr("Printer"), QStringLiteral("printerDock"), printer_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(profile_dock, printer_dock);
+    connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
+    connect(printer_, &PrinterPanel::job_finished, this,
+            [this](int, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
+#endif
+    preview_dock->raise();
+    plan_timer_.setSingleShot(true);
+    plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
+    connect(&plan_timer_, &QTimer::timeout, this, &MainWindow::start_plan);
+    connect(profile_, &ProfileEditor::profile_changed, this, [this](const profile::PrinterProfile& p) {
+        preview_->preview()->set_geometry(sheet_geometry(p));
+        vibration_->set_profile(p);
+        schedule_plan();
+    });
+    // Profile problems are spoken and shown in the status bar, not in a box: the technician is typing.
+    connect(profile_, &ProfileEditor::message, this, [this](const QString& m, bool) { report(m, false); });
+
+    tables_ = new TablePicker(this);
+    auto* bar = addToolBar(tr("Braille"));
+    bar->setObjectName(QStringLiteral("brailleBar"));
+    bar->setAccessibleName(tr("Braille toolbar"));
+    auto* label = new QLabel(tr("&Table:"), this);
+    label->setBuddy(tables_);
+    bar->addWidget(label);
+    bar->addWidget(tables_);
+
+    status_ = new QLabel(this);
+    status_->setObjectName(QStringLiteral("positionLabel"));
+    status_->setAccessibleName(tr("Position"));
+    statusBar()->addPermanentWidget(status_);
+    statusBar()->setSizeGripEnabled(false);  // a grip has no accessible role; the window manager resizes
+    statusBar()->setAccessibleName(tr("Status"));
+
+    find_ = new FindReplaceDialog(editor_->print_pane(), this);
+    connect(find_, &FindReplaceDialog::message, this, [this](const QString& m) { report(m); });
+
+    auto* sp = preview_->preview();
+    sp->set_back_translator([this](const BrailleLine& cells) {
+        return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
+    });
+    connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
+        sp->set_document(&editor_->layout().paged());
+        update_status();
+        schedule_plan();
+    });
+    connect(editor_, &EditorWidget::position_changed, this, [this, sp](const PagePosition& p) {
+        if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
+        update_status();
+    });
+    connect(sp, &SheetPreview::cursor_moved, this, [this, sp](const QString& text) {
+        if (sp->hasFocus()) announcer_->announce(text);
+    });
+    connect(preview_, &PreviewPanel::print_pdf_requested, this, &MainWindow::print_pdf_dialog);
+    connect(editor_, &EditorWidget::files_dropped, this, [this](const QStringList& paths) {
+        if (!paths.isEmpty() && maybe_save()) open_file(paths.front());
+    });
+    connect(tables_, &TablePicker::table_chosen, this, &MainWindow::set_table);
+    connect(editor_->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
+
+    build_actions();
+    build_menus();
+    restore_settings();
+    apply_system_look(*this);
+    sp->set_document(&editor_->layout().paged());
+
+    autosave_timer_.setInterval(QSettings().value(QStringLiteral("autosave/seconds"), 30).toInt() * 1000);
+    connect(&autosave_timer_, &QTimer::timeout, this, [this] {
+        if (!editor_->undo_stack()->isClean()) autosave_now();
+    });
+    autosave_timer_.start();
+    update_title();
+    update_status();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::build_actions() {
+    const auto make = [this](const QString& text, const QKeySequence& key, const QString& name, auto slot) {
+        auto* a = new QAction(text, this);
+        a->setShortcut(key);
+        a->setObjectName(name);
+        a->setStatusTip(QString(text).remove(QLatin1Char('&')).remove(QStringLiteral("...")));
+        connect(a, &QAction::triggered, this, slot);
+        addAction(a);
+        return a;
+    };
+    new_ = make(tr("&New"), QKeySequence::New, QStringLiteral("fileNew"), [this] {
+        if (maybe_save()) new_document();
+    });
+    open_ = make(tr("&Open or Import..."), QKeySequence::Open, QStringLiteral("fileOpen"), [this] { open_dialog(); });
+    save_ = make(tr("&Save"), QKeySequence::Save, QStringLiteral("fileSave"), [this] { save(); });
+    save_as_ = make(tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")), QStringLiteral("fileSaveAs"), [this] { save_as(); });
+    export_brf_ = make(tr("Export &BRF..."), QKeySequence(tr("Ctrl+E")), QStringLiteral("exportBrf"),
+                       [this] { export_dialog(QStringLiteral("brf")); });
+    export_pef_ = make(tr("Export &PEF..."), QKeySequence(tr("Ctrl+Shift+E")), QStringLiteral("exportPef"),
+                       [this] { export_dialog(QStringLiteral("pef")); });
+    quit_ = make(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), QStringLiteral("fileQuit"), [this] { close(); });
+    undo_ = editor_->undo_stack()->createUndoAction(this, tr("&Undo"));
+    undo_->setShortcut(QKeySequence::Undo);
+    undo_->setObjectName(QStringLiteral("editUndo"));
+    redo_ = editor_->undo_stack()->createRedoAction(this, tr("&Redo"));
+    redo_->setShortcut(QKeySequence::Redo);
+    redo_->setObjectName(QStringLiteral("editRedo"));
+    addActions({undo_, redo_});
+    find_action_ = make(tr("&Find and Replace..."), QKeySequence::Find, QStringLiteral("editFind"), [this] {
+        find_->set_find_text(editor_->print_pane()->textCursor().selectedText());
+        find_->show();
+        find_->raise();
+        find_->activateWindow();
+    });
+    find_next_ = make(tr("Find &Next"), QKeySequence::FindNext, QStringLiteral("editFindNext"),
+                      [this] { find_->find_next(); });
+    focus_print_ = make(tr("Go to &print text"), QKeySequence(tr("Ctrl+1")), QStringLiteral("focusPrint"),
+                        [this] { editor_->print_pane()->setFocus(Qt::ShortcutFocusReason); });
+    focus_braille_ = make(tr("Go to &braille"), QKeySequence(tr("Ctrl+2")), QStringLiteral("focusBraille"),
+                          [this] { editor_->braille_pane()->setFocus(Qt::ShortcutFocusReason); });
+    focus_preview_ = make(tr("Go to pre&view"), QKeySequence(tr("Ctrl+3")), QStringLiteral("focusPreview"),
+                          [this] {
+                              show_panel(QStringLiteral("preview"));
+                              preview_->preview()->setFocus(Qt::ShortcutFocusReason);
+                          });
+    focus_table_ = make(tr("Choose braille &table"), QKeySequence(tr("Ctrl+T")), QStringLiteral("focusTable"), [this] {
+        tables_->setFocus(Qt::ShortcutFocusReason);
+        tables_->showPopup();
+    });
+    focus_motion_ = make(tr("Go to &motion"), QKeySequence(tr("Ctrl+4")), QStringLiteral("focusMotion"), [this] {
+        show_panel(QStringLiteral("motion"));
+        if (auto* first = motion_->findChild<QSpinBox*>()) first->setFocus(Qt::ShortcutFocusReason);
+    });
+    focus_vibration_ = make(tr("Go to vi&bration"), QKeySequence(tr("Ctrl+5")), QStringLiteral("focusVibration"), [this] {
+        show_panel(QStringLiteral("vibration"));
+        vibration_->metrics()->setFocus(Qt::ShortcutFocusReason);
+    });
+    focus_profile_ = make(tr("Go to printer pro&file"), QKeySequence(tr("Ctrl+6")), QStringLiteral("focusProfile"), [this] {
+        show_panel(QStringLiteral("profile"));
+        profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
+    });
+#ifdef TACTUS_GUI_HAS_PRINTER
+    focus_printer_ = make(tr("Go to p&rinter"), QKeySequence(tr("Ctrl+7")), QStringLiteral("focusPrinter"), [this] {
+        show_panel(QStringLiteral("printer"));
+        printer_->setFocus(Qt::ShortcutFocusReason);
+        if (auto* first = printer_->findChild<QComboBox*>()) first->setFocus(Qt::ShortcutFocusReason);
+    });
+    emboss_ = make(tr("&Emboss"), QKeySequence(tr("Ctrl+P")), QStringLiteral("fileEmboss"), [this] { emboss(); });
+#endif
+    shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
+                      [this] { show_shortcuts(); });
+    about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
+    for (auto* a : preview_->view_actions()) addAction(a);
+}
+
+void MainWindow::build_menus() {
+    auto* file = menuBar()->addMenu(tr("&File"));
+    file->addActions({new_, open_});
+    recent_menu_ = file->addMenu(tr("Open &Recent"));
+    recent_menu_->setObjectName(QStringLiteral("recentMenu"));
+    file->addSeparator();
+    file->addActions({save_, save_as_, export_brf_, export_pef_, preview_->pdf_action()});
+    if (emboss_) file->addAction(emboss_);
+    file->addSeparator();
+    file->addAction(quit_);
+    auto* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addActions({undo_, redo_});
+    edit->addSeparator();
+    edit->addActions({find_action_, find_next_});
+    editor_->print_pane()->addActions({undo_, redo_, find_action_});
+    auto* view = menuBar()->addMenu(tr("&View"));
+    view->addActions({focus_print_, focus_braille_, focus_preview_, focus_table_, focus_motion_, focus_vibration_,
+                      focus_profile_});
+    if (focus_printer_) view->addAction(focus_printer_);
+    view->addSeparator();
+    for (auto* a : preview_->view_actions())
+        if (a != preview_->pdf_action()) view->addAction(a);
+    auto* help = menuBar()->addMenu(tr("&Help"));
+    help->addActions({shortcuts_, about_});
+    update_recent_menu();
+}
+
+QList<QAction*> MainWindow::all_actions() const {
+    QList<QAction*> out;
+    for (auto* a : actions())
+        if (!a->text().isEmpty()) out << a;
+    return out;
+}
+
+void MainWindow::restore_settings() {
+    QSettings s;
+    resize(1280, 800);
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {700}, Qt::Horizontal);
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+    const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
+    if (table != QString::fromStdString(editor_->layout().tables())) set_table(table);
+}
+
+void MainWindow::set_table(const QString& table) {
+    tables_->set_table(table);
+    if (!editor_->has_layout() || table.toStdString() == editor_->layout().tables()) return;
+    QSettings().setValue(QStringLiteral("braille/table"), table);
+    if (editor_->layout().line_count() > kSynchronousRelayoutLines) {
+        std::vector<std::string> lines;
+        for (std::size_t i = 0; i < editor_->layout().line_count(); ++i) lines.push_back(editor_->layout().line(i));
+        start_busy(tr("Translating with %1").arg(tables_->currentText()),
+                   lay_out_lines(std::move(lines), table.toStdString(), editor_->layout().options()), false);
+        return;
+    }
+    if (auto ok = editor_->set_tables(table.toStdString()); !ok) {
+        report(tr("Cannot use table %1: %2").arg(table, QString::fromStdString(ok.error().to_string())), true);
+        return;
+    }
+    report(tr("Braille table: %1").arg(tables_->currentText()));
+}
+
+void MainWindow::new_document() {
+    auto layout = LiveLayout::create(editor_->layout().tables(), editor_->layout().options());
+    if (!layout) return;
+    remove_autosave();
+    editor_->adopt(std::move(*layout));
+    path_.clear();
+    update_title();
+}
+
+void MainWindow::open_dialog() {
+    if (!maybe_save()) return;
+    const auto path = QFileDialog::getOpenFileName(
+        this, tr("Open or import"), QFileInfo(path_).absolutePath(),
+        tr("Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)"));
+    if (!path.isEmpty()) open_file(path);
+}
+
+void MainWindow::open_file(const QString& path) {
+    if (busy_) return;
+    start_busy(tr("Opening %1").arg(QFileInfo(path).fileName()),
+               load_file(path, editor_->layout().tables(), editor_->layout().options()), true);
+}
+
+bool MainWindow::open_file_now(const QString& path) {
+    auto r = load_file_now(path, editor_->layout().tables(), editor_->layout().options());
+    finish_load(r, true);
+    return r->layout.has_value() || (!r->error && !r->cancelled);
+}
+
+void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text) {
+    auto* watcher = new QFutureWatcher<LoadResultPtr>(this);
+    busy_ = watcher;
+    editor_->print_pane()->setReadOnly(true);  // edits during a re-layout would be lost
+    progress_ = new QProgressDialog(what, tr("Cancel"), 0, 100, this);
+    progress_->setObjectName(QStringLiteral("progress"));
+    progress_->setAccessibleName(what);
+    progress_->setWindowModality(Qt::WindowModal);
+    progress_->setMinimumDuration(300);
+    connect(progress_, &QProgressDialog::canceled, watcher, [watcher] { watcher->cancel(); });
+    connect(watcher, &QFutureWatcher<LoadResultPtr>::progressValueChanged, progress_, [this](int v) {
+        progress_->setValue(v);
+        if (v % 25 == 0) announcer_->announce(tr("%1 percent").arg(v));
+    });
+    connect(watcher, &QFutureWatcher<LoadResultPtr>::finished, this, [this, watcher, replace_text] {
+        LoadResultPtr r;
+        if (watcher->future().resultCount() > 0) r = watcher->future().result();
+        if (!r) {
+            r = std::make_shared<LoadResult>();
+            r->cancelled = true;
+        }
+        progress_->deleteLater();
+        progress_ = nullptr;
+        busy_ = nullptr;
+        watcher->deleteLater();
+        editor_->print_pane()->setReadOnly(false);
+        finish_load(r, replace_text);
+    });
+    announcer_->announce(what);
+    watcher->setFuture(future);
+}
+
+void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
+    if (r->cancelled || (!r->layout && !r->error)) {
+        report(tr("Cancelled; the document is unchanged"));
+        return;
+    }
+    if (r->error) {
+        const auto where = QString::fromStdString(r->error->where);
+        report(tr("Cannot open %1: %2")
+                   .arg(QDir::toNativeSeparators(r->path.isEmpty() ? tr("the document") : r->path),
+                        QString::fromStdString(r->error->to_string())),
+               true);
+        Q_EMIT failed(QString::fromStdString(r->error->to_string()));
+        return;
+    }
+    if (replace_text) {
+        remove_autosave();
+        editor_->adopt(std::move(*r->layout));
+        const QFileInfo info(r->path);
+        const bool markdown = info.suffix().compare(QStringLiteral("md"), Qt::CaseInsensitive) == 0;
+        path_ = markdown ? info.absoluteFilePath() : QString();
+        source_name_ = info.fileName();
+        add_recent(info.absoluteFilePath());
+        update_title();
+        const auto& paged = editor_->layout().paged();
+        report(tr("Opened %1: %n sheet(s)", nullptr, static_cast<int>(paged.sheet_count())).arg(info.fileName()));
+        if (editor_->layout().error_count() > 0)
+            report(tr("%n line(s) could not be translated; they are left out of the braille", nullptr,
+                      static_cast<int>(editor_->layout().error_count())),
+                   true);
+        Q_EMIT opened(r->path);
+    } else {
+        editor_->swap_layout(std::move(*r->layout));
+        report(tr("Braille table: %1").arg(tables_->currentText()));
+    }
+}
+
+QString MainWindow::status_text() const {
+    if (!editor_->has_layout()) return {};
+    const auto& layout = editor_->layout();
+    const auto& paged = layout.paged();
+    const auto pos = editor_->current_position();
+    const bool interpoint = paged.geometry.interpoint;
+    const auto sheet = interpoint ? pos.page / 2 + 1 : pos.page + 1;
+    auto print_page = QString::fromStdString(layout.print_page_at(static_cast<std::size_t>(editor_->current_line())));
+    if (print_page.isEmpty()) print_page = QStringLiteral("-");
+    return tr("Sheet %1 of %2%3 | line %4 | cell %5 | print page %6")
+        .arg(sheet)
+        .arg(std::max<std::size_t>(1, paged.sheet_count()))
+        .arg(interpoint ? (pos.page % 2 ? tr(", back") : tr(", front")) : QString())
+        .arg(pos.line + 1)
+        .arg(pos.cell + 1)
+        .arg(print_page);
+}
+
+void MainWindow::update_status() {
+    status_->setText(status_text());
+    status_->setAccessibleDescription(status_->text());
+}
+
+void MainWindow::update_title() {
+    const auto name = !source_name_.isEmpty() ? source_name_ : tr("Untitled");
+    setWindowTitle(QStringLiteral("%1[*] \u2014 Tactus").arg(name));
+    setWindowModified(!editor_->undo_stack()->isClean());
+}
+
+void MainWindow::report(const QString& message, bool error) {
+    statusBar()->showMessage(message, 10000);
+    announcer_->announce(message);
+    if (error && interactive_ && isVisible()) QMessageBox::warning(this, tr("Tactus"), message);
+}
+
+bool MainWindow::save() { return path_.isEmpty() ? save_as() : save_to(path_); }
+
+bool MainWindow::save_as() {
+    auto suggested = path_;
+    if (suggested.isEmpty() && !source_name_.isEmpty())
+        suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
+    auto path = QFileDialog::getSaveFileName(this, tr("Save as Markdown"), suggested, tr("Markdown (*.md)"));
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".md");
+    return save_to(path);
+}
+
+bool MainWindow::save_to(const QString& path) {
+    // One block per editor line; Markdown needs a blank line between blocks.
+    QStringList blocks;
+    for (const auto& line : editor_->text().split(QLatin1Char('\n')))
+        if (!line.trimmed().isEmpty()) blocks << line;
+    QString error;
+    if (!write_atomically(path, (blocks.join(QStringLiteral("\n\n")) + QLatin1Char('\n')).toUtf8(), &error)) {
+        report(error, true);
+        return false;
+    }
+    path_ = QFileInfo(path).absoluteFilePath();
+    source_name_ = QFileInfo(path).fileName();
+    editor_->undo_stack()->setClean();
+    remove_autosave();
+    add_recent(path_);
+    update_title();
+    report(tr("Saved %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+void MainWindow::export_dialog(const QString& format) {
+    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto filter = format == QLatin1String("pef") ? tr("PEF (*.pef)") : tr("Braille ASCII (*.brf)");
+    auto path = QFileDialog::getSaveFileName(this, tr("Export"), base + QLatin1Char('.') + format, filter);
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QLatin1Char('.') + format;
+    export_to(path);
+}
+
+bool MainWindow::export_to(const QString& path) {
+    const auto& paged = editor_->layout().paged();
+    const auto suffix = QFileInfo(path).suffix().toLower();
+    Result<std::string> bytes = fail("unknown export format", suffix.toStdString());
+    if (suffix == QLatin1String("brf")) {
+        bytes = to_brf(paged);
+    } else if (suffix == QLatin1String("pef")) {
+        PefMetadata meta;
+        meta.title = QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString();
+        for (const auto& t : table_catalogue())
+            if (t.file == editor_->layout().tables()) meta.language = t.language_tag;
+        meta.date = QDate::currentDate().toString(Qt::ISODate).toStdString();
+        bytes = to_pef(paged, meta);
+    }
+    if (!bytes) {
+        report(tr("Cannot export %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(bytes.error().to_string())),
+               true);
+        return false;
+    }
+    QString error;
+    if (!write_atomically(path, QByteArray::fromStdString(*bytes), &error)) {
+        report(error, true);
+        return false;
+    }
+    report(tr("Exported %1 (%n sheet(s))", nullptr, static_cast<int>(paged.sheet_count())).arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+void MainWindow::print_pdf_dialog() {
+    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    auto path = QFileDialog::getSaveFileName(this, tr("Print preview to PDF"), base + QStringLiteral("-proof.pdf"),
+                                             tr("PDF (*.pdf)"));
+    if (!path.isEmpty()) print_pdf_to(path);
+}
+
+bool MainWindow::print_pdf_to(const QString& path) {
+    QString error;
+    const auto* sp = preview_->preview();
+    if (!print_to_pdf(editor_->layout().paged(), sp->geometry(), sp->mode(), path, &error)) {
+        report(error, true);
+        return false;
+    }
+    report(tr("Wrote proof %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+QStringList MainWindow::recent_files() const {
+    return QSettings().value(QStringLiteral("recent/files")).toStringList();
+}
+
+void MainWindow::add_recent(const QString& path) {
+    auto files = recent_files();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecent) files.removeLast();
+    QSettings().setValue(QStringLiteral("recent/files"), files);
+    update_recent_menu();
+}
+
+void MainWindow::update_recent_menu() {
+    recent_menu_->clear();
+    const auto files = recent_files();
+    for (int i = 0; i < files.size(); ++i) {
+        auto* a = recent_menu_->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(files[i]).fileName()));
+        a->setToolTip(files[i]);
+        a->setShortcut(QKeySequence(QStringLiteral("Alt+Shift+%1").arg(i + 1)));
+        const auto path = files[i];
+        connect(a, &QAction::triggered, this, [this, path] {
+            if (maybe_save()) open_file(path);
+        });
+    }
+    recent_menu_->setEnabled(!files.isEmpty());
+}
+
+bool MainWindow::maybe_save() {
+    if (editor_->undo_stack()->isClean() || !interactive_) return true;
+    const auto answer = QMessageBox::question(this, tr("Tactus"), tr("Save the changes to %1?")
+                                                                      .arg(source_name_.isEmpty() ? tr("Untitled") : source_name_),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybe_save()) {
+        e->ignore();
+        return;
+    }
+    if (busy_) busy_->cancel();
+    if (planning_) planning_->cancel();
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+    remove_autosave();
+    e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    const auto urls = e->mimeData()->urls();
+    if (urls.isEmpty() || !urls.front().isLocalFile()) return;
+    e->acceptProposedAction();
+    if (maybe_save()) open_file(urls.front().toLocalFile());
+}
+
+void MainWindow::show_panel(const QString& name) {
+    const auto dock_name = name + QStringLiteral("Dock");
+    if (auto* dock = findChild<QDockWidget*>(dock_name)) {
+        dock->show();
+        dock->raise();
+    }
+}
+
+bool MainWindow::emboss() {
+#ifdef TACTUS_GUI_HAS_PRINTER
+    if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) return false;
+    const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
+    printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
+    return true;
+#else
+    report(tr("This build of Tactus has no embosser link"), true);
+    return false;
+#endif
+}
+
+QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setAccessibleName(title);
+    dock->setWidget(w);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+// ---- planning for the motion and vibration views ----
+
+namespace {
+constexpr std::size_t kPlannedSheetsKept = 20;  // sheets the views can show in full
+}
+
+void MainWindow::schedule_plan() { plan_timer_.start(); }
+
+void MainWindow::start_plan() {
+    if (!editor_->has_layout()) return;
+    if (planning_) planning_->cancel();  // its result is stale; the watcher is dropped when done
+    auto* watcher = new QFutureWatcher<DocumentPlanPtr>(this);
+    planning_ = watcher;
+    connect(watcher, &QFutureWatcher<DocumentPlanPtr>::finished, this, [this, watcher] {
+        watcher->deleteLater();
+        if (watcher != planning_ || watcher->future().resultCount() == 0) return;
+        planning_ = nullptr;
+        show_plan(watcher->future().result());
+    });
+    watcher->setFuture(plan_document_async(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept));
+}
+
+DocumentPlanPtr MainWindow::plan_now() {
+    auto plan = plan_document(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept);
+    show_plan(plan);
+    return plan;
+}
+
+void MainWindow::show_plan(const DocumentPlanPtr& plan) {
+    if (!plan || plan->cancelled) return;
+    motion_->set_plan(plan);
+    vibration_->set_plan(plan);
+    if (plan->error)
+        statusBar()->showMessage(tr("Cannot plan the job: %1").arg(QString::fromStdString(plan->error->to_string())), 10000);
+    Q_EMIT planned(plan);
+}
+
+// ---- autosave and recovery ----
+
+bool MainWindow::autosave_now() {
+    QDir().mkpath(autosave_dir());
+    if (autosave_path_.isEmpty())
+        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
+    QString error;
+    if (!write_atomically(autosave_path_, editor_->text().toUtf8(), &error)) {
+        statusBar()->showMessage(error, 10000);
+        return false;
+    }
+    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(::getpid())},
+                     {QStringLiteral("path"), path_},
+                     {QStringLiteral("name"), source_name_},
+                     {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
+                     {QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
+    return write_atomically(autosave_path_ + QStringLiteral(".json"), QJsonDocument(meta).toJson(), &error);
+}
+
+void MainWindow::remove_autosave() {
+    if (autosave_path_.isEmpty()) return;
+    QFile::remove(autosave_path_);
+    QFile::remove(autosave_path_ + QStringLiteral(".json"));
+    autosave_path_.clear();
+}
+
+QList<Recovery> MainWindow::pending_recoveries() {
+    QList<Recovery> out;
+    const QDir dir(autosave_dir());
+    for (const auto& info : dir.entryInfoList({QStringLiteral("*.md.json")}, QDir::Files, QDir::Time)) {
+        QFile f(info.absoluteFilePath());
+        if (!f.open(QIODevice::ReadOnly)) continue;
+        const auto meta = QJsonDocument::fromJson(f.readAll()).object();
+        const auto pid = meta.value(QStringLiteral("pid")).toInteger();
+        if (pid == ::getpid() || process_alive(pid)) continue;  // that Tactus is still running
+        Recovery r;
+        r.autosave_path = info.absoluteFilePath().chopped(5);
+        if (!QFileInfo::exists(r.autosave_path)) continue;
+        r.document_path = meta.value(QStringLiteral("path")).toString();
+        r.table = meta.value(QStringLiteral("table")).toString();
+        r.saved_at = QDateTime::fromString(meta.value(QStringLiteral("time")).toString(), Qt::ISODate);
+        out << r;
+    }
+    return out;
+}
+
+bool MainWindow::recover(const Recovery& r) {
+    QFile f(r.autosave_path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        report(tr("Cannot read the autosaved copy %1: %2").arg(r.autosave_path, f.errorString()), true);
+        return false;
+    }
+    std::vector<std::string> lines;
+    for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
+    const auto table = r.table.isEmpty() ? editor_->layout().tables() : r.table.toStdString();
+    auto layout = LiveLayout::create(table, editor_->layout().options());
+    if (!layout) {
+        report(QString::fromStdString(layout.error().to_string()), true);
+        return false;
+    }
+    layout->reset(std::move(lines));
+    editor_->adopt(std::move(*layout));
+    tables_->set_table(QString::fromStdString(table));
+    path_ = r.document_path;
+    source_name_ = r.document_path.isEmpty() ? tr("Recovered") : QFileInfo(r.document_path).fileName();
+    editor_->undo_stack()->resetClean();  // recovered text is unsaved work
+    QFile::remove(r.autosave_path);
+    QFile::remove(r.autosave_path + QStringLiteral(".json"));
+    autosave_now();
+    update_title();
+    report(tr("Recovered unsaved changes to %1").arg(source_name_));
+    return true;
+}
+
+void MainWindow::offer_recovery() {
+    for (const auto& r : pending_recoveries()) {
+        const auto name = r.document_path.isEmpty() ? tr("an untitled document") : QFileInfo(r.document_path).fileName();
+        const auto answer = QMessageBox::question(
+            this, tr("Recover unsaved work"),
+            tr("Tactus closed without saving %1 (autosaved %2). Recover it?")
+                .arg(name, QLocale().toString(r.saved_at.toLocalTime(), QLocale::ShortFormat)),
+            QMessageBox::Yes | QMessageBox::No | QMessageBox::Discard);
+        if (answer == QMessageBox::Yes) {
+            recover(r);
+            return;
+        }
+        if (answer == QMessageBox::Discard) {
+            QFile::remove(r.autosave_path);
+            QFile::remove(r.autosave_path + QStringLiteral(".json"));
+        }
+    }
+}
+
+// ---- help ----
+
+void MainWindow::show_shortcuts() {
+    QDialog d(this);
+    d.setWindowTitle(tr("Keyboard Shortcuts"));
+    d.setAccessibleName(d.windowTitle());
+    auto* table = new QTableWidget(&d);
+    table->setObjectName(QStringLiteral("shortcutTable"));
+    table->setAccessibleName(tr("Shortcuts"));
+    table->setColumnCount(2);
+    table->setHorizontalHeaderLabels({tr("Action"), tr("Shortcut")});
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
+    table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    auto rows = shortcut_rows();
+    table->setRowCount(static_cast<int>(rows.size()));
+    for (int i = 0; i < rows.size(); ++i) {
+        table->setItem(i, 0, new QTableWidgetItem(rows[i].first));
+        table->setItem(i, 1, new QTableWidgetItem(rows[i].second));
+    }
+    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    table->resizeColumnToContents(1);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &d);
+    connect(buttons, &QDialogButtonBox::rejected, &d, &QDialog::reject);
+    auto* layout = new QVBoxLayout(&d);
+    layout->addWidget(table);
+    layout->addWidget(buttons);
+    d.resize(560, 520);
+    table->setFocus();
+    d.exec();
+}
+
+QList<QPair<QString, QString>> MainWindow::shortcut_rows() const {
+    QList<QPair<QString, QString>> rows;
+    for (auto* a : all_actions()) {
+        if (a->shortcut().isEmpty()) continue;
+        rows.append({a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
+                     a->shortcut().toString(QKeySequence::NativeText)});
+    }
+    rows.append({tr("Braille pane: dots 1 2 3 4 5 6 (chord, released together)"), tr("F D S J K L")});
+    rows.append({tr("Braille pane: blank cell / erase cell"), tr("Space / Backspace, Delete")});
+    rows.append({tr("Preview: move between cells / lines"), tr("Arrow keys")});
+    rows.append({tr("Preview: turn to the other side"), tr("Space")});
+    rows.append({tr("Preview: previous / next sheet"), tr("PgUp / PgDown")});
+    rows.append({tr("Move between panes"), tr("Tab / Shift+Tab")});
+    return rows;
+}
+
+void MainWindow::show_about() {
+    QMessageBox::about(this, tr("About Tactus"),
+                       tr("<p><b>Tactus %1</b></p><p>Braille editor and embosser print manager.</p>"
+                          "<p>Licensed under the GNU GPL, version 3 or later.</p>")
+                           .arg(QStringLiteral(TACTUS_VERSION)));
+}
+
+}  // namespace tactus::gui

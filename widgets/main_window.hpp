@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The Tactus window: the editor in the middle, the interpoint preview (and, as
+// their cores land, the motion and printer panels) in docks; every action has a
+// shortcut and an accessible name; long work runs off the GUI thread.
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <QPointer>
+#include <QDateTime>
+#include <QTimer>
+
+#include "document_loader.hpp"
+#include "motion_model.hpp"
+
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QProgressDialog;
+
+namespace tactus::gui {
+
+class Announcer;
+class EditorWidget;
+class MotionView;
+class PrinterPanel;
+class ProfileEditor;
+class VibrationView;
+class FindReplaceDialog;
+class PreviewPanel;
+class TablePicker;
+
+struct Recovery {
+    QString autosave_path;  // the autosaved Markdown
+    QString document_path;  // what it was a copy of ("" when untitled)
+    QString table;
+    QDateTime saved_at;
+};
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Starts opening a file in the background; `opened` or `failed` follows.
+    void open_file(const QString& path);
+    // Opens synchronously (tests, the benchmark); returns false with a message on failure.
+    bool open_file_now(const QString& path);
+    bool save_to(const QString& path);
+    bool export_to(const QString& path);  // .brf, .pef (by extension)
+    bool print_pdf_to(const QString& path);
+    void set_table(const QString& table);
+
+    [[nodiscard]] EditorWidget* editor() const { return editor_; }
+    [[nodiscard]] PreviewPanel* preview_panel() const { return preview_; }
+    [[nodiscard]] Announcer* announcer() const { return announcer_; }
+    [[nodiscard]] TablePicker* table_picker() const { return tables_; }
+    [[nodiscard]] MotionView* motion_view() const { return motion_; }
+    [[nodiscard]] VibrationView* vibration_view() const { return vibration_; }
+    [[nodiscard]] ProfileEditor* profile_editor() const { return profile_; }
+    // Null when this build has no link stage.
+    [[nodiscard]] PrinterPanel* printer_panel() const { return printer_; }
+    // Queues the document on the printer panel (connecting to the chosen embosser).
+    bool emboss();
+    // Plans the document now (tests); normally planning follows edits after a pause.
+    DocumentPlanPtr plan_now();
+    // Brings a dock to the front: "preview", "motion", "vibration", "profile", "printer".
+    void show_panel(const QString& name);
+    [[nodiscard]] QString status_text() const;
+    [[nodiscard]] QString document_path() const { return path_; }
+    [[nodiscard]] QStringList recent_files() const;
+    [[nodiscard]] QList<QAction*> all_actions() const;
+    [[nodiscard]] bool is_busy() const { return busy_ != nullptr; }
+    [[nodiscard]] QList<QPair<QString, QString>> shortcut_rows() const;
+    // Interactive windows ask before discarding work and show error boxes; tests don't.
+    void set_interactive(bool on) { interactive_ = on; }
+
+    // Crash recovery: autosaves that no running Tactus owns.
+    [[nodiscard]] static QList<Recovery> pending_recoveries();
+    bool recover(const Recovery& r);
+    void offer_recovery();  // asks the user (interactive start only)
+    bool autosave_now();
+    [[nodiscard]] QString autosave_path() const { return autosave_path_; }
+
+Q_SIGNALS:
+    void planned(const tactus::gui::DocumentPlanPtr& plan);
+    void job_finished(bool completed, const QString& text);
+    void opened(const QString& path);
+    void failed(const QString& message);
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+
+private:
+    void build_actions();
+    void build_menus();
+    void restore_settings();
+    void new_document();
+    void open_dialog();
+    bool save();
+    bool save_as();
+    void export_dialog(const QString& format);
+    void print_pdf_dialog();
+    void show_shortcuts();
+    void show_about();
+    void update_status();
+    void update_title();
+    void update_recent_menu();
+    void add_recent(const QString& path);
+    void report(const QString& message, bool error = false);
+    bool maybe_save();
+    void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
+    void finish_load(const LoadResultPtr& r, bool replace_text);
+    void remove_autosave();
+    QDockWidget* add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
+    void schedule_plan();
+    void start_plan();
+    void show_plan(const DocumentPlanPtr& plan);
+
+    EditorWidget* editor_ = nullptr;
+    PreviewPanel* preview_ = nullptr;
+    TablePicker* tables_ = nullptr;
+    Announcer* announcer_ = nullptr;
+    FindReplaceDialog* find_ = nullptr;
+    QLabel* status_ = nullptr;
+    QMenu* recent_menu_ = nullptr;
+    QString path_;         // where Save writes (Markdown only); empty: ask
+    QString source_name_;  // the file the document came from, for the title
+    bool interactive_ = false;
+    QString autosave_path_;
+    QTimer autosave_timer_;
+    QPointer<QFutureWatcher<LoadResultPtr>> busy_;
+    QProgressDialog* progress_ = nullptr;
+
+    QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
+    MotionView* motion_ = nullptr;
+    VibrationView* vibration_ = nullptr;
+    ProfileEditor* profile_ = nullptr;
+    PrinterPanel* printer_ = nullptr;
+    QTimer plan_timer_;
+    QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
+    QAction *focus_motion_, *focus_vibration_, *focus_profile_, *focus_printer_ = nullptr, *emboss_ = nullptr;
+    QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
+        *focus_table_, *shortcuts_, *about_;
+};
+
+}  // namespace tactus::gui

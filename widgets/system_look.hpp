@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// High contrast and large text follow the desktop: the palette's contrast and the
+// GTK theme name tell us about high contrast, the default font size about large
+// text. The user's own choices in the View menu win afterwards.
+class QWidget;
+
+namespace tactus::gui {
+
+class MainWindow;
+
+[[nodiscard]] bool system_high_contrast();
+// Preview zoom matching the system font size (1.0 at 10 pt).
+[[nodiscard]] double system_text_scale();
+void apply_system_look(MainWindow& window);
+
+}  // namespace tactus::gui
