@@ -113,7 +113,7 @@ TEST(ServeE2E, ConcurrentClientsAddAndCancelWhileServing) {
     std::vector<std::unique_ptr<test::Process>> clients;
     for (int c = 0; c < 4; ++c) {
         const std::string script =
-            "for i in 1 2; do " + test::kCli + " emboss --queue --interpoint '" + file.string() + "' --db '" + e.db.string() +
+            "for i in 1 2; do " + test::kCli + " emboss --queue '" + file.string() + "' --db '" + e.db.string() +
             "' --title c" + std::to_string(c) + "-$i || exit 1; done; id=$(" + test::kCli + " queue list --db '" +
             e.db.string() + "' | awk '$7==\"c" + std::to_string(c) + "-2\"{print $1}'); [ -z \"$id\" ] || " +
             test::kCli + " queue cancel $id --db '" + e.db.string() + "' || true";
