@@ -33,7 +33,7 @@ TEST(ServeE2E, QueuedJobIsEmbossedExactlyOnceAndServeStopsCleanly) {
 
 TEST(ServeE2E, PaperOutWaitsForPaperThenCarriesOn) {
     E2E e;
-    PtySim sim(e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "3"});
+    PtySim sim(e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "2000"});
     ASSERT_EQ(e.cli({"queue", "printer", "add", "lab", "--device", sim.device()}).first, 0);
     const JobId id = e.queue_text(test::kText, {"--copies", "2"});
     auto serve = e.serve();
