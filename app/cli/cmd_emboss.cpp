@@ -49,12 +49,7 @@ Prepared prepare(const EmbossArgs& a) {
         return out;
     }
     const auto profile = load_profile_arg(a.profile);
-    auto options = a.layout.pipeline_options();
-    // The page format is the machine's unless the command line overrides it.
-    options.layout.geometry.interpoint = profile.geometry.interpoint;
-    if (a.layout.cells == 0) options.layout.geometry.cells_per_line = profile.geometry.cells_per_line;
-    if (a.layout.lines == 0) options.layout.geometry.lines_per_page = profile.geometry.lines_per_page;
-    options.layout.geometry.eight_dot = profile.geometry.eight_dot || a.layout.eight_dot;
+    const auto options = a.layout.pipeline_options(profile);
     const auto doc = require(lay_out_file(a.layout.file, options));
     out.plan = require(plan::plan_job(doc, profile));
     out.config = encode::controller_config(profile);

@@ -65,13 +65,7 @@ nlohmann::json tuning_json(const estimate::MoveTuner& t) {
 
 void run_plan(const PlanArgs& a) {
     const auto prof = load_profile_arg(a.profile);
-    auto options = a.layout.pipeline_options();
-    // The page format is the machine's unless the command line overrides it
-    // (the planner then refuses pages that do not fit the profile).
-    options.layout.geometry.interpoint = prof.geometry.interpoint;
-    if (a.layout.cells == 0) options.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    if (a.layout.lines == 0) options.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-    options.layout.geometry.eight_dot = prof.geometry.eight_dot || a.layout.eight_dot;
+    const auto options = a.layout.pipeline_options(prof);
     const auto doc = require(lay_out_file(a.layout.file, options));
     auto planner = require(plan::Planner::create(prof));
     auto& out = std::cout;

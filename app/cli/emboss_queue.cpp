@@ -68,11 +68,7 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     // it, as for direct embossing.
     const auto profile = profile::parse_profile(record.profile_json);
     if (!profile) fail_with(exit_bad_input, located(profile.error(), "printer " + record.name));
-    auto options = layout.pipeline_options();
-    options.layout.geometry.interpoint = profile->geometry.interpoint;
-    if (layout.cells == 0) options.layout.geometry.cells_per_line = profile->geometry.cells_per_line;
-    if (layout.lines == 0) options.layout.geometry.lines_per_page = profile->geometry.lines_per_page;
-    options.layout.geometry.eight_dot = profile->geometry.eight_dot || layout.eight_dot;
+    const auto options = layout.pipeline_options(*profile);
     const auto doc = require(lay_out_file(layout.file, options));
     const auto part = require(spool::select_pages(doc, first, last));
     spool::JobSubmission job;

@@ -58,4 +58,14 @@ PipelineOptions LayoutArgs::pipeline_options() const {
     return o;
 }
 
+PipelineOptions LayoutArgs::pipeline_options(const profile::PrinterProfile& machine) const {
+    auto o = pipeline_options();
+    auto& g = o.layout.geometry;
+    g.interpoint = machine.geometry.interpoint;
+    if (cells == 0) g.cells_per_line = machine.geometry.cells_per_line;
+    if (lines == 0) g.lines_per_page = machine.geometry.lines_per_page;
+    g.eight_dot = machine.geometry.eight_dot || eight_dot;
+    return o;
+}
+
 }  // namespace tactus::cli

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "pipeline/pipeline.hpp"
+#include "profile/profile.hpp"
 
 namespace tactus::cli {
 
@@ -28,6 +29,9 @@ struct LayoutArgs {
     void add_to(CLI::App& cmd, bool with_interpoint = true);
     // Validated options; a bad value ends the command with a usage error.
     [[nodiscard]] PipelineOptions pipeline_options() const;
+    // For embossing and planning: the page format is the machine's unless the
+    // command line overrides it (the planner then refuses pages that do not fit).
+    [[nodiscard]] PipelineOptions pipeline_options(const profile::PrinterProfile& machine) const;
 };
 
 }  // namespace tactus::cli
