@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "emboss_queue.hpp"
 #include "encode/frame.hpp"
 #include "encode/plan_json.hpp"
 #include "encode/stream.hpp"
@@ -32,6 +33,7 @@ struct EmbossArgs {
     bool dry_run = false;
     bool plan_file = false;
     std::size_t start_sheet = 1;
+    EmbossQueueArgs queue;
 };
 
 struct Prepared {
@@ -82,6 +84,7 @@ void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e)
 }
 
 void run_emboss(const EmbossArgs& a) {
+    if (a.queue.enabled) return enqueue_emboss(a.layout, a.queue);
     const auto prepared = prepare(a);
     const auto& plan = prepared.plan;
     if (a.dry_run) {
@@ -167,6 +170,7 @@ void add_emboss_command(CLI::App& app) {
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
         ->check(CLI::PositiveNumber);
+    add_emboss_queue_options(*cmd, args->queue);
     cmd->callback([args] { run_emboss(*args); });
 }
 

@@ -40,6 +40,8 @@ T require(Result<T> r, int code = exit_bad_input) {
 void add_translate_command(CLI::App& app);
 void add_layout_command(CLI::App& app);
 void add_tables_command(CLI::App& app);
+void add_queue_command(CLI::App& app);
+void add_serve_command(CLI::App& app);
 void add_plan_command(CLI::App& app);
 void add_profile_command(CLI::App& app);
 void add_vibration_command(CLI::App& app);

@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
     add_translate_command(app);
     add_layout_command(app);
     add_tables_command(app);
+    add_queue_command(app);
+    add_serve_command(app);
     add_plan_command(app);
     add_profile_command(app);
     add_vibration_command(app);

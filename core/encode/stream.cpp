@@ -11,6 +11,13 @@
 namespace tactus::encode {
 namespace {
 
+// The interval register after the last step of `s`: what the next segment's
+// interval is encoded against.
+std::uint32_t held_interval(const plan::StepSegment& s) {
+    return s.interval_q16 + static_cast<std::uint32_t>(s.add_q16) * s.count;
+}
+
+
 void put16(std::vector<std::uint8_t>& o, std::uint16_t v) {
     o.push_back(static_cast<std::uint8_t>(v >> 8));
     o.push_back(static_cast<std::uint8_t>(v & 0xFF));
@@ -46,8 +53,15 @@ void append_op(std::vector<std::uint8_t>& out, const Op& op) {
                                                     (op.negative ? 0x02U : 0U) |
                                                     (op.continuation ? 0x04U : 0U)));
             out.push_back(static_cast<std::uint8_t>(op.segments.size()));
-            for (const auto& s : op.segments) {
-                put_uvar(out, s.interval_q16);
+            // The first interval is absolute; each later one is sent as its
+            // difference from the interval the controller already holds after the
+            // previous segment (interval + add * count, 32-bit wrapping like the
+            // 8051's adds). Step timing is continuous, so that difference is
+            // usually a byte or two instead of four.
+            for (std::size_t i = 0; i < op.segments.size(); ++i) {
+                const auto& s = op.segments[i];
+                if (i == 0) put_uvar(out, s.interval_q16);
+                else put_svar(out, static_cast<std::int32_t>(s.interval_q16 - held_interval(op.segments[i - 1])));
                 put_uvar(out, s.count);
                 put_svar(out, s.add_q16);
             }
@@ -111,7 +125,12 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         if (n == 0 || n > kMaxSegmentsPerOp)
             return fail("move with " + std::to_string(n) + " segments", at_byte(pos - 1));
         for (std::uint8_t i = 0; i < n; ++i) {
-            const auto interval = get_uvar(in, pos);
+            std::optional<std::uint32_t> interval;
+            if (i == 0) {
+                interval = get_uvar(in, pos);
+            } else if (const auto delta = get_svar(in, pos)) {
+                interval = held_interval(op.segments.back()) + static_cast<std::uint32_t>(*delta);
+            }
             const auto count = get_uvar(in, pos, 0xFFFF, 3);
             const auto add = get_svar(in, pos);
             if (!interval || !count || !add) return truncated();

@@ -125,6 +125,9 @@ struct Link::Impl {
     // everything before it has been accepted.
     void acknowledge_through(std::uint8_t expected) {
         while (!unacked.empty()) {
+            // Only a HELLO_REPLY answers a HELLO: a stale ACK left on the line
+            // by an earlier session (a host killed mid-job) must not pop it.
+            if (unacked.front().type == FrameType::hello) break;
             const auto d = static_cast<std::uint8_t>(expected - unacked.front().seq);
             if (d == 0 || d > 128) break;
             if (unacked.front().type == FrameType::data)

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// From a stored job to what the link sends: the profile parsed, the document
+// planned once per copy, copies joined into one plan whose sheets are numbered
+// 1..copies*sheets (the spool's sheet numbers), and the controller
+// configuration taken from the same profile.
+#include <cstddef>
+#include <string_view>
+
+#include "common/result.hpp"
+#include "encode/messages.hpp"
+#include "layout/page.hpp"
+#include "plan/plan.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus::spool {
+
+// Plans `copies` copies of `doc`. Fails, naming page and line, when the
+// document does not fit the profile (e.g. the profile now has fewer cells per line).
+Result<plan::JobPlan> plan_copies(const PagedDocument& doc, const profile::PrinterProfile& profile,
+                                  std::size_t copies);
+
+// Copies of an already planned copy, renumbered (exposed for tests).
+plan::JobPlan repeat_plan(const plan::JobPlan& one, std::size_t copies);
+
+encode::ControllerConfig controller_config(const profile::PrinterProfile& profile);
+
+}  // namespace tactus::spool

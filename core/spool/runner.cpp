@@ -1,0 +1,405 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "spool/runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+#include "encode/messages.hpp"
+#include "profile/profile_json.hpp"
+#include "spool/printing.hpp"
+#include "spool/runner_token.hpp"
+#include "spool/snapshot.hpp"
+#include "spool/try.hpp"
+
+namespace tactus::spool {
+namespace {
+
+using std::chrono::milliseconds;
+namespace fault = encode::fault;
+
+// Faults only a person can clear: the job waits for them instead of retrying.
+constexpr std::uint8_t kOperatorFaults =
+    fault::paper_out | fault::limit_switch | fault::hammer | fault::power_on_reset;
+
+std::string sheet_word(std::size_t n) { return "sheet " + std::to_string(n); }
+
+void sleep_unless(const std::atomic<bool>& stop, milliseconds d) {
+    const auto until = std::chrono::steady_clock::now() + d;
+    while (!stop.load() && std::chrono::steady_clock::now() < until)
+        std::this_thread::sleep_for(std::min(d, milliseconds(20)));
+}
+
+// First pass (job-wide index) of each sheet, from the stored plan shape.
+std::vector<std::size_t> first_passes(const std::vector<SheetProgress>& progress) {
+    std::vector<std::size_t> first(progress.size() + 1, 0);
+    for (std::size_t i = 0; i < progress.size(); ++i)
+        first[i + 1] = first[i] + progress[i].passes_total;
+    return first;
+}
+
+// The sheet a stream stopped on (1-based; 0: none) goes out of the machine
+// unfinished: report it, and emboss it again in full next time.
+Result<void> spoil_interrupted(Spool& s, JobId id, std::size_t sheet, const std::string& why) {
+    if (sheet == 0) return {};
+    SPOOL_LET(progress, s.progress(id));
+    if (sheet > progress.size() || progress[sheet - 1].done()) return {};
+    return s.spoil_sheet(id, sheet,
+                         sheet_word(sheet) + " was in the printer when " + why +
+                             ": discard it (it may be blank); it is embossed again in full");
+}
+
+}  // namespace
+
+const char* to_string(RunEnd e) {
+    switch (e) {
+    case RunEnd::completed: return "completed";
+    case RunEnd::cancelled: return "cancelled";
+    case RunEnd::paused: return "paused";
+    case RunEnd::requeued: return "requeued";
+    case RunEnd::failed: return "failed";
+    case RunEnd::stopped: return "stopped";
+    }
+    return "?";
+}
+
+Runner::Runner(std::filesystem::path db, std::string printer, ConnectFn connect, RunnerOptions options)
+    : db_path_(std::move(db)),
+      printer_name_(std::move(printer)),
+      connect_(std::move(connect)),
+      options_(options),
+      token_(this_runner_token()) {}
+
+Runner::~Runner() { finish(); }
+
+Result<void> Runner::start() {
+    auto s = Spool::open(db_path_, {.create = false});
+    if (!s) return std::unexpected(s.error());
+    spool_.emplace(std::move(*s));
+    SPOOL_LET(p, spool_->printer(printer_name_));
+    printer_ = p;
+    return spool_->claim_printer(printer_.id, token_);
+}
+
+void Runner::finish() {
+    link_.reset();
+    if (spool_) (void)spool_->release_printer(printer_.id, token_);
+    spool_.reset();
+}
+
+Result<void> Runner::run(const std::atomic<bool>& stop) {
+    while (!stop.load()) {
+        SPOOL_LET(end, run_next(stop));
+        if (!end) sleep_unless(stop, options_.poll);
+    }
+    return {};
+}
+
+Result<std::optional<RunEnd>> Runner::run_next(const std::atomic<bool>& stop) {
+    SPOOL_LET(job, spool_->claim_next(printer_.id, token_, now_seconds()));
+    if (!job) return std::optional<RunEnd>{};
+    SPOOL_LET(end, run_job(std::move(*job), stop));
+    return std::optional<RunEnd>{end};
+}
+
+Result<void> Runner::connect() {
+    SPOOL_LET(p, spool_->printer(printer_.id));  // the device may have been changed
+    printer_ = p;
+    auto link = connect_(printer_);
+    if (!link) return std::unexpected(link.error());
+    if (auto h = link->hello(); !h) return std::unexpected(h.error());
+    auto profile = profile::parse_profile(printer_.profile_json);
+    if (!profile) return std::unexpected(located(profile.error(), "printer " + printer_.name));
+    if (auto c = link->configure(controller_config(*profile)); !c) return c;
+    link_.emplace(std::move(*link));
+    (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
+    return {};
+}
+
+// After a crash or a lost link the controller may have executed passes whose
+// acknowledgement never reached the database. A new session leaves the
+// controller's job paused with its count (`executed_passes`, job-wide) intact,
+// so the count is read back and recorded before anything else is sent; then
+// the leftover job is aborted so it can never run on.
+Result<void> Runner::reconcile(const JobRecord& job) {
+    SPOOL_LET(st, link_->status());
+    const bool active = (st.flags & encode::flag::job_active) != 0;
+    if (job.run_open && active && (!job.link_job || *job.link_job == st.ack.job_id)) {
+        SPOOL_LET(progress, spool_->progress(job.id));
+        const auto first = first_passes(progress);
+        const std::size_t start = std::clamp<std::size_t>(job.run_start_sheet, 1, progress.size());
+        // The count is 16 bits wide: unwrap it next to what is already recorded.
+        std::size_t recorded = first[start - 1];
+        for (std::size_t k = start; k <= progress.size(); ++k) {
+            if (progress[k - 1].passes_done == 0) break;
+            recorded = first[k - 1] + progress[k - 1].passes_done;
+        }
+        std::size_t executed = st.ack.executed_passes;
+        while (executed + 65536 <= recorded + 32768) executed += 65536;
+        if (executed > recorded && executed <= first.back()) {
+            for (std::size_t k = start; k <= progress.size(); ++k) {
+                if (first[k - 1] >= executed) break;
+                const auto done = std::min(progress[k - 1].passes_total, executed - first[k - 1]);
+                SPOOL_TRY(spool_->record_passes(job.id, k, done));
+            }
+            SPOOL_TRY(spool_->log(job.id, printer_.id, "reconciled",
+                                  "the controller had executed " + std::to_string(executed - recorded) +
+                                      " pass(es) not yet recorded; recorded now"));
+        }
+    }
+    if (active && st.sheet != 0) {
+        // The sheet in the machine when the stream stopped: if it is not
+        // complete it has (or may have) dots on it and is ejected by the abort.
+        SPOOL_LET(progress, spool_->progress(job.id));
+        if (st.sheet <= progress.size() && !progress[st.sheet - 1].done())
+            SPOOL_TRY(spool_->spoil_sheet(job.id, st.sheet,
+                                          sheet_word(st.sheet) + " was in the printer, unfinished, when the "
+                                              "stream stopped: discard it; it is embossed again in full"));
+    }
+    if (active) {
+        if (auto a = link_->abort(); !a) return a;
+        SPOOL_TRY(spool_->log(job.id, printer_.id, "aborted",
+                              "the interrupted stream left on the controller was aborted"));
+    }
+    if (job.run_open) SPOOL_TRY(spool_->end_run(job.id));
+    return {};
+}
+
+Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string& why) {
+    link_.reset();  // reopen from scratch next time
+    const int attempt = job.retries + 1;
+    if (attempt > options_.max_retries) {
+        SPOOL_TRY(spool_->set_state(job.id, JobState::paused,
+                                    why + " (gave up after " + std::to_string(options_.max_retries) +
+                                        " retries; resume when the printer is back)",
+                                    "fault", why));
+        return RunEnd::paused;
+    }
+    const auto backoff = std::min<double>(
+        static_cast<double>(options_.max_backoff.count()),
+        static_cast<double>(options_.retry_backoff.count()) * std::pow(2.0, attempt - 1));
+    SPOOL_TRY(spool_->requeue(job.id,
+                              "retry " + std::to_string(attempt) + " of " +
+                                  std::to_string(options_.max_retries) + " in " +
+                                  std::to_string(static_cast<int>(backoff / 1000)) + " s: " + why,
+                              now_seconds() + backoff / 1000.0, true));
+    return RunEnd::requeued;
+}
+
+Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
+    Spool& s = *spool_;
+    // --- what to emboss: the stored document, planned with the printer's profile now
+    SPOOL_LET(snapshot, s.document_snapshot(job.id));
+    auto doc = from_snapshot(snapshot);
+    if (!doc) {
+        const auto why = "the stored document is unreadable: " + doc.error().to_string();
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        return RunEnd::failed;
+    }
+    SPOOL_LET(printer, s.printer(job.printer_id));
+    printer_ = printer;
+    auto profile = profile::parse_profile(printer.profile_json);
+    if (!profile) {
+        const auto why = "printer '" + printer.name + "' has an invalid profile (" +
+                         profile.error().to_string() + "); fix it, then retry the job";
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        return RunEnd::failed;
+    }
+    auto plan = plan_copies(*doc, *profile, job.copies);
+    if (!plan || plan->sheets.size() != job.total_sheets()) {
+        const auto why = "the document no longer lays out with printer '" + printer.name +
+                         "''s current profile: " +
+                         (plan ? "it plans to " + std::to_string(plan->sheets.size()) +
+                                     " sheets, the job has " + std::to_string(job.total_sheets())
+                               : plan.error().to_string()) +
+                         "; the job is kept (restore the profile or lay the document out again)";
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        return RunEnd::failed;
+    }
+    SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
+    if (submitted_profile != printer.profile_json)
+        SPOOL_TRY(s.log(job.id, printer.id, "profile",
+                        "the printer's profile changed since submission; planned with the current one"));
+    std::vector<std::size_t> passes;
+    for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
+    SPOOL_TRY(s.set_sheet_passes(job.id, passes));
+
+    // --- the printer: connect, then settle whatever an earlier run left behind
+    if (!link_) {
+        if (auto c = connect(); !c) return transient_failure(job, c.error().to_string());
+    }
+    if (auto r = reconcile(job); !r) return transient_failure(job, r.error().to_string());
+
+    // --- where to start: the first unfinished sheet, or the operator's choice
+    SPOOL_LET(progress, s.progress(job.id));
+    std::size_t first_unfinished = 0;
+    for (const auto& p : progress)
+        if (!p.done()) {
+            first_unfinished = p.sheet;
+            break;
+        }
+    std::size_t start = first_unfinished;
+    if (job.resume_sheet) {
+        start = *job.resume_sheet;
+        SPOOL_TRY(s.clear_resume_sheet(job.id));
+        SPOOL_TRY(s.log(job.id, printer.id, "resume-point",
+                        "starting at " + sheet_word(start) + " as the operator chose (first unfinished: " +
+                            (first_unfinished ? sheet_word(first_unfinished) : "none") + ")"));
+    }
+    if (start == 0) {
+        SPOOL_TRY(s.set_state(job.id, JobState::completed, "", "completed",
+                              "every sheet had already been embossed"));
+        return RunEnd::completed;
+    }
+    // A sheet cannot be fed twice: a partly embossed one is ejected and
+    // discarded, and the sheet is embossed again in full on fresh paper.
+    for (std::size_t k = start; k <= progress.size(); ++k) {
+        const auto& p = progress[k - 1];
+        if (p.done())
+            SPOOL_TRY(s.restart_sheet(job.id, k, sheet_word(k) + " is embossed again at the operator's request"));
+        else if (p.passes_done > 0)
+            SPOOL_TRY(s.spoil_sheet(job.id, k,
+                                    sheet_word(k) + " was interrupted after pass " +
+                                        std::to_string(p.passes_done) + " of " +
+                                        std::to_string(p.passes_total) +
+                                        ": that partial sheet is discarded and the sheet embossed again in full"));
+    }
+
+    // --- stream it
+    SPOOL_TRY(s.begin_run(job.id, std::nullopt, start));
+    SPOOL_TRY(s.log(job.id, printer.id, "sending",
+                    "sending " + sheet_word(start) + " to " + std::to_string(job.total_sheets()) + " to " +
+                        printer.device));
+    link::CancelToken cancel;
+    std::atomic<bool> watching{true};
+    std::atomic<bool> operator_cancel{false};
+    std::mutex state_mutex;  // the watcher and the progress callback both change the state
+    bool fault_paused = false;
+    std::optional<Error> db_error;
+    std::uint8_t last_faults = 0;
+    bool link_job_recorded = false;
+
+    link::Link& link = *link_;
+    // Operator requests arrive through the database from any client; the watcher
+    // has its own connection (a SQLite connection belongs to one thread).
+    std::thread watcher([&] {
+        auto ws = Spool::open(db_path_, {.create = false});
+        if (!ws) return;
+        while (watching.load()) {
+            if (stop.load()) cancel.cancel();
+            auto control = ws->take_control(job.id);
+            if (control && *control != Control::none) {
+                std::lock_guard lock(state_mutex);
+                switch (*control) {
+                case Control::pause:
+                    link.request_pause();
+                    (void)ws->set_state(job.id, JobState::paused, "paused by the operator", "paused",
+                                        "pause sent: the printer stops at the end of the current pass",
+                                        true);
+                    break;
+                case Control::resume:
+                    link.request_resume();
+                    fault_paused = false;
+                    (void)ws->set_state(job.id, JobState::running, "", "resumed", "resume sent to the printer", true);
+                    break;
+                case Control::cancel:
+                    operator_cancel = true;
+                    cancel.cancel();
+                    break;
+                case Control::none: break;
+                }
+            }
+            std::this_thread::sleep_for(options_.poll);
+        }
+    });
+
+    auto on_progress = [&](const link::Progress& p) {
+        last_faults = p.status.ack.faults;
+        if (!link_job_recorded && p.status.ack.job_id != 0) {
+            // Now the controller's number for this stream is known: a later
+            // reconciliation checks it before trusting the controller's count.
+            if (s.begin_run(job.id, p.status.ack.job_id, start)) link_job_recorded = true;
+        }
+        if (p.executed) {
+            // Recorded before the link goes on. If the disk refuses, keep trying:
+            // the link stalls, the controller's keep-alive pauses it and its
+            // count survives in its RAM for the next reconciliation.
+            for (;;) {
+                auto r = s.record_passes(job.id, p.executed->sheet, p.executed->pass_in_sheet + 1);
+                if (r) break;
+                db_error = r.error();
+                if (stop.load() || cancel.cancelled()) return;
+                std::this_thread::sleep_for(options_.poll);
+            }
+            db_error.reset();
+            std::lock_guard lock(state_mutex);
+            if (fault_paused) {
+                fault_paused = false;
+                (void)s.set_state(job.id, JobState::running, "", "resumed", "the printer is running again", true);
+            }
+            return;
+        }
+        if (p.note.empty()) return;
+        (void)s.log(job.id, printer_.id, "printer", p.note);
+        if ((p.status.ack.faults & kOperatorFaults) != 0) {
+            std::lock_guard lock(state_mutex);
+            if (!fault_paused) {
+                fault_paused = true;
+                (void)s.set_state(job.id, JobState::paused, p.note, "fault", p.note, true);
+            }
+        }
+    };
+
+    auto outcome = link.send_job(*plan, start, on_progress, cancel);
+    watching = false;
+    watcher.join();
+    if (db_error)
+        return std::unexpected(Error{"cannot record progress in the spool (" + db_error->message +
+                                         "); the controller's count is kept for the next start",
+                                     db_error->where});
+    if (!outcome) return transient_failure(job, outcome.error().to_string());
+
+    switch (outcome->end) {
+    case link::JobEnd::completed:
+        SPOOL_TRY(s.end_run(job.id));
+        SPOOL_TRY(s.set_state(job.id, JobState::completed, "", "completed",
+                              "all " + std::to_string(job.total_sheets()) + " sheets embossed"));
+        return RunEnd::completed;
+    case link::JobEnd::cancelled: {
+        // The link aborted the controller's job: nothing is left to reconcile,
+        // and the sheet it was on is ejected unfinished.
+        SPOOL_TRY(s.end_run(job.id));
+        SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was stopped"));
+        if (operator_cancel) {
+            SPOOL_TRY(s.set_state(job.id, JobState::cancelled, "cancelled by the operator", "cancelled",
+                                  "aborted on the controller at " + sheet_word(outcome->resume_sheet)));
+            return RunEnd::cancelled;
+        }
+        SPOOL_TRY(s.requeue(job.id, "the print server stopped; resumes at the first unfinished sheet",
+                            0, false));
+        return RunEnd::stopped;
+    }
+    case link::JobEnd::failed: break;
+    }
+    const std::string why = outcome->error.to_string();
+    // The link names the fault in its error; the last status says it too
+    // unless the failure came before any report.
+    const bool needs_operator = (last_faults & kOperatorFaults) != 0 ||
+                                why.find("lost power") != std::string::npos ||
+                                why.find("hammer fault") != std::string::npos ||
+                                why.find("paper out") != std::string::npos;
+    if (needs_operator) {
+        // The run stays open: the next start reads the controller's count.
+        // After a power loss there is no count left to read: the sheet in the
+        // machine is reported now.
+        link_.reset();
+        if (why.find("lost power") != std::string::npos)
+            SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the controller lost power"));
+        SPOOL_TRY(s.set_state(job.id, JobState::paused, why, "fault", why));
+        return RunEnd::paused;
+    }
+    return transient_failure(job, why);
+}
+
+}  // namespace tactus::spool

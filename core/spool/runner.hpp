@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One runner per printer: takes the printer's jobs from the spool in queue
+// order and streams them through the link, recording each pass only once the
+// controller reports it EXECUTED. It survives faults (job paused with the
+// reason), unplugged cables (retry with back-off), operator requests (pause,
+// resume, cancel, read from the database so any client can send them) and its
+// own death (the next runner reconciles with the controller before sending).
+// docs/spool.md describes the exactly-once argument.
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "common/result.hpp"
+#include "link/link.hpp"
+#include "spool/records.hpp"
+#include "spool/spool.hpp"
+
+namespace tactus::spool {
+
+struct RunnerOptions {
+    // Transient failures (device gone, link errors) before the job is paused
+    // for the operator instead of retried.
+    int max_retries = 5;
+    std::chrono::milliseconds retry_backoff{2000};  // doubles per retry
+    std::chrono::milliseconds max_backoff{60000};
+    // How often an idle runner looks for work and a busy one for operator requests.
+    std::chrono::milliseconds poll{100};
+    link::LinkOptions link;
+};
+
+// Opens the printer's device (Link::open in serve; the in-process simulator in tests).
+using ConnectFn = std::function<Result<link::Link>(const PrinterRecord&)>;
+
+// What one job run came to (for tests and serve's log).
+enum class RunEnd { completed, cancelled, paused, requeued, failed, stopped };
+[[nodiscard]] const char* to_string(RunEnd e);
+
+class Runner {
+public:
+    Runner(std::filesystem::path db, std::string printer, ConnectFn connect,
+           RunnerOptions options = {});
+    ~Runner();
+    Runner(const Runner&) = delete;
+    Runner& operator=(const Runner&) = delete;
+
+    // Opens the spool and takes the printer (refused while another live runner has it).
+    Result<void> start();
+    // Runs jobs until `stop` is set. Returns an error only when the spool itself
+    // becomes unusable (the database cannot be written): then nothing more can
+    // be recorded, so nothing more may be embossed.
+    Result<void> run(const std::atomic<bool>& stop);
+    // Runs the next ready job, if any, to its end, pause or requeue.
+    Result<std::optional<RunEnd>> run_next(const std::atomic<bool>& stop);
+    // Lets go of the printer (jobs it held go back to the queue, progress kept).
+    void finish();
+
+    [[nodiscard]] const std::string& token() const { return token_; }
+
+private:
+    struct Run;
+    Result<RunEnd> run_job(JobRecord job, const std::atomic<bool>& stop);
+    Result<void> connect();
+    Result<void> reconcile(const JobRecord& job);
+    Result<RunEnd> transient_failure(const JobRecord& job, const std::string& why);
+
+    std::filesystem::path db_path_;
+    std::string printer_name_;
+    ConnectFn connect_;
+    RunnerOptions options_;
+    std::string token_;
+    std::optional<Spool> spool_;
+    PrinterRecord printer_;
+    std::optional<link::Link> link_;
+};
+
+}  // namespace tactus::spool

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The spool's tables (docs/spool.md explains each column). The version lives in
+// PRAGMA user_version and the application id marks the file as a Tactus spool,
+// so another program's SQLite file is refused rather than written into.
+#include <cstdint>
+
+namespace tactus::spool {
+
+inline constexpr int kSchemaVersion = 1;
+inline constexpr std::int32_t kApplicationId = 0x54435350;  // "TCSP"
+
+inline constexpr const char* kSchema = R"sql(
+CREATE TABLE printers(
+  id            INTEGER PRIMARY KEY,
+  name          TEXT NOT NULL UNIQUE,
+  device        TEXT NOT NULL,
+  profile_json  TEXT NOT NULL,
+  runner        TEXT NOT NULL DEFAULT '',
+  created_at    REAL NOT NULL
+);
+CREATE TABLE jobs(
+  id              INTEGER PRIMARY KEY,
+  printer_id      INTEGER NOT NULL REFERENCES printers(id),
+  title           TEXT NOT NULL,
+  document        TEXT NOT NULL,
+  profile_json    TEXT NOT NULL,
+  sheets_per_copy INTEGER NOT NULL CHECK(sheets_per_copy > 0),
+  copies          INTEGER NOT NULL CHECK(copies > 0),
+  first_page      INTEGER NOT NULL DEFAULT 0,
+  last_page       INTEGER NOT NULL DEFAULT 0,
+  priority        INTEGER NOT NULL DEFAULT 0,
+  state           TEXT NOT NULL CHECK(state IN ('queued','running','paused','completed','cancelled','failed')),
+  reason          TEXT NOT NULL DEFAULT '',
+  control         TEXT NOT NULL DEFAULT '',
+  resume_sheet    INTEGER,
+  retries         INTEGER NOT NULL DEFAULT 0,
+  not_before      REAL NOT NULL DEFAULT 0,
+  runner          TEXT NOT NULL DEFAULT '',
+  link_job        INTEGER,
+  run_start_sheet INTEGER NOT NULL DEFAULT 0,
+  run_open        INTEGER NOT NULL DEFAULT 0,
+  submitted_by    TEXT NOT NULL,
+  submitted_at    REAL NOT NULL,
+  started_at      REAL,
+  finished_at     REAL,
+  updated_at      REAL NOT NULL
+);
+CREATE INDEX jobs_by_queue ON jobs(printer_id, state, priority DESC, id);
+CREATE INDEX jobs_by_state ON jobs(state, id);
+CREATE TABLE progress(
+  job_id       INTEGER NOT NULL REFERENCES jobs(id) ON DELETE CASCADE,
+  sheet        INTEGER NOT NULL,
+  passes_total INTEGER NOT NULL,
+  passes_done  INTEGER NOT NULL DEFAULT 0 CHECK(passes_done <= passes_total),
+  spoiled      INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY(job_id, sheet)
+) WITHOUT ROWID;
+CREATE TABLE events(
+  id         INTEGER PRIMARY KEY,
+  job_id     INTEGER REFERENCES jobs(id) ON DELETE CASCADE,
+  printer_id INTEGER REFERENCES printers(id),
+  at         REAL NOT NULL,
+  kind       TEXT NOT NULL,
+  message    TEXT NOT NULL
+);
+CREATE INDEX events_by_job ON events(job_id, id);
+)sql";
+
+}  // namespace tactus::spool

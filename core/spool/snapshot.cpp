@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "spool/snapshot.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "common/utf8.hpp"
+
+namespace tactus::spool {
+namespace {
+
+using nlohmann::json;
+
+std::string page_where(std::size_t page, std::size_t line = 0) {
+    std::string w = "page " + std::to_string(page);
+    if (line) w += " line " + std::to_string(line);
+    return w;
+}
+
+}  // namespace
+
+std::string to_snapshot(const PagedDocument& doc) {
+    json pages = json::array();
+    for (const auto& page : doc.pages) {
+        json lines = json::array();
+        for (const auto& line : page.lines) lines.push_back(to_unicode_text(line));
+        pages.push_back({{"number", page.braille_number},
+                         {"print_page", page.print_page},
+                         {"lines", std::move(lines)}});
+    }
+    const json j{{"format", kSnapshotFormat},
+                 {"geometry",
+                  {{"cells_per_line", doc.geometry.cells_per_line},
+                   {"lines_per_page", doc.geometry.lines_per_page},
+                   {"interpoint", doc.geometry.interpoint},
+                   {"eight_dot", doc.geometry.eight_dot}}},
+                 {"pages", std::move(pages)}};
+    return j.dump();
+}
+
+Result<PagedDocument> from_snapshot(std::string_view text) {
+    const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (j.is_discarded() || !j.is_object()) return fail("document snapshot is not valid JSON");
+    if (j.value("format", "") != kSnapshotFormat)
+        return fail("document snapshot has an unknown format (expected " +
+                        std::string(kSnapshotFormat) + ")",
+                    "format");
+    const auto g = j.find("geometry");
+    const auto pages = j.find("pages");
+    if (g == j.end() || !g->is_object() || pages == j.end() || !pages->is_array())
+        return fail("document snapshot lacks its geometry or pages");
+
+    PagedDocument doc;
+    auto int_field = [&](const char* name, int& out) -> Result<void> {
+        const auto it = g->find(name);
+        if (it == g->end() || !it->is_number_integer() || it->get<int>() < 1 || it->get<int>() > 1000)
+            return fail("missing or out of range", std::string("geometry.") + name);
+        out = it->get<int>();
+        return {};
+    };
+    auto bool_field = [&](const char* name, bool& out) -> Result<void> {
+        const auto it = g->find(name);
+        if (it == g->end() || !it->is_boolean()) return fail("missing or not true/false", std::string("geometry.") + name);
+        out = it->get<bool>();
+        return {};
+    };
+    if (auto r = int_field("cells_per_line", doc.geometry.cells_per_line); !r) return std::unexpected(r.error());
+    if (auto r = int_field("lines_per_page", doc.geometry.lines_per_page); !r) return std::unexpected(r.error());
+    if (auto r = bool_field("interpoint", doc.geometry.interpoint); !r) return std::unexpected(r.error());
+    if (auto r = bool_field("eight_dot", doc.geometry.eight_dot); !r) return std::unexpected(r.error());
+
+    const auto max_cells = static_cast<std::size_t>(doc.geometry.cells_per_line);
+    const auto max_lines = static_cast<std::size_t>(doc.geometry.lines_per_page);
+    std::size_t page_no = 0;
+    for (const auto& p : *pages) {
+        ++page_no;
+        const auto lines = p.find("lines");
+        const auto number = p.find("number");
+        const auto print = p.find("print_page");
+        if (!p.is_object() || lines == p.end() || !lines->is_array() || number == p.end() ||
+            !number->is_number_integer() || print == p.end() || !print->is_string())
+            return fail("malformed page", page_where(page_no));
+        if (lines->size() > max_lines)
+            return fail(std::to_string(lines->size()) + " lines, the geometry allows " +
+                            std::to_string(max_lines),
+                        page_where(page_no));
+        Page page;
+        page.braille_number = number->get<int>();
+        page.print_page = print->get<std::string>();
+        std::size_t line_no = 0;
+        for (const auto& l : *lines) {
+            ++line_no;
+            if (!l.is_string()) return fail("line is not text", page_where(page_no, line_no));
+            auto cps = utf8_to_utf32(l.get<std::string>());
+            if (!cps) return std::unexpected(located(cps.error(), page_where(page_no, line_no)));
+            if (cps->size() > max_cells)
+                return fail(std::to_string(cps->size()) + " cells, the geometry allows " +
+                                std::to_string(max_cells),
+                            page_where(page_no, line_no));
+            BrailleLine line;
+            line.reserve(cps->size());
+            for (char32_t c : *cps) {
+                if (!Cell::is_unicode_braille(c))
+                    return fail("not a braille cell", page_where(page_no, line_no));
+                line.push_back(Cell::from_unicode(c));
+            }
+            page.lines.push_back(std::move(line));
+        }
+        doc.pages.push_back(std::move(page));
+    }
+    return doc;
+}
+
+Result<PagedDocument> select_pages(const PagedDocument& doc, std::size_t first, std::size_t last) {
+    const std::size_t n = doc.pages.size();
+    if (first == 0) first = 1;
+    if (last == 0) last = n;
+    if (first > last || last > n)
+        return fail("page range " + std::to_string(first) + "-" + std::to_string(last) +
+                        " is outside the document's " + std::to_string(n) + " pages",
+                    "--pages");
+    PagedDocument out;
+    out.geometry = doc.geometry;
+    out.pages.assign(doc.pages.begin() + static_cast<std::ptrdiff_t>(first - 1),
+                     doc.pages.begin() + static_cast<std::ptrdiff_t>(last));
+    return out;
+}
+
+}  // namespace tactus::spool

@@ -1,0 +1,618 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "spool/spool.hpp"
+
+#include <sqlite3.h>
+
+#include <chrono>
+#include <ctime>
+#include <system_error>
+
+#include "spool/runner_token.hpp"
+#include "spool/schema.hpp"
+#include "spool/try.hpp"
+
+namespace tactus::spool {
+namespace {
+
+constexpr const char* kJobColumns =
+    "j.id, j.printer_id, p.name, j.title, j.sheets_per_copy, j.copies, j.first_page, "
+    "j.last_page, j.priority, j.state, j.reason, j.control, j.resume_sheet, j.retries, "
+    "j.not_before, j.runner, j.submitted_by, j.submitted_at, j.updated_at, j.started_at, "
+    "j.finished_at, j.link_job, j.run_start_sheet, j.run_open";
+
+std::string job_query(std::string_view tail) {
+    return std::string("SELECT ") + kJobColumns +
+           " FROM jobs j JOIN printers p ON p.id = j.printer_id " + std::string(tail);
+}
+
+std::size_t size_col(const sql::Statement& s, int c) {
+    const auto v = s.int64(c);
+    return v > 0 ? static_cast<std::size_t>(v) : 0;
+}
+
+Result<JobRecord> read_job(const sql::Statement& s) {
+    JobRecord j;
+    j.id = s.int64(0);
+    j.printer_id = s.int64(1);
+    j.printer = s.text(2);
+    j.title = s.text(3);
+    j.sheets_per_copy = size_col(s, 4);
+    j.copies = size_col(s, 5);
+    j.first_page = size_col(s, 6);
+    j.last_page = size_col(s, 7);
+    j.priority = static_cast<int>(s.int64(8));
+    SPOOL_LET(state, parse_job_state(s.text(9)));
+    j.state = state;
+    j.reason = s.text(10);
+    SPOOL_LET(control, parse_control(s.text(11)));
+    j.control = control;
+    if (!s.is_null(12)) j.resume_sheet = size_col(s, 12);
+    j.retries = static_cast<int>(s.int64(13));
+    j.not_before = s.real(14);
+    j.runner = s.text(15);
+    j.user = s.text(16);
+    j.submitted_at = s.real(17);
+    j.updated_at = s.real(18);
+    if (!s.is_null(19)) j.started_at = s.real(19);
+    if (!s.is_null(20)) j.finished_at = s.real(20);
+    if (!s.is_null(21)) j.link_job = static_cast<std::uint16_t>(s.int64(21));
+    j.run_start_sheet = size_col(s, 22);
+    j.run_open = s.int64(23) != 0;
+    return j;
+}
+
+PrinterRecord read_printer(const sql::Statement& s) {
+    return PrinterRecord{s.int64(0), s.text(1), s.text(2), s.text(3), s.text(4)};
+}
+
+constexpr const char* kPrinterColumns = "SELECT id, name, device, profile_json, runner FROM printers ";
+
+auto i64(std::size_t v) { return static_cast<std::int64_t>(v); }
+
+std::string job_where(JobId id) { return "job " + std::to_string(id); }
+
+}  // namespace
+
+double now_seconds() {
+    using namespace std::chrono;
+    return duration<double>(system_clock::now().time_since_epoch()).count();
+}
+
+Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options) {
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(path, ec);
+    if (!exists) {
+        if (!options.create) return fail("no spool database here (nothing queued yet?)", path.string());
+        if (path.has_parent_path()) {
+            std::filesystem::create_directories(path.parent_path(), ec);
+            if (ec)
+                return fail("cannot create the spool folder: " + ec.message(),
+                            path.parent_path().string());
+        }
+    }
+    SPOOL_LET(db, sql::Database::open(path, options.create, options.busy_timeout_ms));
+    const bool read_only = sqlite3_db_readonly(db.handle(), "main") == 1;
+    if (read_only && !options.read_only_ok)
+        return fail("the spool database is read-only (file or disk write-protected); "
+                    "nothing can be queued or changed",
+                    path.string());
+
+    // The first read of the file: a damaged or foreign file fails here, before
+    // anything is written to it. (Scoped: open statements hold a read
+    // transaction, and the journal mode cannot change inside one.)
+    std::int64_t user_version = 0, app_id = 0;
+    bool empty = false;
+    {
+    auto version = db.prepare("PRAGMA user_version");
+    if (!version) return std::unexpected(version.error());
+    auto has_row = version->step();
+    if (!has_row)
+        return fail("not a usable spool database: " + has_row.error().message +
+                        "; it was left untouched (move it aside with `tactus-cli queue "
+                        "recover`, or point --db elsewhere)",
+                    path.string());
+    user_version = version->int64(0);
+    auto app = db.prepare("PRAGMA application_id");
+    if (!app || !app->step()) return fail("cannot read the database header", path.string());
+    app_id = app->int64(0);
+    auto tables = db.prepare("SELECT count(*) FROM sqlite_schema");
+    if (!tables || !tables->step())
+        return fail("cannot read the database schema (damaged?)", path.string());
+    empty = tables->int64(0) == 0;
+    }
+
+    if (empty && user_version == 0) {
+        if (read_only) return fail("the spool database is empty and read-only", path.string());
+        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
+        auto tx = sql::Transaction::begin(db);
+        if (!tx) return std::unexpected(tx.error());
+        SPOOL_TRY(db.exec(kSchema));
+        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
+                          "; PRAGMA application_id=" + std::to_string(kApplicationId)));
+        SPOOL_TRY(tx->commit());
+    } else if (app_id != kApplicationId) {
+        return fail("this SQLite file is not a Tactus spool (application id " +
+                        std::to_string(app_id) + "); it was left untouched",
+                    path.string());
+    } else if (user_version > kSchemaVersion) {
+        return fail("the spool was written by a newer Tactus (schema " +
+                        std::to_string(user_version) + ", this one knows " +
+                        std::to_string(kSchemaVersion) + ")",
+                    path.string());
+    }
+    if (!read_only) {
+        // WAL: readers never block the runner's progress writes. FULL: a
+        // committed pass survives a power cut, not just a process crash (a lost
+        // pass record would mean embossing a sheet twice).
+        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
+        SPOOL_TRY(db.exec("PRAGMA synchronous=FULL"));
+    }
+    SPOOL_TRY(db.exec("PRAGMA foreign_keys=ON"));
+    return Spool(std::move(db), read_only);
+}
+
+Result<void> Spool::check() {
+    SPOOL_LET(s, db_.prepare("PRAGMA quick_check"));
+    SPOOL_LET(row, s.step());
+    if (!row || s.text(0) != "ok")
+        return fail("integrity check failed: " + (row ? s.text(0) : std::string("no answer")),
+                    db_.path().string());
+    return {};
+}
+
+Result<void> Spool::insert_event(std::optional<JobId> job, std::optional<PrinterId> printer,
+                                 std::string_view kind, std::string_view message) {
+    SPOOL_LET(s, db_.prepare(
+                     "INSERT INTO events(job_id, printer_id, at, kind, message) VALUES(?,?,?,?,?)"));
+    s.bind(1, job).bind(2, printer).bind(3, now_seconds()).bind(4, kind).bind(5, message);
+    return s.run();
+}
+
+Result<void> Spool::log(std::optional<JobId> job, std::optional<PrinterId> printer,
+                        std::string_view kind, std::string_view message) {
+    return insert_event(job, printer, kind, message);
+}
+
+// --- printers
+
+Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view device,
+                                         std::string_view profile_json) {
+    if (name.empty()) return fail("a printer needs a name", "--printer");
+    if (device.empty()) return fail("a printer needs a device string", "--device");
+    {
+        SPOOL_LET(tx, sql::Transaction::begin(db_));
+        SPOOL_LET(s, db_.prepare(
+                         "INSERT INTO printers(name, device, profile_json, created_at) VALUES(?,?,?,?)"));
+        s.bind(1, name).bind(2, device).bind(3, profile_json).bind(4, now_seconds());
+        if (auto r = s.run(); !r) {
+            if (printer(name)) return fail("printer '" + std::string(name) + "' already exists", "--printer");
+            return std::unexpected(r.error());
+        }
+        const auto id = db_.last_insert_rowid();
+        SPOOL_TRY(insert_event({}, id, "printer",
+                               "printer '" + std::string(name) + "' added on " + std::string(device)));
+        SPOOL_TRY(tx.commit());
+    }
+    return printer(name);
+}
+
+Result<PrinterRecord> Spool::update_printer(std::string_view name, std::optional<std::string> device,
+                                            std::optional<std::string> profile_json) {
+    SPOOL_LET(p, printer(name));
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare("UPDATE printers SET device = ?, profile_json = ? WHERE id = ?"));
+    s.bind(1, device.value_or(p.device)).bind(2, profile_json.value_or(p.profile_json)).bind(3, p.id);
+    SPOOL_TRY(s.run());
+    std::string what = "printer '" + p.name + "' changed:";
+    if (device) what += " device " + *device;
+    if (profile_json) what += " new profile";
+    SPOOL_TRY(insert_event({}, p.id, "printer", what));
+    SPOOL_TRY(tx.commit());
+    return printer(p.id);
+}
+
+Result<PrinterRecord> Spool::printer(std::string_view name) {
+    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "WHERE name = ?"));
+    s.bind(1, name);
+    SPOOL_LET(row, s.step());
+    if (!row) {
+        std::string known;
+        if (auto all = printers(); all)
+            for (const auto& p : *all) known += (known.empty() ? "" : ", ") + p.name;
+        return fail("unknown printer '" + std::string(name) + "' (" +
+                        (known.empty() ? "no printers are set up; add one with "
+                                         "`tactus-cli queue printer add`"
+                                       : "known: " + known) +
+                        ")",
+                    "--printer");
+    }
+    return read_printer(s);
+}
+
+Result<PrinterRecord> Spool::printer(PrinterId id) {
+    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "WHERE id = ?"));
+    s.bind(1, id);
+    SPOOL_LET(row, s.step());
+    if (!row) return fail("no printer with id " + std::to_string(id));
+    return read_printer(s);
+}
+
+Result<std::vector<PrinterRecord>> Spool::printers() {
+    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "ORDER BY name"));
+    std::vector<PrinterRecord> out;
+    for (;;) {
+        SPOOL_LET(row, s.step());
+        if (!row) break;
+        out.push_back(read_printer(s));
+    }
+    return out;
+}
+
+// --- jobs
+
+Result<JobId> Spool::submit(const JobSubmission& job) {
+    if (job.sheets_per_copy == 0) return fail("the document has no pages to emboss");
+    if (job.copies == 0 || job.copies > 10000) return fail("copies must be 1 to 10000", "--copies");
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(p, printer(job.printer));
+    SPOOL_LET(s, db_.prepare(
+                     "INSERT INTO jobs(printer_id, title, document, profile_json, sheets_per_copy, "
+                     "copies, first_page, last_page, priority, state, submitted_by, submitted_at, "
+                     "updated_at) VALUES(?,?,?,?,?,?,?,?,?,'queued',?,?,?)"));
+    const double now = now_seconds();
+    s.bind(1, p.id).bind(2, job.title).bind(3, job.document).bind(4, p.profile_json)
+        .bind(5, i64(job.sheets_per_copy)).bind(6, i64(job.copies)).bind(7, i64(job.first_page))
+        .bind(8, i64(job.last_page)).bind(9, std::int64_t{job.priority}).bind(10, job.user)
+        .bind(11, now).bind(12, now);
+    SPOOL_TRY(s.run());
+    const JobId id = db_.last_insert_rowid();
+    SPOOL_TRY(insert_event(id, p.id, "submitted",
+                           "'" + job.title + "' by " + job.user + ": " +
+                               std::to_string(job.sheets_per_copy) + " sheet(s) x " +
+                               std::to_string(job.copies) + " cop" + (job.copies == 1 ? "y" : "ies") +
+                               " on " + p.name));
+    SPOOL_TRY(tx.commit());
+    return id;
+}
+
+Result<JobRecord> Spool::job_locked(JobId id) {
+    SPOOL_LET(s, db_.prepare(job_query("WHERE j.id = ?")));
+    s.bind(1, id);
+    SPOOL_LET(row, s.step());
+    if (!row) return fail("no such job", job_where(id));
+    return read_job(s);
+}
+
+Result<JobRecord> Spool::job(JobId id) { return job_locked(id); }
+
+Result<std::string> Spool::document_snapshot(JobId id) {
+    SPOOL_LET(s, db_.prepare("SELECT document FROM jobs WHERE id = ?"));
+    s.bind(1, id);
+    SPOOL_LET(row, s.step());
+    if (!row) return fail("no such job", job_where(id));
+    return s.text(0);
+}
+
+Result<std::string> Spool::profile_snapshot(JobId id) {
+    SPOOL_LET(s, db_.prepare("SELECT profile_json FROM jobs WHERE id = ?"));
+    s.bind(1, id);
+    SPOOL_LET(row, s.step());
+    if (!row) return fail("no such job", job_where(id));
+    return s.text(0);
+}
+
+Result<std::vector<JobRecord>> Spool::jobs(bool finished, std::optional<std::string> printer_name) {
+    std::string where = printer_name ? "AND p.name = ?1 " : "";
+    std::string sql =
+        job_query("WHERE j.state IN ('queued','running','paused') " + where +
+                  "ORDER BY (j.state = 'running') DESC, j.priority DESC, j.id");
+    std::vector<JobRecord> out;
+    auto collect = [&](const std::string& q) -> Result<void> {
+        SPOOL_LET(s, db_.prepare(q));
+        if (printer_name) s.bind(1, *printer_name);
+        for (;;) {
+            SPOOL_LET(row, s.step());
+            if (!row) return {};
+            SPOOL_LET(j, read_job(s));
+            out.push_back(std::move(j));
+        }
+    };
+    SPOOL_TRY(collect(sql));
+    if (finished)
+        SPOOL_TRY(collect(job_query("WHERE j.state IN ('completed','cancelled','failed') " + where +
+                                    "ORDER BY j.id DESC")));
+    return out;
+}
+
+Result<std::vector<SheetProgress>> Spool::progress(JobId id) {
+    SPOOL_LET(s, db_.prepare("SELECT sheet, passes_total, passes_done, spoiled FROM progress "
+                             "WHERE job_id = ? ORDER BY sheet"));
+    s.bind(1, id);
+    std::vector<SheetProgress> out;
+    for (;;) {
+        SPOOL_LET(row, s.step());
+        if (!row) break;
+        out.push_back(SheetProgress{size_col(s, 0), size_col(s, 1), size_col(s, 2), size_col(s, 3)});
+    }
+    return out;
+}
+
+Result<std::vector<EventRecord>> Spool::events(std::optional<JobId> job, std::size_t limit) {
+    SPOOL_LET(s, db_.prepare(
+                     "SELECT * FROM (SELECT id, job_id, at, kind, message FROM events "
+                     "WHERE ?1 IS NULL OR job_id = ?1 ORDER BY id DESC LIMIT ?2) ORDER BY id"));
+    s.bind(1, job).bind(2, i64(limit));
+    std::vector<EventRecord> out;
+    for (;;) {
+        SPOOL_LET(row, s.step());
+        if (!row) break;
+        EventRecord e;
+        e.id = s.int64(0);
+        if (!s.is_null(1)) e.job = s.int64(1);
+        e.at = s.real(2);
+        e.kind = s.text(3);
+        e.message = s.text(4);
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t> resume_sheet) {
+    {
+        SPOOL_LET(tx, sql::Transaction::begin(db_));
+        SPOOL_LET(j, job_locked(id));
+        const bool held = !j.runner.empty();
+        auto t = apply(j.state, held, action);
+        if (!t) return std::unexpected(located(t.error(), job_where(id)));
+        if (resume_sheet) {
+            if (action != Action::resume && action != Action::retry)
+                return fail("a start sheet only goes with resume or retry", "--from-sheet");
+            if (*resume_sheet < 1 || *resume_sheet > j.total_sheets())
+                return fail("sheet " + std::to_string(*resume_sheet) + " is outside the job's " +
+                                std::to_string(j.total_sheets()) + " sheets",
+                            "--from-sheet");
+            if (t->control == Control::resume)
+                return fail("the job is paused on its printer and continues where it stopped; "
+                            "cancel-free restart from another sheet needs the runner to let go "
+                            "first (pause, then stop serve, or retry after it fails)",
+                            "--from-sheet");
+        }
+        SPOOL_LET(s, db_.prepare(
+                         "UPDATE jobs SET state = ?, control = ?, reason = ?, updated_at = ?, "
+                         "resume_sheet = coalesce(?, resume_sheet), retries = "
+                         "CASE WHEN ? THEN 0 ELSE retries END, not_before = "
+                         "CASE WHEN ? THEN 0 ELSE not_before END, finished_at = "
+                         "CASE WHEN ? THEN ? ELSE finished_at END WHERE id = ?"));
+        const bool requeued = t->state == JobState::queued;
+        const bool finishes = is_terminal(t->state) && !is_terminal(j.state);
+        const double now = now_seconds();
+        std::optional<std::int64_t> sheet;
+        if (resume_sheet) sheet = i64(*resume_sheet);
+        s.bind(1, to_string(t->state)).bind(2, to_string(t->control))
+            .bind(3, t->control == Control::none ? std::string_view(t->reason) : std::string_view(j.reason))
+            .bind(4, now).bind(5, sheet).bind(6, std::int64_t{requeued}).bind(7, std::int64_t{requeued})
+            .bind(8, std::int64_t{finishes}).bind(9, now).bind(10, id);
+        if (requeued) s.bind(3, std::string_view{});
+        SPOOL_TRY(s.run());
+        std::string message = std::string(to_string(action)) + " requested by the operator";
+        if (t->control != Control::none) message += " (passed to the runner)";
+        if (resume_sheet) message += "; restart at sheet " + std::to_string(*resume_sheet);
+        SPOOL_TRY(insert_event(id, j.printer_id, to_string(action), message));
+        SPOOL_TRY(tx.commit());
+    }
+    return job(id);
+}
+
+// --- runners
+
+Result<void> Spool::claim_printer(PrinterId printer_id, std::string_view token) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(p, printer(printer_id));
+    if (!p.runner.empty() && p.runner != token && runner_alive(p.runner))
+        return fail("printer '" + p.name + "' is already served by " + p.runner, p.name);
+    if (!p.runner.empty() && p.runner != token)
+        SPOOL_TRY(insert_event({}, p.id, "recovered",
+                               "runner " + p.runner + " is gone; " + std::string(token) + " takes over"));
+    SPOOL_LET(set, db_.prepare("UPDATE printers SET runner = ? WHERE id = ?"));
+    set.bind(1, token).bind(2, p.id);
+    SPOOL_TRY(set.run());
+    // Jobs the dead runner held: running ones were interrupted mid-stream and
+    // go back to the queue; their write-ahead record stays so the next run
+    // reconciles with the controller before sending anything.
+    SPOOL_LET(held, db_.prepare(job_query("WHERE j.printer_id = ? AND j.runner != '' AND j.runner != ?")));
+    held.bind(1, p.id).bind(2, token);
+    std::vector<JobRecord> orphans;
+    for (;;) {
+        SPOOL_LET(row, held.step());
+        if (!row) break;
+        SPOOL_LET(j, read_job(held));
+        orphans.push_back(std::move(j));
+    }
+    for (const auto& j : orphans) {
+        SPOOL_LET(u, db_.prepare(
+                         "UPDATE jobs SET runner = '', control = '', updated_at = ?, "
+                         "state = CASE WHEN state = 'running' THEN 'queued' ELSE state END, "
+                         "reason = CASE WHEN state = 'running' THEN 'interrupted: resumes at the first "
+                         "unfinished sheet' ELSE reason END WHERE id = ?"));
+        u.bind(1, now_seconds()).bind(2, j.id);
+        SPOOL_TRY(u.run());
+        SPOOL_TRY(insert_event(j.id, p.id, "interrupted",
+                               "the runner holding it (" + j.runner + ") stopped while the job was " +
+                                   to_string(j.state)));
+    }
+    return tx.commit();
+}
+
+Result<void> Spool::release_printer(PrinterId printer_id, std::string_view token) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare("UPDATE printers SET runner = '' WHERE id = ? AND runner = ?"));
+    s.bind(1, printer_id).bind(2, token);
+    SPOOL_TRY(s.run());
+    SPOOL_LET(u, db_.prepare("UPDATE jobs SET runner = '', updated_at = ?, "
+                             "state = CASE WHEN state = 'running' THEN 'queued' ELSE state END "
+                             "WHERE printer_id = ? AND runner = ?"));
+    u.bind(1, now_seconds()).bind(2, printer_id).bind(3, token);
+    SPOOL_TRY(u.run());
+    return tx.commit();
+}
+
+Result<std::optional<JobRecord>> Spool::claim_next(PrinterId printer_id, std::string_view token,
+                                                   double now) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.state = 'queued' AND "
+                                       "j.not_before <= ? ORDER BY j.priority DESC, j.id LIMIT 1")));
+    s.bind(1, printer_id).bind(2, now);
+    SPOOL_LET(row, s.step());
+    if (!row) return std::optional<JobRecord>{};
+    SPOOL_LET(j, read_job(s));
+    SPOOL_LET(u, db_.prepare("UPDATE jobs SET state = 'running', runner = ?, reason = '', "
+                             "control = '', updated_at = ?, started_at = coalesce(started_at, ?) "
+                             "WHERE id = ?"));
+    u.bind(1, token).bind(2, now).bind(3, now).bind(4, j.id);
+    SPOOL_TRY(u.run());
+    SPOOL_TRY(insert_event(j.id, printer_id, "started", "taken by runner " + std::string(token)));
+    SPOOL_TRY(tx.commit());
+    return job(j.id);
+}
+
+Result<void> Spool::set_sheet_passes(JobId id, const std::vector<std::size_t>& passes) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare("INSERT INTO progress(job_id, sheet, passes_total) VALUES(?,?,?) "
+                             "ON CONFLICT(job_id, sheet) DO UPDATE SET passes_total = "
+                             "excluded.passes_total WHERE passes_done <= excluded.passes_total"));
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+        s.reset();
+        s.bind(1, id).bind(2, i64(i + 1)).bind(3, i64(passes[i]));
+        SPOOL_TRY(s.run());
+    }
+    return tx.commit();
+}
+
+Result<void> Spool::record_passes(JobId id, std::size_t sheet, std::size_t passes_done) {
+    // One autocommit statement: the cheapest durable write, done once per
+    // executed pass. max() keeps a late or repeated report from lowering it.
+    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
+                             "WHERE job_id = ? AND sheet = ? AND ? <= passes_total"));
+    s.bind(1, i64(passes_done)).bind(2, id).bind(3, i64(sheet)).bind(4, i64(passes_done));
+    SPOOL_TRY(s.run());
+    if (db_.changes() != 1)
+        return fail("progress for sheet " + std::to_string(sheet) + " pass " +
+                        std::to_string(passes_done) + " does not fit the job's plan",
+                    job_where(id));
+    return {};
+}
+
+Result<void> Spool::spoil_sheet(JobId id, std::size_t sheet, std::string_view message) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
+                             "WHERE job_id = ? AND sheet = ?"));
+    s.bind(1, id).bind(2, i64(sheet));
+    SPOOL_TRY(s.run());
+    SPOOL_TRY(insert_event(id, {}, "spoiled", message));
+    return tx.commit();
+}
+
+Result<void> Spool::restart_sheet(JobId id, std::size_t sheet, std::string_view message) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0 WHERE job_id = ? AND sheet = ?"));
+    s.bind(1, id).bind(2, i64(sheet));
+    SPOOL_TRY(s.run());
+    SPOOL_TRY(insert_event(id, {}, "reprint", message));
+    return tx.commit();
+}
+
+Result<void> Spool::begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet) {
+    SPOOL_LET(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_open = 1, "
+                             "updated_at = ? WHERE id = ?"));
+    std::optional<std::int64_t> lj;
+    if (link_job) lj = *link_job;
+    s.bind(1, lj).bind(2, i64(start_sheet)).bind(3, now_seconds()).bind(4, id);
+    return s.run();
+}
+
+Result<void> Spool::end_run(JobId id) {
+    SPOOL_LET(s, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
+    s.bind(1, now_seconds()).bind(2, id);
+    return s.run();
+}
+
+Result<void> Spool::set_state(JobId id, JobState state, std::string_view reason,
+                              std::string_view kind, std::string_view message, bool held) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(j, job_locked(id));
+    const double now = now_seconds();
+    const bool release = !held || is_terminal(state) || state == JobState::queued;
+    SPOOL_LET(s, db_.prepare(
+                     "UPDATE jobs SET state = ?, reason = ?, updated_at = ?, "
+                     "runner = CASE WHEN ? THEN '' ELSE runner END, "
+                     "control = CASE WHEN ? THEN '' ELSE control END, "
+                     "finished_at = CASE WHEN ? THEN ? ELSE finished_at END WHERE id = ?"));
+    s.bind(1, to_string(state)).bind(2, reason).bind(3, now).bind(4, std::int64_t{release})
+        .bind(5, std::int64_t{release}).bind(6, std::int64_t{is_terminal(state)}).bind(7, now)
+        .bind(8, id);
+    SPOOL_TRY(s.run());
+    SPOOL_TRY(insert_event(id, j.printer_id, kind, message));
+    return tx.commit();
+}
+
+Result<void> Spool::requeue(JobId id, std::string_view reason, double not_before, bool count_retry) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(j, job_locked(id));
+    SPOOL_LET(s, db_.prepare("UPDATE jobs SET state = 'queued', runner = '', control = '', "
+                             "reason = ?, not_before = ?, retries = retries + ?, updated_at = ? "
+                             "WHERE id = ?"));
+    s.bind(1, reason).bind(2, not_before).bind(3, std::int64_t{count_retry}).bind(4, now_seconds())
+        .bind(5, id);
+    SPOOL_TRY(s.run());
+    SPOOL_TRY(insert_event(id, j.printer_id, "requeued", reason));
+    return tx.commit();
+}
+
+Result<Control> Spool::take_control(JobId id) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(q, db_.prepare("SELECT control FROM jobs WHERE id = ?"));
+    q.bind(1, id);
+    SPOOL_LET(row, q.step());
+    if (!row) return fail("no such job", job_where(id));
+    SPOOL_LET(control, parse_control(q.text(0)));
+    if (control != Control::none) {
+        SPOOL_LET(clear, db_.prepare("UPDATE jobs SET control = '' WHERE id = ?"));
+        clear.bind(1, id);
+        SPOOL_TRY(clear.run());
+    }
+    SPOOL_TRY(tx.commit());
+    return control;
+}
+
+Result<void> Spool::clear_resume_sheet(JobId id) {
+    SPOOL_LET(s, db_.prepare("UPDATE jobs SET resume_sheet = NULL WHERE id = ?"));
+    s.bind(1, id);
+    return s.run();
+}
+
+Result<std::int64_t> Spool::data_version() {
+    SPOOL_LET(s, db_.prepare("PRAGMA data_version"));
+    SPOOL_LET(row, s.step());
+    if (!row) return fail("no data_version", db_.path().string());
+    return s.int64(0);
+}
+
+Result<std::filesystem::path> set_aside(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return fail("no file to set aside", path.string());
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
+    const std::filesystem::path aside = path.string() + ".broken-" + stamp;
+    for (const char* suffix : {"", "-wal", "-shm"}) {
+        const std::filesystem::path from = path.string() + suffix;
+        if (!std::filesystem::exists(from, ec)) continue;
+        std::filesystem::rename(from, aside.string() + suffix, ec);
+        if (ec) return fail("cannot move the damaged database aside: " + ec.message(), from.string());
+    }
+    return aside;
+}
+
+}  // namespace tactus::spool

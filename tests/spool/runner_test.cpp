@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The runner against the simulated controller (in-process line, virtual time):
+// jobs complete with every sheet struck exactly once, faults pause the job with
+// their reason and resume from the first unfinished sheet, cables come and go,
+// and a document that no longer fits its printer is kept, not lost.
+#include <gtest/gtest.h>
+
+#include "profile/profile.hpp"
+#include "profile/profile_json.hpp"
+#include "spool/printing.hpp"
+#include "spool/runner.hpp"
+#include "spool/snapshot.hpp"
+#include "sim_rig.hpp"
+#include "spool_fixtures.hpp"
+#include "strike_audit.hpp"
+
+namespace tactus::spool {
+namespace {
+
+using test::SimPrinter;
+using test::TempDir;
+
+std::string profile_text(const profile::PrinterProfile& p = profile::default_profile()) {
+    return profile::to_json(p).dump();
+}
+
+struct Bench {
+    TempDir dir;
+    std::filesystem::path db = dir / "spool.db";
+    Spool spool;
+    std::atomic<bool> stop{false};
+
+    Bench() : spool(*Spool::open(db)) {
+        EXPECT_TRUE(spool.add_printer("lab", "sim", profile_text()));
+    }
+    JobId submit(std::size_t pages, std::size_t copies = 1) {
+        auto id = spool.submit(test::submission("lab", pages, copies));
+        EXPECT_TRUE(id) << id.error().to_string();
+        return *id;
+    }
+    plan::JobPlan plan_of(JobId id) {
+        auto doc = from_snapshot(*spool.document_snapshot(id));
+        auto plan = plan_copies(*doc, profile::default_profile(), spool.job(id)->copies);
+        EXPECT_TRUE(plan) << plan.error().to_string();
+        return *plan;
+    }
+    std::string audit(JobId id, SimPrinter& printer) {
+        return test::audit_strikes(plan_of(id), printer.controller->strike_log(), *spool.progress(id)).problems;
+    }
+    std::vector<std::string> kinds(JobId id) {
+        std::vector<std::string> k;
+        const auto events = *spool.events(id, 1000);
+        for (const auto& e : events) k.push_back(e.kind);
+        return k;
+    }
+};
+
+RunnerOptions fast_options() {
+    RunnerOptions o;
+    o.retry_backoff = std::chrono::milliseconds(0);
+    o.poll = std::chrono::milliseconds(5);
+    o.link.fault_wait = std::chrono::milliseconds(2000);  // virtual seconds: instant
+    o.link.reconnect_deadline = std::chrono::milliseconds(3000);
+    return o;
+}
+
+std::optional<RunEnd> run_next(Runner& r, std::atomic<bool>& stop) {
+    auto end = r.run_next(stop);
+    EXPECT_TRUE(end) << end.error().to_string();
+    return end ? *end : std::nullopt;
+}
+
+TEST(Runner, EmbossesEveryCopyExactlyOnceAndRecordsEachSheet) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(5, 2);  // 3 sheets x 2 copies
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    const auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::completed);
+    const auto progress = *b.spool.progress(id);
+    ASSERT_EQ(progress.size(), 6u);
+    for (const auto& p : progress) EXPECT_TRUE(p.done()) << "sheet " << p.sheet;
+    EXPECT_EQ(printer.controller->strike_log().size(), b.plan_of(id).strikes);
+    EXPECT_EQ(b.audit(id, printer), "");
+    EXPECT_EQ(b.kinds(id).back(), "completed");
+    EXPECT_FALSE(run_next(r, b.stop));  // nothing left
+}
+
+TEST(Runner, PaperOutPausesWithTheReasonAndResumesAtTheFirstUnfinishedSheet) {
+    Bench b;
+    SimPrinter printer;
+    printer.controller->inject_paper_out_at_sheet(2);
+    const JobId id = b.submit(6);
+    Runner r(b.db, "lab", printer.connect(fast_options().link), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::paused);
+    auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::paused);
+    EXPECT_NE(job.reason.find("paper out"), std::string::npos) << job.reason;
+    auto progress = *b.spool.progress(id);
+    EXPECT_TRUE(progress[0].done());
+    EXPECT_EQ(progress[1].passes_done, 0u);
+    // Nothing runs while it waits for the operator.
+    EXPECT_FALSE(run_next(r, b.stop));
+    printer.controller->load_paper();
+    ASSERT_TRUE(b.spool.act(id, Action::resume));
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
+}
+
+TEST(Runner, HammerFaultMidSheetDiscardsThatSheetAndEmbossesItAgainOnce) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(6);
+    const auto plan = b.plan_of(id);
+    // Half-way through sheet 2.
+    std::size_t strikes_sheet1 = 0, strikes_sheet2 = 0;
+    for (const auto& p : plan.sheets[0].passes) strikes_sheet1 += p.strikes.size();
+    for (const auto& p : plan.sheets[1].passes) strikes_sheet2 += p.strikes.size();
+    printer.controller->inject_hammer_fault_at_strike(strikes_sheet1 + strikes_sheet2 / 2);
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::paused);
+    auto job = *b.spool.job(id);
+    EXPECT_NE(job.reason.find("hammer"), std::string::npos) << job.reason;
+    auto progress = *b.spool.progress(id);
+    EXPECT_TRUE(progress[0].done());
+    EXPECT_GT(progress[1].passes_done, 0u);
+    EXPECT_FALSE(progress[1].done());
+    ASSERT_TRUE(b.spool.act(id, Action::resume));
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    progress = *b.spool.progress(id);
+    EXPECT_EQ(progress[1].spoiled, 1u);
+    const auto audit = test::audit_strikes(plan, printer.controller->strike_log(), progress);
+    EXPECT_EQ(audit.problems, "");
+    EXPECT_EQ(audit.partial_attempts, 1u);
+    const auto kinds = b.kinds(id);
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), "spoiled"), kinds.end());
+}
+
+TEST(Runner, ControllerWarmResetMidSheetIsRidThroughWithoutADoubleDot) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(4);
+    printer.controller->reset_at_strike(40, /*keep_ram=*/true);
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(printer.controller->resets(), 1u);
+    const auto audit = test::audit_strikes(b.plan_of(id), printer.controller->strike_log(), *b.spool.progress(id));
+    EXPECT_EQ(audit.problems, "");
+    EXPECT_EQ(audit.partial_attempts, 0u);
+}
+
+TEST(Runner, ControllerPowerLossPausesThenTheSheetIsEmbossedAgain) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(4);
+    printer.controller->reset_at_strike(60, /*keep_ram=*/false);
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::paused);
+    EXPECT_NE(b.spool.job(id)->reason.find("lost power"), std::string::npos) << b.spool.job(id)->reason;
+    ASSERT_TRUE(b.spool.act(id, Action::resume));
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
+}
+
+TEST(Runner, AnUnpluggedCableIsRetriedAndNothingIsLostOrRepeated) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(6);
+    Runner r(b.db, "lab", printer.connect(fast_options().link), fast_options());
+    ASSERT_TRUE(r.start());
+    // Pulled for good (longer than the reconnect deadline) once the first
+    // sheet is recorded: virtual time runs only while the link talks, so the
+    // cut is timed by progress, from another thread as a person would.
+    std::atomic<bool> done{false};
+    std::thread cutter([&] {
+        auto watch = Spool::open(b.db);
+        while (!done) {
+            auto p = watch->progress(id);
+            if (p && !p->empty() && (*p)[0].done()) {
+                *printer.cut = true;
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+    });
+    const auto first = run_next(r, b.stop);
+    done = true;
+    cutter.join();
+    if (first == RunEnd::completed) GTEST_SKIP() << "the job finished before the cable could be cut";
+    EXPECT_EQ(first, RunEnd::requeued);
+    auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::queued);
+    EXPECT_EQ(job.retries, 1);
+    EXPECT_NE(job.reason.find("retry 1 of 5"), std::string::npos) << job.reason;
+    // Still unplugged: the next try fails to connect and backs off again.
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
+    EXPECT_EQ(b.spool.job(id)->retries, 2);
+    *printer.cut = false;  // plugged back in
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
+}
+
+TEST(Runner, ADeviceThatNeverComesBackPausesTheJobAfterTheRetryLimit) {
+    Bench b;
+    SimPrinter printer;
+    *printer.cut = true;
+    const JobId id = b.submit(2);
+    auto options = fast_options();
+    options.max_retries = 2;
+    Runner r(b.db, "lab", printer.connect(), options);
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::paused);
+    const auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::paused);
+    EXPECT_NE(job.reason.find("no such device"), std::string::npos) << job.reason;
+    EXPECT_NE(job.reason.find("gave up after 2 retries"), std::string::npos) << job.reason;
+    EXPECT_TRUE(printer.controller->strike_log().empty());
+    // The operator plugs it in and resumes: the retry count starts afresh.
+    *printer.cut = false;
+    ASSERT_TRUE(b.spool.act(id, Action::resume));
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+}
+
+TEST(Runner, ADocumentThatNoLongerFitsTheProfileFailsClearlyAndIsKept) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(4);
+    auto narrow = profile::default_profile();
+    narrow.geometry.cells_per_line = 8;  // the document's lines have 10 cells
+    ASSERT_TRUE(b.spool.update_printer("lab", {}, profile_text(narrow)));
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::failed);
+    auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::failed);
+    EXPECT_NE(job.reason.find("no longer lays out with printer 'lab''s current profile"), std::string::npos)
+        << job.reason;
+    EXPECT_NE(job.reason.find("the job is kept"), std::string::npos);
+    EXPECT_TRUE(printer.controller->strike_log().empty());
+    EXPECT_TRUE(from_snapshot(*b.spool.document_snapshot(id)));
+    ASSERT_TRUE(b.spool.update_printer("lab", {}, profile_text()));
+    ASSERT_TRUE(b.spool.act(id, Action::retry));
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
+}
+
+TEST(Runner, OperatorCanRestartFromAChosenSheet) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(6);
+    // Sheet 1 was embossed elsewhere: start at sheet 2 (page 3).
+    ASSERT_TRUE(b.spool.act(id, Action::pause));
+    ASSERT_TRUE(b.spool.act(id, Action::resume, 2));
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    const auto log = printer.controller->strike_log();
+    ASSERT_FALSE(log.empty());
+    for (const auto& s : log) EXPECT_GE(s.sheet, 2u);
+    const auto progress = *b.spool.progress(id);
+    EXPECT_FALSE(progress[0].done());
+    EXPECT_TRUE(progress[1].done());
+    EXPECT_EQ(test::audit_strikes(b.plan_of(id), log, progress, /*require_all=*/false).problems, "");
+    const auto kinds = b.kinds(id);
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), "resume-point"), kinds.end());
+}
+
+}  // namespace
+}  // namespace tactus::spool
