@@ -7,11 +7,12 @@ build=${BUILD:-build/default}
 data=${BENCH_DATA:-$build/bench-data}
 mkdir -p "$data"
 [ -s "$data/kjv.txt" ] || bible -f gen1:1-rev22:21 > "$data/kjv.txt"
-echo "== layout (KJV)"
-"$build/bench/layout/bench_layout" "$data/kjv.txt"
-for extra in "$build"/bench/*/bench_*; do
-  case "$extra" in */bench_layout) continue ;; esac
-  [ -x "$extra" ] || continue
-  echo "== $(basename "$extra")"
-  "$extra" "$data/kjv.txt" || true
-done
+run() { echo "== $1"; shift; "$@"; }
+run "layout: KJV, Tactus pipeline vs lou_translate" "$build/bench/layout/bench_layout" "$data/kjv.txt"
+run "plan + estimate: KJV" "$build/bench/plan/bench_plan" "$data/kjv.txt"
+run "import: 100 MiB text" "$build/bench/import/bench_import"
+run "link: efficiency on the pty simulator" "$build/bench/link/bench_link"
+run "spool: 10,000 jobs" "$build/bench/spool/bench_spool"
+if [ -x "$build/bench/gui/bench_gui" ]; then
+  QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages" "$build/bench/gui/bench_gui" "$data/kjv.txt"
+fi

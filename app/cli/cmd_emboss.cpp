@@ -8,6 +8,7 @@
 
 #include "command.hpp"
 #include "emboss_queue.hpp"
+#include "encode/controller_config.hpp"
 #include "encode/frame.hpp"
 #include "encode/plan_json.hpp"
 #include "encode/stream.hpp"
@@ -41,20 +42,6 @@ struct Prepared {
     encode::ControllerConfig config;
 };
 
-// What the controller needs from the printer profile, in its own units.
-encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
-    encode::ControllerConfig c;
-    c.carriage_steps_per_m = static_cast<std::uint32_t>(p.carriage.steps_per_mm * 1000 + 0.5);
-    c.feed_steps_per_m = static_cast<std::uint32_t>(p.feed.steps_per_mm * 1000 + 0.5);
-    c.carriage_travel_steps = static_cast<std::int32_t>(
-        (p.paper.width_mm + p.head.concave_offset_mm) * p.carriage.steps_per_mm);
-    // Homing and seeking at a gentle 40 mm/s.
-    c.home_interval_ticks = static_cast<std::uint16_t>(
-        std::clamp(plan::kTickHz / (40.0 * p.carriage.steps_per_mm), 1.0, 65535.0));
-    c.hammer_ticks = static_cast<std::uint16_t>(std::clamp(p.head.dwell_s * plan::kTickHz, 1.0, 65535.0));
-    return c;
-}
-
 Prepared prepare(const EmbossArgs& a) {
     Prepared out;
     if (a.plan_file) {
@@ -70,7 +57,7 @@ Prepared prepare(const EmbossArgs& a) {
     options.layout.geometry.eight_dot = profile.geometry.eight_dot || a.layout.eight_dot;
     const auto doc = require(lay_out_file(a.layout.file, options));
     out.plan = require(plan::plan_job(doc, profile));
-    out.config = controller_config(profile);
+    out.config = encode::controller_config(profile);
     return out;
 }
 

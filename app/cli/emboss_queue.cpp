@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "pipeline/pipeline.hpp"
+#include "profile/profile_json.hpp"
 #include "spool/snapshot.hpp"
 #include "spool_args.hpp"
 
@@ -61,9 +62,18 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
                                         "--printer"});
         printer = all.front().name;
     }
-    require(s.printer(printer));
+    const auto record = require(s.printer(printer));
     const auto [first, last] = parse_range(a.pages);
-    const auto doc = require(lay_out_file(layout.file, layout.pipeline_options()));
+    // The page format is the queue printer's unless the command line overrides
+    // it, as for direct embossing.
+    const auto profile = profile::parse_profile(record.profile_json);
+    if (!profile) fail_with(exit_bad_input, located(profile.error(), "printer " + record.name));
+    auto options = layout.pipeline_options();
+    options.layout.geometry.interpoint = profile->geometry.interpoint;
+    if (layout.cells == 0) options.layout.geometry.cells_per_line = profile->geometry.cells_per_line;
+    if (layout.lines == 0) options.layout.geometry.lines_per_page = profile->geometry.lines_per_page;
+    options.layout.geometry.eight_dot = profile->geometry.eight_dot || layout.eight_dot;
+    const auto doc = require(lay_out_file(layout.file, options));
     const auto part = require(spool::select_pages(doc, first, last));
     spool::JobSubmission job;
     job.printer = printer;

@@ -174,7 +174,7 @@ void first_frame(const std::filesystem::path& dir) {
         char buf[4096];
         for (pollfd p{master, POLLIN, 0}; poll(&p, 1, 0) > 0 && read(master, buf, sizeof buf) > 0;) {}
         const auto t0 = Clock::now();
-        const pid_t emboss = spawn({cli, "emboss", "--queue", "--interpoint", doc, "--db", db}, true);
+        const pid_t emboss = spawn({cli, "emboss", "--queue", doc, "--db", db}, true);
         int status = 0;
         waitpid(emboss, &status, 0);
         const double queued = since(t0);

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "common/result.hpp"
+#include "encode/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "layout/page.hpp"
 #include "plan/plan.hpp"
@@ -23,6 +24,5 @@ Result<plan::JobPlan> plan_copies(const PagedDocument& doc, const profile::Print
 // Copies of an already planned copy, renumbered (exposed for tests).
 plan::JobPlan repeat_plan(const plan::JobPlan& one, std::size_t copies);
 
-encode::ControllerConfig controller_config(const profile::PrinterProfile& profile);
 
 }  // namespace tactus::spool

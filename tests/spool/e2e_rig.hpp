@@ -83,7 +83,7 @@ struct E2E {
     JobId queue_text(const std::string& text, std::vector<std::string> extra = {}) {
         const auto file = dir / "doc.txt";
         std::ofstream(file) << text;
-        std::vector<std::string> args{"emboss", "--queue", "--interpoint", file.string()};
+        std::vector<std::string> args{"emboss", "--queue", file.string()};
         args.insert(args.end(), extra.begin(), extra.end());
         const auto [code, out] = cli(args);
         EXPECT_EQ(code, 0) << out;

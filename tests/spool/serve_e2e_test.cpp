@@ -33,7 +33,7 @@ TEST(ServeE2E, QueuedJobIsEmbossedExactlyOnceAndServeStopsCleanly) {
 
 TEST(ServeE2E, PaperOutWaitsForPaperThenCarriesOn) {
     E2E e;
-    PtySim sim(e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "3"});
+    PtySim sim(e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "2000"});
     ASSERT_EQ(e.cli({"queue", "printer", "add", "lab", "--device", sim.device()}).first, 0);
     const JobId id = e.queue_text(test::kText, {"--copies", "2"});
     auto serve = e.serve();
@@ -113,7 +113,7 @@ TEST(ServeE2E, ConcurrentClientsAddAndCancelWhileServing) {
     std::vector<std::unique_ptr<test::Process>> clients;
     for (int c = 0; c < 4; ++c) {
         const std::string script =
-            "for i in 1 2; do " + test::kCli + " emboss --queue --interpoint '" + file.string() + "' --db '" + e.db.string() +
+            "for i in 1 2; do " + test::kCli + " emboss --queue '" + file.string() + "' --db '" + e.db.string() +
             "' --title c" + std::to_string(c) + "-$i || exit 1; done; id=$(" + test::kCli + " queue list --db '" +
             e.db.string() + "' | awk '$7==\"c" + std::to_string(c) + "-2\"{print $1}'); [ -z \"$id\" ] || " +
             test::kCli + " queue cancel $id --db '" + e.db.string() + "' || true";

@@ -321,13 +321,5 @@ TEST(SpoolStore, AFullDiskFailsTheSubmissionAndKeepsEarlierJobs) {
     EXPECT_TRUE(s->check());
 }
 
-TEST(SpoolStore, DefaultPathFollowsXdg) {
-    // Covered through the CLI test (environment); here only the explicit path.
-    TempDir dir;
-    auto s = Spool::open(dir / "x.db");
-    ASSERT_TRUE(s);
-    EXPECT_EQ(s->path(), dir / "x.db");
-}
-
 }  // namespace
 }  // namespace tactus::spool

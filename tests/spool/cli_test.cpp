@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The queue commands' answers to bad input: exit codes, messages naming what
+// is wrong, and files left untouched.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "common/file_io.hpp"
+#include "process.hpp"
+#include "spool_fixtures.hpp"
+
+namespace tactus::spool {
+namespace {
+
+using test::run;
+using test::TempDir;
+
+const std::string kCli = TACTUS_CLI;
+
+// tactus-cli <command> --db DB <rest>; stderr (this call's only) goes to `err`.
+std::pair<int, std::string> cli(const std::filesystem::path& db, const std::vector<std::string>& args,
+                                const std::filesystem::path& err) {
+    std::vector<std::string> full{kCli, args.front(), "--db", db.string()};
+    full.insert(full.end(), args.begin() + 1, args.end());
+    std::filesystem::remove(err);
+    test::Process p(full, err.string());
+    auto out = p.read_all();
+    return {p.wait(), out};
+}
+
+TEST(QueueCli, UnknownPrinterUnknownJobAndRefusedActionsAreBadInput) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    ASSERT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
+    std::ofstream(dir / "a.txt") << "Hello.\n";
+    EXPECT_EQ(cli(db, {"emboss", "--queue", "--printer", "nope", (dir / "a.txt").string()}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("unknown printer 'nope' (known: lab)"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(cli(db, {"queue", "show", "42"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("job 42: no such job"), std::string::npos);
+    const auto [code, out] = cli(db, {"emboss", "--queue", (dir / "a.txt").string()}, err);
+    ASSERT_EQ(code, 0) << test::read_text(err);
+    EXPECT_EQ(out.rfind("queued job 1:", 0), 0u) << out;
+    EXPECT_EQ(cli(db, {"queue", "cancel", "1"}, err).first, 0);
+    EXPECT_EQ(cli(db, {"queue", "pause", "1"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("job 1: job is cancelled: nothing to pause"), std::string::npos);
+    EXPECT_EQ(cli(db, {"queue", "retry", "1", "--from-sheet", "9"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("outside the job's 1 sheets"), std::string::npos);
+    const auto [lcode, listed] = cli(db, {"queue", "list", "--all"}, err);
+    EXPECT_EQ(lcode, 0);
+    EXPECT_NE(listed.find("cancelled"), std::string::npos) << listed;
+}
+
+TEST(QueueCli, ADamagedDatabaseIsReportedKeptAndOnlyMovedAsideOnRequest) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    const std::string junk(10000, 'z');
+    ASSERT_TRUE(write_file_atomic(db, junk));
+    EXPECT_EQ(cli(db, {"queue", "list"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("left untouched"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 3);
+    EXPECT_EQ(*read_file(db), junk);
+    const auto [code, out] = cli(db, {"queue", "recover"}, err);
+    ASSERT_EQ(code, 0) << test::read_text(err);
+    const auto pos = out.find("moved the damaged spool to ");
+    ASSERT_NE(pos, std::string::npos) << out;
+    const auto aside = out.substr(pos + 27, out.find(' ', pos + 27) - pos - 27);
+    EXPECT_EQ(*read_file(aside), junk);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
+}
+
+TEST(QueueCli, TheDefaultDatabaseFollowsTheEnvironment) {
+    TempDir dir;
+    const auto err = dir / "err";
+    const std::string env = "TACTUS_SPOOL_DB=" + (dir / "from-env.db").string();
+    test::Process p({"/usr/bin/env", env, kCli, "queue", "printer", "add", "lab", "--device", "pty:/dev/null"},
+                    err.string());
+    EXPECT_EQ(p.wait(), 0) << test::read_text(err);
+    EXPECT_TRUE(std::filesystem::exists(dir / "from-env.db"));
+    const std::string xdg = "XDG_DATA_HOME=" + (dir / "xdg").string();
+    test::Process q({"/usr/bin/env", "-u", "TACTUS_SPOOL_DB", xdg, kCli, "queue", "printer", "add", "lab", "--device",
+                     "pty:/dev/null"},
+                    err.string());
+    EXPECT_EQ(q.wait(), 0) << test::read_text(err);
+    EXPECT_TRUE(std::filesystem::exists(dir / "xdg" / "tactus" / "spool.db"));
+}
+
+}  // namespace
+}  // namespace tactus::spool
