@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "controller/sim_controller.hpp"
+#include "encode/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "transport/hid_uart.hpp"
 #include "transport/lpt_port.hpp"
@@ -28,20 +29,6 @@ std::vector<DeviceChoice> list_devices(std::vector<std::string>* problems) {
         }
     }
     return out;
-}
-
-encode::ControllerConfig controller_config(const profile::PrinterProfile& p) {
-    // Kept identical to `tactus-cli emboss` so a job from the app and from the
-    // command line drive the controller the same way.
-    encode::ControllerConfig c;
-    c.carriage_steps_per_m = static_cast<std::uint32_t>(p.carriage.steps_per_mm * 1000 + 0.5);
-    c.feed_steps_per_m = static_cast<std::uint32_t>(p.feed.steps_per_mm * 1000 + 0.5);
-    c.carriage_travel_steps =
-        static_cast<std::int32_t>((p.paper.width_mm + p.head.concave_offset_mm) * p.carriage.steps_per_mm);
-    c.home_interval_ticks =
-        static_cast<std::uint16_t>(std::clamp(plan::kTickHz / (40.0 * p.carriage.steps_per_mm), 1.0, 65535.0));
-    c.hammer_ticks = static_cast<std::uint16_t>(std::clamp(p.head.dwell_s * plan::kTickHz, 1.0, 65535.0));
-    return c;
 }
 
 std::string explain_faults(std::uint8_t f) {
@@ -90,7 +77,7 @@ Result<Embosser> Embosser::connect(const std::string& device, const profile::Pri
         e.link_ = std::make_unique<link::Link>(std::move(*l));
     }
     if (auto h = e.link_->hello(); !h) return std::unexpected(located(h.error(), device));
-    if (auto c = e.link_->configure(controller_config(p)); !c) return std::unexpected(located(c.error(), device));
+    if (auto c = e.link_->configure(encode::controller_config(p)); !c) return std::unexpected(located(c.error(), device));
     return e;
 }
 

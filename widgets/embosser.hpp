@@ -32,9 +32,6 @@ struct DeviceChoice {
 // and parallel ports. Enumeration problems are reported, not fatal.
 std::vector<DeviceChoice> list_devices(std::vector<std::string>* problems = nullptr);
 
-// What the controller needs from the profile, in its units (as `tactus-cli emboss`).
-encode::ControllerConfig controller_config(const profile::PrinterProfile& p);
-
 // A fault or status flag, in words, with what to do.
 std::string explain_faults(std::uint8_t fault_flags);
 std::string explain_status(const encode::Status& s);

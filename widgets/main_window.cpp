@@ -296,6 +296,18 @@ void MainWindow::restore_settings() {
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {700}, Qt::Horizontal);
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+    // Six-key entry: the keys for dots 1 to 6, e.g. "FDSJKL" (the default).
+    const auto keys = s.value(QStringLiteral("braille/six_keys")).toString();
+    if (keys.size() == 6) {
+        SixKeyChord::Mapping m{};
+        bool ok = true;
+        for (int i = 0; i < 6; ++i) {
+            const QKeySequence k(QString(keys[i]));
+            ok = ok && !k.isEmpty();
+            if (ok) m[static_cast<std::size_t>(i)] = k[0].key();
+        }
+        if (ok) editor_->braille_pane()->chord().set_mapping(m);
+    }
     const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
     if (table != QString::fromStdString(editor_->layout().tables())) set_table(table);
 }

@@ -198,6 +198,16 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending[0].autosave_path));
     }
 
+    void six_key_mapping_comes_from_the_settings() {
+        QSettings().setValue(QStringLiteral("braille/six_keys"), QStringLiteral("ASDJKL"));  // dot 1 on A
+        MainWindow w;
+        QSettings().remove(QStringLiteral("braille/six_keys"));
+        const auto& m = w.editor()->braille_pane()->chord().mapping();
+        QCOMPARE(m[0], int(Qt::Key_A));
+        QCOMPARE(m[2], int(Qt::Key_D));
+        QCOMPARE(m[5], int(Qt::Key_L));
+    }
+
     void keyboard_reaches_everything_with_names() {
         MainWindow w;
         w.show();
