@@ -10,7 +10,7 @@ cli=build/default/app/tactus-cli
 mkdir -p out
 "$cli" layout --interpoint --to brf -o out/welcome.brf resources/samples/welcome.md
 "$cli" layout --interpoint --to pef -o out/welcome.pef resources/samples/welcome.md
-"$cli" layout --summary resources/samples/welcome.md
+"$cli" layout --interpoint --summary resources/samples/welcome.md
 # Emboss it on the built-in simulated controller (exit 0 only when the controller
 # has confirmed executing every pass); the last lines are the summary.
 "$cli" emboss --device sim resources/samples/welcome.md | tail -n 2
