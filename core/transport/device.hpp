@@ -30,6 +30,12 @@ struct UartSettings {
     char parity = 'n';  // n, o, e
     int stop_bits = 1;
     enum class Flow { none, rtscts, xonxoff } flow = Flow::none;
+
+    // Line capacity: a start bit, 8 data bits, the parity bit if any, stop bits.
+    [[nodiscard]] double bytes_per_second() const {
+        const int bits = 1 + 8 + (parity != 'n' ? 1 : 0) + stop_bits;
+        return static_cast<double>(baud) / bits;
+    }
 };
 Result<UartSettings> uart_settings(const DeviceSpec& spec);
 

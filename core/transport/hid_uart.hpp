@@ -62,7 +62,7 @@ public:
     Result<std::size_t> read(std::span<std::uint8_t> buffer,
                              std::chrono::microseconds timeout) override;
     Result<void> reopen() override;
-    [[nodiscard]] double bytes_per_second() const override { return uart_.baud / 10.0; }
+    [[nodiscard]] double bytes_per_second() const override { return uart_.bytes_per_second(); }
     [[nodiscard]] std::string describe() const override { return name_; }
 
 private:

@@ -83,8 +83,7 @@ Result<void> SerialPort::reopen() {
 }
 
 double SerialPort::bytes_per_second() const {
-    const int bits = 1 + 8 + (uart_.parity != 'n' ? 1 : 0) + uart_.stop_bits;
-    return static_cast<double>(uart_.baud) / bits;
+    return uart_.bytes_per_second();
 }
 
 Result<void> SerialPort::write(std::span<const std::uint8_t> bytes) {

@@ -105,8 +105,7 @@ Result<void> TtyPort::reopen() {
 }
 
 double TtyPort::bytes_per_second() const {
-    const int bits = 1 + 8 + (uart_.parity != 'n' ? 1 : 0) + uart_.stop_bits;
-    return static_cast<double>(uart_.baud) / bits;
+    return uart_.bytes_per_second();
 }
 
 Result<void> TtyPort::write(std::span<const std::uint8_t> bytes) {
