@@ -4,6 +4,7 @@
 //    (braille shows list structure by indentation, not by a print bullet);
 //  - print page break: a form feed, a thematic break (---, ***), or an HTML
 //    comment <!-- pagebreak --> (<!-- pagebreak 12 --> sets the printed label);
+//    <!-- braillepage --> forces a new braille page;
 //  - code is plain text, one paragraph per line of a code block;
 //  - link and image text are kept, URLs dropped; inline HTML tags are dropped,
 //    other HTML comments are dropped, HTML blocks keep their text without tags.
@@ -260,6 +261,9 @@ private:
                 auto label = trim(body.substr(9));
                 if (label.starts_with(':')) label = trim(label.substr(1));
                 builder_.print_page_break(line, std::string(label));
+            } else if (body == "braillepage") {
+                // Written by the editor for a forced braille page (a BRF form feed).
+                builder_.braille_page_break(line);
             }
             return;  // any other comment is not content
         }

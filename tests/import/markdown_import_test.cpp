@@ -50,6 +50,15 @@ TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
     EXPECT_EQ(doc.blocks, expected);
 }
 
+// The editor saves a forced braille page (e.g. a BRF form feed) as this comment.
+TEST(MarkdownImport, BraillePageCommentIsABraillePageBreak) {
+    const auto doc = md("one\n\n<!-- braillepage -->\n\ntwo\n");
+    ASSERT_EQ(doc.blocks.size(), 3u);
+    EXPECT_EQ(doc.blocks[1].kind, BlockKind::braille_page_break);
+    EXPECT_EQ(doc.blocks[1].source_line, 3);
+    EXPECT_EQ(doc.blocks[2].text(), "two");
+}
+
 TEST(MarkdownImport, FormFeedIsAPrintPageBreakAndLinesStayRight) {
     const auto doc = md("# A\n\nbefore\n\f\nafter\n");
     const std::vector<Block> expected = {text_block(H, 1, {{"A"}}, 1),
