@@ -20,4 +20,4 @@ packages=(
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+$SUDO apt-get install -y -qq "${packages[@]}" >/dev/null
