@@ -36,7 +36,7 @@ void add_tables_command(CLI::App& app) {
                 continue;
             }
             std::cout << std::left << std::setw(16) << t.file << "  " << std::setw(26)
-                      << t.language << "  " << t.name << (t.recommended ? "" : "") << '\n';
+                      << t.language << "  " << t.name << '\n';
         }
         if (hidden > 0)
             std::cout << "(" << hidden << " more installed tables: tactus-cli tables --all)\n";
