@@ -46,6 +46,7 @@ ProfileEditor::ProfileEditor(QWidget* parent) : QWidget(parent) {
     add(head, "carriage.a_max_mm_s2", tr("Carriage acceleration"), tr("mm/s\u00b2"), 1, 1e7, 0, [](P& p) -> double& { return p.carriage.a_max_mm_s2; });
     add(head, "carriage.j_max_mm_s3", tr("Carriage jerk"), tr("mm/s\u00b3"), 1, 1e11, 0, [](P& p) -> double& { return p.carriage.j_max_mm_s3; });
     add(head, "carriage.backlash_mm", tr("Carriage backlash"), tr("mm"), 0, 1, 3, [](P& p) -> double& { return p.carriage.backlash_mm; });
+    add(head, "motion.step_tolerance", tr("Step timing tolerance"), tr("of a step interval"), 0, 0.5, 2, [](P& p) -> double& { return p.motion.step_tolerance; });
     auto* dynamics = group(tr("Dynamics and vibration"));
     add(dynamics, "dynamics.head_mass_kg", tr("Head mass"), tr("kg"), 0.001, 1000, 3, [](P& p) -> double& { return p.dynamics.head_mass_kg; });
     add(dynamics, "dynamics.belt_stiffness_n_m", tr("Belt stiffness"), tr("N/m"), 1, 1e9, 0, [](P& p) -> double& { return p.dynamics.belt_stiffness_n_m; });

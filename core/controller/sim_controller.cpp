@@ -48,6 +48,18 @@ double SimController::ticks_to_s(std::uint64_t ticks) const {
 
 std::size_t SimController::ring_free() const { return ram::kRingBytes - ring_.size(); }
 
+bool SimController::move_buffered(std::size_t first_op_size) const {
+    std::size_t pos = first_op_size;
+    while (pos < ring_.size()) {
+        const auto d = encode::decode_op(std::span(ring_).subspan(pos));
+        if (!d) return true;  // checked on receipt; cannot happen
+        if (d->first.code != OpCode::move || !d->first.continuation) return true;
+        pos += d->second;
+    }
+    // The rest of the move has not arrived; a full ring cannot wait for it.
+    return ring_free() < encode::kMaxPayload;
+}
+
 encode::AckInfo SimController::ack_info() const {
     encode::AckInfo a;
     a.buffer_free = static_cast<std::uint8_t>(ring_free());
@@ -350,6 +362,8 @@ void SimController::set_waiting(bool waiting, double now) {
     if (waiting && starved_since_ < 0) starved_since_ = now;
     if (!waiting && starved_since_ >= 0) {
         starved_s_ += now - starved_since_;
+        if (now > starved_since_ && waits_.size() < 100'000)
+            waits_.push_back({starved_since_, now - starved_since_, executed_passes_});
         starved_since_ = -1;
     }
 }
@@ -385,7 +399,12 @@ void SimController::advance(double t) {
 }
 
 void SimController::maybe_report_space() {
-    if (session_ && ring_free() >= free_reported_ + encode::kMaxPayload) ack();
+    // Every further frame's worth of room, and at once when a whole frame first
+    // fits: the host holds its next chunk until it knows it fits.
+    const std::size_t free = ring_free();
+    if (session_ && (free >= free_reported_ + encode::kMaxPayload ||
+                     (free >= encode::kMaxPayload && free_reported_ < encode::kMaxPayload)))
+        ack();
 }
 
 // Starts the op at the head of the ring if the controller may run it. Returns
@@ -416,10 +435,21 @@ bool SimController::start_next_op(double now) {
         if (job_active_ && state_ != ControllerState::waiting) {
             state_ = ControllerState::waiting;
             set_waiting(true, now);
+            if (session_ && ring_free() > free_reported_) ack();  // the host may not know the room
         }
         return false;
     }
     const Op& op = decoded->first;
+    // A move starts only once all of it is in the ring (or the ring is full):
+    // running short of data stops the carriage at rest, never mid-ramp.
+    if (op.code == OpCode::move && !continuation && !move_buffered(decoded->second)) {
+        if (job_active_ && state_ != ControllerState::waiting) {
+            state_ = ControllerState::waiting;
+            set_waiting(true, now);
+            if (session_ && ring_free() > free_reported_) ack();  // the host may not know the room
+        }
+        return false;
+    }
     if (in_move_ && !continuation) in_move_ = false;
     if (!job_active_ && op.code != OpCode::job_begin) {  // ops outside a job: a host bug
         stop_job(fault::stream_error, now);
@@ -488,6 +518,8 @@ bool SimController::start_next_op(double now) {
             break;
         case OpCode::strike:
             if (skip_ == 0) {
+                // At rest on the dot for the planned settle, then the hammer.
+                const double wait = ticks_to_s(op.wait_ticks);
                 LoggedStrike l;
                 l.sheet = sheet_;
                 l.hammer = op.hammer;
@@ -495,11 +527,11 @@ bool SimController::start_next_op(double now) {
                 l.carriage_step = carriage_;
                 l.feed_step = feed_;
                 l.pass_index = pass_index_;
-                l.time_s = now;
+                l.time_s = now + wait;
                 l.x_mm = carriage_ * 1000.0 / config_.carriage_steps_per_m;
                 l.y_mm = feed_ * 1000.0 / config_.feed_steps_per_m;
                 log_.push_back(l);
-                duration = ticks_to_s(config_.hammer_ticks);
+                duration = wait + ticks_to_s(config_.hammer_ticks);
             }
             break;
         case OpCode::home:

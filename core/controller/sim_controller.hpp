@@ -88,6 +88,14 @@ public:
     [[nodiscard]] std::size_t duplicates() const { return duplicates_; }
     [[nodiscard]] std::size_t crc_errors() const { return decoder_.stats().crc_errors; }
     [[nodiscard]] double starved_seconds() const { return starved_s_; }
+    // Each time the job waited for data at rest: when, how long, and the
+    // executed-pass count then (for the benchmark's account of where).
+    struct Wait {
+        double at_s = 0;
+        double seconds = 0;
+        std::uint16_t executed_passes = 0;
+    };
+    [[nodiscard]] const std::vector<Wait>& waits() const { return waits_; }
     [[nodiscard]] std::size_t resets() const { return resets_; }
     [[nodiscard]] const encode::ControllerConfig& config() const { return config_; }
 
@@ -130,6 +138,8 @@ private:
     encode::ControllerState state_ = encode::ControllerState::idle;
     std::uint8_t faults_ = 0;
     std::vector<std::uint8_t> ring_;  // job-stream ring, at most ram::kRingBytes
+    // Whether the move whose first op (of this size) heads the ring is whole in it.
+    [[nodiscard]] bool move_buffered(std::size_t first_op_size) const;
     std::uint16_t job_id_ = 0;
     bool job_active_ = false;
     std::uint16_t sheet_ = 0;
@@ -164,6 +174,7 @@ private:
     std::size_t resets_ = 0;
     double starved_since_ = -1;
     double starved_s_ = 0;
+    std::vector<Wait> waits_;
 };
 
 }  // namespace tactus::controller

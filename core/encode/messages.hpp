@@ -14,7 +14,7 @@
 
 namespace tactus::encode {
 
-inline constexpr std::uint8_t kProtocolVersion = 1;
+inline constexpr std::uint8_t kProtocolVersion = 2;
 
 // Frame types. Host-to-controller types are below 0x80, replies have the top bit.
 enum class FrameType : std::uint8_t {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encode/stream.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -11,12 +12,34 @@
 namespace tactus::encode {
 namespace {
 
-// The interval register after the last step of `s`: what the next segment's
-// interval is encoded against.
-std::uint32_t held_interval(const plan::StepSegment& s) {
-    return s.interval_q16 + static_cast<std::uint32_t>(s.add_q16) * s.count;
+// The interval of the last step of `s` (Q16.16, wrapping like the 8051's
+// 32-bit adds): the prediction the next segment's interval is sent against.
+std::uint32_t last_interval(const plan::StepSegment& s) {
+    return s.interval_q16 + static_cast<std::uint32_t>(s.add_q16) * (s.count - 1U);
 }
 
+// The coarsest grid (2^shift Q16.16 units) both the interval and the add lie
+// on: the planner picks the coarsest grid that keeps its steps in tolerance,
+// and the low bits it leaves at zero are not sent.
+unsigned grid_shift(const plan::StepSegment& s) {
+    unsigned shift = 0;
+    const auto add = static_cast<std::uint32_t>(s.add_q16);
+    while (shift < kMaxGridShift && ((s.interval_q16 | add) & (1U << shift)) == 0) ++shift;
+    return shift;
+}
+
+// Per segment: count and grid shift; the interval on that grid as its
+// difference from the previous segment's last interval (the first of an op from
+// 0, so every op decodes alone); the add on that grid. Step timing is
+// continuous and the planner picks coarse grids, so a segment is typically 4 or
+// 5 bytes instead of 12.
+void put_segment(std::vector<std::uint8_t>& out, const plan::StepSegment& s, const plan::StepSegment* prev) {
+    const unsigned shift = grid_shift(s);
+    const std::uint32_t ref = prev ? last_interval(*prev) : 0U;
+    put_uvar(out, (static_cast<std::uint32_t>(s.count) << 4) | shift);
+    put_svar(out, static_cast<std::int32_t>((s.interval_q16 >> shift) - (ref >> shift)));
+    put_svar(out, s.add_q16 >> shift);
+}
 
 void put16(std::vector<std::uint8_t>& o, std::uint16_t v) {
     o.push_back(static_cast<std::uint8_t>(v >> 8));
@@ -53,21 +76,12 @@ void append_op(std::vector<std::uint8_t>& out, const Op& op) {
                                                     (op.negative ? 0x02U : 0U) |
                                                     (op.continuation ? 0x04U : 0U)));
             out.push_back(static_cast<std::uint8_t>(op.segments.size()));
-            // The first interval is absolute; each later one is sent as its
-            // difference from the interval the controller already holds after the
-            // previous segment (interval + add * count, 32-bit wrapping like the
-            // 8051's adds). Step timing is continuous, so that difference is
-            // usually a byte or two instead of four.
-            for (std::size_t i = 0; i < op.segments.size(); ++i) {
-                const auto& s = op.segments[i];
-                if (i == 0) put_uvar(out, s.interval_q16);
-                else put_svar(out, static_cast<std::int32_t>(s.interval_q16 - held_interval(op.segments[i - 1])));
-                put_uvar(out, s.count);
-                put_svar(out, s.add_q16);
-            }
+            for (std::size_t i = 0; i < op.segments.size(); ++i)
+                put_segment(out, op.segments[i], i == 0 ? nullptr : &op.segments[i - 1]);
             break;
         case OpCode::strike:
             out.push_back(op.hammer == plan::Hammer::convex ? 0x30 : 0x31);
+            put_uvar(out, op.wait_ticks);
             break;
         case OpCode::home: out.push_back(0x40); break;
         case OpCode::seek:
@@ -125,23 +139,35 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         if (n == 0 || n > kMaxSegmentsPerOp)
             return fail("move with " + std::to_string(n) + " segments", at_byte(pos - 1));
         for (std::uint8_t i = 0; i < n; ++i) {
-            std::optional<std::uint32_t> interval;
-            if (i == 0) {
-                interval = get_uvar(in, pos);
-            } else if (const auto delta = get_svar(in, pos)) {
-                interval = held_interval(op.segments.back()) + static_cast<std::uint32_t>(*delta);
-            }
-            const auto count = get_uvar(in, pos, 0xFFFF, 3);
-            const auto add = get_svar(in, pos);
-            if (!interval || !count || !add) return truncated();
+            const auto head = get_uvar(in, pos, 0xFFFFF, 3);
+            const auto delta = head ? get_svar(in, pos) : std::nullopt;
+            const auto add = delta ? get_svar(in, pos) : std::nullopt;
+            if (!add) return truncated();
+            const unsigned shift = *head & 0x0F;
+            const auto count = *head >> 4;
+            if (count == 0 || shift > kMaxGridShift)
+                return fail("step segment with count " + std::to_string(count) + " and grid " +
+                                std::to_string(shift),
+                            at_byte(pos));
+            const std::uint32_t ref = i == 0 ? 0U : last_interval(op.segments.back());
+            const std::uint32_t scaled = (ref >> shift) + static_cast<std::uint32_t>(*delta);
+            const std::int64_t add_scaled = *add;
+            if ((static_cast<std::uint64_t>(scaled) << shift) > 0xFFFFFFFFULL ||
+                add_scaled < -(std::int64_t{1} << (31 - shift)) || add_scaled >= (std::int64_t{1} << (31 - shift)))
+                return fail("step segment outside the 32-bit registers", at_byte(pos));
+            const std::uint32_t interval = scaled << shift;
             // The first interval must fit the 16-bit timer; later ones are checked as run.
-            if ((*interval >> plan::kStepFractionBits) < 1 || (*interval >> plan::kStepFractionBits) > 0xFFFF)
+            if ((interval >> plan::kStepFractionBits) < 1)
                 return fail("step interval outside the 16-bit timer", at_byte(pos));
-            op.segments.push_back({*interval, static_cast<std::uint16_t>(*count), *add});
+            op.segments.push_back({interval, static_cast<std::uint16_t>(count),
+                                   static_cast<std::int32_t>(add_scaled * (std::int64_t{1} << shift))});
         }
     } else if (code == 0x30 || code == 0x31) {
         op.code = OpCode::strike;
         op.hammer = code == 0x30 ? plan::Hammer::convex : plan::Hammer::concave;
+        const auto wait = get_uvar(in, pos, kMaxStrikeWaitTicks, 3);
+        if (!wait) return truncated();
+        op.wait_ticks = *wait;
     } else if (code == 0x40) {
         op.code = OpCode::home;
     } else if (code == 0x42 || code == 0x43) {
@@ -209,10 +235,11 @@ Op op_of(OpCode c) {
     o.code = c;
     return o;
 }
-Op strike_op(plan::Hammer h) {
+Op strike_op(plan::Hammer h, std::uint32_t wait) {
     Op o;
     o.code = OpCode::strike;
     o.hammer = h;
+    o.wait_ticks = std::min(wait, kMaxStrikeWaitTicks);
     return o;
 }
 
@@ -223,21 +250,32 @@ public:
         append_op(s_.bytes, o);
         s_.op_ends.push_back(s_.bytes.size());
     }
+    // A move as one MOVE op, or as several when its segments need more than
+    // kMaxMoveOpBytes (the controller runs continuation ops without stopping).
     void move(Axis axis, const plan::StepMove& m) {
-        std::vector<plan::StepSegment> segs;
-        for (const auto& s : m.segments)
-            if (s.count > 0) segs.push_back(s);
-        for (std::size_t i = 0; i < segs.size(); i += kMaxSegmentsPerOp) {
-            Op o;
-            o.code = OpCode::move;
-            o.axis = axis;
-            o.negative = m.steps < 0;
-            o.continuation = i > 0;
-            const auto end = std::min(segs.size(), i + kMaxSegmentsPerOp);
-            o.segments.assign(segs.begin() + static_cast<std::ptrdiff_t>(i),
-                              segs.begin() + static_cast<std::ptrdiff_t>(end));
-            op(o);
+        Op o;
+        o.code = OpCode::move;
+        o.axis = axis;
+        o.negative = m.steps < 0;
+        std::size_t size = 2;  // code and segment count
+        std::vector<std::uint8_t> seg;
+        for (const auto& s : m.segments) {
+            if (s.count == 0) continue;
+            seg.clear();
+            put_segment(seg, s, o.segments.empty() ? nullptr : &o.segments.back());
+            if (!o.segments.empty() &&
+                (size + seg.size() > kMaxMoveOpBytes || o.segments.size() == kMaxSegmentsPerOp)) {
+                op(o);
+                o.continuation = true;
+                o.segments.clear();
+                seg.clear();
+                put_segment(seg, s, nullptr);
+                size = 2;
+            }
+            o.segments.push_back(s);
+            size += seg.size();
         }
+        if (!o.segments.empty()) op(o);
     }
 
 private:
@@ -330,7 +368,7 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                                     std::to_string(pass.strikes[i].carriage_step),
                                 mw);
                 w.move(Axis::carriage, pass.moves[i]);
-                w.op(strike_op(pass.strikes[i].hammer));
+                w.op(strike_op(pass.strikes[i].hammer, pass.moves[i].settle_ticks));
             }
             w.op(op_of(OpCode::pass_end));
         }

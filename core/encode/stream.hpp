@@ -8,8 +8,11 @@
 //   JOB_BEGIN   0x10 u16 job, u16 first pass          JOB_END    0x11
 //   SHEET_BEGIN 0x12 u16 sheet, svar feed origin      SHEET_END  0x13
 //   PASS_BEGIN  0x14 u16 pass, u8 flags, u8 skip      PASS_END   0x15
-//   MOVE        0x20|axis|neg<<1|cont<<2, u8 n, n x (uvar interval_q16, uvar count, svar add_q16)
-//   STRIKE      0x30|hammer                           HOME       0x40
+//   MOVE        0x20|axis|neg<<1|cont<<2, u8 n, n x (uvar count<<4|grid,
+//               svar interval>>grid minus the previous segment's last interval>>grid,
+//               svar add>>grid)                       (docs/protocol.md, "Step segments")
+//   STRIKE      0x30|hammer, uvar ticks at rest before the hammer fires (settle)
+//   HOME        0x40
 //   SEEK        0x42 carriage / 0x43 feed, svar absolute target
 #include <cstddef>
 #include <cstdint>
@@ -42,9 +45,17 @@ inline constexpr std::uint8_t back_side = 0x01;
 inline constexpr std::uint8_t no_feed = 0x02;  // restart: the feed was done before a reset
 }  // namespace pass_flag
 
-// Segments per MOVE op: the most that fit one payload at worst-case varint size
-// (5 + 3 + 5 bytes each after a 2-byte header).
-inline constexpr std::size_t kMaxSegmentsPerOp = 6;
+// A MOVE op carries at most this many bytes of segments (the writer starts a
+// continuation op beyond it), so an op always fits one DATA payload with room
+// for the strike after it.
+inline constexpr std::size_t kMaxMoveOpBytes = 64;
+// Segments per MOVE op: the most that fit kMaxMoveOpBytes at one byte per field.
+inline constexpr std::size_t kMaxSegmentsPerOp = (kMaxMoveOpBytes - 2) / 3;
+// Segment intervals and adds are sent on a grid of 2^0..2^15 Q16.16 units.
+inline constexpr unsigned kMaxGridShift = 15;
+// The longest settle before a strike: 0.9 s at 921.6 kHz (a three-byte varint
+// carries 21 bits).
+inline constexpr std::uint32_t kMaxStrikeWaitTicks = (1U << 21) - 1;
 
 struct Op {
     OpCode code = OpCode::job_end;
@@ -52,6 +63,7 @@ struct Op {
     bool negative = false;             // move: direction
     bool continuation = false;         // move: continues the previous move without stopping
     plan::Hammer hammer = plan::Hammer::convex;  // strike
+    std::uint32_t wait_ticks = 0;                // strike: at rest before the hammer fires
     std::uint16_t id = 0;              // job id, sheet number, pass index
     std::uint16_t first_pass = 0;      // job_begin
     std::uint8_t flags = 0;            // pass_begin

@@ -41,6 +41,9 @@ struct StepMove {
     std::int32_t steps = 0;  // signed: direction is the sign
     std::vector<StepSegment> segments;
     double duration_s = 0;
+    // Ticks at rest between the last step and the end of duration_s: the
+    // planned settle before a strike, which the controller waits out.
+    std::uint32_t settle_ticks = 0;
     bool operator==(const StepMove&) const = default;
 };
 

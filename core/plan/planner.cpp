@@ -103,7 +103,8 @@ Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOpti
 Result<StepMove> Planner::carriage_steps(std::uint32_t steps, const MoveShape& shape) {
     auto it = carriage_cache_.find(steps);
     if (it == carriage_cache_.end()) {
-        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm);
+        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
+                             p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "carriage"));
         it = carriage_cache_.emplace(steps, std::move(*m)).first;
     }
@@ -114,7 +115,8 @@ Result<std::pair<const StepMove*, const MoveShape*>> Planner::feed_move(std::uin
     auto it = feed_cache_.find(steps);
     if (it == feed_cache_.end()) {
         auto shape = make_move(feed_shape(p_), steps / p_.feed.steps_per_mm, limits(p_.feed));
-        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm);
+        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm,
+                             p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "feed"));
         it = feed_cache_.emplace(steps, std::pair{std::move(*m), std::move(shape)}).first;
     }

@@ -42,6 +42,7 @@ std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps
 namespace {
 
 constexpr std::int64_t kOne = std::int64_t{1} << kStepFractionBits;
+constexpr int kMaxGridShift = 15;
 constexpr std::int64_t kMaxIntervalQ = (std::int64_t{0xFFFF} << kStepFractionBits) | 0xFFFF;
 
 // Firing times relative to the segment start, computed as the controller does.
@@ -65,17 +66,22 @@ struct Fit {
     std::int64_t add = 0;
 };
 
-// Can steps [first, first+n) be one segment starting at integer tick `prev`?
-// The reconstruction x_k = k*iv + add*k(k-1)/2 is fitted by least squares to the
-// ideal times, `add` quantised to Q16.16 first (over hundreds of steps one unit of
-// its last bit moves the last step by several ticks) and `iv` refitted for it;
-// then the candidate is replayed with the controller's exact arithmetic. The fit
-// aims at the ideal times, then at the middle of each step's window (the
-// controller truncates, so that is ideal + tol/2).
-bool fits(std::span<const double> t, std::size_t first, std::size_t n, std::int64_t prev,
-          double tol, Fit& out) {
+// Can steps [first, first+n) be one segment starting at integer tick `prev`,
+// with its interval and add on a grid of 2^shift Q16.16 units (the coarser the
+// grid, the fewer bytes on the line: encode/stream.cpp)? The reconstruction
+// x_k = k*iv + add*k(k-1)/2 is fitted by least squares to the ideal times,
+// `add` quantised first (over hundreds of steps one unit of its last bit moves
+// the last step by several ticks) and `iv` refitted for it; then the candidate
+// is replayed with the controller's exact arithmetic. The fit aims at the ideal
+// times, then half a tick later (the controller truncates to whole ticks).
+bool fits(std::span<const double> t, std::span<const double> tols, std::size_t first, std::size_t n,
+          std::int64_t prev, int shift, Fit& out) {
     const auto one = static_cast<double>(kOne);
-    for (const double offset : {0.0, tol / 2}) {
+    const std::int64_t grid = std::int64_t{1} << shift;
+    const auto on_grid = [&](double v, std::int64_t nudge) {
+        return (static_cast<std::int64_t>(std::llround(v / static_cast<double>(grid))) + nudge) * grid;
+    };
+    for (const double offset : {0.0, 0.5}) {
         double saa = 0, sab = 0, sbb = 0, say = 0, sby = 0;
         for (std::size_t i = 0; i < n; ++i) {
             const double k = static_cast<double>(i + 1);
@@ -87,16 +93,20 @@ bool fits(std::span<const double> t, std::size_t first, std::size_t n, std::int6
         const double add = (n == 1 || det <= 0) ? 0.0 : (saa * sby - sab * say) / det;
         const double add_scaled = add * one;
         if (std::fabs(add_scaled) > static_cast<double>(std::numeric_limits<std::int32_t>::max())) continue;
-        const auto add_round = static_cast<std::int64_t>(std::llround(add_scaled));
-        for (const std::int64_t add_q : {add_round, add_round - 1, add_round + 1}) {
+        for (const std::int64_t add_nudge : {0, -1, 1}) {
+            const std::int64_t add_q = n == 1 ? 0 : on_grid(add_scaled, add_nudge);
+            if (n == 1 && add_nudge != 0) break;
             const double iv = (say - static_cast<double>(add_q) / one * sab) / saa;
-            const auto iv_q = static_cast<std::int64_t>(std::llround(iv * one));
-            const bool ok = replay(iv_q, add_q, n, [&](std::size_t k, std::int64_t now) {
-                return std::fabs(static_cast<double>(prev + now) - t[first + k]) <= tol;
-            });
-            if (ok) {
-                out = {iv_q, add_q};
-                return true;
+            for (const std::int64_t iv_nudge : {0, -1, 1}) {
+                if (shift == 0 && iv_nudge != 0) break;
+                const std::int64_t iv_q = on_grid(iv * one, iv_nudge);
+                const bool ok = replay(iv_q, add_q, n, [&](std::size_t k, std::int64_t now) {
+                    return std::fabs(static_cast<double>(prev + now) - t[first + k]) <= tols[first + k];
+                });
+                if (ok) {
+                    out = {iv_q, add_q};
+                    return true;
+                }
             }
         }
     }
@@ -106,12 +116,19 @@ bool fits(std::span<const double> t, std::size_t first, std::size_t n, std::int6
 }  // namespace
 
 Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, double tol) {
+    const std::vector<double> tols(t.size(), tol);
+    return compress_steps(t, tols);
+}
+
+Result<std::vector<StepSegment>> compress_steps(std::span<const double> t,
+                                                std::span<const double> tols) {
+    if (tols.size() != t.size()) return fail("one tolerance per step expected", "steps");
     std::vector<StepSegment> out;
     std::int64_t prev = 0;
     std::size_t first = 0;
     while (first < t.size()) {
         Fit fit;
-        if (!fits(t, first, 1, prev, tol, fit))
+        if (!fits(t, tols, first, 1, prev, 0, fit))
             return fail("step " + std::to_string(first + 1) + " comes " +
                             std::to_string(static_cast<long long>(t[first]) - prev) +
                             " timer ticks after the previous one, more than the controller's "
@@ -123,11 +140,11 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
         Fit best = fit;
         for (std::size_t n = 2;; n *= 2) {
             if (n > left) {
-                if (good < left && fits(t, first, left, prev, tol, fit)) good = left, best = fit;
+                if (good < left && fits(t, tols, first, left, prev, 0, fit)) good = left, best = fit;
                 else if (good < left) bad = left;
                 break;
             }
-            if (fits(t, first, n, prev, tol, fit)) {
+            if (fits(t, tols, first, n, prev, 0, fit)) {
                 good = n, best = fit;
             } else {
                 bad = n;
@@ -136,9 +153,15 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
         }
         while (bad > good + 1) {
             const std::size_t mid = (good + bad) / 2;
-            if (fits(t, first, mid, prev, tol, fit)) good = mid, best = fit;
+            if (fits(t, tols, first, mid, prev, 0, fit)) good = mid, best = fit;
             else bad = mid;
         }
+        // The coarsest grid that still fits these steps: fewer bytes to send.
+        for (int shift = kMaxGridShift; shift > 0; --shift)
+            if (fits(t, tols, first, good, prev, shift, fit)) {
+                best = fit;
+                break;
+            }
         out.push_back(StepSegment{static_cast<std::uint32_t>(best.interval),
                                   static_cast<std::uint16_t>(good),
                                   static_cast<std::int32_t>(best.add)});
@@ -169,16 +192,36 @@ std::vector<std::int64_t> expand_steps(std::span<const StepSegment> segments) {
     return t;
 }
 
-Result<StepMove> encode_move(const MoveShape& shape, std::int32_t steps, double steps_per_mm) {
+std::vector<double> step_tolerances(std::span<const double> t, double fraction) {
+    std::vector<double> tol(t.size(), 1.0);
+    if (fraction <= 0) return tol;
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+        // The shorter of the intervals on either side of the step: a step may
+        // move by that fraction without coming near its neighbours.
+        double iv = t[k + 1] - t[k];
+        iv = std::min(iv, k == 0 ? t[0] : t[k] - t[k - 1]);
+        tol[k] = std::max(1.0, fraction * iv);
+    }
+    // The last step stays within a tick: the move ends, and the settle before
+    // the strike starts, exactly when planned.
+    return tol;
+}
+
+Result<StepMove> encode_move(const MoveShape& shape, std::int32_t steps, double steps_per_mm,
+                             double tolerance_fraction) {
     StepMove m;
     m.steps = steps;
     m.duration_s = shape.duration;
     const auto n = static_cast<std::uint32_t>(std::abs(steps));
     if (n == 0) return m;
     const auto ticks = step_times_ticks(shape, n, steps_per_mm);
-    auto seg = compress_steps(ticks);
+    auto seg = compress_steps(ticks, step_tolerances(ticks, tolerance_fraction));
     if (!seg) return std::unexpected(seg.error());
     m.segments = std::move(*seg);
+    const auto fired = expand_steps(m.segments);
+    const auto end = std::llround(shape.duration * kTickHz);
+    if (!fired.empty() && end > fired.back())
+        m.settle_ticks = static_cast<std::uint32_t>(std::min<std::int64_t>(end - fired.back(), 0xFFFFFFFF));
     return m;
 }
 

@@ -65,6 +65,11 @@ struct Motion {
     bool bidirectional = true;
     ProfileShape shape = ProfileShape::automatic;  // automatic: auto-tune per move
     ShaperKind shaper = ShaperKind::automatic;
+    // How far a step may fire from its ideal time, as a fraction of its own step
+    // interval: the commanded position then stays within this fraction of a step
+    // of the planned trajectory. 0 holds every step to one timer tick (more step
+    // segments, more bytes on the line: docs/motion.md, "Step timing").
+    double step_tolerance = 0.5;
     bool operator==(const Motion&) const = default;
 };
 

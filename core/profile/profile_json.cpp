@@ -192,7 +192,8 @@ json to_json(const PrinterProfile& p) {
         {"motion",
          {{"bidirectional", p.motion.bidirectional},
           {"profile", to_string(p.motion.shape)},
-          {"shaper", to_string(p.motion.shaper)}}},
+          {"shaper", to_string(p.motion.shaper)},
+          {"step_tolerance", p.motion.step_tolerance}}},
         {"dynamics", d},
         {"vibration",
          {{"tolerance_um", p.vibration.tolerance_um},
@@ -247,7 +248,8 @@ Result<PrinterProfile> from_json(const json& j) {
     if (r) r = read_object(j, "motion",
                            {{"bidirectional", &p.motion.bidirectional},
                             {"profile", &p.motion.shape},
-                            {"shaper", &p.motion.shaper}});
+                            {"shaper", &p.motion.shaper},
+                            {"step_tolerance", &p.motion.step_tolerance, true}});
     if (r) r = read_object(j, "dynamics",
                            {{"head_mass_kg", &p.dynamics.head_mass_kg},
                             {"belt_stiffness_n_m", &p.dynamics.belt_stiffness_n_m},

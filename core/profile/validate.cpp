@@ -112,6 +112,7 @@ Result<void> validate(const PrinterProfile& p) {
                   num(pa.width_mm) + " mm): one hammer could never reach it");
     c.positive(p.head.dwell_s, 10, "head.dwell_s", " s");
 
+    c.range(p.motion.step_tolerance, 0, 0.5, "motion.step_tolerance");
     check_axis(c, p.carriage, "carriage");
     check_axis(c, p.feed, "feed");
 

@@ -41,7 +41,7 @@ TEST(Controller, RefusesEverythingBeforeHello) {
 
 TEST(Controller, HelloAdvertisesTheRamBudget) {
     Driver d;
-    auto r = d.send(40, FrameType::hello, encode::encode_hello({77, 1}));
+    auto r = d.send(40, FrameType::hello, encode::encode_hello({77, encode::kProtocolVersion}));
     ASSERT_EQ(r.size(), 1U);
     EXPECT_EQ(r[0].seq, 41);  // next expected
     const auto h = encode::decode_hello_reply(r[0].payload);
@@ -52,10 +52,10 @@ TEST(Controller, HelloAdvertisesTheRamBudget) {
 
 TEST(Controller, StaleDuplicateHelloDoesNotRewindTheSequence) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({5, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({5, encode::kProtocolVersion}));
     d.send(1, FrameType::keepalive);
     d.send(2, FrameType::keepalive);
-    auto r = d.send(0, FrameType::hello, encode::encode_hello({5, 1}));  // the same session's HELLO again
+    auto r = d.send(0, FrameType::hello, encode::encode_hello({5, encode::kProtocolVersion}));  // the same session's HELLO again
     EXPECT_EQ(r.back().seq, 3);
 }
 
@@ -67,7 +67,7 @@ encode::ControllerConfig no_keepalive() {
 
 TEST(Controller, DuplicatesAreAcknowledgedButNeverExecuted) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({1, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     d.send(1, FrameType::configure, encode::encode_config(no_keepalive()));
     const auto plan = testing::make_plan(1, 1, 3);
     auto stream = encode::encode_job(plan, 9, {});
@@ -93,7 +93,7 @@ TEST(Controller, DuplicatesAreAcknowledgedButNeverExecuted) {
 
 TEST(Controller, OutOfOrderFrameIsNakedWithTheExpectedSequence) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({1, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     auto r = d.send(3, FrameType::keepalive);
     ASSERT_EQ(r.back().type, 0x83);
     EXPECT_EQ(r.back().seq, 1);
@@ -102,7 +102,7 @@ TEST(Controller, OutOfOrderFrameIsNakedWithTheExpectedSequence) {
 
 TEST(Controller, UnknownTypesAndBadPayloadsAreRefused) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({1, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     auto r = d.send(1, static_cast<FrameType>(0x3C));
     EXPECT_EQ(encode::decode_nak(r.back().payload)->first, encode::NakReason::unknown_type);
     r = d.send(1, FrameType::data, {0x99, 0x00});  // not an op
@@ -114,7 +114,7 @@ TEST(Controller, UnknownTypesAndBadPayloadsAreRefused) {
 
 TEST(Controller, NeverBuffersMoreThanTheRamAllows) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({1, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     // A job held by paper-out at its first sheet fills up: strikes are one-byte ops.
     d.ctl.inject_paper_out_at_sheet(1);
     std::vector<std::uint8_t> start;
@@ -146,7 +146,7 @@ TEST(Controller, NeverBuffersMoreThanTheRamAllows) {
 
 TEST(Controller, ExecutesInSimulatedTimeFromTheStepSchedule) {
     Driver d;
-    d.send(0, FrameType::hello, encode::encode_hello({1, 1}));
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     d.send(1, FrameType::configure, encode::encode_config(no_keepalive()));
     const auto plan = testing::make_plan(1, 1, 1);
     auto stream = encode::encode_job(plan, 9, {});
@@ -165,6 +165,76 @@ TEST(Controller, ExecutesInSimulatedTimeFromTheStepSchedule) {
     EXPECT_NEAR(d.ctl.strike_log()[0].x_mm, pass.strikes[0].carriage_step / 80.0, 1e-12);
     EXPECT_EQ(d.ctl.status().ack.executed_passes, 1);
     EXPECT_EQ(d.ctl.status().ack.state, encode::ControllerState::idle);
+}
+
+
+// Ops by hand: a pass with one carriage move of 300 steps (cruise at 300 ticks a
+// step) in two parts, and a strike that waits `settle` ticks at rest.
+std::vector<std::uint8_t> ops_of(std::initializer_list<encode::Op> ops) {
+    std::vector<std::uint8_t> b;
+    for (const auto& o : ops) encode::append_op(b, o);
+    return b;
+}
+encode::Op simple(encode::OpCode c, std::uint16_t id = 0) {
+    encode::Op o;
+    o.code = c;
+    o.id = id;
+    return o;
+}
+encode::Op move_part(bool continuation) {
+    encode::Op o;
+    o.code = encode::OpCode::move;
+    o.continuation = continuation;
+    o.segments = {{300U << 16, 150, 0}};
+    return o;
+}
+
+TEST(Controller, StartsAMoveOnlyWhenAllOfItIsBuffered) {
+    Driver d;
+    d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
+    d.send(1, FrameType::configure, encode::encode_config(no_keepalive()));
+    encode::Op strike;
+    strike.code = encode::OpCode::strike;
+    strike.wait_ticks = 9216;  // 10 ms
+    d.send(2, FrameType::data,
+           ops_of({simple(encode::OpCode::job_begin, 5), simple(encode::OpCode::home),
+                   simple(encode::OpCode::sheet_begin, 1), simple(encode::OpCode::pass_begin, 0), move_part(false)}));
+    d.t = 5;
+    d.ctl.advance(d.t);
+    // Half a move in the ring: the carriage stays at rest, waiting for the rest.
+    EXPECT_EQ(d.ctl.status().carriage_step, 0);
+    EXPECT_EQ(d.ctl.status().ack.state, encode::ControllerState::waiting);
+    d.send(3, FrameType::data,
+           ops_of({move_part(true), strike, simple(encode::OpCode::pass_end), simple(encode::OpCode::sheet_end),
+                   simple(encode::OpCode::job_end)}));
+    d.ctl.advance(d.t + 10);
+    ASSERT_EQ(d.ctl.strike_log().size(), 1U);
+    EXPECT_EQ(d.ctl.strike_log()[0].carriage_step, 300);
+    EXPECT_EQ(d.ctl.status().underruns, 0U);
+    // Both parts back to back from t = 5 s, then the settle, then the hammer.
+    const double move_s = 300 * 300 / plan::kTickHz;
+    EXPECT_NEAR(d.ctl.strike_log()[0].time_s, 5 + move_s + 9216 / plan::kTickHz, 1e-9);
+    EXPECT_EQ(d.ctl.status().ack.executed_passes, 1);
+}
+
+TEST(Controller, SettleComesFromThePlan) {
+    // The planner's moves carry the rest before the strike; the controller waits it out.
+    auto plan = testing::make_plan(1, 1, 1);
+    plan.sheets[0].passes[0].moves[0].settle_ticks = 7373;
+    auto stream = encode::encode_job(plan, 9, {});
+    ASSERT_TRUE(stream);
+    std::size_t pos = 0;
+    bool seen = false;
+    while (pos < stream->bytes.size()) {
+        const auto op = encode::decode_op(std::span(stream->bytes).subspan(pos));
+        ASSERT_TRUE(op);
+        if (op->first.code == encode::OpCode::strike) {
+            EXPECT_EQ(op->first.wait_ticks, 7373U);
+            seen = true;
+        }
+        pos += op->second;
+    }
+    EXPECT_TRUE(seen);
 }
 
 }  // namespace

@@ -193,6 +193,12 @@ TEST(Stream, OpsRoundTrip) {
     o = {};
     o.code = OpCode::strike;
     o.hammer = plan::Hammer::concave;
+    o.wait_ticks = 7373;  // 8 ms of settle
+    ops.push_back(o);
+    o = {};
+    o.code = OpCode::move;  // segments on coarse grids, as the planner makes them
+    o.segments = {{0x07218000U, 3, -47906816}, {0x01790000U, 8, -2260992}, {0x002e3000U, 159, 0},
+                  {0x01ad8000U, 2, 5963776}, {0x035b0000U, 1, 0}};
     ops.push_back(o);
     o = {};
     o.code = OpCode::seek;
@@ -215,8 +221,71 @@ TEST(Stream, RejectsMalformedOps) {
     EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x99}));        // unknown code
     EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x14, 0x00}));  // truncated pass
     EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x20, 0x00}));  // move with no segments
-    EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x20, 0x09}));  // too many segments
+    EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x20, kMaxSegmentsPerOp + 1}));  // too many segments
+    EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x30}));  // strike without its settle
+    // Count 1 on grid 2^15 with an interval of 2^17 grid units: beyond 32 bits.
+    EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x20, 1, 0x1F, 0x80, 0x80, 0x10, 0}));
+    EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x20, 1, 0x00, 0x02, 0}));  // count 0
     EXPECT_FALSE(decode_op(std::vector<std::uint8_t>{0x14, 0, 1, 0x80, 0}));  // unknown pass flag
+}
+
+TEST(Stream, CoarseGridSegmentsTakeFewBytes) {
+    // The planner's 480-step move (6 mm, jerk-limited, half-interval tolerance):
+    // 13 segments on grids of 2^8..2^15 Q16.16 units.
+    Op o;
+    o.code = OpCode::move;
+    o.segments = {{0x07218000U, 3, -47906816}, {0x01790000U, 8, -2260992}, {0x00a88000U, 17, -327680},
+                  {0x00648000U, 29, -81920},   {0x0043e000U, 47, -24576}, {0x00328c00U, 77, -5120},
+                  {0x002e3000U, 159, 0},       {0x002ea000U, 62, 10240},  {0x003a1800U, 44, 38912},
+                  {0x005c8000U, 22, 131072},   {0x00a00000U, 9, 983040},  {0x01ad8000U, 2, 5963776},
+                  {0x035b0000U, 1, 0}};
+    std::vector<std::uint8_t> b;
+    append_op(b, o);
+    auto d = decode_op(b);
+    ASSERT_TRUE(d) << d.error().to_string();
+    EXPECT_EQ(d->first, o);
+    EXPECT_EQ(d->second, b.size());
+    // Full-precision fields would take 12 bytes a segment; these take under 5.
+    EXPECT_LE(b.size(), 2 + 5 * o.segments.size()) << b.size();
+    // The same values off the grid (one low bit set) cost more: the grid is what saves.
+    for (auto& seg : o.segments) seg.interval_q16 |= 1;
+    std::vector<std::uint8_t> fine;
+    append_op(fine, o);
+    EXPECT_GT(fine.size(), b.size() + o.segments.size());
+    EXPECT_EQ(decode_op(fine)->first, o);
+}
+
+TEST(Stream, LongMovesSplitIntoContinuationOpsThatFitAPayload) {
+    auto plan = testing::make_plan(1, 1, 1);
+    auto& move = plan.sheets[0].passes[0].moves[0];
+    // 40 full-precision segments: far more than one op's 64 bytes.
+    move.segments.clear();
+    std::uint32_t steps = 0;
+    for (std::uint32_t i = 0; i < 40; ++i) {
+        move.segments.push_back({(300U << 16) + 12345 * i + 1, static_cast<std::uint16_t>(3 + i), -7777});
+        steps += 3 + i;
+    }
+    move.steps = static_cast<std::int32_t>(steps);
+    plan.sheets[0].passes[0].strikes[0].carriage_step = move.steps;  // from 0
+    auto s = encode_job(plan, 1, {});
+    ASSERT_TRUE(s) << s.error().to_string();
+    std::vector<plan::StepSegment> back;
+    std::size_t pos = 0, ops = 0, begin = 0;
+    for (const auto end : s->op_ends) {
+        auto d = decode_op(std::span(s->bytes).subspan(begin, end - begin));
+        ASSERT_TRUE(d);
+        if (d->first.code == OpCode::move && d->first.axis == Axis::carriage) {
+            EXPECT_LE(end - begin, kMaxMoveOpBytes);
+            EXPECT_EQ(d->first.continuation, ops > 0);
+            back.insert(back.end(), d->first.segments.begin(), d->first.segments.end());
+            ++ops;
+        }
+        begin = end;
+        pos = end;
+    }
+    EXPECT_EQ(pos, s->bytes.size());
+    EXPECT_GE(ops, 3U);
+    EXPECT_EQ(back, move.segments);
 }
 
 TEST(Stream, SegmentTimingIsTheControllersArithmetic) {

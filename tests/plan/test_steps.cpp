@@ -103,3 +103,45 @@ TEST(Steps, IntervalBeyondTheTimerIsAnError) {
     ASSERT_FALSE(seg.has_value());
     EXPECT_NE(seg.error().message.find("16-bit"), std::string::npos);
 }
+
+TEST(Steps, FractionalToleranceHoldsEveryStepWithinItsShareOfAnInterval) {
+    const Limits lim{250, 20000, 4e6};
+    const double spm = 80.0;
+    std::size_t tight = 0, loose = 0;
+    for (double d : {0.0125, 0.5, 2.5, 6.0, 14.0, 60.0, 180.0}) {
+        for (auto shape : {tactus::profile::ProfileShape::trapezoid, tactus::profile::ProfileShape::scurve,
+                           tactus::profile::ProfileShape::jerk}) {
+            const auto n = static_cast<std::int32_t>(std::lround(d * spm));
+            const auto m = make_move(shape, n / spm, lim);
+            const auto ideal = step_times_ticks(m, static_cast<std::uint32_t>(n), spm);
+            const auto tol = step_tolerances(ideal, 0.5);
+            for (std::size_t i = 0; i < ideal.size(); ++i) {
+                // Half the shorter neighbouring interval, never under a tick.
+                double iv = i + 1 < ideal.size() ? ideal[i + 1] - ideal[i] : 0;
+                iv = std::min(iv, i == 0 ? ideal[0] : ideal[i] - ideal[i - 1]);
+                const double expected = i + 1 == ideal.size() ? 1.0 : std::max(1.0, 0.5 * iv);
+                ASSERT_DOUBLE_EQ(tol[i], expected) << "step " << i;
+            }
+            auto enc = encode_move(m, n, spm, 0.5);
+            ASSERT_TRUE(enc.has_value()) << enc.error().to_string();
+            const auto got = expand_steps(enc->segments);
+            ASSERT_EQ(got.size(), ideal.size());
+            for (std::size_t i = 0; i < got.size(); ++i)
+                ASSERT_LE(std::fabs(static_cast<double>(got[i]) - ideal[i]), tol[i]) << "step " << i;
+            // The move still ends on time: the last step within a tick, the rest
+            // until the planned end waited out before the strike.
+            EXPECT_LE(std::fabs(static_cast<double>(got.back()) - ideal.back()), 1.0);
+            EXPECT_EQ(static_cast<std::int64_t>(enc->settle_ticks) + got.back(), std::llround(m.duration * kTickHz));
+            loose += enc->segments.size();
+            tight += encode_move(m, n, spm, 0.0)->segments.size();
+        }
+    }
+    // What the tolerance buys: well under half the segments of one-tick timing.
+    EXPECT_LT(loose * 2, tight) << loose << " vs " << tight;
+}
+
+TEST(Steps, OneToleranceForEveryStepOrNone) {
+    const std::vector<double> t{100, 200, 300};
+    const std::vector<double> two{1, 1};
+    EXPECT_FALSE(compress_steps(t, two));
+}

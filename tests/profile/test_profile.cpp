@@ -150,6 +150,20 @@ TEST(Profile, MissingUnknownAndMistypedFields) {
     expect_error(edited([](json& j) { j["geometry"]["cells_per_line"] = 27.5; }),
                  "field geometry.cells_per_line", "whole number");
     expect_error(edited([](json& j) { j["extras"] = json::object(); }), "field extras", "unknown section");
+    expect_error(edited([](json& j) { j["motion"]["step_tolerance"] = 0.75; }), "field motion.step_tolerance",
+                 "must be between 0 and 0.5");
+}
+
+TEST(Profile, StepToleranceIsOptionalAndKept) {
+    auto j = to_json(default_profile());
+    j["motion"].erase("step_tolerance");  // profiles written before the field existed
+    auto p = from_json(j);
+    ASSERT_TRUE(p) << p.error().to_string();
+    EXPECT_DOUBLE_EQ(p->motion.step_tolerance, 0.5);
+    j["motion"]["step_tolerance"] = 0.0;
+    p = from_json(j);
+    ASSERT_TRUE(p) << p.error().to_string();
+    EXPECT_DOUBLE_EQ(p->motion.step_tolerance, 0.0);
 }
 
 TEST(Profile, MalformedJsonGivesByteOffset) {
