@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
@@ -16,9 +17,12 @@
 namespace tactus::cli {
 namespace {
 
-// Bytes of one step segment on the wire at most: interval (Q16.16, 4), count (2),
-// add (Q16.16, 4). The protocol varint-encodes them, so this is an upper bound.
-constexpr std::size_t kSegmentBytes = 10;
+// The pass's step schedule as the protocol sends it: its MOVE ops, in bytes.
+std::size_t schedule_bytes(const plan::Pass& p) {
+    std::size_t n = encode::move_bytes(p.feed);
+    for (const auto& m : p.moves) n += encode::move_bytes(m);
+    return n;
+}
 
 struct PlanArgs {
     LayoutArgs layout;
@@ -41,7 +45,7 @@ nlohmann::json pass_json(const plan::Pass& p) {
             {"lower_bound_s", p.lower_bound_s},
             {"feed_steps", p.feed.steps},
             {"segments", p.segments},
-            {"schedule_bytes", p.segments * kSegmentBytes},
+            {"schedule_bytes", schedule_bytes(p)},
             {"worst_residual_um", worst}};
 }
 
@@ -71,10 +75,12 @@ void run_plan(const PlanArgs& a) {
     auto& out = std::cout;
     if (a.json) out << "{\"profile\":" << nlohmann::json(prof.name).dump() << ",\"sheets\":[";
     std::size_t passes = 0;
+    std::size_t total_bytes = 0;
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
         auto sheet = planner.plan_sheet(doc, s);
         if (!sheet) fail_with(exit_bad_input, located(sheet.error(), a.layout.file));
         passes += sheet->passes.size();
+        for (const auto& p : sheet->passes) total_bytes += schedule_bytes(p);
         if (!a.json) continue;
         nlohmann::json pj = nlohmann::json::array();
         for (const auto& p : sheet->passes) pj.push_back(pass_json(p));
@@ -100,7 +106,7 @@ void run_plan(const PlanArgs& a) {
                               {"tolerance_um", prof.vibration.tolerance_um},
                               {"strikes_over_tolerance", t.strikes_over_tolerance},
                               {"segments", t.segments},
-                              {"schedule_bytes", t.segments * kSegmentBytes}}
+                              {"schedule_bytes", total_bytes}}
                    .dump()
             << ",\"tuning\":" << tuning_json(planner.tuner()).dump() << "}\n";
         return;
@@ -121,7 +127,7 @@ void run_plan(const PlanArgs& a) {
     if (t.strikes_over_tolerance)
         std::printf("WARNING:          %zu strikes over tolerance (profile and shaper fixed by the profile)\n",
                     t.strikes_over_tolerance);
-    std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, t.segments * kSegmentBytes);
+    std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, total_bytes);
     std::printf("moves chosen (carriage steps: profile/shaper, speed, settle, duration, worst residual):\n");
     for (const auto& [steps, m] : planner.tuner().decisions()) {
         const auto& c = m.choice;

@@ -100,17 +100,17 @@ Starvation starvation(int baud, const plan::JobPlan& plan, const encode::Control
     return s;
 }
 
-// The lowest line rate at which the controller never waits (to 1 %), found by
-// bisection between 1200 and 460800 baud.
+// The lowest line rate from which the controller never waits: rates are tried
+// from 460800 baud down in steps of 4 %, and the answer is the last one before
+// the first that waits (waiting is not strictly monotonic in the rate: the
+// phase of ACKs against moves shifts, so a bisection could land in a gap).
 int no_wait_baud(const plan::JobPlan& plan, const encode::ControllerConfig& cfg) {
-    int lo = 1200, hi = 460800;
-    if (starvation(hi, plan, cfg).waits > 0) return -1;
-    while (hi - lo > hi / 100) {
-        const int mid = (lo + hi) / 2;
-        if (starvation(mid, plan, cfg).waits == 0) hi = mid;
-        else lo = mid;
+    int last_clean = -1;
+    for (double baud = 460800; baud >= 1200; baud *= 0.96) {
+        if (starvation(static_cast<int>(baud), plan, cfg).waits > 0) break;
+        last_clean = static_cast<int>(baud);
     }
-    return hi;
+    return last_clean;
 }
 
 }  // namespace
@@ -138,6 +138,7 @@ int main() {
     encode::ControllerConfig cfg;
     std::size_t brf_bytes = 2 * 24 * (27 + 2) + 2;  // two full pages, CR LF per line, form feeds
     const char* source = "synthetic full sheet (144 dot rows, up to 54 dots each)";
+    double step_tolerance = 0;
 #ifdef BENCH_HAS_PLANNER
     {
         auto profile = profile::default_profile();
@@ -149,6 +150,7 @@ int main() {
             auto p = plan::plan_job(*doc, profile);
             if (p && !p->sheets.empty()) {
                 sheet_plan = *p;
+                step_tolerance = profile.motion.step_tolerance;
                 sheet_plan.sheets.resize(1);
                 source = "welcome.md sheet 1, planned with the default profile";
                 cfg.carriage_steps_per_m = static_cast<std::uint32_t>(profile.carriage.steps_per_mm * 1000);
@@ -179,7 +181,13 @@ int main() {
     }
     const int needed = no_wait_baud(sheet_plan, cfg);
     std::printf("\n2. Does the controller wait for data? (%s; plan %.1f s)\n", source, sheet_plan.duration_s);
-    std::printf("   the plan's average line rate %.0f baud; lowest rate at which the controller never waits\n"
+    std::size_t moves = 0, segments = 0;
+    for (const auto& pass : sheet_plan.sheets[0].passes)
+        for (const auto& m : pass.moves)
+            if (m.steps != 0) ++moves, segments += m.segments.size();
+    std::printf("   step timing tolerance %.2f of a step interval: %.1f segments per carriage move\n",
+                step_tolerance, moves ? static_cast<double>(segments) / static_cast<double>(moves) : 0.0);
+    std::printf("   the plan's average line rate %.0f baud; lowest rate from which the controller never waits\n"
                 "   (160-byte ring, whole moves buffered before they start): %d baud\n",
                 average_baud, needed);
     std::printf("   %-8s %-10s %-8s %-12s %-10s %-8s %s\n", "baud", "starved s", "waits", "longest ms", "underruns",

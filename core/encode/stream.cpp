@@ -210,6 +210,42 @@ std::vector<PassRef> pass_table(const plan::JobPlan& plan) {
     return t;
 }
 
+std::vector<Op> move_ops(Axis axis, const plan::StepMove& m) {
+    // One MOVE op, or several when the segments need more than kMaxMoveOpBytes
+    // (the controller runs continuation ops without stopping).
+    std::vector<Op> ops;
+    Op o;
+    o.code = OpCode::move;
+    o.axis = axis;
+    o.negative = m.steps < 0;
+    std::size_t size = 2;  // code and segment count
+    std::vector<std::uint8_t> seg;
+    for (const auto& s : m.segments) {
+        if (s.count == 0) continue;
+        seg.clear();
+        put_segment(seg, s, o.segments.empty() ? nullptr : &o.segments.back());
+        if (!o.segments.empty() &&
+            (size + seg.size() > kMaxMoveOpBytes || o.segments.size() == kMaxSegmentsPerOp)) {
+            ops.push_back(o);
+            o.continuation = true;
+            o.segments.clear();
+            seg.clear();
+            put_segment(seg, s, nullptr);
+            size = 2;
+        }
+        o.segments.push_back(s);
+        size += seg.size();
+    }
+    if (!o.segments.empty()) ops.push_back(std::move(o));
+    return ops;
+}
+
+std::size_t move_bytes(const plan::StepMove& m) {
+    std::vector<std::uint8_t> b;
+    for (const auto& o : move_ops(Axis::carriage, m)) append_op(b, o);
+    return b.size();
+}
+
 namespace {
 
 std::string pass_where(const PassRef& r) {
@@ -250,32 +286,8 @@ public:
         append_op(s_.bytes, o);
         s_.op_ends.push_back(s_.bytes.size());
     }
-    // A move as one MOVE op, or as several when its segments need more than
-    // kMaxMoveOpBytes (the controller runs continuation ops without stopping).
     void move(Axis axis, const plan::StepMove& m) {
-        Op o;
-        o.code = OpCode::move;
-        o.axis = axis;
-        o.negative = m.steps < 0;
-        std::size_t size = 2;  // code and segment count
-        std::vector<std::uint8_t> seg;
-        for (const auto& s : m.segments) {
-            if (s.count == 0) continue;
-            seg.clear();
-            put_segment(seg, s, o.segments.empty() ? nullptr : &o.segments.back());
-            if (!o.segments.empty() &&
-                (size + seg.size() > kMaxMoveOpBytes || o.segments.size() == kMaxSegmentsPerOp)) {
-                op(o);
-                o.continuation = true;
-                o.segments.clear();
-                seg.clear();
-                put_segment(seg, s, nullptr);
-                size = 2;
-            }
-            o.segments.push_back(s);
-            size += seg.size();
-        }
-        if (!o.segments.empty()) op(o);
+        for (const auto& o : move_ops(axis, m)) op(o);
     }
 
 private:

@@ -77,6 +77,11 @@ void append_op(std::vector<std::uint8_t>& out, const Op& op);
 // Decodes the op at the start of `bytes`: the op and its length in bytes.
 Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> bytes);
 
+// A move as the MOVE ops that carry it (one, or more with continuations), and
+// their size in bytes.
+std::vector<Op> move_ops(Axis axis, const plan::StepMove& m);
+std::size_t move_bytes(const plan::StepMove& m);
+
 // Steps and duration (in timer ticks) of a run of segments.
 std::uint32_t segment_steps(std::span<const plan::StepSegment> segments);
 std::uint64_t segment_ticks(std::span<const plan::StepSegment> segments);

@@ -37,6 +37,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             auto op = encode::decode_op(std::span(f.payload).subspan(pos));
             if (!op) break;
             if (op->second == 0) std::abort();
+            // Whatever decodes re-encodes to the same op (segments may come back
+            // on a coarser grid, never with other values).
+            std::vector<std::uint8_t> again;
+            encode::append_op(again, op->first);
+            const auto back = encode::decode_op(again);
+            if (!back || back->first != op->first || back->second != again.size()) std::abort();
             pos += op->second;
         }
     }
