@@ -30,7 +30,7 @@ struct PlanArgs {
     bool json = false;
 };
 
-nlohmann::json pass_json(const plan::Pass& p) {
+nlohmann::json pass_json(const plan::Pass& p, std::size_t bytes) {
     nlohmann::json strikes = nlohmann::json::array();
     double worst = 0;
     for (const auto& s : p.strikes) {
@@ -45,7 +45,7 @@ nlohmann::json pass_json(const plan::Pass& p) {
             {"lower_bound_s", p.lower_bound_s},
             {"feed_steps", p.feed.steps},
             {"segments", p.segments},
-            {"schedule_bytes", schedule_bytes(p)},
+            {"schedule_bytes", bytes},
             {"worst_residual_um", worst}};
 }
 
@@ -80,10 +80,13 @@ void run_plan(const PlanArgs& a) {
         auto sheet = planner.plan_sheet(doc, s);
         if (!sheet) fail_with(exit_bad_input, located(sheet.error(), a.layout.file));
         passes += sheet->passes.size();
-        for (const auto& p : sheet->passes) total_bytes += schedule_bytes(p);
-        if (!a.json) continue;
         nlohmann::json pj = nlohmann::json::array();
-        for (const auto& p : sheet->passes) pj.push_back(pass_json(p));
+        for (const auto& p : sheet->passes) {
+            const std::size_t bytes = schedule_bytes(p);
+            total_bytes += bytes;
+            if (a.json) pj.push_back(pass_json(p, bytes));
+        }
+        if (!a.json) continue;
         out << (s > 1 ? "," : "")
             << nlohmann::json{{"index", sheet->index},
                               {"duration_s", sheet->duration_s},

@@ -358,6 +358,13 @@ std::optional<double> SimController::next_event() const {
     return t;
 }
 
+void SimController::wait_for_data(double now) {
+    if (!job_active_ || state_ == ControllerState::waiting) return;
+    state_ = ControllerState::waiting;
+    set_waiting(true, now);
+    if (session_ && ring_free() > free_reported_) ack();  // the host may not know the room
+}
+
 void SimController::set_waiting(bool waiting, double now) {
     if (waiting && starved_since_ < 0) starved_since_ = now;
     if (!waiting && starved_since_ >= 0) {
@@ -432,22 +439,14 @@ bool SimController::start_next_op(double now) {
         return false;
     }
     if (!decoded) {
-        if (job_active_ && state_ != ControllerState::waiting) {
-            state_ = ControllerState::waiting;
-            set_waiting(true, now);
-            if (session_ && ring_free() > free_reported_) ack();  // the host may not know the room
-        }
+        wait_for_data(now);
         return false;
     }
     const Op& op = decoded->first;
     // A move starts only once all of it is in the ring (or the ring is full):
     // running short of data stops the carriage at rest, never mid-ramp.
     if (op.code == OpCode::move && !continuation && !move_buffered(decoded->second)) {
-        if (job_active_ && state_ != ControllerState::waiting) {
-            state_ = ControllerState::waiting;
-            set_waiting(true, now);
-            if (session_ && ring_free() > free_reported_) ack();  // the host may not know the room
-        }
+        wait_for_data(now);
         return false;
     }
     if (in_move_ && !continuation) in_move_ = false;

@@ -138,6 +138,8 @@ private:
     encode::ControllerState state_ = encode::ControllerState::idle;
     std::uint8_t faults_ = 0;
     std::vector<std::uint8_t> ring_;  // job-stream ring, at most ram::kRingBytes
+    // Out of data mid-job: wait at rest, and tell the host of any room it has not heard of.
+    void wait_for_data(double now);
     // Whether the move whose first op (of this size) heads the ring is whole in it.
     [[nodiscard]] bool move_buffered(std::size_t first_op_size) const;
     std::uint16_t job_id_ = 0;

@@ -24,7 +24,7 @@ std::uint32_t last_interval(const plan::StepSegment& s) {
 unsigned grid_shift(const plan::StepSegment& s) {
     unsigned shift = 0;
     const auto add = static_cast<std::uint32_t>(s.add_q16);
-    while (shift < kMaxGridShift && ((s.interval_q16 | add) & (1U << shift)) == 0) ++shift;
+    while (shift < plan::kMaxGridShift && ((s.interval_q16 | add) & (1U << shift)) == 0) ++shift;
     return shift;
 }
 
@@ -32,7 +32,7 @@ unsigned grid_shift(const plan::StepSegment& s) {
 // difference from the previous segment's last interval (the first of an op from
 // 0, so every op decodes alone); the add on that grid. Step timing is
 // continuous and the planner picks coarse grids, so a segment is typically 4 or
-// 5 bytes instead of 12.
+// 5 bytes (about 8 at full precision).
 void put_segment(std::vector<std::uint8_t>& out, const plan::StepSegment& s, const plan::StepSegment* prev) {
     const unsigned shift = grid_shift(s);
     const std::uint32_t ref = prev ? last_interval(*prev) : 0U;
@@ -145,7 +145,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
             if (!add) return truncated();
             const unsigned shift = *head & 0x0F;
             const auto count = *head >> 4;
-            if (count == 0 || shift > kMaxGridShift)
+            if (count == 0 || shift > plan::kMaxGridShift)
                 return fail("step segment with count " + std::to_string(count) + " and grid " +
                                 std::to_string(shift),
                             at_byte(pos));

@@ -51,8 +51,6 @@ inline constexpr std::uint8_t no_feed = 0x02;  // restart: the feed was done bef
 inline constexpr std::size_t kMaxMoveOpBytes = 64;
 // Segments per MOVE op: the most that fit kMaxMoveOpBytes at one byte per field.
 inline constexpr std::size_t kMaxSegmentsPerOp = (kMaxMoveOpBytes - 2) / 3;
-// Segment intervals and adds are sent on a grid of 2^0..2^15 Q16.16 units.
-inline constexpr unsigned kMaxGridShift = 15;
 // The longest settle before a strike: 0.9 s at 921.6 kHz (a three-byte varint
 // carries 21 bits).
 inline constexpr std::uint32_t kMaxStrikeWaitTicks = (1U << 21) - 1;

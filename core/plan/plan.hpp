@@ -33,6 +33,9 @@ struct StepSegment {
 };
 
 inline constexpr int kStepFractionBits = 16;
+// Segment intervals and adds lie on a grid of 2^0..2^15 Q16.16 units: the planner
+// picks the coarsest that fits, the protocol omits the zero low bits.
+inline constexpr unsigned kMaxGridShift = 15;
 
 inline constexpr double kTickHz = 11'059'200.0 / 12.0;
 

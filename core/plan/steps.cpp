@@ -42,7 +42,6 @@ std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps
 namespace {
 
 constexpr std::int64_t kOne = std::int64_t{1} << kStepFractionBits;
-constexpr int kMaxGridShift = 15;
 constexpr std::int64_t kMaxIntervalQ = (std::int64_t{0xFFFF} << kStepFractionBits) | 0xFFFF;
 
 // Firing times relative to the segment start, computed as the controller does.
@@ -157,7 +156,7 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t,
             else bad = mid;
         }
         // The coarsest grid that still fits these steps: fewer bytes to send.
-        for (int shift = kMaxGridShift; shift > 0; --shift)
+        for (int shift = static_cast<int>(kMaxGridShift); shift > 0; --shift)
             if (fits(t, tols, first, good, prev, shift, fit)) {
                 best = fit;
                 break;
