@@ -38,10 +38,7 @@
 #include "export/export.hpp"
 #include "find_replace.hpp"
 #include "motion_view.hpp"
-#if __has_include("link/link.hpp")
-#define TACTUS_GUI_HAS_PRINTER 1
 #include "printer_panel.hpp"
-#endif
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
@@ -102,14 +99,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(preview_dock, motion_dock);
     tabifyDockWidget(motion_dock, vibration_dock);
     tabifyDockWidget(vibration_dock, profile_dock);
-#ifdef TACTUS_GUI_HAS_PRINTER
     printer_ = new PrinterPanel(this);
     auto* printer_dock = add_dock(tr("Printer"), QStringLiteral("printerDock"), printer_, Qt::RightDockWidgetArea);
     tabifyDockWidget(profile_dock, printer_dock);
     connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
     connect(printer_, &PrinterPanel::job_finished, this,
             [this](int, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
-#endif
     preview_dock->raise();
     plan_timer_.setSingleShot(true);
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
@@ -167,7 +162,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     build_actions();
     build_menus();
     restore_settings();
-    apply_system_look(*this);
+    apply_system_look(*preview_);
     sp->set_document(&editor_->layout().paged());
 
     autosave_timer_.setInterval(QSettings().value(QStringLiteral("autosave/seconds"), 30).toInt() * 1000);
@@ -242,14 +237,12 @@ void MainWindow::build_actions() {
         show_panel(QStringLiteral("profile"));
         profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
     });
-#ifdef TACTUS_GUI_HAS_PRINTER
     focus_printer_ = make(tr("Go to p&rinter"), QKeySequence(tr("Ctrl+7")), QStringLiteral("focusPrinter"), [this] {
         show_panel(QStringLiteral("printer"));
         printer_->setFocus(Qt::ShortcutFocusReason);
         if (auto* first = printer_->findChild<QComboBox*>()) first->setFocus(Qt::ShortcutFocusReason);
     });
     emboss_ = make(tr("&Emboss"), QKeySequence(tr("Ctrl+P")), QStringLiteral("fileEmboss"), [this] { emboss(); });
-#endif
     shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
                       [this] { show_shortcuts(); });
     about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
@@ -620,15 +613,10 @@ void MainWindow::show_panel(const QString& name) {
 }
 
 bool MainWindow::emboss() {
-#ifdef TACTUS_GUI_HAS_PRINTER
     if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) return false;
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
     printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
     return true;
-#else
-    report(tr("This build of Tactus has no embosser link"), true);
-    return false;
-#endif
 }
 
 QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {

@@ -6,13 +6,13 @@
 #include <cmath>
 
 #include "estimate/tune.hpp"
-#include "plan/motion.hpp"
+#include "motion/motion.hpp"
 
 namespace tactus::gui {
 namespace {
 
 // Appends one move (or the rest between moves) sampled in time.
-void add_move(Curves& c, const plan::MoveShape& shape, double t0, double from_mm, int sign, int samples) {
+void add_move(Curves& c, const motion::MoveShape& shape, double t0, double from_mm, int sign, int samples) {
     for (int k = 0; k <= samples; ++k) {
         const double tau = shape.duration * k / samples;
         const auto d = shape.at(tau);
@@ -110,14 +110,14 @@ Curves pass_curves_with(const plan::Pass& pass, const profile::PrinterProfile& p
                         int samples) {
     Curves c;
     const double spm = p.carriage.steps_per_mm;
-    const plan::Limits lim{p.carriage.v_max_mm_s, p.carriage.a_max_mm_s2, p.carriage.j_max_mm_s3};
+    const motion::Limits lim{p.carriage.v_max_mm_s, p.carriage.a_max_mm_s2, p.carriage.j_max_mm_s3};
     double t = 0;
     double at = start_mm(pass, spm);
     add_rest(c, 0, at);
     for (std::size_t i = 0; i < pass.strikes.size() && i < pass.moves.size(); ++i) {
         const auto& move = pass.moves[i];
         if (move.steps != 0) {
-            const auto m = plan::make_move(shape, std::abs(move.steps) / spm, lim);
+            const auto m = motion::make_move(shape, std::abs(move.steps) / spm, lim);
             add_move(c, m, t, at, move.steps > 0 ? 1 : -1, samples);
             t += m.duration;
         }

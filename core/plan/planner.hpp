@@ -12,7 +12,7 @@
 #include "estimate/tune.hpp"
 #include "layout/page.hpp"
 #include "plan/plan.hpp"
-#include "plan/steps.hpp"
+#include "motion/steps.hpp"
 #include "profile/profile.hpp"
 
 namespace tactus::plan {
@@ -35,15 +35,15 @@ public:
 
 private:
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
-    Result<StepMove> carriage_steps(std::uint32_t steps, const MoveShape& shape);
-    Result<std::pair<const StepMove*, const MoveShape*>> feed_move(std::uint32_t steps);
+    Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
+    Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> feed_move(std::uint32_t steps);
 
     profile::PrinterProfile p_;
     PlanOptions o_;
     std::unique_ptr<estimate::MoveTuner> tuner_;
-    StepAxis carriage_axis_, feed_axis_;
-    std::unordered_map<std::uint32_t, StepMove> carriage_cache_;
-    std::unordered_map<std::uint32_t, std::pair<StepMove, MoveShape>> feed_cache_;
+    motion::StepAxis carriage_axis_, feed_axis_;
+    std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
+    std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
     JobPlan totals_;
     // Machine state carried across passes and sheets.
     double clock_s_ = 0;

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "common/result.hpp"
-#include "encode/controller_config.hpp"
+#include "profile/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "layout/page.hpp"
 #include "plan/plan.hpp"
