@@ -82,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     editor_ = new EditorWidget(this);
     setCentralWidget(editor_);
-    auto empty = LiveLayout::create(kDefaultTable, {});
+    auto empty = LiveLayout::create(translate::kDefaultTable, {});
     if (empty) editor_->adopt(std::move(*empty));
 
     preview_ = new PreviewPanel(this);
@@ -137,7 +137,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(find_, &FindReplaceDialog::message, this, [this](const QString& m) { report(m); });
 
     auto* sp = preview_->preview();
-    sp->set_back_translator([this](const BrailleLine& cells) {
+    sp->set_back_translator([this](const document::BrailleLine& cells) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
@@ -301,7 +301,7 @@ void MainWindow::restore_settings() {
         }
         if (ok) editor_->braille_pane()->chord().set_mapping(m);
     }
-    const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
+    const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(translate::kDefaultTable)).toString();
     if (table != QString::fromStdString(editor_->layout().tables())) set_table(table);
 }
 
@@ -501,14 +501,14 @@ bool MainWindow::export_to(const QString& path) {
     const auto suffix = QFileInfo(path).suffix().toLower();
     Result<std::string> bytes = fail("unknown export format", suffix.toStdString());
     if (suffix == QLatin1String("brf")) {
-        bytes = to_brf(paged);
+        bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {
-        PefMetadata meta;
+        exporter::PefMetadata meta;
         meta.title = QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString();
-        for (const auto& t : table_catalogue())
+        for (const auto& t : translate::table_catalogue())
             if (t.file == editor_->layout().tables()) meta.language = t.language_tag;
         meta.date = QDate::currentDate().toString(Qt::ISODate).toStdString();
-        bytes = to_pef(paged, meta);
+        bytes = exporter::to_pef(paged, meta);
     }
     if (!bytes) {
         report(tr("Cannot export %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(bytes.error().to_string())),

@@ -39,7 +39,7 @@ double start_mm(const plan::Pass& pass, double steps_per_mm) {
 
 }  // namespace
 
-DocumentPlanPtr plan_document(const PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
+DocumentPlanPtr plan_document(const layout::PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
                               const std::function<bool(std::size_t, std::size_t)>& progress) {
     auto out = std::make_shared<DocumentPlan>();
     out->profile = p;
@@ -66,7 +66,7 @@ DocumentPlanPtr plan_document(const PagedDocument& doc, const profile::PrinterPr
     return out;
 }
 
-QFuture<DocumentPlanPtr> plan_document_async(PagedDocument doc, profile::PrinterProfile p, std::size_t keep) {
+QFuture<DocumentPlanPtr> plan_document_async(layout::PagedDocument doc, profile::PrinterProfile p, std::size_t keep) {
     return QtConcurrent::run([doc = std::move(doc), p = std::move(p), keep](QPromise<DocumentPlanPtr>& promise) {
         promise.setProgressRange(0, 100);
         promise.addResult(plan_document(doc, p, keep, [&](std::size_t i, std::size_t n) {

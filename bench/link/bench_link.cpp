@@ -122,7 +122,7 @@ int main() {
     for (const int baud : {9600, 19200, 57600, 115200}) {
         // About three seconds of line time per run.
         const auto passes = static_cast<std::size_t>(std::max(4, baud / 10 * 3 / 260));
-        const auto plan = testing::make_plan(1, passes, 24, 5);
+        const auto plan = test::make_plan(1, passes, 24, 5);
         const auto ours = over_pty(baud, plan, {});
         link::LinkOptions marlin;
         marlin.max_window_frames = 1;  // one line in flight, wait for "ok"
@@ -132,7 +132,7 @@ int main() {
                     sw.efficiency > 0 ? ours.efficiency / sw.efficiency : 0.0, ours.payload, ours.seconds);
     }
 
-    plan::JobPlan sheet_plan = testing::make_plan(1, 144, 54, 8);  // 24 lines x 3 rows x 2 sides
+    plan::JobPlan sheet_plan = test::make_plan(1, 144, 54, 8);  // 24 lines x 3 rows x 2 sides
     machine::ControllerConfig cfg;
     std::size_t brf_bytes = 2 * 24 * (27 + 2) + 2;  // two full pages, CR LF per line, form feeds
     const char* source = "synthetic full sheet (144 dot rows, up to 54 dots each)";
@@ -140,9 +140,9 @@ int main() {
     {
         auto profile = profile::default_profile();
         if (const char* f = std::getenv("TACTUS_STEP_TOLERANCE")) profile.motion.step_tolerance = std::atof(f);
-        PipelineOptions po;
+        pipeline::PipelineOptions po;
         po.layout.geometry.interpoint = true;
-        auto doc = lay_out_file(TACTUS_SAMPLE, po);
+        auto doc = pipeline::lay_out_file(TACTUS_SAMPLE, po);
         if (doc) {
             auto p = plan::plan_job(*doc, profile);
             if (p && !p->sheets.empty()) {
@@ -154,7 +154,7 @@ int main() {
                 double d = 0;
                 for (const auto& pass : sheet_plan.sheets[0].passes) d += pass.duration_s;
                 sheet_plan.duration_s = d;
-                if (auto brf = to_brf(*doc)) brf_bytes = brf->size() / std::max<std::size_t>(1, doc->sheet_count());
+                if (auto brf = exporter::to_brf(*doc)) brf_bytes = brf->size() / std::max<std::size_t>(1, doc->sheet_count());
             }
         }
     }

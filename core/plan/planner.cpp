@@ -20,7 +20,7 @@ struct Hit {
     DotPlace place;
 };
 
-Result<void> check_page(const profile::PrinterProfile& p, const Page& page, std::size_t index) {
+Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& page, std::size_t index) {
     const auto& g = p.geometry;
     const std::string where = "page " + std::to_string(index + 1);
     if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
@@ -45,11 +45,11 @@ Result<void> check_page(const profile::PrinterProfile& p, const Page& page, std:
 }
 
 // Every dot of one sheet, sorted by feed position then carriage position.
-Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const PagedDocument& doc,
+Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
                                       std::size_t sheet_number, const motion::StepAxis& carriage,
                                       const motion::StepAxis& feed, bool check) {
     std::vector<Hit> hits;
-    const Sheet sheet = doc.sheet(sheet_number);
+    const layout::Sheet sheet = doc.sheet(sheet_number);
     const int dots = p.geometry.eight_dot ? 8 : 6;
     for (const auto& [side, page] : {std::pair{Side::front, sheet.front}, std::pair{Side::back, sheet.back}}) {
         if (!page) continue;
@@ -60,7 +60,7 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const Pa
         for (std::size_t l = 0; l < page->lines.size(); ++l) {
             const auto& line = page->lines[l];
             for (std::size_t c = 0; c < line.size(); ++c) {
-                const Cell cell = line[c];
+                const document::Cell cell = line[c];
                 if (cell.blank()) continue;
                 for (int d = 1; d <= dots; ++d) {
                     if (!cell.has_dot(d)) continue;
@@ -123,7 +123,7 @@ Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::fe
     return std::pair{&it->second.first, &it->second.second};
 }
 
-Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t sheet_number) {
+Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number) {
     if (o_.check_layout && doc.geometry.interpoint != p_.geometry.interpoint)
         return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
@@ -226,7 +226,7 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
     return sheet;
 }
 
-Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
                          const PlanOptions& o) {
     auto planner = Planner::create(p, o);
     if (!planner) return std::unexpected(planner.error());
@@ -241,7 +241,7 @@ Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile
     return job;
 }
 
-Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p) {
+Result<double> naive_duration(const layout::PagedDocument& doc, const profile::PrinterProfile& p) {
     if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
     estimate::MoveTuner tuner(p);
     const motion::StepAxis carriage(p.carriage.steps_per_mm), feed(p.feed.steps_per_mm);

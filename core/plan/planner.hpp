@@ -27,7 +27,7 @@ public:
     static Result<Planner> create(const profile::PrinterProfile& p, const PlanOptions& o = {});
 
     // Plans the next sheet of `doc` (sheets must come in order).
-    Result<SheetPlan> plan_sheet(const PagedDocument& doc, std::size_t sheet_number);
+    Result<SheetPlan> plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number);
     // Running totals over the sheets planned so far (sheets left empty).
     [[nodiscard]] const JobPlan& totals() const { return totals_; }
     [[nodiscard]] estimate::MoveTuner& tuner() { return *tuner_; }
@@ -53,12 +53,12 @@ private:
     int next_direction_ = +1;
 };
 
-Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
                          const PlanOptions& o = {});
 
 // The naive plan for comparison: one sweep direction (+x), the carriage stopping
 // at every dot column of the line whether or not a dot is struck there. Only its
 // duration is computed. Uses the same tuned moves as the real plan.
-Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p);
+Result<double> naive_duration(const layout::PagedDocument& doc, const profile::PrinterProfile& p);
 
 }  // namespace tactus::plan

@@ -8,7 +8,7 @@
 #include "plan/plan.hpp"
 #include "motion/steps.hpp"
 
-namespace tactus::testing {
+namespace tactus::test {
 
 inline motion::StepMove make_move(std::int32_t steps) {
     motion::StepMove m;
@@ -73,4 +73,4 @@ inline plan::JobPlan make_plan(std::size_t sheets, std::size_t passes, std::size
     return job;
 }
 
-}  // namespace tactus::testing
+}  // namespace tactus::test

@@ -69,7 +69,7 @@ TEST(Controller, DuplicatesAreAcknowledgedButNeverExecuted) {
     Driver d;
     d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     d.send(1, FrameType::configure, encode::encode_config(no_keepalive()));
-    const auto plan = testing::make_plan(1, 1, 3);
+    const auto plan = test::make_plan(1, 1, 3);
     auto stream = encode::encode_job(plan, 9, {});
     ASSERT_TRUE(stream);
     const auto chunks = encode::chunk_stream(*stream, encode::kMaxPayload);
@@ -148,7 +148,7 @@ TEST(Controller, ExecutesInSimulatedTimeFromTheStepSchedule) {
     Driver d;
     d.send(0, FrameType::hello, encode::encode_hello({1, encode::kProtocolVersion}));
     d.send(1, FrameType::configure, encode::encode_config(no_keepalive()));
-    const auto plan = testing::make_plan(1, 1, 1);
+    const auto plan = test::make_plan(1, 1, 1);
     auto stream = encode::encode_job(plan, 9, {});
     ASSERT_TRUE(stream);
     std::uint8_t seq = 2;
@@ -219,7 +219,7 @@ TEST(Controller, StartsAMoveOnlyWhenAllOfItIsBuffered) {
 
 TEST(Controller, SettleComesFromThePlan) {
     // The planner's moves carry the rest before the strike; the controller waits it out.
-    auto plan = testing::make_plan(1, 1, 1);
+    auto plan = test::make_plan(1, 1, 1);
     plan.sheets[0].passes[0].moves[0].settle_ticks = 7373;
     auto stream = encode::encode_job(plan, 9, {});
     ASSERT_TRUE(stream);

@@ -256,7 +256,7 @@ TEST(Stream, CoarseGridSegmentsTakeFewBytes) {
 }
 
 TEST(Stream, LongMovesSplitIntoContinuationOpsThatFitAPayload) {
-    auto plan = testing::make_plan(1, 1, 1);
+    auto plan = test::make_plan(1, 1, 1);
     auto& move = plan.sheets[0].passes[0].moves[0];
     // 40 full-precision segments: far more than one op's 64 bytes.
     move.segments.clear();
@@ -302,7 +302,7 @@ TEST(Stream, SegmentTimingIsTheControllersArithmetic) {
 }
 
 TEST(Stream, WholeOpsPerChunkWithinThePayload) {
-    const auto plan = testing::make_plan(2, 5, 20);
+    const auto plan = test::make_plan(2, 5, 20);
     const auto s = encode_job(plan, 1, {});
     ASSERT_TRUE(s) << s.error().to_string();
     const auto chunks = chunk_stream(*s, kMaxPayload);
@@ -317,12 +317,12 @@ TEST(Stream, WholeOpsPerChunkWithinThePayload) {
 }
 
 TEST(Stream, PlansTheControllerCannotRunAreRefusedWithTheirPlace) {
-    auto plan = testing::make_plan(1, 3, 5);
+    auto plan = test::make_plan(1, 3, 5);
     plan.sheets[0].passes[1].moves[0].steps += 1;  // segments no longer add up
     auto s = encode_job(plan, 1, {});
     ASSERT_FALSE(s);
     EXPECT_EQ(s.error().where, "sheet 1 pass 2 strike 1");
-    plan = testing::make_plan(1, 3, 5);
+    plan = test::make_plan(1, 3, 5);
     plan.sheets[0].passes[0].feed.segments[0].add_q16 = -1000 << 16;  // interval would go negative
     s = encode_job(plan, 1, {});
     ASSERT_FALSE(s);
@@ -330,7 +330,7 @@ TEST(Stream, PlansTheControllerCannotRunAreRefusedWithTheirPlace) {
 }
 
 TEST(PlanJson, RoundTrip) {
-    const auto plan = testing::make_plan(2, 3, 6);
+    const auto plan = test::make_plan(2, 3, 6);
     const auto back = plan::plan_from_json(plan_to_json(plan));
     ASSERT_TRUE(back) << back.error().to_string();
     ASSERT_EQ(back->sheets.size(), plan.sheets.size());

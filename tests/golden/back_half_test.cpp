@@ -36,13 +36,13 @@ struct BackHalfCase {
 // The profile's page geometry decides the layout, as `tactus-cli plan` does.
 plan::JobPlan plan_sample(const BackHalfCase& c) {
     const auto prof = profile::default_profile();
-    PipelineOptions o;
+    pipeline::PipelineOptions o;
     o.tables = c.tables;
     o.layout.geometry.interpoint = prof.geometry.interpoint;
     o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
     o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
     o.layout.geometry.eight_dot = prof.geometry.eight_dot;
-    auto doc = lay_out_file(kSamples / c.input, o);
+    auto doc = pipeline::lay_out_file(kSamples / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};
     auto plan = plan::plan_job(*doc, prof);

@@ -82,7 +82,7 @@ protected:
         dir_ = fs::temp_directory_path() / ("tactus-e2e-" + std::to_string(getpid()) + "-" +
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
-        plan_ = testing::make_plan(2, 6, 14, 11);
+        plan_ = test::make_plan(2, 6, 14, 11);
         std::ofstream(dir_ / "plan.json") << plan::plan_to_json(plan_).dump();
     }
     void TearDown() override { fs::remove_all(dir_); }

@@ -47,7 +47,7 @@ link::JobOutcome run(Rig& rig, const plan::JobPlan& plan, std::size_t start_shee
 }
 
 TEST(Link, CleanLineStrikesExactlyThePlan) {
-    const auto plan = testing::make_plan(2, 12, 20);
+    const auto plan = test::make_plan(2, 12, 20);
     auto rig = make_rig();
     std::vector<link::PassExecuted> executed;
     const auto out = run(rig, plan, 1, &executed);
@@ -62,7 +62,7 @@ TEST(Link, CleanLineStrikesExactlyThePlan) {
 }
 
 TEST(Link, ProgressCountsOnlyExecutedPasses) {
-    const auto plan = testing::make_plan(1, 6, 10);
+    const auto plan = test::make_plan(1, 6, 10);
     auto rig = make_rig();
     std::size_t strikes_when_reported = 0;
     ASSERT_TRUE(rig.link.hello());
@@ -87,7 +87,7 @@ TEST(Link, ProgressCountsOnlyExecutedPasses) {
 class Noise : public ::testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(Noise, DroppedFlippedDuplicatedBytesLoseNoDot) {
-    const auto plan = testing::make_plan(2, 10, 24, static_cast<unsigned>(GetParam()));
+    const auto plan = test::make_plan(2, 10, 24, static_cast<unsigned>(GetParam()));
     controller::SimLineOptions line;
     line.baud = 57600;
     line.noise = {1e-3, 1e-3, 1e-3, GetParam()};
@@ -100,7 +100,7 @@ TEST_P(Noise, DroppedFlippedDuplicatedBytesLoseNoDot) {
 INSTANTIATE_TEST_SUITE_P(Seeds, Noise, ::testing::Values(1, 2, 3, 4, 5));
 
 TEST(Link, HeavyNoiseStillExact) {
-    const auto plan = testing::make_plan(1, 8, 24, 9);
+    const auto plan = test::make_plan(1, 8, 24, 9);
     controller::SimLineOptions line;
     line.noise = {1e-2, 1e-2, 1e-2, 42};
     auto rig = make_rig(line);
@@ -111,7 +111,7 @@ TEST(Link, HeavyNoiseStillExact) {
 }
 
 TEST(Link, UnplugMidJobReconnectsAndCompletes) {
-    const auto plan = testing::make_plan(2, 10, 20);
+    const auto plan = test::make_plan(2, 10, 20);
     auto rig = make_rig();
     rig.line->unplug_between(1.5, 6.0);  // longer than the controller's keep-alive
     const auto out = run(rig, plan);
@@ -121,7 +121,7 @@ TEST(Link, UnplugMidJobReconnectsAndCompletes) {
 }
 
 TEST(Link, SilentLineMidJobRecovers) {
-    const auto plan = testing::make_plan(1, 10, 20);
+    const auto plan = test::make_plan(1, 10, 20);
     auto rig = make_rig();
     rig.line->silence_between(1.0, 2.5);
     const auto out = run(rig, plan);
@@ -130,7 +130,7 @@ TEST(Link, SilentLineMidJobRecovers) {
 }
 
 TEST(Link, UnplugBeyondDeadlineFailsRecoverably) {
-    const auto plan = testing::make_plan(2, 10, 20);
+    const auto plan = test::make_plan(2, 10, 20);
     link::LinkOptions opt;
     opt.reconnect_deadline = std::chrono::milliseconds(2000);
     auto rig = make_rig({}, {}, opt);
@@ -147,7 +147,7 @@ TEST(Link, UnplugBeyondDeadlineFailsRecoverably) {
 }
 
 TEST(Link, WarmResetMidSheetResumesAtTheExactStrike) {
-    const auto plan = testing::make_plan(2, 10, 20, 3);
+    const auto plan = test::make_plan(2, 10, 20, 3);
     auto rig = make_rig();
     rig.ctl->reset_at_strike(57, true);  // inside sheet 1, mid-pass
     const auto out = run(rig, plan);
@@ -158,7 +158,7 @@ TEST(Link, WarmResetMidSheetResumesAtTheExactStrike) {
 }
 
 TEST(Link, ResetAtAnArbitraryTimeIsExact) {
-    const auto plan = testing::make_plan(2, 10, 20, 4);
+    const auto plan = test::make_plan(2, 10, 20, 4);
     for (const double t : {0.9, 2.3, 3.71, 5.05}) {
         auto rig = make_rig();
         rig.line->reset_controller_at(t, true);
@@ -169,7 +169,7 @@ TEST(Link, ResetAtAnArbitraryTimeIsExact) {
 }
 
 TEST(Link, PowerLossFailsWithTheSheetToRedo) {
-    const auto plan = testing::make_plan(3, 8, 20, 5);
+    const auto plan = test::make_plan(3, 8, 20, 5);
     auto rig = make_rig();
     rig.ctl->reset_at_strike(200, false);
     const auto out = run(rig, plan);
@@ -182,7 +182,7 @@ TEST(Link, PowerLossFailsWithTheSheetToRedo) {
 }
 
 TEST(Link, PaperOutWaitsForPaperThenCompletes) {
-    const auto plan = testing::make_plan(3, 4, 10);
+    const auto plan = test::make_plan(3, 4, 10);
     controller::SimOptions sim;
     sim.reload_paper_after_s = 5.0;
     auto rig = make_rig({}, sim);
@@ -201,7 +201,7 @@ TEST(Link, PaperOutWaitsForPaperThenCompletes) {
 }
 
 TEST(Link, PaperNeverLoadedFailsAtThatSheet) {
-    const auto plan = testing::make_plan(3, 4, 10);
+    const auto plan = test::make_plan(3, 4, 10);
     link::LinkOptions opt;
     opt.fault_wait = std::chrono::milliseconds(3000);
     auto rig = make_rig({}, {}, opt);
@@ -213,7 +213,7 @@ TEST(Link, PaperNeverLoadedFailsAtThatSheet) {
 }
 
 TEST(Link, LimitSwitchRehomesAndResumes) {
-    const auto plan = testing::make_plan(1, 10, 20, 6);
+    const auto plan = test::make_plan(1, 10, 20, 6);
     auto rig = make_rig();
     rig.ctl->inject_limit_switch_at_strike(33);
     const auto out = run(rig, plan);
@@ -222,7 +222,7 @@ TEST(Link, LimitSwitchRehomesAndResumes) {
 }
 
 TEST(Link, HammerFaultStopsTheJob) {
-    const auto plan = testing::make_plan(2, 10, 20, 7);
+    const auto plan = test::make_plan(2, 10, 20, 7);
     auto rig = make_rig();
     rig.ctl->inject_hammer_fault_at_strike(40);
     const auto out = run(rig, plan);
@@ -232,7 +232,7 @@ TEST(Link, HammerFaultStopsTheJob) {
 }
 
 TEST(Link, StartSheetSkipsEarlierSheets) {
-    const auto plan = testing::make_plan(3, 5, 10);
+    const auto plan = test::make_plan(3, 5, 10);
     auto rig = make_rig();
     const auto out = run(rig, plan, 2);
     EXPECT_EQ(out.end, link::JobEnd::completed);
@@ -242,7 +242,7 @@ TEST(Link, StartSheetSkipsEarlierSheets) {
 }
 
 TEST(Link, UnknownStartSheetIsAnError) {
-    const auto plan = testing::make_plan(1, 2, 3);
+    const auto plan = test::make_plan(1, 2, 3);
     auto rig = make_rig();
     ASSERT_TRUE(rig.link.hello());
     link::CancelToken cancel;
@@ -252,7 +252,7 @@ TEST(Link, UnknownStartSheetIsAnError) {
 }
 
 TEST(Link, CancelAbortsAndStopsStriking) {
-    const auto plan = testing::make_plan(2, 10, 20);
+    const auto plan = test::make_plan(2, 10, 20);
     auto rig = make_rig();
     ASSERT_TRUE(rig.link.hello());
     link::CancelToken cancel;
@@ -270,7 +270,7 @@ TEST(Link, CancelAbortsAndStopsStriking) {
 }
 
 TEST(Link, PauseAndResumeFromAnotherRequest) {
-    const auto plan = testing::make_plan(1, 8, 10);
+    const auto plan = test::make_plan(1, 8, 10);
     auto rig = make_rig();
     ASSERT_TRUE(rig.link.hello());
     link::CancelToken cancel;
@@ -325,9 +325,9 @@ namespace {
 
 TEST(LinkWithPlanner, BundledSampleStrikesExactlyThePlanUnderNoise) {
     const auto profile = profile::default_profile();
-    PipelineOptions po;
+    pipeline::PipelineOptions po;
     po.layout.geometry.interpoint = profile.geometry.interpoint;
-    const auto doc = lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md", po);
+    const auto doc = pipeline::lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md", po);
     ASSERT_TRUE(doc) << doc.error().to_string();
     const auto plan = plan::plan_job(*doc, profile);
     ASSERT_TRUE(plan) << plan.error().to_string();

@@ -164,7 +164,7 @@ TEST_P(HidEndToEnd, JobThroughTheBridge) {
     EXPECT_TRUE(chip->uart_enabled_);
     auto link = link::Link::over(std::move(*uart));
     ASSERT_TRUE(link.hello());
-    const auto plan = testing::make_plan(1, 4, 12);
+    const auto plan = test::make_plan(1, 4, 12);
     link::CancelToken cancel;
     auto out = link.send_job(plan, 1, {}, cancel);
     ASSERT_TRUE(out);
@@ -293,7 +293,7 @@ TEST(Lpt, JobOverTheParallelPort) {
     ASSERT_TRUE(port);
     auto link = link::Link::over(std::move(*port));
     ASSERT_TRUE(link.hello());
-    const auto plan = testing::make_plan(1, 3, 8);
+    const auto plan = test::make_plan(1, 3, 8);
     link::CancelToken cancel;
     auto out = link.send_job(plan, 1, {}, cancel);
     ASSERT_TRUE(out);

@@ -17,9 +17,9 @@ using namespace tactus::gui;
 namespace {
 
 QString braille(const std::string& table, const std::string& text) {
-    auto t = Translator::open(table);
+    auto t = translate::Translator::open(table);
     auto cells = t->translate(QString::fromStdString(text).toStdU32String());
-    return QString::fromStdString(to_unicode_text(*cells));
+    return QString::fromStdString(document::to_unicode_text(*cells));
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ private Q_SLOTS:
         bool found = false;
         const auto expected = braille("en-ueb-g2.ctb", "the knowledge").toStdU32String();
         for (const auto& l : pages.back().lines)
-            found = found || QString::fromStdString(to_unicode_text(l)).toStdU32String().find(expected) != std::u32string::npos;
+            found = found || QString::fromStdString(document::to_unicode_text(l)).toStdU32String().find(expected) != std::u32string::npos;
         QVERIFY(found);
     }
 
@@ -148,7 +148,7 @@ private Q_SLOTS:
         QCOMPARE(pane->document()->findBlockByNumber(0).text(), expected);
         // The line is braille now: its cells appear on the page as written.
         const auto& first = editor->layout().paged().pages.front().lines.front();
-        QCOMPARE(QString::fromStdString(to_unicode_text(first)), expected);
+        QCOMPARE(QString::fromStdString(document::to_unicode_text(first)), expected);
     }
 
     void large_paste_is_one_edit() {

@@ -17,17 +17,17 @@ inline QString sample(const char* name) {
 }
 
 inline std::vector<std::string> sample_lines(const char* name) {
-    auto doc = import_file(sample(name).toStdString());
+    auto doc = import::import_file(sample(name).toStdString());
     return doc ? render_editor_lines(*doc) : std::vector<std::string>{};
 }
 
 // The document the editor lines stand for, as core sees it.
-inline Document document_of(const std::vector<std::string>& lines) {
-    Document d;
+inline document::Document document_of(const std::vector<std::string>& lines) {
+    document::Document d;
     std::string previous_label = "1";
     for (const auto& l : lines) {
         if (auto b = parse_editor_line(l)) {
-            if (b->kind == BlockKind::print_page_break) {
+            if (b->kind == document::BlockKind::print_page_break) {
                 if (b->label.empty()) b->label = std::to_string(std::stoi(previous_label) + 1);
                 previous_label = b->label;
             }

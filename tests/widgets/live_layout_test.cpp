@@ -14,7 +14,7 @@ using namespace tactus::gui;
 namespace {
 
 LiveLayout make(const std::vector<std::string>& lines, const std::string& table = "en-ueb-g2.ctb",
-                LayoutOptions options = {}) {
+                layout::LayoutOptions options = {}) {
     auto l = LiveLayout::create(table, options);
     if (!l) qFatal("%s", l.error().to_string().c_str());
     l->reset(lines);
@@ -42,14 +42,14 @@ private Q_SLOTS:
     void same_pages_as_the_cli_pipeline() {
         QFETCH(QString, file);
         QFETCH(QString, table);
-        PipelineOptions options;
+        pipeline::PipelineOptions options;
         options.tables = table.toStdString();
-        auto expected = lay_out_file(test::sample(file.toLatin1().constData()).toStdString(), options);
+        auto expected = pipeline::lay_out_file(test::sample(file.toLatin1().constData()).toStdString(), options);
         QVERIFY(expected.has_value());
         const auto live = make(test::sample_lines(file.toLatin1().constData()), options.tables);
         QCOMPARE(live.paged().pages.size(), expected->pages.size());
         QVERIFY(live.paged().pages == expected->pages);
-        QCOMPARE(*to_brf(live.paged()), *to_brf(*expected));
+        QCOMPARE(*exporter::to_brf(live.paged()), *exporter::to_brf(*expected));
     }
 
     void edits_give_the_same_pages_as_a_fresh_layout() {

@@ -79,13 +79,13 @@ private Q_SLOTS:
     void exports_match_the_cli_pipeline() {
         MainWindow w;
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
-        auto expected = lay_out_file(test::sample("welcome.md").toStdString(), {});
+        auto expected = pipeline::lay_out_file(test::sample("welcome.md").toStdString(), {});
         QVERIFY(expected.has_value());
         const auto brf = dir.filePath(QStringLiteral("welcome.brf"));
         QVERIFY(w.export_to(brf));
         QFile f(brf);
         QVERIFY(f.open(QIODevice::ReadOnly));
-        QCOMPARE(f.readAll().toStdString(), *to_brf(*expected));
+        QCOMPARE(f.readAll().toStdString(), *exporter::to_brf(*expected));
         const auto pef = dir.filePath(QStringLiteral("welcome.pef"));
         QVERIFY(w.export_to(pef));
         QFile p(pef);
@@ -94,7 +94,7 @@ private Q_SLOTS:
         QVERIFY(xml.contains("<dc:title>welcome</dc:title>"));
         QVERIFY(xml.contains("duplex=\"true\""));
         // Reading the PEF back gives the same pages.
-        auto back = lay_out_file(pef.toStdString(), {});
+        auto back = pipeline::lay_out_file(pef.toStdString(), {});
         QVERIFY(back.has_value());
     }
 

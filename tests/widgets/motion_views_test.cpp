@@ -27,7 +27,7 @@ using namespace tactus::gui;
 
 namespace {
 
-PagedDocument welcome_pages() {
+layout::PagedDocument welcome_pages() {
     auto l = LiveLayout::create("en-ueb-g2.ctb", {});
     l->reset(test::sample_lines("welcome.md"));
     return l->paged();
@@ -48,8 +48,8 @@ private Q_SLOTS:
             auto p = profile::default_profile();
             p.geometry.back_mirror = mirror;
             const auto g = sheet_geometry(p);
-            Page page;
-            page.lines.assign(3, BrailleLine(5, Cell{0x3F}));
+            layout::Page page;
+            page.lines.assign(3, document::BrailleLine(5, document::Cell{0x3F}));
             const auto front = front_dots(page, g);
             const auto back = back_dots(page, g);
             QCOMPARE(front.size(), std::size_t{3 * 5 * 6});

@@ -16,9 +16,9 @@ using namespace tactus::gui;
 
 namespace {
 
-Page full_page(int lines, int cells, Cell c = Cell{0x3F}) {
-    Page p;
-    p.lines.assign(static_cast<std::size_t>(lines), BrailleLine(static_cast<std::size_t>(cells), c));
+layout::Page full_page(int lines, int cells, document::Cell c = document::Cell{0x3F}) {
+    layout::Page p;
+    p.lines.assign(static_cast<std::size_t>(lines), document::BrailleLine(static_cast<std::size_t>(cells), c));
     return p;
 }
 
@@ -31,8 +31,8 @@ private Q_SLOTS:
 
     void back_dots_are_mirrored_and_offset() {
         SheetGeometry g;
-        Page p;
-        p.lines = {BrailleLine{Cell{0x01 | 0x08}}};  // dots 1 and 4 of the first cell
+        layout::Page p;
+        p.lines = {document::BrailleLine{document::Cell{0x01 | 0x08}}};  // dots 1 and 4 of the first cell
         const auto front = front_dots(p, g);
         const auto back = back_dots(p, g);
         QCOMPARE(front.size(), std::size_t{2});
@@ -48,7 +48,7 @@ private Q_SLOTS:
         // Every dot of every cell raised on both sides: the worst case for crushing.
         SheetGeometry g;
         const auto page = full_page(24, 27);
-        Sheet s{1, &page, &page};
+        layout::Sheet s{1, &page, &page};
         QCOMPARE(find_conflicts(s, g).size(), std::size_t{0});
         // Closest pair: half a dot pitch across and down.
         g.min_separation_mm = std::hypot(g.back_offset_x_mm, g.back_offset_y_mm) + 0.01;
@@ -62,12 +62,12 @@ private Q_SLOTS:
         // Mirrored grid coincides with the front grid when 2 * margin + k * cell pitch
         // + dot pitch equals the paper width: choose the paper to make it so.
         g.paper_width_mm = 2 * g.left_margin_mm + 10 * g.cell_pitch_mm + g.dot_pitch_mm;
-        const auto page = full_page(1, 11, Cell{0x01});
-        Sheet s{1, &page, &page};
+        const auto page = full_page(1, 11, document::Cell{0x01});
+        layout::Sheet s{1, &page, &page};
         const auto conflicts = find_conflicts(s, g);
         QCOMPARE(conflicts.size(), std::size_t{0});  // only dot 1s: 2.5 mm apart at best
-        const auto page4 = full_page(1, 11, Cell{0x08});
-        Sheet s2{1, &page, &page4};
+        const auto page4 = full_page(1, 11, document::Cell{0x08});
+        layout::Sheet s2{1, &page, &page4};
         QCOMPARE(find_conflicts(s2, g).size(), std::size_t{11});  // each back dot 4 on a front dot 1
         for (const auto& c : find_conflicts(s2, g)) QVERIFY(c.distance_mm < 1e-9);
     }
@@ -77,7 +77,7 @@ private Q_SLOTS:
         layout->reset({"hello world"});
         SheetPreview preview;
         preview.set_document(&layout->paged());
-        preview.set_back_translator([&](const BrailleLine& cells) {
+        preview.set_back_translator([&](const document::BrailleLine& cells) {
             return QString::fromStdString(layout->back_translate(cells));
         });
         preview.show();

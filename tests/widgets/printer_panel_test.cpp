@@ -17,7 +17,7 @@ using namespace tactus::gui;
 
 namespace {
 
-PagedDocument book(int paragraphs) {
+layout::PagedDocument book(int paragraphs) {
     auto l = LiveLayout::create("en-ueb-g2.ctb", {});
     l->reset(test::synthetic_book(paragraphs));
     return l->paged();

@@ -22,7 +22,7 @@ private Q_SLOTS:
         QVERIFY(!chord.release(Qt::Key_D, false).has_value());
         const auto cell = chord.release(Qt::Key_K, false);
         QVERIFY(cell.has_value());
-        QCOMPARE(dot_numbers(*cell), std::string("1-2-5"));  // h
+        QCOMPARE(document::dot_numbers(*cell), std::string("1-2-5"));  // h
         QVERIFY(!chord.active());
     }
 
@@ -32,7 +32,7 @@ private Q_SLOTS:
         const char* dots[] = {"3", "2", "1", "4", "5", "6"};
         for (int i = 0; i < 6; ++i) {
             chord.press(keys[i], false);
-            QCOMPARE(dot_numbers(*chord.release(keys[i], false)), std::string(dots[i]));
+            QCOMPARE(document::dot_numbers(*chord.release(keys[i], false)), std::string(dots[i]));
         }
     }
 
@@ -54,7 +54,7 @@ private Q_SLOTS:
         chord.press(Qt::Key_6, false);
         chord.press(Qt::Key_1, false);
         chord.release(Qt::Key_1, false);
-        QCOMPARE(dot_numbers(*chord.release(Qt::Key_6, false)), std::string("1-6"));
+        QCOMPARE(document::dot_numbers(*chord.release(Qt::Key_6, false)), std::string("1-6"));
         chord.press(Qt::Key_2, false);
         chord.cancel();
         QVERIFY(!chord.active());
