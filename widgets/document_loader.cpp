@@ -4,7 +4,7 @@
 #include <QPromise>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "editor_lines.hpp"
+#include "edit/editor_lines.hpp"
 #include "import/import.hpp"
 
 namespace tactus::gui {
@@ -15,7 +15,7 @@ constexpr int kImportShare = 10;  // percent of the progress bar for reading the
 LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const layout::LayoutOptions& options,
                     const std::function<bool(int)>& progress) {
     auto result = std::make_shared<LoadResult>();
-    auto layout = LiveLayout::create(tables, options);
+    auto layout = edit::LiveLayout::create(tables, options);
     if (!layout) {
         result->error = layout.error();
         return result;
@@ -46,7 +46,7 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
         r->cancelled = true;
         return r;
     }
-    auto r = build(render_editor_lines(*doc), tables, options, progress);
+    auto r = build(edit::render_editor_lines(*doc), tables, options, progress);
     r->path = path;
     return r;
 }

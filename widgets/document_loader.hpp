@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 
 namespace tactus::gui {
 
 struct LoadResult {
-    std::optional<LiveLayout> layout;
+    std::optional<edit::LiveLayout> layout;
     std::optional<Error> error;  // unreadable file, unknown encoding, bad table...
     QString path;
     bool cancelled = false;

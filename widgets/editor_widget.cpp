@@ -6,8 +6,8 @@
 #include <QTextCursor>
 
 #include "braille_pane.hpp"
-#include "cursor_map.hpp"
-#include "editor_lines.hpp"
+#include "edit/cursor_map.hpp"
+#include "edit/editor_lines.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -94,7 +94,7 @@ QString EditorWidget::braille_text(std::size_t line) const {
     return QString::fromStdString(document::to_unicode_text(layout_->braille_of(line)));
 }
 
-void EditorWidget::adopt(LiveLayout layout) {
+void EditorWidget::adopt(edit::LiveLayout layout) {
     layout_ = std::move(layout);
     syncing_ = true;
     QStringList print, braille;
@@ -121,7 +121,7 @@ void EditorWidget::adopt(LiveLayout layout) {
     sync_from_print();
 }
 
-void EditorWidget::swap_layout(LiveLayout layout) {
+void EditorWidget::swap_layout(edit::LiveLayout layout) {
     layout_ = std::move(layout);
     refresh_braille();
 }
@@ -205,13 +205,13 @@ std::size_t EditorWidget::current_cell() const {
     const auto i = static_cast<std::size_t>(c.blockNumber());
     if (i >= layout_->line_count()) return 0;
     const auto cells = layout_->braille_of(i);
-    if (is_braille_line(line.toStdString()))
+    if (edit::is_braille_line(line.toStdString()))
         return std::min(static_cast<std::size_t>(c.positionInBlock()), cells.size());
-    const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
-    return print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock())), cells);
+    const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
+    return edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock())), cells);
 }
 
-PagePosition EditorWidget::current_position() const {
+edit::PagePosition EditorWidget::current_position() const {
     if (!layout_) return {};
     return layout_->position_of(static_cast<std::size_t>(current_line()), current_cell());
 }
@@ -226,11 +226,11 @@ void EditorWidget::sync_from_print() {
         const auto i = static_cast<std::size_t>(block.blockNumber());
         const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : document::BrailleLine{};
         std::size_t cell;
-        if (is_braille_line(line.toStdString())) {
+        if (edit::is_braille_line(line.toStdString())) {
             cell = std::min(static_cast<std::size_t>(pos - block.position()), cells.size());
         } else {
-            const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
-            cell = print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position())), cells);
+            const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
+            cell = edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position())), cells);
         }
         const auto bb = braille_->document()->findBlockByNumber(block.blockNumber());
         return bb.isValid() ? bb.position() + std::min(static_cast<int>(cell), bb.length() - 1) : 0;
@@ -255,10 +255,10 @@ void EditorWidget::sync_from_braille() {
         if (!pblock.isValid() || i >= layout_->line_count()) return 0;
         const auto line = pblock.text();
         const auto cell = static_cast<std::size_t>(pos - bblock.position());
-        if (is_braille_line(line.toStdString()))
+        if (edit::is_braille_line(line.toStdString()))
             return pblock.position() + std::min(static_cast<int>(cell), pblock.length() - 1);
-        const auto content = QString::fromStdString(editor_line_content(line.toStdString())).toStdU32String();
-        const auto col = braille_to_print(layout_->braille_of(i), cell, content);
+        const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
+        const auto col = edit::braille_to_print(layout_->braille_of(i), cell, content);
         return pblock.position() + std::min(line_column(line, static_cast<int>(col)), pblock.length() - 1);
     };
     QTextCursor pc(print_->document());

@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 
 namespace tactus::gui {
 
@@ -23,12 +23,12 @@ public:
     ~EditorWidget() override;
 
     // Takes a layout built elsewhere (a worker thread) and shows its lines.
-    void adopt(LiveLayout layout);
+    void adopt(edit::LiveLayout layout);
     [[nodiscard]] bool has_layout() const { return layout_.has_value(); }
-    [[nodiscard]] const LiveLayout& layout() const { return *layout_; }
+    [[nodiscard]] const edit::LiveLayout& layout() const { return *layout_; }
     // A layout of the same lines built elsewhere (new table or options off-thread):
     // the print text and its undo history stay.
-    void swap_layout(LiveLayout layout);
+    void swap_layout(edit::LiveLayout layout);
     Result<void> set_tables(const std::string& tables);
     Result<void> set_layout_options(const layout::LayoutOptions& options);
 
@@ -36,19 +36,19 @@ public:
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
-    [[nodiscard]] const RelayoutStats& last_stats() const { return last_stats_; }
+    [[nodiscard]] const edit::RelayoutStats& last_stats() const { return last_stats_; }
 
     // The print line and column of the cursor; the braille cell it maps to.
     [[nodiscard]] int current_line() const;
     [[nodiscard]] std::size_t current_cell() const;
-    [[nodiscard]] PagePosition current_position() const;
+    [[nodiscard]] edit::PagePosition current_position() const;
 
     // Cell edits on line `line`: replace cells [from, to) with `cells`.
     void edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells);
 
 Q_SIGNALS:
     void layout_changed();
-    void position_changed(const tactus::gui::PagePosition& position);
+    void position_changed(const tactus::edit::PagePosition& position);
     void files_dropped(const QStringList& paths);
 
 private:
@@ -65,10 +65,10 @@ private:
     PrintPane* print_ = nullptr;
     BraillePane* braille_ = nullptr;
     QUndoStack* undo_ = nullptr;
-    std::optional<LiveLayout> layout_;
+    std::optional<edit::LiveLayout> layout_;
     int known_blocks_ = 1;
     bool syncing_ = false;
-    RelayoutStats last_stats_;
+    edit::RelayoutStats last_stats_;
 };
 
 // Column in the editor line <-> column in its content (without Markdown marks).

@@ -82,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     editor_ = new EditorWidget(this);
     setCentralWidget(editor_);
-    auto empty = LiveLayout::create(translate::kDefaultTable, {});
+    auto empty = edit::LiveLayout::create(translate::kDefaultTable, {});
     if (empty) editor_->adopt(std::move(*empty));
 
     preview_ = new PreviewPanel(this);
@@ -145,7 +145,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         update_status();
         schedule_plan();
     });
-    connect(editor_, &EditorWidget::position_changed, this, [this, sp](const PagePosition& p) {
+    connect(editor_, &EditorWidget::position_changed, this, [this, sp](const edit::PagePosition& p) {
         if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
         update_status();
     });
@@ -324,7 +324,7 @@ void MainWindow::set_table(const QString& table) {
 }
 
 void MainWindow::new_document() {
-    auto layout = LiveLayout::create(editor_->layout().tables(), editor_->layout().options());
+    auto layout = edit::LiveLayout::create(editor_->layout().tables(), editor_->layout().options());
     if (!layout) return;
     remove_autosave();
     editor_->adopt(std::move(*layout));
@@ -426,13 +426,13 @@ QString MainWindow::status_text() const {
     const auto& paged = layout.paged();
     const auto pos = editor_->current_position();
     const bool interpoint = paged.geometry.interpoint;
-    const auto sheet = interpoint ? pos.page / 2 + 1 : pos.page + 1;
+    const auto sheet = paged.geometry.sheet_of_page(pos.page);
     auto print_page = QString::fromStdString(layout.print_page_at(static_cast<std::size_t>(editor_->current_line())));
     if (print_page.isEmpty()) print_page = QStringLiteral("-");
     return tr("Sheet %1 of %2%3 | line %4 | cell %5 | print page %6")
         .arg(sheet)
         .arg(std::max<std::size_t>(1, paged.sheet_count()))
-        .arg(interpoint ? (pos.page % 2 ? tr(", back") : tr(", front")) : QString())
+        .arg(interpoint ? (paged.geometry.page_is_back(pos.page) ? tr(", back") : tr(", front")) : QString())
         .arg(pos.line + 1)
         .arg(pos.cell + 1)
         .arg(print_page);
@@ -721,7 +721,7 @@ bool MainWindow::recover(const Recovery& r) {
     std::vector<std::string> lines;
     for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
     const auto table = r.table.isEmpty() ? editor_->layout().tables() : r.table.toStdString();
-    auto layout = LiveLayout::create(table, editor_->layout().options());
+    auto layout = edit::LiveLayout::create(table, editor_->layout().options());
     if (!layout) {
         report(QString::fromStdString(layout.error().to_string()), true);
         return false;

@@ -427,7 +427,7 @@ void PrinterPanel::resume_job() {
     }
     // A stopped or cancelled job starts again where it stopped.
     if (auto* j = selected_job(); j && (j->state == QueuedJob::State::failed || j->state == QueuedJob::State::cancelled))
-        resume_from_page(static_cast<int>(j->pages->geometry.interpoint ? 2 * j->resume_sheet - 1 : j->resume_sheet));
+        resume_from_page(static_cast<int>(j->pages->geometry.first_page_of_sheet(j->resume_sheet) + 1));
 }
 
 void PrinterPanel::cancel_job() {
@@ -446,7 +446,8 @@ void PrinterPanel::cancel_job() {
 void PrinterPanel::resume_from_page(int page) {
     auto* j = selected_job();
     if (!j || j->state == QueuedJob::State::running || j->state == QueuedJob::State::paused) return;
-    const auto sheet = j->pages->geometry.interpoint ? (static_cast<std::size_t>(page) + 1) / 2 : static_cast<std::size_t>(page);
+    // Braille page numbers count from 1; a page before the first is no sheet.
+    const auto sheet = page < 1 ? 0 : j->pages->geometry.sheet_of_page(static_cast<std::size_t>(page) - 1);
     if (sheet < 1 || sheet > j->pages->sheet_count()) {
         Q_EMIT message(tr("Page %1 is not in %2 (it has %3 pages)").arg(page).arg(j->name).arg(j->pages->pages.size()), true);
         return;

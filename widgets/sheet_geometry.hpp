@@ -1,37 +1,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Where dots land on paper, in millimetres from the top left of the sheet as the
-// front is read. The back page is embossed on the reverse: seen from the front its
-// dots are mirrored left to right, then shifted by the interpoint offset so that
-// they fall between front dots. Values come from the printer profile when one is
-// chosen; the defaults are the source embosser's A4 format.
+// The preview's view of a sheet: the printer profile it draws, and its dots in
+// millimetres from the top left of the sheet as the front is read. Where a dot
+// lands is plan::dot_place's rule and which dots crush each other is
+// plan::find_conflicts'; this file only adapts them to the painter.
 #include <vector>
 
 #include "layout/page.hpp"
+#include "plan/geometry.hpp"
 #include "profile/profile.hpp"
 
 namespace tactus::gui {
 
 struct SheetGeometry {
-    double paper_width_mm = 210.0;
-    double paper_height_mm = 297.0;
-    double left_margin_mm = 24.0;
-    double top_margin_mm = 20.0;
-    double dot_pitch_mm = 2.5;    // between dots of one cell
-    double cell_pitch_mm = 6.0;   // between cells of one line
-    double line_pitch_mm = 10.0;  // between lines
-    double dot_diameter_mm = 1.5;
-    double back_offset_x_mm = 1.25;  // back dots shifted from the mirrored grid
-    double back_offset_y_mm = 1.25;
-    double min_separation_mm = 1.25;  // a front and a back dot closer than this crush each other
-    profile::BackMirror back_mirror = profile::BackMirror::x;
+    profile::PrinterProfile profile = profile::default_profile();
+
+    [[nodiscard]] double paper_width_mm() const { return profile.paper.width_mm; }
+    [[nodiscard]] double paper_height_mm() const { return profile.paper.height_mm; }
+    [[nodiscard]] double dot_pitch_mm() const { return profile.geometry.dot_pitch_mm; }
+    // Drawn dots are 60 % of the pitch, about the proportion of an embossed dot.
+    [[nodiscard]] double dot_diameter_mm() const { return 0.6 * profile.geometry.dot_pitch_mm; }
 };
 
-// The sheet as the printer profile places it (the same formulas as plan::dot_place).
-// A front and a back dot may not come closer than half the dot pitch: the
-// distance the profile's default interpoint offset is designed to keep.
-SheetGeometry sheet_geometry(const profile::PrinterProfile& p);
+inline SheetGeometry sheet_geometry(const profile::PrinterProfile& p) { return SheetGeometry{p}; }
 
+// A dot as the front reader sees the sheet (paper coordinates).
 struct DotPoint {
     double x_mm = 0;
     double y_mm = 0;
@@ -47,12 +40,9 @@ std::vector<DotPoint> back_dots(const layout::Page& page, const SheetGeometry& g
 // Centre of dot 1's position of a cell, front or back view.
 DotPoint cell_origin(int line, int cell, bool back, const SheetGeometry& g);
 
-struct DotConflict {
-    DotPoint front;
-    DotPoint back;
-    double distance_mm = 0;
-};
-// Front/back dot pairs closer than the geometry allows.
-std::vector<DotConflict> find_conflicts(const layout::Sheet& sheet, const SheetGeometry& g);
+using plan::DotConflict;
+inline std::vector<DotConflict> find_conflicts(const layout::Sheet& sheet, const SheetGeometry& g) {
+    return plan::find_conflicts(g.profile, sheet);
+}
 
 }  // namespace tactus::gui

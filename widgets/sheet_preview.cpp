@@ -64,8 +64,8 @@ void paint_sheet(QPainter& p, const layout::Sheet& sheet, const SheetGeometry& g
     const auto pal = palette_for(o.high_contrast);
     p.save();
     p.setRenderHint(QPainter::Antialiasing);
-    p.fillRect(QRectF(0, 0, g.paper_width_mm * s, g.paper_height_mm * s), pal.paper);
-    const double r = g.dot_diameter_mm / 2 * s;
+    p.fillRect(QRectF(0, 0, g.paper_width_mm() * s, g.paper_height_mm() * s), pal.paper);
+    const double r = g.dot_diameter_mm() / 2 * s;
 
     // Heading line so a sighted proofreader knows which sheet and sides they see.
     p.setPen(pal.text);
@@ -78,7 +78,7 @@ void paint_sheet(QPainter& p, const layout::Sheet& sheet, const SheetGeometry& g
     const QString side = o.mode == SideMode::front ? QObject::tr("front")
                          : o.mode == SideMode::back ? QObject::tr("back, as read after turning the sheet")
                                                     : QObject::tr("front and back");
-    p.drawText(QPointF(g.left_margin_mm * s, 10.0 * s),
+    p.drawText(QPointF(g.profile.paper.margin_left_mm * s, 10.0 * s),
                QObject::tr("Sheet %1 (%2) - pages %3 / %4")
                    .arg(sheet.number)
                    .arg(side, label(sheet.front), label(sheet.back)));
@@ -100,20 +100,21 @@ void paint_sheet(QPainter& p, const layout::Sheet& sheet, const SheetGeometry& g
         p.setPen(QPen(pal.conflict, std::max(1.5, 0.4 * s)));
         p.setBrush(Qt::NoBrush);
         for (const auto& c : find_conflicts(sheet, g)) {
-            const QPointF m((c.front.x_mm + c.back.x_mm) / 2 * s, (c.front.y_mm + c.back.y_mm) / 2 * s);
+            const QPointF m((c.front.place.paper_x_mm + c.back.place.paper_x_mm) / 2 * s,
+                            (c.front.place.paper_y_mm + c.back.place.paper_y_mm) / 2 * s);
             p.drawEllipse(m, 2.2 * r, 2.2 * r);
         }
     }
     if (o.cursor_line >= 0 && o.cursor_cell >= 0) {
         const bool mirrored = o.cursor_on_back && o.mode == SideMode::both;
         const auto origin = cell_origin(o.cursor_line, o.cursor_cell, mirrored, g);
-        const double w = g.dot_pitch_mm + g.dot_diameter_mm + 0.6;
-        const double h = 2 * g.dot_pitch_mm + g.dot_diameter_mm + 0.6;
-        const double left = mirrored ? origin.x_mm - g.dot_pitch_mm - (g.dot_diameter_mm + 0.6) / 2
-                                     : origin.x_mm - (g.dot_diameter_mm + 0.6) / 2;
+        const double w = g.dot_pitch_mm() + g.dot_diameter_mm() + 0.6;
+        const double h = 2 * g.dot_pitch_mm() + g.dot_diameter_mm() + 0.6;
+        const double left = mirrored ? origin.x_mm - g.dot_pitch_mm() - (g.dot_diameter_mm() + 0.6) / 2
+                                     : origin.x_mm - (g.dot_diameter_mm() + 0.6) / 2;
         p.setPen(QPen(pal.cursor, std::max(2.0, 0.45 * s)));
         p.setBrush(Qt::NoBrush);
-        p.drawRect(QRectF(left * s, (origin.y_mm - (g.dot_diameter_mm + 0.6) / 2) * s, w * s, h * s));
+        p.drawRect(QRectF(left * s, (origin.y_mm - (g.dot_diameter_mm() + 0.6) / 2) * s, w * s, h * s));
     }
     p.restore();
 }
@@ -133,8 +134,8 @@ std::size_t SheetPreview::sheet_count() const { return doc_ ? std::max<std::size
 double SheetPreview::px_per_mm() const { return 3.0 * zoom_; }
 
 QSize SheetPreview::sizeHint() const {
-    return {static_cast<int>(geometry_.paper_width_mm * px_per_mm()),
-            static_cast<int>(geometry_.paper_height_mm * px_per_mm())};
+    return {static_cast<int>(geometry_.paper_width_mm() * px_per_mm()),
+            static_cast<int>(geometry_.paper_height_mm() * px_per_mm())};
 }
 
 void SheetPreview::set_document(const layout::PagedDocument* doc) {
@@ -205,8 +206,8 @@ const layout::Page* SheetPreview::cursor_side_page() const {
 
 void SheetPreview::show_position(std::size_t page, int line, int cell) {
     if (!doc_ || page >= doc_->pages.size()) return;
-    const auto sheet = doc_->geometry.interpoint ? page / 2 + 1 : page + 1;
-    options_.cursor_on_back = doc_->geometry.interpoint && page % 2 == 1;
+    const auto sheet = doc_->geometry.sheet_of_page(page);
+    options_.cursor_on_back = doc_->geometry.page_is_back(page);
     if (options_.mode == SideMode::front && options_.cursor_on_back) options_.mode = SideMode::both;
     if (options_.mode == SideMode::back && !options_.cursor_on_back) options_.mode = SideMode::both;
     options_.cursor_line = line;
@@ -304,13 +305,10 @@ void SheetPreview::mousePressEvent(QMouseEvent* e) {
     setFocus(Qt::MouseFocusReason);
     const double s = px_per_mm();
     const bool mirrored = options_.cursor_on_back && options_.mode == SideMode::both;
-    double x = e->position().x() / s;
-    if (mirrored) x = geometry_.paper_width_mm - x + geometry_.back_offset_x_mm;
-    const double y = e->position().y() / s - (mirrored ? geometry_.back_offset_y_mm : 0.0);
-    const int cell = static_cast<int>(std::floor((x - geometry_.left_margin_mm + 1.0) / geometry_.cell_pitch_mm));
-    const int line = static_cast<int>(std::floor((y - geometry_.top_margin_mm + 1.0) / geometry_.line_pitch_mm));
-    options_.cursor_line = std::max(0, line);
-    options_.cursor_cell = std::max(0, cell);
+    const auto at = plan::cell_at(geometry_.profile, mirrored ? plan::Side::back : plan::Side::front,
+                                  e->position().x() / s, e->position().y() / s);
+    options_.cursor_line = std::max(0, at.line);
+    options_.cursor_cell = std::max(0, at.cell);
     move_cursor(0, 0);
 }
 
@@ -406,7 +404,7 @@ bool print_to_pdf(const layout::PagedDocument& doc, const SheetGeometry& g, Side
     pdf.setTitle(QObject::tr("Tactus interpoint proof"));
     pdf.setCreator(QStringLiteral("Tactus"));
     pdf.setResolution(300);
-    pdf.setPageSize(QPageSize(QSizeF(g.paper_width_mm, g.paper_height_mm), QPageSize::Millimeter));
+    pdf.setPageSize(QPageSize(QSizeF(g.paper_width_mm(), g.paper_height_mm()), QPageSize::Millimeter));
     pdf.setPageMargins(QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter);
     QPainter p;
     if (!p.begin(&pdf)) {

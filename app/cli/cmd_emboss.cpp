@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "conflict_warnings.hpp"
 #include "emboss_queue.hpp"
 #include "profile/controller_config.hpp"
 #include "encode/frame.hpp"
@@ -14,7 +15,6 @@
 #include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "link/link.hpp"
-#include "transport/device.hpp"
 
 #include "plan/planner.hpp"
 #include "profile_arg.hpp"
@@ -51,6 +51,7 @@ Prepared prepare(const EmbossArgs& a) {
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
+    warn_about_conflicts(doc, profile);
     out.plan = require(plan::plan_job(doc, profile));
     out.config = profile::controller_config(profile);
     return out;
@@ -85,14 +86,11 @@ void run_emboss(const EmbossArgs& a) {
         return;
     }
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
-    // A malformed device string is a usage error; a device that is not there is a device error.
-    const auto spec = transport::parse_device(a.device);
-    if (!spec) fail_with(exit_usage, spec.error());
-    if (auto u = transport::uart_settings(*spec); !u) fail_with(exit_usage, u.error());
-    auto link = link::Link::open(a.device);
-    if (!link) fail_with(exit_device, link.error());
-    if (auto h = link->hello(); !h) fail_with(exit_device, h.error());
-    if (auto c = link->configure(prepared.config); !c) fail_with(exit_device, c.error());
+    // The error's kind tells a malformed device string (usage) from a device
+    // that is not there (device).
+    auto link = require(link::Link::open(a.device));
+    require(link.hello());
+    require(link.configure(prepared.config));
 
     const bool tty = isatty(STDERR_FILENO) != 0;
     link::CancelToken cancel;
@@ -100,7 +98,7 @@ void run_emboss(const EmbossArgs& a) {
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     bool bar_drawn = false;
-    auto out = link->send_job(
+    auto out = link.send_job(
         plan, a.start_sheet,
         [&](const link::Progress& p) {
             if (p.executed) {
@@ -120,7 +118,7 @@ void run_emboss(const EmbossArgs& a) {
         cancel);
     g_cancel = nullptr;
     if (bar_drawn) std::cerr << '\n';
-    if (!out) fail_with(exit_bad_input, out.error());
+    if (!out) fail_with(out.error());
     const auto& s = out->stats;
     switch (out->end) {
         case link::JobEnd::completed:

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "conflict_warnings.hpp"
 #include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
@@ -71,6 +72,7 @@ void run_plan(const PlanArgs& a) {
     const auto prof = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(prof);
     const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
+    warn_about_conflicts(doc, prof);
     auto planner = require(plan::Planner::create(prof));
     auto& out = std::cout;
     if (a.json) out << "{\"profile\":" << nlohmann::json(prof.name).dump() << ",\"sheets\":[";

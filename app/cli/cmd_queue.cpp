@@ -117,13 +117,12 @@ void act(const QueueArgs& a, spool::Action action) {
         // Page -> sheet within the first copy, from the job's stored geometry.
         const JobRecord j = require(s.job(a.job));
         const auto doc = require(spool::from_snapshot(require(s.document_snapshot(j.id))));
-        const bool interpoint = doc.geometry.interpoint;
         const std::size_t pages = doc.pages.size();
         if (a.from_page > pages)
             fail_with(exit_bad_input, Error{"page " + std::to_string(a.from_page) + " is beyond the job's " +
                                                 std::to_string(pages) + " pages",
                                             "--from-page"});
-        sheet = interpoint ? (a.from_page + 1) / 2 : a.from_page;
+        sheet = a.from_page < 1 ? 0 : doc.geometry.sheet_of_page(a.from_page - 1);
     }
     const JobRecord j = require(s.act(a.job, action, sheet), exit_bad_input);
     std::cout << "job " << j.id << ": " << to_string(j.state);

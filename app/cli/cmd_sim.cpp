@@ -29,7 +29,7 @@ struct SimArgs {
 void run_sim(const SimArgs& a) {
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required (the in-process simulator is the device \"sim\")");
     auto server = controller::PtyServer::open(a.server);
-    if (!server) fail_with(exit_device, server.error());
+    if (!server) fail_with(server.error());
     auto& ctl = server->controller();
     if (a.paper_out_at > 0) ctl.inject_paper_out_at_sheet(static_cast<std::uint16_t>(a.paper_out_at));
     if (a.reset_at_strike > 0) ctl.reset_at_strike(static_cast<std::size_t>(a.reset_at_strike), true);
@@ -60,7 +60,7 @@ void run_sim(const SimArgs& a) {
             << '\n'
             << std::flush;
     });
-    if (!r) fail_with(exit_device, r.error());
+    if (!r) fail_with(r.error());
     std::cerr << "sim: " << ctl.strike_log().size() << " strikes, " << ctl.frames_accepted()
               << " frames accepted, " << ctl.duplicates() << " duplicates ignored, "
               << ctl.crc_errors() << " corrupt frames dropped\n";

@@ -11,6 +11,7 @@
 
 namespace tactus::cli {
 
+// The documented exit codes (README, `tactus-cli --help`).
 enum ExitCode : int {
     exit_ok = 0,
     exit_failure = 1,    // the job ran but did not complete (e.g. controller fault)
@@ -18,6 +19,19 @@ enum ExitCode : int {
     exit_bad_input = 3,  // unreadable or malformed input file, profile, table
     exit_device = 4,     // device missing, busy or gone
 };
+
+// The one table from a core error's kind to the exit code.
+[[nodiscard]] constexpr int exit_code(ErrorKind kind) {
+    switch (kind) {
+        case ErrorKind::usage: return exit_usage;
+        case ErrorKind::input: return exit_bad_input;
+        case ErrorKind::device: return exit_device;
+        case ErrorKind::io:
+        case ErrorKind::protocol:
+        case ErrorKind::internal: return exit_failure;
+    }
+    return exit_failure;
+}
 
 // Thrown by commands, caught once in main: the only exception in the CLI.
 struct CommandFailed : std::runtime_error {
@@ -29,9 +43,20 @@ struct CommandFailed : std::runtime_error {
     throw CommandFailed(code, e.to_string());
 }
 
-// Unwraps a Result or fails the command with `code`.
+[[noreturn]] inline void fail_with(const Error& e) { fail_with(exit_code(e.kind), e); }
+
+// Unwraps a Result or fails the command with the exit code of the error's kind.
 template <typename T>
-T require(Result<T> r, int code = exit_bad_input) {
+T require(Result<T> r) {
+    if (!r) fail_with(r.error());
+    if constexpr (!std::is_void_v<T>) return std::move(*r);
+}
+
+// Unwraps a Result or fails the command with `code`: for a value whose meaning
+// the command knows better than core (a malformed string typed on the command
+// line is a usage error even though the parser calls it bad input).
+template <typename T>
+T require(Result<T> r, int code) {
     if (!r) fail_with(code, r.error());
     if constexpr (!std::is_void_v<T>) return std::move(*r);
 }

@@ -24,7 +24,7 @@
 
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 #include "main_window.hpp"
 #include "preview_panel.hpp"
 
@@ -86,9 +86,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> verses;
     for (std::string line; std::getline(in, line);)
         if (!line.empty()) verses.push_back(line);
-    auto created = LiveLayout::create("en-ueb-g2.ctb", {});
+    auto created = edit::LiveLayout::create("en-ueb-g2.ctb", {});
     if (!created) return 1;
-    auto probe = std::make_unique<LiveLayout>(std::move(*created));
+    auto probe = std::make_unique<edit::LiveLayout>(std::move(*created));
     std::size_t n = std::min<std::size_t>(verses.size(), target_pages * 5);
     probe->reset(std::vector<std::string>(verses.begin(), verses.begin() + static_cast<std::ptrdiff_t>(n)));
     while (probe->paged().pages.size() > target_pages && n > 10) {

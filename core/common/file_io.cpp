@@ -37,7 +37,7 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::string_vi
     std::random_device rd;
     const auto tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) return fail(std::string("cannot create: ") + std::strerror(errno), tmp.string());
+    if (fd < 0) return fail(ErrorKind::io, std::string("cannot create: ") + std::strerror(errno), tmp.string());
     std::size_t done = 0;
     while (done < bytes.size()) {
         const auto n = ::write(fd, bytes.data() + done, bytes.size() - done);
@@ -46,19 +46,19 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::string_vi
             const std::string why = std::strerror(errno);
             ::close(fd);
             ::unlink(tmp.c_str());
-            return fail("write failed: " + why, path.string());
+            return fail(ErrorKind::io, "write failed: " + why, path.string());
         }
         done += static_cast<std::size_t>(n);
     }
     if (::fsync(fd) != 0 || ::close(fd) != 0) {
         const std::string why = std::strerror(errno);
         ::unlink(tmp.c_str());
-        return fail("cannot flush to disk: " + why, path.string());
+        return fail(ErrorKind::io, "cannot flush to disk: " + why, path.string());
     }
     if (::rename(tmp.c_str(), path.c_str()) != 0) {
         const std::string why = std::strerror(errno);
         ::unlink(tmp.c_str());
-        return fail("cannot replace file: " + why, path.string());
+        return fail(ErrorKind::io, "cannot replace file: " + why, path.string());
     }
     return {};
 }
@@ -75,21 +75,21 @@ Result<void> write_file_atomic(const std::filesystem::path& path,
     };
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return fail(std::string("cannot create: ") + std::strerror(errno), tmp.string());
+        if (!out) return fail(ErrorKind::io, std::string("cannot create: ") + std::strerror(errno), tmp.string());
         if (auto ok = produce(out); !ok) return discard(ok.error());
         out.flush();
-        if (!out) return discard(Error{"write failed (disk full?)", path.string()});
+        if (!out) return discard(Error{"write failed (disk full?)", path.string(), ErrorKind::io});
     }
     // Make the data durable before the rename makes it visible.
     const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0 || ::fsync(fd) != 0) {
         const std::string why = std::strerror(errno);
         if (fd >= 0) ::close(fd);
-        return discard(Error{"cannot flush to disk: " + why, path.string()});
+        return discard(Error{"cannot flush to disk: " + why, path.string(), ErrorKind::io});
     }
     ::close(fd);
     if (::rename(tmp.c_str(), path.c_str()) != 0)
-        return discard(Error{std::string("cannot replace file: ") + std::strerror(errno), path.string()});
+        return discard(Error{std::string("cannot replace file: ") + std::strerror(errno), path.string(), ErrorKind::io});
     return {};
 }
 

@@ -25,14 +25,14 @@ Result<std::unique_ptr<transport::ByteStream>> open_sim(const transport::DeviceS
     for (const auto& [k, v] : spec.options) {
         const auto d = to_double(v);
         const std::string where = "sim option " + k;
-        if (!d || *d < 0) return fail("\"" + v + "\" is not a non-negative number", where);
+        if (!d || *d < 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a non-negative number", where);
         if (k == "baud") line.baud = *d;
         else if (k == "noise") line.noise.drop = line.noise.flip = line.noise.dup = *d;
         else if (k == "seed") line.noise.seed = static_cast<std::uint64_t>(*d);
         else if (k == "paper-reload") sim.reload_paper_after_s = *d;
-        else return fail("unknown option (baud, noise, seed, paper-reload)", where);
+        else return fail(ErrorKind::usage, "unknown option (baud, noise, seed, paper-reload)", where);
     }
-    if (line.baud < 300) return fail("baud rate below 300", "sim option baud");
+    if (line.baud < 300) return fail(ErrorKind::usage, "baud rate below 300", "sim option baud");
     auto ctl = std::make_shared<SimController>(sim);
     return std::unique_ptr<transport::ByteStream>(std::make_unique<SimTransport>(ctl, line));
 }

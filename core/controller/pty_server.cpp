@@ -23,17 +23,17 @@ double wall_now() {
 
 Result<void> raw(int fd) {
     termios t{};
-    if (tcgetattr(fd, &t) != 0) return fail(std::strerror(errno), "pty");
+    if (tcgetattr(fd, &t) != 0) return fail(ErrorKind::device, std::strerror(errno), "pty");
     cfmakeraw(&t);
-    if (tcsetattr(fd, TCSANOW, &t) != 0) return fail(std::strerror(errno), "pty");
+    if (tcsetattr(fd, TCSANOW, &t) != 0) return fail(ErrorKind::device, std::strerror(errno), "pty");
     return {};
 }
 
 }  // namespace
 
 Result<PtyServer> PtyServer::open(const PtyServerOptions& options) {
-    if (options.baud < 300) return fail("baud rate below 300", "--baud");
-    if (options.time_scale <= 0) return fail("time scale must be positive", "--time-scale");
+    if (options.baud < 300) return fail(ErrorKind::usage, "baud rate below 300", "--baud");
+    if (options.time_scale <= 0) return fail(ErrorKind::usage, "time scale must be positive", "--time-scale");
     PtyServer s(options);
     s.ctl_ = SimController([&] {
         SimOptions o = options.sim;
@@ -41,14 +41,14 @@ Result<PtyServer> PtyServer::open(const PtyServerOptions& options) {
         return o;
     }());
     s.master_ = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (s.master_ < 0) return fail("cannot open a pseudo-terminal: " + std::string(std::strerror(errno)), "pty");
+    if (s.master_ < 0) return fail(ErrorKind::device, "cannot open a pseudo-terminal: " + std::string(std::strerror(errno)), "pty");
     if (grantpt(s.master_) != 0 || unlockpt(s.master_) != 0)
-        return fail("cannot unlock the pseudo-terminal", "pty");
+        return fail(ErrorKind::device, "cannot unlock the pseudo-terminal", "pty");
     const char* name = ptsname(s.master_);
-    if (!name) return fail("pseudo-terminal has no name", "pty");
+    if (!name) return fail(ErrorKind::device, "pseudo-terminal has no name", "pty");
     s.path_ = name;
     s.slave_keep_ = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (s.slave_keep_ < 0) return fail("cannot open " + s.path_, "pty");
+    if (s.slave_keep_ < 0) return fail(ErrorKind::device, "cannot open " + s.path_, "pty");
     if (auto r = raw(s.slave_keep_); !r) return std::unexpected(r.error());
     const int flags = fcntl(s.master_, F_GETFL);
     fcntl(s.master_, F_SETFL, flags | O_NONBLOCK);
@@ -121,7 +121,7 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
                 const auto n = ::write(master_, due.data() + done, due.size() - done);
                 if (n > 0) done += static_cast<std::size_t>(n);
                 else if (n < 0 && errno == EAGAIN) break;  // no reader: the bytes are lost, as on a wire
-                else if (n < 0 && errno != EINTR) return fail(std::strerror(errno), path_);
+                else if (n < 0 && errno != EINTR) return fail(ErrorKind::device, std::strerror(errno), path_);
             }
         }
         const auto& log = ctl_.strike_log();
@@ -139,7 +139,7 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
         timespec ts{static_cast<time_t>(wait), static_cast<long>((wait - std::floor(wait)) * 1e9)};
         pollfd p{master_, POLLIN, 0};
         const int r = ::ppoll(&p, 1, &ts, nullptr);
-        if (r < 0 && errno != EINTR) return fail(std::strerror(errno), path_);
+        if (r < 0 && errno != EINTR) return fail(ErrorKind::device, std::strerror(errno), path_);
         if (r > 0 && (p.revents & POLLIN)) {
             const auto n = ::read(master_, buf.data(), buf.size());
             const double at = wall_now();

@@ -83,7 +83,7 @@ void SimTransport::run_until(double t) {
 }
 
 Result<void> SimTransport::write(std::span<const std::uint8_t> bytes) {
-    if (in(unplugged_, now_)) return fail("device disconnected (simulated unplug)", "sim");
+    if (in(unplugged_, now_)) return fail(ErrorKind::device, "device disconnected (simulated unplug)", "sim");
     tx_count_ += bytes.size();
     send_line(to_controller_, tx_free_, now_, bytes);
     return {};
@@ -95,7 +95,7 @@ Result<std::size_t> SimTransport::read(std::span<std::uint8_t> buffer,
     for (;;) {
         if (in(unplugged_, now_)) {
             to_host_.clear();
-            return fail("device disconnected (simulated unplug)", "sim");
+            return fail(ErrorKind::device, "device disconnected (simulated unplug)", "sim");
         }
         std::size_t n = 0;
         while (n < buffer.size() && !to_host_.empty() && to_host_.front().at <= now_) {
@@ -123,7 +123,7 @@ Result<std::size_t> SimTransport::read(std::span<std::uint8_t> buffer,
 }
 
 Result<void> SimTransport::reopen() {
-    if (in(unplugged_, now_)) return fail("no such device (simulated unplug)", "sim");
+    if (in(unplugged_, now_)) return fail(ErrorKind::device, "no such device (simulated unplug)", "sim");
     to_host_.clear();
     return {};
 }

@@ -24,7 +24,7 @@ std::uint32_t get32(std::span<const std::uint8_t> p, std::size_t at) {
 
 Result<void> need(std::span<const std::uint8_t> p, std::size_t n, const char* what) {
     if (p.size() != n)
-        return fail(std::string(what) + " payload is " + std::to_string(p.size()) +
+        return fail(ErrorKind::protocol, std::string(what) + " payload is " + std::to_string(p.size()) +
                         " bytes, expected " + std::to_string(n),
                     what);
     return {};
@@ -46,7 +46,7 @@ Result<AckInfo> get_ack(std::span<const std::uint8_t> p) {
     a.buffer_free = p[0];
     a.executed_passes = get16(p, 1);
     if (p[3] > static_cast<std::uint8_t>(ControllerState::homing))
-        return fail("unknown controller state " + std::to_string(p[3]), "status.state");
+        return fail(ErrorKind::protocol, "unknown controller state " + std::to_string(p[3]), "status.state");
     a.state = static_cast<ControllerState>(p[3]);
     a.faults = p[4];
     a.strikes_in_pass = p[5];
@@ -129,7 +129,7 @@ Result<HelloReply> decode_hello_reply(std::span<const std::uint8_t> p) {
     HelloReply h{p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
     if (h.max_payload == 0 || h.ring_bytes < h.max_payload || h.window_frames == 0 ||
         h.window_frames > 127)
-        return fail("controller reports an impossible buffer (ring " +
+        return fail(ErrorKind::protocol, "controller reports an impossible buffer (ring " +
                         std::to_string(h.ring_bytes) + ", payload " +
                         std::to_string(h.max_payload) + ")",
                     "HELLO_REPLY");
@@ -156,10 +156,10 @@ Result<machine::ControllerConfig> decode_config(std::span<const std::uint8_t> p)
     c.hammer_ticks = get16(p, 14);
     c.keepalive_ms = get16(p, 16);
     if (c.carriage_steps_per_m == 0 || c.feed_steps_per_m == 0)
-        return fail("steps per metre must be positive", "CONFIGURE.steps_per_m");
+        return fail(ErrorKind::protocol, "steps per metre must be positive", "CONFIGURE.steps_per_m");
     if (c.carriage_travel_steps <= 0)
-        return fail("carriage travel must be positive", "CONFIGURE.travel");
-    if (c.home_interval_ticks == 0) return fail("homing rate must be positive", "CONFIGURE.home");
+        return fail(ErrorKind::protocol, "carriage travel must be positive", "CONFIGURE.travel");
+    if (c.home_interval_ticks == 0) return fail(ErrorKind::protocol, "homing rate must be positive", "CONFIGURE.home");
     return c;
 }
 
@@ -180,7 +180,7 @@ std::vector<std::uint8_t> encode_nak(NakReason why, const AckInfo& a) {
 }
 Result<std::pair<NakReason, AckInfo>> decode_nak(std::span<const std::uint8_t> p) {
     if (auto r = need(p, kAckBytes + 1, "NAK"); !r) return std::unexpected(r.error());
-    if (p[0] < 1 || p[0] > 5) return fail("unknown NAK reason " + std::to_string(p[0]), "NAK");
+    if (p[0] < 1 || p[0] > 5) return fail(ErrorKind::protocol, "unknown NAK reason " + std::to_string(p[0]), "NAK");
     auto a = get_ack(p.subspan(1));
     if (!a) return std::unexpected(a.error());
     return std::pair{static_cast<NakReason>(p[0]), *a};

@@ -32,6 +32,19 @@ struct PageGeometry {
     bool interpoint = true;
     bool eight_dot = false;
     bool operator==(const PageGeometry&) const = default;
+
+    // Pages and sheets: an interpoint sheet carries two pages, front then back.
+    // Page indices are 0-based (into PagedDocument::pages), sheet numbers 1-based.
+    [[nodiscard]] std::size_t sheet_of_page(std::size_t page_index) const {
+        return interpoint ? page_index / 2 + 1 : page_index + 1;
+    }
+    [[nodiscard]] bool page_is_back(std::size_t page_index) const { return interpoint && page_index % 2 == 1; }
+    [[nodiscard]] std::size_t first_page_of_sheet(std::size_t sheet) const {
+        return interpoint ? 2 * (sheet - 1) : sheet - 1;
+    }
+    [[nodiscard]] std::size_t sheets_for_pages(std::size_t pages) const {
+        return interpoint ? (pages + 1) / 2 : pages;
+    }
 };
 
 struct PagedDocument {
@@ -40,20 +53,14 @@ struct PagedDocument {
     // Things the reader should know that did not stop the layout, as "line N: why".
     std::vector<std::string> warnings;
 
-    [[nodiscard]] std::size_t sheet_count() const {
-        return geometry.interpoint ? (pages.size() + 1) / 2 : pages.size();
-    }
+    [[nodiscard]] std::size_t sheet_count() const { return geometry.sheets_for_pages(pages.size()); }
     // Sheet n (1-based) points into `pages`; valid while this object lives unchanged.
     [[nodiscard]] Sheet sheet(std::size_t number) const {
         Sheet s;
         s.number = number;
-        if (geometry.interpoint) {
-            const auto i = 2 * (number - 1);
-            s.front = i < pages.size() ? &pages[i] : nullptr;
-            s.back = i + 1 < pages.size() ? &pages[i + 1] : nullptr;
-        } else {
-            s.front = number - 1 < pages.size() ? &pages[number - 1] : nullptr;
-        }
+        const auto i = geometry.first_page_of_sheet(number);
+        s.front = i < pages.size() ? &pages[i] : nullptr;
+        if (geometry.interpoint) s.back = i + 1 < pages.size() ? &pages[i + 1] : nullptr;
         return s;
     }
 };

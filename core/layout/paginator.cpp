@@ -23,20 +23,29 @@ Paginator::Paginator(LayoutOptions options, std::function<document::BrailleLine(
     doc_.geometry = o_.geometry;
 }
 
-bool Paginator::numbered(std::size_t page_index) const {
-    if (o_.page_numbers == PageNumberPosition::none) return false;
+bool page_is_numbered(const LayoutOptions& o, std::size_t page_index) {
+    if (o.page_numbers == PageNumberPosition::none) return false;
     // Interpoint: only the front of each sheet carries a number.
-    return !o_.geometry.interpoint || page_index % 2 == 0;
+    return !o.geometry.interpoint || page_index % 2 == 0;
 }
+
+int body_top(const LayoutOptions& o, std::size_t page_index) {
+    const bool number_on_top = page_is_numbered(o, page_index) && o.page_numbers == PageNumberPosition::top_right;
+    return o.top_margin + (number_on_top ? 1 : 0);
+}
+
+int body_capacity(const LayoutOptions& o, std::size_t page_index) {
+    const int lines = o.geometry.lines_per_page - o.top_margin - o.bottom_margin;
+    return page_is_numbered(o, page_index) ? lines - 1 : lines;
+}
+
+bool Paginator::numbered(std::size_t page_index) const { return page_is_numbered(o_, page_index); }
 
 int Paginator::width() const {
     return o_.geometry.cells_per_line - o_.left_margin - o_.right_margin;
 }
 
-int Paginator::body_capacity() const {
-    const int lines = o_.geometry.lines_per_page - o_.top_margin - o_.bottom_margin;
-    return numbered(doc_.pages.size()) ? lines - 1 : lines;
-}
+int Paginator::body_capacity() const { return layout::body_capacity(o_, doc_.pages.size()); }
 
 void Paginator::add_line(document::BrailleLine line, int source_line) {
     if (static_cast<int>(body_.size()) >= body_capacity()) close_page();
@@ -85,8 +94,7 @@ void Paginator::close_page() {
     while (!body_.empty() && is_blank(body_.back())) body_.pop_back();
 
     const bool has_number = numbered(index);
-    const bool number_on_top = has_number && o_.page_numbers == PageNumberPosition::top_right;
-    std::size_t row = static_cast<std::size_t>(o_.top_margin) + (number_on_top ? 1 : 0);
+    std::size_t row = static_cast<std::size_t>(body_top(o_, index));
     const document::BrailleLine indent(static_cast<std::size_t>(o_.left_margin), document::Cell{});
     for (auto& l : body_) {
         if (!l.empty()) {
@@ -98,7 +106,7 @@ void Paginator::close_page() {
     }
     if (has_number) {
         const auto number = number_cells_(page.braille_number);
-        const auto line_index = number_on_top
+        const auto line_index = o_.page_numbers == PageNumberPosition::top_right
                                     ? static_cast<std::size_t>(o_.top_margin)
                                     : static_cast<std::size_t>(g.lines_per_page - o_.bottom_margin - 1);
         const int right_edge = g.cells_per_line - o_.right_margin;

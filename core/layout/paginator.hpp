@@ -11,6 +11,15 @@
 
 namespace tactus::layout {
 
+// The page rules the paginator follows, for everyone who must know where body
+// text sits on a page without laying it out again (the editor's live layout,
+// its cursor map): whether page `page_index` (0-based) carries a braille page
+// number (interpoint backs do not), the first row of body text, and how many
+// rows of body text it holds.
+[[nodiscard]] bool page_is_numbered(const LayoutOptions& o, std::size_t page_index);
+[[nodiscard]] int body_top(const LayoutOptions& o, std::size_t page_index);
+[[nodiscard]] int body_capacity(const LayoutOptions& o, std::size_t page_index);
+
 class Paginator {
 public:
     // `number_cells` renders a braille page number in the document's braille code

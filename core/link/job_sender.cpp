@@ -38,7 +38,7 @@ struct JobState {
 
 Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t start_sheet,
                                         const ProgressFn& progress, const CancelToken& cancel) {
-    if (!session) return fail("no session: call hello() first", device);
+    if (!session) return fail(ErrorKind::internal, "no session: call hello() first", device);
     JobState js(plan);
     std::size_t sp = 0;
     js.first = 0;
@@ -47,7 +47,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         ++sp;
     }
     if (sp == plan.sheets.size())
-        return fail("sheet " + std::to_string(start_sheet) + " is not in the plan (it has " +
+        return fail(ErrorKind::usage, "sheet " + std::to_string(start_sheet) + " is not in the plan (it has " +
                         std::to_string(plan.sheets.size()) + " sheets)",
                     "start_sheet");
     js.reported = js.first;
@@ -194,7 +194,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             return finish(JobEnd::failed,
                           Error{"hammer fault at " + where() +
                                     ": check the print head, then resume from that sheet",
-                                device});
+                                device, ErrorKind::device});
         if (ack.faults & fault::paper_out) {
             if (js.fault_since < 0) js.fault_since = s->now();
             note("paper out at " + where() + ": load paper");
@@ -202,7 +202,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
                 return finish(JobEnd::failed,
                               Error{"paper out at " + where() + " and not loaded within " +
                                         std::to_string(opt.fault_wait.count() / 1000) + " s",
-                                    device});
+                                    device, ErrorKind::device});
         } else {
             js.fault_since = -1;
         }
@@ -235,7 +235,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             step = resend_all();
         }
         if (step && now - last_rx > seconds(opt.silence_timeout)) {
-            step = fail("no answer from the controller for " +
+            step = fail(ErrorKind::device, "no answer from the controller for " +
                             std::to_string(opt.silence_timeout.count()) + " ms",
                         device);
         }

@@ -64,7 +64,7 @@ struct Link::Impl {
     double last_goback = -1;
 
     Error device_error(const Error& e) const {
-        return Error{e.message, device};
+        return Error{e.message, device, e.kind};
     }
 
     std::size_t window_frames() const {
@@ -176,7 +176,7 @@ struct Link::Impl {
                                                             ? "malformed payload"
                                                             : "unknown type") +
                                             "): firmware and host disagree on the protocol",
-                                        device};
+                                        device, ErrorKind::protocol};
                         break;
                     case encode::NakReason::out_of_order:
                     case encode::NakReason::no_space: break;
@@ -216,14 +216,14 @@ struct Link::Impl {
 
     // Sends one frame and waits until the controller has accepted it.
     Result<void> transact(FrameType type, std::vector<std::uint8_t> payload) {
-        if (!session) return fail("no session: call hello() first", device);
+        if (!session) return fail(ErrorKind::internal, "no session: call hello() first", device);
         if (auto r = send(type, std::move(payload)); !r) return r;
         const double start = s->now();
         while (!unacked.empty()) {
             if (refused) return std::unexpected(*std::exchange(refused, std::nullopt));
-            if (session_lost) return fail("the controller restarted; open a new session", device);
+            if (session_lost) return fail(ErrorKind::device, "the controller restarted; open a new session", device);
             if (s->now() - start > seconds(opt.silence_timeout))
-                return fail("no answer from the controller within " +
+                return fail(ErrorKind::device, "no answer from the controller within " +
                                 std::to_string(opt.silence_timeout.count()) + " ms",
                             device);
             const double due = unacked.front().sent_at + rto();
@@ -254,7 +254,7 @@ struct Link::Impl {
         while (!last_hello) {
             const double waited = s->now() - start;
             if (waited > seconds(opt.silence_timeout))
-                return fail("no answer to HELLO within " +
+                return fail(ErrorKind::device, "no answer to HELLO within " +
                                 std::to_string(opt.silence_timeout.count()) +
                                 " ms: is the embosser on, the cable in, and the baud rate right?",
                             device);
@@ -269,7 +269,7 @@ struct Link::Impl {
             if (refused) return std::unexpected(*refused);
         }
         if (last_hello->protocol != encode::kProtocolVersion)
-            return fail("controller speaks protocol version " +
+            return fail(ErrorKind::protocol, "controller speaks protocol version " +
                             std::to_string(last_hello->protocol) + ", this host " +
                             std::to_string(encode::kProtocolVersion),
                         device);
@@ -290,7 +290,7 @@ struct Link::Impl {
                 if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
             if (last_status) return *last_status;
         }
-        return fail("no status reply from the controller", device);
+        return fail(ErrorKind::device, "no status reply from the controller", device);
     }
 
     // The device went away: reopen it until the deadline.
@@ -306,7 +306,7 @@ struct Link::Impl {
                 return {};
             }
             if (s->now() - start > seconds(opt.reconnect_deadline))
-                return fail("device gone and not back within " +
+                return fail(ErrorKind::device, "device gone and not back within " +
                                 std::to_string(opt.reconnect_deadline.count()) +
                                 " ms: " + r.error().message,
                             device);

@@ -30,11 +30,11 @@ Result<DeviceSpec> parse_device(std::string_view device) {
     if (colon != std::string_view::npos) spec.path = std::string(head.substr(colon + 1));
     if (spec.scheme != "serial" && spec.scheme != "pty" && spec.scheme != "hid" &&
         spec.scheme != "lpt" && spec.scheme != "sim")
-        return fail("unknown device type \"" + spec.scheme +
+        return fail(ErrorKind::usage, "unknown device type \"" + spec.scheme +
                         "\" (expected serial:, pty:, hid:, lpt: or sim)",
                     where);
     if (spec.scheme != "sim" && spec.path.empty())
-        return fail("missing the device path after \"" + spec.scheme + ":\"", where);
+        return fail(ErrorKind::usage, "missing the device path after \"" + spec.scheme + ":\"", where);
     if (q != std::string_view::npos) {
         std::string_view rest = device.substr(q + 1);
         while (!rest.empty()) {
@@ -42,7 +42,7 @@ Result<DeviceSpec> parse_device(std::string_view device) {
             const auto kv = rest.substr(0, amp);
             const auto eq = kv.find('=');
             if (eq == std::string_view::npos || eq == 0)
-                return fail("option \"" + std::string(kv) + "\" is not key=value", where);
+                return fail(ErrorKind::usage, "option \"" + std::string(kv) + "\" is not key=value", where);
             spec.options[std::string(kv.substr(0, eq))] = std::string(kv.substr(eq + 1));
             if (amp == std::string_view::npos) break;
             rest = rest.substr(amp + 1);
@@ -58,22 +58,22 @@ Result<UartSettings> uart_settings(const DeviceSpec& spec) {
         if (k == "baud") {
             const auto b = to_double(v);
             if (!b || *b < 300 || *b > 1'000'000 || *b != static_cast<int>(*b))
-                return fail("baud rate \"" + v + "\" is not a whole number from 300 to 1000000", where);
+                return fail(ErrorKind::usage, "baud rate \"" + v + "\" is not a whole number from 300 to 1000000", where);
             u.baud = static_cast<int>(*b);
         } else if (k == "parity") {
             if (v != "none" && v != "odd" && v != "even")
-                return fail("parity must be none, odd or even", where);
+                return fail(ErrorKind::usage, "parity must be none, odd or even", where);
             u.parity = v[0];
         } else if (k == "stop") {
-            if (v != "1" && v != "2") return fail("stop bits must be 1 or 2", where);
+            if (v != "1" && v != "2") return fail(ErrorKind::usage, "stop bits must be 1 or 2", where);
             u.stop_bits = v == "2" ? 2 : 1;
         } else if (k == "flow") {
             if (v == "none") u.flow = UartSettings::Flow::none;
             else if (v == "rtscts") u.flow = UartSettings::Flow::rtscts;
             else if (v == "xonxoff") u.flow = UartSettings::Flow::xonxoff;
-            else return fail("flow must be none, rtscts or xonxoff", where);
+            else return fail(ErrorKind::usage, "flow must be none, rtscts or xonxoff", where);
         } else if (spec.scheme != "sim") {
-            return fail("unknown option", where);
+            return fail(ErrorKind::usage, "unknown option", where);
         }
     }
     return u;
@@ -84,12 +84,12 @@ Result<std::unique_ptr<ByteStream>> open_device(std::string_view device) {
     if (!spec) return std::unexpected(spec.error());
     if (spec->scheme == "hid") return open_hid(*spec);
     if (spec->scheme == "lpt") {
-        if (!spec->options.empty()) return fail("lpt takes no options", "lpt:" + spec->path);
+        if (!spec->options.empty()) return fail(ErrorKind::usage, "lpt takes no options", "lpt:" + spec->path);
         return open_lpt(*spec);
     }
     // The simulator belongs to the controller stage: controller::open_device.
     if (spec->scheme == "sim")
-        return fail("the built-in simulator is not a cable", "device \"" + std::string(device) + "\"");
+        return fail(ErrorKind::internal, "the built-in simulator is not a cable", "device \"" + std::string(device) + "\"");
     auto uart = uart_settings(*spec);
     if (!uart) return std::unexpected(uart.error());
     if (spec->scheme == "pty") {

@@ -23,7 +23,7 @@ Result<void> ensure_init() {
     static std::once_flag once;
     static int rc = 0;
     std::call_once(once, [] { rc = hid_init(); });
-    if (rc != 0) return fail("hidapi could not start", "hid");
+    if (rc != 0) return fail(ErrorKind::device, "hidapi could not start", "hid");
     return {};
 }
 
@@ -35,17 +35,17 @@ public:
     HidapiDevice& operator=(const HidapiDevice&) = delete;
 
     Result<void> write_report(std::span<const std::uint8_t> report) override {
-        if (hid_write(d_, report.data(), report.size()) < 0) return fail(narrow(hid_error(d_)), "hid");
+        if (hid_write(d_, report.data(), report.size()) < 0) return fail(ErrorKind::device, narrow(hid_error(d_)), "hid");
         return {};
     }
     Result<std::size_t> read_report(std::span<std::uint8_t> buffer, int timeout_ms) override {
         const int n = hid_read_timeout(d_, buffer.data(), buffer.size(), timeout_ms);
-        if (n < 0) return fail(narrow(hid_error(d_)), "hid");
+        if (n < 0) return fail(ErrorKind::device, narrow(hid_error(d_)), "hid");
         return static_cast<std::size_t>(n);
     }
     Result<void> send_feature(std::span<const std::uint8_t> report) override {
         if (hid_send_feature_report(d_, report.data(), report.size()) < 0)
-            return fail(narrow(hid_error(d_)), "hid");
+            return fail(ErrorKind::device, narrow(hid_error(d_)), "hid");
         return {};
     }
 
@@ -71,13 +71,13 @@ Result<std::unique_ptr<ByteStream>> open_hid(const DeviceSpec& spec) {
         pid = static_cast<unsigned>(std::stoul(pid_text, &used, 16));
         if (used != pid_text.size()) throw std::invalid_argument("");
     } catch (const std::exception&) {
-        return fail("expected hid:VID:PID[:serial] with hexadecimal ids", where);
+        return fail(ErrorKind::device, "expected hid:VID:PID[:serial] with hexadecimal ids", where);
     }
-    if (vid > 0xFFFF || pid > 0xFFFF) return fail("USB ids are 16-bit", where);
+    if (vid > 0xFFFF || pid > 0xFFFF) return fail(ErrorKind::device, "USB ids are 16-bit", where);
     if (c2 != std::string::npos) serial = spec.path.substr(c2 + 1);
     const auto bridge = bridge_for(static_cast<std::uint16_t>(vid), static_cast<std::uint16_t>(pid));
     if (!bridge)
-        return fail("not a supported HID-UART bridge (CP2110 10c4:ea80, CP2114 10c4:eab0, FT260 "
+        return fail(ErrorKind::device, "not a supported HID-UART bridge (CP2110 10c4:ea80, CP2114 10c4:eab0, FT260 "
                     "0403:6030)",
                     where);
     auto uart = uart_settings(spec);
@@ -93,7 +93,7 @@ Result<std::unique_ptr<ByteStream>> open_hid(const DeviceSpec& spec) {
                                                   static_cast<unsigned short>(pid));
             const bool present = list != nullptr;
             hid_free_enumeration(list);
-            return fail(present ? "busy or permission denied (check the udev rules for hidraw)"
+            return fail(ErrorKind::device, present ? "busy or permission denied (check the udev rules for hidraw)"
                                 : "no such device",
                         where);
         }

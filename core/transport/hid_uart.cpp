@@ -44,16 +44,16 @@ Result<std::vector<std::uint8_t>> uart_in(HidBridge b, std::span<const std::uint
     if (b == HidBridge::cp2110) {
         if (id < 0x01 || id > 0x3F) return std::vector<std::uint8_t>{};  // not UART data
         if (report.size() < 1U + id)
-            return fail("CP2110 report 0x" + std::to_string(id) + " shorter than its length",
+            return fail(ErrorKind::device, "CP2110 report 0x" + std::to_string(id) + " shorter than its length",
                         "hid report");
         return std::vector<std::uint8_t>(report.begin() + 1, report.begin() + 1 + id);
     }
     if (id < kFt260UartBase || id > 0xFE) return std::vector<std::uint8_t>{};
-    if (report.size() < 2) return fail("FT260 UART report without a length", "hid report");
+    if (report.size() < 2) return fail(ErrorKind::device, "FT260 UART report without a length", "hid report");
     const std::size_t n = report[1];
     const std::size_t cap = 4 * (static_cast<std::size_t>(id - kFt260UartBase) + 1);
     if (n > cap || report.size() < 2 + n)
-        return fail("FT260 UART report claims " + std::to_string(n) + " bytes", "hid report");
+        return fail(ErrorKind::device, "FT260 UART report claims " + std::to_string(n) + " bytes", "hid report");
     return std::vector<std::uint8_t>(report.begin() + 2, report.begin() + 2 + static_cast<std::ptrdiff_t>(n));
 }
 
@@ -98,7 +98,7 @@ Result<void> HidUart::start() {
     dev_ = std::move(*d);
     for (const auto& f : hid_report::uart_setup(bridge_, uart_))
         if (auto r = dev_->send_feature(f); !r)
-            return fail(std::string(bridge_name(bridge_)) + " refused its UART setup: " +
+            return fail(ErrorKind::device, std::string(bridge_name(bridge_)) + " refused its UART setup: " +
                             r.error().message,
                         name_);
     pending_.clear();
@@ -108,20 +108,20 @@ Result<void> HidUart::start() {
 Result<void> HidUart::reopen() { return start(); }
 
 Result<void> HidUart::write(std::span<const std::uint8_t> bytes) {
-    if (!dev_) return fail("device not open", name_);
+    if (!dev_) return fail(ErrorKind::device, "device not open", name_);
     for (const auto& report : hid_report::uart_out(bridge_, bytes))
         if (auto r = dev_->write_report(report); !r)
-            return fail("device disconnected: " + r.error().message, name_);
+            return fail(ErrorKind::device, "device disconnected: " + r.error().message, name_);
     return {};
 }
 
 Result<std::size_t> HidUart::read(std::span<std::uint8_t> buffer, std::chrono::microseconds timeout) {
-    if (!dev_) return fail("device not open", name_);
+    if (!dev_) return fail(ErrorKind::device, "device not open", name_);
     int ms = static_cast<int>((timeout.count() + 999) / 1000);
     while (pending_.empty()) {
         std::array<std::uint8_t, 64> report{};
         auto n = dev_->read_report(report, ms);
-        if (!n) return fail("device disconnected: " + n.error().message, name_);
+        if (!n) return fail(ErrorKind::device, "device disconnected: " + n.error().message, name_);
         if (*n == 0) return std::size_t{0};
         auto data = hid_report::uart_in(bridge_, std::span(report).first(*n));
         if (!data) return std::unexpected(data.error());

@@ -49,7 +49,7 @@ public:
     }
     Result<LptStatus> read_status() override {
         const int raw = ieee1284_read_status(p_);
-        if (raw < 0) return fail(error_text(raw), "lpt");
+        if (raw < 0) return fail(ErrorKind::device, error_text(raw), "lpt");
         const int v = raw ^ S1284_INVERTED;
         return LptStatus{(v & S1284_NACK) != 0, (v & S1284_BUSY) != 0, (v & S1284_PERROR) != 0,
                          (v & S1284_SELECT) != 0, (v & S1284_NFAULT) != 0};
@@ -84,7 +84,7 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
     const std::string wanted = spec.path;
     auto opener = [wanted, where]() -> Result<std::unique_ptr<ParallelPortLines>> {
         parport_list list{};
-        if (ieee1284_find_ports(&list, 0) != E1284_OK) return fail("cannot list parallel ports", where);
+        if (ieee1284_find_ports(&list, 0) != E1284_OK) return fail(ErrorKind::device, "cannot list parallel ports", where);
         parport* found = nullptr;
         for (int i = 0; i < list.portc; ++i) {
             const std::string name = list.portv[i]->name ? list.portv[i]->name : "";
@@ -94,19 +94,19 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
         if (!found) {
             const auto ports = port_list(list);
             ieee1284_free_ports(&list);
-            return fail("no such device (parallel ports: " + ports + ")", where);
+            return fail(ErrorKind::device, "no such device (parallel ports: " + ports + ")", where);
         }
         ieee1284_ref(found);
         ieee1284_free_ports(&list);
         int caps = 0;
         if (const int rc = ieee1284_open(found, F1284_EXCL, &caps); rc != E1284_OK) {
             ieee1284_unref(found);
-            return fail(error_text(rc), where);
+            return fail(ErrorKind::device, error_text(rc), where);
         }
         if (const int rc = ieee1284_claim(found); rc != E1284_OK) {
             ieee1284_close(found);
             ieee1284_unref(found);
-            return fail("busy (claimed by another driver or program): " + error_text(rc), where);
+            return fail(ErrorKind::device, "busy (claimed by another driver or program): " + error_text(rc), where);
         }
         return std::unique_ptr<ParallelPortLines>(std::make_unique<Ieee1284Lines>(found));
     };

@@ -37,7 +37,7 @@ Result<bool> LptPort::wait_for(const std::function<bool(const LptStatus&)>& ok) 
 Result<void> LptPort::write_byte(std::uint8_t b) {
     auto ready = wait_for([](const LptStatus& s) { return !s.busy; });
     if (!ready) return std::unexpected(ready.error());
-    if (!*ready) return fail("printer busy: the controller does not take data (Busy stays high)", name_);
+    if (!*ready) return fail(ErrorKind::device, "printer busy: the controller does not take data (Busy stays high)", name_);
     if (auto r = lines_->write_data(b); !r) return r;
     lines_->settle();
     ctl_.n_strobe = false;
@@ -47,12 +47,12 @@ Result<void> LptPort::write_byte(std::uint8_t b) {
     if (auto r = lines_->write_control(ctl_); !r) return r;
     auto done = wait_for([](const LptStatus& s) { return !s.busy; });
     if (!done) return std::unexpected(done.error());
-    if (!*done) return fail("no acknowledge from the controller (Busy stuck high)", name_);
+    if (!*done) return fail(ErrorKind::device, "no acknowledge from the controller (Busy stuck high)", name_);
     return {};
 }
 
 Result<void> LptPort::write(std::span<const std::uint8_t> bytes) {
-    if (!lines_) return fail("device not open", name_);
+    if (!lines_) return fail(ErrorKind::device, "device not open", name_);
     for (const std::uint8_t b : bytes)
         if (auto r = write_byte(b); !r) return r;
     return {};
@@ -72,7 +72,7 @@ Result<bool> LptPort::negotiate_nibble() {
     if (!*e2) {
         ctl_ = LptControl{};
         (void)lines_->write_control(ctl_);
-        return fail("the controller does not answer IEEE 1284 negotiation (not 1284-capable?)", name_);
+        return fail(ErrorKind::device, "the controller does not answer IEEE 1284 negotiation (not 1284-capable?)", name_);
     }
     ctl_.n_strobe = false;
     if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
@@ -82,7 +82,7 @@ Result<bool> LptPort::negotiate_nibble() {
     if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
     auto e6 = wait_for([](const LptStatus& s) { return s.n_ack; });
     if (!e6) return std::unexpected(e6.error());
-    if (!*e6) return fail("IEEE 1284 negotiation did not complete", name_);
+    if (!*e6) return fail(ErrorKind::device, "IEEE 1284 negotiation did not complete", name_);
     auto st = lines_->read_status();
     if (!st) return std::unexpected(st.error());
     return !st->n_fault;
@@ -96,7 +96,7 @@ Result<std::uint8_t> LptPort::read_nibble_byte() {
         if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
         auto e9 = wait_for([](const LptStatus& s) { return !s.n_ack; });
         if (!e9) return std::unexpected(e9.error());
-        if (!*e9) return fail("nibble transfer stalled (no nAck)", name_);
+        if (!*e9) return fail(ErrorKind::device, "nibble transfer stalled (no nAck)", name_);
         auto st = lines_->read_status();
         if (!st) return std::unexpected(st.error());
         const unsigned nib = (st->n_fault ? 1U : 0U) | (st->select ? 2U : 0U) |
@@ -106,7 +106,7 @@ Result<std::uint8_t> LptPort::read_nibble_byte() {
         if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
         auto e11 = wait_for([](const LptStatus& s) { return s.n_ack; });
         if (!e11) return std::unexpected(e11.error());
-        if (!*e11) return fail("nibble transfer stalled (nAck stuck low)", name_);
+        if (!*e11) return fail(ErrorKind::device, "nibble transfer stalled (nAck stuck low)", name_);
     }
     return value;
 }
@@ -124,12 +124,12 @@ Result<void> LptPort::terminate() {
     if (!e27) return std::unexpected(e27.error());
     ctl_.n_auto_fd = true;
     if (auto r = lines_->write_control(ctl_); !r) return r;
-    if (!*e24 || !*e27) return fail("IEEE 1284 termination did not complete", name_);
+    if (!*e24 || !*e27) return fail(ErrorKind::device, "IEEE 1284 termination did not complete", name_);
     return {};
 }
 
 Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::microseconds timeout) {
-    if (!lines_) return fail("device not open", name_);
+    if (!lines_) return fail(ErrorKind::device, "device not open", name_);
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     for (;;) {
         auto avail = negotiate_nibble();
@@ -154,7 +154,7 @@ Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::m
 }
 
 Result<LptPort::Condition> LptPort::condition() {
-    if (!lines_) return fail("device not open", name_);
+    if (!lines_) return fail(ErrorKind::device, "device not open", name_);
     auto st = lines_->read_status();
     if (!st) return std::unexpected(st.error());
     return Condition{st->paper_error, !st->n_fault, st->select};

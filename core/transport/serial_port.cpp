@@ -50,13 +50,13 @@ Result<void> SerialPort::open_port() {
     const std::string where = "serial:" + path_;
     if (auto r = sp_get_port_by_name(path_.c_str(), &port_); r != SP_OK) {
         port_ = nullptr;
-        return fail(r == SP_ERR_ARG ? "no such device" : sp_error(r), where);
+        return fail(ErrorKind::device, r == SP_ERR_ARG ? "no such device" : sp_error(r), where);
     }
     if (auto r = sp_open(port_, SP_MODE_READ_WRITE); r != SP_OK) {
         const auto msg = sp_error(r);
         sp_free_port(port_);
         port_ = nullptr;
-        return fail(msg, where);
+        return fail(ErrorKind::device, msg, where);
     }
     const sp_parity parity = uart_.parity == 'o'   ? SP_PARITY_ODD
                              : uart_.parity == 'e' ? SP_PARITY_EVEN
@@ -72,7 +72,7 @@ Result<void> SerialPort::open_port() {
     if (r != SP_OK) {
         const auto msg = sp_error(r);
         close_port();
-        return fail("cannot configure the line: " + msg, where);
+        return fail(ErrorKind::device, "cannot configure the line: " + msg, where);
     }
     return {};
 }
@@ -88,27 +88,27 @@ double SerialPort::bytes_per_second() const {
 
 Result<void> SerialPort::write(std::span<const std::uint8_t> bytes) {
     const std::string where = "serial:" + path_;
-    if (!port_) return fail("device not open", where);
+    if (!port_) return fail(ErrorKind::device, "device not open", where);
     const auto n = sp_blocking_write(port_, bytes.data(), bytes.size(), 2000);
-    if (n < 0) return fail("device disconnected: " + sp_error(n), where);
-    if (static_cast<std::size_t>(n) != bytes.size()) return fail("write timed out (flow control?)", where);
+    if (n < 0) return fail(ErrorKind::device, "device disconnected: " + sp_error(n), where);
+    if (static_cast<std::size_t>(n) != bytes.size()) return fail(ErrorKind::device, "write timed out (flow control?)", where);
     return {};
 }
 
 Result<std::size_t> SerialPort::read(std::span<std::uint8_t> buffer,
                                      std::chrono::microseconds timeout) {
     const std::string where = "serial:" + path_;
-    if (!port_) return fail("device not open", where);
+    if (!port_) return fail(ErrorKind::device, "device not open", where);
     const auto ms = static_cast<unsigned>((timeout.count() + 999) / 1000);
     // Wait for the first byte, then take whatever else is already there.
     auto n = sp_blocking_read_next(port_, buffer.data(), buffer.size(), ms == 0 ? 1 : ms);
-    if (n < 0) return fail("device disconnected: " + sp_error(n), where);
+    if (n < 0) return fail(ErrorKind::device, "device disconnected: " + sp_error(n), where);
     return static_cast<std::size_t>(n);
 }
 
 Result<std::vector<PortInfo>> list_serial_ports() {
     sp_port** ports = nullptr;
-    if (auto r = sp_list_ports(&ports); r != SP_OK) return fail(sp_error(r), "serial ports");
+    if (auto r = sp_list_ports(&ports); r != SP_OK) return fail(ErrorKind::device, sp_error(r), "serial ports");
     std::vector<PortInfo> out;
     for (sp_port** p = ports; *p; ++p) {
         PortInfo info;

@@ -45,7 +45,7 @@ std::string open_error(int err) {
 
 Result<void> make_raw(int fd, const UartSettings& uart, const std::string& where) {
     termios t{};
-    if (tcgetattr(fd, &t) != 0) return fail("not a terminal: " + std::string(std::strerror(errno)), where);
+    if (tcgetattr(fd, &t) != 0) return fail(ErrorKind::device, "not a terminal: " + std::string(std::strerror(errno)), where);
     cfmakeraw(&t);
     t.c_cflag |= CLOCAL | CREAD;
     t.c_cflag &= ~static_cast<tcflag_t>(PARENB | PARODD | CSTOPB | CRTSCTS);
@@ -57,11 +57,11 @@ Result<void> make_raw(int fd, const UartSettings& uart, const std::string& where
     t.c_cc[VMIN] = 0;
     t.c_cc[VTIME] = 0;
     const speed_t sp = speed_of(uart.baud);
-    if (sp == B0) return fail("unsupported baud rate " + std::to_string(uart.baud), where);
+    if (sp == B0) return fail(ErrorKind::device, "unsupported baud rate " + std::to_string(uart.baud), where);
     cfsetispeed(&t, sp);
     cfsetospeed(&t, sp);
     if (tcsetattr(fd, TCSANOW, &t) != 0)
-        return fail("cannot set terminal mode: " + std::string(std::strerror(errno)), where);
+        return fail(ErrorKind::device, "cannot set terminal mode: " + std::string(std::strerror(errno)), where);
     return {};
 }
 
@@ -81,16 +81,16 @@ void TtyPort::close_fd() {
 Result<void> TtyPort::open_fd() {
     const std::string where = "pty:" + path_;
     fd_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (fd_ < 0) return fail(open_error(errno), where);
+    if (fd_ < 0) return fail(ErrorKind::device, open_error(errno), where);
     if (!isatty(fd_)) {
         close_fd();
-        return fail("not a terminal", where);
+        return fail(ErrorKind::device, "not a terminal", where);
     }
     // Two senders on one line would interleave frames: take the line exclusively.
     if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         const int err = errno;
         close_fd();
-        return fail(open_error(err == EWOULDBLOCK ? EBUSY : err), where);
+        return fail(ErrorKind::device, open_error(err == EWOULDBLOCK ? EBUSY : err), where);
     }
     if (auto r = make_raw(fd_, uart_, where); !r) {
         close_fd();
@@ -110,7 +110,7 @@ double TtyPort::bytes_per_second() const {
 
 Result<void> TtyPort::write(std::span<const std::uint8_t> bytes) {
     const std::string where = "pty:" + path_;
-    if (fd_ < 0) return fail("device not open", where);
+    if (fd_ < 0) return fail(ErrorKind::device, "device not open", where);
     std::size_t done = 0;
     while (done < bytes.size()) {
         const auto n = ::write(fd_, bytes.data() + done, bytes.size() - done);
@@ -121,30 +121,30 @@ Result<void> TtyPort::write(std::span<const std::uint8_t> bytes) {
         if (n < 0 && errno == EINTR) continue;
         if (n < 0 && errno == EAGAIN) {
             pollfd p{fd_, POLLOUT, 0};
-            if (::poll(&p, 1, 1000) <= 0) return fail("write timed out (line blocked)", where);
+            if (::poll(&p, 1, 1000) <= 0) return fail(ErrorKind::device, "write timed out (line blocked)", where);
             continue;
         }
-        return fail("device disconnected: " + std::string(std::strerror(errno)), where);
+        return fail(ErrorKind::device, "device disconnected: " + std::string(std::strerror(errno)), where);
     }
     return {};
 }
 
 Result<std::size_t> TtyPort::read(std::span<std::uint8_t> buffer, std::chrono::microseconds timeout) {
     const std::string where = "pty:" + path_;
-    if (fd_ < 0) return fail("device not open", where);
+    if (fd_ < 0) return fail(ErrorKind::device, "device not open", where);
     pollfd p{fd_, POLLIN, 0};
     const int ms = static_cast<int>((timeout.count() + 999) / 1000);
     const int r = ::poll(&p, 1, ms);
     if (r < 0) {
         if (errno == EINTR) return std::size_t{0};
-        return fail(std::strerror(errno), where);
+        return fail(ErrorKind::device, std::strerror(errno), where);
     }
     if (r == 0) return std::size_t{0};
     const auto n = ::read(fd_, buffer.data(), buffer.size());
     if (n > 0) return static_cast<std::size_t>(n);
     if (n < 0 && (errno == EAGAIN || errno == EINTR)) return std::size_t{0};
     // EIO or end of file: the other end of the pty (or the USB adapter) is gone.
-    return fail("device disconnected", where);
+    return fail(ErrorKind::device, "device disconnected", where);
 }
 
 }  // namespace tactus::transport

@@ -7,11 +7,16 @@
 #include <sstream>
 #include <algorithm>
 
-#include "../common/run.hpp"
+#include "../common/process.hpp"
+
+using tactus::test::cli;
+using tactus::test::run_captured;
 
 namespace fs = std::filesystem;
 
 namespace {
+
+const std::string kWelcome = TACTUS_RESOURCES_DIR "/samples/welcome.md";
 
 const std::string kText =
     "The quick brown fox.\n"
@@ -32,41 +37,40 @@ fs::path temp_file(const std::string& name, const std::string& content) {
 TEST(CliTranslate, MatchesLouTranslateLineByLine) {
     const auto input = temp_file("in.txt", kText);
     for (const auto& [to, display] : {std::pair{"unicode", "unicode.dis"}, std::pair{"brf", "en-us-brf.dis"}}) {
-        const auto ours = run_command(cli(std::string("translate --table en-ueb-g2.ctb --to ") + to + " '" +
-                                          input.string() + "'"));
+        const auto ours = run_captured(cli({"translate", "--table", "en-ueb-g2.ctb", "--to", to, input.string()}));
         ASSERT_EQ(ours.exit_code, 0) << ours.err;
-        const auto peer = run_command(std::string("lou_translate ") + display + ",en-ueb-g2.ctb", kText);
+        const auto peer = run_captured({"lou_translate", std::string(display) + ",en-ueb-g2.ctb"}, kText);
         ASSERT_EQ(peer.exit_code, 0) << peer.err;
         EXPECT_EQ(ours.out, peer.out) << to;
     }
-    const auto from_stdin = run_command(cli("translate --to brf -"), "Hello\n");
+    const auto from_stdin = run_captured(cli({"translate", "--to", "brf", "-"}), "Hello\n");
     EXPECT_EQ(from_stdin.out, ",HELLO\n");
 }
 
 TEST(CliTranslate, InvalidUtf8IsBadInputWithFileAndLine) {
     const auto input = temp_file("bad.txt", "fine\nbroken \xFF here\n");
-    const auto r = run_command(cli("translate '" + input.string() + "'"));
+    const auto r = run_captured(cli({"translate", input.string()}));
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find(input.string() + ":2:"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("invalid UTF-8"), std::string::npos) << r.err;
 }
 
 TEST(CliTranslate, UnknownTableIsBadInput) {
-    const auto r = run_command(cli("translate --table xx-nonexistent.ctb -"), "a\n");
+    const auto r = run_captured(cli({"translate", "--table", "xx-nonexistent.ctb", "-"}), "a\n");
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find("xx-nonexistent.ctb"), std::string::npos) << r.err;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
-    EXPECT_EQ(run_command(cli("")).exit_code, 2);
-    EXPECT_EQ(run_command(cli("layout --cells 1 x.md --to brf")).exit_code, 2);
-    EXPECT_EQ(run_command(cli("translate --to docx -")).exit_code, 2);
-    EXPECT_EQ(run_command(cli("layout --preset nope --to brf " TACTUS_RESOURCES_DIR "/samples/welcome.md")).exit_code, 2);
+    EXPECT_EQ(run_captured(cli({})).exit_code, 2);
+    EXPECT_EQ(run_captured(cli({"layout", "--cells", "1", "x.md", "--to", "brf"})).exit_code, 2);
+    EXPECT_EQ(run_captured(cli({"translate", "--to", "docx", "-"})).exit_code, 2);
+    EXPECT_EQ(run_captured(cli({"layout", "--preset", "nope", "--to", "brf", kWelcome})).exit_code, 2);
 }
 
 TEST(Cli, EveryCommandHasHelp) {
     for (const char* c : {"", "translate", "layout", "tables"}) {
-        const auto r = run_command(cli(std::string(c) + " --help"));
+        const auto r = run_captured(*c ? cli({c, "--help"}) : cli({"--help"}));
         EXPECT_EQ(r.exit_code, 0) << c;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << c;
     }
@@ -75,19 +79,17 @@ TEST(Cli, EveryCommandHasHelp) {
 TEST(CliLayout, WritesAtomicallyAndSummarises) {
     const auto out = fs::temp_directory_path() / "tactus-cli-test-out.brf";
     fs::remove(out);
-    const auto r = run_command(cli("layout --interpoint --to brf -o '" + out.string() + "' " TACTUS_RESOURCES_DIR
-                                   "/samples/welcome.md"));
+    const auto r = run_captured(cli({"layout", "--interpoint", "--to", "brf", "-o", out.string(), kWelcome}));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(out));
     EXPECT_NE(r.err.find("interpoint"), std::string::npos);
-    const auto s = run_command(cli("layout --summary " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto s = run_captured(cli({"layout", "--summary", kWelcome}));
     EXPECT_EQ(s.exit_code, 0);
     EXPECT_NE(s.out.find("27 cells x 24 lines"), std::string::npos) << s.out;
 }
 
 TEST(CliLayout, CustomGeometryIsHonoured) {
-    const auto r = run_command(cli("layout --cells 40 --lines 25 --to unicode " TACTUS_RESOURCES_DIR
-                                   "/samples/welcome.md"));
+    const auto r = run_captured(cli({"layout", "--cells", "40", "--lines", "25", "--to", "unicode", kWelcome}));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::size_t longest = 0;
     std::istringstream lines(r.out);
@@ -105,10 +107,10 @@ TEST(CliLayout, CustomGeometryIsHonoured) {
 
 TEST(CliLayout, BadInputNamesTheFile) {
     const auto junk = temp_file("junk.docx", std::string("PK\x03\x04\x14\x00 truncated zip", 20));
-    const auto r = run_command(cli("layout --to brf '" + junk.string() + "'"));
+    const auto r = run_captured(cli({"layout", "--to", "brf", junk.string()}));
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find(junk.string()), std::string::npos) << r.err;
-    const auto missing = run_command(cli("layout --to brf /nonexistent/file.txt"));
+    const auto missing = run_captured(cli({"layout", "--to", "brf", "/nonexistent/file.txt"}));
     EXPECT_EQ(missing.exit_code, 3);
     EXPECT_NE(missing.err.find("/nonexistent/file.txt"), std::string::npos) << missing.err;
 }

@@ -18,6 +18,7 @@
 
 #include "controller/sim_controller.hpp"
 #include "plan/plan_file.hpp"
+#include "../common/process.hpp"
 #include "../common/test_plans.hpp"
 
 namespace tactus {
@@ -25,49 +26,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Proc {
-    pid_t pid = -1;
-    int out = -1;  // its stdout
-};
+using test::Process;
 
-Proc spawn(const std::vector<std::string>& argv, bool capture_stdout, bool merge_stderr = false) {
-    int fds[2];
-    if (pipe(fds) != 0) return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        if (capture_stdout) dup2(fds[1], STDOUT_FILENO);
-        if (merge_stderr) dup2(fds[1], STDERR_FILENO);
-        close(fds[0]);
-        close(fds[1]);
-        std::vector<char*> args;
-        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execv(args[0], args.data());
-        _exit(127);
-    }
-    close(fds[1]);
-    return {pid, fds[0]};
-}
-
-std::string read_line(int fd) {
-    std::string line;
-    char c;
-    while (read(fd, &c, 1) == 1 && c != '\n') line.push_back(c);
-    return line;
-}
-
-std::string read_all(int fd) {
-    std::string s;
-    char buf[4096];
-    ssize_t n;
-    while ((n = read(fd, buf, sizeof buf)) > 0) s.append(buf, static_cast<std::size_t>(n));
-    return s;
-}
-
-int wait_exit(pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+// tactus-cli's stdout and stderr together, as a user at a terminal sees them.
+Process cli_merged(const std::vector<std::string>& args) {
+    return Process(args, Process::Options{{}, true, {}});
 }
 
 struct Result {
@@ -91,19 +54,16 @@ protected:
         std::vector<std::string> sim{TACTUS_CLI, "sim", "--pty", "--baud", baud, "--time-scale", "40",
                                      "--strike-log", (dir_ / "strikes.jsonl").string()};
         sim.insert(sim.end(), sim_faults.begin(), sim_faults.end());
-        const Proc server = spawn(sim, true);
-        const std::string pty = read_line(server.out);
+        Process server(sim);
+        const std::string pty = server.read_line(std::chrono::seconds(30));
         EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
-        const Proc client = spawn({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(),
-                                   "--device", "pty:" + pty + "?baud=" + baud},
-                                  true);
+        Process client({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device",
+                        "pty:" + pty + "?baud=" + baud});
         Result r;
-        r.output = read_all(client.out);
-        r.exit_code = wait_exit(client.pid);
-        kill(server.pid, SIGTERM);
-        wait_exit(server.pid);
-        close(server.out);
-        close(client.out);
+        r.output = client.read_all();
+        r.exit_code = client.wait();
+        server.signal(SIGTERM);
+        server.wait();
         std::ifstream in(dir_ / "strikes.jsonl");
         std::string line;
         while (std::getline(in, line)) {
@@ -160,28 +120,35 @@ TEST_F(PtyEndToEnd, PowerLossFailsWithResumeHint) {
 TEST_F(PtyEndToEnd, AbsentDeviceGivesTheDocumentedError) {
     for (const std::string dev : {"pty:/dev/pts/999999", "serial:/dev/ttyTACTUS-NONE", "lpt:/dev/parport9",
                                   "hid:10c4:ea80:NOPE"}) {
-        const Proc p = spawn({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", dev},
-                             true, true);
-        const auto out = read_all(p.out);
-        close(p.out);
-        EXPECT_EQ(wait_exit(p.pid), 4) << dev << ": " << out;  // exit_device
+        Process p = cli_merged({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", dev});
+        const auto out = p.read_all();
+        EXPECT_EQ(p.wait(), 4) << dev << ": " << out;  // exit_device
         EXPECT_NE(out.find("no such device"), std::string::npos) << dev << ": " << out;
     }
 }
 
+// The error's kind picks the exit code: a device string that cannot be used is
+// a usage error (2), whether the transport or the simulator finds the fault.
+TEST_F(PtyEndToEnd, MalformedDeviceIsAUsageError) {
+    for (const std::string dev : {"usb:/dev/x", "serial:", "serial:/dev/x?baud=12", "sim?noise=-1",
+                                  "sim?colour=red", "lpt:/dev/parport0?baud=9600"}) {
+        Process p = cli_merged({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", dev});
+        const auto out = p.read_all();
+        EXPECT_EQ(p.wait(), 2) << dev << ": " << out;  // exit_usage
+    }
+}
+
 TEST_F(PtyEndToEnd, DryRunPrintsTheByteCount) {
-    const Proc p = spawn({TACTUS_CLI, "emboss", "--dry-run", "--plan", (dir_ / "plan.json").string()}, true);
-    const auto out = read_all(p.out);
-    close(p.out);
-    EXPECT_EQ(wait_exit(p.pid), 0);
+    Process p({TACTUS_CLI, "emboss", "--dry-run", "--plan", (dir_ / "plan.json").string()});
+    const auto out = p.read_all();
+    EXPECT_EQ(p.wait(), 0);
     EXPECT_NE(out.find(" bytes of job stream in "), std::string::npos) << out;
 }
 
 TEST_F(PtyEndToEnd, EmbossOnTheInProcessSimulator) {
-    const Proc p = spawn({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim"}, true);
-    const auto out = read_all(p.out);
-    close(p.out);
-    EXPECT_EQ(wait_exit(p.pid), 0) << out;
+    Process p({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim"});
+    const auto out = p.read_all();
+    EXPECT_EQ(p.wait(), 0) << out;
     EXPECT_NE(out.find("embossed 12 passes"), std::string::npos) << out;
 }
 

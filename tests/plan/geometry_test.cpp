@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "plan/geometry.hpp"
 
 using namespace tactus::plan;
@@ -47,4 +49,81 @@ TEST(Geometry, FrontAndBackNeverShareADotRow) {
                 for (int d2 : {1, 2, 3})
                     ASSERT_NE(dot_place(p, Side::front, line, 0, dot).paper_y_mm,
                               dot_place(p, Side::back, l2, 0, d2).paper_y_mm);
+}
+
+namespace {
+
+tactus::layout::Page full_page(int lines, int cells, tactus::document::Cell c = tactus::document::Cell{0xFF}) {
+    tactus::layout::Page p;
+    p.lines.assign(static_cast<std::size_t>(lines),
+                   tactus::document::BrailleLine(static_cast<std::size_t>(cells), c));
+    return p;
+}
+
+}  // namespace
+
+TEST(Geometry, PageDotsAreDotPlaces) {
+    const auto p = tactus::profile::default_profile();
+    const auto page = full_page(2, 3, tactus::document::Cell{0x09});  // dots 1 and 4
+    for (const auto side : {Side::front, Side::back}) {
+        const auto dots = page_dots(p, page, side);
+        ASSERT_EQ(dots.size(), 2U * 3U * 2U);
+        for (const auto& d : dots) {
+            const auto want = dot_place(p, side, d.line, d.cell, d.dot);
+            EXPECT_EQ(d.place.paper_x_mm, want.paper_x_mm);
+            EXPECT_EQ(d.place.paper_y_mm, want.paper_y_mm);
+            EXPECT_TRUE(d.dot == 1 || d.dot == 4);
+        }
+    }
+}
+
+// Every dot of every cell raised on both sides, eight-dot cells: the worst case
+// for crushing, and the default offset still keeps them apart.
+TEST(Geometry, FullSheetsClearWithTheDefaultOffset) {
+    const auto p = tactus::profile::default_profile();
+    const auto page = full_page(24, 27);
+    EXPECT_TRUE(find_conflicts(p, tactus::layout::Sheet{1, &page, &page}).empty());
+    // The closest pair is one offset apart: a larger pitch (so a larger
+    // minimum separation) with the same offset makes them collide.
+    auto wide = p;
+    wide.geometry.dot_pitch_mm = 2 * std::hypot(p.geometry.back_offset_x_mm, p.geometry.back_offset_y_mm) + 0.1;
+    EXPECT_FALSE(find_conflicts(wide, tactus::layout::Sheet{1, &page, &page}).empty());
+}
+
+TEST(Geometry, ZeroOffsetPutsBackDotsOnFrontDots) {
+    auto p = tactus::profile::default_profile();
+    p.geometry.back_offset_x_mm = 0;
+    p.geometry.back_offset_y_mm = 0;
+    // The mirrored grid coincides with the front grid when 2 * margin + k * cell
+    // pitch + dot pitch equals the paper width: choose the paper to make it so.
+    p.paper.width_mm = 2 * p.paper.margin_left_mm + 10 * p.geometry.cell_pitch_mm + p.geometry.dot_pitch_mm;
+    const auto ones = full_page(1, 11, tactus::document::Cell{0x01});
+    EXPECT_TRUE(find_conflicts(p, tactus::layout::Sheet{1, &ones, &ones}).empty());  // 2.5 mm apart at best
+    const auto fours = full_page(1, 11, tactus::document::Cell{0x08});
+    const auto c = find_conflicts(p, tactus::layout::Sheet{1, &ones, &fours});
+    ASSERT_EQ(c.size(), 11U);  // each back dot 4 on a front dot 1
+    for (const auto& x : c) {
+        EXPECT_LT(x.distance_mm, 1e-9);
+        EXPECT_EQ(x.front.dot, 1);
+        EXPECT_EQ(x.back.dot, 4);
+        EXPECT_EQ(x.front.cell, 10 - x.back.cell);  // mirrored
+    }
+}
+
+// cell_at inverts dot_place on both sides and every mirror.
+TEST(Geometry, CellAtFindsTheCellOfEveryDot) {
+    for (const auto mirror : {tactus::profile::BackMirror::x, tactus::profile::BackMirror::y,
+                              tactus::profile::BackMirror::none}) {
+        auto p = tactus::profile::default_profile();
+        p.geometry.back_mirror = mirror;
+        for (const auto side : {Side::front, Side::back})
+            for (int line : {0, 7, 23})
+                for (int cell : {0, 13, 26})
+                    for (int dot = 1; dot <= 8; ++dot) {
+                        const auto d = dot_place(p, side, line, cell, dot);
+                        const auto at = cell_at(p, side, d.paper_x_mm, d.paper_y_mm);
+                        EXPECT_EQ(at.line, line) << "dot " << dot;
+                        EXPECT_EQ(at.cell, cell) << "dot " << dot;
+                    }
+    }
 }

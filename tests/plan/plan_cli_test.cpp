@@ -1,33 +1,34 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // End-to-end: the built tactus-cli's plan, profile and vibration commands.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "../common/process.hpp"
 #include "common/file_io.hpp"
 
 namespace {
 
 struct Run {
     int code = -1;
-    std::string out;
+    std::string out;  // stdout and stderr, as a terminal shows them
 };
 
+// tactus-cli with the words of `args` (no word here contains a space).
 Run run(const std::string& args) {
+    std::vector<std::string> argv{TACTUS_CLI};
+    std::istringstream words(args);
+    for (std::string w; words >> w;) argv.push_back(w);
+    tactus::test::Process p(argv, tactus::test::Process::Options{{}, true, {}});
     Run r;
-    const std::string cmd = std::string(TACTUS_CLI) + " " + args + " 2>&1";
-    FILE* f = ::popen(cmd.c_str(), "r");
-    if (!f) return r;
-    char buf[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) r.out.append(buf, n);
-    const int status = ::pclose(f);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = p.read_all();
+    r.code = p.wait();
     return r;
 }
 
@@ -103,4 +104,25 @@ TEST(PlanCli, VibrationReportsTargetsAndResponse) {
     EXPECT_LT(j["step_response"]["overshoot_pct"].get<double>(), 2.0);
     const auto text = run("vibration");
     EXPECT_NE(text.out.find("pass"), std::string::npos);
+}
+
+// The CLI warns about front/back dots that crush each other, with the rule the
+// preview uses (plan::find_conflicts), and stays quiet when there are none.
+TEST(PlanCli, WarnsAboutFrontAndBackDotsThatCrushEachOther) {
+    const std::string sample = std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md";
+    const auto quiet = run("plan " + sample);
+    ASSERT_EQ(quiet.code, 0) << quiet.out;
+    EXPECT_EQ(quiet.out.find("front and back dots closer than"), std::string::npos) << quiet.out;
+
+    auto prof = nlohmann::json::parse(run("profile default").out);
+    prof["geometry"]["back_offset_x_mm"] = 0.0;
+    prof["geometry"]["back_offset_y_mm"] = 0.0;
+    prof["geometry"]["back_mirror"] = "none";
+    const auto path = temp("no-offset.json");
+    ASSERT_TRUE(tactus::write_file_atomic(path, prof.dump()));
+    const auto loud = run("plan --profile " + path.string() + " " + sample);
+    EXPECT_EQ(loud.code, 0) << loud.out;
+    EXPECT_NE(loud.out.find("warning: sheet 1: "), std::string::npos) << loud.out;
+    EXPECT_NE(loud.out.find("front and back dots closer than 1.25 mm"), std::string::npos) << loud.out;
+    std::filesystem::remove(path);
 }

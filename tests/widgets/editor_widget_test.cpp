@@ -31,7 +31,7 @@ class EditorWidgetTest : public QObject {
 private Q_SLOTS:
     void init() {
         editor = std::make_unique<EditorWidget>();
-        auto layout = LiveLayout::create("en-ueb-g2.ctb", {});
+        auto layout = edit::LiveLayout::create("en-ueb-g2.ctb", {});
         QVERIFY(layout.has_value());
         layout->reset(test::sample_lines("welcome.md"));
         editor->adopt(std::move(*layout));
@@ -161,7 +161,7 @@ private Q_SLOTS:
         QCOMPARE(editor->braille_pane()->document()->blockCount(), print->document()->blockCount());
         std::vector<std::string> all;
         for (auto b = print->document()->begin(); b.isValid(); b = b.next()) all.push_back(b.text().toStdString());
-        auto fresh = LiveLayout::create("en-ueb-g2.ctb", {});
+        auto fresh = edit::LiveLayout::create("en-ueb-g2.ctb", {});
         fresh->reset(all);
         QVERIFY(fresh->paged().pages == editor->layout().paged().pages);
     }

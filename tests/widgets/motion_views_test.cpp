@@ -12,7 +12,7 @@
 #include "announcer.hpp"
 #include "editor_widget.hpp"
 #include "gui_test_support.hpp"
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 #include "main_window.hpp"
 #include "motion_model.hpp"
 #include "motion_view.hpp"
@@ -28,7 +28,7 @@ using namespace tactus::gui;
 namespace {
 
 layout::PagedDocument welcome_pages() {
-    auto l = LiveLayout::create("en-ueb-g2.ctb", {});
+    auto l = edit::LiveLayout::create("en-ueb-g2.ctb", {});
     l->reset(test::sample_lines("welcome.md"));
     return l->paged();
 }
@@ -144,7 +144,7 @@ private Q_SLOTS:
         QCOMPARE(editor->profile().carriage.v_max_mm_s, 200.0);
         auto* offset = editor->field(QStringLiteral("geometry.back_offset_x_mm"));
         offset->setValue(0.5);
-        QCOMPARE(w.preview_panel()->preview()->geometry().back_offset_x_mm, 0.5);
+        QCOMPARE(w.preview_panel()->preview()->geometry().profile.geometry.back_offset_x_mm, 0.5);
         const auto plan = w.plan_now();
         QCOMPARE(plan->profile.carriage.v_max_mm_s, 200.0);
         QCOMPARE(plan->profile.geometry.back_offset_x_mm, 0.5);

@@ -9,7 +9,7 @@
 
 #include "embosser.hpp"
 #include "gui_test_support.hpp"
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 #include "printer_panel.hpp"
 
 using namespace tactus;
@@ -18,7 +18,7 @@ using namespace tactus::gui;
 namespace {
 
 layout::PagedDocument book(int paragraphs) {
-    auto l = LiveLayout::create("en-ueb-g2.ctb", {});
+    auto l = edit::LiveLayout::create("en-ueb-g2.ctb", {});
     l->reset(test::synthetic_book(paragraphs));
     return l->paged();
 }

@@ -62,7 +62,7 @@ private Q_SLOTS:
 
     void chords_space_and_backspace_in_the_braille_pane() {
         EditorWidget editor;
-        auto layout = LiveLayout::create("en-ueb-g1.ctb", {});
+        auto layout = edit::LiveLayout::create("en-ueb-g1.ctb", {});
         QVERIFY(layout.has_value());
         layout->reset({""});
         editor.adopt(std::move(*layout));

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "cursor_map.hpp"
+#include "edit/cursor_map.hpp"
 
 #include <algorithm>
 #include <vector>
 
-namespace tactus::gui {
+namespace tactus::edit {
 namespace {
 
 struct Word {
@@ -62,4 +62,4 @@ std::size_t braille_to_print(const document::BrailleLine& cells, std::size_t cel
     return map(bw, cells.size(), cell, pw, content.size());
 }
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

@@ -19,7 +19,7 @@
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 
 // Where a cell of the document sits on paper.
 struct PagePosition {
@@ -103,4 +103,4 @@ private:
     std::unordered_map<int, document::BrailleLine> numbers_;
 };
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "editor_lines.hpp"
+#include "edit/editor_lines.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,7 +7,7 @@
 #include "common/utf8.hpp"
 #include "import/import.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 namespace {
 
 constexpr std::string_view kInlineSpecials = "\\*_[]<>`&~";
@@ -251,4 +251,4 @@ std::string editor_line_content(std::string_view line) {
     return block->text();
 }
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

@@ -9,10 +9,10 @@
 
 #include "document/cell.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 
 // `content` is the line as the reader sees it (without Markdown marks).
 std::size_t print_to_braille(std::u32string_view content, std::size_t column, const document::BrailleLine& cells);
 std::size_t braille_to_print(const document::BrailleLine& cells, std::size_t cell, std::u32string_view content);
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 
 #include <algorithm>
 
 #include "common/utf8.hpp"
-#include "editor_lines.hpp"
+#include "edit/editor_lines.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/paginator.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 namespace {
 
 document::BrailleLine cells_of_unicode(const std::string& utf8) {
@@ -24,11 +24,6 @@ std::string next_label(const std::string& label) {
     if (label.empty() || !std::ranges::all_of(label, [](char c) { return c >= '0' && c <= '9'; }))
         return {};
     return std::to_string(std::stol(label) + 1);
-}
-
-// Mirrors Paginator::numbered: interpoint backs carry no page number.
-bool numbered_page(const layout::LayoutOptions& o, std::size_t page) {
-    return o.page_numbers != layout::PageNumberPosition::none && (!o.geometry.interpoint || page % 2 == 0);
 }
 
 }  // namespace
@@ -154,16 +149,9 @@ Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     return {};
 }
 
-int LiveLayout::body_top(std::size_t page) const {
-    const bool on_top = numbered_page(options_, page) &&
-                        options_.page_numbers == layout::PageNumberPosition::top_right;
-    return options_.top_margin + (on_top ? 1 : 0);
-}
+int LiveLayout::body_top(std::size_t page) const { return layout::body_top(options_, page); }
 
-int LiveLayout::body_capacity(std::size_t page) const {
-    const int lines = options_.geometry.lines_per_page - options_.top_margin - options_.bottom_margin;
-    return numbered_page(options_, page) ? lines - 1 : lines;
-}
+int LiveLayout::body_capacity(std::size_t page) const { return layout::body_capacity(options_, page); }
 
 RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged_from) {
     // Restart point: an entry before the edit that starts on a sheet front, moved
@@ -388,4 +376,4 @@ std::string LiveLayout::back_translate(const document::BrailleLine& cells) const
     return text ? utf32_to_utf8(*text) : std::string{};
 }
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

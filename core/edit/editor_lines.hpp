@@ -12,7 +12,7 @@
 
 #include "document/document.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 
 // The block a line stands for; empty for a blank line. A page break without a
 // label gets an empty label (the caller numbers it from the previous one).
@@ -29,4 +29,4 @@ std::string editor_line_content(std::string_view utf8);
 // True when the line is nothing but Unicode braille cells (U+2800..U+28FF).
 bool is_braille_line(std::string_view utf8);
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit
