@@ -1,0 +1,417 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+#include "link.h"
+
+#include "crc16.h"
+#include "decoder.h"
+#include "exec.h"
+
+FW_IDATA uint8_t fw_buf[FW_BUF_CAP];
+uint8_t fw_ops_head, fw_ops_done, fw_ops_end;
+
+uint8_t fw_state, fw_faults, fw_strikes_in_pass, fw_skip, fw_flags;
+uint16_t fw_job_id, fw_executed, fw_pass_index, fw_sheet, fw_underruns;
+int16_t fw_carriage, fw_feed;
+uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle, cfg_keepalive;
+uint8_t fw_pause_req;
+
+/* Session: lost on any reset (the host opens a new one). */
+static uint8_t session, expected;
+static uint16_t nonce;
+static uint8_t reported; /* ring bytes free as last told to the host */
+
+/* The job-stream check runs over DATA payloads as they are copied in, across
+ * frame boundaries (a pass record may span frames). */
+enum {
+    VS_OP,
+    VS_FIXED,
+    VS_FLAGS,
+    VS_SKIP,
+    VS_FEED,
+    VS_FEED2,
+    VS_FIRST,
+    VS_FIRST2,
+    VS_N,
+    VS_ENTRY,
+    VS_ENTRY2,
+    VS_CHECK,
+    VS_CHECK2
+};
+struct vstate {
+    uint8_t st, need, n, flags, hi;
+    uint16_t crc;
+};
+static struct vstate vs;
+
+uint16_t pass_crc_update(uint16_t c, uint8_t b) {
+    uint8_t i;
+    c ^= (uint16_t)((uint16_t)b << 8);
+    for (i = 0; i < 8; ++i) {
+        if (c & 0x8000) c = (uint16_t)((uint16_t)(c << 1) ^ 0x8BB7U);
+        else c = (uint16_t)(c << 1);
+    }
+    return c;
+}
+
+uint8_t fw_ring_free(void) {
+    uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
+    return used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
+}
+
+void fw_flush(void) {
+    fw_ops_head = fw_ops_end;
+    fw_ops_done = fw_ops_end;
+    vs.st = VS_OP;
+}
+
+void fw_compact(void) {
+    uint8_t shift = fw_ops_head, n, i;
+    if (shift == 0) return;
+    /* Ops and any partly received frame move together. */
+    n = (uint8_t)(fw_ops_end - shift + fw_rx_fill());
+    for (i = 0; i < n; ++i) fw_buf[i] = fw_buf[i + shift];
+    fw_ops_head = 0;
+    fw_ops_done = (uint8_t)(fw_ops_done - shift);
+    fw_ops_end = (uint8_t)(fw_ops_end - shift);
+}
+
+void fw_link_init(uint8_t warm) {
+    (void)warm;
+    session = 0;
+    expected = 0;
+    nonce = 0;
+    fw_ops_head = fw_ops_done = fw_ops_end = 0;
+    vs.st = VS_OP;
+    fw_rx_reset();
+    reported = fw_ring_free();
+}
+
+/* --- replies */
+
+static uint16_t tx_crc;
+static void tx(uint8_t b) {
+    tx_crc = crc16_update(tx_crc, b);
+    fw_tx_byte(b);
+}
+static void tx16(uint16_t v) {
+    tx((uint8_t)(v >> 8));
+    tx((uint8_t)v);
+}
+static void reply_begin(uint8_t type, uint8_t len) {
+    fw_tx_byte(FW_SYNC);
+    tx_crc = 0xFFFF;
+    tx(len);
+    tx(expected); /* every controller frame carries the next SEQ it expects */
+    tx(type);
+}
+static void reply_end(void) {
+    uint16_t c = tx_crc;
+    fw_tx_byte((uint8_t)(c >> 8));
+    fw_tx_byte((uint8_t)c);
+    reported = fw_ring_free();
+}
+static uint8_t flags_now(void) {
+    return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
+}
+static void ack_body(void) {
+    tx(fw_ring_free());
+    tx16(fw_executed);
+    tx(fw_state);
+    tx(fw_faults);
+    tx(fw_strikes_in_pass);
+    tx16(fw_job_id);
+}
+
+void fw_ack(void) {
+    if (!session) return;
+    reply_begin(T_ACK, 8);
+    ack_body();
+    reply_end();
+}
+
+static void nak(uint8_t why) {
+    reply_begin(T_NAK, 9);
+    tx(why);
+    ack_body();
+    reply_end();
+}
+
+static void status_reply(void) {
+    reply_begin(T_STATUS_REPLY, 25);
+    ack_body();
+    tx(flags_now());
+    tx16(fw_job_id);
+    tx16(fw_sheet);
+    tx16(fw_pass_index);
+    tx16(fw_carriage < 0 ? 0xFFFF : 0); /* i32, sign-extended from the 16-bit counter */
+    tx16((uint16_t)fw_carriage);
+    tx16(fw_feed < 0 ? 0xFFFF : 0);
+    tx16((uint16_t)fw_feed);
+    tx16(fw_underruns);
+    reply_end();
+}
+
+static void hello_reply(void) {
+    uint8_t i;
+    reply_begin(T_HELLO_REPLY, 13);
+    tx(FW_PROTOCOL);
+    tx(FW_VERSION_MAJOR);
+    tx(FW_VERSION_MINOR);
+    tx(CAP_INTERPOINT | CAP_LPT | CAP_UART | CAP_WARM_RESTART);
+    tx(FW_RING_BYTES);
+    tx(FW_MAX_DATA);
+    tx(FW_WINDOW_FRAMES);
+    /* Which ramp table and grid the firmware was built with: the host refuses a
+     * profile whose table differs (tools/gen-ramp.py). */
+    for (i = 0; i < 4; ++i) tx(fw_table_id[i]);
+    tx(fw_table_id[0] ^ fw_table_id[1]); /* reserved: keeps the payload length stable */
+    tx(0);
+    reply_end();
+}
+
+void fw_report_room(void) {
+    uint8_t free;
+    if (!session) return;
+    free = fw_ring_free();
+    if ((uint16_t)free >= (uint16_t)reported + FW_MAX_DATA ||
+        (free >= FW_MAX_DATA && reported < FW_MAX_DATA))
+        fw_ack();
+}
+
+void fw_starved(void) {
+    if (session && fw_ring_free() > reported) fw_ack();
+}
+
+/* --- the job-stream check */
+
+/* Runs the check over one payload. Returns 0 if every byte fits the grammar,
+ * 1 for a malformed stream (NAK), 2 when a pass check fails (the stream is
+ * corrupt: fault). *done_at receives the payload offset just past the last
+ * op completed in it (0 if none). */
+static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len, uint8_t *done_at) {
+    uint8_t i, b;
+    *done_at = 0;
+    for (i = 0; i < len; ++i) {
+        b = p[i];
+        if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) vs.crc = pass_crc_update(vs.crc, b);
+        switch (vs.st) {
+            case VS_OP:
+                switch (b) {
+                    case OP_JOB_END:
+                    case OP_SHEET_END:
+                    case OP_HOME: *done_at = (uint8_t)(i + 1); continue;
+                    case OP_JOB_BEGIN: vs.need = 4; vs.st = VS_FIXED; continue;
+                    case OP_SHEET_BEGIN:
+                    case OP_SEEK_CARRIAGE:
+                    case OP_SEEK_FEED: vs.need = 2; vs.st = VS_FIXED; continue;
+                    case OP_PASS:
+                        vs.crc = pass_crc_update(0xFFFF, b);
+                        vs.st = VS_FLAGS;
+                        continue;
+                    default: return 1;
+                }
+            case VS_FIXED:
+                if (--vs.need == 0) {
+                    vs.st = VS_OP;
+                    *done_at = (uint8_t)(i + 1);
+                }
+                continue;
+            case VS_FLAGS:
+                if (b & (uint8_t)~PF_ALL) return 1;
+                vs.flags = b;
+                vs.st = (b & PF_SKIP) ? VS_SKIP : VS_FEED;
+                continue;
+            case VS_SKIP: vs.hi = b; vs.st = VS_FEED; continue; /* skip: checked against n */
+            case VS_FEED: vs.st = (b & 0x80) ? VS_FEED2 : VS_FIRST; continue;
+            case VS_FEED2: vs.st = VS_FIRST; continue;
+            case VS_FIRST: vs.st = (b & 0x80) ? VS_FIRST2 : VS_N; continue;
+            case VS_FIRST2: vs.st = VS_N; continue;
+            case VS_N:
+                if (b > PASS_MAX_ENTRIES) return 1;
+                if ((vs.flags & PF_SKIP) && vs.hi > b) return 1;
+                vs.n = b;
+                vs.st = b ? VS_ENTRY : VS_CHECK;
+                continue;
+            case VS_ENTRY:
+                if (b & E_EXT) {
+                    vs.st = VS_ENTRY2;
+                    continue;
+                }
+                /* fall through */
+            case VS_ENTRY2:
+                vs.st = --vs.n ? VS_ENTRY : VS_CHECK;
+                continue;
+            case VS_CHECK: vs.hi = b; vs.st = VS_CHECK2; continue;
+            case VS_CHECK2:
+                if ((uint16_t)(((uint16_t)vs.hi << 8) | b) != vs.crc) return 2;
+                vs.st = VS_OP;
+                *done_at = (uint8_t)(i + 1);
+                continue;
+            default: return 1;
+        }
+    }
+    return 0;
+}
+
+/* --- frames */
+
+static void accept(void) { ++expected; }
+
+static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
+    uint16_t n;
+    if (len != 3 || p[2] != FW_PROTOCOL) {
+        nak(NAK_BAD_PAYLOAD);
+        return;
+    }
+    n = (uint16_t)(((uint16_t)p[0] << 8) | p[1]);
+    /* A repeated HELLO of the same session is answered but changes nothing: a
+     * stale duplicate must never rewind the sequence. */
+    if (!session || n != nonce) {
+        /* A new session: the host re-sends the job from the progress it is
+         * told, so whatever is buffered is dropped and the job holds still. */
+        fw_flush();
+        if (fw_flags & FL_JOB_ACTIVE) {
+            if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
+                if (exec_busy()) fw_pause_req = 1;
+                else fw_state = ST_PAUSED;
+            }
+        }
+        session = 1;
+        nonce = n;
+        expected = (uint8_t)(seq + 1);
+        fw_faults &= (uint8_t) ~(F_POWER_ON | F_WARM_RESET);
+        if (fw_state == ST_FAULT && fw_faults == 0)
+            fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_PAUSED : ST_IDLE;
+    }
+    hello_reply();
+}
+
+static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
+    struct vstate saved = vs;
+    uint8_t done_at, r;
+    if (len == 0 || len > FW_MAX_DATA) {
+        nak(NAK_BAD_PAYLOAD);
+        return;
+    }
+    if (len > fw_ring_free()) {
+        nak(NAK_NO_SPACE);
+        return;
+    }
+    r = check_ops(frame + 3, len, &done_at);
+    if (r == 1) {
+        vs = saved;
+        nak(NAK_BAD_PAYLOAD);
+        return;
+    }
+    accept();
+    if (r == 2) {
+        /* The frame checks passed but the pass check did not: something the
+         * frame CRC missed. Nothing of this pass may run; the host restarts
+         * from the progress it is told. */
+        fw_flush();
+        fw_faults |= F_STREAM;
+        fw_state = ST_FAULT;
+        if (exec_busy()) exec_abort();
+        fw_ack();
+        return;
+    }
+    /* The payload already lies at the ring's end, behind its 3 header bytes. */
+    {
+        uint8_t i;
+        FW_IDATA uint8_t *src = frame + 3;
+        for (i = 0; i < len; ++i) frame[i] = src[i];
+    }
+    if (done_at) fw_ops_done = (uint8_t)(fw_ops_end + done_at);
+    fw_ops_end = (uint8_t)(fw_ops_end + len);
+    fw_ack();
+}
+
+static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
+    uint16_t v[5];
+    uint8_t i;
+    if (len != 10) return 0;
+    for (i = 0; i < 5; ++i) v[i] = (uint16_t)(((uint16_t)p[2 * i] << 8) | p[2 * i + 1]);
+    /* A homing interval below what the step interrupt can keep up with, or a
+     * hammer pulse of zero, would silently misbehave: refuse it. */
+    if (v[0] == 0 || v[1] < 64 || v[2] == 0) return 0;
+    cfg_travel = v[0];
+    cfg_home_iv = v[1];
+    cfg_hammer = v[2];
+    cfg_settle = v[3];
+    cfg_keepalive = v[4];
+    fw_flags |= FL_CONFIGURED;
+    return 1;
+}
+
+void fw_frame(FW_IDATA uint8_t *f) {
+    uint8_t len = f[0], seq = f[1], type = f[2], diff;
+    const FW_IDATA uint8_t *p = f + 3;
+    if (type == T_HELLO) {
+        on_hello(p, len, seq);
+        return;
+    }
+    if (!session) {
+        nak(NAK_NO_SESSION);
+        return;
+    }
+    diff = (uint8_t)(seq - expected);
+    if (diff >= 128) {
+        /* Already accepted: its ACK was lost. Acknowledge again, execute nothing. */
+        fw_ack();
+        return;
+    }
+    if (diff != 0) {
+        nak(NAK_OUT_OF_ORDER);
+        return;
+    }
+    if (type == T_DATA) {
+        on_data(f, len);
+        return;
+    }
+    if (type < T_CONFIGURE || type > T_KEEPALIVE) {
+        nak(NAK_UNKNOWN_TYPE);
+        return;
+    }
+    if (type == T_CONFIGURE) {
+        if (!on_configure(p, len)) {
+            nak(NAK_BAD_PAYLOAD);
+            return;
+        }
+        accept();
+        fw_ack();
+        return;
+    }
+    if (len != 0) {
+        nak(NAK_BAD_PAYLOAD);
+        return;
+    }
+    accept();
+    switch (type) {
+        case T_PAUSE:
+            if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
+                if (exec_busy()) fw_pause_req = 1;
+                else fw_state = ST_PAUSED;
+            }
+            break;
+        case T_RESUME:
+            fw_pause_req = 0;
+            fw_faults &= (uint8_t) ~(F_HOST_TIMEOUT | F_LIMIT | F_HAMMER | F_STREAM | F_UNDERRUN);
+            if (fw_paper_present()) fw_faults &= (uint8_t)~F_PAPER_OUT;
+            if ((fw_faults & (F_PAPER_OUT | F_POWER_ON | F_WARM_RESET)) == 0 &&
+                (fw_state == ST_PAUSED || fw_state == ST_FAULT))
+                fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_RUNNING : ST_IDLE;
+            break;
+        case T_ABORT:
+            exec_abort();
+            fw_flush();
+            fw_flags &= (uint8_t) ~(FL_JOB_ACTIVE | FL_PASS_ACTIVE);
+            fw_pause_req = 0;
+            if ((fw_faults & (F_POWER_ON | F_WARM_RESET)) == 0) {
+                fw_faults = 0;
+                fw_state = ST_IDLE;
+            }
+            break;
+        case T_STATUS: status_reply(); return;
+        default: break; /* KEEPALIVE: the ACK is the point */
+    }
+    fw_ack();
+}
