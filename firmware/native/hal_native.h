@@ -10,5 +10,7 @@ extern uint8_t native_tx[4096];
 extern size_t native_tx_len;
 extern uint8_t native_paper;
 extern unsigned native_aborts;
+/* Sends every reply that is due into native_tx. */
+void native_drain(void);
 
 #endif

@@ -4,9 +4,7 @@
 #include "fw.h"
 
 /* CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF), the frame check of
- * docs/protocol.md. Byte-wise tables (512 bytes of flash) because the 8051
- * shifts one bit per instruction: about 30 cycles a byte against 152 for the
- * nibble table. */
+ * docs/protocol.md, with a 16-entry nibble table. */
 uint16_t crc16_update(uint16_t crc, uint8_t b);
 uint16_t crc16_block(const FW_IDATA uint8_t *p, uint8_t n, uint16_t crc);
 

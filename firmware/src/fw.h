@@ -12,8 +12,10 @@
 #ifdef __SDCC
 #define FW_IDATA __idata  /* indirect RAM 0x80-0xFF: the job ring lives here */
 #define FW_CODE __code    /* flash */
+#define FW_BIT __bit
 #define FW_TARGET 1
 #else
+#define FW_BIT uint8_t
 #define FW_IDATA
 #define FW_CODE const
 #define FW_TARGET 0

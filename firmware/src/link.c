@@ -9,15 +9,21 @@ FW_IDATA uint8_t fw_buf[FW_BUF_CAP];
 uint8_t fw_ops_head, fw_ops_done, fw_ops_end;
 
 uint8_t fw_state, fw_faults, fw_strikes_in_pass, fw_skip, fw_flags;
-uint16_t fw_job_id, fw_executed, fw_pass_index, fw_sheet, fw_underruns;
+uint16_t fw_job_id, fw_executed, fw_pass_index, fw_sheet;
 int16_t fw_carriage, fw_feed;
-uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle, cfg_keepalive;
+uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle;
 uint8_t fw_pause_req;
 
 /* Session: lost on any reset (the host opens a new one). */
 static uint8_t session, expected;
 static uint16_t nonce;
-static uint8_t reported; /* ring bytes free as last told to the host */
+/* Ring bytes free as last told to the host (written as the ACK goes out). */
+static volatile uint8_t reported;
+/* Replies due (set by the main loop) and the one on the line (ISR side). */
+static FW_BIT rp_ack, rp_nak, rp_status, rp_hello;
+static uint8_t rp_reason;
+static uint8_t rp_type, rp_pos, rp_len; /* ISR side */
+static uint16_t rp_crc, rp_stash;
 
 /* The job-stream check runs over DATA payloads as they are copied in, across
  * frame boundaries (a pass record may span frames). */
@@ -41,6 +47,7 @@ struct vstate {
     uint16_t crc;
 };
 static struct vstate vs;
+static uint8_t done_at; /* payload offset just past the last op completed in it */
 
 uint16_t pass_crc_update(uint16_t c, uint8_t b) {
     uint8_t i;
@@ -82,90 +89,148 @@ void fw_link_init(uint8_t warm) {
     fw_ops_head = fw_ops_done = fw_ops_end = 0;
     vs.st = VS_OP;
     fw_rx_reset();
+    rp_ack = rp_nak = rp_status = rp_hello = 0;
+    rp_pos = 0;
     reported = fw_ring_free();
 }
 
-/* --- replies */
+/* --- replies
+ *
+ * Replies are not buffered: the main loop only marks which ones are due, and
+ * the transmitter builds each byte when the UART asks for it (fw_reply_byte,
+ * from the serial interrupt), reading the state as it is then. That costs 6
+ * bytes of RAM instead of a 16-byte queue, never blocks the main loop, and
+ * merges ACKs that pile up while one is on the line (each says everything).
+ * A 16-bit field is read whole when its first byte goes out, so a reply never
+ * carries half of an old value and half of a new one. */
 
-static uint16_t tx_crc;
-static void tx(uint8_t b) {
-    tx_crc = crc16_update(tx_crc, b);
-    fw_tx_byte(b);
-}
-static void tx16(uint16_t v) {
-    tx((uint8_t)(v >> 8));
-    tx((uint8_t)v);
-}
-static void reply_begin(uint8_t type, uint8_t len) {
-    fw_tx_byte(FW_SYNC);
-    tx_crc = 0xFFFF;
-    tx(len);
-    tx(expected); /* every controller frame carries the next SEQ it expects */
-    tx(type);
-}
-static void reply_end(void) {
-    uint16_t c = tx_crc;
-    fw_tx_byte((uint8_t)(c >> 8));
-    fw_tx_byte((uint8_t)c);
-    reported = fw_ring_free();
-}
-static uint8_t flags_now(void) {
-    return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
-}
-static void ack_body(void) {
-    tx(fw_ring_free());
-    tx16(fw_executed);
-    tx(fw_state);
-    tx(fw_faults);
-    tx(fw_strikes_in_pass);
-    tx16(fw_job_id);
-}
+static void due(void) { fw_tx_kick(); }
 
 void fw_ack(void) {
     if (!session) return;
-    reply_begin(T_ACK, 8);
-    ack_body();
-    reply_end();
+    rp_ack = 1;
+    due();
 }
 
 static void nak(uint8_t why) {
-    reply_begin(T_NAK, 9);
-    tx(why);
-    ack_body();
-    reply_end();
+    rp_reason = why;
+    rp_nak = 1;
+    due();
 }
 
-static void status_reply(void) {
-    reply_begin(T_STATUS_REPLY, 25);
-    ack_body();
-    tx(flags_now());
-    tx16(fw_job_id);
-    tx16(fw_sheet);
-    tx16(fw_pass_index);
-    tx16(fw_carriage < 0 ? 0xFFFF : 0); /* i32, sign-extended from the 16-bit counter */
-    tx16((uint16_t)fw_carriage);
-    tx16(fw_feed < 0 ? 0xFFFF : 0);
-    tx16((uint16_t)fw_feed);
-    tx16(fw_underruns);
-    reply_end();
+/* Only the serial interrupt calls what follows (SDCC's functions are not
+ * reentrant: nothing here is shared with the main loop). */
+static uint8_t hi_of(uint16_t v) {
+    rp_stash = v;
+    return (uint8_t)(v >> 8);
 }
 
-static void hello_reply(void) {
+/* Byte k of the 8-byte short status every ACK, NAK and STATUS_REPLY starts with. */
+static uint8_t ack_field(uint8_t k) {
+    switch (k) {
+        case 0: {
+            uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
+            reported = used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
+            return reported;
+        }
+        case 1: return hi_of(fw_executed);
+        case 3: return fw_state;
+        case 4: return fw_faults;
+        case 5: return fw_strikes_in_pass;
+        case 6: return hi_of(fw_job_id);
+        default: return (uint8_t)rp_stash; /* 2, 7: the low byte read with the high */
+    }
+}
+
+static uint8_t payload_byte(uint8_t k) {
+    switch (rp_type) {
+        case T_NAK:
+            if (k == 0) return rp_reason;
+            return ack_field((uint8_t)(k - 1));
+        case T_STATUS_REPLY:
+            if (k < 8) return ack_field(k);
+            switch (k) {
+                case 8: return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
+                case 9: return hi_of(fw_job_id);
+                case 11: return hi_of(fw_sheet);
+                case 13: return hi_of(fw_pass_index);
+                case 15: /* i32, sign-extended from the 16-bit counters */
+                    rp_stash = (uint16_t)fw_carriage;
+                    return (rp_stash & 0x8000) ? 0xFF : 0;
+                case 19:
+                    rp_stash = (uint16_t)fw_feed;
+                    return (rp_stash & 0x8000) ? 0xFF : 0;
+                case 16:
+                case 20: return (rp_stash & 0x8000) ? 0xFF : 0;
+                case 17:
+                case 21: return (uint8_t)(rp_stash >> 8);
+                case 23:
+                case 24: return 0; /* underruns: a v3 pass runs only when whole in the ring */
+                default: return (uint8_t)rp_stash; /* 10, 12, 14, 18, 22 */
+            }
+        case T_HELLO_REPLY:
+            switch (k) {
+                case 0: return FW_PROTOCOL;
+                case 1: return FW_VERSION_MAJOR;
+                case 2: return FW_VERSION_MINOR;
+                case 3: return CAP_INTERPOINT | CAP_LPT | CAP_UART | CAP_WARM_RESTART;
+                case 4: return FW_RING_BYTES;
+                case 5: return FW_MAX_DATA;
+                case 6: return FW_WINDOW_FRAMES;
+                /* Which ramp table and grid the firmware was built with: the host
+                 * refuses a profile whose table differs (tools/gen-ramp.py). */
+                default: return k < 11 ? fw_table_id[k - 7] : 0;
+            }
+        default: return ack_field(k);
+    }
+}
+
+static uint8_t rp_crc_byte(uint8_t b) {
     uint8_t i;
-    reply_begin(T_HELLO_REPLY, 13);
-    tx(FW_PROTOCOL);
-    tx(FW_VERSION_MAJOR);
-    tx(FW_VERSION_MINOR);
-    tx(CAP_INTERPOINT | CAP_LPT | CAP_UART | CAP_WARM_RESTART);
-    tx(FW_RING_BYTES);
-    tx(FW_MAX_DATA);
-    tx(FW_WINDOW_FRAMES);
-    /* Which ramp table and grid the firmware was built with: the host refuses a
-     * profile whose table differs (tools/gen-ramp.py). */
-    for (i = 0; i < 4; ++i) tx(fw_table_id[i]);
-    tx(fw_table_id[0] ^ fw_table_id[1]); /* reserved: keeps the payload length stable */
-    tx(0);
-    reply_end();
+    rp_crc ^= (uint16_t)((uint16_t)b << 8);
+    for (i = 0; i < 8; ++i) {
+        if (rp_crc & 0x8000) rp_crc = (uint16_t)((uint16_t)(rp_crc << 1) ^ 0x1021U);
+        else rp_crc = (uint16_t)(rp_crc << 1);
+    }
+    return b;
+}
+
+int16_t fw_reply_byte(void) {
+    uint8_t k;
+    if (rp_pos == 0) {
+        /* Idle: the next reply due, most urgent first. */
+        if (rp_hello) {
+            rp_hello = 0;
+            rp_type = T_HELLO_REPLY;
+            rp_len = 13;
+        } else if (rp_nak) {
+            rp_nak = 0;
+            rp_type = T_NAK;
+            rp_len = 9;
+        } else if (rp_status) {
+            rp_status = 0;
+            rp_type = T_STATUS_REPLY;
+            rp_len = 25;
+        } else if (rp_ack) {
+            rp_ack = 0;
+            rp_type = T_ACK;
+            rp_len = 8;
+        } else {
+            return -1;
+        }
+        rp_crc = 0xFFFF;
+        rp_pos = 1;
+        return FW_SYNC;
+    }
+    k = rp_pos++;
+    if (k == 1) return rp_crc_byte(rp_len);
+    if (k == 2) return rp_crc_byte(expected); /* the next SEQ this controller expects */
+    if (k == 3) return rp_crc_byte(rp_type);
+    k = (uint8_t)(k - 4);
+    if (k < rp_len) return rp_crc_byte(payload_byte(k));
+    if (k == rp_len) return (uint8_t)(rp_crc >> 8);
+    rp_pos = 0;
+    return (uint8_t)rp_crc;
 }
 
 void fw_report_room(void) {
@@ -184,12 +249,11 @@ void fw_starved(void) {
 /* --- the job-stream check */
 
 /* Runs the check over one payload. Returns 0 if every byte fits the grammar,
- * 1 for a malformed stream (NAK), 2 when a pass check fails (the stream is
- * corrupt: fault). *done_at receives the payload offset just past the last
- * op completed in it (0 if none). */
-static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len, uint8_t *done_at) {
+ * 1 for a malformed stream, 2 when a pass check fails (the stream is
+ * corrupt). Sets done_at. */
+static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
     uint8_t i, b;
-    *done_at = 0;
+    done_at = 0;
     for (i = 0; i < len; ++i) {
         b = p[i];
         if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) vs.crc = pass_crc_update(vs.crc, b);
@@ -198,7 +262,7 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len, uint8_t *done_a
                 switch (b) {
                     case OP_JOB_END:
                     case OP_SHEET_END:
-                    case OP_HOME: *done_at = (uint8_t)(i + 1); continue;
+                    case OP_HOME: done_at = (uint8_t)(i + 1); continue;
                     case OP_JOB_BEGIN: vs.need = 4; vs.st = VS_FIXED; continue;
                     case OP_SHEET_BEGIN:
                     case OP_SEEK_CARRIAGE:
@@ -212,7 +276,7 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len, uint8_t *done_a
             case VS_FIXED:
                 if (--vs.need == 0) {
                     vs.st = VS_OP;
-                    *done_at = (uint8_t)(i + 1);
+                    done_at = (uint8_t)(i + 1);
                 }
                 continue;
             case VS_FLAGS:
@@ -244,7 +308,7 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len, uint8_t *done_a
             case VS_CHECK2:
                 if ((uint16_t)(((uint16_t)vs.hi << 8) | b) != vs.crc) return 2;
                 vs.st = VS_OP;
-                *done_at = (uint8_t)(i + 1);
+                done_at = (uint8_t)(i + 1);
                 continue;
             default: return 1;
         }
@@ -282,12 +346,12 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
         if (fw_state == ST_FAULT && fw_faults == 0)
             fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_PAUSED : ST_IDLE;
     }
-    hello_reply();
+    rp_hello = 1;
+    due();
 }
 
 static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
-    struct vstate saved = vs;
-    uint8_t done_at, r;
+    uint8_t r;
     if (len == 0 || len > FW_MAX_DATA) {
         nak(NAK_BAD_PAYLOAD);
         return;
@@ -296,24 +360,25 @@ static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
         nak(NAK_NO_SPACE);
         return;
     }
-    r = check_ops(frame + 3, len, &done_at);
-    if (r == 1) {
-        vs = saved;
-        nak(NAK_BAD_PAYLOAD);
-        return;
-    }
-    accept();
-    if (r == 2) {
-        /* The frame checks passed but the pass check did not: something the
-         * frame CRC missed. Nothing of this pass may run; the host restarts
-         * from the progress it is told. */
+    r = check_ops(frame + 3, len);
+    if (r) {
+        /* A malformed op (a host bug) or a pass whose check fails (an error
+         * the frame CRC missed): nothing of it may run. The ring is dropped
+         * and the host restarts from the progress it is told. A malformed
+         * frame is refused; a failed check is acknowledged with the fault. */
         fw_flush();
         fw_faults |= F_STREAM;
         fw_state = ST_FAULT;
         if (exec_busy()) exec_abort();
+        if (r == 1) {
+            nak(NAK_BAD_PAYLOAD);
+            return;
+        }
+        accept();
         fw_ack();
         return;
     }
+    accept();
     /* The payload already lies at the ring's end, behind its 3 header bytes. */
     {
         uint8_t i;
@@ -337,7 +402,7 @@ static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
     cfg_home_iv = v[1];
     cfg_hammer = v[2];
     cfg_settle = v[3];
-    cfg_keepalive = v[4];
+    /* v[4], the keep-alive, is accepted but not enforced yet (README, "Not done"). */
     fw_flags |= FL_CONFIGURED;
     return 1;
 }
@@ -410,7 +475,10 @@ void fw_frame(FW_IDATA uint8_t *f) {
                 fw_state = ST_IDLE;
             }
             break;
-        case T_STATUS: status_reply(); return;
+        case T_STATUS:
+            rp_status = 1;
+            due();
+            return;
         default: break; /* KEEPALIVE: the ACK is the point */
     }
     fw_ack();

@@ -17,11 +17,10 @@ extern uint8_t fw_ops_head, fw_ops_done, fw_ops_end;
 extern uint8_t fw_state, fw_faults, fw_strikes_in_pass, fw_skip;
 extern uint16_t fw_job_id, fw_executed, fw_pass_index, fw_sheet;
 extern int16_t fw_carriage, fw_feed;
-extern uint16_t fw_underruns;
 extern uint8_t fw_flags; /* FL_* except FL_PAPER, which is read from the pin */
 
 /* Configuration (CONFIGURE). */
-extern uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle, cfg_keepalive;
+extern uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle;
 
 /* Requests from the host to the executor. */
 extern uint8_t fw_pause_req;
@@ -40,8 +39,11 @@ void fw_report_room(void);
 void fw_starved(void);
 uint8_t fw_ring_free(void);
 
-/* Platform: queue one byte for the host (UART or LPT reverse channel). */
-void fw_tx_byte(uint8_t b);
+/* Platform: a reply is due; start the transmitter if it is idle. It then
+ * calls fw_reply_byte() for each byte (from the serial interrupt). */
+void fw_tx_kick(void);
+/* The next byte of the replies due, or -1 when there is none. */
+int16_t fw_reply_byte(void);
 /* Platform: whether paper is present (for the status flags). */
 uint8_t fw_paper_present(void);
 /* Platform: the generated ramp table's identity (HELLO_REPLY). */
