@@ -5,7 +5,6 @@
 
 static uint8_t rx_fill; /* bytes stored from LEN on, at fw_buf[fw_ops_end] */
 static uint8_t rx_sync; /* a SYNC was seen: collecting a candidate frame */
-uint16_t fw_crc_errors;
 
 void fw_rx_reset(void) {
     rx_fill = 0;
@@ -39,7 +38,7 @@ static void resync(uint8_t skip) {
 }
 
 /* Evaluates the stored bytes until a frame needs more of them. */
-static void scan(void) {
+static inline void scan(void) {
     for (;;) {
         FW_IDATA uint8_t *r;
         uint8_t len, room, total;
@@ -58,7 +57,6 @@ static void scan(void) {
         if (rx_fill < total) return;
         if (crc16_block(r, (uint8_t)(total - 2), 0xFFFF) !=
             (uint16_t)(((uint16_t)r[total - 2] << 8) | r[total - 1])) {
-            ++fw_crc_errors;
             resync(1);
             continue;
         }

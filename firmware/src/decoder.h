@@ -28,6 +28,5 @@ uint8_t fw_rx_busy(void);
 /* Bytes currently stored in the receive area. */
 uint8_t fw_rx_fill(void);
 
-extern uint16_t fw_crc_errors;
 
 #endif

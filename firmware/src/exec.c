@@ -54,12 +54,13 @@ static void fault(uint8_t bits) {
 
 static uint8_t at(uint8_t i) { return fw_buf[fw_ops_head + i]; }
 
-/* A carriage move of `steps` in direction `neg`, counted in the position. A
+/* A carriage move of `steps` in direction `neg` (toward home), counted in the position. A
  * reversal adds the backlash to the motor's move (the sources' rule). */
-static void carriage(uint16_t steps, uint8_t neg) {
+static __bit neg;
+static void carriage(uint16_t steps) {
     uint16_t motor = steps;
     if (steps == 0) return;
-    if ((__bit)neg != c_neg) motor += C_BACKLASH;
+    if (neg != c_neg) motor += C_BACKLASH;
     c_neg = neg;
     CDIR = !neg;
     if (neg) fw_carriage -= (int16_t)motor;
@@ -114,11 +115,13 @@ static void strike_move(uint8_t first) {
     uint16_t d;
     ham_ccv = (e & E_CONCAVE) != 0;
     if (first) {
-        carriage(p_first * C_GRID, (p_flags & PF_FIRST_NEG) != 0);
+        neg = (p_flags & PF_FIRST_NEG) != 0;
+        carriage(p_first * C_GRID);
     } else {
         d = e & E_DIST;
         if (e & E_EXT) d = (uint16_t)((d << 8) | at(1));
-        carriage(d * C_GRID, (p_flags & PF_SWEEP_NEG) != 0);
+        neg = (p_flags & PF_SWEEP_NEG) != 0;
+        carriage(d * C_GRID);
     }
     xs = X_MOVE;
 }
@@ -195,8 +198,18 @@ static void fetch(void) {
             fw_state = ST_HOMING;
             CDIR = 0;
             c_neg = 1;
-            move_home(cfg_travel + 2 * C_GRID, cfg_home_iv);
             xs = X_HOME;
+#ifdef FW_EMU
+            /* s51 has no mechanics to close the switch: the emulator build
+             * closes it at step 0, which the emulated carriage reaches after
+             * exactly fw_carriage steps (it loses none). Same rate, same pin. */
+            if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
+                move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
+            }
+            mv_limit = 1;
+#else
+            move_home(cfg_travel + 2 * C_GRID, cfg_home_iv);
+#endif
             break;
         case OP_SEEK_CARRIAGE:
         case OP_SEEK_FEED: {
@@ -247,6 +260,9 @@ void exec_poll(void) {
     switch (xs) {
         case X_FETCH: fetch(); return;
         case X_HOME:
+#ifdef FW_EMU
+            mv_limit = 1;
+#endif
             if (!mv_limit) {
                 fault(F_LIMIT); /* travelled the whole width without finding the switch */
                 return;

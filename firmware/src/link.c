@@ -22,7 +22,7 @@ static volatile uint8_t reported;
 /* Replies due (set by the main loop) and the one on the line (ISR side). */
 static FW_BIT rp_ack, rp_nak, rp_status, rp_hello;
 static uint8_t rp_reason;
-static uint8_t rp_type, rp_pos, rp_len; /* ISR side */
+static uint8_t rp_type, rp_pos; /* the reply on the line */
 static uint16_t rp_crc, rp_stash;
 
 /* The job-stream check runs over DATA payloads as they are copied in, across
@@ -43,7 +43,7 @@ enum {
     VS_CHECK2
 };
 struct vstate {
-    uint8_t st, need, n, flags, hi;
+    uint8_t st, n, flags, hi; /* n: bytes left of a fixed op, or entries left */
     uint16_t crc;
 };
 static struct vstate vs;
@@ -164,8 +164,10 @@ static uint8_t payload_byte(uint8_t k) {
                 case 20: return (rp_stash & 0x8000) ? 0xFF : 0;
                 case 17:
                 case 21: return (uint8_t)(rp_stash >> 8);
-                case 23:
-                case 24: return 0; /* underruns: a v3 pass runs only when whole in the ring */
+                case 23: return 0;
+                case 24: return fw_stack_used(); /* v2's underruns: a v3 pass runs only
+                                                    when whole in the ring, so the field
+                                                    reports the stack high-water mark */
                 default: return (uint8_t)rp_stash; /* 10, 12, 14, 18, 22 */
             }
         case T_HELLO_REPLY:
@@ -195,26 +197,31 @@ static uint8_t rp_crc_byte(uint8_t b) {
     return b;
 }
 
+static uint8_t rp_len(void) {
+    switch (rp_type) {
+        case T_HELLO_REPLY: return 13;
+        case T_NAK: return 9;
+        case T_STATUS_REPLY: return 25;
+        default: return 8;
+    }
+}
+
 int16_t fw_reply_byte(void) {
-    uint8_t k;
+    uint8_t k, len;
     if (rp_pos == 0) {
         /* Idle: the next reply due, most urgent first. */
         if (rp_hello) {
             rp_hello = 0;
             rp_type = T_HELLO_REPLY;
-            rp_len = 13;
         } else if (rp_nak) {
             rp_nak = 0;
             rp_type = T_NAK;
-            rp_len = 9;
         } else if (rp_status) {
             rp_status = 0;
             rp_type = T_STATUS_REPLY;
-            rp_len = 25;
         } else if (rp_ack) {
             rp_ack = 0;
             rp_type = T_ACK;
-            rp_len = 8;
         } else {
             return -1;
         }
@@ -223,12 +230,13 @@ int16_t fw_reply_byte(void) {
         return FW_SYNC;
     }
     k = rp_pos++;
-    if (k == 1) return rp_crc_byte(rp_len);
+    len = rp_len();
+    if (k == 1) return rp_crc_byte(len);
     if (k == 2) return rp_crc_byte(expected); /* the next SEQ this controller expects */
     if (k == 3) return rp_crc_byte(rp_type);
     k = (uint8_t)(k - 4);
-    if (k < rp_len) return rp_crc_byte(payload_byte(k));
-    if (k == rp_len) return (uint8_t)(rp_crc >> 8);
+    if (k < len) return rp_crc_byte(payload_byte(k));
+    if (k == len) return (uint8_t)(rp_crc >> 8);
     rp_pos = 0;
     return (uint8_t)rp_crc;
 }
@@ -256,25 +264,33 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
     done_at = 0;
     for (i = 0; i < len; ++i) {
         b = p[i];
-        if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) vs.crc = pass_crc_update(vs.crc, b);
+        if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) {
+            /* pass_crc_update, inline: the stack has no level to spare */
+            uint8_t k;
+            vs.crc ^= (uint16_t)((uint16_t)b << 8);
+            for (k = 0; k < 8; ++k) {
+                if (vs.crc & 0x8000) vs.crc = (uint16_t)((uint16_t)(vs.crc << 1) ^ 0x8BB7U);
+                else vs.crc = (uint16_t)(vs.crc << 1);
+            }
+        }
         switch (vs.st) {
             case VS_OP:
                 switch (b) {
                     case OP_JOB_END:
                     case OP_SHEET_END:
                     case OP_HOME: done_at = (uint8_t)(i + 1); continue;
-                    case OP_JOB_BEGIN: vs.need = 4; vs.st = VS_FIXED; continue;
+                    case OP_JOB_BEGIN: vs.n = 4; vs.st = VS_FIXED; continue;
                     case OP_SHEET_BEGIN:
                     case OP_SEEK_CARRIAGE:
-                    case OP_SEEK_FEED: vs.need = 2; vs.st = VS_FIXED; continue;
+                    case OP_SEEK_FEED: vs.n = 2; vs.st = VS_FIXED; continue;
                     case OP_PASS:
-                        vs.crc = pass_crc_update(0xFFFF, b);
+                        vs.crc = 0x4C7B; /* pass_crc_update(0xFFFF, OP_PASS), precomputed */
                         vs.st = VS_FLAGS;
                         continue;
                     default: return 1;
                 }
             case VS_FIXED:
-                if (--vs.need == 0) {
+                if (--vs.n == 0) {
                     vs.st = VS_OP;
                     done_at = (uint8_t)(i + 1);
                 }

@@ -17,7 +17,9 @@ extern uint8_t fw_ops_head, fw_ops_done, fw_ops_end;
 extern uint8_t fw_state, fw_faults, fw_strikes_in_pass, fw_skip;
 extern uint16_t fw_job_id, fw_executed, fw_pass_index, fw_sheet;
 extern int16_t fw_carriage, fw_feed;
-extern uint8_t fw_flags; /* FL_* except FL_PAPER, which is read from the pin */
+extern uint8_t fw_flags;
+/* Bytes of the stack ever used since boot (main.c). */
+uint8_t fw_stack_used(void); /* FL_* except FL_PAPER, which is read from the pin */
 
 /* Configuration (CONFIGURE). */
 extern uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle;

@@ -19,7 +19,7 @@ void exec_poll(void);
  * signature tells a reset (progress in RAM is exact) from a power-up. */
 #define SIG0 0x54 /* 'T' */
 #define SIG1 0xC5
-static __idata uint8_t sig[2];
+static __data uint8_t sig[2];
 
 /* SDCC's startup would clear RAM before main: returning 1 skips that, and
  * every variable is set below (all of it on a cold start). */
@@ -29,6 +29,24 @@ unsigned char _sdcc_external_startup(void) {
 }
 
 uint8_t fw_paper_present(void) { return PAPER; }
+
+/* Stack high-water mark: the stack is painted at boot, and STATUS_REPLY
+ * reports how many of its bytes were ever used (PROTOCOL-v3.md), so the
+ * emulator measures the real worst case instead of an estimate. */
+#define PAINT 0xA5
+static void paint_stack(void) {
+    __idata uint8_t *p = (__idata uint8_t *)(SP + 4); /* past this call's frame */
+    do {
+        *p = PAINT;
+    } while (++p != 0);
+}
+
+uint8_t fw_stack_used(void) {
+    extern __idata uint8_t _start__stack[];
+    __idata uint8_t *p = (__idata uint8_t *)0xFF;
+    while (*p == PAINT && p != _start__stack) --p;
+    return (uint8_t)(p - _start__stack + 1);
+}
 
 static void cold_state(void) {
     fw_state = ST_IDLE;
@@ -49,7 +67,7 @@ void main(void) {
     uint8_t warm = sig[0] == SIG0 && sig[1] == SIG1;
     int16_t b;
     P1 = 0x80; /* steps, hammers low; drivers enabled (P1.6 low); LED off */
-    fw_crc_errors = 0;
+    paint_stack();
     fw_pause_req = 0;
     if (warm) {
         /* Progress is exact; the position is not (the drivers lost power or
@@ -73,6 +91,7 @@ void main(void) {
         if (fw_ops_head > 0) fw_compact(); /* between bytes: the frame in progress moves too */
         exec_poll();
         fw_report_room();
+        io_tx_pump();
         LED = !(fw_state == ST_RUNNING || fw_state == ST_HOMING);
     }
 }

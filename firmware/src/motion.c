@@ -72,7 +72,7 @@ void motion_stop(void) {
  * with the last two steps, which write nothing. Indices are 8-bit (R < 256);
  * only the step count and the cruise are 16-bit. The feed's table is all
  * 16-bit entries: its k is R + 1. */
-static uint8_t t_r, t_k, t_fast;
+static uint8_t t_r, t_k; /* the feed has t_k > t_r: no fast entries */
 static FW_CODE uint8_t *t_slow;
 
 /* Steps with table indices lo..hi, rising. */
@@ -104,7 +104,7 @@ static void table_move(uint16_t n) {
         /* The whole ramp: up, cruise (if any), down. */
         a = (uint8_t)(t_r + 1);
         if (a >= 3) emit_up(2, t_r);
-        if (n > 2 * (uint16_t)t_r) rec(t_fast ? K_COUNT : K_SCOUNT, n - 2 * (uint16_t)t_r, 0);
+        if (n > 2 * (uint16_t)t_r) rec(t_k <= t_r ? K_COUNT : K_SCOUNT, n - 2 * (uint16_t)t_r, 0);
         hi = (uint8_t)(t_r - 1);
         if (n - 2 < hi) hi = (uint8_t)(n - 2);
         emit_dn(hi);
@@ -118,7 +118,7 @@ static void table_move(uint16_t n) {
             if (hi) emit_dn(hi);
         }
     }
-    rec(t_fast ? K_COUNT : K_SCOUNT, n < 2 ? n : 2, 0);
+    rec(t_k <= t_r ? K_COUNT : K_SCOUNT, n < 2 ? n : 2, 0);
     rec(K_END, 1, 0);
     start(rd16(t_slow), n >= 2 ? rd16(t_slow + 2) : 0xFFFF);
 }
@@ -128,7 +128,6 @@ void move_carriage(uint16_t n) {
     t_r = RAMP_R;
     t_k = RAMP_K;
     t_slow = ramp_slow;
-    t_fast = 1;
     table_move(n);
 }
 
@@ -137,32 +136,28 @@ void move_feed(uint16_t n) {
     t_r = FEED_R;
     t_k = (uint8_t)(FEED_R + 1);
     t_slow = feed_table;
-    t_fast = 0;
     table_move(n);
 }
 
-void move_constant(uint8_t pin, uint16_t n, uint16_t interval) {
-    uint16_t reload = (uint16_t)(0 - interval);
-    s_pin = pin;
+/* One phase of `kind` and the end; the timer reloads a constant interval. */
+static void one_phase(uint8_t kind, uint16_t n, uint16_t interval) {
     wp = prog;
-    rec(K_SCOUNT, n, 0);
+    rec(kind, n, 0);
     rec(K_END, 1, 0);
-    start(reload, reload);
+    start((uint16_t)(0 - interval), (uint16_t)(0 - interval));
+}
+
+void move_constant(uint8_t pin, uint16_t n, uint16_t interval) {
+    s_pin = pin;
+    one_phase(K_SCOUNT, n, interval);
 }
 
 void move_home(uint16_t n, uint16_t interval) {
-    uint16_t reload = (uint16_t)(0 - interval);
     s_pin = PIN_CSTEP;
-    wp = prog;
-    rec(K_HOME, n, 0);
-    rec(K_END, 1, 0);
-    start(reload, reload);
+    one_phase(K_HOME, n, interval);
 }
 
 void wait_ticks(uint16_t ticks) {
     s_pin = 0;
-    wp = prog;
-    rec(K_SCOUNT, 1, 0);
-    rec(K_END, 1, 0);
-    start((uint16_t)(0 - ticks), 0xFFFF);
+    one_phase(K_SCOUNT, 1, ticks);
 }

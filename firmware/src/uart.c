@@ -14,13 +14,15 @@
 #define RXQ 8 /* power of two; the main loop drains it every few hundred cycles */
 static __idata uint8_t rxq[RXQ];
 static volatile uint8_t rx_w, rx_r;
-static volatile __bit tx_busy;
-volatile uint8_t io_overruns;
+/* One byte handed from the main loop to the transmitter: the serial
+ * interrupt calls nothing, so it needs little stack (check-size.py). */
+static volatile uint8_t tx_next;
+static volatile __bit tx_have, tx_busy;
 
 void io_init(void) {
     rx_w = rx_r = 0;
     tx_busy = 0;
-    io_overruns = 0;
+    tx_have = 0;
     TMOD = (TMOD & 0x0F) | 0x20; /* timer 1: 8-bit auto-reload */
     TH1 = TL1 = (uint8_t)TH1_RELOAD;
     PCON |= 0x80;                /* SMOD */
@@ -34,26 +36,29 @@ void io_init(void) {
     EX0 = 1;
 }
 
-static void rx_put(uint8_t b) {
-    if ((uint8_t)(rx_w - rx_r) >= RXQ) {
-        ++io_overruns;
-        return;
-    }
-    rxq[rx_w & (RXQ - 1)] = b;
-    ++rx_w;
-}
+/* A byte that finds the queue full is dropped: the frame it belongs to fails
+ * its CRC and the host sends it again. */
+#define RX_PUT(b)                                  \
+    do {                                           \
+        if ((uint8_t)(rx_w - rx_r) < RXQ) {        \
+            rxq[rx_w & (RXQ - 1)] = (b);           \
+            ++rx_w;                                \
+        }                                          \
+    } while (0)
 
 void uart_isr(void) __interrupt(SI0_VECTOR) {
     if (RI) {
         RI = 0;
-        rx_put(SBUF);
+        RX_PUT(SBUF);
     }
     if (TI) {
-        /* Replies are built byte by byte as the line takes them (link.c). */
-        int16_t b = fw_reply_byte();
         TI = 0;
-        if (b >= 0) SBUF = (uint8_t)b;
-        else tx_busy = 0;
+        if (tx_have) {
+            SBUF = tx_next;
+            tx_have = 0;
+        } else {
+            tx_busy = 0;
+        }
     }
 }
 
@@ -61,7 +66,7 @@ void uart_isr(void) __interrupt(SI0_VECTOR) {
  * queue is nearly full (the PC waits on BUSY before the next strobe). */
 void strobe_isr(void) __interrupt(IE0_VECTOR) {
     LPT_BUSY = 1;
-    rx_put(P0);
+    RX_PUT(P0);
     LPT_ACK = 0;
     __asm nop __endasm;
     __asm nop __endasm;
@@ -82,9 +87,19 @@ int16_t io_rx(void) {
     return b;
 }
 
-void fw_tx_kick(void) {
+/* Replies are built byte by byte as the line takes them (link.c): the main
+ * loop hands over the next byte whenever the last one has gone. */
+void io_tx_pump(void) {
+    int16_t b;
+    if (tx_have) return;
+    b = fw_reply_byte();
+    if (b < 0) return;
+    tx_next = (uint8_t)b;
+    tx_have = 1;
     if (!tx_busy) {
         tx_busy = 1;
-        TI = 1; /* the interrupt sends the first byte */
+        TI = 1; /* the interrupt sends it */
     }
 }
+
+void fw_tx_kick(void) {}

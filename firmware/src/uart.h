@@ -8,6 +8,7 @@
 void io_init(void);
 /* A received byte, or -1. */
 int16_t io_rx(void);
-extern volatile uint8_t io_overruns;
+/* Hands the next reply byte to the transmitter when it has room (main loop). */
+void io_tx_pump(void);
 
 #endif
