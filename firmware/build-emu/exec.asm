@@ -1107,70 +1107,74 @@ _fetch:
 	mov	a,_fw_ops_head
 	inc	a
 	mov	_fw_ops_head,a
-;	src/exec.c:176: fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
+;	src/exec.c:181: *(volatile __xdata uint8_t *)0xFFFF = 's';
+	mov	dptr,#0xffff
+	mov	a,#0x73
+	movx	@dptr,a
+;	src/exec.c:183: fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
 	anl	_fw_flags,#0xef
-;	src/exec.c:177: fw_state = ST_IDLE;
+;	src/exec.c:184: fw_state = ST_IDLE;
 	mov	_fw_state,#0x00
-;	src/exec.c:178: fw_ack();
-;	src/exec.c:179: break;
-	ljmp	_fw_ack
-;	src/exec.c:180: case OP_SHEET_BEGIN:
-00118$:
-;	src/exec.c:181: if (!PAPER) {
-	jb	_P3_6,00120$
-;	src/exec.c:183: fw_faults |= F_PAPER_OUT;
-	orl	_fw_faults,#0x01
-;	src/exec.c:184: fw_state = ST_FAULT;
-	mov	_fw_state,#0x04
 ;	src/exec.c:185: fw_ack();
-;	src/exec.c:186: return;
+;	src/exec.c:186: break;
+	ljmp	_fw_ack
+;	src/exec.c:187: case OP_SHEET_BEGIN:
+00118$:
+;	src/exec.c:188: if (!PAPER) {
+	jb	_P3_6,00120$
+;	src/exec.c:190: fw_faults |= F_PAPER_OUT;
+	orl	_fw_faults,#0x01
+;	src/exec.c:191: fw_state = ST_FAULT;
+	mov	_fw_state,#0x04
+;	src/exec.c:192: fw_ack();
+;	src/exec.c:193: return;
 	ljmp	_fw_ack
 00120$:
-;	src/exec.c:188: fw_sheet = be16(1);
+;	src/exec.c:195: fw_sheet = be16(1);
 	mov	dpl,#0x01
 	lcall	_be16
 	mov	_fw_sheet,dpl
 	mov	(_fw_sheet + 1),dph
-;	src/exec.c:189: fw_feed = 0; /* the sheet's top edge is the feed origin */
+;	src/exec.c:196: fw_feed = 0; /* the sheet's top edge is the feed origin */
 	clr	a
 	mov	_fw_feed,a
 	mov	(_fw_feed + 1),a
-;	src/exec.c:190: fw_ops_head += 3;
+;	src/exec.c:197: fw_ops_head += 3;
 	mov	r6,_fw_ops_head
 	mov	a,#0x03
 	add	a,r6
 	mov	_fw_ops_head,a
-;	src/exec.c:191: break;
+;	src/exec.c:198: break;
 	ret
-;	src/exec.c:192: case OP_SHEET_END:
+;	src/exec.c:199: case OP_SHEET_END:
 00121$:
-;	src/exec.c:193: fw_sheet = 0;
+;	src/exec.c:200: fw_sheet = 0;
 	clr	a
 	mov	_fw_sheet,a
 	mov	(_fw_sheet + 1),a
-;	src/exec.c:194: fw_ops_head += 1;
+;	src/exec.c:201: fw_ops_head += 1;
 	mov	a,_fw_ops_head
 	inc	a
 	mov	_fw_ops_head,a
-;	src/exec.c:195: break;
+;	src/exec.c:202: break;
 	ret
-;	src/exec.c:196: case OP_HOME:
+;	src/exec.c:203: case OP_HOME:
 00122$:
-;	src/exec.c:197: fw_ops_head += 1;
+;	src/exec.c:204: fw_ops_head += 1;
 	mov	a,_fw_ops_head
 	inc	a
 	mov	_fw_ops_head,a
-;	src/exec.c:198: fw_state = ST_HOMING;
+;	src/exec.c:205: fw_state = ST_HOMING;
 	mov	_fw_state,#0x05
-;	src/exec.c:199: CDIR = 0;
+;	src/exec.c:206: CDIR = 0;
 ;	assignBit
 	clr	_P1_1
-;	src/exec.c:200: c_neg = 1;
+;	src/exec.c:207: c_neg = 1;
 ;	assignBit
 	setb	_c_neg
-;	src/exec.c:201: xs = X_HOME;
+;	src/exec.c:208: xs = X_HOME;
 	mov	_xs,#0x01
-;	src/exec.c:206: if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
+;	src/exec.c:213: if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
 	mov	r5,_fw_carriage
 	mov	r6,(_fw_carriage + 1)
 	clr	c
@@ -1183,7 +1187,7 @@ _fetch:
 	jnc	00124$
 	mov	a,_fw_flags
 	jnb	acc.1,00124$
-;	src/exec.c:207: move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
+;	src/exec.c:214: move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
 	mov	_move_constant_PARM_2,_fw_carriage
 	mov	(_move_constant_PARM_2 + 1),(_fw_carriage + 1)
 	mov	_move_constant_PARM_3,_cfg_home_iv
@@ -1191,26 +1195,26 @@ _fetch:
 	mov	dpl,#0x01
 	lcall	_move_constant
 00124$:
-;	src/exec.c:209: mv_limit = 1;
+;	src/exec.c:216: mv_limit = 1;
 ;	assignBit
 	setb	_mv_limit
-;	src/exec.c:213: break;
+;	src/exec.c:220: break;
 	ret
-;	src/exec.c:215: case OP_SEEK_FEED: {
+;	src/exec.c:222: case OP_SEEK_FEED: {
 00127$:
-;	src/exec.c:216: int16_t target = (int16_t)be16(1);
+;	src/exec.c:223: int16_t target = (int16_t)be16(1);
 	mov	dpl,#0x01
 	push	ar7
 	lcall	_be16
 	mov	r5,dpl
 	mov	r6,dph
 	pop	ar7
-;	src/exec.c:217: uint8_t feed = op == OP_SEEK_FEED;
+;	src/exec.c:224: uint8_t feed = op == OP_SEEK_FEED;
 	clr	a
 	cjne	r7,#0x43,00286$
 	inc	a
 00286$:
-;	src/exec.c:218: int16_t from = feed ? fw_feed : fw_carriage;
+;	src/exec.c:225: int16_t from = feed ? fw_feed : fw_carriage;
 	mov	r7,a
 	jz	00145$
 	mov	r3,_fw_feed
@@ -1220,7 +1224,7 @@ _fetch:
 	mov	r3,_fw_carriage
 	mov	r4,(_fw_carriage + 1)
 00146$:
-;	src/exec.c:219: int16_t d = target - from;
+;	src/exec.c:226: int16_t d = target - from;
 	mov	a,r5
 	clr	c
 	subb	a,r3
@@ -1228,12 +1232,12 @@ _fetch:
 	mov	a,r6
 	subb	a,r4
 	mov	r4,a
-;	src/exec.c:220: fw_ops_head += 3;
+;	src/exec.c:227: fw_ops_head += 3;
 	mov	r2,_fw_ops_head
 	mov	a,#0x03
 	add	a,r2
 	mov	_fw_ops_head,a
-;	src/exec.c:221: if (!feed && (!(fw_flags & FL_HOMED) || target < 0 || (uint16_t)target > cfg_travel)) {
+;	src/exec.c:228: if (!feed && (!(fw_flags & FL_HOMED) || target < 0 || (uint16_t)target > cfg_travel)) {
 	mov	a,r7
 	jnz	00129$
 	mov	a,_fw_flags
@@ -1251,21 +1255,21 @@ _fetch:
 	subb	a,r2
 	jnc	00129$
 00128$:
-;	src/exec.c:222: fault(F_STREAM);
+;	src/exec.c:229: fault(F_STREAM);
 	mov	dpl,#0x80
-;	src/exec.c:223: return;
+;	src/exec.c:230: return;
 	ljmp	_fault
 00129$:
-;	src/exec.c:225: if (d == 0) break;
+;	src/exec.c:232: if (d == 0) break;
 	mov	a,r3
 	orl	a,r4
 	jnz	00293$
 	ret
 00293$:
-;	src/exec.c:226: if (feed) {
+;	src/exec.c:233: if (feed) {
 	mov	a,r7
 	jz	00136$
-;	src/exec.c:227: FDIR = d > 0;
+;	src/exec.c:234: FDIR = d > 0;
 	mov	ar1,r3
 	mov	ar2,r4
 	clr	c
@@ -1280,16 +1284,16 @@ _fetch:
 	rlc	a
 	add	a,#0xff
 	mov	_P1_3,c
-;	src/exec.c:228: f_neg = d < 0;
+;	src/exec.c:235: f_neg = d < 0;
 	mov	a,r2
 	rlc	a
 	mov	_f_neg,c
-;	src/exec.c:229: fw_feed = target;
+;	src/exec.c:236: fw_feed = target;
 	mov	_fw_feed,r5
 	mov	(_fw_feed + 1),r6
 	sjmp	00137$
 00136$:
-;	src/exec.c:231: CDIR = d > 0;
+;	src/exec.c:238: CDIR = d > 0;
 	mov	ar1,r3
 	mov	ar2,r4
 	clr	c
@@ -1304,15 +1308,15 @@ _fetch:
 	rlc	a
 	add	a,#0xff
 	mov	_P1_1,c
-;	src/exec.c:232: c_neg = d < 0;
+;	src/exec.c:239: c_neg = d < 0;
 	mov	a,r2
 	rlc	a
 	mov	_c_neg,c
-;	src/exec.c:233: fw_carriage = target;
+;	src/exec.c:240: fw_carriage = target;
 	mov	_fw_carriage,r5
 	mov	(_fw_carriage + 1),r6
 00137$:
-;	src/exec.c:235: move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d), cfg_home_iv);
+;	src/exec.c:242: move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d), cfg_home_iv);
 	mov	a,r7
 	jz	00147$
 	mov	r6,#0x04
@@ -1343,40 +1347,40 @@ _fetch:
 	mov	(_move_constant_PARM_3 + 1),(_cfg_home_iv + 1)
 	mov	dpl,r6
 	lcall	_move_constant
-;	src/exec.c:236: xs = X_SEEK;
+;	src/exec.c:243: xs = X_SEEK;
 	mov	_xs,#0x02
-;	src/exec.c:237: break;
-;	src/exec.c:239: case OP_PASS:
+;	src/exec.c:244: break;
+;	src/exec.c:246: case OP_PASS:
 	ret
 00138$:
-;	src/exec.c:240: if (!(fw_flags & FL_HOMED)) {
+;	src/exec.c:247: if (!(fw_flags & FL_HOMED)) {
 	mov	a,_fw_flags
 	jb	acc.1,00140$
-;	src/exec.c:241: fault(F_STREAM); /* the host must home before positioning */
+;	src/exec.c:248: fault(F_STREAM); /* the host must home before positioning */
 	mov	dpl,#0x80
-;	src/exec.c:242: return;
+;	src/exec.c:249: return;
 	ljmp	_fault
 00140$:
-;	src/exec.c:244: pass_begin();
-;	src/exec.c:245: break;
-;	src/exec.c:246: default: fault(F_STREAM); break; /* checked on receipt: cannot happen */
+;	src/exec.c:251: pass_begin();
+;	src/exec.c:252: break;
+;	src/exec.c:253: default: fault(F_STREAM); break; /* checked on receipt: cannot happen */
 	ljmp	_pass_begin
 00141$:
 	mov	dpl,#0x80
-;	src/exec.c:247: }
-;	src/exec.c:248: }
+;	src/exec.c:254: }
+;	src/exec.c:255: }
 	ljmp	_fault
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'exec_poll'
 ;------------------------------------------------------------
-;	src/exec.c:250: void exec_poll(void) {
+;	src/exec.c:257: void exec_poll(void) {
 ;	-----------------------------------------
 ;	 function exec_poll
 ;	-----------------------------------------
 _exec_poll:
-;	src/exec.c:251: if (!mv_done) {
+;	src/exec.c:258: if (!mv_done) {
 	jb	_mv_done,00107$
-;	src/exec.c:254: if (xs != X_HOME && !LIMIT && !CDIR && fw_carriage > (int16_t)(4 * C_GRID)) {
+;	src/exec.c:261: if (xs != X_HOME && !LIMIT && !CDIR && fw_carriage > (int16_t)(4 * C_GRID)) {
 	mov	a,#0x01
 	cjne	a,_xs,00214$
 	ret
@@ -1391,16 +1395,16 @@ _exec_poll:
 	xrl	b,#0x80
 	subb	a,b
 	jnc	00102$
-;	src/exec.c:255: fw_flags &= (uint8_t)~FL_HOMED;
+;	src/exec.c:262: fw_flags &= (uint8_t)~FL_HOMED;
 	anl	_fw_flags,#0xfd
-;	src/exec.c:256: fault(F_LIMIT);
+;	src/exec.c:263: fault(F_LIMIT);
 	mov	dpl,#0x02
-;	src/exec.c:258: return;
+;	src/exec.c:265: return;
 	ljmp	_fault
 00102$:
 	ret
 00107$:
-;	src/exec.c:260: switch (xs) {
+;	src/exec.c:267: switch (xs) {
 	mov	a,_xs
 	add	a,#0xff - 0x07
 	jnc	00218$
@@ -1434,53 +1438,53 @@ _exec_poll:
 	.db	00122$>>8
 	.db	00128$>>8
 	.db	00135$>>8
-;	src/exec.c:261: case X_FETCH: fetch(); return;
+;	src/exec.c:268: case X_FETCH: fetch(); return;
 00108$:
 	ljmp	_fetch
-;	src/exec.c:262: case X_HOME:
+;	src/exec.c:269: case X_HOME:
 00109$:
-;	src/exec.c:264: mv_limit = 1;
+;	src/exec.c:271: mv_limit = 1;
 ;	assignBit
 	setb	_mv_limit
-;	src/exec.c:266: if (!mv_limit) {
+;	src/exec.c:273: if (!mv_limit) {
 	jb	_mv_limit,00111$
-;	src/exec.c:267: fault(F_LIMIT); /* travelled the whole width without finding the switch */
+;	src/exec.c:274: fault(F_LIMIT); /* travelled the whole width without finding the switch */
 	mov	dpl,#0x02
-;	src/exec.c:268: return;
+;	src/exec.c:275: return;
 	ljmp	_fault
 00111$:
-;	src/exec.c:270: fw_carriage = 0;
+;	src/exec.c:277: fw_carriage = 0;
 	clr	a
 	mov	_fw_carriage,a
 	mov	(_fw_carriage + 1),a
-;	src/exec.c:271: fw_flags |= FL_HOMED;
+;	src/exec.c:278: fw_flags |= FL_HOMED;
 	orl	_fw_flags,#0x02
-;	src/exec.c:272: fw_state = ST_RUNNING;
+;	src/exec.c:279: fw_state = ST_RUNNING;
 	mov	_fw_state,#0x01
-;	src/exec.c:273: xs = X_FETCH;
+;	src/exec.c:280: xs = X_FETCH;
 	mov	_xs,#0x00
-;	src/exec.c:274: return;
+;	src/exec.c:281: return;
 	ret
-;	src/exec.c:275: case X_SEEK: xs = X_FETCH; return;
+;	src/exec.c:282: case X_SEEK: xs = X_FETCH; return;
 00112$:
 	mov	_xs,#0x00
 	ret
-;	src/exec.c:276: case X_FEED:
+;	src/exec.c:283: case X_FEED:
 00113$:
-;	src/exec.c:277: if (p_left == 0) {
+;	src/exec.c:284: if (p_left == 0) {
 	mov	a,_p_left
 	jnz	00115$
-;	src/exec.c:278: pass_end();
-;	src/exec.c:279: return;
+;	src/exec.c:285: pass_end();
+;	src/exec.c:286: return;
 	ljmp	_pass_end
 00115$:
-;	src/exec.c:281: strike_move(1);
+;	src/exec.c:288: strike_move(1);
 	mov	dpl,#0x01
-;	src/exec.c:282: return;
+;	src/exec.c:289: return;
 	ljmp	_strike_move
-;	src/exec.c:283: case X_MOVE:
+;	src/exec.c:290: case X_MOVE:
 00116$:
-;	src/exec.c:284: if (fw_carriage < 0 || (uint16_t)fw_carriage > cfg_travel) {
+;	src/exec.c:291: if (fw_carriage < 0 || (uint16_t)fw_carriage > cfg_travel) {
 	mov	a,(_fw_carriage + 1)
 	jb	acc.7,00117$
 	mov	r6,_fw_carriage
@@ -1492,70 +1496,70 @@ _exec_poll:
 	subb	a,r7
 	jnc	00118$
 00117$:
-;	src/exec.c:285: fw_flags &= (uint8_t)~FL_HOMED;
+;	src/exec.c:292: fw_flags &= (uint8_t)~FL_HOMED;
 	anl	_fw_flags,#0xfd
-;	src/exec.c:286: fault(F_LIMIT);
+;	src/exec.c:293: fault(F_LIMIT);
 	mov	dpl,#0x02
-;	src/exec.c:287: return;
+;	src/exec.c:294: return;
 	ljmp	_fault
 00118$:
-;	src/exec.c:289: xs = X_SETTLE;
+;	src/exec.c:296: xs = X_SETTLE;
 	mov	_xs,#0x05
-;	src/exec.c:290: if (cfg_settle) {
+;	src/exec.c:297: if (cfg_settle) {
 	mov	a,_cfg_settle
 	orl	a,(_cfg_settle + 1)
 	jz	00122$
-;	src/exec.c:291: wait_ticks(cfg_settle);
+;	src/exec.c:298: wait_ticks(cfg_settle);
 	mov	dpl,_cfg_settle
 	mov	dph,(_cfg_settle + 1)
-;	src/exec.c:292: return;
+;	src/exec.c:299: return;
 	ljmp	_wait_ticks
-;	src/exec.c:295: case X_SETTLE:
+;	src/exec.c:302: case X_SETTLE:
 00122$:
-;	src/exec.c:296: xs = X_DWELL;
+;	src/exec.c:303: xs = X_DWELL;
 	mov	_xs,#0x06
-;	src/exec.c:297: if (fw_skip) {
+;	src/exec.c:304: if (fw_skip) {
 	mov	a,_fw_skip
 	jz	00124$
-;	src/exec.c:298: --fw_skip; /* made before the reset: pass over it */
+;	src/exec.c:305: --fw_skip; /* made before the reset: pass over it */
 	dec	_fw_skip
-;	src/exec.c:299: return;
+;	src/exec.c:306: return;
 	ret
 00124$:
-;	src/exec.c:301: if (ham_ccv) HAM_CCV = 1;
+;	src/exec.c:308: if (ham_ccv) HAM_CCV = 1;
 	jnb	_ham_ccv,00126$
 ;	assignBit
 	setb	_P1_5
 	sjmp	00127$
 00126$:
-;	src/exec.c:302: else HAM_CVX = 1;
+;	src/exec.c:309: else HAM_CVX = 1;
 ;	assignBit
 	setb	_P1_4
 00127$:
-;	src/exec.c:303: wait_ticks(cfg_hammer);
+;	src/exec.c:310: wait_ticks(cfg_hammer);
 	mov	dpl,_cfg_hammer
 	mov	dph,(_cfg_hammer + 1)
 	lcall	_wait_ticks
-;	src/exec.c:304: ++fw_strikes_in_pass;
+;	src/exec.c:311: ++fw_strikes_in_pass;
 	inc	_fw_strikes_in_pass
-;	src/exec.c:305: return;
-;	src/exec.c:306: case X_DWELL:
+;	src/exec.c:312: return;
+;	src/exec.c:313: case X_DWELL:
 	ret
 00128$:
-;	src/exec.c:307: HAM_CVX = 0;
+;	src/exec.c:314: HAM_CVX = 0;
 ;	assignBit
 	clr	_P1_4
-;	src/exec.c:308: HAM_CCV = 0;
+;	src/exec.c:315: HAM_CCV = 0;
 ;	assignBit
 	clr	_P1_5
-;	src/exec.c:310: if (!HAM_SENSE) {
+;	src/exec.c:317: if (!HAM_SENSE) {
 	jb	_P3_7,00130$
-;	src/exec.c:311: fault(F_HAMMER);
+;	src/exec.c:318: fault(F_HAMMER);
 	mov	dpl,#0x04
-;	src/exec.c:312: return;
+;	src/exec.c:319: return;
 	ljmp	_fault
 00130$:
-;	src/exec.c:314: fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
+;	src/exec.c:321: fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
 	mov	dpl,#0x00
 	lcall	_at
 	mov	a,dpl
@@ -1571,32 +1575,32 @@ _exec_poll:
 	mov	a,r6
 	add	a,r7
 	mov	_fw_ops_head,a
-;	src/exec.c:315: if (--p_left == 0) {
+;	src/exec.c:322: if (--p_left == 0) {
 	djnz	_p_left,00132$
-;	src/exec.c:316: pass_end();
-;	src/exec.c:317: return;
+;	src/exec.c:323: pass_end();
+;	src/exec.c:324: return;
 	ljmp	_pass_end
 00132$:
-;	src/exec.c:319: if (fw_pause_req) {
+;	src/exec.c:326: if (fw_pause_req) {
 	mov	a,_fw_pause_req
 	jz	00134$
-;	src/exec.c:320: fw_pause_req = 0;
+;	src/exec.c:327: fw_pause_req = 0;
 	mov	_fw_pause_req,#0x00
-;	src/exec.c:321: fw_state = ST_PAUSED;
+;	src/exec.c:328: fw_state = ST_PAUSED;
 	mov	_fw_state,#0x03
-;	src/exec.c:322: xs = X_NEXT;
+;	src/exec.c:329: xs = X_NEXT;
 	mov	_xs,#0x07
-;	src/exec.c:323: fw_ack();
-;	src/exec.c:324: return;
+;	src/exec.c:330: fw_ack();
+;	src/exec.c:331: return;
 	ljmp	_fw_ack
 00134$:
-;	src/exec.c:326: strike_move(0);
+;	src/exec.c:333: strike_move(0);
 	mov	dpl,#0x00
-;	src/exec.c:327: return;
-;	src/exec.c:328: case X_NEXT:
+;	src/exec.c:334: return;
+;	src/exec.c:335: case X_NEXT:
 	ljmp	_strike_move
 00135$:
-;	src/exec.c:329: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
+;	src/exec.c:336: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
 	mov	a,#0x03
 	cjne	a,_fw_state,00232$
 	sjmp	00136$
@@ -1606,13 +1610,13 @@ _exec_poll:
 00136$:
 	ret
 00137$:
-;	src/exec.c:330: strike_move(0);
+;	src/exec.c:337: strike_move(0);
 	mov	dpl,#0x00
 	lcall	_strike_move
-;	src/exec.c:331: return;
-;	src/exec.c:332: default: return;
-;	src/exec.c:333: }
-;	src/exec.c:334: }
+;	src/exec.c:338: return;
+;	src/exec.c:339: default: return;
+;	src/exec.c:340: }
+;	src/exec.c:341: }
 	ret
 	.area CSEG    (CODE)
 	.area CONST   (CODE)

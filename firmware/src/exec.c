@@ -173,6 +173,13 @@ static void fetch(void) {
             break;
         case OP_JOB_END:
             fw_ops_head += 1;
+#ifdef FW_EMU
+            /* s51's simulator interface (run-s51.sh --stop-at-job-end maps it
+             * to xram 0xFFFF): 's' ends the run, so a benchmark reads the
+             * emulator's cycle counters at a known point. A plain write to
+             * xram otherwise. */
+            *(volatile __xdata uint8_t *)0xFFFF = 's';
+#endif
             fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
             fw_state = ST_IDLE;
             fw_ack();

@@ -5,20 +5,27 @@
 # two FIFOs for the emulator's serial port, bridged by socat to a raw pty (the
 # TCP and tty options of s51 are not binary-clean).
 #
-#   tools/run-s51.sh FW.ihx [--vcd FILE] [--paper-out] [--dir DIR]
+#   tools/run-s51.sh FW.ihx [--vcd FILE] [--paper-out] [--console PORT] [--dir DIR]
 #
 # Prints "PTY /dev/pts/N" once the pty exists, then runs until killed (SIGTERM
-# or SIGINT stops s51 and socat). --vcd logs port 1 (steps, directions,
-# hammers) as a value-change dump with the emulator's clock.
+# or SIGINT stops s51 and socat). --stop-at-job-end: the emulator build ends
+# the run at JOB_END; s51 prints its cycle counters into DIR/s51.log and quits. --vcd logs port 1 (steps, directions,
+# hammers) as a value-change dump with the emulator's clock. --console opens
+# s51's command console on a local TCP port (bench/firmware reads its cycle
+# counters there: "timer get").
 set -euo pipefail
 ihx=""
 vcd=""
 paper=1
 dir=""
+console=""
+stop=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --vcd) vcd=$(realpath -m "$2"); shift 2 ;;
     --paper-out) paper=0; shift ;;
+    --console) console="$2"; shift 2 ;;
+    --stop-at-job-end) stop=1; shift ;;
     --dir) dir="$2"; shift 2 ;;
     -h|--help) sed -n 2,12p "$0"; exit 0 ;;
     -*) echo "run-s51.sh: unknown option $1" >&2; exit 2 ;;
@@ -46,7 +53,12 @@ exec 3<>h2t 4<>t2h            # hold both FIFOs open, or the opens deadlock
     echo "set hw vcd[0] add port_1_cfg 2"
     echo "set hw vcd[0] start"
   fi
-  echo "run"
+  # With a console, its user starts the run ("run"): s51 serves the console
+  # only while it is not running a command file's run.
+  [ -n "$console" ] || echo "run"
+  # The emulator build stops the run at JOB_END through the simulator
+  # interface; then print the cycle counters (total, in interrupts) and quit.
+  if [ "$stop" = 1 ]; then echo "timer get"; echo "quit"; fi
 } > cmds
 pids=()
 cleanup() {
@@ -56,7 +68,10 @@ cleanup() {
 trap cleanup EXIT INT TERM
 socat PTY,link="$dir/ttyFW",raw,echo=0 'PIPE:t2h!!PIPE:h2t' &
 pids+=($!)
-s51 -t C52 -X 11.0592M -b -S in=h2t,out=t2h -e 'uart0_check_often=1' -C cmds </dev/null >s51.log 2>&1 &
+extra=(-b)                    # batch: no interactive console ...
+[ -n "$console" ] && extra=(-Z "$console")   # ... unless one is asked for
+[ "$stop" = 1 ] && extra+=(-I 'if=xram[0xffff]')
+s51 -t C52 -X 11.0592M -S in=h2t,out=t2h -e 'uart0_check_often=1' "${extra[@]}" -C cmds </dev/null >s51.log 2>&1 &
 pids+=($!)
 for _ in $(seq 100); do [ -e "$dir/ttyFW" ] && break; sleep 0.05; done
 [ -e "$dir/ttyFW" ] || { echo "run-s51.sh: socat made no pty" >&2; exit 1; }
