@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 tools/install-deps.sh
 jobs=$(nproc)
 
+echo "== architecture (stage order, declared includes, no cycles)"
+python3 tools/check-architecture.py
+
 echo "== default build (warnings are errors)"
 cmake --preset default >/dev/null
 cmake --build build/default -j"$jobs"

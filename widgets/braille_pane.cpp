@@ -8,11 +8,11 @@
 namespace tactus::gui {
 namespace {
 
-BrailleLine braille_in(const QString& text) {
-    BrailleLine cells;
+document::BrailleLine braille_in(const QString& text) {
+    document::BrailleLine cells;
     for (char32_t c : text.toStdU32String()) {
-        if (Cell::is_unicode_braille(c)) cells.push_back(Cell::from_unicode(c));
-        else if (c == U' ') cells.push_back(Cell{});
+        if (document::Cell::is_unicode_braille(c)) cells.push_back(document::Cell::from_unicode(c));
+        else if (c == U' ') cells.push_back(document::Cell{});
     }
     return cells;
 }
@@ -64,7 +64,7 @@ void BraillePane::keyPressEvent(QKeyEvent* e) {
     if (plain && !chord_.active()) {
         switch (e->key()) {
             case Qt::Key_Space:
-                Q_EMIT cells_typed(BrailleLine{Cell{}});
+                Q_EMIT cells_typed(document::BrailleLine{document::Cell{}});
                 e->accept();
                 return;
             case Qt::Key_Backspace:
@@ -96,7 +96,7 @@ void BraillePane::keyPressEvent(QKeyEvent* e) {
 void BraillePane::keyReleaseEvent(QKeyEvent* e) {
     if (chord_.is_chord_key(e->key())) {
         if (auto cell = chord_.release(e->key(), e->isAutoRepeat())) {
-            if (!cell->blank()) Q_EMIT cells_typed(BrailleLine{*cell});
+            if (!cell->blank()) Q_EMIT cells_typed(document::BrailleLine{*cell});
         }
         e->accept();
         return;

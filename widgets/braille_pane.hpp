@@ -18,7 +18,7 @@ public:
     SixKeyChord& chord() { return chord_; }
 
 Q_SIGNALS:
-    void cells_typed(const tactus::BrailleLine& cells);  // replaces the selection
+    void cells_typed(const tactus::document::BrailleLine& cells);  // replaces the selection
     void erase_backward();
     void erase_forward();
     void new_paragraph();

@@ -50,15 +50,15 @@ std::size_t map(const std::vector<Word>& from, std::size_t from_size, std::size_
 
 }  // namespace
 
-std::size_t print_to_braille(std::u32string_view content, std::size_t column, const BrailleLine& cells) {
+std::size_t print_to_braille(std::u32string_view content, std::size_t column, const document::BrailleLine& cells) {
     const auto pw = words_of(content, space);
-    const auto bw = words_of(cells, [](Cell c) { return c.blank(); });
+    const auto bw = words_of(cells, [](document::Cell c) { return c.blank(); });
     return map(pw, content.size(), column, bw, cells.size());
 }
 
-std::size_t braille_to_print(const BrailleLine& cells, std::size_t cell, std::u32string_view content) {
+std::size_t braille_to_print(const document::BrailleLine& cells, std::size_t cell, std::u32string_view content) {
     const auto pw = words_of(content, space);
-    const auto bw = words_of(cells, [](Cell c) { return c.blank(); });
+    const auto bw = words_of(cells, [](document::Cell c) { return c.blank(); });
     return map(bw, cells.size(), cell, pw, content.size());
 }
 

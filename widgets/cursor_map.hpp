@@ -12,7 +12,7 @@
 namespace tactus::gui {
 
 // `content` is the line as the reader sees it (without Markdown marks).
-std::size_t print_to_braille(std::u32string_view content, std::size_t column, const BrailleLine& cells);
-std::size_t braille_to_print(const BrailleLine& cells, std::size_t cell, std::u32string_view content);
+std::size_t print_to_braille(std::u32string_view content, std::size_t column, const document::BrailleLine& cells);
+std::size_t braille_to_print(const document::BrailleLine& cells, std::size_t cell, std::u32string_view content);
 
 }  // namespace tactus::gui

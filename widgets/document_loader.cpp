@@ -12,7 +12,7 @@ namespace {
 
 constexpr int kImportShare = 10;  // percent of the progress bar for reading the file
 
-LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const LayoutOptions& options,
+LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const layout::LayoutOptions& options,
                     const std::function<bool(int)>& progress) {
     auto result = std::make_shared<LoadResult>();
     auto layout = LiveLayout::create(tables, options);
@@ -32,9 +32,9 @@ LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, c
     return result;
 }
 
-LoadResultPtr load(const QString& path, const std::string& tables, const LayoutOptions& options,
+LoadResultPtr load(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
                    const std::function<bool(int)>& progress) {
-    auto doc = import_file(path.toStdString());
+    auto doc = import::import_file(path.toStdString());
     if (!doc) {
         auto r = std::make_shared<LoadResult>();
         r->error = doc.error();
@@ -61,20 +61,20 @@ std::function<bool(int)> reporter(QPromise<LoadResultPtr>& promise) {
 
 }  // namespace
 
-QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const LayoutOptions& options) {
+QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const layout::LayoutOptions& options) {
     return QtConcurrent::run([path, tables, options](QPromise<LoadResultPtr>& promise) {
         promise.addResult(load(path, tables, options, reporter(promise)));
     });
 }
 
 QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
-                                     const LayoutOptions& options) {
+                                     const layout::LayoutOptions& options) {
     return QtConcurrent::run([lines = std::move(lines), tables, options](QPromise<LoadResultPtr>& promise) mutable {
         promise.addResult(build(std::move(lines), tables, options, reporter(promise)));
     });
 }
 
-LoadResultPtr load_file_now(const QString& path, const std::string& tables, const LayoutOptions& options) {
+LoadResultPtr load_file_now(const QString& path, const std::string& tables, const layout::LayoutOptions& options) {
     return load(path, tables, options, {});
 }
 

@@ -22,12 +22,12 @@ struct LoadResult {
 using LoadResultPtr = std::shared_ptr<LoadResult>;
 
 // Imports `path` (any core format) and lays it out with `tables`.
-QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const LayoutOptions& options);
+QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const layout::LayoutOptions& options);
 // Lays out lines already in the editor (a new table on a big book).
 QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
-                                     const LayoutOptions& options);
+                                     const layout::LayoutOptions& options);
 
 // The same work, on the calling thread (tests, the benchmark and the CLI-style paths).
-LoadResultPtr load_file_now(const QString& path, const std::string& tables, const LayoutOptions& options);
+LoadResultPtr load_file_now(const QString& path, const std::string& tables, const layout::LayoutOptions& options);
 
 }  // namespace tactus::gui

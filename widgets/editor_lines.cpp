@@ -56,15 +56,15 @@ std::optional<std::string> comment_argument(std::string_view s, std::string_view
 
 // Inline Markdown (emphasis, escapes) through core's importer; plain text takes
 // the fast path, which is nearly every line of a real book.
-std::vector<Span> parse_inline(std::string_view content) {
+std::vector<document::Span> parse_inline(std::string_view content) {
     if (content.find_first_of(kInlineSpecials) == std::string_view::npos)
-        return content.empty() ? std::vector<Span>{} : std::vector<Span>{Span{std::string(content)}};
-    ImportOptions options;
-    options.format = SourceFormat::markdown;
+        return content.empty() ? std::vector<document::Span>{} : std::vector<document::Span>{document::Span{std::string(content)}};
+    import::ImportOptions options;
+    options.format = import::SourceFormat::markdown;
     options.encoding = "UTF-8";
-    auto doc = import_bytes(content, "line.md", options);
-    if (!doc) return {Span{std::string(content)}};
-    std::vector<Span> spans;
+    auto doc = import::import_bytes(content, "line.md", options);
+    if (!doc) return {document::Span{std::string(content)}};
+    std::vector<document::Span> spans;
     for (const auto& b : doc->blocks)
         for (const auto& s : b.spans) {
             if (!spans.empty() && spans.back().emphasis == s.emphasis) spans.back().text += s.text;
@@ -94,14 +94,14 @@ std::string guard_line_start(std::string s) {
     return s;
 }
 
-std::string render_spans(const std::vector<Span>& spans) {
+std::string render_spans(const std::vector<document::Span>& spans) {
     std::string out;
     for (const auto& span : spans) {
         std::string_view t = span.text;
-        const auto mark = (span.emphasis & emphasis_bold) && (span.emphasis & emphasis_italic)
+        const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
                               ? std::string_view("***")
-                          : (span.emphasis & emphasis_bold)   ? std::string_view("**")
-                          : (span.emphasis & emphasis_italic) ? std::string_view("*")
+                          : (span.emphasis & document::emphasis_bold)   ? std::string_view("**")
+                          : (span.emphasis & document::emphasis_italic) ? std::string_view("*")
                                                               : std::string_view();
         const auto core = trim(t);
         if (mark.empty() || core.empty()) {
@@ -125,39 +125,39 @@ bool is_braille_line(std::string_view utf8) {
     if (utf8.empty()) return false;
     auto text = utf8_to_utf32(utf8);
     if (!text || text->empty()) return false;
-    return std::ranges::all_of(*text, [](char32_t c) { return Cell::is_unicode_braille(c); });
+    return std::ranges::all_of(*text, [](char32_t c) { return document::Cell::is_unicode_braille(c); });
 }
 
-std::optional<Block> parse_editor_line(std::string_view line) {
+std::optional<document::Block> parse_editor_line(std::string_view line) {
     while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.remove_suffix(1);
     const auto t = trim(line);
     if (t.empty()) return std::nullopt;
-    Block b;
+    document::Block b;
     if (is_braille_line(t)) {
-        b.kind = BlockKind::braille;
-        BrailleLine cells;
+        b.kind = document::BlockKind::braille;
+        document::BrailleLine cells;
         const auto text = utf8_to_utf32(t);
-        for (char32_t c : *text) cells.push_back(Cell::from_unicode(c));
+        for (char32_t c : *text) cells.push_back(document::Cell::from_unicode(c));
         b.braille_lines.push_back(std::move(cells));
         return b;
     }
     if (is_thematic_break(t)) {
-        b.kind = BlockKind::print_page_break;
+        b.kind = document::BlockKind::print_page_break;
         return b;
     }
     if (auto label = comment_argument(t, "pagebreak")) {
-        b.kind = BlockKind::print_page_break;
+        b.kind = document::BlockKind::print_page_break;
         b.label = *label;
         return b;
     }
     if (comment_argument(t, "braillepage")) {
-        b.kind = BlockKind::braille_page_break;
+        b.kind = document::BlockKind::braille_page_break;
         return b;
     }
     std::size_t hashes = 0;
     while (hashes < t.size() && t[hashes] == '#') ++hashes;
     if (hashes >= 1 && hashes <= 6 && (hashes == t.size() || is_space(t[hashes]))) {
-        b.kind = BlockKind::heading;
+        b.kind = document::BlockKind::heading;
         b.level = static_cast<int>(hashes);
         b.spans = parse_inline(trim(t.substr(hashes)));
         return b;
@@ -169,7 +169,7 @@ std::optional<Block> parse_editor_line(std::string_view line) {
                         is_space(rest[1]);
     const auto ordinal = ordinal_length(rest);
     if (bullet || (ordinal > 0 && ordinal < rest.size() && is_space(rest[ordinal]))) {
-        b.kind = BlockKind::list_item;
+        b.kind = document::BlockKind::list_item;
         b.level = static_cast<int>(indent / 2) + 1;
         if (bullet) {
             b.spans = parse_inline(trim(rest.substr(2)));
@@ -177,24 +177,24 @@ std::optional<Block> parse_editor_line(std::string_view line) {
             // Numbered items keep their number as text, as core's Markdown import does.
             b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
             const auto number = std::string(rest.substr(0, ordinal)) + " ";
-            if (!b.spans.empty() && b.spans.front().emphasis == emphasis_none)
+            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none)
                 b.spans.front().text.insert(0, number);
             else
-                b.spans.insert(b.spans.begin(), Span{number});
+                b.spans.insert(b.spans.begin(), document::Span{number});
         }
         return b;
     }
-    b.kind = BlockKind::paragraph;
+    b.kind = document::BlockKind::paragraph;
     b.spans = parse_inline(t);
     return b;
 }
 
-std::string render_editor_line(const Block& b) {
+std::string render_editor_line(const document::Block& b) {
     switch (b.kind) {
-        case BlockKind::heading:
+        case document::BlockKind::heading:
             return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " +
                    render_spans(b.spans);
-        case BlockKind::list_item: {
+        case document::BlockKind::list_item: {
             std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
             auto spans = b.spans;
             const auto ordinal =
@@ -207,36 +207,36 @@ std::string render_editor_line(const Block& b) {
             }
             return out + "- " + render_spans(spans);
         }
-        case BlockKind::print_page_break:
+        case document::BlockKind::print_page_break:
             return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
-        case BlockKind::braille_page_break:
+        case document::BlockKind::braille_page_break:
             return "<!-- braillepage -->";
-        case BlockKind::braille: {
+        case document::BlockKind::braille: {
             std::string out;
             for (std::size_t i = 0; i < b.braille_lines.size(); ++i) {
                 if (i) out += '\n';
-                out += b.braille_lines[i].empty() ? to_unicode_text({Cell{}})
-                                                  : to_unicode_text(b.braille_lines[i]);
+                out += b.braille_lines[i].empty() ? document::to_unicode_text({document::Cell{}})
+                                                  : document::to_unicode_text(b.braille_lines[i]);
             }
             return out;
         }
-        case BlockKind::paragraph:
+        case document::BlockKind::paragraph:
             break;
     }
     return guard_line_start(render_spans(b.spans));
 }
 
-std::vector<std::string> render_editor_lines(const Document& document) {
+std::vector<std::string> render_editor_lines(const document::Document& document) {
     std::vector<std::string> lines;
     lines.reserve(document.blocks.size());
     for (const auto& b : document.blocks) {
-        if (b.kind == BlockKind::braille) {
+        if (b.kind == document::BlockKind::braille) {
             for (const auto& l : b.braille_lines)
-                lines.push_back(l.empty() ? to_unicode_text({Cell{}}) : to_unicode_text(l));
+                lines.push_back(l.empty() ? document::to_unicode_text({document::Cell{}}) : document::to_unicode_text(l));
             continue;
         }
         auto line = render_editor_line(b);
-        if (b.kind == BlockKind::paragraph && trim(line).empty()) continue;
+        if (b.kind == document::BlockKind::paragraph && trim(line).empty()) continue;
         lines.push_back(std::move(line));
     }
     return lines;
@@ -245,8 +245,8 @@ std::vector<std::string> render_editor_lines(const Document& document) {
 std::string editor_line_content(std::string_view line) {
     const auto block = parse_editor_line(line);
     if (!block) return {};
-    if (block->kind == BlockKind::braille || block->kind == BlockKind::print_page_break ||
-        block->kind == BlockKind::braille_page_break)
+    if (block->kind == document::BlockKind::braille || block->kind == document::BlockKind::print_page_break ||
+        block->kind == document::BlockKind::braille_page_break)
         return {};
     return block->text();
 }

@@ -16,11 +16,11 @@ namespace tactus::gui {
 
 // The block a line stands for; empty for a blank line. A page break without a
 // label gets an empty label (the caller numbers it from the previous one).
-std::optional<Block> parse_editor_line(std::string_view utf8);
+std::optional<document::Block> parse_editor_line(std::string_view utf8);
 
 // One editor line per block, escaped so that parse_editor_line gives the block back.
-std::vector<std::string> render_editor_lines(const Document& document);
-std::string render_editor_line(const Block& block);
+std::vector<std::string> render_editor_lines(const document::Document& document);
+std::string render_editor_line(const document::Block& block);
 
 // The text a reader sees: without the heading marks, bullet and emphasis marks.
 // Used to map the cursor between print and braille word by word.

@@ -91,7 +91,7 @@ EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) 
 EditorWidget::~EditorWidget() = default;
 
 QString EditorWidget::braille_text(std::size_t line) const {
-    return QString::fromStdString(to_unicode_text(layout_->braille_of(line)));
+    return QString::fromStdString(document::to_unicode_text(layout_->braille_of(line)));
 }
 
 void EditorWidget::adopt(LiveLayout layout) {
@@ -143,7 +143,7 @@ void EditorWidget::refresh_braille() {
     sync_from_print();
 }
 
-Result<void> EditorWidget::set_layout_options(const LayoutOptions& options) {
+Result<void> EditorWidget::set_layout_options(const layout::LayoutOptions& options) {
     if (!layout_) return fail("no document", "layout");
     if (auto ok = layout_->set_options(options); !ok) return ok;
     Q_EMIT layout_changed();
@@ -224,7 +224,7 @@ void EditorWidget::sync_from_print() {
         const auto block = print_->document()->findBlock(pos);
         const auto line = block.text();
         const auto i = static_cast<std::size_t>(block.blockNumber());
-        const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : BrailleLine{};
+        const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : document::BrailleLine{};
         std::size_t cell;
         if (is_braille_line(line.toStdString())) {
             cell = std::min(static_cast<std::size_t>(pos - block.position()), cells.size());
@@ -273,7 +273,7 @@ void EditorWidget::sync_from_braille() {
     }
 }
 
-void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t to, const BrailleLine& cells) {
+void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells) {
     if (!layout_ || line >= layout_->line_count()) return;
     auto current = layout_->braille_of(line);
     from = std::min(from, current.size());
@@ -285,7 +285,7 @@ void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t 
     QTextCursor c(block);
     c.beginEditBlock();
     c.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
-    c.insertText(QString::fromStdString(to_unicode_text(current)));
+    c.insertText(QString::fromStdString(document::to_unicode_text(current)));
     c.endEditBlock();
     // Put the braille caret after what was typed.
     const auto bb = braille_->document()->findBlockByNumber(static_cast<int>(line));
@@ -294,7 +294,7 @@ void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t 
     braille_->setTextCursor(bc);
 }
 
-void EditorWidget::braille_typed(const BrailleLine& cells) {
+void EditorWidget::braille_typed(const document::BrailleLine& cells) {
     const auto c = braille_->textCursor();
     const auto line = static_cast<std::size_t>(braille_->document()->findBlock(c.selectionStart()).blockNumber());
     const auto start_block = braille_->document()->findBlock(c.selectionStart());

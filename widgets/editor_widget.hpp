@@ -30,7 +30,7 @@ public:
     // the print text and its undo history stay.
     void swap_layout(LiveLayout layout);
     Result<void> set_tables(const std::string& tables);
-    Result<void> set_layout_options(const LayoutOptions& options);
+    Result<void> set_layout_options(const layout::LayoutOptions& options);
 
     [[nodiscard]] QString text() const;  // the document as Markdown, one block per line
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
@@ -44,7 +44,7 @@ public:
     [[nodiscard]] PagePosition current_position() const;
 
     // Cell edits on line `line`: replace cells [from, to) with `cells`.
-    void edit_braille(std::size_t line, std::size_t from, std::size_t to, const BrailleLine& cells);
+    void edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells);
 
 Q_SIGNALS:
     void layout_changed();
@@ -57,7 +57,7 @@ private:
     void replace_braille_blocks(int first, int removed, int count);
     void sync_from_print();
     void sync_from_braille();
-    void braille_typed(const BrailleLine& cells);
+    void braille_typed(const document::BrailleLine& cells);
     void braille_erase(bool backward);
     void braille_new_paragraph();
     [[nodiscard]] QString braille_text(std::size_t line) const;

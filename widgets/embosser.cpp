@@ -4,12 +4,12 @@
 #include <algorithm>
 
 #include "controller/sim_controller.hpp"
-#include "encode/controller_config.hpp"
+#include "profile/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "transport/hid_uart.hpp"
 #include "transport/lpt_port.hpp"
 #include "transport/serial_port.hpp"
-#include "transport/sim_transport.hpp"
+#include "controller/sim_transport.hpp"
 
 namespace tactus::gui {
 
@@ -68,7 +68,7 @@ Result<Embosser> Embosser::connect(const std::string& device, const profile::Pri
         controller::SimOptions options;
         options.reload_paper_after_s = 5;  // the simulated operator loads paper
         e.sim_ = std::make_shared<controller::SimController>(options);
-        auto transport = std::make_unique<transport::SimTransport>(e.sim_, transport::SimLineOptions{});
+        auto transport = std::make_unique<controller::SimTransport>(e.sim_, controller::SimLineOptions{});
         e.sim_transport_ = transport.get();
         e.link_ = std::make_unique<link::Link>(link::Link::over(std::move(transport)));
     } else {
@@ -77,7 +77,7 @@ Result<Embosser> Embosser::connect(const std::string& device, const profile::Pri
         e.link_ = std::make_unique<link::Link>(std::move(*l));
     }
     if (auto h = e.link_->hello(); !h) return std::unexpected(located(h.error(), device));
-    if (auto c = e.link_->configure(encode::controller_config(p)); !c) return std::unexpected(located(c.error(), device));
+    if (auto c = e.link_->configure(profile::controller_config(p)); !c) return std::unexpected(located(c.error(), device));
     return e;
 }
 
@@ -89,7 +89,7 @@ Result<encode::Status> Embosser::status() { return link_->status(); }
 
 void Embosser::simulate_unplug_after(double after_s, double seconds) {
     if (!sim_transport_) return;
-    auto* t = static_cast<transport::SimTransport*>(sim_transport_);
+    auto* t = static_cast<controller::SimTransport*>(sim_transport_);
     t->unplug_between(t->now() + after_s, t->now() + after_s + seconds);
 }
 

@@ -11,11 +11,11 @@
 namespace tactus::gui {
 namespace {
 
-BrailleLine cells_of_unicode(const std::string& utf8) {
-    BrailleLine cells;
+document::BrailleLine cells_of_unicode(const std::string& utf8) {
+    document::BrailleLine cells;
     if (auto u = utf8_to_utf32(utf8))
         for (char32_t c : *u)
-            if (Cell::is_unicode_braille(c)) cells.push_back(Cell::from_unicode(c));
+            if (document::Cell::is_unicode_braille(c)) cells.push_back(document::Cell::from_unicode(c));
     return cells;
 }
 
@@ -27,47 +27,47 @@ std::string next_label(const std::string& label) {
 }
 
 // Mirrors Paginator::numbered: interpoint backs carry no page number.
-bool numbered_page(const LayoutOptions& o, std::size_t page) {
-    return o.page_numbers != PageNumberPosition::none && (!o.geometry.interpoint || page % 2 == 0);
+bool numbered_page(const layout::LayoutOptions& o, std::size_t page) {
+    return o.page_numbers != layout::PageNumberPosition::none && (!o.geometry.interpoint || page % 2 == 0);
 }
 
 }  // namespace
 
-Result<LiveLayout> LiveLayout::create(const std::string& tables, LayoutOptions options) {
+Result<LiveLayout> LiveLayout::create(const std::string& tables, layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return std::unexpected(ok.error());
-    auto translator = Translator::open(tables);
+    auto translator = translate::Translator::open(tables);
     if (!translator) return std::unexpected(translator.error());
     LiveLayout l(std::move(*translator), std::move(options));
     l.relayout_from(0);
     return l;
 }
 
-BrailleLine LiveLayout::number_cells(int n) {
+document::BrailleLine LiveLayout::number_cells(int n) {
     if (auto it = numbers_.find(n); it != numbers_.end()) return it->second;
     const auto digits = std::to_string(n);
     auto cells = translator_.translate(std::u32string(digits.begin(), digits.end()));
-    return numbers_.emplace(n, cells ? std::move(*cells) : BrailleLine{}).first->second;
+    return numbers_.emplace(n, cells ? std::move(*cells) : document::BrailleLine{}).first->second;
 }
 
 void LiveLayout::translate_entry(std::size_t i) {
     auto& e = entries_[i];
     e.block = parse_editor_line(e.line);
     e.error.reset();
-    e.translated = TranslatedBlock{};
+    e.translated = translate::TranslatedBlock{};
     if (!e.block) return;
-    if (e.block->kind == BlockKind::print_page_break && e.block->label.empty()) {
+    if (e.block->kind == document::BlockKind::print_page_break && e.block->label.empty()) {
         // "---" continues the numbering of the page break above it; the first is page 2.
         std::string label = "2";
         for (std::size_t j = i; j-- > 0;) {
             const auto& b = entries_[j].block;
-            if (b && b->kind == BlockKind::print_page_break) {
+            if (b && b->kind == document::BlockKind::print_page_break) {
                 label = next_label(b->label);
                 break;
             }
         }
         e.block->label = label;
     }
-    auto tb = translate_block(*e.block, translator_);
+    auto tb = translate::translate_block(*e.block, translator_);
     if (!tb) {
         e.error = located(tb.error(), "line " + std::to_string(i + 1));
         return;
@@ -76,9 +76,9 @@ void LiveLayout::translate_entry(std::size_t i) {
     // A braille line longer than a page line is a paragraph typed or edited as
     // braille: wrap it at word spaces instead of cutting it.
     const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
-    if (e.translated.kind == BlockKind::braille && e.translated.lines.size() == 1 &&
+    if (e.translated.kind == document::BlockKind::braille && e.translated.lines.size() == 1 &&
         e.translated.lines.front().size() > static_cast<std::size_t>(width))
-        e.translated.lines = break_lines(e.translated.lines.front(), width, 0, 0);
+        e.translated.lines = layout::break_lines(e.translated.lines.front(), width, 0, 0);
 }
 
 bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress) {
@@ -101,7 +101,7 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     removed = std::min(removed, entries_.size() - first);
     const auto at = entries_.begin() + static_cast<std::ptrdiff_t>(first);
     const bool removed_breaks = std::any_of(at, at + static_cast<std::ptrdiff_t>(removed), [](const Entry& e) {
-        return e.block && e.block->kind == BlockKind::print_page_break;
+        return e.block && e.block->kind == document::BlockKind::print_page_break;
     });
     entries_.erase(at, at + static_cast<std::ptrdiff_t>(removed));
     std::vector<Entry> fresh(lines.size());
@@ -115,12 +115,12 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
         translate_entry(i);
         ++stats.lines_translated;
         const auto& b = entries_[i].block;
-        breaks_touched = breaks_touched || (b && b->kind == BlockKind::print_page_break);
+        breaks_touched = breaks_touched || (b && b->kind == document::BlockKind::print_page_break);
     }
     // A changed page break renumbers the unlabelled breaks after it, up to the next labelled one.
     for (std::size_t i = first + fresh.size(); i < entries_.size(); ++i) {
         const auto& b = entries_[i].block;
-        if (!b || b->kind != BlockKind::print_page_break) continue;
+        if (!b || b->kind != document::BlockKind::print_page_break) continue;
         if (parse_editor_line(entries_[i].line)->label.empty()) {
             translate_entry(i);
             ++stats.lines_translated;
@@ -134,7 +134,7 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
-    auto translator = Translator::open(tables);
+    auto translator = translate::Translator::open(tables);
     if (!translator) return std::unexpected(translator.error());
     translator_ = std::move(*translator);
     numbers_.clear();
@@ -144,11 +144,11 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
     return {};
 }
 
-Result<void> LiveLayout::set_options(LayoutOptions options) {
+Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
     options_ = std::move(options);
     for (std::size_t i = 0; i < entries_.size(); ++i)  // braille lines wrap to the new width
-        if (entries_[i].block && entries_[i].block->kind == BlockKind::braille) translate_entry(i);
+        if (entries_[i].block && entries_[i].block->kind == document::BlockKind::braille) translate_entry(i);
     paged_ = {};
     relayout_from(0);
     return {};
@@ -156,7 +156,7 @@ Result<void> LiveLayout::set_options(LayoutOptions options) {
 
 int LiveLayout::body_top(std::size_t page) const {
     const bool on_top = numbered_page(options_, page) &&
-                        options_.page_numbers == PageNumberPosition::top_right;
+                        options_.page_numbers == layout::PageNumberPosition::top_right;
     return options_.top_margin + (on_top ? 1 : 0);
 }
 
@@ -182,20 +182,20 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         base = 0;
     }
 
-    LayoutOptions opts = options_;
+    layout::LayoutOptions opts = options_;
     opts.first_page_number = options_.first_page_number + static_cast<int>(base);
-    Paginator pag(opts, [this](int n) { return number_cells(n); });
+    layout::Paginator pag(opts, [this](int n) { return number_cells(n); });
     if (k > 0 && base < paged_.pages.size()) {
-        const Page& top = paged_.pages[base];
-        TranslatedBlock mark;
-        mark.kind = BlockKind::print_page_break;
+        const layout::Page& top = paged_.pages[base];
+        translate::TranslatedBlock mark;
+        mark.kind = document::BlockKind::print_page_break;
         mark.label = cells_of_unicode(top.print_page);
         pag.add(mark);  // empty body: sets the print page without drawing a separator
         const auto lines = entries_[k].lines_before;
         if (lines > 0) {
             // The body lines already on the restart page, as the page holds them.
-            TranslatedBlock body;
-            body.kind = BlockKind::braille;
+            translate::TranslatedBlock body;
+            body.kind = document::BlockKind::braille;
             const auto row0 = static_cast<std::size_t>(body_top(base));
             const auto margin = static_cast<std::ptrdiff_t>(options_.left_margin);
             for (std::size_t r = row0; r < row0 + lines && r < top.lines.size(); ++r) {
@@ -206,7 +206,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
             pag.add(body);
         }
     }
-    std::vector<Page> old = std::move(paged_.pages);
+    std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();
     paged_.pages.reserve(old.size() + 8);
     for (std::size_t p = 0; p < base && p < old.size(); ++p) paged_.pages.push_back(std::move(old[p]));
@@ -265,19 +265,19 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     return stats;
 }
 
-BrailleLine LiveLayout::braille_of(std::size_t i) const {
+document::BrailleLine LiveLayout::braille_of(std::size_t i) const {
     const auto& e = entries_[i];
     if (!e.block || e.error) return {};
     switch (e.translated.kind) {
-        case BlockKind::braille: {
+        case document::BlockKind::braille: {
             // The line as written, before any wrapping (so columns match the print line).
-            BrailleLine all;
+            document::BrailleLine all;
             for (const auto& l : e.block->braille_lines) all.insert(all.end(), l.begin(), l.end());
             return all;
         }
-        case BlockKind::print_page_break:
+        case document::BlockKind::print_page_break:
             return e.translated.label;
-        case BlockKind::braille_page_break:
+        case document::BlockKind::braille_page_break:
             return {};
         default:
             return e.translated.cells;
@@ -299,14 +299,14 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
     const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
     const auto& tb = e.translated;
     if (e.block && !e.error &&
-        (tb.kind == BlockKind::paragraph || tb.kind == BlockKind::heading || tb.kind == BlockKind::list_item)) {
+        (tb.kind == document::BlockKind::paragraph || tb.kind == document::BlockKind::heading || tb.kind == document::BlockKind::list_item)) {
         int first = options_.paragraph_indent, runover = 0;
         bool centre = false;
-        if (tb.kind == BlockKind::heading) {
+        if (tb.kind == document::BlockKind::heading) {
             centre = options_.centre_headings && tb.level <= 2;
             first = runover = centre ? 0 : 4;
             if (options_.blank_line_before_heading && line > 0) ++line;
-        } else if (tb.kind == BlockKind::list_item) {
+        } else if (tb.kind == document::BlockKind::list_item) {
             first = std::min(2 * std::max(tb.level - 1, 0), width / 2);
             runover = first + options_.list_runover;
         }
@@ -314,7 +314,7 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
         cell = std::min(cell, tb.cells.size());
         std::size_t target = 0;
         for (std::size_t c = 0; c < cell; ++c) if (!tb.cells[c].blank()) ++target;
-        const auto lines = break_lines(tb.cells, width, first, runover);
+        const auto lines = layout::break_lines(tb.cells, width, first, runover);
         std::size_t seen = 0;
         for (std::size_t l = 0; l < lines.size(); ++l) {
             int pad = 0;
@@ -368,7 +368,7 @@ std::string LiveLayout::print_page_of(std::size_t page) const {
     if (entries_.empty()) return {};
     for (std::size_t i = line_at(page, 0) + 1; i-- > 0;) {
         const auto& b = entries_[i].block;
-        if (b && b->kind == BlockKind::print_page_break &&
+        if (b && b->kind == document::BlockKind::print_page_break &&
             (entries_[i].pages_before < page || (entries_[i].pages_before == page && entries_[i].lines_before == 0)))
             return b->label;
     }
@@ -378,12 +378,12 @@ std::string LiveLayout::print_page_of(std::size_t page) const {
 std::string LiveLayout::print_page_at(std::size_t line) const {
     for (std::size_t i = std::min(line + 1, entries_.size()); i-- > 0;) {
         const auto& b = entries_[i].block;
-        if (b && b->kind == BlockKind::print_page_break) return b->label;
+        if (b && b->kind == document::BlockKind::print_page_break) return b->label;
     }
     return "1";
 }
 
-std::string LiveLayout::back_translate(const BrailleLine& cells) const {
+std::string LiveLayout::back_translate(const document::BrailleLine& cells) const {
     auto text = translator_.back_translate(cells);
     return text ? utf32_to_utf8(*text) : std::string{};
 }

@@ -40,7 +40,7 @@ public:
     // Cancels a long build when it returns true; receives (done, total).
     using Progress = std::function<bool(std::size_t, std::size_t)>;
 
-    static Result<LiveLayout> create(const std::string& tables, LayoutOptions options);
+    static Result<LiveLayout> create(const std::string& tables, layout::LayoutOptions options);
 
     // Replaces everything; translates every line. Returns false when cancelled.
     bool reset(std::vector<std::string> lines, const Progress& progress = {});
@@ -48,15 +48,15 @@ public:
     RelayoutStats replace(std::size_t first, std::size_t removed, std::vector<std::string> lines);
     // New table or layout options: everything is translated and laid out again.
     Result<void> set_tables(const std::string& tables);
-    Result<void> set_options(LayoutOptions options);
+    Result<void> set_options(layout::LayoutOptions options);
 
-    [[nodiscard]] const PagedDocument& paged() const { return paged_; }
-    [[nodiscard]] const LayoutOptions& options() const { return options_; }
+    [[nodiscard]] const layout::PagedDocument& paged() const { return paged_; }
+    [[nodiscard]] const layout::LayoutOptions& options() const { return options_; }
     [[nodiscard]] const std::string& tables() const { return translator_.tables(); }
     [[nodiscard]] std::size_t line_count() const { return entries_.size(); }
     [[nodiscard]] const std::string& line(std::size_t i) const { return entries_[i].line; }
     // The braille of one editor line as the braille pane shows it (unwrapped).
-    [[nodiscard]] BrailleLine braille_of(std::size_t i) const;
+    [[nodiscard]] document::BrailleLine braille_of(std::size_t i) const;
     [[nodiscard]] const std::optional<Error>& error_of(std::size_t i) const { return entries_[i].error; }
     [[nodiscard]] std::size_t error_count() const;
 
@@ -70,20 +70,20 @@ public:
     [[nodiscard]] std::string print_page_at(std::size_t line) const;
 
     // What liblouis reads back from cells, for the proofreader and screen readers.
-    [[nodiscard]] std::string back_translate(const BrailleLine& cells) const;
-    [[nodiscard]] const Translator& translator() const { return translator_; }
+    [[nodiscard]] std::string back_translate(const document::BrailleLine& cells) const;
+    [[nodiscard]] const translate::Translator& translator() const { return translator_; }
 
 private:
     struct Entry {
         std::string line;
-        std::optional<Block> block;
-        TranslatedBlock translated;
+        std::optional<document::Block> block;
+        translate::TranslatedBlock translated;
         std::optional<Error> error;
         std::size_t pages_before = 0;  // paginator state before this entry
         std::size_t lines_before = 0;
     };
 
-    LiveLayout(Translator translator, LayoutOptions options)
+    LiveLayout(translate::Translator translator, layout::LayoutOptions options)
         : translator_(std::move(translator)), options_(std::move(options)) {}
 
     void translate_entry(std::size_t i);
@@ -92,15 +92,15 @@ private:
     // paginator reaches exactly the state it had there before (npos: never).
     RelayoutStats relayout_from(std::size_t first, std::size_t unchanged_from = npos);
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-    BrailleLine number_cells(int n);
+    document::BrailleLine number_cells(int n);
     [[nodiscard]] int body_top(std::size_t page) const;
     [[nodiscard]] int body_capacity(std::size_t page) const;
 
-    Translator translator_;
-    LayoutOptions options_;
+    translate::Translator translator_;
+    layout::LayoutOptions options_;
     std::vector<Entry> entries_;
-    PagedDocument paged_;
-    std::unordered_map<int, BrailleLine> numbers_;
+    layout::PagedDocument paged_;
+    std::unordered_map<int, document::BrailleLine> numbers_;
 };
 
 }  // namespace tactus::gui

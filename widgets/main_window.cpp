@@ -38,10 +38,7 @@
 #include "export/export.hpp"
 #include "find_replace.hpp"
 #include "motion_view.hpp"
-#if __has_include("link/link.hpp")
-#define TACTUS_GUI_HAS_PRINTER 1
 #include "printer_panel.hpp"
-#endif
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
@@ -85,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     editor_ = new EditorWidget(this);
     setCentralWidget(editor_);
-    auto empty = LiveLayout::create(kDefaultTable, {});
+    auto empty = LiveLayout::create(translate::kDefaultTable, {});
     if (empty) editor_->adopt(std::move(*empty));
 
     preview_ = new PreviewPanel(this);
@@ -102,14 +99,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(preview_dock, motion_dock);
     tabifyDockWidget(motion_dock, vibration_dock);
     tabifyDockWidget(vibration_dock, profile_dock);
-#ifdef TACTUS_GUI_HAS_PRINTER
     printer_ = new PrinterPanel(this);
     auto* printer_dock = add_dock(tr("Printer"), QStringLiteral("printerDock"), printer_, Qt::RightDockWidgetArea);
     tabifyDockWidget(profile_dock, printer_dock);
     connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
     connect(printer_, &PrinterPanel::job_finished, this,
             [this](int, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
-#endif
     preview_dock->raise();
     plan_timer_.setSingleShot(true);
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
@@ -142,7 +137,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(find_, &FindReplaceDialog::message, this, [this](const QString& m) { report(m); });
 
     auto* sp = preview_->preview();
-    sp->set_back_translator([this](const BrailleLine& cells) {
+    sp->set_back_translator([this](const document::BrailleLine& cells) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
@@ -167,7 +162,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     build_actions();
     build_menus();
     restore_settings();
-    apply_system_look(*this);
+    apply_system_look(*preview_);
     sp->set_document(&editor_->layout().paged());
 
     autosave_timer_.setInterval(QSettings().value(QStringLiteral("autosave/seconds"), 30).toInt() * 1000);
@@ -242,14 +237,12 @@ void MainWindow::build_actions() {
         show_panel(QStringLiteral("profile"));
         profile_->field(QStringLiteral("paper.width_mm"))->setFocus(Qt::ShortcutFocusReason);
     });
-#ifdef TACTUS_GUI_HAS_PRINTER
     focus_printer_ = make(tr("Go to p&rinter"), QKeySequence(tr("Ctrl+7")), QStringLiteral("focusPrinter"), [this] {
         show_panel(QStringLiteral("printer"));
         printer_->setFocus(Qt::ShortcutFocusReason);
         if (auto* first = printer_->findChild<QComboBox*>()) first->setFocus(Qt::ShortcutFocusReason);
     });
     emboss_ = make(tr("&Emboss"), QKeySequence(tr("Ctrl+P")), QStringLiteral("fileEmboss"), [this] { emboss(); });
-#endif
     shortcuts_ = make(tr("&Keyboard Shortcuts"), QKeySequence(tr("Ctrl+F1")), QStringLiteral("helpShortcuts"),
                       [this] { show_shortcuts(); });
     about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
@@ -308,7 +301,7 @@ void MainWindow::restore_settings() {
         }
         if (ok) editor_->braille_pane()->chord().set_mapping(m);
     }
-    const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(kDefaultTable)).toString();
+    const auto table = s.value(QStringLiteral("braille/table"), QString::fromLatin1(translate::kDefaultTable)).toString();
     if (table != QString::fromStdString(editor_->layout().tables())) set_table(table);
 }
 
@@ -508,14 +501,14 @@ bool MainWindow::export_to(const QString& path) {
     const auto suffix = QFileInfo(path).suffix().toLower();
     Result<std::string> bytes = fail("unknown export format", suffix.toStdString());
     if (suffix == QLatin1String("brf")) {
-        bytes = to_brf(paged);
+        bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {
-        PefMetadata meta;
+        exporter::PefMetadata meta;
         meta.title = QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString();
-        for (const auto& t : table_catalogue())
+        for (const auto& t : translate::table_catalogue())
             if (t.file == editor_->layout().tables()) meta.language = t.language_tag;
         meta.date = QDate::currentDate().toString(Qt::ISODate).toStdString();
-        bytes = to_pef(paged, meta);
+        bytes = exporter::to_pef(paged, meta);
     }
     if (!bytes) {
         report(tr("Cannot export %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(bytes.error().to_string())),
@@ -620,15 +613,10 @@ void MainWindow::show_panel(const QString& name) {
 }
 
 bool MainWindow::emboss() {
-#ifdef TACTUS_GUI_HAS_PRINTER
     if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) return false;
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
     printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
     return true;
-#else
-    report(tr("This build of Tactus has no embosser link"), true);
-    return false;
-#endif
 }
 
 QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {

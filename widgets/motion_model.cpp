@@ -6,13 +6,13 @@
 #include <cmath>
 
 #include "estimate/tune.hpp"
-#include "plan/motion.hpp"
+#include "motion/motion.hpp"
 
 namespace tactus::gui {
 namespace {
 
 // Appends one move (or the rest between moves) sampled in time.
-void add_move(Curves& c, const plan::MoveShape& shape, double t0, double from_mm, int sign, int samples) {
+void add_move(Curves& c, const motion::MoveShape& shape, double t0, double from_mm, int sign, int samples) {
     for (int k = 0; k <= samples; ++k) {
         const double tau = shape.duration * k / samples;
         const auto d = shape.at(tau);
@@ -39,7 +39,7 @@ double start_mm(const plan::Pass& pass, double steps_per_mm) {
 
 }  // namespace
 
-DocumentPlanPtr plan_document(const PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
+DocumentPlanPtr plan_document(const layout::PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
                               const std::function<bool(std::size_t, std::size_t)>& progress) {
     auto out = std::make_shared<DocumentPlan>();
     out->profile = p;
@@ -66,7 +66,7 @@ DocumentPlanPtr plan_document(const PagedDocument& doc, const profile::PrinterPr
     return out;
 }
 
-QFuture<DocumentPlanPtr> plan_document_async(PagedDocument doc, profile::PrinterProfile p, std::size_t keep) {
+QFuture<DocumentPlanPtr> plan_document_async(layout::PagedDocument doc, profile::PrinterProfile p, std::size_t keep) {
     return QtConcurrent::run([doc = std::move(doc), p = std::move(p), keep](QPromise<DocumentPlanPtr>& promise) {
         promise.setProgressRange(0, 100);
         promise.addResult(plan_document(doc, p, keep, [&](std::size_t i, std::size_t n) {
@@ -110,14 +110,14 @@ Curves pass_curves_with(const plan::Pass& pass, const profile::PrinterProfile& p
                         int samples) {
     Curves c;
     const double spm = p.carriage.steps_per_mm;
-    const plan::Limits lim{p.carriage.v_max_mm_s, p.carriage.a_max_mm_s2, p.carriage.j_max_mm_s3};
+    const motion::Limits lim{p.carriage.v_max_mm_s, p.carriage.a_max_mm_s2, p.carriage.j_max_mm_s3};
     double t = 0;
     double at = start_mm(pass, spm);
     add_rest(c, 0, at);
     for (std::size_t i = 0; i < pass.strikes.size() && i < pass.moves.size(); ++i) {
         const auto& move = pass.moves[i];
         if (move.steps != 0) {
-            const auto m = plan::make_move(shape, std::abs(move.steps) / spm, lim);
+            const auto m = motion::make_move(shape, std::abs(move.steps) / spm, lim);
             add_move(c, m, t, at, move.steps > 0 ? 1 : -1, samples);
             t += m.duration;
         }

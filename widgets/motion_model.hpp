@@ -28,9 +28,9 @@ struct DocumentPlan {
 using DocumentPlanPtr = std::shared_ptr<DocumentPlan>;
 
 // Plans every sheet; keeps the first `keep` sheet plans for the views.
-DocumentPlanPtr plan_document(const PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
+DocumentPlanPtr plan_document(const layout::PagedDocument& doc, const profile::PrinterProfile& p, std::size_t keep,
                               const std::function<bool(std::size_t, std::size_t)>& progress = {});
-QFuture<DocumentPlanPtr> plan_document_async(PagedDocument doc, profile::PrinterProfile p, std::size_t keep);
+QFuture<DocumentPlanPtr> plan_document_async(layout::PagedDocument doc, profile::PrinterProfile p, std::size_t keep);
 
 struct Curves {
     std::vector<double> t;                   // s from the start of the pass

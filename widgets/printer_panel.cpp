@@ -220,12 +220,12 @@ void PrinterPanel::poll_status() {
                                                     QString::fromStdString(explain_status(*s))));
 }
 
-int PrinterPanel::enqueue(const QString& name, const PagedDocument& pages, const profile::PrinterProfile& p,
+int PrinterPanel::enqueue(const QString& name, const layout::PagedDocument& pages, const profile::PrinterProfile& p,
                           std::size_t start_sheet) {
     QueuedJob j;
     j.id = next_id_++;
     j.name = name;
-    j.pages = std::make_shared<const PagedDocument>(pages);
+    j.pages = std::make_shared<const layout::PagedDocument>(pages);
     j.profile = p;
     j.start_sheet = start_sheet;
     j.resume_sheet = start_sheet;

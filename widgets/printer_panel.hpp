@@ -27,7 +27,7 @@ struct QueuedJob {
     enum class State { queued, running, paused, done, failed, cancelled };
     int id = 0;
     QString name;
-    std::shared_ptr<const PagedDocument> pages;
+    std::shared_ptr<const layout::PagedDocument> pages;
     profile::PrinterProfile profile;
     std::size_t start_sheet = 1;
     State state = State::queued;
@@ -49,7 +49,7 @@ public:
     [[nodiscard]] QString selected_device() const;
     void select_device(const QString& device);
     // Adds a job; it starts when the printer is connected and free.
-    int enqueue(const QString& name, const PagedDocument& pages, const profile::PrinterProfile& p,
+    int enqueue(const QString& name, const layout::PagedDocument& pages, const profile::PrinterProfile& p,
                 std::size_t start_sheet = 1);
     [[nodiscard]] const std::vector<QueuedJob>& jobs() const { return jobs_; }
     [[nodiscard]] QString fault_text() const;

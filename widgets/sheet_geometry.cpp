@@ -11,7 +11,7 @@ namespace {
 constexpr int kColumn[8] = {0, 0, 0, 1, 1, 1, 0, 1};
 constexpr int kRow[8] = {0, 1, 2, 0, 1, 2, 3, 3};
 
-std::vector<DotPoint> dots(const Page& page, bool back, const SheetGeometry& g) {
+std::vector<DotPoint> dots(const layout::Page& page, bool back, const SheetGeometry& g) {
     std::vector<DotPoint> out;
     for (std::size_t l = 0; l < page.lines.size(); ++l) {
         const auto& line = page.lines[l];
@@ -69,15 +69,15 @@ SheetGeometry sheet_geometry(const profile::PrinterProfile& p) {
     return g;
 }
 
-std::vector<DotPoint> front_dots(const Page& page, const SheetGeometry& g) {
+std::vector<DotPoint> front_dots(const layout::Page& page, const SheetGeometry& g) {
     return dots(page, false, g);
 }
 
-std::vector<DotPoint> back_dots(const Page& page, const SheetGeometry& g) {
+std::vector<DotPoint> back_dots(const layout::Page& page, const SheetGeometry& g) {
     return dots(page, true, g);
 }
 
-std::vector<DotConflict> find_conflicts(const Sheet& sheet, const SheetGeometry& g) {
+std::vector<DotConflict> find_conflicts(const layout::Sheet& sheet, const SheetGeometry& g) {
     std::vector<DotConflict> out;
     if (!sheet.front || !sheet.back || g.min_separation_mm <= 0) return out;
     // Bucket front dots in a grid of min_separation squares: each back dot then

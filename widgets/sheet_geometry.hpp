@@ -41,9 +41,9 @@ struct DotPoint {
 };
 
 // Dot centres of a page on the front side.
-std::vector<DotPoint> front_dots(const Page& page, const SheetGeometry& g);
+std::vector<DotPoint> front_dots(const layout::Page& page, const SheetGeometry& g);
 // Dot centres of a page embossed on the back, in front-view coordinates.
-std::vector<DotPoint> back_dots(const Page& page, const SheetGeometry& g);
+std::vector<DotPoint> back_dots(const layout::Page& page, const SheetGeometry& g);
 // Centre of dot 1's position of a cell, front or back view.
 DotPoint cell_origin(int line, int cell, bool back, const SheetGeometry& g);
 
@@ -53,6 +53,6 @@ struct DotConflict {
     double distance_mm = 0;
 };
 // Front/back dot pairs closer than the geometry allows.
-std::vector<DotConflict> find_conflicts(const Sheet& sheet, const SheetGeometry& g);
+std::vector<DotConflict> find_conflicts(const layout::Sheet& sheet, const SheetGeometry& g);
 
 }  // namespace tactus::gui

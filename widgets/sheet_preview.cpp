@@ -27,7 +27,7 @@ Palette palette_for(bool high_contrast) {
             QColor(0, 90, 200), QColor(60, 60, 60)};
 }
 
-QString cell_text(Cell c) { return QString::fromStdString(dot_numbers(c)); }
+QString cell_text(document::Cell c) { return QString::fromStdString(document::dot_numbers(c)); }
 
 // One dot drawn once per size and look, then blitted: a sheet holds thousands of
 // dots and the preview repaints on every keystroke.
@@ -59,7 +59,7 @@ QPixmap dot_sprite(double radius, bool raised, const Palette& pal, bool high_con
 
 }  // namespace
 
-void paint_sheet(QPainter& p, const Sheet& sheet, const SheetGeometry& g, const PaintOptions& o,
+void paint_sheet(QPainter& p, const layout::Sheet& sheet, const SheetGeometry& g, const PaintOptions& o,
                  double s) {
     const auto pal = palette_for(o.high_contrast);
     p.save();
@@ -72,7 +72,7 @@ void paint_sheet(QPainter& p, const Sheet& sheet, const SheetGeometry& g, const 
     QFont f = p.font();
     f.setPixelSize(std::max(8, static_cast<int>(4.0 * s)));
     p.setFont(f);
-    const auto label = [](const Page* page) {
+    const auto label = [](const layout::Page* page) {
         return page ? QString::number(page->braille_number) : QStringLiteral("-");
     };
     const QString side = o.mode == SideMode::front ? QObject::tr("front")
@@ -91,7 +91,7 @@ void paint_sheet(QPainter& p, const Sheet& sheet, const SheetGeometry& g, const 
         const auto pit = dot_sprite(r, false, pal, o.high_contrast);
         for (const auto& d : back_dots(*sheet.back, g)) blit(pit, d.x_mm * s, d.y_mm * s);
     }
-    const Page* shown = o.mode == SideMode::back ? sheet.back : sheet.front;
+    const layout::Page* shown = o.mode == SideMode::back ? sheet.back : sheet.front;
     if (shown) {
         const auto bump = dot_sprite(r, true, pal, o.high_contrast);
         for (const auto& d : front_dots(*shown, g)) blit(bump, d.x_mm * s, d.y_mm * s);
@@ -137,7 +137,7 @@ QSize SheetPreview::sizeHint() const {
             static_cast<int>(geometry_.paper_height_mm * px_per_mm())};
 }
 
-void SheetPreview::set_document(const PagedDocument* doc) {
+void SheetPreview::set_document(const layout::PagedDocument* doc) {
     doc_ = doc;
     sheet_ = std::clamp<std::size_t>(sheet_, 1, std::max<std::size_t>(1, sheet_count()));
     refresh();
@@ -192,12 +192,12 @@ void SheetPreview::set_zoom(double zoom) {
 std::size_t SheetPreview::cursor_page() const {
     if (!doc_ || doc_->pages.empty()) return static_cast<std::size_t>(-1);
     const auto s = doc_->sheet(sheet_);
-    const Page* p = options_.cursor_on_back ? s.back : s.front;
+    const layout::Page* p = options_.cursor_on_back ? s.back : s.front;
     if (!p) p = s.front;
     return static_cast<std::size_t>(p - doc_->pages.data());
 }
 
-const Page* SheetPreview::cursor_side_page() const {
+const layout::Page* SheetPreview::cursor_side_page() const {
     if (!doc_ || doc_->pages.empty()) return nullptr;
     const auto s = doc_->sheet(sheet_);
     return options_.cursor_on_back ? s.back : s.front;
@@ -221,7 +221,7 @@ void SheetPreview::show_position(std::size_t page, int line, int cell) {
 }
 
 QString SheetPreview::cursor_description() const {
-    const Page* page = cursor_side_page();
+    const layout::Page* page = cursor_side_page();
     const QString where = tr("Sheet %1 %2, line %3, cell %4")
                               .arg(sheet_)
                               .arg(options_.cursor_on_back ? tr("back") : tr("front"))
@@ -238,7 +238,7 @@ QString SheetPreview::cursor_description() const {
         std::size_t a = c, b = c;
         while (a > 0 && !line[a - 1].blank()) --a;
         while (b + 1 < line.size() && !line[b + 1].blank()) ++b;
-        const BrailleLine word(line.begin() + static_cast<std::ptrdiff_t>(a),
+        const document::BrailleLine word(line.begin() + static_cast<std::ptrdiff_t>(a),
                                line.begin() + static_cast<std::ptrdiff_t>(b + 1));
         text += tr(", in the word \u201c%1\u201d").arg(back_translate_(word));
     }
@@ -265,7 +265,7 @@ void SheetPreview::cursor_changed() {
 }
 
 void SheetPreview::move_cursor(int dline, int dcell) {
-    const auto& g = doc_ ? doc_->geometry : PageGeometry{};
+    const auto& g = doc_ ? doc_->geometry : layout::PageGeometry{};
     options_.cursor_line = std::clamp(options_.cursor_line + dline, 0, g.lines_per_page - 1);
     options_.cursor_cell = std::clamp(options_.cursor_cell + dcell, 0, g.cells_per_line - 1);
     update();
@@ -273,7 +273,7 @@ void SheetPreview::move_cursor(int dline, int dcell) {
 }
 
 void SheetPreview::keyPressEvent(QKeyEvent* e) {
-    const auto& g = doc_ ? doc_->geometry : PageGeometry{};
+    const auto& g = doc_ ? doc_->geometry : layout::PageGeometry{};
     switch (e->key()) {
         case Qt::Key_Left: move_cursor(0, -1); break;
         case Qt::Key_Right: move_cursor(0, 1); break;
@@ -368,9 +368,9 @@ public:
         if (l >= lines.size()) return {};
         auto line = lines[l];
         line.resize(static_cast<std::size_t>(doc->geometry.cells_per_line));
-        return QString::fromStdString(to_unicode_text(line));
+        return QString::fromStdString(document::to_unicode_text(line));
     }
-    static const PagedDocument* doc_of(const SheetPreview* w) { return w->document(); }
+    static const layout::PagedDocument* doc_of(const SheetPreview* w) { return w->document(); }
 
     // QAccessibleTextInterface
     void selection(int, int* start, int* end) const override { *start = *end = 0; }
@@ -394,13 +394,13 @@ public:
     }
 };
 
-const PagedDocument* SheetPreview::document() const { return doc_; }
+const layout::PagedDocument* SheetPreview::document() const { return doc_; }
 
 QAccessibleInterface* make_accessible_sheet_preview(SheetPreview* preview) {
     return new AccessibleSheetPreview(preview);
 }
 
-bool print_to_pdf(const PagedDocument& doc, const SheetGeometry& g, SideMode mode,
+bool print_to_pdf(const layout::PagedDocument& doc, const SheetGeometry& g, SideMode mode,
                   const QString& path, QString* error) {
     QPdfWriter pdf(path);
     pdf.setTitle(QObject::tr("Tactus interpoint proof"));

@@ -27,7 +27,7 @@ struct PaintOptions {
 };
 
 // Draws one sheet at `px_per_mm` on a painter (widget, PDF or image).
-void paint_sheet(QPainter& p, const Sheet& sheet, const SheetGeometry& g, const PaintOptions& o,
+void paint_sheet(QPainter& p, const layout::Sheet& sheet, const SheetGeometry& g, const PaintOptions& o,
                  double px_per_mm);
 
 class SheetPreview : public QWidget {
@@ -36,9 +36,9 @@ public:
     explicit SheetPreview(QWidget* parent = nullptr);
 
     // The document is borrowed: the owner calls set_document again after every change.
-    void set_document(const PagedDocument* doc);
+    void set_document(const layout::PagedDocument* doc);
     void set_geometry(const SheetGeometry& g);
-    void set_back_translator(std::function<QString(const BrailleLine&)> f) { back_translate_ = std::move(f); }
+    void set_back_translator(std::function<QString(const document::BrailleLine&)> f) { back_translate_ = std::move(f); }
 
     [[nodiscard]] std::size_t sheet() const { return sheet_; }
     [[nodiscard]] std::size_t sheet_count() const;
@@ -54,7 +54,7 @@ public:
     // What a screen reader hears for the cell under the cursor.
     [[nodiscard]] QString cursor_description() const;
     [[nodiscard]] QString summary() const;
-    [[nodiscard]] const PagedDocument* document() const;
+    [[nodiscard]] const layout::PagedDocument* document() const;
 
     QSize sizeHint() const override;
 
@@ -83,24 +83,24 @@ protected:
 
 private:
     [[nodiscard]] double px_per_mm() const;
-    [[nodiscard]] const Page* cursor_side_page() const;
+    [[nodiscard]] const layout::Page* cursor_side_page() const;
     void move_cursor(int dline, int dcell);
     void cursor_changed();
     void refresh();
 
-    const PagedDocument* doc_ = nullptr;
+    const layout::PagedDocument* doc_ = nullptr;
     SheetGeometry geometry_;
     PaintOptions options_;
     std::size_t sheet_ = 1;
     double zoom_ = 1.0;
     std::vector<DotConflict> conflicts_;
-    std::function<QString(const BrailleLine&)> back_translate_;
+    std::function<QString(const document::BrailleLine&)> back_translate_;
 };
 
 QAccessibleInterface* make_accessible_sheet_preview(SheetPreview* preview);
 
 // Every sheet of the document, one PDF page each, as the preview shows it.
-bool print_to_pdf(const PagedDocument& doc, const SheetGeometry& g, SideMode mode,
+bool print_to_pdf(const layout::PagedDocument& doc, const SheetGeometry& g, SideMode mode,
                   const QString& path, QString* error);
 
 }  // namespace tactus::gui

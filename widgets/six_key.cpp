@@ -28,9 +28,9 @@ bool SixKeyChord::press(int key, bool auto_repeat) {
     return true;
 }
 
-std::optional<Cell> SixKeyChord::release(int key, bool auto_repeat) {
+std::optional<document::Cell> SixKeyChord::release(int key, bool auto_repeat) {
     if (auto_repeat || !held_.erase(key) || !held_.empty()) return std::nullopt;
-    const Cell cell{dots_};
+    const document::Cell cell{dots_};
     dots_ = 0;
     return cell;
 }

@@ -26,7 +26,7 @@ public:
     [[nodiscard]] bool is_chord_key(int key) const;
     bool press(int key, bool auto_repeat);
     // The committed cell when this release ends the chord.
-    std::optional<Cell> release(int key, bool auto_repeat);
+    std::optional<document::Cell> release(int key, bool auto_repeat);
     // Focus lost mid-chord: forget it rather than commit half a cell.
     void cancel();
     [[nodiscard]] bool active() const { return !held_.empty(); }

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "main_window.hpp"
+#include "preview_panel.hpp"
 #include "preview_panel.hpp"
 
 namespace tactus::gui {
@@ -36,10 +36,9 @@ double system_text_scale() {
     return pt > 0 ? std::clamp(pt / 10.0, 1.0, 4.0) : 1.0;
 }
 
-void apply_system_look(MainWindow& window) {
-    auto* panel = window.preview_panel();
-    if (system_high_contrast()) panel->high_contrast_action()->setChecked(true);
-    panel->preview()->set_zoom(system_text_scale());
+void apply_system_look(PreviewPanel& panel) {
+    if (system_high_contrast()) panel.high_contrast_action()->setChecked(true);
+    panel.preview()->set_zoom(system_text_scale());
 }
 
 }  // namespace tactus::gui

@@ -7,11 +7,12 @@ class QWidget;
 
 namespace tactus::gui {
 
-class MainWindow;
+class PreviewPanel;
 
 [[nodiscard]] bool system_high_contrast();
 // Preview zoom matching the system font size (1.0 at 10 pt).
 [[nodiscard]] double system_text_scale();
-void apply_system_look(MainWindow& window);
+// Applies both to the preview, the one view that follows them.
+void apply_system_look(PreviewPanel& panel);
 
 }  // namespace tactus::gui

@@ -10,13 +10,13 @@ TablePicker::TablePicker(QWidget* parent) : QComboBox(parent) {
     setAccessibleName(tr("Braille table"));
     setAccessibleDescription(tr("The language and braille code the print is translated with"));
     setToolTip(accessibleDescription());
-    for (const auto& t : table_catalogue()) {
+    for (const auto& t : translate::table_catalogue()) {
         const auto language = QString::fromStdString(t.language.empty() ? t.language_tag : t.language);
         const auto name = QString::fromStdString(t.name.empty() ? t.file : t.name);
         addItem(QStringLiteral("%1 \u2014 %2").arg(language, name), QString::fromStdString(t.file));
         setItemData(count() - 1, QString::fromStdString(t.file), Qt::ToolTipRole);
     }
-    set_table(QString::fromLatin1(kDefaultTable));
+    set_table(QString::fromLatin1(translate::kDefaultTable));
     connect(this, &QComboBox::activated, this, [this](int) { Q_EMIT table_chosen(table()); });
 }
 

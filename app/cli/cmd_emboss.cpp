@@ -8,9 +8,9 @@
 
 #include "command.hpp"
 #include "emboss_queue.hpp"
-#include "encode/controller_config.hpp"
+#include "profile/controller_config.hpp"
 #include "encode/frame.hpp"
-#include "encode/plan_json.hpp"
+#include "plan/plan_file.hpp"
 #include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "link/link.hpp"
@@ -39,20 +39,20 @@ struct EmbossArgs {
 
 struct Prepared {
     plan::JobPlan plan;
-    encode::ControllerConfig config;
+    machine::ControllerConfig config;
 };
 
 Prepared prepare(const EmbossArgs& a) {
     Prepared out;
     if (a.plan_file) {
-        out.plan = require(encode::load_plan(a.layout.file));
+        out.plan = require(plan::load_plan(a.layout.file));
         return out;
     }
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
-    const auto doc = require(lay_out_file(a.layout.file, options));
+    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
     out.plan = require(plan::plan_job(doc, profile));
-    out.config = encode::controller_config(profile);
+    out.config = profile::controller_config(profile);
     return out;
 }
 

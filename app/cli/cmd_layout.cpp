@@ -29,7 +29,7 @@ std::string today() {
     return buf;
 }
 
-void print_summary(std::ostream& out, const PagedDocument& doc, const PipelineOptions& o,
+void print_summary(std::ostream& out, const layout::PagedDocument& doc, const pipeline::PipelineOptions& o,
                    const std::string& file) {
     std::size_t cells = 0;
     std::size_t dots = 0;
@@ -37,7 +37,7 @@ void print_summary(std::ostream& out, const PagedDocument& doc, const PipelineOp
     for (const auto& p : doc.pages)
         for (const auto& l : p.lines) {
             if (!l.empty()) ++lines;
-            for (Cell c : l) {
+            for (document::Cell c : l) {
                 if (!c.blank()) ++cells;
                 dots += static_cast<std::size_t>(__builtin_popcount(c.dots));
             }
@@ -56,7 +56,7 @@ void print_summary(std::ostream& out, const PagedDocument& doc, const PipelineOp
 
 void run_layout(const LayoutCommandArgs& a) {
     const auto options = a.layout.pipeline_options();
-    const auto doc = require(lay_out_file(a.layout.file, options));
+    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
     for (const auto& w : doc.warnings) std::cerr << "tactus-cli: " << a.layout.file << ": " << w << '\n';
     if (a.summary) {
         print_summary(std::cout, doc, options, a.layout.file);
@@ -64,15 +64,15 @@ void run_layout(const LayoutCommandArgs& a) {
     }
     if (a.to.empty())
         throw CLI::RequiredError("--to (or --summary)");
-    const auto format = require(parse_export_format(a.to), exit_usage);
-    PefMetadata meta;
+    const auto format = require(exporter::parse_export_format(a.to), exit_usage);
+    exporter::PefMetadata meta;
     meta.title = std::filesystem::path(a.layout.file).stem().string();
     meta.date = today();
     if (a.output.empty() || a.output == "-") {
-        require(write_document(doc, format, meta, std::cout));
+        require(exporter::write_document(doc, format, meta, std::cout));
         return;
     }
-    require(export_to_file(doc, format, meta, a.output), exit_failure);
+    require(exporter::export_to_file(doc, format, meta, a.output), exit_failure);
     std::cerr << "wrote " << a.output << ": " << doc.pages.size() << " pages on "
               << doc.sheet_count() << " sheets (" << doc.geometry.cells_per_line << "x"
               << doc.geometry.lines_per_page << ", "

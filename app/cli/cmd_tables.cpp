@@ -17,7 +17,7 @@ void add_tables_command(CLI::App& app) {
     cmd->add_flag("--json", *json, "Machine-readable output");
     cmd->add_flag("--all", *all, "Also list tables Tactus is not tested with");
     cmd->callback([json, all] {
-        const auto tables = table_catalogue();
+        const auto tables = translate::table_catalogue();
         if (*json) {
             auto out = nlohmann::json::array();
             for (const auto& t : tables) {

@@ -14,7 +14,7 @@ namespace tactus::cli {
 namespace {
 
 struct TranslateArgs {
-    std::string tables = kDefaultTable;
+    std::string tables = translate::kDefaultTable;
     std::string to = "unicode";
     std::string file = "-";
     bool back = false;
@@ -22,7 +22,7 @@ struct TranslateArgs {
 
 void run_translate(const TranslateArgs& a) {
     const auto display = a.to == "brf" ? "en-us-brf.dis" : "unicode.dis";
-    const auto translator = require(Translator::open(a.tables));
+    const auto translator = require(translate::Translator::open(a.tables));
     std::ifstream file;
     if (a.file != "-") {
         file.open(a.file, std::ios::binary);
@@ -41,11 +41,11 @@ void run_translate(const TranslateArgs& a) {
         if (!text) fail_with(exit_bad_input, located(text.error(), where));
         Result<std::u32string> braille;
         if (a.back) {
-            BrailleLine cells;
+            document::BrailleLine cells;
             for (char32_t c : *text) {
-                Cell cell;
-                if (Cell::is_unicode_braille(c)) cell = Cell::from_unicode(c);
-                else if (c > 0x7F || !cell_from_brf(static_cast<char>(c), cell))
+                document::Cell cell;
+                if (document::Cell::is_unicode_braille(c)) cell = document::Cell::from_unicode(c);
+                else if (c > 0x7F || !document::cell_from_brf(static_cast<char>(c), cell))
                     fail_with(exit_bad_input, Error{"not braille (Unicode braille or Braille ASCII expected)", where});
                 cells.push_back(cell);
             }

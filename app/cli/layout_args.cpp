@@ -10,7 +10,7 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
     std::string presets;
-    for (const auto& p : layout_presets()) presets += "\n  " + p.name + ": " + p.description;
+    for (const auto& p : layout::layout_presets()) presets += "\n  " + p.name + ": " + p.description;
     cmd.add_option("--preset", preset, "Page format preset (default a4):" + presets);
     cmd.add_option("--cells", cells, "Cells per line (default 27)")->check(CLI::Range(4, 200));
     cmd.add_option("--lines", lines, "Lines per page (default 24)")->check(CLI::Range(3, 200));
@@ -33,13 +33,13 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
                    "Text encoding override (e.g. UTF-8, Big5, GB18030, windows-1252); default: detect");
 }
 
-PipelineOptions LayoutArgs::pipeline_options() const {
-    PipelineOptions o;
+pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
+    pipeline::PipelineOptions o;
     o.tables = tables;
     o.import.encoding = encoding;
-    o.import.format = require(parse_source_format(format), exit_usage);
+    o.import.format = require(import::parse_source_format(format), exit_usage);
     if (!preset.empty()) {
-        const auto p = find_layout_preset(preset);
+        const auto p = layout::find_layout_preset(preset);
         if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset"});
         o.layout.geometry = p->geometry;
     }
@@ -47,7 +47,7 @@ PipelineOptions LayoutArgs::pipeline_options() const {
     if (cells > 0) o.layout.geometry.cells_per_line = cells;
     if (lines > 0) o.layout.geometry.lines_per_page = lines;
     o.layout.geometry.eight_dot = eight_dot;
-    o.layout.page_numbers = require(parse_page_number_position(page_numbers), exit_usage);
+    o.layout.page_numbers = require(layout::parse_page_number_position(page_numbers), exit_usage);
     o.layout.print_page_indicators = !no_print_pages;
     o.layout.paragraph_indent = indent;
     o.layout.left_margin = margin_left;
@@ -58,7 +58,7 @@ PipelineOptions LayoutArgs::pipeline_options() const {
     return o;
 }
 
-PipelineOptions LayoutArgs::pipeline_options(const profile::PrinterProfile& machine) const {
+pipeline::PipelineOptions LayoutArgs::pipeline_options(const profile::PrinterProfile& machine) const {
     auto o = pipeline_options();
     auto& g = o.layout.geometry;
     g.interpoint = machine.geometry.interpoint;

@@ -13,7 +13,7 @@ namespace tactus::cli {
 
 struct LayoutArgs {
     std::string file;
-    std::string tables = kDefaultTable;
+    std::string tables = translate::kDefaultTable;
     std::string preset;
     std::string format = "auto";
     std::string encoding;
@@ -28,10 +28,10 @@ struct LayoutArgs {
 
     void add_to(CLI::App& cmd, bool with_interpoint = true);
     // Validated options; a bad value ends the command with a usage error.
-    [[nodiscard]] PipelineOptions pipeline_options() const;
+    [[nodiscard]] pipeline::PipelineOptions pipeline_options() const;
     // For embossing and planning: the page format is the machine's unless the
     // command line overrides it (the planner then refuses pages that do not fit).
-    [[nodiscard]] PipelineOptions pipeline_options(const profile::PrinterProfile& machine) const;
+    [[nodiscard]] pipeline::PipelineOptions pipeline_options(const profile::PrinterProfile& machine) const;
 };
 
 }  // namespace tactus::cli

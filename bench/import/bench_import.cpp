@@ -51,7 +51,7 @@ void run_case(const char* label, bool latin1) {
     }
     const long before = peak_rss_kib();
     const auto start = std::chrono::steady_clock::now();
-    const auto doc = tactus::import_file(path);
+    const auto doc = tactus::import::import_file(path);
     const auto seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::filesystem::remove(path);

@@ -59,11 +59,11 @@ int main(int argc, char** argv) {
 
     const double lou = time_lou_translate(book, table);
 
-    PipelineOptions options;
+    pipeline::PipelineOptions options;
     options.tables = table;
     options.layout.geometry.interpoint = true;
     const auto t0 = Clock::now();
-    auto doc = lay_out_file(book, options);
+    auto doc = pipeline::lay_out_file(book, options);
     if (!doc) {
         std::fprintf(stderr, "%s\n", doc.error().to_string().c_str());
         return 1;
@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
     const auto out_dir = std::filesystem::temp_directory_path();
     const auto brf_path = out_dir / "tactus-bench-kjv.brf";
     const auto pef_path = out_dir / "tactus-bench-kjv.pef";
-    auto brf = export_to_file(*doc, ExportFormat::brf, {}, brf_path);
-    auto pef = export_to_file(*doc, ExportFormat::pef, {}, pef_path);
+    auto brf = exporter::export_to_file(*doc, exporter::ExportFormat::brf, {}, brf_path);
+    auto pef = exporter::export_to_file(*doc, exporter::ExportFormat::pef, {}, pef_path);
     const double total = seconds_since(t0);
     if (!brf || !pef) {
         std::fprintf(stderr, "%s\n", (brf ? pef : brf).error().to_string().c_str());

@@ -17,15 +17,13 @@
 #include "encode/stream.hpp"
 #include "link/link.hpp"
 #include "test_plans.hpp"
-#include "transport/sim_transport.hpp"
+#include "controller/sim_transport.hpp"
 
-#if __has_include("plan/planner.hpp") && __has_include("profile/profile_json.hpp")
-#define BENCH_HAS_PLANNER 1
 #include "export/export.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
+#include "profile/controller_config.hpp"
 #include "profile/profile_json.hpp"
-#endif
 
 using namespace tactus;
 
@@ -78,11 +76,11 @@ struct Starvation {
 
 // Motion in simulated real time; the link at `baud`. Waiting before the first
 // op and after the last is not starvation; waiting in between is.
-Starvation starvation(int baud, const plan::JobPlan& plan, const encode::ControllerConfig& cfg) {
+Starvation starvation(int baud, const plan::JobPlan& plan, const machine::ControllerConfig& cfg) {
     auto ctl = std::make_shared<controller::SimController>();
-    transport::SimLineOptions line;
+    controller::SimLineOptions line;
     line.baud = baud;
-    auto tr = std::make_unique<transport::SimTransport>(ctl, line);
+    auto tr = std::make_unique<controller::SimTransport>(ctl, line);
     auto* raw = tr.get();
     auto link = link::Link::over(std::move(tr));
     (void)link.hello();
@@ -104,7 +102,7 @@ Starvation starvation(int baud, const plan::JobPlan& plan, const encode::Control
 // from 460800 baud down in steps of 4 %, and the answer is the last one before
 // the first that waits (waiting is not strictly monotonic in the rate: the
 // phase of ACKs against moves shifts, so a bisection could land in a gap).
-int no_wait_baud(const plan::JobPlan& plan, const encode::ControllerConfig& cfg) {
+int no_wait_baud(const plan::JobPlan& plan, const machine::ControllerConfig& cfg) {
     int last_clean = -1;
     for (double baud = 460800; baud >= 1200; baud *= 0.96) {
         if (starvation(static_cast<int>(baud), plan, cfg).waits > 0) break;
@@ -117,14 +115,14 @@ int no_wait_baud(const plan::JobPlan& plan, const encode::ControllerConfig& cfg)
 
 int main() {
     std::printf("Tactus link benchmark (frame payload <= %zu B, ring %zu B, window %zu frames)\n\n",
-                encode::kMaxPayload, controller::ram::kRingBytes, controller::ram::kWindowFrames);
+                encode::kMaxPayload, machine::ram::kRingBytes, machine::ram::kWindowFrames);
 
     std::printf("1. Link efficiency over the pty simulator (payload / raw line capacity, 8N1)\n");
     std::printf("   %-8s %-10s %-10s %-10s %-12s %s\n", "baud", "windowed", "stop-wait", "ratio", "payload B", "seconds");
     for (const int baud : {9600, 19200, 57600, 115200}) {
         // About three seconds of line time per run.
         const auto passes = static_cast<std::size_t>(std::max(4, baud / 10 * 3 / 260));
-        const auto plan = testing::make_plan(1, passes, 24, 5);
+        const auto plan = test::make_plan(1, passes, 24, 5);
         const auto ours = over_pty(baud, plan, {});
         link::LinkOptions marlin;
         marlin.max_window_frames = 1;  // one line in flight, wait for "ok"
@@ -134,18 +132,17 @@ int main() {
                     sw.efficiency > 0 ? ours.efficiency / sw.efficiency : 0.0, ours.payload, ours.seconds);
     }
 
-    plan::JobPlan sheet_plan = testing::make_plan(1, 144, 54, 8);  // 24 lines x 3 rows x 2 sides
-    encode::ControllerConfig cfg;
+    plan::JobPlan sheet_plan = test::make_plan(1, 144, 54, 8);  // 24 lines x 3 rows x 2 sides
+    machine::ControllerConfig cfg;
     std::size_t brf_bytes = 2 * 24 * (27 + 2) + 2;  // two full pages, CR LF per line, form feeds
     const char* source = "synthetic full sheet (144 dot rows, up to 54 dots each)";
     double step_tolerance = 0;
-#ifdef BENCH_HAS_PLANNER
     {
         auto profile = profile::default_profile();
         if (const char* f = std::getenv("TACTUS_STEP_TOLERANCE")) profile.motion.step_tolerance = std::atof(f);
-        PipelineOptions po;
+        pipeline::PipelineOptions po;
         po.layout.geometry.interpoint = true;
-        auto doc = lay_out_file(TACTUS_SAMPLE, po);
+        auto doc = pipeline::lay_out_file(TACTUS_SAMPLE, po);
         if (doc) {
             auto p = plan::plan_job(*doc, profile);
             if (p && !p->sheets.empty()) {
@@ -153,25 +150,14 @@ int main() {
                 step_tolerance = profile.motion.step_tolerance;
                 sheet_plan.sheets.resize(1);
                 source = "welcome.md sheet 1, planned with the default profile";
-                cfg.carriage_steps_per_m = static_cast<std::uint32_t>(profile.carriage.steps_per_mm * 1000);
-                cfg.feed_steps_per_m = static_cast<std::uint32_t>(profile.feed.steps_per_mm * 1000);
-                cfg.carriage_travel_steps = static_cast<std::int32_t>(
-                    (profile.paper.width_mm + profile.head.concave_offset_mm) * profile.carriage.steps_per_mm);
+                cfg = profile::controller_config(profile);
                 double d = 0;
                 for (const auto& pass : sheet_plan.sheets[0].passes) d += pass.duration_s;
                 sheet_plan.duration_s = d;
-                if (auto brf = to_brf(*doc)) brf_bytes = brf->size() / std::max<std::size_t>(1, doc->sheet_count());
+                if (auto brf = exporter::to_brf(*doc)) brf_bytes = brf->size() / std::max<std::size_t>(1, doc->sheet_count());
             }
         }
     }
-#else
-    {
-        double d = 0;
-        for (const auto& pass : sheet_plan.sheets[0].passes)
-            for (std::size_t i = 0; i < pass.moves.size(); ++i) d += pass.moves[i].duration_s + 0.002;
-        sheet_plan.duration_s = d + 1.6;
-    }
-#endif
     const auto stream = encode::encode_job(sheet_plan, 1, {});
     double average_baud = 0;
     if (stream && sheet_plan.duration_s > 0) {

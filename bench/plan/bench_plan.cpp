@@ -29,14 +29,14 @@ int main(int argc, char** argv) {
         return 2;
     }
     const auto prof = profile::default_profile();
-    PipelineOptions options;
+    pipeline::PipelineOptions options;
     if (argc > 2) options.tables = argv[2];
     options.layout.geometry.interpoint = prof.geometry.interpoint;
     options.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
     options.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
 
     auto t0 = Clock::now();
-    auto doc = lay_out_file(argv[1], options);
+    auto doc = pipeline::lay_out_file(argv[1], options);
     if (!doc) {
         std::fprintf(stderr, "%s\n", doc.error().to_string().c_str());
         return 1;
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
     // One page alone, repeated for a stable figure (each run a fresh planner:
     // this includes tuning its moves from cold).
-    PagedDocument one;
+    layout::PagedDocument one;
     one.geometry = doc->geometry;
     one.pages.push_back(doc->pages.at(doc->pages.size() / 2));
     const int reps = 20;

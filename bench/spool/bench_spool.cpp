@@ -40,12 +40,12 @@ T must(Result<T> r, const char* what) {
     if constexpr (!std::is_void_v<T>) return std::move(*r);
 }
 
-PagedDocument book(std::size_t pages) {
-    PagedDocument doc;
+layout::PagedDocument book(std::size_t pages) {
+    layout::PagedDocument doc;
     for (std::size_t p = 0; p < pages; ++p) {
-        Page page;
+        layout::Page page;
         page.braille_number = static_cast<int>(p + 1);
-        for (int l = 0; l < 24; ++l) page.lines.push_back(BrailleLine(27, Cell{static_cast<std::uint8_t>(1 + (p + static_cast<std::size_t>(l)) % 63)}));
+        for (int l = 0; l < 24; ++l) page.lines.push_back(document::BrailleLine(27, document::Cell{static_cast<std::uint8_t>(1 + (p + static_cast<std::size_t>(l)) % 63)}));
         doc.pages.push_back(std::move(page));
     }
     return doc;
@@ -60,7 +60,7 @@ void queue_operations(const std::filesystem::path& dir) {
     const auto db = dir / "bench.db";
     Spool s = must(Spool::open(db), "open");
     must(s.add_printer("lab", "pty:/dev/null", "{}"), "printer");
-    const PagedDocument doc = book(8);  // a 4-sheet job: ~20 KB snapshot
+    const layout::PagedDocument doc = book(8);  // a 4-sheet job: ~20 KB snapshot
     JobSubmission job;
     job.printer = "lab";
     job.title = "bench";

@@ -43,10 +43,10 @@ SimController::SimController(SimOptions options) : options_(options) {
 }
 
 double SimController::ticks_to_s(std::uint64_t ticks) const {
-    return options_.instant_motion ? 0.0 : static_cast<double>(ticks) / plan::kTickHz;
+    return options_.instant_motion ? 0.0 : static_cast<double>(ticks) / machine::kTickHz;
 }
 
-std::size_t SimController::ring_free() const { return ram::kRingBytes - ring_.size(); }
+std::size_t SimController::ring_free() const { return machine::ram::kRingBytes - ring_.size(); }
 
 bool SimController::move_buffered(std::size_t first_op_size) const {
     std::size_t pos = first_op_size;
@@ -213,9 +213,9 @@ void SimController::on_frame(const encode::Frame& f, double now) {
         encode::HelloReply r;
         r.capabilities = encode::capability::interpoint | encode::capability::uart |
                          encode::capability::lpt | encode::capability::warm_restart;
-        r.ring_bytes = static_cast<std::uint8_t>(ram::kRingBytes);
+        r.ring_bytes = static_cast<std::uint8_t>(machine::ram::kRingBytes);
         r.max_payload = static_cast<std::uint8_t>(encode::kMaxPayload);
-        r.window_frames = static_cast<std::uint8_t>(ram::kWindowFrames);
+        r.window_frames = static_cast<std::uint8_t>(machine::ram::kWindowFrames);
         reply(FrameType::hello_reply, encode::encode_hello_reply(r));
         return;
     }
@@ -617,7 +617,7 @@ void SimController::finish_op() {
 void SimController::interrupt_op(double now) {
     if (!current_) return;
     const Op& op = *current_;
-    const double elapsed_ticks = (now - op_start_) * plan::kTickHz;
+    const double elapsed_ticks = (now - op_start_) * machine::kTickHz;
     if (op.code == OpCode::move) {
         const auto total = encode::segment_steps(op.segments);
         std::uint32_t lo = 0, hi = total;  // largest k with tick_of_step(k) <= elapsed

@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "controller/ram_budget.hpp"
+#include "machine/ram_budget.hpp"
 #include "encode/frame.hpp"
 #include "encode/messages.hpp"
 #include "encode/stream.hpp"
@@ -97,7 +97,7 @@ public:
     };
     [[nodiscard]] const std::vector<Wait>& waits() const { return waits_; }
     [[nodiscard]] std::size_t resets() const { return resets_; }
-    [[nodiscard]] const encode::ControllerConfig& config() const { return config_; }
+    [[nodiscard]] const machine::ControllerConfig& config() const { return config_; }
 
 private:
     void on_frame(const encode::Frame& f, double now);
@@ -133,7 +133,7 @@ private:
     std::size_t free_reported_ = 0;
 
     // --- RAM: kept by a warm reset, lost by power loss
-    encode::ControllerConfig config_{};
+    machine::ControllerConfig config_{};
     bool configured_ = false;
     encode::ControllerState state_ = encode::ControllerState::idle;
     std::uint8_t faults_ = 0;

@@ -5,7 +5,7 @@
 
 #include "common/utf8.hpp"
 
-namespace tactus {
+namespace tactus::document {
 namespace {
 
 // Braille ASCII, indexed by ASCII - 0x20: the dot pattern of each character.
@@ -63,4 +63,4 @@ std::string dot_numbers(Cell c) {
     return out;
 }
 
-}  // namespace tactus
+}  // namespace tactus::document

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tactus {
+namespace tactus::document {
 
 struct Cell {
     std::uint8_t dots = 0;
@@ -33,4 +33,4 @@ std::string to_unicode_text(const BrailleLine& line);
 // "1-2-5" style dot numbers for screen readers and messages ("blank" for none).
 std::string dot_numbers(Cell c);
 
-}  // namespace tactus
+}  // namespace tactus::document

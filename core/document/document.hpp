@@ -8,7 +8,7 @@
 
 #include "document/cell.hpp"
 
-namespace tactus {
+namespace tactus::document {
 
 // Bit flags, combinable; mapped to liblouis typeforms by the translator.
 enum Emphasis : std::uint8_t {
@@ -57,4 +57,4 @@ struct Document {
     bool operator==(const Document&) const = default;
 };
 
-}  // namespace tactus
+}  // namespace tactus::document

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "encode/messages.hpp"
+#include "machine/ram_budget.hpp"
 
 namespace tactus::encode {
 
@@ -19,8 +20,8 @@ inline constexpr std::size_t kHeaderBytes = 4;
 inline constexpr std::size_t kCrcBytes = 2;
 inline constexpr std::size_t kFrameOverhead = kHeaderBytes + kCrcBytes;
 // Largest payload in either direction: what the controller can take into its
-// ring in one piece (see controller/ram_budget.hpp).
-inline constexpr std::size_t kMaxPayload = 80;
+// ring in one piece (see machine/ram_budget.hpp).
+inline constexpr std::size_t kMaxPayload = machine::ram::kMaxPayload;
 inline constexpr std::size_t kMaxFrame = kMaxPayload + kFrameOverhead;
 
 struct Frame {

@@ -136,7 +136,7 @@ Result<HelloReply> decode_hello_reply(std::span<const std::uint8_t> p) {
     return h;
 }
 
-std::vector<std::uint8_t> encode_config(const ControllerConfig& c) {
+std::vector<std::uint8_t> encode_config(const machine::ControllerConfig& c) {
     std::vector<std::uint8_t> o;
     put32(o, c.carriage_steps_per_m);
     put32(o, c.feed_steps_per_m);
@@ -146,9 +146,9 @@ std::vector<std::uint8_t> encode_config(const ControllerConfig& c) {
     put16(o, c.keepalive_ms);
     return o;
 }
-Result<ControllerConfig> decode_config(std::span<const std::uint8_t> p) {
+Result<machine::ControllerConfig> decode_config(std::span<const std::uint8_t> p) {
     if (auto r = need(p, 18, "CONFIGURE"); !r) return std::unexpected(r.error());
-    ControllerConfig c;
+    machine::ControllerConfig c;
     c.carriage_steps_per_m = get32(p, 0);
     c.feed_steps_per_m = get32(p, 4);
     c.carriage_travel_steps = static_cast<std::int32_t>(get32(p, 8));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/result.hpp"
+#include "machine/controller_config.hpp"
 
 namespace tactus::encode {
 
@@ -126,25 +127,16 @@ struct HelloReply {
     bool operator==(const HelloReply&) const = default;
 };
 
-// CONFIGURE payload: what the controller needs from the printer profile. Steps
-// per mm are sent in micro-steps per metre so the firmware never sees a float.
-struct ControllerConfig {
-    std::uint32_t carriage_steps_per_m = 80'000;  // 80 steps/mm
-    std::uint32_t feed_steps_per_m = 40'000;
-    std::int32_t carriage_travel_steps = 24'000;  // soft limit: beyond it the limit switch trips
-    std::uint16_t home_interval_ticks = 300;      // constant rate for HOME and SEEK
-    std::uint16_t hammer_ticks = 1843;            // hammer pulse, 2 ms
-    std::uint16_t keepalive_ms = 2000;            // 0: no keep-alive watchdog
-    bool operator==(const ControllerConfig&) const = default;
-};
+// CONFIGURE carries machine::ControllerConfig. Steps per mm are sent in
+// micro-steps per metre so the firmware never sees a float.
 
 // Payload codecs. Decoders check the exact length and every range.
 std::vector<std::uint8_t> encode_hello(const Hello&);
 Result<Hello> decode_hello(std::span<const std::uint8_t>);
 std::vector<std::uint8_t> encode_hello_reply(const HelloReply&);
 Result<HelloReply> decode_hello_reply(std::span<const std::uint8_t>);
-std::vector<std::uint8_t> encode_config(const ControllerConfig&);
-Result<ControllerConfig> decode_config(std::span<const std::uint8_t>);
+std::vector<std::uint8_t> encode_config(const machine::ControllerConfig&);
+Result<machine::ControllerConfig> decode_config(std::span<const std::uint8_t>);
 std::vector<std::uint8_t> encode_ack(const AckInfo&);
 Result<AckInfo> decode_ack(std::span<const std::uint8_t>);
 std::vector<std::uint8_t> encode_nak(NakReason, const AckInfo&);

@@ -7,24 +7,24 @@
 
 #include "encode/frame.hpp"
 #include "encode/varint.hpp"
-#include "plan/steps.hpp"
+#include "motion/steps.hpp"
 
 namespace tactus::encode {
 namespace {
 
 // The interval of the last step of `s` (Q16.16, wrapping like the 8051's
 // 32-bit adds): the prediction the next segment's interval is sent against.
-std::uint32_t last_interval(const plan::StepSegment& s) {
+std::uint32_t last_interval(const motion::StepSegment& s) {
     return s.interval_q16 + static_cast<std::uint32_t>(s.add_q16) * (s.count - 1U);
 }
 
 // The coarsest grid (2^shift Q16.16 units) both the interval and the add lie
 // on: the planner picks the coarsest grid that keeps its steps in tolerance,
 // and the low bits it leaves at zero are not sent.
-unsigned grid_shift(const plan::StepSegment& s) {
+unsigned grid_shift(const motion::StepSegment& s) {
     unsigned shift = 0;
     const auto add = static_cast<std::uint32_t>(s.add_q16);
-    while (shift < plan::kMaxGridShift && ((s.interval_q16 | add) & (1U << shift)) == 0) ++shift;
+    while (shift < machine::kMaxGridShift && ((s.interval_q16 | add) & (1U << shift)) == 0) ++shift;
     return shift;
 }
 
@@ -33,7 +33,7 @@ unsigned grid_shift(const plan::StepSegment& s) {
 // 0, so every op decodes alone); the add on that grid. Step timing is
 // continuous and the planner picks coarse grids, so a segment is typically 4 or
 // 5 bytes (about 8 at full precision).
-void put_segment(std::vector<std::uint8_t>& out, const plan::StepSegment& s, const plan::StepSegment* prev) {
+void put_segment(std::vector<std::uint8_t>& out, const motion::StepSegment& s, const motion::StepSegment* prev) {
     const unsigned shift = grid_shift(s);
     const std::uint32_t ref = prev ? last_interval(*prev) : 0U;
     put_uvar(out, (static_cast<std::uint32_t>(s.count) << 4) | shift);
@@ -145,7 +145,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
             if (!add) return truncated();
             const unsigned shift = *head & 0x0F;
             const auto count = *head >> 4;
-            if (count == 0 || shift > plan::kMaxGridShift)
+            if (count == 0 || shift > machine::kMaxGridShift)
                 return fail("step segment with count " + std::to_string(count) + " and grid " +
                                 std::to_string(shift),
                             at_byte(pos));
@@ -157,7 +157,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
                 return fail("step segment outside the 32-bit registers", at_byte(pos));
             const std::uint32_t interval = scaled << shift;
             // The first interval must fit the 16-bit timer; later ones are checked as run.
-            if ((interval >> plan::kStepFractionBits) < 1)
+            if ((interval >> machine::kStepFractionBits) < 1)
                 return fail("step interval outside the 16-bit timer", at_byte(pos));
             op.segments.push_back({interval, static_cast<std::uint16_t>(count),
                                    static_cast<std::int32_t>(add_scaled * (std::int64_t{1} << shift))});
@@ -182,22 +182,22 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
     return std::pair{std::move(op), pos};
 }
 
-std::uint32_t segment_steps(std::span<const plan::StepSegment> segments) {
+std::uint32_t segment_steps(std::span<const motion::StepSegment> segments) {
     std::uint32_t n = 0;
     for (const auto& s : segments) n += s.count;
     return n;
 }
 
-// The controller's own arithmetic (plan::expand_steps): Q16.16 intervals with a
+// The controller's own arithmetic (motion::expand_steps): Q16.16 intervals with a
 // fraction accumulator, so simulated time is exactly the firmware's.
-std::uint64_t segment_ticks(std::span<const plan::StepSegment> segments) {
-    const auto t = plan::expand_steps(segments);
+std::uint64_t segment_ticks(std::span<const motion::StepSegment> segments) {
+    const auto t = motion::expand_steps(segments);
     return t.empty() ? 0 : static_cast<std::uint64_t>(t.back());
 }
 
-std::uint64_t tick_of_step(std::span<const plan::StepSegment> segments, std::uint32_t k) {
+std::uint64_t tick_of_step(std::span<const motion::StepSegment> segments, std::uint32_t k) {
     if (k == 0) return 0;
-    const auto t = plan::expand_steps(segments);
+    const auto t = motion::expand_steps(segments);
     if (t.empty()) return 0;
     return static_cast<std::uint64_t>(t[std::min<std::size_t>(k, t.size()) - 1]);
 }
@@ -210,7 +210,7 @@ std::vector<PassRef> pass_table(const plan::JobPlan& plan) {
     return t;
 }
 
-std::vector<Op> move_ops(Axis axis, const plan::StepMove& m) {
+std::vector<Op> move_ops(Axis axis, const motion::StepMove& m) {
     // One MOVE op, or several when the segments need more than kMaxMoveOpBytes
     // (the controller runs continuation ops without stopping).
     std::vector<Op> ops;
@@ -240,7 +240,7 @@ std::vector<Op> move_ops(Axis axis, const plan::StepMove& m) {
     return ops;
 }
 
-std::size_t move_bytes(const plan::StepMove& m) {
+std::size_t move_bytes(const motion::StepMove& m) {
     std::vector<std::uint8_t> b;
     for (const auto& o : move_ops(Axis::carriage, m)) append_op(b, o);
     return b.size();
@@ -253,11 +253,11 @@ std::string pass_where(const PassRef& r) {
 }
 
 // Checks a move the controller will run with 16-bit interval arithmetic.
-Result<void> check_move(const plan::StepMove& m, const std::string& where) {
+Result<void> check_move(const motion::StepMove& m, const std::string& where) {
     std::int64_t steps = 0;
     for (const auto& s : m.segments) steps += s.count;
     // Replayed with the controller's arithmetic: every interval must stay in its timer's range.
-    if (plan::expand_steps(m.segments).size() != static_cast<std::size_t>(steps))
+    if (motion::expand_steps(m.segments).size() != static_cast<std::size_t>(steps))
         return fail("step interval leaves the 16-bit timer range", where);
     if (steps != std::llabs(m.steps))
         return fail("move of " + std::to_string(m.steps) + " steps has " + std::to_string(steps) +
@@ -286,7 +286,7 @@ public:
         append_op(s_.bytes, o);
         s_.op_ends.push_back(s_.bytes.size());
     }
-    void move(Axis axis, const plan::StepMove& m) {
+    void move(Axis axis, const motion::StepMove& m) {
         for (const auto& o : move_ops(axis, m)) op(o);
     }
 

@@ -67,7 +67,7 @@ struct Op {
     std::uint8_t flags = 0;            // pass_begin
     std::uint8_t skip = 0;             // pass_begin: strikes already made (restart)
     std::int32_t value = 0;            // sheet feed origin, seek target
-    std::vector<plan::StepSegment> segments;  // move
+    std::vector<motion::StepSegment> segments;  // move
     bool operator==(const Op&) const = default;
 };
 
@@ -77,14 +77,14 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> bytes
 
 // A move as the MOVE ops that carry it (one, or more with continuations), and
 // their size in bytes.
-std::vector<Op> move_ops(Axis axis, const plan::StepMove& m);
-std::size_t move_bytes(const plan::StepMove& m);
+std::vector<Op> move_ops(Axis axis, const motion::StepMove& m);
+std::size_t move_bytes(const motion::StepMove& m);
 
 // Steps and duration (in timer ticks) of a run of segments.
-std::uint32_t segment_steps(std::span<const plan::StepSegment> segments);
-std::uint64_t segment_ticks(std::span<const plan::StepSegment> segments);
+std::uint32_t segment_steps(std::span<const motion::StepSegment> segments);
+std::uint64_t segment_ticks(std::span<const motion::StepSegment> segments);
 // Tick of step k (1-based) from the start of the segments.
-std::uint64_t tick_of_step(std::span<const plan::StepSegment> segments, std::uint32_t k);
+std::uint64_t tick_of_step(std::span<const motion::StepSegment> segments, std::uint32_t k);
 
 // Where a pass sits in the plan.
 struct PassRef {

@@ -54,10 +54,10 @@ struct MoveSimulator::Impl {
 
     // State after the whole move; the command derivatives are re-seeded from the
     // move at each piece start (they are exact there, so nothing accumulates).
-    Eigen::VectorXd run(const plan::MoveShape& move, Eigen::VectorXd z,
+    Eigen::VectorXd run(const motion::MoveShape& move, Eigen::VectorXd z,
                         std::vector<double>* out = nullptr, std::span<const double> times = {}) {
         std::size_t ti = 0;
-        auto seed = [&](const plan::Derivs& d) {
+        auto seed = [&](const motion::Derivs& d) {
             for (int k = 0; k < 6; ++k) z(n + k) = d[static_cast<std::size_t>(k)];
         };
         // Samples inside [t0, t_end) are advanced from the seeded state at t0.
@@ -72,7 +72,7 @@ struct MoveSimulator::Impl {
             emit(p.t0, p.t0 + p.dt);
             z = phi(p.dt) * z;
         }
-        seed(plan::Derivs{move.distance, 0, 0, 0, 0, 0});
+        seed(motion::Derivs{move.distance, 0, 0, 0, 0, 0});
         emit(move.duration, std::numeric_limits<double>::infinity());
         return z;
     }
@@ -83,7 +83,7 @@ MoveSimulator::~MoveSimulator() = default;
 MoveSimulator::MoveSimulator(MoveSimulator&&) noexcept = default;
 MoveSimulator& MoveSimulator::operator=(MoveSimulator&&) noexcept = default;
 
-double MoveSimulator::residual_mm(const plan::MoveShape& move, double dwell_s, int samples) {
+double MoveSimulator::residual_mm(const motion::MoveShape& move, double dwell_s, int samples) {
     auto& s = *impl_;
     Eigen::VectorXd z = Eigen::VectorXd::Zero(s.n + 6);
     z = s.run(move, z);
@@ -98,7 +98,7 @@ double MoveSimulator::residual_mm(const plan::MoveShape& move, double dwell_s, i
     return worst;
 }
 
-std::vector<double> MoveSimulator::head_positions(const plan::MoveShape& move,
+std::vector<double> MoveSimulator::head_positions(const motion::MoveShape& move,
                                                   std::span<const double> times) {
     auto& s = *impl_;
     std::vector<double> out;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Exact discretisation of the head model under a commanded move. The command is
-// piecewise polynomial (plan/motion.hpp), so the model is augmented with the
+// piecewise polynomial (motion/motion.hpp), so the model is augmented with the
 // command's derivatives as states driven by the (piecewise constant) fifth
 // derivative; the matrix exponential of that augmented system advances the
 // state over a whole piece with no integration error (no Euler, no sub-steps).
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "estimate/dynamics.hpp"
-#include "plan/motion.hpp"
+#include "motion/motion.hpp"
 
 namespace tactus::estimate {
 
@@ -25,9 +25,9 @@ public:
     // The head's largest distance from the move's end point while the hammer is
     // down: from the end of the move through `dwell_s`, sampled at `samples`+1
     // instants. The head starts at rest. Millimetres.
-    double residual_mm(const plan::MoveShape& move, double dwell_s, int samples = 32);
+    double residual_mm(const motion::MoveShape& move, double dwell_s, int samples = 32);
     // Head position at each of `times` (ascending, s from the move start).
-    std::vector<double> head_positions(const plan::MoveShape& move, std::span<const double> times);
+    std::vector<double> head_positions(const motion::MoveShape& move, std::span<const double> times);
 
 private:
     struct Impl;

@@ -5,16 +5,16 @@
 // step train itself instead of on the ideal move it approximates.
 #include <span>
 
-#include "plan/motion.hpp"
-#include "plan/plan.hpp"
+#include "motion/motion.hpp"
+#include "motion/step_move.hpp"
 
 namespace tactus::estimate {
 
 // The command through the middle of each step at the tick the controller fires
-// it (plan::expand_steps), straight between steps (the motor moves one step per
+// it (motion::expand_steps), straight between steps (the motor moves one step per
 // pulse, not instantly), from rest at 0 to rest at the move's end, held until
 // `duration_s`. Pieces of constant velocity.
-plan::MoveShape step_train_shape(std::span<const plan::StepSegment> segments, double steps_per_mm,
+motion::MoveShape step_train_shape(std::span<const motion::StepSegment> segments, double steps_per_mm,
                                  double duration_s);
 
 }  // namespace tactus::estimate

@@ -31,13 +31,13 @@ struct Candidate {
     ShaperKind shaper;
     double scale;
     double settle;
-    plan::MoveShape move;
+    motion::MoveShape move;
 };
 
 // The move followed by `settle` seconds at rest on the target before the strike.
-plan::MoveShape with_settle(plan::MoveShape m, double settle) {
+motion::MoveShape with_settle(motion::MoveShape m, double settle) {
     if (settle <= 0 || m.pieces.empty()) return m;
-    m.pieces.push_back(plan::Piece{m.duration, settle, plan::Derivs{m.distance, 0, 0, 0, 0, 0}});
+    m.pieces.push_back(motion::Piece{m.duration, settle, motion::Derivs{m.distance, 0, 0, 0, 0, 0}});
     m.duration += settle;
     return m;
 }
@@ -52,19 +52,19 @@ MoveTuner::MoveTuner(const profile::PrinterProfile& p)
             band_.emplace_back(build_model(p.dynamics, ModelVariant{ds, fs}));
     const double f = dominant_frequency_hz(p.dynamics);
     for (auto k : {ShaperKind::none, ShaperKind::zv, ShaperKind::mzv, ShaperKind::zvd, ShaperKind::ei})
-        shapers_.push_back(plan::design_shaper(k, f, p.dynamics.damping_ratio));
+        shapers_.push_back(motion::design_shaper(k, f, p.dynamics.damping_ratio));
 }
 
-const plan::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
+const motion::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
     const auto i = static_cast<std::size_t>(k);
     return shapers_[i < shapers_.size() ? i : 0];
 }
 
-double MoveTuner::nominal_residual_um(const plan::MoveShape& m) {
+double MoveTuner::nominal_residual_um(const motion::MoveShape& m) {
     return 1000.0 * nominal_.residual_mm(m, p_.head.dwell_s);
 }
 
-double MoveTuner::worst_residual_um(const plan::MoveShape& m) {
+double MoveTuner::worst_residual_um(const motion::MoveShape& m) {
     double worst = 0;
     for (auto& sim : band_) worst = std::max(worst, sim.residual_mm(m, p_.head.dwell_s));
     return 1000.0 * worst;
@@ -88,20 +88,20 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                                      : std::vector{1.0};
     std::vector<Candidate> cands;
     for (double s : scales) {
-        const plan::Limits lim{p_.carriage.v_max_mm_s * s, p_.carriage.a_max_mm_s2 * s * s,
+        const motion::Limits lim{p_.carriage.v_max_mm_s * s, p_.carriage.a_max_mm_s2 * s * s,
                                p_.carriage.j_max_mm_s3 * s * s * s};
         for (auto shape : shapes) {
-            const auto base = plan::make_move(shape, distance, lim);
+            const auto base = motion::make_move(shape, distance, lim);
             for (auto k : kinds)
-                cands.push_back({shape, k, s, 0.0, plan::shape_move(base, design_shaper(k))});
+                cands.push_back({shape, k, s, 0.0, motion::shape_move(base, design_shaper(k))});
         }
     }
     // A machine whose damping may be far above nominal creeps onto the target
     // after the command stops; a short rest before the strike can be cheaper
     // than a shaper or a slower move.
     if (auto_shape || auto_shaper) {
-        const plan::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
-        const auto base = plan::make_move(shapes.front(), distance, lim);
+        const motion::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
+        const auto base = motion::make_move(shapes.front(), distance, lim);
         for (double ms : {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0})
             cands.push_back({shapes.front(), ShaperKind::none, 1.0, ms / 1000, with_settle(base, ms / 1000)});
     }

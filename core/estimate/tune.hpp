@@ -12,8 +12,8 @@
 
 #include "common/result.hpp"
 #include "estimate/simulate.hpp"
-#include "plan/motion.hpp"
-#include "plan/shaper.hpp"
+#include "motion/motion.hpp"
+#include "motion/shaper.hpp"
 #include "profile/profile.hpp"
 
 namespace tactus::estimate {
@@ -33,7 +33,7 @@ struct TuneChoice {
 };
 
 struct TunedMove {
-    plan::MoveShape shape;
+    motion::MoveShape shape;
     TuneChoice choice;
 };
 
@@ -44,17 +44,17 @@ public:
     // only when auto-tuning finds nothing within tolerance.
     Result<const TunedMove*> carriage(std::uint32_t steps);
     [[nodiscard]] const std::map<std::uint32_t, TunedMove>& decisions() const { return cache_; }
-    [[nodiscard]] const plan::Shaper& design_shaper(profile::ShaperKind k) const;
+    [[nodiscard]] const motion::Shaper& design_shaper(profile::ShaperKind k) const;
 
     // Residual of an arbitrary move on the nominal machine and its band worst case, um.
-    double nominal_residual_um(const plan::MoveShape& m);
-    double worst_residual_um(const plan::MoveShape& m);
+    double nominal_residual_um(const motion::MoveShape& m);
+    double worst_residual_um(const motion::MoveShape& m);
 
 private:
     profile::PrinterProfile p_;
     MoveSimulator nominal_;
     std::vector<MoveSimulator> band_;
-    std::vector<plan::Shaper> shapers_;  // indexed by ShaperKind
+    std::vector<motion::Shaper> shapers_;  // indexed by ShaperKind
     std::map<std::uint32_t, TunedMove> cache_;
 };
 

@@ -4,10 +4,10 @@
 #include "common/file_io.hpp"
 #include "export/export.hpp"
 
-namespace tactus {
+namespace tactus::exporter {
 namespace {
 
-std::size_t used_lines(const Page& page) {
+std::size_t used_lines(const layout::Page& page) {
     std::size_t used = page.lines.size();
     while (used > 0 && page.lines[used - 1].empty()) --used;
     return used;
@@ -15,19 +15,19 @@ std::size_t used_lines(const Page& page) {
 
 }  // namespace
 
-Result<void> write_brf(const PagedDocument& doc, std::ostream& out) {
+Result<void> write_brf(const layout::PagedDocument& doc, std::ostream& out) {
     std::string line;
     for (const auto& page : doc.pages) {
         // Lines up to the last non-empty one; the form feed ends the page.
         const auto used = used_lines(page);
         for (std::size_t i = 0; i < used; ++i) {
             line.clear();
-            for (Cell c : page.lines[i]) {
+            for (document::Cell c : page.lines[i]) {
                 if (c.dots & 0xC0)
                     return fail("8-dot cell cannot be written as BRF (6-dot only); use PEF",
                                 "page " + std::to_string(page.braille_number) + " line " +
                                     std::to_string(i + 1));
-                line.push_back(cell_to_brf(c));
+                line.push_back(document::cell_to_brf(c));
             }
             line += "\r\n";
             out << line;
@@ -37,22 +37,22 @@ Result<void> write_brf(const PagedDocument& doc, std::ostream& out) {
     return {};
 }
 
-void write_unicode(const PagedDocument& doc, std::ostream& out) {
+void write_unicode(const layout::PagedDocument& doc, std::ostream& out) {
     for (std::size_t p = 0; p < doc.pages.size(); ++p) {
         if (p > 0) out << '\f';
         const auto& page = doc.pages[p];
         const auto used = used_lines(page);
-        for (std::size_t i = 0; i < used; ++i) out << to_unicode_text(page.lines[i]) << '\n';
+        for (std::size_t i = 0; i < used; ++i) out << document::to_unicode_text(page.lines[i]) << '\n';
     }
 }
 
-Result<std::string> to_brf(const PagedDocument& doc) {
+Result<std::string> to_brf(const layout::PagedDocument& doc) {
     std::ostringstream out;
     if (auto ok = write_brf(doc, out); !ok) return std::unexpected(ok.error());
     return std::move(out).str();
 }
 
-std::string to_unicode(const PagedDocument& doc) {
+std::string to_unicode(const layout::PagedDocument& doc) {
     std::ostringstream out;
     write_unicode(doc, out);
     return std::move(out).str();
@@ -65,7 +65,7 @@ Result<ExportFormat> parse_export_format(std::string_view s) {
     return fail("unknown output format '" + std::string(s) + "' (brf, pef, unicode)", "--to");
 }
 
-Result<void> write_document(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+Result<void> write_document(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
                             std::ostream& out) {
     switch (format) {
         case ExportFormat::brf: return write_brf(doc, out);
@@ -75,16 +75,16 @@ Result<void> write_document(const PagedDocument& doc, ExportFormat format, const
     return fail("unsupported export format");
 }
 
-Result<std::string> export_document(const PagedDocument& doc, ExportFormat format,
+Result<std::string> export_document(const layout::PagedDocument& doc, ExportFormat format,
                                     const PefMetadata& meta) {
     std::ostringstream out;
     if (auto ok = write_document(doc, format, meta, out); !ok) return std::unexpected(ok.error());
     return std::move(out).str();
 }
 
-Result<void> export_to_file(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+Result<void> export_to_file(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
                             const std::filesystem::path& path) {
     return write_file_atomic(path, [&](std::ostream& out) { return write_document(doc, format, meta, out); });
 }
 
-}  // namespace tactus
+}  // namespace tactus::exporter

@@ -9,7 +9,7 @@
 #include "common/result.hpp"
 #include "layout/page.hpp"
 
-namespace tactus {
+namespace tactus::exporter {
 
 enum class ExportFormat { brf, pef, unicode };
 
@@ -25,25 +25,25 @@ struct PefMetadata {
 // Braille ASCII: CRLF after every line, a form feed after every page (blank
 // backs included, so an interpoint embosser stays in step). Fails on dots 7-8,
 // which BRF cannot carry, naming the page and line.
-Result<std::string> to_brf(const PagedDocument& doc);
+Result<std::string> to_brf(const layout::PagedDocument& doc);
 
 // PEF 2008-1: one volume, one section; duplex from the geometry.
-Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta = {});
+Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta = {});
 
 // Unicode braille text: LF line ends, a form feed between pages.
-std::string to_unicode(const PagedDocument& doc);
+std::string to_unicode(const layout::PagedDocument& doc);
 
-Result<std::string> export_document(const PagedDocument& doc, ExportFormat format,
+Result<std::string> export_document(const layout::PagedDocument& doc, ExportFormat format,
                                     const PefMetadata& meta = {});
 
 // Streaming forms: a book is written without holding its output in memory.
-Result<void> write_brf(const PagedDocument& doc, std::ostream& out);
-Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::ostream& out);
-void write_unicode(const PagedDocument& doc, std::ostream& out);
-Result<void> write_document(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+Result<void> write_brf(const layout::PagedDocument& doc, std::ostream& out);
+Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta, std::ostream& out);
+void write_unicode(const layout::PagedDocument& doc, std::ostream& out);
+Result<void> write_document(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
                             std::ostream& out);
 // Atomically (temporary file, fsync, rename).
-Result<void> export_to_file(const PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
+Result<void> export_to_file(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
                             const std::filesystem::path& path);
 
-}  // namespace tactus
+}  // namespace tactus::exporter

@@ -8,11 +8,11 @@
 #include "common/utf8.hpp"
 #include "export/export.hpp"
 
-namespace tactus {
+namespace tactus::exporter {
 namespace {
 
 // A stable identifier from the content, so the same braille gives the same PEF.
-std::string content_id(const PagedDocument& doc) {
+std::string content_id(const layout::PagedDocument& doc) {
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a
     auto mix = [&h](std::uint8_t b) {
         h ^= b;
@@ -20,7 +20,7 @@ std::string content_id(const PagedDocument& doc) {
     };
     for (const auto& page : doc.pages) {
         for (const auto& line : page.lines) {
-            for (Cell c : line) mix(c.dots);
+            for (document::Cell c : line) mix(c.dots);
             mix(0xFF);
         }
     }
@@ -32,7 +32,7 @@ std::string content_id(const PagedDocument& doc) {
 
 }  // namespace
 
-Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::ostream& out) {
+Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta, std::ostream& out) {
     // The head carries user text (title), so pugixml writes and escapes it. The
     // body is only braille code points (U+2800..U+28FF), which never need
     // escaping; it is streamed row by row, so a book-length PEF is never held in
@@ -80,7 +80,7 @@ Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::o
                 continue;
             }
             row = "          <row>";
-            for (Cell c : page.lines[i]) append_utf8(row, c.unicode());
+            for (document::Cell c : page.lines[i]) append_utf8(row, c.unicode());
             row += "</row>\n";
             out << row;
         }
@@ -91,10 +91,10 @@ Result<void> write_pef(const PagedDocument& doc, const PefMetadata& meta, std::o
     return {};
 }
 
-Result<std::string> to_pef(const PagedDocument& doc, const PefMetadata& meta) {
+Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta) {
     std::ostringstream out;
     if (auto ok = write_pef(doc, meta, out); !ok) return std::unexpected(ok.error());
     return std::move(out).str();
 }
 
-}  // namespace tactus
+}  // namespace tactus::exporter

@@ -8,7 +8,7 @@
 #include "import/document_builder.hpp"
 #include "import/importers.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 std::string describe(unsigned char c) {
@@ -22,13 +22,13 @@ std::string describe(unsigned char c) {
 
 }  // namespace
 
-Result<Document> import_brf(std::string_view bytes) {
+Result<document::Document> import_brf(std::string_view bytes) {
     // DOS-era files may end with a Ctrl-Z end-of-file marker: not part of the braille.
     if (!bytes.empty() && bytes.back() == '\x1A') bytes.remove_suffix(1);
 
     DocumentBuilder builder;
-    std::vector<BrailleLine> page;
-    BrailleLine line;
+    std::vector<document::BrailleLine> page;
+    document::BrailleLine line;
     bool line_started = false;  // the current line has at least one character
     int line_number = 1;
     int column = 1;
@@ -70,8 +70,8 @@ Result<Document> import_brf(std::string_view bytes) {
             if (builder.full()) break;
             continue;
         }
-        Cell cell;
-        if (!cell_from_brf(c, cell))
+        document::Cell cell;
+        if (!document::cell_from_brf(c, cell))
             return fail(describe(static_cast<unsigned char>(c)) + " is not Braille ASCII",
                         std::to_string(line_number) + ":" + std::to_string(column));
         line.push_back(cell);
@@ -83,4 +83,4 @@ Result<Document> import_brf(std::string_view bytes) {
     return builder.finish();
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

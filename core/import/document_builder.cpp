@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <utility>
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
-bool is_page_break(const Block& b) {
-    return b.kind == BlockKind::print_page_break || b.kind == BlockKind::braille_page_break;
+bool is_page_break(const document::Block& b) {
+    return b.kind == document::BlockKind::print_page_break || b.kind == document::BlockKind::braille_page_break;
 }
 
 bool visible(std::string_view text) {
@@ -19,9 +19,9 @@ bool visible(std::string_view text) {
 
 }  // namespace
 
-void DocumentBuilder::begin(BlockKind kind, int level, int source_line) {
+void DocumentBuilder::begin(document::BlockKind kind, int level, int source_line) {
     end();
-    current_ = Block{};
+    current_ = document::Block{};
     current_.kind = kind;
     current_.level = level;
     current_.source_line = source_line;
@@ -34,29 +34,29 @@ void DocumentBuilder::note_line(int source_line) {
 
 void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
     if (utf8.empty()) return;
-    if (!open_) begin(BlockKind::paragraph, 0, 0);
+    if (!open_) begin(document::BlockKind::paragraph, 0, 0);
     auto& spans = current_.spans;
     if (!spans.empty() && spans.back().emphasis == emphasis)
         spans.back().text.append(utf8);
     else
-        spans.push_back(Span{std::string(utf8), emphasis});
+        spans.push_back(document::Span{std::string(utf8), emphasis});
 }
 
 void DocumentBuilder::end() {
     if (!open_) return;
     open_ = false;
     const bool keep = std::any_of(current_.spans.begin(), current_.spans.end(),
-                                  [](const Span& s) { return visible(s.text); });
+                                  [](const document::Span& s) { return visible(s.text); });
     if (keep) push(std::move(current_));
-    current_ = Block{};
+    current_ = document::Block{};
 }
 
 void DocumentBuilder::print_page_break(int source_line, std::string label) {
     end();
     if (!has_content_) return;  // nothing printed yet: page 1 has not even started
     ++print_page_;
-    Block b;
-    b.kind = BlockKind::print_page_break;
+    document::Block b;
+    b.kind = document::BlockKind::print_page_break;
     b.label = label.empty() ? std::to_string(print_page_) : std::move(label);
     b.source_line = source_line;
     push(std::move(b));
@@ -65,22 +65,22 @@ void DocumentBuilder::print_page_break(int source_line, std::string label) {
 void DocumentBuilder::braille_page_break(int source_line) {
     end();
     if (!has_content_) return;
-    Block b;
-    b.kind = BlockKind::braille_page_break;
+    document::Block b;
+    b.kind = document::BlockKind::braille_page_break;
     b.source_line = source_line;
     push(std::move(b));
 }
 
-void DocumentBuilder::braille_block(std::vector<BrailleLine> lines, int source_line) {
+void DocumentBuilder::braille_block(std::vector<document::BrailleLine> lines, int source_line) {
     end();
-    Block b;
-    b.kind = BlockKind::braille;
+    document::Block b;
+    b.kind = document::BlockKind::braille;
     b.braille_lines = std::move(lines);
     b.source_line = source_line;
     push(std::move(b));
 }
 
-void DocumentBuilder::push(Block block) {
+void DocumentBuilder::push(document::Block block) {
     if (full()) return;
     if (blocks_.size() >= max_import_blocks) {
         overflow_line_ = block.source_line;
@@ -91,7 +91,7 @@ void DocumentBuilder::push(Block block) {
     blocks_.push_back(std::move(block));
 }
 
-Result<Document> DocumentBuilder::finish() {
+Result<document::Document> DocumentBuilder::finish() {
     end();
     if (full())
         return fail("more than " + std::to_string(max_import_blocks) +
@@ -99,10 +99,10 @@ Result<Document> DocumentBuilder::finish() {
                     overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
     // A break with nothing after it would only add an empty page.
     while (!blocks_.empty() && is_page_break(blocks_.back())) blocks_.pop_back();
-    Document doc;
+    document::Document doc;
     doc.blocks = std::move(blocks_);
     blocks_ = {};
     return doc;
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -14,7 +14,7 @@
 #include "common/result.hpp"
 #include "document/document.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 // About 200 bytes of bookkeeping per block: 2 M blocks stay below ~400 MB even
 // when every paragraph is one character long. Real text has far fewer.
@@ -23,35 +23,35 @@ inline constexpr std::size_t max_import_blocks = 2'000'000;
 class DocumentBuilder {
 public:
     // Starts a text block (heading, paragraph, list_item); an open one is ended first.
-    void begin(BlockKind kind, int level, int source_line);
+    void begin(document::BlockKind kind, int level, int source_line);
     [[nodiscard]] bool is_open() const { return open_; }
-    [[nodiscard]] BlockKind open_kind() const { return current_.kind; }
+    [[nodiscard]] document::BlockKind open_kind() const { return current_.kind; }
     [[nodiscard]] int open_level() const { return current_.level; }
     // Sets the source line of the open block if it is still unknown.
     void note_line(int source_line);
     // Appends text to the open block; opens a paragraph if none is open.
-    void add_text(std::string_view utf8, std::uint8_t emphasis = emphasis_none);
+    void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none);
     // Ends the open block; it is kept only if it contains visible text.
     void end();
 
     // `label` empty = the next print page number (the first page is "1").
     void print_page_break(int source_line, std::string label = {});
     void braille_page_break(int source_line);
-    void braille_block(std::vector<BrailleLine> lines, int source_line);
+    void braille_block(std::vector<document::BrailleLine> lines, int source_line);
 
     // True once the block cap is reached; importers may stop early.
     [[nodiscard]] bool full() const { return overflow_line_ >= 0; }
-    Result<Document> finish();
+    Result<document::Document> finish();
 
 private:
-    void push(Block block);
+    void push(document::Block block);
 
-    std::vector<Block> blocks_;
-    Block current_;
+    std::vector<document::Block> blocks_;
+    document::Block current_;
     bool open_ = false;
     bool has_content_ = false;  // a non-break block has been kept
     int print_page_ = 1;
     int overflow_line_ = -1;
 };
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -15,7 +15,7 @@
 #include "import/xml_util.hpp"
 #include "import/zip_archive.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 constexpr std::string_view default_main_part = "word/document.xml";
@@ -101,7 +101,7 @@ public:
         }
     }
 
-    Result<Document> finish() { return builder_.finish(); }
+    Result<document::Document> finish() { return builder_.finish(); }
 
 private:
     void paragraph(const pugi::xml_node& p) {
@@ -118,9 +118,9 @@ private:
         const auto break_before = read_toggle(child(pPr, "pageBreakBefore"));
 
         if (break_before.value_or(style.page_break_before)) builder_.print_page_break(0);
-        kind_ = heading > 0 ? BlockKind::heading
-                : numbering ? BlockKind::list_item
-                            : BlockKind::paragraph;
+        kind_ = heading > 0 ? document::BlockKind::heading
+                : numbering ? document::BlockKind::list_item
+                            : document::BlockKind::paragraph;
         level_ = heading > 0 ? heading : numbering ? numbering->ilvl + 1 : 0;
         label_.clear();
         if (numbering) {
@@ -202,14 +202,14 @@ private:
     const DocxStyles& styles_;
     DocxNumbering& numbering_;
     DocumentBuilder builder_;
-    BlockKind kind_ = BlockKind::paragraph;
+    document::BlockKind kind_ = document::BlockKind::paragraph;
     int level_ = 0;
     std::string label_;  // list label not yet written (waits for the first text)
 };
 
 }  // namespace
 
-Result<Document> import_docx(std::string_view bytes) {
+Result<document::Document> import_docx(std::string_view bytes) {
     auto zip = ZipArchive::open(bytes);
     if (!zip) return std::unexpected(zip.error());
     Package package(std::move(*zip));
@@ -245,4 +245,4 @@ Result<Document> import_docx(std::string_view bytes) {
     return reader.finish();
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -7,7 +7,7 @@
 
 #include "import/xml_util.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 std::string lower(std::string_view s) {
@@ -71,9 +71,9 @@ void RunFormat::apply(const RunFormat& over) {
 }
 
 std::uint8_t RunFormat::emphasis() const {
-    return static_cast<std::uint8_t>((bold.value_or(false) ? emphasis_bold : 0) |
-                                     (italic.value_or(false) ? emphasis_italic : 0) |
-                                     (underline.value_or(false) ? emphasis_underline : 0));
+    return static_cast<std::uint8_t>((bold.value_or(false) ? document::emphasis_bold : 0) |
+                                     (italic.value_or(false) ? document::emphasis_italic : 0) |
+                                     (underline.value_or(false) ? document::emphasis_underline : 0));
 }
 
 std::optional<bool> read_toggle(const pugi::xml_node& element) {
@@ -213,4 +213,4 @@ std::string DocxNumbering::next_label(const NumberingRef& ref) {
     return label;
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

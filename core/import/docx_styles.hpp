@@ -14,7 +14,7 @@
 
 #include "document/document.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 // Toggle properties; unset = inherit.
 struct RunFormat {
@@ -80,4 +80,4 @@ private:
     std::unordered_map<std::string, std::array<int, 9>> counters_;  // per abstract list
 };
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -14,7 +14,7 @@
 #include "common/utf8.hpp"
 #include "import/text_position.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 struct ConverterCloser {
@@ -270,4 +270,4 @@ Result<DecodedText> decode_text(std::string_view bytes, std::string_view declare
     return decoded;
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -8,7 +8,7 @@
 
 #include "common/result.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 struct DecodedText {
     // Either `converted` holds the UTF-8 text, or (UTF-8 input) it is empty and the
@@ -29,4 +29,4 @@ struct DecodedText {
 // tab and form feed (naming line:column).
 Result<DecodedText> decode_text(std::string_view bytes, std::string_view declared);
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -9,7 +9,7 @@
 #include "import/encoding.hpp"
 #include "import/importers.hpp"
 
-namespace tactus {
+namespace tactus::import {
 namespace {
 
 std::string lower(std::string_view s) {
@@ -86,7 +86,7 @@ SourceFormat detect_source_format(std::string_view bytes, std::string_view name)
     return SourceFormat::text;
 }
 
-Result<Document> import_bytes(std::string_view bytes, std::string_view name,
+Result<document::Document> import_bytes(std::string_view bytes, std::string_view name,
                               const ImportOptions& options) {
     const std::string where(name);
     if (bytes.size() > max_import_bytes)
@@ -102,27 +102,27 @@ Result<Document> import_bytes(std::string_view bytes, std::string_view name,
                         std::string(source_format_name(format)),
                     where);
 
-    Result<Document> doc = Document{};
+    Result<document::Document> doc = document::Document{};
     std::string encoding;
     switch (format) {
         case SourceFormat::text:
         case SourceFormat::markdown: {
-            auto decoded = import_detail::decode_text(bytes, options.encoding);
+            auto decoded = detail::decode_text(bytes, options.encoding);
             if (!decoded) return std::unexpected(located(decoded.error(), where));
             const auto text = decoded->text(bytes);
-            doc = format == SourceFormat::text ? import_detail::import_text(text)
-                                               : import_detail::import_markdown(text);
+            doc = format == SourceFormat::text ? detail::import_text(text)
+                                               : detail::import_markdown(text);
             encoding = decoded->encoding;
             break;
         }
         case SourceFormat::docx:
             if (bytes.empty()) return fail("empty file is not a DOCX document", where);
-            doc = import_detail::import_docx(bytes);
+            doc = detail::import_docx(bytes);
             break;
-        case SourceFormat::brf: doc = import_detail::import_brf(bytes); break;
+        case SourceFormat::brf: doc = detail::import_brf(bytes); break;
         case SourceFormat::pef:
             if (bytes.empty()) return fail("empty file is not a PEF document", where);
-            doc = import_detail::import_pef(bytes);
+            doc = detail::import_pef(bytes);
             break;
         case SourceFormat::automatic: break;  // resolved above
     }
@@ -132,10 +132,10 @@ Result<Document> import_bytes(std::string_view bytes, std::string_view name,
     return doc;
 }
 
-Result<Document> import_file(const std::filesystem::path& path, const ImportOptions& options) {
+Result<document::Document> import_file(const std::filesystem::path& path, const ImportOptions& options) {
     auto bytes = read_file(path, max_import_bytes);
     if (!bytes) return std::unexpected(bytes.error());
     return import_bytes(*bytes, path.string(), options);
 }
 
-}  // namespace tactus
+}  // namespace tactus::import

@@ -11,7 +11,7 @@
 #include "common/result.hpp"
 #include "document/document.hpp"
 
-namespace tactus {
+namespace tactus::import {
 
 enum class SourceFormat { automatic, text, markdown, docx, brf, pef };
 
@@ -24,9 +24,9 @@ struct ImportOptions {
 // argument (a disk image, a video) fails fast instead of exhausting memory.
 inline constexpr std::size_t max_import_bytes = std::size_t{256} << 20;
 
-Result<Document> import_file(const std::filesystem::path& path, const ImportOptions& options = {});
+Result<document::Document> import_file(const std::filesystem::path& path, const ImportOptions& options = {});
 // `name` is used in messages and, when the format is automatic, for its extension.
-Result<Document> import_bytes(std::string_view bytes, std::string_view name,
+Result<document::Document> import_bytes(std::string_view bytes, std::string_view name,
                               const ImportOptions& options = {});
 
 // "txt"/"text", "md"/"markdown", "docx", "brf", "pef", "auto"/"automatic"; case-insensitive.
@@ -37,4 +37,4 @@ std::string_view source_format_name(SourceFormat format);
 // The format `import_bytes` would use for these bytes: extension first, then content.
 SourceFormat detect_source_format(std::string_view bytes, std::string_view name);
 
-}  // namespace tactus
+}  // namespace tactus::import

@@ -8,13 +8,13 @@
 #include "common/result.hpp"
 #include "document/document.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 // `utf8` is already decoded and validated (see encoding.hpp).
-Result<Document> import_text(std::string_view utf8);
-Result<Document> import_markdown(std::string_view utf8);
-Result<Document> import_docx(std::string_view bytes);
-Result<Document> import_brf(std::string_view bytes);
-Result<Document> import_pef(std::string_view bytes);
+Result<document::Document> import_text(std::string_view utf8);
+Result<document::Document> import_markdown(std::string_view utf8);
+Result<document::Document> import_docx(std::string_view bytes);
+Result<document::Document> import_brf(std::string_view bytes);
+Result<document::Document> import_pef(std::string_view bytes);
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

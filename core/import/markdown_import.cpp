@@ -18,7 +18,7 @@
 #include "import/importers.hpp"
 #include "import/text_position.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 std::string_view trim(std::string_view s) {
@@ -138,7 +138,7 @@ private:
                 item_pending_ = true;
                 break;
             case MD_BLOCK_H:
-                builder_.begin(BlockKind::heading,
+                builder_.begin(document::BlockKind::heading,
                                static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level), 0);
                 break;
             case MD_BLOCK_P:
@@ -232,22 +232,22 @@ private:
 
     void open_text_block() {
         if (!lists_.empty())
-            builder_.begin(BlockKind::list_item, static_cast<int>(lists_.size()), 0);
+            builder_.begin(document::BlockKind::list_item, static_cast<int>(lists_.size()), 0);
         else
-            builder_.begin(BlockKind::paragraph, 0, 0);
+            builder_.begin(document::BlockKind::paragraph, 0, 0);
     }
 
     void add(std::string_view s, std::string_view where) {
         if (s.empty()) return;
         if (!builder_.is_open()) open_text_block();
         builder_.note_line(line_of(where.data()));
-        if (item_pending_ && builder_.open_kind() == BlockKind::list_item) {
+        if (item_pending_ && builder_.open_kind() == document::BlockKind::list_item) {
             item_pending_ = false;
             builder_.add_text(item_prefix_);
         }
         const auto emphasis = static_cast<std::uint8_t>(
-            (italic_ > 0 ? emphasis_italic : 0) | (bold_ > 0 ? emphasis_bold : 0) |
-            (underline_ > 0 ? emphasis_underline : 0));
+            (italic_ > 0 ? document::emphasis_italic : 0) | (bold_ > 0 ? document::emphasis_bold : 0) |
+            (underline_ > 0 ? document::emphasis_underline : 0));
         builder_.add_text(s, emphasis);
     }
 
@@ -269,7 +269,7 @@ private:
         }
         const auto text = strip_tags(html);
         if (trim(text).empty()) return;
-        builder_.begin(BlockKind::paragraph, 0, line);
+        builder_.begin(document::BlockKind::paragraph, 0, line);
         builder_.add_text(trim(text));
         builder_.end();
     }
@@ -295,7 +295,7 @@ private:
 
 }  // namespace
 
-Result<Document> import_markdown(std::string_view utf8) {
+Result<document::Document> import_markdown(std::string_view utf8) {
     const LineIndex lines(utf8);
     MarkdownReader reader(utf8, lines);
     // CommonMark treats a form feed as blank space; as the print page break of
@@ -315,4 +315,4 @@ Result<Document> import_markdown(std::string_view utf8) {
     return reader.builder().finish();
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

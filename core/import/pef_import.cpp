@@ -11,7 +11,7 @@
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 constexpr std::string_view pef_ns = "http://www.daisy.org/ns/2008/pef";
@@ -20,7 +20,7 @@ class PefReader {
 public:
     explicit PefReader(std::string_view bytes) : lines_(bytes) {}
 
-    Result<Document> read(const pugi::xml_node& root) {
+    Result<document::Document> read(const pugi::xml_node& root) {
         if (local_name(root) != "pef" || namespace_uri(root) != pef_ns)
             return fail("not a PEF 2008-1 document: root element is <" +
                             std::string(root.name()) + "> in namespace '" +
@@ -44,7 +44,7 @@ private:
     Result<void> read_page(const pugi::xml_node& page) {
         if (builder_.full()) return {};
         builder_.braille_page_break(line_of(page));
-        std::vector<BrailleLine> rows;
+        std::vector<document::BrailleLine> rows;
         for (const auto& row : pef_children(page, "row")) {
             auto line = read_row(row);
             if (!line) return std::unexpected(line.error());
@@ -54,14 +54,14 @@ private:
         return {};
     }
 
-    Result<BrailleLine> read_row(const pugi::xml_node& row) {
+    Result<document::BrailleLine> read_row(const pugi::xml_node& row) {
         const auto decoded = utf8_to_utf32(row.child_value());
         if (!decoded) return std::unexpected(located(decoded.error(), std::to_string(line_of(row))));
-        BrailleLine line;
+        document::BrailleLine line;
         line.reserve(decoded->size());
         for (std::size_t i = 0; i < decoded->size(); ++i) {
             const char32_t c = (*decoded)[i];
-            if (!Cell::is_unicode_braille(c)) {
+            if (!document::Cell::is_unicode_braille(c)) {
                 std::array<char, 64> what{};
                 std::snprintf(what.data(), what.size(), "row character %zu is U+%04X", i + 1,
                               static_cast<unsigned>(c));
@@ -69,7 +69,7 @@ private:
                                 ", not a braille cell (U+2800..U+28FF)",
                             std::to_string(line_of(row)));
             }
-            line.push_back(Cell::from_unicode(c));
+            line.push_back(document::Cell::from_unicode(c));
         }
         return line;
     }
@@ -102,7 +102,7 @@ private:
 
 }  // namespace
 
-Result<Document> import_pef(std::string_view bytes) {
+Result<document::Document> import_pef(std::string_view bytes) {
     pugi::xml_document xml;
     if (auto ok = parse_xml(xml, bytes, ""); !ok) return std::unexpected(ok.error());
     const auto root = xml.document_element();
@@ -110,4 +110,4 @@ Result<Document> import_pef(std::string_view bytes) {
     return PefReader(bytes).read(root);
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

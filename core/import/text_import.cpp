@@ -7,7 +7,7 @@
 #include "import/document_builder.hpp"
 #include "import/importers.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 namespace {
 
 bool is_blank(std::string_view s) {
@@ -44,7 +44,7 @@ private:
             return;
         }
         if (!builder_.is_open() || line_per_paragraph_)
-            builder_.begin(BlockKind::paragraph, 0, number);
+            builder_.begin(document::BlockKind::paragraph, 0, number);
         else
             builder_.add_text(" ");
         builder_.add_text(trim(text));
@@ -87,7 +87,7 @@ bool has_paragraph_breaks(std::string_view utf8) {
 
 }  // namespace
 
-Result<Document> import_text(std::string_view utf8) {
+Result<document::Document> import_text(std::string_view utf8) {
     TextReader reader(!has_paragraph_breaks(utf8));
     for_each_line(utf8, [&](std::string_view line, int number) {
         reader.line(line, number);
@@ -96,4 +96,4 @@ Result<Document> import_text(std::string_view utf8) {
     return reader.builder().finish();
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

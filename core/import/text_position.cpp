@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 TextPosition position_at(std::string_view text, std::size_t offset) {
     TextPosition pos;
@@ -34,4 +34,4 @@ int LineIndex::line_at(std::size_t offset) const {
     return static_cast<int>(it - starts_.begin());
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

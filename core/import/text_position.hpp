@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 struct TextPosition {
     int line = 1;
@@ -30,4 +30,4 @@ private:
     std::vector<std::size_t> starts_;
 };
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

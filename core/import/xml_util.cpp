@@ -5,7 +5,7 @@
 
 #include "import/text_position.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 Result<void> parse_xml(pugi::xml_document& doc, std::string_view bytes, std::string_view part) {
     // parse_ws_pcdata keeps <w:t xml:space="preserve"> </w:t>: a space is text.
@@ -52,4 +52,4 @@ pugi::xml_node child(const pugi::xml_node& node, std::string_view local) {
     return {};
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

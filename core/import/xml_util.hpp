@@ -8,7 +8,7 @@
 
 #include "common/result.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 // Parses `bytes` (kept alive by the caller: offsets refer to it). On failure the
 // error's `where` is "part:line:column" (or "line:column" when `part` is empty).
@@ -23,4 +23,4 @@ std::string_view attribute(const pugi::xml_node& node, std::string_view local);
 // The first child element with this local name.
 pugi::xml_node child(const pugi::xml_node& node, std::string_view local);
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

@@ -3,7 +3,7 @@
 
 #include <zip.h>
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 void ZipArchive::Closer::operator()(zip* z) const { zip_discard(z); }
 
@@ -66,4 +66,4 @@ Result<std::string> ZipArchive::read(const std::string& part, std::size_t max_by
     return out;
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

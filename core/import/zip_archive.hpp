@@ -10,7 +10,7 @@
 
 struct zip;
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
 
 class ZipArchive {
 public:
@@ -30,4 +30,4 @@ private:
     std::unique_ptr<zip, Closer> zip_;
 };
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

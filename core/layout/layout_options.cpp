@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tactus {
+namespace tactus::layout {
 
 const std::vector<LayoutPreset>& layout_presets() {
     static const std::vector<LayoutPreset> presets = {
@@ -56,4 +56,4 @@ Result<void> validate(const LayoutOptions& o) {
     return {};
 }
 
-}  // namespace tactus
+}  // namespace tactus::layout

@@ -8,7 +8,7 @@
 #include "common/result.hpp"
 #include "layout/page.hpp"
 
-namespace tactus {
+namespace tactus::layout {
 
 enum class PageNumberPosition { none, top_right, bottom_right, bottom_centre };
 
@@ -47,4 +47,4 @@ Result<PageNumberPosition> parse_page_number_position(std::string_view);
 // Rejects geometries in which no text fits, naming the offending option.
 Result<void> validate(const LayoutOptions& options);
 
-}  // namespace tactus
+}  // namespace tactus::layout

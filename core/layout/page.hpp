@@ -9,10 +9,10 @@
 
 #include "document/cell.hpp"
 
-namespace tactus {
+namespace tactus::layout {
 
 struct Page {
-    std::vector<BrailleLine> lines;  // at most lines_per_page; each at most cells_per_line
+    std::vector<document::BrailleLine> lines;  // at most lines_per_page; each at most cells_per_line
     int braille_number = 0;          // 1-based braille page number
     std::string print_page;          // print page in effect at the top of this page ("" if none)
     bool operator==(const Page&) const = default;
@@ -58,4 +58,4 @@ struct PagedDocument {
     }
 };
 
-}  // namespace tactus
+}  // namespace tactus::layout

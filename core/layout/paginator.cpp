@@ -5,20 +5,20 @@
 
 #include "layout/line_breaker.hpp"
 
-namespace tactus {
+namespace tactus::layout {
 namespace {
 
-constexpr Cell kGuideDots{0x24};  // dots 3-6: the print-page separator line
+constexpr document::Cell kGuideDots{0x24};  // dots 3-6: the print-page separator line
 
-bool is_blank(const BrailleLine& l) { return std::ranges::all_of(l, &Cell::blank); }
+bool is_blank(const document::BrailleLine& l) { return std::ranges::all_of(l, &document::Cell::blank); }
 
-void trim_right(BrailleLine& l) {
+void trim_right(document::BrailleLine& l) {
     while (!l.empty() && l.back().blank()) l.pop_back();
 }
 
 }  // namespace
 
-Paginator::Paginator(LayoutOptions options, std::function<BrailleLine(int)> number_cells)
+Paginator::Paginator(LayoutOptions options, std::function<document::BrailleLine(int)> number_cells)
     : o_(std::move(options)), number_cells_(std::move(number_cells)) {
     doc_.geometry = o_.geometry;
 }
@@ -38,7 +38,7 @@ int Paginator::body_capacity() const {
     return numbered(doc_.pages.size()) ? lines - 1 : lines;
 }
 
-void Paginator::add_line(BrailleLine line, int source_line) {
+void Paginator::add_line(document::BrailleLine line, int source_line) {
     if (static_cast<int>(body_.size()) >= body_capacity()) close_page();
     if (!o_.geometry.eight_dot) {
         bool stripped = false;
@@ -79,7 +79,7 @@ void Paginator::close_page() {
     page.braille_number = o_.first_page_number + static_cast<int>(index);
     page.print_page = body_.empty() ? print_page_ : page_top_print_page_;
     const auto& g = o_.geometry;
-    page.lines.assign(static_cast<std::size_t>(g.lines_per_page), BrailleLine{});
+    page.lines.assign(static_cast<std::size_t>(g.lines_per_page), document::BrailleLine{});
 
     // Remove a trailing blank line left by a block rule.
     while (!body_.empty() && is_blank(body_.back())) body_.pop_back();
@@ -87,10 +87,10 @@ void Paginator::close_page() {
     const bool has_number = numbered(index);
     const bool number_on_top = has_number && o_.page_numbers == PageNumberPosition::top_right;
     std::size_t row = static_cast<std::size_t>(o_.top_margin) + (number_on_top ? 1 : 0);
-    const BrailleLine indent(static_cast<std::size_t>(o_.left_margin), Cell{});
+    const document::BrailleLine indent(static_cast<std::size_t>(o_.left_margin), document::Cell{});
     for (auto& l : body_) {
         if (!l.empty()) {
-            BrailleLine full = indent;
+            document::BrailleLine full = indent;
             full.insert(full.end(), l.begin(), l.end());
             page.lines[row] = std::move(full);
         }
@@ -107,7 +107,7 @@ void Paginator::close_page() {
                         ? o_.left_margin + (width() - len) / 2
                         : right_edge - len;
         start = std::max(start, 0);
-        BrailleLine l(static_cast<std::size_t>(start), Cell{});
+        document::BrailleLine l(static_cast<std::size_t>(start), document::Cell{});
         l.insert(l.end(), number.begin(), number.end());
         if (static_cast<int>(l.size()) > g.cells_per_line)
             l.resize(static_cast<std::size_t>(g.cells_per_line));
@@ -117,22 +117,22 @@ void Paginator::close_page() {
     body_.clear();
 }
 
-void Paginator::add_wrapped(const BrailleLine& cells, int first, int runover, bool centre,
+void Paginator::add_wrapped(const document::BrailleLine& cells, int first, int runover, bool centre,
                             int source_line) {
     auto lines = break_lines(cells, width(), first, runover);
     for (auto& l : lines) {
         if (centre) {
             trim_right(l);
             const auto pad = static_cast<std::size_t>(std::max(0, (width() - static_cast<int>(l.size())) / 2));
-            l.insert(l.begin(), pad, Cell{});
+            l.insert(l.begin(), pad, document::Cell{});
         }
         add_line(std::move(l), source_line);
     }
 }
 
-void Paginator::add(const TranslatedBlock& b) {
+void Paginator::add(const translate::TranslatedBlock& b) {
     switch (b.kind) {
-        case BlockKind::heading: {
+        case document::BlockKind::heading: {
             if (o_.blank_line_before_heading) add_blank_line();
             // Keep a heading off the last body line of a page: it would head nothing.
             if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
@@ -141,21 +141,21 @@ void Paginator::add(const TranslatedBlock& b) {
             if (o_.blank_line_after_heading && b.level <= 1) add_blank_line();
             break;
         }
-        case BlockKind::paragraph:
+        case document::BlockKind::paragraph:
             if (o_.blank_line_between_paragraphs) add_blank_line();
             add_wrapped(b.cells, o_.paragraph_indent, 0, false, b.source_line);
             break;
-        case BlockKind::list_item: {
+        case document::BlockKind::list_item: {
             const int indent = std::min(2 * std::max(b.level - 1, 0), width() / 2);
             add_wrapped(b.cells, indent, indent + o_.list_runover, false, b.source_line);
             break;
         }
-        case BlockKind::print_page_break: {
-            print_page_ = to_unicode_text(b.label);
+        case document::BlockKind::print_page_break: {
+            print_page_ = document::to_unicode_text(b.label);
             if (!o_.print_page_indicators || body_.empty()) break;
             // A separator line of dots 3-6 ending in the new print page number.
             const auto w = static_cast<std::size_t>(width());
-            BrailleLine l(w, kGuideDots);
+            document::BrailleLine l(w, kGuideDots);
             const auto n = std::min(b.label.size(), w / 2);
             std::copy(b.label.begin(), b.label.begin() + static_cast<std::ptrdiff_t>(n),
                       l.end() - static_cast<std::ptrdiff_t>(n));
@@ -167,10 +167,10 @@ void Paginator::add(const TranslatedBlock& b) {
             add_line(std::move(l), b.source_line);
             break;
         }
-        case BlockKind::braille_page_break:
+        case document::BlockKind::braille_page_break:
             break_page();
             break;
-        case BlockKind::braille:
+        case document::BlockKind::braille:
             for (const auto& line : b.lines) {
                 // Verbatim lines keep their spacing; overlong ones are cut, not lost.
                 const auto w = static_cast<std::size_t>(width());
@@ -180,7 +180,7 @@ void Paginator::add(const TranslatedBlock& b) {
                     continue;
                 }
                 for (std::size_t s = 0; s < line.size(); s += w)
-                    add_line(BrailleLine(line.begin() + static_cast<std::ptrdiff_t>(s),
+                    add_line(document::BrailleLine(line.begin() + static_cast<std::ptrdiff_t>(s),
                                          line.begin() + static_cast<std::ptrdiff_t>(std::min(line.size(), s + w))),
                              b.source_line);
             }
@@ -193,4 +193,4 @@ PagedDocument Paginator::finish() && {
     return std::move(doc_);
 }
 
-}  // namespace tactus
+}  // namespace tactus::layout

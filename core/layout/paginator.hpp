@@ -9,15 +9,15 @@
 #include "layout/page.hpp"
 #include "translate/translated_document.hpp"
 
-namespace tactus {
+namespace tactus::layout {
 
 class Paginator {
 public:
     // `number_cells` renders a braille page number in the document's braille code
     // (the translator's digits and number sign).
-    Paginator(LayoutOptions options, std::function<BrailleLine(int)> number_cells);
+    Paginator(LayoutOptions options, std::function<document::BrailleLine(int)> number_cells);
 
-    void add(const TranslatedBlock& block);
+    void add(const translate::TranslatedBlock& block);
     // Closes the last page and returns the pages. An interpoint document with an
     // odd page count simply has no back on its last sheet.
     PagedDocument finish() &&;
@@ -27,7 +27,7 @@ public:
     // back in the state (page, body lines) the previous layout had at that block.
     [[nodiscard]] std::size_t pages_closed() const { return doc_.pages.size(); }
     [[nodiscard]] std::size_t body_lines() const { return body_.size(); }
-    [[nodiscard]] const std::vector<BrailleLine>& body() const { return body_; }
+    [[nodiscard]] const std::vector<document::BrailleLine>& body() const { return body_; }
     // The pages closed so far (finish() would also close the one being filled).
     [[nodiscard]] const PagedDocument& closed() const { return doc_; }
 
@@ -35,19 +35,19 @@ private:
     [[nodiscard]] bool numbered(std::size_t page_index) const;
     [[nodiscard]] int body_capacity() const;
     [[nodiscard]] int width() const;
-    void add_line(BrailleLine line, int source_line);
+    void add_line(document::BrailleLine line, int source_line);
     void add_blank_line();
     void break_page();
     void close_page();
-    void add_wrapped(const BrailleLine& cells, int first, int runover, bool centre,
+    void add_wrapped(const document::BrailleLine& cells, int first, int runover, bool centre,
                      int source_line);
 
     LayoutOptions o_;
-    std::function<BrailleLine(int)> number_cells_;
+    std::function<document::BrailleLine(int)> number_cells_;
     PagedDocument doc_;
-    std::vector<BrailleLine> body_;  // body lines of the page being filled
+    std::vector<document::BrailleLine> body_;  // body lines of the page being filled
     std::string print_page_;         // print page label in effect (UTF-8 of the label cells)
     std::string page_top_print_page_;
 };
 
-}  // namespace tactus
+}  // namespace tactus::layout

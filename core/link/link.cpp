@@ -2,6 +2,7 @@
 #include "link/link.hpp"
 
 #include "link/link_impl.hpp"
+#include "controller/open_device.hpp"
 #include "transport/device.hpp"
 
 namespace tactus::link {
@@ -12,7 +13,7 @@ Link& Link::operator=(Link&&) noexcept = default;
 Link::~Link() = default;
 
 Result<Link> Link::open(std::string_view device, LinkOptions options) {
-    auto s = transport::open_device(device);
+    auto s = controller::open_device(device);
     if (!s) return std::unexpected(s.error());
     auto link = over(std::move(*s), options);
     link.impl_->device = std::string(device);
@@ -29,7 +30,7 @@ Link Link::over(std::unique_ptr<transport::ByteStream> stream, LinkOptions optio
 
 Result<HelloReply> Link::hello() { return impl_->hello(); }
 
-Result<void> Link::configure(const ControllerConfig& config) {
+Result<void> Link::configure(const machine::ControllerConfig& config) {
     impl_->config = config;
     return impl_->transact(FrameType::configure, encode::encode_config(config));
 }

@@ -28,7 +28,7 @@ class ByteStream;
 
 namespace tactus::link {
 
-using encode::ControllerConfig;
+using machine::ControllerConfig;
 using encode::ControllerState;
 using encode::HelloReply;
 using encode::Status;
@@ -120,7 +120,7 @@ public:
 
     // Opens a session: new nonce, sequence numbers reset, version checked.
     Result<HelloReply> hello();
-    Result<void> configure(const ControllerConfig& config);
+    Result<void> configure(const machine::ControllerConfig& config);
     Result<Status> status();
     Result<void> pause();
     Result<void> resume();

@@ -40,7 +40,7 @@ struct Link::Impl {
     std::uint16_t nonce = 0;
     std::uint8_t next_seq = 0;
     HelloReply info;
-    std::optional<ControllerConfig> config;
+    std::optional<machine::ControllerConfig> config;
     std::mt19937 rng{std::random_device{}()};
 
     // what the controller last told us

@@ -14,13 +14,13 @@
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
-namespace tactus {
+namespace tactus::pipeline {
 namespace {
 
 // Bounded single-producer/single-consumer hand-off of translated blocks.
 class BlockQueue {
 public:
-    void push(TranslatedBlock b) {
+    void push(translate::TranslatedBlock b) {
         std::unique_lock lock(m_);
         not_full_.wait(lock, [&] { return q_.size() < kCapacity; });
         q_.push_back(std::move(b));
@@ -33,7 +33,7 @@ public:
         not_empty_.notify_one();
     }
     // Empty optional: the producer is done (check error()).
-    std::optional<TranslatedBlock> pop() {
+    std::optional<translate::TranslatedBlock> pop() {
         std::unique_lock lock(m_);
         not_empty_.wait(lock, [&] { return !q_.empty() || closed_; });
         if (q_.empty()) return std::nullopt;
@@ -51,21 +51,21 @@ private:
     static constexpr std::size_t kCapacity = 256;
     std::mutex m_;
     std::condition_variable not_empty_, not_full_;
-    std::deque<TranslatedBlock> q_;
+    std::deque<translate::TranslatedBlock> q_;
     bool closed_ = false;
     std::optional<Error> error_;
 };
 
 }  // namespace
 
-Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& options) {
+Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options) {
     if (auto ok = validate(options.layout); !ok) return std::unexpected(ok.error());
-    auto translator = Translator::open(options.tables);
+    auto translator = translate::Translator::open(options.tables);
     if (!translator) return std::unexpected(translator.error());
 
-    std::unordered_map<int, BrailleLine> numbers;
+    std::unordered_map<int, document::BrailleLine> numbers;
     std::optional<Error> number_error;
-    auto number_cells = [&](int n) -> BrailleLine {
+    auto number_cells = [&](int n) -> document::BrailleLine {
         if (auto it = numbers.find(n); it != numbers.end()) return it->second;
         const auto digits = std::to_string(n);
         auto cells = translator->translate(std::u32string(digits.begin(), digits.end()));
@@ -75,7 +75,7 @@ Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& o
         }
         return numbers.emplace(n, std::move(*cells)).first->second;
     };
-    Paginator paginator(options.layout, number_cells);
+    layout::Paginator paginator(options.layout, number_cells);
 
     const unsigned workers = options.translation_workers != 0
                                  ? options.translation_workers
@@ -96,7 +96,7 @@ Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& o
     BlockQueue queue;
     std::jthread producer([&] {
         for (const auto& block : document.blocks) {
-            auto tb = translate_block(block, *translator);
+            auto tb = translate::translate_block(block, *translator);
             if (!tb) {
                 queue.close(located(tb.error(), document.source_name));
                 return;
@@ -112,11 +112,11 @@ Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& o
     return std::move(paginator).finish();
 }
 
-Result<PagedDocument> lay_out_file(const std::filesystem::path& path,
+Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,
                                    const PipelineOptions& options) {
-    auto doc = import_file(path, options.import);
+    auto doc = import::import_file(path, options.import);
     if (!doc) return std::unexpected(doc.error());
     return lay_out(*doc, options);
 }
 
-}  // namespace tactus
+}  // namespace tactus::pipeline

@@ -15,19 +15,19 @@
 #include "layout/page.hpp"
 #include "translate/catalogue.hpp"
 
-namespace tactus {
+namespace tactus::pipeline {
 
 struct PipelineOptions {
-    ImportOptions import;
-    std::string tables = kDefaultTable;
-    LayoutOptions layout;
+    import::ImportOptions import;
+    std::string tables = translate::kDefaultTable;
+    layout::LayoutOptions layout;
     // Translation processes for big documents: 0 picks by size and cores
     // (TranslationWorkers::suggested_workers), 1 keeps everything in-process.
     unsigned translation_workers = 0;
 };
 
-Result<PagedDocument> lay_out(const Document& document, const PipelineOptions& options);
-Result<PagedDocument> lay_out_file(const std::filesystem::path& path,
+Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options);
+Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,
                                    const PipelineOptions& options);
 
-}  // namespace tactus
+}  // namespace tactus::pipeline

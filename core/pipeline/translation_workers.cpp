@@ -15,7 +15,7 @@
 
 #include "translate/louis.hpp"
 
-namespace tactus {
+namespace tactus::pipeline {
 namespace {
 
 // Record header: cell count, or kErrorBit | message length.
@@ -48,12 +48,12 @@ int read_all(int fd, void* data, std::size_t n) {
 }
 
 // The worker: translate my chunks, write one record per block, exit.
-[[noreturn]] void work(const Document& doc, const Translator& translator, unsigned index,
+[[noreturn]] void work(const document::Document& doc, const translate::Translator& translator, unsigned index,
                        unsigned workers, std::size_t chunk, int fd) {
     const std::size_t n = doc.blocks.size();
     for (std::size_t c = index; c * chunk < n; c += workers) {
         for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
-            auto tb = translate_block(doc.blocks[i], translator);
+            auto tb = translate::translate_block(doc.blocks[i], translator);
             if (!tb) {
                 const auto e = located(tb.error(), doc.source_name);
                 const std::string msg = e.where + '\0' + e.message;
@@ -62,9 +62,9 @@ int read_all(int fd, void* data, std::size_t n) {
                 write_all(fd, msg.data(), msg.size());
                 ::_exit(1);
             }
-            const auto& cells = tb->kind == BlockKind::print_page_break ? tb->label : tb->cells;
+            const auto& cells = tb->kind == document::BlockKind::print_page_break ? tb->label : tb->cells;
             const auto header = static_cast<std::uint32_t>(cells.size());
-            static_assert(sizeof(Cell) == 1);
+            static_assert(sizeof(document::Cell) == 1);
             if (!write_all(fd, &header, sizeof header) ||
                 !write_all(fd, cells.data(), cells.size()))
                 ::_exit(2);  // the reader is gone: nothing left to do
@@ -75,14 +75,14 @@ int read_all(int fd, void* data, std::size_t n) {
 
 }  // namespace
 
-unsigned TranslationWorkers::suggested_workers(const Document& document) {
+unsigned TranslationWorkers::suggested_workers(const document::Document& document) {
     // Forking pays off only when translation takes a while: a few thousand blocks.
     if (document.blocks.size() < 4000) return 1;
     return std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
 }
 
-Result<TranslationWorkers> TranslationWorkers::start(const Document& document,
-                                                     const Translator& translator,
+Result<TranslationWorkers> TranslationWorkers::start(const document::Document& document,
+                                                     const translate::Translator& translator,
                                                      unsigned workers, std::size_t chunk_blocks) {
     TranslationWorkers pool(document, std::max<std::size_t>(chunk_blocks, 1));
     workers = std::max(workers, 1u);
@@ -95,11 +95,11 @@ Result<TranslationWorkers> TranslationWorkers::start(const Document& document,
         pid_t pid = 0;
         {
             // No other thread may be inside liblouis while its memory is copied.
-            std::lock_guard guard(louis::lock());
+            std::lock_guard guard(translate::louis::lock());
             pid = ::fork();
             if (pid == 0) {
                 // The child's copy of the lock is held by this (its only) thread.
-                louis::lock().unlock();
+                translate::louis::lock().unlock();
                 ::close(fds[0]);
                 for (int fd : pool.fds_) ::close(fd);
                 work(document, translator, w, workers, pool.chunk_blocks_, fds[1]);
@@ -139,9 +139,9 @@ void TranslationWorkers::stop() {
     pids_.clear();
 }
 
-Result<std::optional<TranslatedBlock>> TranslationWorkers::next() {
+Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     const auto& blocks = document_->blocks;
-    if (next_block_ >= blocks.size()) return std::optional<TranslatedBlock>{};
+    if (next_block_ >= blocks.size()) return std::optional<translate::TranslatedBlock>{};
     const std::size_t i = next_block_++;
     const auto worker = (i / chunk_blocks_) % fds_.size();
     const int fd = fds_[worker];
@@ -160,18 +160,18 @@ Result<std::optional<TranslatedBlock>> TranslationWorkers::next() {
         const auto nul = msg.find('\0');
         return fail(msg.substr(nul + 1), msg.substr(0, nul));
     }
-    BrailleLine cells(header);
+    document::BrailleLine cells(header);
     if (read_all(fd, cells.data(), cells.size()) != 1)
         return fail("translation worker ended in the middle of a block");
-    const Block& b = blocks[i];
-    TranslatedBlock tb;
+    const document::Block& b = blocks[i];
+    translate::TranslatedBlock tb;
     tb.kind = b.kind;
     tb.level = b.level;
     tb.source_line = b.source_line;
-    if (b.kind == BlockKind::braille) tb.lines = b.braille_lines;
-    if (b.kind == BlockKind::print_page_break) tb.label = std::move(cells);
+    if (b.kind == document::BlockKind::braille) tb.lines = b.braille_lines;
+    if (b.kind == document::BlockKind::print_page_break) tb.label = std::move(cells);
     else tb.cells = std::move(cells);
-    return std::optional<TranslatedBlock>(std::move(tb));
+    return std::optional<translate::TranslatedBlock>(std::move(tb));
 }
 
-}  // namespace tactus
+}  // namespace tactus::pipeline

@@ -18,33 +18,33 @@
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
-namespace tactus {
+namespace tactus::pipeline {
 
 class TranslationWorkers {
 public:
     // The document and translator must outlive this object.
-    static Result<TranslationWorkers> start(const Document& document, const Translator& translator,
+    static Result<TranslationWorkers> start(const document::Document& document, const translate::Translator& translator,
                                             unsigned workers, std::size_t chunk_blocks = 64);
     TranslationWorkers(TranslationWorkers&&) noexcept;
     TranslationWorkers& operator=(TranslationWorkers&&) = delete;
     ~TranslationWorkers();
 
     // The next block in document order; nullopt after the last one.
-    Result<std::optional<TranslatedBlock>> next();
+    Result<std::optional<translate::TranslatedBlock>> next();
 
     // How many workers a document of this size deserves on this machine.
-    static unsigned suggested_workers(const Document& document);
+    static unsigned suggested_workers(const document::Document& document);
 
 private:
-    TranslationWorkers(const Document& document, std::size_t chunk_blocks)
+    TranslationWorkers(const document::Document& document, std::size_t chunk_blocks)
         : document_(&document), chunk_blocks_(chunk_blocks) {}
     void stop();
 
-    const Document* document_;
+    const document::Document* document_;
     std::size_t chunk_blocks_;
     std::vector<pid_t> pids_;
     std::vector<int> fds_;  // read ends, one per worker
     std::size_t next_block_ = 0;
 };
 
-}  // namespace tactus
+}  // namespace tactus::pipeline

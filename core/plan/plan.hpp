@@ -7,48 +7,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "machine/limits.hpp"
+#include "motion/step_move.hpp"
+
 namespace tactus::plan {
 
 enum class Side : std::uint8_t { front, back };
 // The convex hammer raises dots toward the front side, the concave one toward the back.
 enum class Hammer : std::uint8_t { convex, concave };
-
-// Klipper-style step compression: `count` steps, the first `interval` timer ticks
-// after the previous step, each following interval `add` ticks longer (negative:
-// shorter). Ticks are the 89C52 timer clock, 11.0592 MHz / 12 = 921600 Hz.
-//
-// interval and add are fixed point with 16 fractional bits (Q16.16): a carriage
-// cruising at 38.4 ticks per step, or an acceleration ramp whose interval shrinks
-// by 0.3 ticks per step, is then one segment instead of one every few steps
-// (whole-tick intervals made the schedule larger than a 115200-baud link can
-// carry). The controller still only adds: per step it adds the 16-bit fraction of
-// `interval` into a fraction accumulator that starts at 0 with each segment, loads
-// its timer with the integer part plus the carry, and adds `add` (32-bit) to
-// `interval`. expand_steps() in plan/steps.hpp is that arithmetic, exactly.
-struct StepSegment {
-    std::uint32_t interval_q16 = 0;  // ticks << 16; integer part 1..65535
-    std::uint16_t count = 0;
-    std::int32_t add_q16 = 0;  // ticks << 16 added to the interval after each step
-    bool operator==(const StepSegment&) const = default;
-};
-
-inline constexpr int kStepFractionBits = 16;
-// Segment intervals and adds lie on a grid of 2^0..2^15 Q16.16 units: the planner
-// picks the coarsest that fits, the protocol omits the zero low bits.
-inline constexpr unsigned kMaxGridShift = 15;
-
-inline constexpr double kTickHz = 11'059'200.0 / 12.0;
-
-// One axis move in whole motor steps, with its step timing.
-struct StepMove {
-    std::int32_t steps = 0;  // signed: direction is the sign
-    std::vector<StepSegment> segments;
-    double duration_s = 0;
-    // Ticks at rest between the last step and the end of duration_s: the
-    // planned settle before a strike, which the controller waits out.
-    std::uint32_t settle_ticks = 0;
-    bool operator==(const StepMove&) const = default;
-};
 
 struct Strike {
     Hammer hammer = Hammer::convex;
@@ -72,8 +38,8 @@ struct Pass {
     double y_mm = 0;               // paper position of this dot row
     std::int32_t feed_step = 0;    // absolute paper-feed position
     int direction = +1;            // carriage sweep direction, +1 or -1
-    StepMove feed;                 // paper feed from the previous pass
-    std::vector<StepMove> moves;   // moves[i] brings the carriage to strikes[i]
+    motion::StepMove feed;                 // paper feed from the previous pass
+    std::vector<motion::StepMove> moves;   // moves[i] brings the carriage to strikes[i]
     std::vector<Strike> strikes;
     double duration_s = 0;
     // Added by the plan stage:

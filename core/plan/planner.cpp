@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "plan/geometry.hpp"
-#include "plan/motion.hpp"
+#include "motion/motion.hpp"
 #include "profile/profile_json.hpp"
 
 namespace tactus::plan {
@@ -20,7 +20,7 @@ struct Hit {
     DotPlace place;
 };
 
-Result<void> check_page(const profile::PrinterProfile& p, const Page& page, std::size_t index) {
+Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& page, std::size_t index) {
     const auto& g = p.geometry;
     const std::string where = "page " + std::to_string(index + 1);
     if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
@@ -45,11 +45,11 @@ Result<void> check_page(const profile::PrinterProfile& p, const Page& page, std:
 }
 
 // Every dot of one sheet, sorted by feed position then carriage position.
-Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const PagedDocument& doc,
-                                      std::size_t sheet_number, const StepAxis& carriage,
-                                      const StepAxis& feed, bool check) {
+Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
+                                      std::size_t sheet_number, const motion::StepAxis& carriage,
+                                      const motion::StepAxis& feed, bool check) {
     std::vector<Hit> hits;
-    const Sheet sheet = doc.sheet(sheet_number);
+    const layout::Sheet sheet = doc.sheet(sheet_number);
     const int dots = p.geometry.eight_dot ? 8 : 6;
     for (const auto& [side, page] : {std::pair{Side::front, sheet.front}, std::pair{Side::back, sheet.back}}) {
         if (!page) continue;
@@ -60,7 +60,7 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const Pa
         for (std::size_t l = 0; l < page->lines.size(); ++l) {
             const auto& line = page->lines[l];
             for (std::size_t c = 0; c < line.size(); ++c) {
-                const Cell cell = line[c];
+                const document::Cell cell = line[c];
                 if (cell.blank()) continue;
                 for (int d = 1; d <= dots; ++d) {
                     if (!cell.has_dot(d)) continue;
@@ -78,7 +78,7 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const Pa
     return hits;
 }
 
-Limits limits(const profile::Axis& a) { return {a.v_max_mm_s, a.a_max_mm_s2, a.j_max_mm_s3}; }
+motion::Limits limits(const profile::Axis& a) { return {a.v_max_mm_s, a.a_max_mm_s2, a.j_max_mm_s3}; }
 
 profile::ProfileShape feed_shape(const profile::PrinterProfile& p) {
     // The paper axis has no vibration model: automatic means the time-optimal jerk-limited move.
@@ -100,10 +100,10 @@ Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOpti
     return Planner(p, o);
 }
 
-Result<StepMove> Planner::carriage_steps(std::uint32_t steps, const MoveShape& shape) {
+Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const motion::MoveShape& shape) {
     auto it = carriage_cache_.find(steps);
     if (it == carriage_cache_.end()) {
-        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
+        auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
                              p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "carriage"));
         it = carriage_cache_.emplace(steps, std::move(*m)).first;
@@ -111,11 +111,11 @@ Result<StepMove> Planner::carriage_steps(std::uint32_t steps, const MoveShape& s
     return it->second;
 }
 
-Result<std::pair<const StepMove*, const MoveShape*>> Planner::feed_move(std::uint32_t steps) {
+Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::feed_move(std::uint32_t steps) {
     auto it = feed_cache_.find(steps);
     if (it == feed_cache_.end()) {
-        auto shape = make_move(feed_shape(p_), steps / p_.feed.steps_per_mm, limits(p_.feed));
-        auto m = encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm,
+        auto shape = motion::make_move(feed_shape(p_), steps / p_.feed.steps_per_mm, limits(p_.feed));
+        auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm,
                              p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "feed"));
         it = feed_cache_.emplace(steps, std::pair{std::move(*m), std::move(shape)}).first;
@@ -123,7 +123,7 @@ Result<std::pair<const StepMove*, const MoveShape*>> Planner::feed_move(std::uin
     return std::pair{&it->second.first, &it->second.second};
 }
 
-Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t sheet_number) {
+Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number) {
     if (o_.check_layout && doc.geometry.interpoint != p_.geometry.interpoint)
         return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
@@ -133,7 +133,7 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
     SheetPlan sheet;
     sheet.index = sheet_number;
     const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
-    const Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
+    const motion::Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
     const double dwell = p_.head.dwell_s;
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     const auto& h = *hits;
@@ -155,7 +155,7 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
         pass.segments += pass.feed.segments.size();
         feed_pos = pass.feed_step;
         const double feed_time = fm->second->duration;
-        const double feed_bound = jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
+        const double feed_bound = motion::jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
 
         const double t0 = clock_s_;
         double t = t0;
@@ -184,7 +184,7 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
             sm->steps = n;
             pass.segments += sm->segments.size();
             const double move_time = (*tuned)->shape.duration;
-            const double bound = jerk_min_time(head_mm, carriage_lim);
+            const double bound = motion::jerk_min_time(head_mm, carriage_lim);
             if (k == 0) {
                 // The feed and the carriage's first move run at the same time.
                 t += std::max(feed_time, move_time);
@@ -226,7 +226,7 @@ Result<SheetPlan> Planner::plan_sheet(const PagedDocument& doc, std::size_t shee
     return sheet;
 }
 
-Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
                          const PlanOptions& o) {
     auto planner = Planner::create(p, o);
     if (!planner) return std::unexpected(planner.error());
@@ -241,10 +241,10 @@ Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile
     return job;
 }
 
-Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p) {
+Result<double> naive_duration(const layout::PagedDocument& doc, const profile::PrinterProfile& p) {
     if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
     estimate::MoveTuner tuner(p);
-    const StepAxis carriage(p.carriage.steps_per_mm), feed(p.feed.steps_per_mm);
+    const motion::StepAxis carriage(p.carriage.steps_per_mm), feed(p.feed.steps_per_mm);
     const auto backlash = carriage.steps_for(p.carriage.backlash_mm);
     // Every dot column of each side, as carriage stops for that side's hammer.
     std::vector<std::int32_t> columns[2];
@@ -280,7 +280,7 @@ Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterPr
             stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
             const auto feed_steps = h[first].feed_step - feed_pos;
             feed_pos = h[first].feed_step;
-            const double feed_time = jerk_min_time(feed_steps / p.feed.steps_per_mm,
+            const double feed_time = motion::jerk_min_time(feed_steps / p.feed.steps_per_mm,
                                                    {p.feed.v_max_mm_s, p.feed.a_max_mm_s2, p.feed.j_max_mm_s3});
             // Return to the first column (a reversal: backlash), then step right column by column.
             auto back = move_time(std::abs(stops.front() - head) + (head != stops.front() ? backlash : 0));

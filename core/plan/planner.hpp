@@ -12,7 +12,7 @@
 #include "estimate/tune.hpp"
 #include "layout/page.hpp"
 #include "plan/plan.hpp"
-#include "plan/steps.hpp"
+#include "motion/steps.hpp"
 #include "profile/profile.hpp"
 
 namespace tactus::plan {
@@ -27,7 +27,7 @@ public:
     static Result<Planner> create(const profile::PrinterProfile& p, const PlanOptions& o = {});
 
     // Plans the next sheet of `doc` (sheets must come in order).
-    Result<SheetPlan> plan_sheet(const PagedDocument& doc, std::size_t sheet_number);
+    Result<SheetPlan> plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number);
     // Running totals over the sheets planned so far (sheets left empty).
     [[nodiscard]] const JobPlan& totals() const { return totals_; }
     [[nodiscard]] estimate::MoveTuner& tuner() { return *tuner_; }
@@ -35,15 +35,15 @@ public:
 
 private:
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
-    Result<StepMove> carriage_steps(std::uint32_t steps, const MoveShape& shape);
-    Result<std::pair<const StepMove*, const MoveShape*>> feed_move(std::uint32_t steps);
+    Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
+    Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> feed_move(std::uint32_t steps);
 
     profile::PrinterProfile p_;
     PlanOptions o_;
     std::unique_ptr<estimate::MoveTuner> tuner_;
-    StepAxis carriage_axis_, feed_axis_;
-    std::unordered_map<std::uint32_t, StepMove> carriage_cache_;
-    std::unordered_map<std::uint32_t, std::pair<StepMove, MoveShape>> feed_cache_;
+    motion::StepAxis carriage_axis_, feed_axis_;
+    std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
+    std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
     JobPlan totals_;
     // Machine state carried across passes and sheets.
     double clock_s_ = 0;
@@ -53,12 +53,12 @@ private:
     int next_direction_ = +1;
 };
 
-Result<JobPlan> plan_job(const PagedDocument& doc, const profile::PrinterProfile& p,
+Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
                          const PlanOptions& o = {});
 
 // The naive plan for comparison: one sweep direction (+x), the carriage stopping
 // at every dot column of the line whether or not a dot is struck there. Only its
 // duration is computed. Uses the same tuned moves as the real plan.
-Result<double> naive_duration(const PagedDocument& doc, const profile::PrinterProfile& p);
+Result<double> naive_duration(const layout::PagedDocument& doc, const profile::PrinterProfile& p);
 
 }  // namespace tactus::plan

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "plan/plan.hpp"
+#include "machine/limits.hpp"
 #include "profile/profile_json.hpp"
 
 namespace tactus::profile {
@@ -50,9 +50,9 @@ void check_axis(Checker& c, const Axis& a, const std::string& name) {
     // The controller times each step with the 89C52 timer; it needs at least a
     // few ticks between steps to do its additions.
     const double steps_per_s = a.v_max_mm_s * a.steps_per_mm;
-    c.require(!std::isfinite(steps_per_s) || steps_per_s <= plan::kTickHz / 8, f[1].c_str(),
+    c.require(!std::isfinite(steps_per_s) || steps_per_s <= machine::kMaxStepsPerSecond, f[1].c_str(),
               "needs " + num(steps_per_s) + " steps/s, more than the controller can time (" +
-                  num(plan::kTickHz / 8) + " steps/s, 8 timer ticks per step)");
+                  num(machine::kMaxStepsPerSecond) + " steps/s, 8 timer ticks per step)");
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ plan::JobPlan repeat_plan(const plan::JobPlan& one, std::size_t copies) {
     return all;
 }
 
-Result<plan::JobPlan> plan_copies(const PagedDocument& doc, const profile::PrinterProfile& profile,
+Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies) {
     auto one = plan::plan_job(doc, profile);
     if (!one) return std::unexpected(one.error());

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "common/result.hpp"
-#include "encode/controller_config.hpp"
+#include "profile/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "layout/page.hpp"
 #include "plan/plan.hpp"
@@ -18,7 +18,7 @@ namespace tactus::spool {
 
 // Plans `copies` copies of `doc`. Fails, naming page and line, when the
 // document does not fit the profile (e.g. the profile now has fewer cells per line).
-Result<plan::JobPlan> plan_copies(const PagedDocument& doc, const profile::PrinterProfile& profile,
+Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies);
 
 // Copies of an already planned copy, renumbered (exposed for tests).

@@ -111,7 +111,7 @@ Result<void> Runner::connect() {
     if (auto h = link->hello(); !h) return std::unexpected(h.error());
     auto profile = profile::parse_profile(printer_.profile_json);
     if (!profile) return std::unexpected(located(profile.error(), "printer " + printer_.name));
-    if (auto c = link->configure(encode::controller_config(*profile)); !c) return c;
+    if (auto c = link->configure(profile::controller_config(*profile)); !c) return c;
     link_.emplace(std::move(*link));
     (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
     return {};

@@ -18,11 +18,11 @@ std::string page_where(std::size_t page, std::size_t line = 0) {
 
 }  // namespace
 
-std::string to_snapshot(const PagedDocument& doc) {
+std::string to_snapshot(const layout::PagedDocument& doc) {
     json pages = json::array();
     for (const auto& page : doc.pages) {
         json lines = json::array();
-        for (const auto& line : page.lines) lines.push_back(to_unicode_text(line));
+        for (const auto& line : page.lines) lines.push_back(document::to_unicode_text(line));
         pages.push_back({{"number", page.braille_number},
                          {"print_page", page.print_page},
                          {"lines", std::move(lines)}});
@@ -37,7 +37,7 @@ std::string to_snapshot(const PagedDocument& doc) {
     return j.dump();
 }
 
-Result<PagedDocument> from_snapshot(std::string_view text) {
+Result<layout::PagedDocument> from_snapshot(std::string_view text) {
     const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded() || !j.is_object()) return fail("document snapshot is not valid JSON");
     if (j.value("format", "") != kSnapshotFormat)
@@ -49,7 +49,7 @@ Result<PagedDocument> from_snapshot(std::string_view text) {
     if (g == j.end() || !g->is_object() || pages == j.end() || !pages->is_array())
         return fail("document snapshot lacks its geometry or pages");
 
-    PagedDocument doc;
+    layout::PagedDocument doc;
     auto int_field = [&](const char* name, int& out) -> Result<void> {
         const auto it = g->find(name);
         if (it == g->end() || !it->is_number_integer() || it->get<int>() < 1 || it->get<int>() > 1000)
@@ -83,7 +83,7 @@ Result<PagedDocument> from_snapshot(std::string_view text) {
             return fail(std::to_string(lines->size()) + " lines, the geometry allows " +
                             std::to_string(max_lines),
                         page_where(page_no));
-        Page page;
+        layout::Page page;
         page.braille_number = number->get<int>();
         page.print_page = print->get<std::string>();
         std::size_t line_no = 0;
@@ -96,12 +96,12 @@ Result<PagedDocument> from_snapshot(std::string_view text) {
                 return fail(std::to_string(cps->size()) + " cells, the geometry allows " +
                                 std::to_string(max_cells),
                             page_where(page_no, line_no));
-            BrailleLine line;
+            document::BrailleLine line;
             line.reserve(cps->size());
             for (char32_t c : *cps) {
-                if (!Cell::is_unicode_braille(c))
+                if (!document::Cell::is_unicode_braille(c))
                     return fail("not a braille cell", page_where(page_no, line_no));
-                line.push_back(Cell::from_unicode(c));
+                line.push_back(document::Cell::from_unicode(c));
             }
             page.lines.push_back(std::move(line));
         }
@@ -110,7 +110,7 @@ Result<PagedDocument> from_snapshot(std::string_view text) {
     return doc;
 }
 
-Result<PagedDocument> select_pages(const PagedDocument& doc, std::size_t first, std::size_t last) {
+Result<layout::PagedDocument> select_pages(const layout::PagedDocument& doc, std::size_t first, std::size_t last) {
     const std::size_t n = doc.pages.size();
     if (first == 0) first = 1;
     if (last == 0) last = n;
@@ -118,7 +118,7 @@ Result<PagedDocument> select_pages(const PagedDocument& doc, std::size_t first, 
         return fail("page range " + std::to_string(first) + "-" + std::to_string(last) +
                         " is outside the document's " + std::to_string(n) + " pages",
                     "--pages");
-    PagedDocument out;
+    layout::PagedDocument out;
     out.geometry = doc.geometry;
     out.pages.assign(doc.pages.begin() + static_cast<std::ptrdiff_t>(first - 1),
                      doc.pages.begin() + static_cast<std::ptrdiff_t>(last));

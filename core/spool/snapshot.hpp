@@ -16,13 +16,13 @@ namespace tactus::spool {
 
 inline constexpr std::string_view kSnapshotFormat = "tactus-paged-1";
 
-std::string to_snapshot(const PagedDocument& doc);
+std::string to_snapshot(const layout::PagedDocument& doc);
 // Strict: the format tag, every field and the sizes are checked; errors name
 // the page and line ("page 12 line 3: 29 cells, the geometry allows 27").
-Result<PagedDocument> from_snapshot(std::string_view text);
+Result<layout::PagedDocument> from_snapshot(std::string_view text);
 
 // Pages first..last (1-based, inclusive; 0 = to the end) as their own
 // document: on interpoint paper page `first` goes on a front.
-Result<PagedDocument> select_pages(const PagedDocument& doc, std::size_t first, std::size_t last);
+Result<layout::PagedDocument> select_pages(const layout::PagedDocument& doc, std::size_t first, std::size_t last);
 
 }  // namespace tactus::spool

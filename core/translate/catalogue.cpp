@@ -14,7 +14,7 @@
 
 #include "translate/louis.hpp"
 
-namespace tactus {
+namespace tactus::translate {
 namespace {
 
 // The tables the product is specified with: English UEB and both Chinese systems.
@@ -74,4 +74,4 @@ std::vector<TableInfo> table_catalogue() {
     return out;
 }
 
-}  // namespace tactus
+}  // namespace tactus::translate

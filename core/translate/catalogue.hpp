@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace tactus {
+namespace tactus::translate {
 
 struct TableInfo {
     std::string file;          // what to pass as --table, e.g. "en-ueb-g2.ctb"
@@ -22,4 +22,4 @@ std::vector<TableInfo> table_catalogue();
 // The table Tactus uses when none is chosen.
 inline constexpr const char* kDefaultTable = "en-ueb-g2.ctb";
 
-}  // namespace tactus
+}  // namespace tactus::translate

@@ -3,7 +3,7 @@
 
 #include <liblouis/liblouis.h>
 
-namespace tactus::louis {
+namespace tactus::translate::louis {
 namespace {
 
 std::string& log_buffer() {
@@ -41,4 +41,4 @@ void install_log_capture() {
     });
 }
 
-}  // namespace tactus::louis
+}  // namespace tactus::translate::louis

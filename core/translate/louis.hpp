@@ -8,7 +8,7 @@
 #include <mutex>
 #include <string>
 
-namespace tactus::louis {
+namespace tactus::translate::louis {
 
 std::mutex& lock();
 
@@ -19,4 +19,4 @@ std::string take_log();
 // Installs the log callback once; called by everything that opens tables.
 void install_log_capture();
 
-}  // namespace tactus::louis
+}  // namespace tactus::translate::louis

@@ -5,14 +5,14 @@
 
 #include "common/utf8.hpp"
 
-namespace tactus {
+namespace tactus::translate {
 namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
 // Joins spans into one string with an emphasis mark per code point. Line breaks
 // and tabs inside a block become spaces: layout decides where braille lines end.
-Result<void> flatten(const Block& block, std::u32string& text, std::vector<std::uint8_t>& emph) {
+Result<void> flatten(const document::Block& block, std::u32string& text, std::vector<std::uint8_t>& emph) {
     for (const auto& span : block.spans) {
         auto u = utf8_to_utf32(span.text);
         if (!u) return std::unexpected(u.error());
@@ -25,11 +25,11 @@ Result<void> flatten(const Block& block, std::u32string& text, std::vector<std::
     return {};
 }
 
-Result<BrailleLine> translate_text(const Translator& tr, std::u32string_view text,
+Result<document::BrailleLine> translate_text(const Translator& tr, std::u32string_view text,
                                    std::span<const std::uint8_t> emph) {
     const bool any_emphasis =
-        std::ranges::any_of(emph, [](std::uint8_t e) { return e != emphasis_none; });
-    BrailleLine out;
+        std::ranges::any_of(emph, [](std::uint8_t e) { return e != document::emphasis_none; });
+    document::BrailleLine out;
     std::size_t start = 0;
     while (start < text.size()) {
         std::size_t end = std::min(text.size(), start + kChunk);
@@ -49,7 +49,7 @@ Result<BrailleLine> translate_text(const Translator& tr, std::u32string_view tex
 
 }  // namespace
 
-Result<TranslatedBlock> translate_block(const Block& block, const Translator& translator) {
+Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator) {
     TranslatedBlock tb;
     tb.kind = block.kind;
     tb.level = block.level;
@@ -57,12 +57,12 @@ Result<TranslatedBlock> translate_block(const Block& block, const Translator& tr
     const auto where = block.source_line > 0 ? "line " + std::to_string(block.source_line)
                                              : std::string{};
     switch (block.kind) {
-        case BlockKind::braille:
+        case document::BlockKind::braille:
             tb.lines = block.braille_lines;
             break;
-        case BlockKind::braille_page_break:
+        case document::BlockKind::braille_page_break:
             break;
-        case BlockKind::print_page_break:
+        case document::BlockKind::print_page_break:
             if (!block.label.empty()) {
                 auto u = utf8_to_utf32(block.label);
                 if (!u) return std::unexpected(located(u.error(), where));
@@ -71,9 +71,9 @@ Result<TranslatedBlock> translate_block(const Block& block, const Translator& tr
                 tb.label = std::move(*cells);
             }
             break;
-        case BlockKind::heading:
-        case BlockKind::paragraph:
-        case BlockKind::list_item: {
+        case document::BlockKind::heading:
+        case document::BlockKind::paragraph:
+        case document::BlockKind::list_item: {
             std::u32string text;
             std::vector<std::uint8_t> emph;
             if (auto ok = flatten(block, text, emph); !ok)
@@ -87,4 +87,4 @@ Result<TranslatedBlock> translate_block(const Block& block, const Translator& tr
     return tb;
 }
 
-}  // namespace tactus
+}  // namespace tactus::translate

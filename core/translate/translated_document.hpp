@@ -8,19 +8,19 @@
 #include "document/document.hpp"
 #include "translate/translator.hpp"
 
-namespace tactus {
+namespace tactus::translate {
 
 struct TranslatedBlock {
-    BlockKind kind = BlockKind::paragraph;
+    document::BlockKind kind = document::BlockKind::paragraph;
     int level = 0;
-    BrailleLine cells;               // heading, paragraph, list_item; words separated by blank cells
-    std::vector<BrailleLine> lines;  // braille: verbatim lines
-    BrailleLine label;               // print_page_break: the page number in braille
+    document::BrailleLine cells;               // heading, paragraph, list_item; words separated by blank cells
+    std::vector<document::BrailleLine> lines;  // braille: verbatim lines
+    document::BrailleLine label;               // print_page_break: the page number in braille
     int source_line = 0;
 };
 
 // Translates one block. Long paragraphs are cut at spaces into pieces liblouis
 // handles in linear time; contractions never span a space, so the cut is invisible.
-Result<TranslatedBlock> translate_block(const Block& block, const Translator& translator);
+Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator);
 
-}  // namespace tactus
+}  // namespace tactus::translate

@@ -8,7 +8,7 @@
 #include "document/document.hpp"
 #include "translate/louis.hpp"
 
-namespace tactus {
+namespace tactus::translate {
 namespace {
 
 static_assert(sizeof(widechar) == sizeof(char32_t),
@@ -18,9 +18,9 @@ constexpr std::string_view kUnicodeDisplay = "unicode.dis";
 
 formtype to_typeform(std::uint8_t e) {
     formtype t = plain_text;
-    if (e & emphasis_italic) t = static_cast<formtype>(t | italic);
-    if (e & emphasis_bold) t = static_cast<formtype>(t | bold);
-    if (e & emphasis_underline) t = static_cast<formtype>(t | underline);
+    if (e & document::emphasis_italic) t = static_cast<formtype>(t | italic);
+    if (e & document::emphasis_bold) t = static_cast<formtype>(t | bold);
+    if (e & document::emphasis_underline) t = static_cast<formtype>(t | underline);
     return t;
 }
 
@@ -93,26 +93,26 @@ Result<Translator> Translator::open(std::string tables) {
     return Translator(std::move(tables));
 }
 
-Result<BrailleLine> Translator::translate(std::u32string_view text,
+Result<document::BrailleLine> Translator::translate(std::u32string_view text,
                                           std::span<const std::uint8_t> emphasis) const {
     auto out = run(std::string(kUnicodeDisplay) + "," + tables_, text, emphasis,
                    Direction::forward);
     if (!out) return std::unexpected(out.error());
-    BrailleLine cells;
+    document::BrailleLine cells;
     cells.reserve(out->size());
     for (char32_t c : *out) {
         // unicode.dis maps every dot pattern into U+2800..U+28FF; anything else
         // would be a table passing text through, which we treat as blank rather
         // than invent dots.
-        cells.push_back(Cell::is_unicode_braille(c) ? Cell::from_unicode(c) : Cell{});
+        cells.push_back(document::Cell::is_unicode_braille(c) ? document::Cell::from_unicode(c) : document::Cell{});
     }
     return cells;
 }
 
-Result<std::u32string> Translator::back_translate(const BrailleLine& cells) const {
+Result<std::u32string> Translator::back_translate(const document::BrailleLine& cells) const {
     std::u32string in;
     in.reserve(cells.size());
-    for (Cell c : cells) in.push_back(c.unicode());
+    for (document::Cell c : cells) in.push_back(c.unicode());
     return run(std::string(kUnicodeDisplay) + "," + tables_, in, {}, Direction::backward);
 }
 
@@ -121,4 +121,4 @@ Result<std::u32string> Translator::translate_with_display(std::u32string_view te
     return run(std::string(display_table) + "," + tables_, text, {}, Direction::forward);
 }
 
-}  // namespace tactus
+}  // namespace tactus::translate

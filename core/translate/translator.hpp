@@ -11,7 +11,7 @@
 #include "common/result.hpp"
 #include "document/cell.hpp"
 
-namespace tactus {
+namespace tactus::translate {
 
 class Translator {
 public:
@@ -23,11 +23,11 @@ public:
     [[nodiscard]] const std::string& tables() const { return tables_; }
 
     // `emphasis` is empty or one Emphasis bit set per code point of `text`.
-    Result<BrailleLine> translate(std::u32string_view text,
+    Result<document::BrailleLine> translate(std::u32string_view text,
                                   std::span<const std::uint8_t> emphasis = {}) const;
 
     // Back-translation for proofreading: what a reader of these cells would read.
-    Result<std::u32string> back_translate(const BrailleLine& cells) const;
+    Result<std::u32string> back_translate(const document::BrailleLine& cells) const;
 
     // What liblouis produces for `text` with another display table, e.g.
     // "en-us-brf.dis" for Braille ASCII; used by `tactus-cli translate`.
@@ -39,4 +39,4 @@ private:
     std::string tables_;
 };
 
-}  // namespace tactus
+}  // namespace tactus::translate

@@ -6,7 +6,6 @@
 #include "transport/hid_uart.hpp"
 #include "transport/lpt_port.hpp"
 #include "transport/serial_port.hpp"
-#include "transport/sim_transport.hpp"
 #include "transport/tty_port.hpp"
 
 namespace tactus::transport {
@@ -88,23 +87,9 @@ Result<std::unique_ptr<ByteStream>> open_device(std::string_view device) {
         if (!spec->options.empty()) return fail("lpt takes no options", "lpt:" + spec->path);
         return open_lpt(*spec);
     }
-    if (spec->scheme == "sim") {
-        SimLineOptions line;
-        controller::SimOptions sim;
-        for (const auto& [k, v] : spec->options) {
-            const auto d = to_double(v);
-            const std::string where = "sim option " + k;
-            if (!d || *d < 0) return fail("\"" + v + "\" is not a non-negative number", where);
-            if (k == "baud") line.baud = *d;
-            else if (k == "noise") line.noise.drop = line.noise.flip = line.noise.dup = *d;
-            else if (k == "seed") line.noise.seed = static_cast<std::uint64_t>(*d);
-            else if (k == "paper-reload") sim.reload_paper_after_s = *d;
-            else return fail("unknown option (baud, noise, seed, paper-reload)", where);
-        }
-        if (line.baud < 300) return fail("baud rate below 300", "sim option baud");
-        auto ctl = std::make_shared<controller::SimController>(sim);
-        return std::unique_ptr<ByteStream>(std::make_unique<SimTransport>(ctl, line));
-    }
+    // The simulator belongs to the controller stage: controller::open_device.
+    if (spec->scheme == "sim")
+        return fail("the built-in simulator is not a cable", "device \"" + std::string(device) + "\"");
     auto uart = uart_settings(*spec);
     if (!uart) return std::unexpected(uart.error());
     if (spec->scheme == "pty") {

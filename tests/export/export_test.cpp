@@ -9,13 +9,13 @@ using namespace tactus;
 
 namespace {
 
-PagedDocument two_pages(bool interpoint) {
-    PagedDocument d;
+layout::PagedDocument two_pages(bool interpoint) {
+    layout::PagedDocument d;
     d.geometry = {6, 3, interpoint, false};
-    Page a;
+    layout::Page a;
     a.braille_number = 1;
     a.lines = {brf(",HI"), {}, brf("    #A")};
-    Page b;
+    layout::Page b;
     b.braille_number = 2;
     b.lines = {brf("BYE"), {}, {}};
     d.pages = {a, b};
@@ -25,7 +25,7 @@ PagedDocument two_pages(bool interpoint) {
 }  // namespace
 
 TEST(BrfExport, CrlfLinesAndFormFeedAfterEveryPage) {
-    const auto brf_text = to_brf(two_pages(true));
+    const auto brf_text = exporter::to_brf(two_pages(true));
     ASSERT_TRUE(brf_text);
     EXPECT_EQ(*brf_text, ",HI\r\n\r\n    #A\r\n\fBYE\r\n\f");
 }
@@ -33,22 +33,22 @@ TEST(BrfExport, CrlfLinesAndFormFeedAfterEveryPage) {
 TEST(BrfExport, EightDotCellsAreRefusedWithTheirPlace) {
     auto d = two_pages(false);
     d.pages[1].lines[0][1].dots |= 0x80;
-    const auto r = to_brf(d);
+    const auto r = exporter::to_brf(d);
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().where, "page 2 line 1");
 }
 
 TEST(UnicodeExport, LinesAndFormFeedsBetweenPages) {
-    EXPECT_EQ(to_unicode(two_pages(false)), "⠠⠓⠊\n\n⠀⠀⠀⠀⠼⠁\n\f⠃⠽⠑\n");
+    EXPECT_EQ(exporter::to_unicode(two_pages(false)), "⠠⠓⠊\n\n⠀⠀⠀⠀⠼⠁\n\f⠃⠽⠑\n");
 }
 
 TEST(PefExport, ValidatesAgainstTheSchemaAndSchematronRules) {
     for (bool duplex : {false, true}) {
-        PefMetadata meta;
+        exporter::PefMetadata meta;
         meta.title = "Test & <escape>";
         meta.language = "en";
         meta.date = "2026-11-21";
-        const auto pef = to_pef(two_pages(duplex), meta);
+        const auto pef = exporter::to_pef(two_pages(duplex), meta);
         ASSERT_TRUE(pef);
         EXPECT_EQ(validate_pef_schema(*pef), "");
         EXPECT_EQ(check_pef_schematron(*pef), "");
@@ -59,11 +59,11 @@ TEST(PefExport, ValidatesAgainstTheSchemaAndSchematronRules) {
 }
 
 TEST(PefExport, IdentifierIsStableAndContentDerived) {
-    const auto a = to_pef(two_pages(true));
-    const auto b = to_pef(two_pages(true));
+    const auto a = exporter::to_pef(two_pages(true));
+    const auto b = exporter::to_pef(two_pages(true));
     auto other = two_pages(true);
     other.pages[1].lines[0] = brf("BYF");
-    const auto c = to_pef(other);
+    const auto c = exporter::to_pef(other);
     ASSERT_TRUE(a && b && c);
     EXPECT_EQ(*a, *b);
     EXPECT_NE(*a, *c);
@@ -81,6 +81,6 @@ TEST(PefChecks, DetectViolations) {
 }
 
 TEST(ExportFormat, ParsesNamesAndRejectsOthers) {
-    EXPECT_EQ(*parse_export_format("pef"), ExportFormat::pef);
-    EXPECT_FALSE(parse_export_format("docx"));
+    EXPECT_EQ(*exporter::parse_export_format("pef"), exporter::ExportFormat::pef);
+    EXPECT_FALSE(exporter::parse_export_format("docx"));
 }

@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         ctl.receive(in.subspan(i, std::min(piece, size - i)), t);
         t += 0.01;
         ctl.advance(t);
-        if (ctl.ring_used() > controller::ram::kRingBytes) std::abort();
+        if (ctl.ring_used() > machine::ram::kRingBytes) std::abort();
     }
     ctl.advance(t + 100);
     (void)ctl.take_output();

@@ -3,5 +3,5 @@
 #include "import_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return fuzz_import(data, size, tactus::SourceFormat::docx);
+    return fuzz_import(data, size, tactus::import::SourceFormat::docx);
 }

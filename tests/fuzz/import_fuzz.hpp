@@ -9,15 +9,15 @@
 
 #include "import/import.hpp"
 
-inline int fuzz_import(const std::uint8_t* data, std::size_t size, tactus::SourceFormat format) {
+inline int fuzz_import(const std::uint8_t* data, std::size_t size, tactus::import::SourceFormat format) {
     const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-    const auto doc = tactus::import_bytes(bytes, "fuzz", {format, {}});
+    const auto doc = tactus::import::import_bytes(bytes, "fuzz", {format, {}});
     if (!doc) {
         if (doc.error().message.empty()) __builtin_trap();
         return 0;
     }
     for (const auto& b : doc->blocks)
-        if ((b.kind == tactus::BlockKind::paragraph || b.kind == tactus::BlockKind::heading) &&
+        if ((b.kind == tactus::document::BlockKind::paragraph || b.kind == tactus::document::BlockKind::heading) &&
             b.spans.empty())
             __builtin_trap();
     return 0;

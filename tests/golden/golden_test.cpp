@@ -24,20 +24,20 @@ struct GoldenCase {
     std::string input;    // under resources/samples
     std::string tables;
     bool interpoint;
-    ExportFormat format;
+    exporter::ExportFormat format;
 };
 
 std::string render(const GoldenCase& c) {
-    PipelineOptions o;
+    pipeline::PipelineOptions o;
     o.tables = c.tables;
     o.layout.geometry.interpoint = c.interpoint;
-    auto doc = lay_out_file(kSamples / c.input, o);
+    auto doc = pipeline::lay_out_file(kSamples / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};
-    PefMetadata meta;
+    exporter::PefMetadata meta;
     meta.title = c.input;
     meta.date = "2026-01-01";
-    auto out = export_document(*doc, c.format, meta);
+    auto out = exporter::export_document(*doc, c.format, meta);
     EXPECT_TRUE(out) << out.error().to_string();
     return out ? *out : std::string{};
 }
@@ -58,7 +58,7 @@ TEST_P(Golden, MatchesExpectedBytes) {
     ASSERT_TRUE(expected) << expected.error().to_string();
     EXPECT_EQ(actual, *expected) << "golden mismatch for " << c.name
                                  << " (TACTUS_UPDATE_GOLDEN=1 regenerates; review the diff)";
-    if (c.format == ExportFormat::pef) {
+    if (c.format == exporter::ExportFormat::pef) {
         EXPECT_EQ(validate_pef_schema(actual), "");
         EXPECT_EQ(check_pef_schematron(actual), "");
     }
@@ -67,11 +67,11 @@ TEST_P(Golden, MatchesExpectedBytes) {
 INSTANTIATE_TEST_SUITE_P(
     Samples, Golden,
     ::testing::Values(
-        GoldenCase{"welcome.brf", "welcome.md", "en-ueb-g2.ctb", false, ExportFormat::brf},
-        GoldenCase{"welcome-interpoint.brf", "welcome.md", "en-ueb-g2.ctb", true, ExportFormat::brf},
-        GoldenCase{"welcome-g1.pef", "welcome.md", "en-ueb-g1.ctb", true, ExportFormat::pef},
-        GoldenCase{"chinese-tw.brf", "chinese-tw.txt", "zh-tw.ctb", true, ExportFormat::brf},
-        GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, ExportFormat::unicode}),
+        GoldenCase{"welcome.brf", "welcome.md", "en-ueb-g2.ctb", false, exporter::ExportFormat::brf},
+        GoldenCase{"welcome-interpoint.brf", "welcome.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
+        GoldenCase{"welcome-g1.pef", "welcome.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
+        GoldenCase{"chinese-tw.brf", "chinese-tw.txt", "zh-tw.ctb", true, exporter::ExportFormat::brf},
+        GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, exporter::ExportFormat::unicode}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;
         for (auto& ch : n)
@@ -81,33 +81,33 @@ INSTANTIATE_TEST_SUITE_P(
 
 // BRF written by Tactus and read back lays out to the same pages.
 TEST(RoundTrip, BrfExportImportLayout) {
-    PipelineOptions o;
+    pipeline::PipelineOptions o;
     o.layout.geometry.interpoint = true;
-    auto doc = lay_out_file(kSamples / "welcome.md", o);
+    auto doc = pipeline::lay_out_file(kSamples / "welcome.md", o);
     ASSERT_TRUE(doc);
-    const auto brf = to_brf(*doc);
+    const auto brf = exporter::to_brf(*doc);
     ASSERT_TRUE(brf);
-    auto imported = import_bytes(*brf, "welcome.brf");
+    auto imported = import::import_bytes(*brf, "welcome.brf");
     ASSERT_TRUE(imported) << imported.error().to_string();
     // Page numbers are already in the BRF text: lay it out without adding more.
-    o.layout.page_numbers = PageNumberPosition::none;
-    auto again = lay_out(*imported, o);
+    o.layout.page_numbers = layout::PageNumberPosition::none;
+    auto again = pipeline::lay_out(*imported, o);
     ASSERT_TRUE(again) << again.error().to_string();
-    EXPECT_EQ(to_brf(*again).value(), *brf);
+    EXPECT_EQ(exporter::to_brf(*again).value(), *brf);
 }
 
 TEST(RoundTrip, PefExportImportLayout) {
-    PipelineOptions o;
+    pipeline::PipelineOptions o;
     o.tables = "zh-tw.ctb";
     o.layout.geometry.interpoint = true;
-    auto doc = lay_out_file(kSamples / "chinese-tw.txt", o);
+    auto doc = pipeline::lay_out_file(kSamples / "chinese-tw.txt", o);
     ASSERT_TRUE(doc);
-    const auto pef = to_pef(*doc);
+    const auto pef = exporter::to_pef(*doc);
     ASSERT_TRUE(pef);
-    auto imported = import_bytes(*pef, "x.pef");
+    auto imported = import::import_bytes(*pef, "x.pef");
     ASSERT_TRUE(imported) << imported.error().to_string();
-    o.layout.page_numbers = PageNumberPosition::none;
-    auto again = lay_out(*imported, o);
+    o.layout.page_numbers = layout::PageNumberPosition::none;
+    auto again = pipeline::lay_out(*imported, o);
     ASSERT_TRUE(again);
     ASSERT_EQ(again->pages.size(), doc->pages.size());
     for (std::size_t p = 0; p < doc->pages.size(); ++p)

@@ -4,17 +4,17 @@
 namespace tactus::test {
 namespace {
 
-const auto H = BlockKind::heading;
-const auto P = BlockKind::paragraph;
-const auto LI = BlockKind::list_item;
-constexpr std::uint8_t I = emphasis_italic;
-constexpr std::uint8_t B = emphasis_bold;
-constexpr std::uint8_t U = emphasis_underline;
+const auto H = document::BlockKind::heading;
+const auto P = document::BlockKind::paragraph;
+const auto LI = document::BlockKind::list_item;
+constexpr std::uint8_t I = document::emphasis_italic;
+constexpr std::uint8_t B = document::emphasis_bold;
+constexpr std::uint8_t U = document::emphasis_underline;
 
 // lesson.docx was written by LibreOffice 7.4 from lesson.html (both committed).
 TEST(DocxImport, DocumentWrittenByLibreOffice) {
     const auto doc = import_data_file("lesson.docx");
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(H, 1, {{"Weather Lesson"}}),
         text_block(P, 0,
                    {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I},
@@ -43,7 +43,7 @@ TEST(DocxImport, DocumentWrittenByLibreOffice) {
 // section breaks, tracked changes.
 TEST(DocxImport, StylesNumberingBreaksAndRevisions) {
     const auto doc = import_data_file("features.docx");
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(H, 1, {{"The Title"}}),  // bold of the Title style is not emphasis
         text_block(P, 0, {{"Tab\tand\nline kept"}}),  // lastRenderedPageBreak is no break
         text_block(P, 0, {{"styled", I | U}, {"link", B | U}}),
@@ -83,10 +83,10 @@ TEST(DocxImport, InvalidXmlNamesPartLineAndColumn) {
 }
 
 TEST(DocxImport, EmptyAndNonZipInputsAreErrors) {
-    const auto empty = import_bytes("", "e.docx");
+    const auto empty = import::import_bytes("", "e.docx");
     ASSERT_FALSE(empty);
     EXPECT_THAT(empty.error().message, testing::HasSubstr("empty file"));
-    const auto text = import_bytes("just words", "w.docx");
+    const auto text = import::import_bytes("just words", "w.docx");
     ASSERT_FALSE(text);
     EXPECT_THAT(text.error().message, testing::HasSubstr("not a valid ZIP"));
 }

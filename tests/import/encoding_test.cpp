@@ -6,9 +6,9 @@
 namespace tactus::test {
 namespace {
 
-std::vector<std::string> texts(const Document& doc) {
+std::vector<std::string> texts(const document::Document& doc) {
     std::vector<std::string> out;
-    for (const auto& b : doc.blocks) out.push_back(b.kind == BlockKind::paragraph ? b.text() : "<break>");
+    for (const auto& b : doc.blocks) out.push_back(b.kind == document::BlockKind::paragraph ? b.text() : "<break>");
     return out;
 }
 
@@ -52,7 +52,7 @@ TEST(Encoding, ByteOrderMarksSelectUtf8AndUtf16) {
 
 TEST(Encoding, ExplicitEncodingOverridesDetection) {
     // Read as Big5, the GB18030 bytes would be wrong text; the override is obeyed.
-    const auto doc = import_data_file("gb18030.txt", {SourceFormat::automatic, "GB18030"});
+    const auto doc = import_data_file("gb18030.txt", {import::SourceFormat::automatic, "GB18030"});
     EXPECT_EQ(doc.encoding, "GB18030");
     ASSERT_FALSE(doc.blocks.empty());
     EXPECT_TRUE(doc.blocks[0].text().starts_with("盲文是一种"));
@@ -61,25 +61,25 @@ TEST(Encoding, ExplicitEncodingOverridesDetection) {
 TEST(Encoding, ShortChineseTextIsNotGuessedIntoMojibake) {
     // uchardet calls these two GB18030 characters ISO-8859-16; importing that
     // guess would produce Latin garbage, so the importer asks instead.
-    const auto doc = import_bytes("\xC4\xE3\xBA\xC3\n", "short.txt");  // 你好
+    const auto doc = import::import_bytes("\xC4\xE3\xBA\xC3\n", "short.txt");  // 你好
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("name it explicitly"));
     EXPECT_EQ(doc.error().where, "short.txt:byte 0");
-    const auto told = import_bytes("\xC4\xE3\xBA\xC3\n", "short.txt", {SourceFormat::text, "gb18030"});
+    const auto told = import::import_bytes("\xC4\xE3\xBA\xC3\n", "short.txt", {import::SourceFormat::text, "gb18030"});
     ASSERT_TRUE(told) << told.error().to_string();
     EXPECT_EQ(told->blocks.at(0).text(), "你好");
 }
 
 TEST(Encoding, ShortLatinTextBecomesWindows1252) {
     // "Señor niño" in Windows-1252; uchardet alone guesses ISO-8859-10 (ñ -> ņ).
-    const auto doc = import_bytes("Se\xF1or ni\xF1o\n", "es.txt");
+    const auto doc = import::import_bytes("Se\xF1or ni\xF1o\n", "es.txt");
     ASSERT_TRUE(doc) << doc.error().to_string();
     EXPECT_EQ(doc->encoding, "WINDOWS-1252");
     EXPECT_EQ(doc->blocks.at(0).text(), "Señor niño");
 }
 
 TEST(Encoding, InvalidByteInDeclaredUtf8IsAnErrorWithItsOffset) {
-    const auto doc = import_file(import_data("invalid_utf8.txt"), {SourceFormat::automatic, "UTF-8"});
+    const auto doc = import::import_file(import_data("invalid_utf8.txt"), {import::SourceFormat::automatic, "UTF-8"});
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("invalid UTF-8"));
     EXPECT_EQ(doc.error().where, import_data("invalid_utf8.txt").string() + ":byte 17");
@@ -87,13 +87,13 @@ TEST(Encoding, InvalidByteInDeclaredUtf8IsAnErrorWithItsOffset) {
 
 TEST(Encoding, InvalidSequenceInLegacyEncodingIsAnErrorWithItsOffset) {
     // 0xFF is never a valid byte in GB18030.
-    const auto doc = import_bytes("ok \xC4\xE3 \xFF\xFF", "b.txt", {SourceFormat::text, "GB18030"});
+    const auto doc = import::import_bytes("ok \xC4\xE3 \xFF\xFF", "b.txt", {import::SourceFormat::text, "GB18030"});
     ASSERT_FALSE(doc);
     EXPECT_EQ(doc.error().where, "b.txt:byte 6");
 }
 
 TEST(Encoding, TruncatedUtf16IsAnErrorNotSilentLoss) {
-    const auto doc = import_bytes(std::string_view("\xFF\xFE" "a\0b", 5), "t.txt");
+    const auto doc = import::import_bytes(std::string_view("\xFF\xFE" "a\0b", 5), "t.txt");
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("ends inside a character"));
 }
@@ -105,16 +105,16 @@ TEST(Encoding, UnknownEncodingNameIsAClearError) {
 }
 
 TEST(Encoding, EncodingIsRefusedForBinaryFormats) {
-    const auto doc = import_file(import_data("lesson.docx"), {SourceFormat::automatic, "UTF-8"});
+    const auto doc = import::import_file(import_data("lesson.docx"), {import::SourceFormat::automatic, "UTF-8"});
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("only be given for text and Markdown"));
 }
 
 TEST(Encoding, Utf16WithoutBomGivesAHint) {
-    const auto doc = import_bytes(std::string_view("H\0i\0!\0\n\0", 8), "u.txt");
+    const auto doc = import::import_bytes(std::string_view("H\0i\0!\0\n\0", 8), "u.txt");
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("UTF-16 without a byte-order mark"));
-    const auto told = import_bytes(std::string_view("H\0i\0!\0\n\0", 8), "u.txt", {SourceFormat::text, "UTF-16LE"});
+    const auto told = import::import_bytes(std::string_view("H\0i\0!\0\n\0", 8), "u.txt", {import::SourceFormat::text, "UTF-16LE"});
     ASSERT_TRUE(told) << told.error().to_string();
     EXPECT_EQ(told->blocks.at(0).text(), "Hi!");
 }

@@ -13,7 +13,7 @@
 
 namespace tactus {
 // Readable failure output for block comparisons.
-inline void PrintTo(const Block& b, std::ostream* os) {
+inline void PrintTo(const document::Block& b, std::ostream* os) {
     *os << "Block{kind=" << static_cast<int>(b.kind) << " level=" << b.level << " line="
         << b.source_line << " label='" << b.label << "' spans=[";
     for (const auto& s : b.spans) *os << "('" << s.text << "'," << int{s.emphasis} << ")";
@@ -34,28 +34,28 @@ inline std::string read_data(const std::string& name) {
 }
 
 // Imports a file from tests/data/import, failing the test with the error text.
-inline Document import_data_file(const std::string& name, const ImportOptions& options = {}) {
-    auto doc = import_file(import_data(name), options);
+inline document::Document import_data_file(const std::string& name, const import::ImportOptions& options = {}) {
+    auto doc = import::import_file(import_data(name), options);
     EXPECT_TRUE(doc.has_value()) << (doc ? "" : doc.error().to_string());
-    return doc.value_or(Document{});
+    return doc.value_or(document::Document{});
 }
 
 // Imports a file that must fail; returns the error.
 inline Error import_data_file_error(const std::string& name, const std::string& encoding = {},
-                                    SourceFormat format = SourceFormat::automatic) {
-    auto doc = import_file(import_data(name), {format, encoding});
+                                    import::SourceFormat format = import::SourceFormat::automatic) {
+    auto doc = import::import_file(import_data(name), {format, encoding});
     EXPECT_FALSE(doc.has_value()) << name << " imported although it should not";
     return doc ? Error{} : doc.error();
 }
 
-inline std::vector<BlockKind> kinds(const Document& doc) {
-    std::vector<BlockKind> out;
+inline std::vector<document::BlockKind> kinds(const document::Document& doc) {
+    std::vector<document::BlockKind> out;
     for (const auto& b : doc.blocks) out.push_back(b.kind);
     return out;
 }
 
-inline Block text_block(BlockKind kind, int level, std::vector<Span> spans, int line = 0) {
-    Block b;
+inline document::Block text_block(document::BlockKind kind, int level, std::vector<document::Span> spans, int line = 0) {
+    document::Block b;
     b.kind = kind;
     b.level = level;
     b.spans = std::move(spans);
@@ -63,9 +63,9 @@ inline Block text_block(BlockKind kind, int level, std::vector<Span> spans, int 
     return b;
 }
 
-inline Block page_break(std::string label, int line = 0) {
-    Block b;
-    b.kind = BlockKind::print_page_break;
+inline document::Block page_break(std::string label, int line = 0) {
+    document::Block b;
+    b.kind = document::BlockKind::print_page_break;
     b.label = std::move(label);
     b.source_line = line;
     return b;

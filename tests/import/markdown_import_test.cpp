@@ -4,21 +4,21 @@
 namespace tactus::test {
 namespace {
 
-const auto H = BlockKind::heading;
-const auto P = BlockKind::paragraph;
-const auto LI = BlockKind::list_item;
-constexpr std::uint8_t I = emphasis_italic;
-constexpr std::uint8_t B = emphasis_bold;
+const auto H = document::BlockKind::heading;
+const auto P = document::BlockKind::paragraph;
+const auto LI = document::BlockKind::list_item;
+constexpr std::uint8_t I = document::emphasis_italic;
+constexpr std::uint8_t B = document::emphasis_bold;
 
-Document md(std::string_view text) {
-    auto doc = import_bytes(text, "t.md");
+document::Document md(std::string_view text) {
+    auto doc = import::import_bytes(text, "t.md");
     EXPECT_TRUE(doc) << (doc ? "" : doc.error().to_string());
-    return doc.value_or(Document{});
+    return doc.value_or(document::Document{});
 }
 
 TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
     const auto doc = import_data_file("lesson.md");
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(H, 1, {{"Weather Lesson"}}, 1),
         text_block(P, 0,
                    {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I},
@@ -44,7 +44,7 @@ TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
 
 TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
     const auto doc = md("one\n\n<!-- pagebreak: xii -->\n\ntwo\n\n<!-- just a note -->\n\nthree\n");
-    const std::vector<Block> expected = {text_block(P, 0, {{"one"}}, 1), page_break("xii", 3),
+    const std::vector<document::Block> expected = {text_block(P, 0, {{"one"}}, 1), page_break("xii", 3),
                                          text_block(P, 0, {{"two"}}, 5),
                                          text_block(P, 0, {{"three"}}, 9)};
     EXPECT_EQ(doc.blocks, expected);
@@ -54,14 +54,14 @@ TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
 TEST(MarkdownImport, BraillePageCommentIsABraillePageBreak) {
     const auto doc = md("one\n\n<!-- braillepage -->\n\ntwo\n");
     ASSERT_EQ(doc.blocks.size(), 3u);
-    EXPECT_EQ(doc.blocks[1].kind, BlockKind::braille_page_break);
+    EXPECT_EQ(doc.blocks[1].kind, document::BlockKind::braille_page_break);
     EXPECT_EQ(doc.blocks[1].source_line, 3);
     EXPECT_EQ(doc.blocks[2].text(), "two");
 }
 
 TEST(MarkdownImport, FormFeedIsAPrintPageBreakAndLinesStayRight) {
     const auto doc = md("# A\n\nbefore\n\f\nafter\n");
-    const std::vector<Block> expected = {text_block(H, 1, {{"A"}}, 1),
+    const std::vector<document::Block> expected = {text_block(H, 1, {{"A"}}, 1),
                                          text_block(P, 0, {{"before"}}, 3), page_break("2", 4),
                                          text_block(P, 0, {{"after"}}, 5)};
     EXPECT_EQ(doc.blocks, expected);
@@ -72,12 +72,12 @@ TEST(MarkdownImport, CodeBlockLinesArePlainParagraphs) {
     ASSERT_EQ(doc.blocks.size(), 2u);
     EXPECT_EQ(doc.blocks[0].text(), "int x = 1;");
     EXPECT_EQ(doc.blocks[1].text(), "  return *x;");
-    EXPECT_EQ(doc.blocks[1].spans[0].emphasis, emphasis_none);
+    EXPECT_EQ(doc.blocks[1].spans[0].emphasis, document::emphasis_none);
 }
 
 TEST(MarkdownImport, LooseListItemsWithSeveralParagraphsAndHardBreaks) {
     const auto doc = md("1. first\n\n   more of first\n2. second  \n   line two\n");
-    const std::vector<Block> expected = {text_block(LI, 1, {{"1. first"}}, 1),
+    const std::vector<document::Block> expected = {text_block(LI, 1, {{"1. first"}}, 1),
                                          text_block(LI, 1, {{"more of first"}}, 3),
                                          text_block(LI, 1, {{"2. second\nline two"}}, 4)};
     EXPECT_EQ(doc.blocks, expected);
@@ -105,7 +105,7 @@ TEST(MarkdownImport, SetextHeadingIsNotAPageBreak) {
 
 TEST(MarkdownImport, LegacyEncodedMarkdownIsDecodedFirst) {
     // "# 標題" in Big5, with the encoding named.
-    const auto doc = import_bytes("# \xBC\xD0\xC3\x44\n", "b.md", {SourceFormat::automatic, "Big5"});
+    const auto doc = import::import_bytes("# \xBC\xD0\xC3\x44\n", "b.md", {import::SourceFormat::automatic, "Big5"});
     ASSERT_TRUE(doc) << doc.error().to_string();
     ASSERT_EQ(doc->blocks.size(), 1u);
     EXPECT_EQ(doc->blocks[0].text(), "標題");

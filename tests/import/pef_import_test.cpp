@@ -4,18 +4,18 @@
 namespace tactus::test {
 namespace {
 
-const auto BR = BlockKind::braille;
-const auto BREAK = BlockKind::braille_page_break;
+const auto BR = document::BlockKind::braille;
+const auto BREAK = document::BlockKind::braille_page_break;
 
-std::vector<std::string> unicode_lines(const Block& b) {
+std::vector<std::string> unicode_lines(const document::Block& b) {
     std::vector<std::string> out;
-    for (const auto& line : b.braille_lines) out.push_back(to_unicode_text(line));
+    for (const auto& line : b.braille_lines) out.push_back(document::to_unicode_text(line));
     return out;
 }
 
 TEST(PefImport, PagesOfAllSectionsBecomeBrailleBlocks) {
     const auto doc = import_data_file("lesson.pef");
-    ASSERT_EQ(kinds(doc), (std::vector<BlockKind>{BR, BREAK, BR, BREAK, BR, BREAK, BR}));
+    ASSERT_EQ(kinds(doc), (std::vector<document::BlockKind>{BR, BREAK, BR, BREAK, BR, BREAK, BR}));
     EXPECT_EQ(unicode_lines(doc.blocks[0]), (std::vector<std::string>{"⠠⠺⠑⠁⠮⠗", "", "⠁⠃"}));
     EXPECT_EQ(unicode_lines(doc.blocks[2]), std::vector<std::string>{"⠼⠃"});
     EXPECT_TRUE(doc.blocks[4].braille_lines.empty());  // <page/>: a blank page
@@ -46,7 +46,7 @@ TEST(PefImport, InvalidXmlNamesLineAndColumn) {
 }
 
 TEST(PefImport, PrefixedNamespaceIsAccepted) {
-    const auto doc = import_bytes(
+    const auto doc = import::import_bytes(
         "<p:pef xmlns:p='http://www.daisy.org/ns/2008/pef' version='2008-1'><p:head/>"
         "<p:body><p:volume cols='2' rows='1' rowgap='0' duplex='false'><p:section><p:page>"
         "<p:row>\u2801</p:row></p:page></p:section></p:volume></p:body></p:pef>",
@@ -57,10 +57,10 @@ TEST(PefImport, PrefixedNamespaceIsAccepted) {
 }
 
 TEST(PefImport, MissingBodyAndEmptyInput) {
-    const auto nobody = import_bytes("<pef xmlns='http://www.daisy.org/ns/2008/pef'/>", "n.pef");
+    const auto nobody = import::import_bytes("<pef xmlns='http://www.daisy.org/ns/2008/pef'/>", "n.pef");
     ASSERT_FALSE(nobody);
     EXPECT_THAT(nobody.error().message, testing::HasSubstr("no <body>"));
-    const auto empty = import_bytes("", "e.pef");
+    const auto empty = import::import_bytes("", "e.pef");
     ASSERT_FALSE(empty);
     EXPECT_THAT(empty.error().message, testing::HasSubstr("empty file"));
 }

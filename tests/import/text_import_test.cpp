@@ -8,11 +8,11 @@
 namespace tactus::test {
 namespace {
 
-const auto P = BlockKind::paragraph;
+const auto P = document::BlockKind::paragraph;
 
 TEST(TextImport, ParagraphsJoinWrappedLinesAndFormFeedIsPrintPageBreak) {
     const auto doc = import_data_file("utf8.txt");
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(P, 0, {{"Braille Lesson"}}, 1),
         text_block(P, 0, {{"Braille is read by touch. Each cell has six dots."}}, 3),
         text_block(P, 0, {{"盲文是一种触摸阅读的文字。"}}, 6),
@@ -25,9 +25,9 @@ TEST(TextImport, ParagraphsJoinWrappedLinesAndFormFeedIsPrintPageBreak) {
 }
 
 TEST(TextImport, CrLfAndLoneCrEndLinesLikeLf) {
-    const auto lf = import_bytes("a\nb\n\nc\n", "x.txt");
-    const auto crlf = import_bytes("a\r\nb\r\n\r\nc\r\n", "x.txt");
-    const auto cr = import_bytes("a\rb\r\rc\r", "x.txt");
+    const auto lf = import::import_bytes("a\nb\n\nc\n", "x.txt");
+    const auto crlf = import::import_bytes("a\r\nb\r\n\r\nc\r\n", "x.txt");
+    const auto cr = import::import_bytes("a\rb\r\rc\r", "x.txt");
     ASSERT_TRUE(lf && crlf && cr);
     EXPECT_EQ(lf->blocks, crlf->blocks);
     EXPECT_EQ(lf->blocks, cr->blocks);
@@ -39,36 +39,36 @@ TEST(TextImport, CrLfAndLoneCrEndLinesLikeLf) {
 // A text without a single blank line between lines (verse per line, a list of
 // words) has no paragraph marks but its line ends: each line is a paragraph.
 TEST(TextImport, WithoutAnyBlankLineEachLineIsAParagraph) {
-    const auto doc = import_bytes("Ge1:1 In the beginning.\nGe1:2 And the earth.\n\n", "kjv.txt");
+    const auto doc = import::import_bytes("Ge1:1 In the beginning.\nGe1:2 And the earth.\n\n", "kjv.txt");
     ASSERT_TRUE(doc);
     ASSERT_EQ(doc->blocks.size(), 2u);
     EXPECT_EQ(doc->blocks[0].text(), "Ge1:1 In the beginning.");
     EXPECT_EQ(doc->blocks[1].text(), "Ge1:2 And the earth.");
     EXPECT_EQ(doc->blocks[1].source_line, 2);
     // One blank line anywhere between text switches to blank-line paragraphs.
-    const auto wrapped = import_bytes("a\nb\n\nc\n", "x.txt");
+    const auto wrapped = import::import_bytes("a\nb\n\nc\n", "x.txt");
     ASSERT_TRUE(wrapped);
     EXPECT_EQ(wrapped->blocks.size(), 2u);
 }
 
 TEST(TextImport, FormFeedInsideALineSplitsTheParagraphAndPagesAreNumbered) {
-    const auto doc = import_bytes("one\ftwo\n\fthree\n", "x.txt");
+    const auto doc = import::import_bytes("one\ftwo\n\fthree\n", "x.txt");
     ASSERT_TRUE(doc);
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(P, 0, {{"one"}}, 1), page_break("2", 1), text_block(P, 0, {{"two"}}, 1),
         page_break("3", 2), text_block(P, 0, {{"three"}}, 2)};
     EXPECT_EQ(doc->blocks, expected);
 }
 
 TEST(TextImport, PageBreaksBeforeAllContentOrAfterItAreDropped) {
-    const auto doc = import_bytes("\f\fbody\n\f\n\f", "x.txt");
+    const auto doc = import::import_bytes("\f\fbody\n\f\n\f", "x.txt");
     ASSERT_TRUE(doc);
     ASSERT_EQ(doc->blocks.size(), 1u);
     EXPECT_EQ(doc->blocks[0].text(), "body");
 }
 
 TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndIndentIsTrimmed) {
-    const auto doc = import_bytes("   first\t \n  \t \n\tsecond  \n", "x.txt");
+    const auto doc = import::import_bytes("   first\t \n  \t \n\tsecond  \n", "x.txt");
     ASSERT_TRUE(doc);
     ASSERT_EQ(doc->blocks.size(), 2u);
     EXPECT_EQ(doc->blocks[0].text(), "first");
@@ -77,14 +77,14 @@ TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndIndentIsTrimmed) {
 
 TEST(TextImport, EmptyInputIsAnEmptyDocument) {
     for (const std::string_view input : {"", "\xEF\xBB\xBF", "\n\n  \n", "\f"}) {
-        const auto doc = import_bytes(input, "empty.txt");
+        const auto doc = import::import_bytes(input, "empty.txt");
         ASSERT_TRUE(doc) << doc.error().to_string();
         EXPECT_TRUE(doc->blocks.empty());
     }
 }
 
 TEST(TextImport, NulBytesAreRejectedWithTheirOffset) {
-    const auto doc = import_file(import_data("junk.bin"), {SourceFormat::text, {}});
+    const auto doc = import::import_file(import_data("junk.bin"), {import::SourceFormat::text, {}});
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("not text: NUL byte"));
     const auto junk = read_data("junk.bin");
@@ -93,7 +93,7 @@ TEST(TextImport, NulBytesAreRejectedWithTheirOffset) {
 }
 
 TEST(TextImport, ControlCharactersAreRejectedWithLineAndColumn) {
-    const auto doc = import_bytes("fine\nab\x01" "c\n", "ctl.txt");
+    const auto doc = import::import_bytes("fine\nab\x01" "c\n", "ctl.txt");
     ASSERT_FALSE(doc);
     EXPECT_EQ(doc.error().where, "ctl.txt:2:3");
     EXPECT_THAT(doc.error().message, testing::HasSubstr("U+0001"));
@@ -102,7 +102,7 @@ TEST(TextImport, ControlCharactersAreRejectedWithLineAndColumn) {
 TEST(TextImport, ManyTinyParagraphsStayCorrect) {
     std::string input;
     for (int i = 0; i < 10000; ++i) input += "p" + std::to_string(i) + "\n\n";
-    const auto doc = import_bytes(input, "many.txt");
+    const auto doc = import::import_bytes(input, "many.txt");
     ASSERT_TRUE(doc);
     ASSERT_EQ(doc->blocks.size(), 10000u);
     EXPECT_EQ(doc->blocks[9999].text(), "p9999");
@@ -114,8 +114,8 @@ TEST(TextImport, FileAboveTheSizeLimitIsRefusedBeforeReading) {
     const auto path = std::filesystem::temp_directory_path() /
                       ("tactus_import_huge_" + std::to_string(::getpid()) + ".txt");
     { std::ofstream(path).put('a'); }
-    std::filesystem::resize_file(path, max_import_bytes + 1);
-    const auto doc = import_file(path);
+    std::filesystem::resize_file(path, import::max_import_bytes + 1);
+    const auto doc = import::import_file(path);
     std::filesystem::remove(path);
     ASSERT_FALSE(doc);
     EXPECT_THAT(doc.error().message, testing::HasSubstr("above the limit"));

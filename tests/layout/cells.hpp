@@ -6,18 +6,18 @@
 
 #include "document/cell.hpp"
 
-inline tactus::BrailleLine brf(std::string_view s) {
-    tactus::BrailleLine out;
+inline tactus::document::BrailleLine brf(std::string_view s) {
+    tactus::document::BrailleLine out;
     for (char c : s) {
-        tactus::Cell cell;
-        if (!tactus::cell_from_brf(c, cell)) throw std::invalid_argument("not BRF");
+        tactus::document::Cell cell;
+        if (!tactus::document::cell_from_brf(c, cell)) throw std::invalid_argument("not BRF");
         out.push_back(cell);
     }
     return out;
 }
 
-inline std::string brf(const tactus::BrailleLine& line) {
+inline std::string brf(const tactus::document::BrailleLine& line) {
     std::string out;
-    for (auto c : line) out.push_back(tactus::cell_to_brf(c));
+    for (auto c : line) out.push_back(tactus::document::cell_to_brf(c));
     return out;
 }

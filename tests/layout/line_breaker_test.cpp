@@ -12,7 +12,7 @@ using namespace tactus;
 namespace {
 std::vector<std::string> wrap(std::string_view text, int width, int first = 0, int runover = 0) {
     std::vector<std::string> out;
-    for (const auto& l : break_lines(brf(text), width, first, runover)) out.push_back(brf(l));
+    for (const auto& l : layout::break_lines(brf(text), width, first, runover)) out.push_back(brf(l));
     return out;
 }
 }  // namespace
@@ -54,10 +54,10 @@ TEST(LineBreaker, NeverLosesACellNorOverflows) {
         const int first = std::uniform_int_distribution<int>(0, width - 1)(rng);
         const int runover = std::uniform_int_distribution<int>(0, width - 1)(rng);
         std::string kept;
-        for (const auto& l : break_lines(brf(text), width, first, runover)) {
+        for (const auto& l : layout::break_lines(brf(text), width, first, runover)) {
             ASSERT_LE(static_cast<int>(l.size()), width);
             for (auto c : l)
-                if (!c.blank()) kept.push_back(cell_to_brf(c));
+                if (!c.blank()) kept.push_back(document::cell_to_brf(c));
         }
         std::string expected;
         for (char c : text)

@@ -10,34 +10,34 @@ namespace {
 
 // Page numbers as "#" + digits in BRF, like UEB's number sign with letters a-j
 // would be; a plain digit rendering is enough to check placement.
-BrailleLine number(int n) {
+document::BrailleLine number(int n) {
     std::string s = "#";
     for (char d : std::to_string(n)) s.push_back(d == '0' ? 'J' : static_cast<char>('A' + (d - '1')));
     return brf(s);
 }
 
-TranslatedBlock para(std::string_view text) {
-    TranslatedBlock b;
-    b.kind = BlockKind::paragraph;
+translate::TranslatedBlock para(std::string_view text) {
+    translate::TranslatedBlock b;
+    b.kind = document::BlockKind::paragraph;
     b.cells = brf(text);
     return b;
 }
 
-TranslatedBlock heading(std::string_view text, int level = 1) {
-    TranslatedBlock b;
-    b.kind = BlockKind::heading;
+translate::TranslatedBlock heading(std::string_view text, int level = 1) {
+    translate::TranslatedBlock b;
+    b.kind = document::BlockKind::heading;
     b.level = level;
     b.cells = brf(text);
     return b;
 }
 
-LayoutOptions small(int cells, int lines, bool interpoint) {
-    LayoutOptions o;
+layout::LayoutOptions small(int cells, int lines, bool interpoint) {
+    layout::LayoutOptions o;
     o.geometry = {cells, lines, interpoint, false};
     return o;
 }
 
-std::vector<std::string> rows(const Page& p) {
+std::vector<std::string> rows(const layout::Page& p) {
     std::vector<std::string> out;
     for (const auto& l : p.lines) out.push_back(brf(l));
     return out;
@@ -46,7 +46,7 @@ std::vector<std::string> rows(const Page& p) {
 }  // namespace
 
 TEST(Paginator, DefaultIsTheSourceEmbosserFormat) {
-    LayoutOptions o;
+    layout::LayoutOptions o;
     EXPECT_EQ(o.geometry.cells_per_line, 27);
     EXPECT_EQ(o.geometry.lines_per_page, 24);
     EXPECT_TRUE(o.geometry.interpoint);
@@ -54,7 +54,7 @@ TEST(Paginator, DefaultIsTheSourceEmbosserFormat) {
 }
 
 TEST(Paginator, ParagraphIndentAndBottomRightNumber) {
-    Paginator p(small(12, 4, false), number);
+    layout::Paginator p(small(12, 4, false), number);
     p.add(para("ONE TWO THREE FOUR"));
     auto doc = std::move(p).finish();
     ASSERT_EQ(doc.pages.size(), 1u);
@@ -62,7 +62,7 @@ TEST(Paginator, ParagraphIndentAndBottomRightNumber) {
 }
 
 TEST(Paginator, FlowsOntoNewPagesAndNumbersThem) {
-    Paginator p(small(10, 3, false), number);  // 2 body lines per numbered page
+    layout::Paginator p(small(10, 3, false), number);  // 2 body lines per numbered page
     p.add(para("AA BB CC DD EE FF GG HH"));
     auto doc = std::move(p).finish();
     ASSERT_EQ(doc.pages.size(), 2u);
@@ -71,7 +71,7 @@ TEST(Paginator, FlowsOntoNewPagesAndNumbersThem) {
 }
 
 TEST(Paginator, InterpointNumbersOnlyFronts) {
-    Paginator p(small(10, 3, true), number);
+    layout::Paginator p(small(10, 3, true), number);
     for (int i = 0; i < 5; ++i) p.add(para("WORD"));
     auto doc = std::move(p).finish();
     // Front pages: 2 body lines + number; back pages: 3 body lines, no number.
@@ -85,7 +85,7 @@ TEST(Paginator, InterpointNumbersOnlyFronts) {
 }
 
 TEST(Paginator, CentredHeadingWithBlankLineAfter) {
-    Paginator p(small(12, 6, false), number);
+    layout::Paginator p(small(12, 6, false), number);
     p.add(heading("TITLE"));
     p.add(para("TEXT"));
     auto doc = std::move(p).finish();
@@ -95,7 +95,7 @@ TEST(Paginator, CentredHeadingWithBlankLineAfter) {
 }
 
 TEST(Paginator, NoBlankLineAtTheTopOfAPage) {
-    Paginator p(small(10, 4, false), number);
+    layout::Paginator p(small(10, 4, false), number);
     p.add(para("A"));
     p.add(para("B"));
     p.add(para("C"));
@@ -106,10 +106,10 @@ TEST(Paginator, NoBlankLineAtTheTopOfAPage) {
 }
 
 TEST(Paginator, PrintPageIndicatorLine) {
-    Paginator p(small(10, 5, false), number);
+    layout::Paginator p(small(10, 5, false), number);
     p.add(para("A"));
-    TranslatedBlock pb;
-    pb.kind = BlockKind::print_page_break;
+    translate::TranslatedBlock pb;
+    pb.kind = document::BlockKind::print_page_break;
     pb.label = brf("#B");
     p.add(pb);
     p.add(para("B"));
@@ -119,25 +119,25 @@ TEST(Paginator, PrintPageIndicatorLine) {
 }
 
 TEST(Paginator, PrintPageAtTopOfPageNeedsNoSeparator) {
-    Paginator p(small(10, 3, false), number);
+    layout::Paginator p(small(10, 3, false), number);
     p.add(para("A"));
     p.add(para("B"));
-    TranslatedBlock pb;
-    pb.kind = BlockKind::print_page_break;
+    translate::TranslatedBlock pb;
+    pb.kind = document::BlockKind::print_page_break;
     pb.label = brf("#C");
     p.add(pb);
     p.add(para("C"));
     auto doc = std::move(p).finish();
     ASSERT_EQ(doc.pages.size(), 2u);
     EXPECT_EQ(rows(doc.pages[1])[0], "  C");
-    EXPECT_EQ(doc.pages[1].print_page, to_unicode_text(brf("#C")));
+    EXPECT_EQ(doc.pages[1].print_page, document::to_unicode_text(brf("#C")));
 }
 
 TEST(Paginator, BraillePageBreakStartsNewPage) {
-    Paginator p(small(10, 5, false), number);
+    layout::Paginator p(small(10, 5, false), number);
     p.add(para("A"));
-    TranslatedBlock br;
-    br.kind = BlockKind::braille_page_break;
+    translate::TranslatedBlock br;
+    br.kind = document::BlockKind::braille_page_break;
     p.add(br);
     p.add(br);  // a second break on an empty page adds no blank page
     p.add(para("B"));
@@ -147,9 +147,9 @@ TEST(Paginator, BraillePageBreakStartsNewPage) {
 }
 
 TEST(Paginator, VerbatimBrailleKeepsSpacingAndCutsLongLines) {
-    Paginator p(small(6, 5, false), number);
-    TranslatedBlock b;
-    b.kind = BlockKind::braille;
+    layout::Paginator p(small(6, 5, false), number);
+    translate::TranslatedBlock b;
+    b.kind = document::BlockKind::braille;
     b.lines = {brf("A  B"), brf(""), brf("ABCDEFGH")};
     p.add(b);
     auto doc = std::move(p).finish();
@@ -160,17 +160,17 @@ TEST(Paginator, MarginsAndTopNumber) {
     auto o = small(12, 4, false);
     o.left_margin = 2;
     o.right_margin = 1;
-    o.page_numbers = PageNumberPosition::top_right;
-    Paginator p(o, number);
+    o.page_numbers = layout::PageNumberPosition::top_right;
+    layout::Paginator p(o, number);
     p.add(para("AAA BBB"));
     auto doc = std::move(p).finish();
     EXPECT_EQ(rows(doc.pages[0]), (std::vector<std::string>{"         #A", "    AAA BBB", "", ""}));
 }
 
 TEST(Paginator, ListItemsHangingIndentByLevel) {
-    Paginator p(small(9, 6, false), number);
-    TranslatedBlock li;
-    li.kind = BlockKind::list_item;
+    layout::Paginator p(small(9, 6, false), number);
+    translate::TranslatedBlock li;
+    li.kind = document::BlockKind::list_item;
     li.level = 2;
     li.cells = brf("AA BB CC");
     p.add(li);
@@ -180,10 +180,10 @@ TEST(Paginator, ListItemsHangingIndentByLevel) {
 }
 
 TEST(Paginator, SixDotLayoutStripsDots78WithAWarning) {
-    Paginator p(small(10, 4, false), number);
+    layout::Paginator p(small(10, 4, false), number);
     auto b = para("A");
     b.source_line = 3;
-    b.cells.push_back(Cell{0xC1});
+    b.cells.push_back(document::Cell{0xC1});
     p.add(b);
     auto doc = std::move(p).finish();
     ASSERT_EQ(doc.warnings.size(), 1u);
@@ -192,7 +192,7 @@ TEST(Paginator, SixDotLayoutStripsDots78WithAWarning) {
 }
 
 TEST(LayoutOptions, RejectsImpossibleGeometry) {
-    LayoutOptions o;
+    layout::LayoutOptions o;
     o.geometry.cells_per_line = 2;
     EXPECT_EQ(validate(o).error().where, "cells_per_line");
     o = {};

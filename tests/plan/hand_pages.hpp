@@ -8,18 +8,18 @@
 
 namespace tactus::test {
 
-inline Page page_of(const std::vector<std::u32string>& lines) {
-    Page p;
+inline layout::Page page_of(const std::vector<std::u32string>& lines) {
+    layout::Page p;
     for (const auto& l : lines) {
-        BrailleLine line;
-        for (char32_t c : l) line.push_back(Cell::from_unicode(c));
+        document::BrailleLine line;
+        for (char32_t c : l) line.push_back(document::Cell::from_unicode(c));
         p.lines.push_back(line);
     }
     return p;
 }
 
-inline PagedDocument doc_of(std::vector<Page> pages, bool interpoint = true) {
-    PagedDocument d;
+inline layout::PagedDocument doc_of(std::vector<layout::Page> pages, bool interpoint = true) {
+    layout::PagedDocument d;
     d.geometry.interpoint = interpoint;
     d.pages = std::move(pages);
     return d;

@@ -10,7 +10,7 @@
 #include "controller/sim_controller.hpp"
 #include "link/link.hpp"
 #include "spool/runner.hpp"
-#include "transport/sim_transport.hpp"
+#include "controller/sim_transport.hpp"
 
 namespace tactus::spool::test {
 
@@ -18,7 +18,7 @@ namespace tactus::spool::test {
 // live on across reconnections.
 class SharedLine final : public transport::ByteStream {
 public:
-    SharedLine(std::shared_ptr<transport::SimTransport> line, std::shared_ptr<std::atomic<bool>> cut)
+    SharedLine(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<std::atomic<bool>> cut)
         : line_(std::move(line)), cut_(std::move(cut)) {}
     Result<void> write(std::span<const std::uint8_t> b) override {
         if (*cut_) return fail("device gone (cable cut)", "sim");
@@ -41,14 +41,14 @@ public:
     [[nodiscard]] std::string describe() const override { return "sim"; }
 
 private:
-    std::shared_ptr<transport::SimTransport> line_;
+    std::shared_ptr<controller::SimTransport> line_;
     std::shared_ptr<std::atomic<bool>> cut_;
 };
 
 struct SimPrinter {
     explicit SimPrinter(controller::SimOptions options = {})
         : controller(std::make_shared<controller::SimController>(options)),
-          line(std::make_shared<transport::SimTransport>(controller, transport::SimLineOptions{})),
+          line(std::make_shared<controller::SimTransport>(controller, controller::SimLineOptions{})),
           cut(std::make_shared<std::atomic<bool>>(false)) {}
 
     ConnectFn connect(link::LinkOptions options = {}) {
@@ -60,7 +60,7 @@ struct SimPrinter {
     }
 
     std::shared_ptr<controller::SimController> controller;
-    std::shared_ptr<transport::SimTransport> line;
+    std::shared_ptr<controller::SimTransport> line;
     std::shared_ptr<std::atomic<bool>> cut;
     int connects = 0;
 };

@@ -8,9 +8,9 @@ namespace tactus::spool {
 namespace {
 
 TEST(Snapshot, RoundTripsEveryCellIncludingDots7And8) {
-    PagedDocument doc = test::make_document(5, true);
+    layout::PagedDocument doc = test::make_document(5, true);
     doc.geometry.eight_dot = true;
-    doc.pages[2].lines[1][3] = Cell{0xC5};  // dots 1, 3, 7, 8
+    doc.pages[2].lines[1][3] = document::Cell{0xC5};  // dots 1, 3, 7, 8
     doc.pages[4].print_page = "xii";
     auto back = from_snapshot(to_snapshot(doc));
     ASSERT_TRUE(back) << back.error().to_string();
@@ -20,8 +20,8 @@ TEST(Snapshot, RoundTripsEveryCellIncludingDots7And8) {
 }
 
 TEST(Snapshot, RefusesALineWiderThanItsGeometry) {
-    PagedDocument doc = test::make_document(2, false);
-    doc.pages[1].lines[0].resize(static_cast<std::size_t>(doc.geometry.cells_per_line) + 2, Cell{1});
+    layout::PagedDocument doc = test::make_document(2, false);
+    doc.pages[1].lines[0].resize(static_cast<std::size_t>(doc.geometry.cells_per_line) + 2, document::Cell{1});
     auto back = from_snapshot(to_snapshot(doc));
     ASSERT_FALSE(back);
     EXPECT_EQ(back.error().where, "page 2 line 1");
@@ -40,7 +40,7 @@ TEST(Snapshot, RefusesGarbageAndForeignFormats) {
 }
 
 TEST(Snapshot, SelectPagesPutsTheFirstChosenPageOnAFront) {
-    const PagedDocument doc = test::make_document(7, true);
+    const layout::PagedDocument doc = test::make_document(7, true);
     auto part = select_pages(doc, 4, 6);
     ASSERT_TRUE(part);
     ASSERT_EQ(part->pages.size(), 3u);

@@ -13,16 +13,16 @@
 namespace tactus::spool::test {
 
 // `pages` pages of 3 lines; page p's cells spell p, so a mix-up shows.
-inline PagedDocument make_document(std::size_t pages, bool interpoint) {
-    PagedDocument doc;
+inline layout::PagedDocument make_document(std::size_t pages, bool interpoint) {
+    layout::PagedDocument doc;
     doc.geometry.interpoint = interpoint;
     for (std::size_t p = 1; p <= pages; ++p) {
-        Page page;
+        layout::Page page;
         page.braille_number = static_cast<int>(p);
         for (std::size_t l = 0; l < 3; ++l) {
-            BrailleLine line;
+            document::BrailleLine line;
             for (std::size_t c = 0; c < 10; ++c)
-                line.push_back(Cell{static_cast<std::uint8_t>(((p * 7 + l * 3 + c) % 63) + 1)});
+                line.push_back(document::Cell{static_cast<std::uint8_t>(((p * 7 + l * 3 + c) % 63) + 1)});
             page.lines.push_back(std::move(line));
         }
         doc.pages.push_back(std::move(page));
@@ -54,7 +54,7 @@ private:
 
 inline JobSubmission submission(const std::string& printer, std::size_t pages,
                                 std::size_t copies = 1, int priority = 0) {
-    const PagedDocument doc = make_document(pages, true);
+    const layout::PagedDocument doc = make_document(pages, true);
     JobSubmission s;
     s.printer = printer;
     s.title = "book of " + std::to_string(pages) + " pages";

@@ -8,9 +8,9 @@
 using namespace tactus;
 
 TEST(Catalogue, NamesTheSpecifiedTablesByLanguage) {
-    const auto tables = table_catalogue();
+    const auto tables = translate::table_catalogue();
     auto find = [&](std::string_view file) {
-        return std::ranges::find(tables, file, &TableInfo::file);
+        return std::ranges::find(tables, file, &translate::TableInfo::file);
     };
     for (auto f : {"en-ueb-g1.ctb", "en-ueb-g2.ctb", "zh-tw.ctb", "zhcn-g1.ctb", "zhcn-g2.ctb"}) {
         const auto it = find(f);

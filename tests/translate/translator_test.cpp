@@ -16,9 +16,9 @@ using namespace tactus;
 
 namespace {
 
-std::string unicode(const Result<BrailleLine>& r) {
+std::string unicode(const Result<document::BrailleLine>& r) {
     EXPECT_TRUE(r.has_value()) << (r ? "" : r.error().to_string());
-    return r ? to_unicode_text(*r) : std::string{};
+    return r ? document::to_unicode_text(*r) : std::string{};
 }
 
 std::u32string u32(std::string_view s) { return *utf8_to_utf32(s); }
@@ -26,30 +26,30 @@ std::u32string u32(std::string_view s) { return *utf8_to_utf32(s); }
 }  // namespace
 
 TEST(Translator, UebGrade2ContractsWords) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
     // "the" and "and" are whole-word contractions in UEB grade 2.
     EXPECT_EQ(unicode(t->translate(u32("the cat and dog"))), "⠮⠀⠉⠁⠞⠀⠯⠀⠙⠕⠛");
 }
 
 TEST(Translator, UebGrade1SpellsOut) {
-    auto t = Translator::open("en-ueb-g1.ctb");
+    auto t = translate::Translator::open("en-ueb-g1.ctb");
     ASSERT_TRUE(t);
     EXPECT_EQ(unicode(t->translate(u32("the"))), "⠞⠓⠑");
 }
 
 TEST(Translator, CapitalAndNumberIndicators) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
     EXPECT_EQ(unicode(t->translate(u32("Hi 42"))), "⠠⠓⠊⠀⠼⠙⠃");
 }
 
 TEST(Translator, EmphasisBecomesIndicators) {
-    auto t = Translator::open("en-ueb-g1.ctb");
+    auto t = translate::Translator::open("en-ueb-g1.ctb");
     ASSERT_TRUE(t);
     const auto text = u32("a big b");
-    std::vector<std::uint8_t> emph(text.size(), emphasis_none);
-    emph[2] = emph[3] = emph[4] = emphasis_bold;
+    std::vector<std::uint8_t> emph(text.size(), document::emphasis_none);
+    emph[2] = emph[3] = emph[4] = document::emphasis_bold;
     const auto plain = unicode(t->translate(text));
     const auto bold = unicode(t->translate(text, emph));
     // UEB bold word indicator is dots 45, 2 before the word.
@@ -58,8 +58,8 @@ TEST(Translator, EmphasisBecomesIndicators) {
 }
 
 TEST(Translator, ChineseTaiwanAndMainland) {
-    auto tw = Translator::open("zh-tw.ctb");
-    auto cn = Translator::open("zhcn-g1.ctb");
+    auto tw = translate::Translator::open("zh-tw.ctb");
+    auto cn = translate::Translator::open("zhcn-g1.ctb");
     ASSERT_TRUE(tw);
     ASSERT_TRUE(cn);
     const auto tw_cells = tw->translate(u32("我們"));
@@ -68,12 +68,12 @@ TEST(Translator, ChineseTaiwanAndMainland) {
     EXPECT_FALSE(tw_cells->empty());
     EXPECT_FALSE(cn_cells->empty());
     // Different braille systems: bopomofo-based vs. mainland current braille.
-    EXPECT_NE(to_unicode_text(*tw_cells), to_unicode_text(*cn_cells));
-    for (Cell c : *tw_cells) EXPECT_FALSE(c.dots & 0xC0) << "6-dot expected";
+    EXPECT_NE(document::to_unicode_text(*tw_cells), document::to_unicode_text(*cn_cells));
+    for (document::Cell c : *tw_cells) EXPECT_FALSE(c.dots & 0xC0) << "6-dot expected";
 }
 
 TEST(Translator, BackTranslationRoundTrip) {
-    auto t = Translator::open("en-ueb-g1.ctb");
+    auto t = translate::Translator::open("en-ueb-g1.ctb");
     ASSERT_TRUE(t);
     const auto cells = t->translate(u32("Braille is read by touch."));
     ASSERT_TRUE(cells);
@@ -83,7 +83,7 @@ TEST(Translator, BackTranslationRoundTrip) {
 }
 
 TEST(Translator, BrfDisplayTable) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
     const auto brf = t->translate_with_display(u32("Hello"), "en-us-brf.dis");
     ASSERT_TRUE(brf);
@@ -91,7 +91,7 @@ TEST(Translator, BrfDisplayTable) {
 }
 
 TEST(Translator, UnknownTableIsAClearError) {
-    auto t = Translator::open("no-such-table.ctb");
+    auto t = translate::Translator::open("no-such-table.ctb");
     ASSERT_FALSE(t);
     EXPECT_NE(t.error().message.find("no-such-table.ctb"), std::string::npos);
     EXPECT_EQ(t.error().where, "--table");
@@ -102,14 +102,14 @@ TEST(Translator, BrokenTableIsAClearError) {
     {
         std::ofstream(path) << "this is not a liblouis opcode\n";
     }
-    auto t = Translator::open(path.string());
+    auto t = translate::Translator::open(path.string());
     ASSERT_FALSE(t);
     EXPECT_NE(t.error().message.find("broken"), std::string::npos);
     std::filesystem::remove(path);
 }
 
 TEST(Translator, LongTextIsNotTruncated) {
-    auto t = Translator::open("en-ueb-g1.ctb");
+    auto t = translate::Translator::open("en-ueb-g1.ctb");
     ASSERT_TRUE(t);
     std::u32string text;
     for (int i = 0; i < 3000; ++i) text += U"word ";
@@ -122,7 +122,7 @@ TEST(Translator, LongTextIsNotTruncated) {
 // liblouis is not thread-safe; the translator serialises calls, so concurrent
 // use must give exactly the single-threaded result.
 TEST(Translator, ConcurrentCallsGiveTheSameResult) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
     const auto text = u32("The quick brown fox jumps over the lazy dog, and then some.");
     const auto expected = unicode(t->translate(text));
@@ -131,33 +131,33 @@ TEST(Translator, ConcurrentCallsGiveTheSameResult) {
     for (int k = 0; k < 4; ++k)
         threads.emplace_back([&] {
             for (int i = 0; i < 200; ++i)
-                if (to_unicode_text(*t->translate(text)) != expected) ++mismatches;
+                if (document::to_unicode_text(*t->translate(text)) != expected) ++mismatches;
         });
     for (auto& th : threads) th.join();
     EXPECT_EQ(mismatches.load(), 0);
 }
 
 TEST(TranslateBlock, LongParagraphCutAtSpacesMatchesWholeTranslation) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
     std::string text;
     for (int i = 0; i < 900; ++i) text += "and the children ";
-    Block b;
-    b.spans = {Span{text, emphasis_none}};
-    const auto chunked = translate_block(b, *t);
+    document::Block b;
+    b.spans = {document::Span{text, document::emphasis_none}};
+    const auto chunked = translate::translate_block(b, *t);
     ASSERT_TRUE(chunked);
     const auto whole = t->translate(u32(text));
     ASSERT_TRUE(whole);
-    EXPECT_EQ(to_unicode_text(chunked->cells), to_unicode_text(*whole));
+    EXPECT_EQ(document::to_unicode_text(chunked->cells), document::to_unicode_text(*whole));
 }
 
 TEST(TranslateBlock, InvalidUtf8NamesTheLine) {
-    auto t = Translator::open("en-ueb-g2.ctb");
+    auto t = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(t);
-    Block b;
+    document::Block b;
     b.source_line = 7;
-    b.spans = {Span{"ok \xC3", emphasis_none}};
-    const auto r = translate_block(b, *t);
+    b.spans = {document::Span{"ok \xC3", document::emphasis_none}};
+    const auto r = translate::translate_block(b, *t);
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().where, "line 7:byte 3");
 }

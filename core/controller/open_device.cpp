@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "controller/open_device.hpp"
+
+#include <charconv>
+#include <optional>
+#include <string>
+
+#include "controller/sim_controller.hpp"
+#include "controller/sim_transport.hpp"
+#include "transport/device.hpp"
+
+namespace tactus::controller {
+namespace {
+
+std::optional<double> to_double(const std::string& s) {
+    double v = 0;
+    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+Result<std::unique_ptr<transport::ByteStream>> open_sim(const transport::DeviceSpec& spec) {
+    SimLineOptions line;
+    SimOptions sim;
+    for (const auto& [k, v] : spec.options) {
+        const auto d = to_double(v);
+        const std::string where = "sim option " + k;
+        if (!d || *d < 0) return fail("\"" + v + "\" is not a non-negative number", where);
+        if (k == "baud") line.baud = *d;
+        else if (k == "noise") line.noise.drop = line.noise.flip = line.noise.dup = *d;
+        else if (k == "seed") line.noise.seed = static_cast<std::uint64_t>(*d);
+        else if (k == "paper-reload") sim.reload_paper_after_s = *d;
+        else return fail("unknown option (baud, noise, seed, paper-reload)", where);
+    }
+    if (line.baud < 300) return fail("baud rate below 300", "sim option baud");
+    auto ctl = std::make_shared<SimController>(sim);
+    return std::unique_ptr<transport::ByteStream>(std::make_unique<SimTransport>(ctl, line));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<transport::ByteStream>> open_device(std::string_view device) {
+    auto spec = transport::parse_device(device);
+    if (!spec) return std::unexpected(spec.error());
+    if (spec->scheme == "sim") return open_sim(*spec);
+    return transport::open_device(device);
+}
+
+}  // namespace tactus::controller

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The in-process simulator as a byte stream: a serial line of a given baud rate
+// in each direction, the simulated controller at the far end, and virtual time,
+// so a whole job runs in milliseconds of wall time yet every byte, timeout and
+// step happens at the moment it would on the real machine. Line faults (lost,
+// flipped and duplicated bytes, a pulled cable) are injected here.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "controller/sim_controller.hpp"
+#include "transport/byte_stream.hpp"
+
+namespace tactus::controller {
+
+struct LineNoise {
+    double drop = 0;  // probability per byte
+    double flip = 0;  // one bit inverted
+    double dup = 0;   // byte delivered twice
+    std::uint64_t seed = 1;
+};
+
+struct SimLineOptions {
+    double baud = 115200;
+    int bits_per_byte = 10;  // 8N1
+    LineNoise noise;
+};
+
+class SimTransport final : public transport::ByteStream {
+public:
+    SimTransport(std::shared_ptr<controller::SimController> controller, SimLineOptions options);
+
+    Result<void> write(std::span<const std::uint8_t> bytes) override;
+    Result<std::size_t> read(std::span<std::uint8_t> buffer,
+                             std::chrono::microseconds timeout) override;
+    Result<void> reopen() override;
+    [[nodiscard]] double now() const override { return now_; }
+    void sleep(std::chrono::microseconds duration) override;
+    [[nodiscard]] double bytes_per_second() const override;
+    [[nodiscard]] std::string describe() const override { return "sim"; }
+
+    // The cable is pulled for [from, to): reads and writes fail, reopen fails.
+    void unplug_between(double from, double to) { unplugged_ = {from, to}; }
+    // The line goes dead for [from, to): bytes are lost but the port stays open.
+    void silence_between(double from, double to) { silent_ = {from, to}; }
+    // A watchdog reset (RAM kept) or power loss of the controller at time t.
+    void reset_controller_at(double t, bool keep_ram) { reset_ = {t, keep_ram}; }
+
+    [[nodiscard]] controller::SimController& controller() { return *controller_; }
+    [[nodiscard]] std::size_t line_bytes_to_controller() const { return tx_count_; }
+    [[nodiscard]] std::size_t bytes_corrupted() const { return corrupted_; }
+
+private:
+    struct Timed {
+        double at;
+        std::uint8_t byte;
+    };
+    void run_until(double t);
+    void send_line(std::deque<Timed>& line, double& line_free, double from,
+                   std::span<const std::uint8_t> bytes);
+    void collect_output(double at);
+    [[nodiscard]] bool in(const std::pair<double, double>& w, double t) const {
+        return t >= w.first && t < w.second;
+    }
+
+    std::shared_ptr<controller::SimController> controller_;
+    SimLineOptions options_;
+    std::mt19937_64 rng_;
+    double now_ = 0;
+    double tx_free_ = 0, rx_free_ = 0;
+    std::deque<Timed> to_controller_, to_host_;
+    std::pair<double, double> unplugged_{-1, -1}, silent_{-1, -1};
+    std::optional<std::pair<double, bool>> reset_;
+    std::size_t tx_count_ = 0;
+    std::size_t corrupted_ = 0;
+};
+
+}  // namespace tactus::controller

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "plan/plan_file.hpp"
+
+#include <limits>
+
+#include "common/file_io.hpp"
+
+namespace tactus::plan {
+namespace {
+
+using nlohmann::json;
+
+json move_json(const motion::StepMove& m) {
+    json segs = json::array();
+    for (const auto& s : m.segments) segs.push_back({s.interval_q16, s.count, s.add_q16});
+    return {{"steps", m.steps}, {"segments", segs}, {"duration_s", m.duration_s}};
+}
+
+// Typed reads with the JSON path in the error.
+template <typename T>
+Result<T> get(const json& j, const char* key, const std::string& where) {
+    if (!j.is_object() || !j.contains(key)) return fail("missing field", where + "." + key);
+    const json& v = j.at(key);
+    if constexpr (std::is_same_v<T, double>) {
+        if (!v.is_number()) return fail("not a number", where + "." + key);
+        return v.get<double>();
+    } else {
+        if (!v.is_number_integer()) return fail("not an integer", where + "." + key);
+        const auto x = v.get<std::int64_t>();
+        if (x < std::numeric_limits<T>::min() || x > std::numeric_limits<T>::max())
+            return fail("out of range", where + "." + key);
+        return static_cast<T>(x);
+    }
+}
+
+Result<motion::StepMove> move_from(const json& j, const std::string& where) {
+    motion::StepMove m;
+    auto steps = get<std::int32_t>(j, "steps", where);
+    if (!steps) return std::unexpected(steps.error());
+    m.steps = *steps;
+    if (auto d = get<double>(j, "duration_s", where)) m.duration_s = *d;
+    if (!j.contains("segments") || !j["segments"].is_array())
+        return fail("missing segment list", where + ".segments");
+    for (std::size_t i = 0; i < j["segments"].size(); ++i) {
+        const auto& s = j["segments"][i];
+        const auto w = where + ".segments[" + std::to_string(i) + "]";
+        if (!s.is_array() || s.size() != 3 || !s[0].is_number_integer() ||
+            !s[1].is_number_integer() || !s[2].is_number_integer())
+            return fail("expected [interval_q16, count, add_q16]", w);
+        const auto iv = s[0].get<std::int64_t>(), n = s[1].get<std::int64_t>(), a = s[2].get<std::int64_t>();
+        if (iv < 0 || iv > 0xFFFFFFFFLL || n < 0 || n > 0xFFFF || a < INT32_MIN || a > INT32_MAX)
+            return fail("out of range", w);
+        m.segments.push_back({static_cast<std::uint32_t>(iv), static_cast<std::uint16_t>(n),
+                              static_cast<std::int32_t>(a)});
+    }
+    return m;
+}
+
+}  // namespace
+
+json plan_to_json(const plan::JobPlan& plan) {
+    json sheets = json::array();
+    for (const auto& sh : plan.sheets) {
+        json passes = json::array();
+        for (const auto& p : sh.passes) {
+            json strikes = json::array();
+            for (std::size_t i = 0; i < p.strikes.size(); ++i) {
+                const auto& s = p.strikes[i];
+                strikes.push_back({{"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
+                                   {"side", s.side == plan::Side::front ? "front" : "back"},
+                                   {"x_mm", s.x_mm},
+                                   {"y_mm", s.y_mm},
+                                   {"carriage_step", s.carriage_step},
+                                   {"time_s", s.time_s},
+                                   {"move", move_json(p.moves[i])}});
+            }
+            passes.push_back({{"side", p.side == plan::Side::front ? "front" : "back"},
+                              {"y_mm", p.y_mm},
+                              {"feed_step", p.feed_step},
+                              {"direction", p.direction},
+                              {"feed", move_json(p.feed)},
+                              {"strikes", strikes},
+                              {"duration_s", p.duration_s}});
+        }
+        sheets.push_back({{"index", sh.index}, {"passes", passes}, {"duration_s", sh.duration_s}});
+    }
+    return {{"tactus_plan", 1}, {"duration_s", plan.duration_s}, {"sheets", sheets}};
+}
+
+Result<plan::JobPlan> plan_from_json(const json& j) {
+    if (!j.is_object() || !j.contains("tactus_plan"))
+        return fail("not a Tactus plan (no \"tactus_plan\" field)", "plan");
+    if (j["tactus_plan"] != 1) return fail("unsupported plan version", "plan.tactus_plan");
+    plan::JobPlan out;
+    if (auto d = get<double>(j, "duration_s", "plan")) out.duration_s = *d;
+    if (!j.contains("sheets") || !j["sheets"].is_array()) return fail("missing sheets", "plan.sheets");
+    for (std::size_t si = 0; si < j["sheets"].size(); ++si) {
+        const auto& js = j["sheets"][si];
+        const auto ws = "plan.sheets[" + std::to_string(si) + "]";
+        plan::SheetPlan sheet;
+        auto idx = get<std::uint16_t>(js, "index", ws);
+        if (!idx) return std::unexpected(idx.error());
+        sheet.index = *idx;
+        if (!js.contains("passes") || !js["passes"].is_array()) return fail("missing passes", ws + ".passes");
+        for (std::size_t pi = 0; pi < js["passes"].size(); ++pi) {
+            const auto& jp = js["passes"][pi];
+            const auto wp = ws + ".passes[" + std::to_string(pi) + "]";
+            plan::Pass p;
+            p.sheet = sheet.index;
+            p.side = jp.value("side", "front") == "back" ? plan::Side::back : plan::Side::front;
+            if (auto y = get<double>(jp, "y_mm", wp)) p.y_mm = *y;
+            auto fs = get<std::int32_t>(jp, "feed_step", wp);
+            if (!fs) return std::unexpected(fs.error());
+            p.feed_step = *fs;
+            p.direction = jp.value("direction", 1) < 0 ? -1 : 1;
+            if (!jp.contains("feed")) return fail("missing field", wp + ".feed");
+            auto feed = move_from(jp["feed"], wp + ".feed");
+            if (!feed) return std::unexpected(feed.error());
+            p.feed = *feed;
+            if (!jp.contains("strikes") || !jp["strikes"].is_array())
+                return fail("missing strikes", wp + ".strikes");
+            for (std::size_t k = 0; k < jp["strikes"].size(); ++k) {
+                const auto& jk = jp["strikes"][k];
+                const auto wk = wp + ".strikes[" + std::to_string(k) + "]";
+                plan::Strike s;
+                s.hammer = jk.value("hammer", "convex") == "concave" ? plan::Hammer::concave : plan::Hammer::convex;
+                s.side = jk.value("side", "front") == "back" ? plan::Side::back : plan::Side::front;
+                auto cs = get<std::int32_t>(jk, "carriage_step", wk);
+                if (!cs) return std::unexpected(cs.error());
+                s.carriage_step = *cs;
+                if (auto v = get<double>(jk, "x_mm", wk)) s.x_mm = *v;
+                if (auto v = get<double>(jk, "y_mm", wk)) s.y_mm = *v;
+                if (auto v = get<double>(jk, "time_s", wk)) s.time_s = *v;
+                if (!jk.contains("move")) return fail("missing field", wk + ".move");
+                auto m = move_from(jk["move"], wk + ".move");
+                if (!m) return std::unexpected(m.error());
+                p.moves.push_back(*m);
+                p.strikes.push_back(s);
+                ++out.strikes;
+            }
+            if (auto d = get<double>(jp, "duration_s", wp)) p.duration_s = *d;
+            sheet.passes.push_back(std::move(p));
+        }
+        out.sheets.push_back(std::move(sheet));
+    }
+    return out;
+}
+
+Result<plan::JobPlan> load_plan(const std::filesystem::path& path) {
+    auto text = read_file(path);
+    if (!text) return std::unexpected(text.error());
+    const auto j = json::parse(*text, nullptr, false);
+    if (j.is_discarded()) return fail("not valid JSON", path.string());
+    auto p = plan_from_json(j);
+    if (!p) return std::unexpected(located(p.error(), path.string()));
+    return p;
+}
+
+}  // namespace tactus::plan

@@ -1,0 +1,345 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The host link against the in-process simulated controller, on virtual time:
+// whole jobs under line noise, unplugs, resets and faults, checked dot for dot
+// against the plan.
+#include <gtest/gtest.h>
+
+#include "controller/sim_controller.hpp"
+#include "link/link.hpp"
+#include "../common/test_plans.hpp"
+#include "controller/sim_transport.hpp"
+
+namespace tactus {
+namespace {
+
+using controller::SimController;
+using controller::SimTransport;
+
+struct Rig {
+    std::shared_ptr<SimController> ctl;
+    SimTransport* line = nullptr;
+    link::Link link;
+};
+
+Rig make_rig(controller::SimLineOptions line = {}, controller::SimOptions sim = {},
+             link::LinkOptions opt = {}) {
+    auto ctl = std::make_shared<SimController>(sim);
+    auto t = std::make_unique<SimTransport>(ctl, line);
+    auto* raw = t.get();
+    return Rig{ctl, raw, link::Link::over(std::move(t), opt)};
+}
+
+link::JobOutcome run(Rig& rig, const plan::JobPlan& plan, std::size_t start_sheet = 1,
+                     std::vector<link::PassExecuted>* executed = nullptr) {
+    auto h = rig.link.hello();
+    EXPECT_TRUE(h) << h.error().to_string();
+    auto c = rig.link.configure({});
+    EXPECT_TRUE(c) << c.error().to_string();
+    link::CancelToken cancel;
+    auto out = rig.link.send_job(
+        plan, start_sheet,
+        [&](const link::Progress& p) {
+            if (p.executed && executed) executed->push_back(*p.executed);
+        },
+        cancel);
+    EXPECT_TRUE(out) << out.error().to_string();
+    return out ? *out : link::JobOutcome{};
+}
+
+TEST(Link, CleanLineStrikesExactlyThePlan) {
+    const auto plan = test::make_plan(2, 12, 20);
+    auto rig = make_rig();
+    std::vector<link::PassExecuted> executed;
+    const auto out = run(rig, plan, 1, &executed);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    ASSERT_EQ(executed.size(), 24U);
+    EXPECT_EQ(executed.front().sheet, 1U);
+    EXPECT_EQ(executed.back().sheet, 2U);
+    EXPECT_EQ(executed.back().pass_in_sheet, 11U);
+    EXPECT_EQ(out.stats.frames_resent, 0U);
+    EXPECT_LE(rig.ctl->max_ring_used(), machine::ram::kRingBytes);
+}
+
+TEST(Link, ProgressCountsOnlyExecutedPasses) {
+    const auto plan = test::make_plan(1, 6, 10);
+    auto rig = make_rig();
+    std::size_t strikes_when_reported = 0;
+    ASSERT_TRUE(rig.link.hello());
+    link::CancelToken cancel;
+    std::vector<std::size_t> strikes_at_ack;
+    auto out = rig.link.send_job(
+        plan, 1,
+        [&](const link::Progress& p) {
+            if (p.executed) strikes_at_ack.push_back(rig.ctl->strike_log().size());
+        },
+        cancel);
+    ASSERT_TRUE(out);
+    // When pass k is reported, all strikes of passes 0..k are already in the log.
+    std::size_t expected = 0;
+    for (std::size_t k = 0; k < strikes_at_ack.size(); ++k) {
+        expected += plan.sheets[0].passes[k].strikes.size();
+        EXPECT_GE(strikes_at_ack[k], expected) << "pass " << k;
+    }
+    (void)strikes_when_reported;
+}
+
+class Noise : public ::testing::TestWithParam<std::uint64_t> {};
+
+TEST_P(Noise, DroppedFlippedDuplicatedBytesLoseNoDot) {
+    const auto plan = test::make_plan(2, 10, 24, static_cast<unsigned>(GetParam()));
+    controller::SimLineOptions line;
+    line.baud = 57600;
+    line.noise = {1e-3, 1e-3, 1e-3, GetParam()};
+    auto rig = make_rig(line);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_GT(rig.line->bytes_corrupted(), 0U);
+}
+INSTANTIATE_TEST_SUITE_P(Seeds, Noise, ::testing::Values(1, 2, 3, 4, 5));
+
+TEST(Link, HeavyNoiseStillExact) {
+    const auto plan = test::make_plan(1, 8, 24, 9);
+    controller::SimLineOptions line;
+    line.noise = {1e-2, 1e-2, 1e-2, 42};
+    auto rig = make_rig(line);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_GT(out.stats.frames_resent, 0U);
+}
+
+TEST(Link, UnplugMidJobReconnectsAndCompletes) {
+    const auto plan = test::make_plan(2, 10, 20);
+    auto rig = make_rig();
+    rig.line->unplug_between(1.5, 6.0);  // longer than the controller's keep-alive
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_GE(out.stats.reconnects, 1U);
+}
+
+TEST(Link, SilentLineMidJobRecovers) {
+    const auto plan = test::make_plan(1, 10, 20);
+    auto rig = make_rig();
+    rig.line->silence_between(1.0, 2.5);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+}
+
+TEST(Link, UnplugBeyondDeadlineFailsRecoverably) {
+    const auto plan = test::make_plan(2, 10, 20);
+    link::LinkOptions opt;
+    opt.reconnect_deadline = std::chrono::milliseconds(2000);
+    auto rig = make_rig({}, {}, opt);
+    rig.line->unplug_between(2.0, 1e9);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::failed);
+    EXPECT_NE(out.error.message.find("device gone"), std::string::npos) << out.error.message;
+    EXPECT_GE(out.resume_sheet, 1U);
+    // Whatever was struck is a prefix of the plan: nothing doubled, nothing skipped.
+    const auto planned = controller::planned_strikes(plan);
+    const auto& log = rig.ctl->strike_log();
+    ASSERT_LE(log.size(), planned.size());
+    EXPECT_TRUE(std::equal(log.begin(), log.end(), planned.begin()));
+}
+
+TEST(Link, WarmResetMidSheetResumesAtTheExactStrike) {
+    const auto plan = test::make_plan(2, 10, 20, 3);
+    auto rig = make_rig();
+    rig.ctl->reset_at_strike(57, true);  // inside sheet 1, mid-pass
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->resets(), 1U);
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_EQ(out.stats.restarts, 1U);
+}
+
+TEST(Link, ResetAtAnArbitraryTimeIsExact) {
+    const auto plan = test::make_plan(2, 10, 20, 4);
+    for (const double t : {0.9, 2.3, 3.71, 5.05}) {
+        auto rig = make_rig();
+        rig.line->reset_controller_at(t, true);
+        const auto out = run(rig, plan);
+        EXPECT_EQ(out.end, link::JobEnd::completed) << "t=" << t << " " << out.error.to_string();
+        EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan)) << "t=" << t;
+    }
+}
+
+TEST(Link, PowerLossFailsWithTheSheetToRedo) {
+    const auto plan = test::make_plan(3, 8, 20, 5);
+    auto rig = make_rig();
+    rig.ctl->reset_at_strike(200, false);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::failed);
+    EXPECT_NE(out.error.message.find("lost power"), std::string::npos) << out.error.message;
+    const auto planned = controller::planned_strikes(plan);
+    ASSERT_GE(rig.ctl->strike_log().size(), 200U);
+    const auto sheet_hit = rig.ctl->strike_log()[199].sheet;
+    EXPECT_EQ(out.resume_sheet, sheet_hit);
+}
+
+TEST(Link, PaperOutWaitsForPaperThenCompletes) {
+    const auto plan = test::make_plan(3, 4, 10);
+    controller::SimOptions sim;
+    sim.reload_paper_after_s = 5.0;
+    auto rig = make_rig({}, sim);
+    rig.ctl->inject_paper_out_at_sheet(2);
+    std::vector<std::string> notes;
+    ASSERT_TRUE(rig.link.hello());
+    link::CancelToken cancel;
+    auto out = rig.link.send_job(
+        plan, 1, [&](const link::Progress& p) { if (!p.note.empty()) notes.push_back(p.note); },
+        cancel);
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->end, link::JobEnd::completed) << out->error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(),
+                            [](const std::string& n) { return n.find("paper out") != std::string::npos; }));
+}
+
+TEST(Link, PaperNeverLoadedFailsAtThatSheet) {
+    const auto plan = test::make_plan(3, 4, 10);
+    link::LinkOptions opt;
+    opt.fault_wait = std::chrono::milliseconds(3000);
+    auto rig = make_rig({}, {}, opt);
+    rig.ctl->inject_paper_out_at_sheet(2);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::failed);
+    EXPECT_EQ(out.resume_sheet, 2U);
+    EXPECT_EQ(out.passes_done, 4U);
+}
+
+TEST(Link, LimitSwitchRehomesAndResumes) {
+    const auto plan = test::make_plan(1, 10, 20, 6);
+    auto rig = make_rig();
+    rig.ctl->inject_limit_switch_at_strike(33);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+}
+
+TEST(Link, HammerFaultStopsTheJob) {
+    const auto plan = test::make_plan(2, 10, 20, 7);
+    auto rig = make_rig();
+    rig.ctl->inject_hammer_fault_at_strike(40);
+    const auto out = run(rig, plan);
+    EXPECT_EQ(out.end, link::JobEnd::failed);
+    EXPECT_NE(out.error.message.find("hammer"), std::string::npos);
+    EXPECT_EQ(rig.ctl->strike_log().size(), 39U);
+}
+
+TEST(Link, StartSheetSkipsEarlierSheets) {
+    const auto plan = test::make_plan(3, 5, 10);
+    auto rig = make_rig();
+    const auto out = run(rig, plan, 2);
+    EXPECT_EQ(out.end, link::JobEnd::completed);
+    auto expected = controller::planned_strikes(plan);
+    std::erase_if(expected, [](const auto& s) { return s.sheet < 2; });
+    EXPECT_EQ(rig.ctl->strike_log(), expected);
+}
+
+TEST(Link, UnknownStartSheetIsAnError) {
+    const auto plan = test::make_plan(1, 2, 3);
+    auto rig = make_rig();
+    ASSERT_TRUE(rig.link.hello());
+    link::CancelToken cancel;
+    auto out = rig.link.send_job(plan, 5, {}, cancel);
+    ASSERT_FALSE(out);
+    EXPECT_NE(out.error().message.find("sheet 5"), std::string::npos);
+}
+
+TEST(Link, CancelAbortsAndStopsStriking) {
+    const auto plan = test::make_plan(2, 10, 20);
+    auto rig = make_rig();
+    ASSERT_TRUE(rig.link.hello());
+    link::CancelToken cancel;
+    auto out = rig.link.send_job(
+        plan, 1, [&](const link::Progress& p) { if (p.executed && p.executed->passes_done == 3) cancel.cancel(); },
+        cancel);
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->end, link::JobEnd::cancelled);
+    const auto after = rig.ctl->strike_log().size();
+    EXPECT_LT(after, controller::planned_strikes(plan).size());
+    // Nothing more happens once aborted.
+    rig.link.stream().sleep(std::chrono::seconds(5));
+    EXPECT_EQ(rig.ctl->strike_log().size(), after);
+    EXPECT_EQ(rig.ctl->status().ack.state, encode::ControllerState::idle);
+}
+
+TEST(Link, PauseAndResumeFromAnotherRequest) {
+    const auto plan = test::make_plan(1, 8, 10);
+    auto rig = make_rig();
+    ASSERT_TRUE(rig.link.hello());
+    link::CancelToken cancel;
+    bool paused_seen = false;
+    auto out = rig.link.send_job(
+        plan, 1,
+        [&](const link::Progress& p) {
+            if (p.executed && p.executed->passes_done == 2) rig.link.request_pause();
+            if (p.status.ack.state == encode::ControllerState::paused && !paused_seen) {
+                paused_seen = true;
+                rig.link.request_resume();
+            }
+        },
+        cancel);
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->end, link::JobEnd::completed);
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+}
+
+TEST(Link, DeviceThatNeverAnswersGivesABoundedError) {
+    auto rig = make_rig();
+    rig.line->silence_between(0, 1e9);
+    auto h = rig.link.hello();
+    ASSERT_FALSE(h);
+    EXPECT_NE(h.error().message.find("no answer"), std::string::npos);
+    EXPECT_LT(rig.line->now(), 10.0);  // bounded: the silence timeout, not forever
+}
+
+TEST(Link, StatusReportsThePosition) {
+    auto rig = make_rig();
+    ASSERT_TRUE(rig.link.hello());
+    ASSERT_TRUE(rig.link.configure({}));
+    auto st = rig.link.status();
+    ASSERT_TRUE(st) << st.error().to_string();
+    EXPECT_TRUE(st->flags & encode::flag::configured);
+    EXPECT_EQ(st->ack.state, encode::ControllerState::idle);
+    EXPECT_EQ(st->ack.faults, 0);  // the power-on reset bit is cleared by hello
+}
+
+}  // namespace
+}  // namespace tactus
+
+// The real front half of the pipeline and the real planner: the bundled sample,
+// embossed on the simulator, strikes exactly what was planned (a cross-check of
+// the plan's step bookkeeping as much as of the link).
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus {
+namespace {
+
+TEST(LinkWithPlanner, BundledSampleStrikesExactlyThePlanUnderNoise) {
+    const auto profile = profile::default_profile();
+    pipeline::PipelineOptions po;
+    po.layout.geometry.interpoint = profile.geometry.interpoint;
+    const auto doc = pipeline::lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md", po);
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    const auto plan = plan::plan_job(*doc, profile);
+    ASSERT_TRUE(plan) << plan.error().to_string();
+    controller::SimLineOptions line;
+    line.noise = {1e-3, 1e-3, 1e-3, 77};
+    auto rig = make_rig(line);
+    rig.ctl->reset_at_strike(700, true);
+    const auto out = run(rig, *plan);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(*plan));
+    EXPECT_GT(rig.ctl->strike_log().size(), 1000U);
+}
+
+}  // namespace
+}  // namespace tactus

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hand_pages.hpp"
+#include "plan/planner.hpp"
+
+using namespace tactus;
+using namespace tactus::plan;
+using tactus::test::doc_of;
+using tactus::test::page_of;
+
+namespace {
+std::vector<double> xs(const Pass& p) {
+    std::vector<double> v;
+    for (const auto& s : p.strikes) v.push_back(s.paper_x_mm);
+    return v;
+}
+}  // namespace
+
+// Front: line 1 "⠉⠀⠁" (dots 1+4 in cell 1, dot 1 in cell 3), line 2 "⠂" (dot 2).
+// Back: line 1 "⠁". Worked by hand with the default profile (80 steps/mm,
+// backlash 0.01 mm = 1 step, concave hammer 12 mm right of the convex one).
+TEST(Planner, HandWorkedSheet) {
+    const auto doc = doc_of({page_of({U"⠉⠀⠁", U"⠂"}), page_of({U"⠁"})});
+    auto job = plan_job(doc, profile::default_profile());
+    ASSERT_TRUE(job.has_value()) << job.error().to_string();
+    ASSERT_EQ(job->sheets.size(), 1u);
+    const auto& passes = job->sheets[0].passes;
+    ASSERT_EQ(passes.size(), 3u);
+    // Dot rows in paper order: front 30, back 31.25, front 42.5 mm.
+    EXPECT_DOUBLE_EQ(passes[0].y_mm, 30.0);
+    EXPECT_EQ(passes[0].side, Side::front);
+    EXPECT_EQ(passes[0].direction, +1);
+    EXPECT_EQ(xs(passes[0]), (std::vector<double>{25.0, 27.5, 37.0}));
+    EXPECT_DOUBLE_EQ(passes[1].y_mm, 31.25);
+    EXPECT_EQ(passes[1].side, Side::back);
+    EXPECT_EQ(passes[1].direction, -1);
+    EXPECT_EQ(xs(passes[1]), (std::vector<double>{186.25}));
+    EXPECT_EQ(passes[1].strikes[0].hammer, Hammer::concave);
+    EXPECT_DOUBLE_EQ(passes[1].strikes[0].x_mm, 25.0);  // top-left as the reader holds the back
+    EXPECT_DOUBLE_EQ(passes[2].y_mm, 42.5);
+    EXPECT_EQ(passes[2].direction, +1);
+    // Feed positions at 40 steps/mm.
+    EXPECT_EQ(passes[0].feed_step, 1200);
+    EXPECT_EQ(passes[1].feed_step, 1250);
+    EXPECT_EQ(passes[2].feed_step, 1700);
+    EXPECT_EQ(passes[1].feed.steps, 50);
+    // Carriage step counter: 25 mm = 2000 steps, ... ; the back dot needs the
+    // carriage at 186.25 - 12 = 174.25 mm = 13940 steps; going back to 25 mm
+    // reverses the carriage, so one step of backlash is added.
+    EXPECT_EQ(passes[0].strikes[0].carriage_step, 2000);
+    EXPECT_EQ(passes[0].strikes[1].carriage_step, 2200);
+    EXPECT_EQ(passes[0].strikes[2].carriage_step, 2960);
+    EXPECT_EQ(passes[1].strikes[0].carriage_step, 13940);
+    EXPECT_EQ(passes[2].strikes[0].carriage_step, 1999);
+    EXPECT_EQ(passes[2].moves[0].steps, 1999 - 13940);
+    EXPECT_EQ(job->strikes, 5u);
+    // Step moves add up to the counter at every strike (no lost step).
+    std::int64_t counter = 0;
+    for (const auto& p : passes)
+        for (std::size_t i = 0; i < p.strikes.size(); ++i) {
+            counter += p.moves[i].steps;
+            EXPECT_EQ(counter, p.strikes[i].carriage_step);
+        }
+}
+
+TEST(Planner, TimesAreConsistentAndAboveTheLowerBound) {
+    const auto doc = doc_of({page_of({U"⠿⠿⠿⠀⠀⠀⠿", U"", U"⠁⠂⠄⠈⠐⠠"}), page_of({U"⠿⠀⠿", U"⠛⠛"})});
+    auto job = plan_job(doc, profile::default_profile());
+    ASSERT_TRUE(job.has_value()) << job.error().to_string();
+    double sum = 0, bound = 0, last_strike = -1;
+    for (const auto& p : job->sheets[0].passes) {
+        EXPECT_TRUE(std::isfinite(p.duration_s));
+        EXPECT_GE(p.duration_s, p.lower_bound_s - 1e-12);
+        EXPECT_GT(p.segments, 0u);
+        for (const auto& s : p.strikes) {
+            EXPECT_GT(s.time_s, last_strike);  // strictly in order, dwell apart at least
+            if (last_strike >= 0) {
+                EXPECT_GE(s.time_s - last_strike, 0.004 - 1e-12);
+            }
+            last_strike = s.time_s;
+            EXPECT_LE(s.worst_residual_um, 50.0);
+            EXPECT_LE(s.residual_um, s.worst_residual_um + 1e-9);
+        }
+        sum += p.duration_s;
+        bound += p.lower_bound_s;
+    }
+    EXPECT_NEAR(job->duration_s, sum, 1e-9);
+    EXPECT_NEAR(job->lower_bound_s, bound, 1e-9);
+    EXPECT_GE(job->duration_s / job->lower_bound_s, 1.0);
+    EXPECT_LE(job->duration_s / job->lower_bound_s, 1.10);
+    EXPECT_LE(job->max_worst_residual_um, 50.0);
+}
+
+TEST(Planner, EmptyRowsCostOnlyFeed) {
+    // Lines 1 and 24 only: two passes, the second fed straight down 230 mm.
+    std::vector<std::u32string> lines(24);
+    lines[0] = U"⠁";
+    lines[23] = U"⠁";
+    auto job = plan_job(doc_of({page_of(lines)}), profile::default_profile());
+    ASSERT_TRUE(job.has_value());
+    const auto& passes = job->sheets[0].passes;
+    ASSERT_EQ(passes.size(), 2u);
+    EXPECT_EQ(passes[1].feed.steps, 230 * 40);
+    EXPECT_EQ(passes[1].moves[0].steps, 0);
+    // The carriage does not move, so the pass is the feed plus one dwell.
+    EXPECT_NEAR(passes[1].duration_s,
+                motion::jerk_min_time(230.0, {150, 5000, 1e6}) + 0.004, 1e-9);
+}
+
+TEST(Planner, UnidirectionalSweepsAlwaysPlus) {
+    auto p = profile::default_profile();
+    p.motion.bidirectional = false;
+    const auto doc = doc_of({page_of({U"⠿⠿", U"⠿⠿"})});
+    auto uni = plan_job(doc, p);
+    auto bi = plan_job(doc, profile::default_profile());
+    ASSERT_TRUE(uni.has_value() && bi.has_value());
+    for (const auto& pass : uni->sheets[0].passes) {
+        EXPECT_EQ(pass.direction, +1);
+        const auto v = xs(pass);
+        EXPECT_TRUE(std::is_sorted(v.begin(), v.end()));
+    }
+    int minus = 0;
+    for (const auto& pass : bi->sheets[0].passes) {
+        auto v = xs(pass);
+        if (pass.direction < 0) {
+            ++minus;
+            EXPECT_TRUE(std::is_sorted(v.rbegin(), v.rend()));
+        }
+    }
+    EXPECT_EQ(minus, 3);  // six dot rows, alternating
+    EXPECT_LT(bi->duration_s, uni->duration_s);
+    auto naive = naive_duration(doc, profile::default_profile());
+    ASSERT_TRUE(naive.has_value());
+    EXPECT_GT(*naive, bi->duration_s);
+}
+
+TEST(Planner, LayoutThatDoesNotFitIsRefused) {
+    auto r = plan_job(doc_of({page_of({std::u32string(28, U'⠁')})}), profile::default_profile());
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().where, "page 1 line 1");
+    r = plan_job(doc_of({page_of({U"⡁"})}), profile::default_profile());  // dot 7 on six-dot
+    ASSERT_FALSE(r.has_value());
+    EXPECT_NE(r.error().message.find("dot 7 or 8"), std::string::npos);
+    r = plan_job(doc_of({page_of({U"⠁"})}, false), profile::default_profile());
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().where, "field geometry.interpoint");
+}
+
+TEST(Planner, BadProfileGivesAnErrorNeverANaN) {
+    const auto doc = doc_of({page_of({U"⠿⠿"})});
+    auto p = profile::default_profile();
+    p.dynamics.head_mass_kg = -0.25;
+    auto r = plan_job(doc, p);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().where, "field dynamics.head_mass_kg");
+    p = profile::default_profile();
+    p.carriage.v_max_mm_s = std::nan("");
+    r = plan_job(doc, p);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().where, "field carriage.v_max_mm_s");
+}
+
+TEST(Planner, ToleranceUnreachableWhenTheHeadCannotFollow) {
+    // A head so heavy on so soft a belt that it barely moves during any move:
+    // the residual is the whole distance at every speed the tuner may try.
+    auto p = profile::default_profile();
+    p.dynamics.head_mass_kg = 500;
+    p.dynamics.belt_stiffness_n_m = 10;
+    p.dynamics.rotor_inertia_kg_m2 = 0;
+    auto r = plan_job(doc_of({page_of({U"⠉"})}), p);
+    ASSERT_FALSE(r.has_value());
+    EXPECT_EQ(r.error().where, "field vibration.tolerance_um");
+    EXPECT_NE(r.error().message.find("unreachable at any speed"), std::string::npos);
+}

