@@ -279,7 +279,7 @@ _scan:
 	mov	r7,a
 ;	src/decoder.c:47: room = (uint8_t)(FW_BUF_CAP - fw_ops_end);
 	mov	r6,_fw_ops_end
-	mov	a,#0x38
+	mov	a,#0x40
 	clr	c
 	subb	a,r6
 	mov	r6,a
@@ -466,7 +466,7 @@ _fw_rx_byte:
 	mov	r7,a
 ;	src/decoder.c:47: room = (uint8_t)(FW_BUF_CAP - fw_ops_end);
 	mov	r6,_fw_ops_end
-	mov	a,#0x38
+	mov	a,#0x40
 	clr	c
 	subb	a,r6
 	mov	r6,a

@@ -36,7 +36,6 @@
 	.globl _fw_ops_end
 	.globl _fw_ops_done
 	.globl _fw_ops_head
-	.globl _pass_crc_update
 	.globl _fw_ring_free
 	.globl _fw_flush
 	.globl _fw_compact
@@ -45,6 +44,7 @@
 	.globl _fw_reply_byte
 	.globl _fw_report_room
 	.globl _fw_starved
+	.globl _pass_crc_update
 	.globl _fw_frame
 ;--------------------------------------------------------
 ; special function registers
@@ -122,7 +122,7 @@ _rp_crc:
 _rp_stash:
 	.ds 2
 _vs:
-	.ds 6
+	.ds 4
 _done_at:
 	.ds 1
 _on_hello_PARM_2:
@@ -131,12 +131,13 @@ _on_hello_PARM_3:
 	.ds 1
 _on_data_PARM_2:
 	.ds 1
+_on_data_frame_65536_85:
+	.ds 1
+_on_data_c_65536_86:
+	.ds 2
 ;--------------------------------------------------------
 ; overlayable items in internal ram
 ;--------------------------------------------------------
-	.area	OSEG    (OVR,DATA)
-_pass_crc_update_PARM_2:
-	.ds 1
 	.area	OSEG    (OVR,DATA)
 	.area	OSEG    (OVR,DATA)
 	.area	OSEG    (OVR,DATA)
@@ -144,16 +145,25 @@ _pass_crc_update_PARM_2:
 _check_ops_PARM_2:
 	.ds 1
 	.area	OSEG    (OVR,DATA)
+_pass_crc_update_PARM_2:
+	.ds 1
+	.area	OSEG    (OVR,DATA)
 _on_configure_PARM_2:
 	.ds 1
-_on_configure_v_65536_99:
-	.ds 10
+_on_configure_p_65536_93:
+	.ds 1
+_on_configure_sloc0_1_0:
+	.ds 2
+_on_configure_sloc1_1_0:
+	.ds 2
+_on_configure_sloc2_1_0:
+	.ds 2
 ;--------------------------------------------------------
 ; indirectly addressable internal ram data
 ;--------------------------------------------------------
 	.area ISEG    (DATA)
 _fw_buf::
-	.ds 56
+	.ds 64
 ;--------------------------------------------------------
 ; absolute internal ram data
 ;--------------------------------------------------------
@@ -218,17 +228,15 @@ _ack_field_sloc0_1_0:
 ;--------------------------------------------------------
 	.area CSEG    (CODE)
 ;------------------------------------------------------------
-;Allocation info for local variables in function 'pass_crc_update'
+;Allocation info for local variables in function 'fw_ring_free'
 ;------------------------------------------------------------
-;b                         Allocated with name '_pass_crc_update_PARM_2'
-;c                         Allocated to registers r6 r7 
-;i                         Allocated to registers r5 
+;used                      Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/link.c:52: uint16_t pass_crc_update(uint16_t c, uint8_t b) {
+;	src/link.c:49: uint8_t fw_ring_free(void) {
 ;	-----------------------------------------
-;	 function pass_crc_update
+;	 function fw_ring_free
 ;	-----------------------------------------
-_pass_crc_update:
+_fw_ring_free:
 	ar7 = 0x07
 	ar6 = 0x06
 	ar5 = 0x05
@@ -237,69 +245,13 @@ _pass_crc_update:
 	ar2 = 0x02
 	ar1 = 0x01
 	ar0 = 0x00
-	mov	r6,dpl
-	mov	r7,dph
-;	src/link.c:54: c ^= (uint16_t)((uint16_t)b << 8);
-	mov	r4,_pass_crc_update_PARM_2
-	mov	ar5,r4
-	clr	a
-	mov	r4,a
-	xrl	ar6,a
-	mov	a,r5
-	xrl	ar7,a
-;	src/link.c:55: for (i = 0; i < 8; ++i) {
-	mov	r5,#0x00
-00105$:
-;	src/link.c:56: if (c & 0x8000) c = (uint16_t)((uint16_t)(c << 1) ^ 0x8BB7U);
-	mov	a,r7
-	jnb	acc.7,00102$
-	mov	a,r6
-	add	a,r6
-	mov	r3,a
-	mov	a,r7
-	rlc	a
-	mov	r4,a
-	xrl	ar3,#0xb7
-	xrl	ar4,#0x8b
-	mov	ar6,r3
-	mov	ar7,r4
-	sjmp	00106$
-00102$:
-;	src/link.c:57: else c = (uint16_t)(c << 1);
-	mov	a,r6
-	add	a,r6
-	mov	r6,a
-	mov	a,r7
-	rlc	a
-	mov	r7,a
-00106$:
-;	src/link.c:55: for (i = 0; i < 8; ++i) {
-	inc	r5
-	cjne	r5,#0x08,00126$
-00126$:
-	jc	00105$
-;	src/link.c:59: return c;
-	mov	dpl,r6
-	mov	dph,r7
-;	src/link.c:60: }
-	ret
-;------------------------------------------------------------
-;Allocation info for local variables in function 'fw_ring_free'
-;------------------------------------------------------------
-;used                      Allocated to registers r7 
-;------------------------------------------------------------
-;	src/link.c:62: uint8_t fw_ring_free(void) {
-;	-----------------------------------------
-;	 function fw_ring_free
-;	-----------------------------------------
-_fw_ring_free:
-;	src/link.c:63: uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
+;	src/link.c:50: uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
 	mov	a,_fw_ops_end
 	clr	c
 	subb	a,_fw_ops_head
 	mov	r7,a
-;	src/link.c:64: return used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
-	cjne	r7,#0x27,00109$
+;	src/link.c:51: return used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
+	cjne	r7,#0x2f,00109$
 00109$:
 	mov	_fw_ring_free_sloc0_1_0,c
 	jc	00103$
@@ -307,7 +259,7 @@ _fw_ring_free:
 	mov	r6,#0x00
 	sjmp	00104$
 00103$:
-	mov	a,#0x27
+	mov	a,#0x2f
 	clr	c
 	subb	a,r7
 	mov	r7,a
@@ -315,23 +267,23 @@ _fw_ring_free:
 	mov	r6,#0x00
 00104$:
 	mov	dpl,r5
-;	src/link.c:65: }
+;	src/link.c:52: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_flush'
 ;------------------------------------------------------------
-;	src/link.c:67: void fw_flush(void) {
+;	src/link.c:54: void fw_flush(void) {
 ;	-----------------------------------------
 ;	 function fw_flush
 ;	-----------------------------------------
 _fw_flush:
-;	src/link.c:68: fw_ops_head = fw_ops_end;
+;	src/link.c:55: fw_ops_head = fw_ops_end;
 	mov	_fw_ops_head,_fw_ops_end
-;	src/link.c:69: fw_ops_done = fw_ops_end;
+;	src/link.c:56: fw_ops_done = fw_ops_end;
 	mov	_fw_ops_done,_fw_ops_end
-;	src/link.c:70: vs.st = VS_OP;
+;	src/link.c:57: vs.st = VS_OP;
 	mov	_vs,#0x00
-;	src/link.c:71: }
+;	src/link.c:58: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_compact'
@@ -340,19 +292,19 @@ _fw_flush:
 ;n                         Allocated to registers r6 
 ;i                         Allocated to registers r5 
 ;------------------------------------------------------------
-;	src/link.c:73: void fw_compact(void) {
+;	src/link.c:60: void fw_compact(void) {
 ;	-----------------------------------------
 ;	 function fw_compact
 ;	-----------------------------------------
 _fw_compact:
-;	src/link.c:74: uint8_t shift = fw_ops_head, n, i;
-;	src/link.c:75: if (shift == 0) return;
+;	src/link.c:61: uint8_t shift = fw_ops_head, n, i;
+;	src/link.c:62: if (shift == 0) return;
 	mov	a,_fw_ops_head
 	mov	r7,a
 	jnz	00102$
 	ret
 00102$:
-;	src/link.c:77: n = (uint8_t)(fw_ops_end - shift + fw_rx_fill());
+;	src/link.c:64: n = (uint8_t)(fw_ops_end - shift + fw_rx_fill());
 	mov	a,_fw_ops_end
 	clr	c
 	subb	a,r7
@@ -366,7 +318,7 @@ _fw_compact:
 	mov	a,r5
 	add	a,r6
 	mov	r6,a
-;	src/link.c:78: for (i = 0; i < n; ++i) fw_buf[i] = fw_buf[i + shift];
+;	src/link.c:65: for (i = 0; i < n; ++i) fw_buf[i] = fw_buf[i + shift];
 	mov	r5,#0x00
 00105$:
 	clr	c
@@ -385,51 +337,51 @@ _fw_compact:
 	inc	r5
 	sjmp	00105$
 00103$:
-;	src/link.c:79: fw_ops_head = 0;
+;	src/link.c:66: fw_ops_head = 0;
 	mov	_fw_ops_head,#0x00
-;	src/link.c:80: fw_ops_done = (uint8_t)(fw_ops_done - shift);
+;	src/link.c:67: fw_ops_done = (uint8_t)(fw_ops_done - shift);
 	mov	a,_fw_ops_done
 	clr	c
 	subb	a,r7
 	mov	_fw_ops_done,a
-;	src/link.c:81: fw_ops_end = (uint8_t)(fw_ops_end - shift);
+;	src/link.c:68: fw_ops_end = (uint8_t)(fw_ops_end - shift);
 	mov	a,_fw_ops_end
 	clr	c
 	subb	a,r7
 	mov	_fw_ops_end,a
-;	src/link.c:82: }
+;	src/link.c:69: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_link_init'
 ;------------------------------------------------------------
 ;warm                      Allocated to registers 
 ;------------------------------------------------------------
-;	src/link.c:84: void fw_link_init(uint8_t warm) {
+;	src/link.c:71: void fw_link_init(uint8_t warm) {
 ;	-----------------------------------------
 ;	 function fw_link_init
 ;	-----------------------------------------
 _fw_link_init:
-;	src/link.c:86: session = 0;
-;	src/link.c:87: expected = 0;
-;	src/link.c:88: nonce = 0;
+;	src/link.c:73: session = 0;
+;	src/link.c:74: expected = 0;
+;	src/link.c:75: nonce = 0;
 	clr	a
 	mov	_session,a
 	mov	_expected,a
 	mov	_nonce,a
 	mov	(_nonce + 1),a
-;	src/link.c:89: fw_ops_head = fw_ops_done = fw_ops_end = 0;
+;	src/link.c:76: fw_ops_head = fw_ops_done = fw_ops_end = 0;
 ;	1-genFromRTrack replaced	mov	_fw_ops_end,#0x00
 	mov	_fw_ops_end,a
 ;	1-genFromRTrack replaced	mov	_fw_ops_done,#0x00
 	mov	_fw_ops_done,a
 ;	1-genFromRTrack replaced	mov	_fw_ops_head,#0x00
 	mov	_fw_ops_head,a
-;	src/link.c:90: vs.st = VS_OP;
+;	src/link.c:77: vs.st = VS_OP;
 ;	1-genFromRTrack replaced	mov	_vs,#0x00
 	mov	_vs,a
-;	src/link.c:91: fw_rx_reset();
+;	src/link.c:78: fw_rx_reset();
 	lcall	_fw_rx_reset
-;	src/link.c:92: rp_ack = rp_nak = rp_status = rp_hello = 0;
+;	src/link.c:79: rp_ack = rp_nak = rp_status = rp_hello = 0;
 ;	assignBit
 	clr	_rp_hello
 ;	assignBit
@@ -438,17 +390,17 @@ _fw_link_init:
 	clr	_rp_nak
 ;	assignBit
 	clr	_rp_ack
-;	src/link.c:93: rp_pos = 0;
+;	src/link.c:80: rp_pos = 0;
 	mov	_rp_pos,#0x00
-;	src/link.c:94: reported = fw_ring_free();
+;	src/link.c:81: reported = fw_ring_free();
 	lcall	_fw_ring_free
 	mov	_reported,dpl
-;	src/link.c:95: }
+;	src/link.c:82: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'due'
 ;------------------------------------------------------------
-;	src/link.c:107: static void due(void) { fw_tx_kick(); }
+;	src/link.c:94: static void due(void) { fw_tx_kick(); }
 ;	-----------------------------------------
 ;	 function due
 ;	-----------------------------------------
@@ -457,57 +409,57 @@ _due:
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_ack'
 ;------------------------------------------------------------
-;	src/link.c:109: void fw_ack(void) {
+;	src/link.c:96: void fw_ack(void) {
 ;	-----------------------------------------
 ;	 function fw_ack
 ;	-----------------------------------------
 _fw_ack:
-;	src/link.c:110: if (!session) return;
+;	src/link.c:97: if (!session) return;
 	mov	a,_session
 	jnz	00102$
 	ret
 00102$:
-;	src/link.c:111: rp_ack = 1;
+;	src/link.c:98: rp_ack = 1;
 ;	assignBit
 	setb	_rp_ack
-;	src/link.c:112: due();
-;	src/link.c:113: }
+;	src/link.c:99: due();
+;	src/link.c:100: }
 	ljmp	_due
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'nak'
 ;------------------------------------------------------------
 ;why                       Allocated to registers 
 ;------------------------------------------------------------
-;	src/link.c:115: static void nak(uint8_t why) {
+;	src/link.c:102: static void nak(uint8_t why) {
 ;	-----------------------------------------
 ;	 function nak
 ;	-----------------------------------------
 _nak:
 	mov	_rp_reason,dpl
-;	src/link.c:117: rp_nak = 1;
+;	src/link.c:104: rp_nak = 1;
 ;	assignBit
 	setb	_rp_nak
-;	src/link.c:118: due();
-;	src/link.c:119: }
+;	src/link.c:105: due();
+;	src/link.c:106: }
 	ljmp	_due
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'hi_of'
 ;------------------------------------------------------------
 ;v                         Allocated to registers r6 r7 
 ;------------------------------------------------------------
-;	src/link.c:123: static uint8_t hi_of(uint16_t v) {
+;	src/link.c:110: static uint8_t hi_of(uint16_t v) {
 ;	-----------------------------------------
 ;	 function hi_of
 ;	-----------------------------------------
 _hi_of:
 	mov	r6,dpl
 	mov	r7,dph
-;	src/link.c:124: rp_stash = v;
+;	src/link.c:111: rp_stash = v;
 	mov	_rp_stash,r6
 	mov	(_rp_stash + 1),r7
-;	src/link.c:125: return (uint8_t)(v >> 8);
+;	src/link.c:112: return (uint8_t)(v >> 8);
 	mov	dpl,r7
-;	src/link.c:126: }
+;	src/link.c:113: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'ack_field'
@@ -515,19 +467,19 @@ _hi_of:
 ;k                         Allocated to registers r7 
 ;used                      Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/link.c:129: static uint8_t ack_field(uint8_t k) {
+;	src/link.c:116: static uint8_t ack_field(uint8_t k) {
 ;	-----------------------------------------
 ;	 function ack_field
 ;	-----------------------------------------
 _ack_field:
-;	src/link.c:130: switch (k) {
+;	src/link.c:117: switch (k) {
 	mov	a,dpl
 	mov	r7,a
 	add	a,#0xff - 0x06
 	jc	00107$
 	mov	a,r7
 	add	a,r7
-;	src/link.c:131: case 0: {
+;	src/link.c:118: case 0: {
 	mov	dptr,#00122$
 	jmp	@a+dptr
 00122$:
@@ -539,13 +491,13 @@ _ack_field:
 	sjmp	00105$
 	sjmp	00106$
 00101$:
-;	src/link.c:132: uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
+;	src/link.c:119: uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
 	mov	a,_fw_ops_end
 	clr	c
 	subb	a,_fw_ops_head
 	mov	r7,a
-;	src/link.c:133: reported = used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
-	cjne	r7,#0x27,00123$
+;	src/link.c:120: reported = used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
+	cjne	r7,#0x2f,00123$
 00123$:
 	mov	_ack_field_sloc0_1_0,c
 	jc	00111$
@@ -553,7 +505,7 @@ _ack_field:
 	mov	r6,#0x00
 	sjmp	00112$
 00111$:
-	mov	a,#0x27
+	mov	a,#0x2f
 	clr	c
 	subb	a,r7
 	mov	r7,a
@@ -561,49 +513,49 @@ _ack_field:
 	mov	r6,#0x00
 00112$:
 	mov	_reported,r5
-;	src/link.c:134: return reported;
+;	src/link.c:121: return reported;
 	mov	dpl,_reported
-;	src/link.c:136: case 1: return hi_of(fw_executed);
+;	src/link.c:123: case 1: return hi_of(fw_executed);
 	ret
 00102$:
 	mov	dpl,_fw_executed
 	mov	dph,(_fw_executed + 1)
-;	src/link.c:137: case 3: return fw_state;
+;	src/link.c:124: case 3: return fw_state;
 	ljmp	_hi_of
 00103$:
 	mov	dpl,_fw_state
-;	src/link.c:138: case 4: return fw_faults;
+;	src/link.c:125: case 4: return fw_faults;
 	ret
 00104$:
 	mov	dpl,_fw_faults
-;	src/link.c:139: case 5: return fw_strikes_in_pass;
+;	src/link.c:126: case 5: return fw_strikes_in_pass;
 	ret
 00105$:
 	mov	dpl,_fw_strikes_in_pass
-;	src/link.c:140: case 6: return hi_of(fw_job_id);
+;	src/link.c:127: case 6: return hi_of(fw_job_id);
 	ret
 00106$:
 	mov	dpl,_fw_job_id
 	mov	dph,(_fw_job_id + 1)
-;	src/link.c:141: default: return (uint8_t)rp_stash; /* 2, 7: the low byte read with the high */
+;	src/link.c:128: default: return (uint8_t)rp_stash; /* 2, 7: the low byte read with the high */
 	ljmp	_hi_of
 00107$:
 	mov	dpl,_rp_stash
-;	src/link.c:142: }
-;	src/link.c:143: }
+;	src/link.c:129: }
+;	src/link.c:130: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'payload_byte'
 ;------------------------------------------------------------
 ;k                         Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/link.c:145: static uint8_t payload_byte(uint8_t k) {
+;	src/link.c:132: static uint8_t payload_byte(uint8_t k) {
 ;	-----------------------------------------
 ;	 function payload_byte
 ;	-----------------------------------------
 _payload_byte:
 	mov	r7,dpl
-;	src/link.c:146: switch (rp_type) {
+;	src/link.c:133: switch (rp_type) {
 	mov	a,#0x81
 	cjne	a,_rp_type,00197$
 	ljmp	00121$
@@ -617,22 +569,22 @@ _payload_byte:
 	sjmp	00104$
 00199$:
 	ljmp	00131$
-;	src/link.c:147: case T_NAK:
+;	src/link.c:134: case T_NAK:
 00101$:
-;	src/link.c:148: if (k == 0) return rp_reason;
+;	src/link.c:135: if (k == 0) return rp_reason;
 	mov	a,r7
 	jnz	00103$
 	mov	dpl,_rp_reason
 	ret
 00103$:
-;	src/link.c:149: return ack_field((uint8_t)(k - 1));
+;	src/link.c:136: return ack_field((uint8_t)(k - 1));
 	mov	ar6,r7
 	dec	r6
 	mov	dpl,r6
 	ljmp	_ack_field
-;	src/link.c:150: case T_STATUS_REPLY:
+;	src/link.c:137: case T_STATUS_REPLY:
 00104$:
-;	src/link.c:151: if (k < 8) return ack_field(k);
+;	src/link.c:138: if (k < 8) return ack_field(k);
 	cjne	r7,#0x08,00201$
 00201$:
 	clr	a
@@ -642,7 +594,7 @@ _payload_byte:
 	mov	dpl,r7
 	ljmp	_ack_field
 00106$:
-;	src/link.c:152: switch (k) {
+;	src/link.c:139: switch (k) {
 	mov	a,r6
 	jz	00203$
 	ljmp	00119$
@@ -700,7 +652,7 @@ _payload_byte:
 	.db	00119$>>8
 	.db	00117$>>8
 	.db	00118$>>8
-;	src/link.c:153: case 8: return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
+;	src/link.c:140: case 8: return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
 00107$:
 	lcall	_fw_paper_present
 	mov	a,dpl
@@ -717,27 +669,27 @@ _payload_byte:
 	orl	a,r4
 	mov	dpl,a
 	ret
-;	src/link.c:154: case 9: return hi_of(fw_job_id);
+;	src/link.c:141: case 9: return hi_of(fw_job_id);
 00108$:
 	mov	dpl,_fw_job_id
 	mov	dph,(_fw_job_id + 1)
 	ljmp	_hi_of
-;	src/link.c:155: case 11: return hi_of(fw_sheet);
+;	src/link.c:142: case 11: return hi_of(fw_sheet);
 00109$:
 	mov	dpl,_fw_sheet
 	mov	dph,(_fw_sheet + 1)
 	ljmp	_hi_of
-;	src/link.c:156: case 13: return hi_of(fw_pass_index);
+;	src/link.c:143: case 13: return hi_of(fw_pass_index);
 00110$:
 	mov	dpl,_fw_pass_index
 	mov	dph,(_fw_pass_index + 1)
 	ljmp	_hi_of
-;	src/link.c:157: case 15: /* i32, sign-extended from the 16-bit counters */
+;	src/link.c:144: case 15: /* i32, sign-extended from the 16-bit counters */
 00111$:
-;	src/link.c:158: rp_stash = (uint16_t)fw_carriage;
+;	src/link.c:145: rp_stash = (uint16_t)fw_carriage;
 	mov	_rp_stash,_fw_carriage
 	mov	(_rp_stash + 1),(_fw_carriage + 1)
-;	src/link.c:159: return (rp_stash & 0x8000) ? 0xFF : 0;
+;	src/link.c:146: return (rp_stash & 0x8000) ? 0xFF : 0;
 	mov	a,(_rp_stash + 1)
 	jnb	acc.7,00137$
 	mov	r5,#0xff
@@ -749,12 +701,12 @@ _payload_byte:
 00138$:
 	mov	dpl,r5
 	ret
-;	src/link.c:160: case 19:
+;	src/link.c:147: case 19:
 00112$:
-;	src/link.c:161: rp_stash = (uint16_t)fw_feed;
+;	src/link.c:148: rp_stash = (uint16_t)fw_feed;
 	mov	_rp_stash,_fw_feed
 	mov	(_rp_stash + 1),(_fw_feed + 1)
-;	src/link.c:162: return (rp_stash & 0x8000) ? 0xFF : 0;
+;	src/link.c:149: return (rp_stash & 0x8000) ? 0xFF : 0;
 	mov	a,(_rp_stash + 1)
 	jnb	acc.7,00139$
 	mov	r5,#0xff
@@ -766,7 +718,7 @@ _payload_byte:
 00140$:
 	mov	dpl,r5
 	ret
-;	src/link.c:164: case 20: return (rp_stash & 0x8000) ? 0xFF : 0;
+;	src/link.c:151: case 20: return (rp_stash & 0x8000) ? 0xFF : 0;
 00114$:
 	mov	a,(_rp_stash + 1)
 	jnb	acc.7,00141$
@@ -779,30 +731,30 @@ _payload_byte:
 00142$:
 	mov	dpl,r5
 	ret
-;	src/link.c:166: case 21: return (uint8_t)(rp_stash >> 8);
+;	src/link.c:153: case 21: return (uint8_t)(rp_stash >> 8);
 00116$:
 	mov	dpl,(_rp_stash + 1)
 	ret
-;	src/link.c:167: case 23: return 0;
+;	src/link.c:154: case 23: return 0;
 00117$:
 	mov	dpl,#0x00
 	ret
-;	src/link.c:168: case 24: return fw_stack_used(); /* v2's underruns: a v3 pass runs only
+;	src/link.c:155: case 24: return fw_stack_used(); /* v2's underruns: a v3 pass runs only
 00118$:
 	ljmp	_fw_stack_used
-;	src/link.c:171: default: return (uint8_t)rp_stash; /* 10, 12, 14, 18, 22 */
+;	src/link.c:158: default: return (uint8_t)rp_stash; /* 10, 12, 14, 18, 22 */
 00119$:
 	mov	dpl,_rp_stash
 	ret
-;	src/link.c:173: case T_HELLO_REPLY:
+;	src/link.c:160: case T_HELLO_REPLY:
 00121$:
-;	src/link.c:174: switch (k) {
+;	src/link.c:161: switch (k) {
 	mov	a,r7
 	add	a,#0xff - 0x06
 	jc	00129$
 	mov	a,r7
 	add	a,r7
-;	src/link.c:175: case 0: return FW_PROTOCOL;
+;	src/link.c:162: case 0: return FW_PROTOCOL;
 	mov	dptr,#00212$
 	jmp	@a+dptr
 00212$:
@@ -815,31 +767,31 @@ _payload_byte:
 	sjmp	00128$
 00122$:
 	mov	dpl,#0x03
-;	src/link.c:176: case 1: return FW_VERSION_MAJOR;
+;	src/link.c:163: case 1: return FW_VERSION_MAJOR;
 	ret
 00123$:
 	mov	dpl,#0x01
-;	src/link.c:177: case 2: return FW_VERSION_MINOR;
+;	src/link.c:164: case 2: return FW_VERSION_MINOR;
 	ret
 00124$:
 	mov	dpl,#0x00
-;	src/link.c:178: case 3: return CAP_INTERPOINT | CAP_LPT | CAP_UART | CAP_WARM_RESTART;
+;	src/link.c:165: case 3: return CAP_INTERPOINT | CAP_LPT | CAP_UART | CAP_WARM_RESTART;
 	ret
 00125$:
 	mov	dpl,#0x0f
-;	src/link.c:179: case 4: return FW_RING_BYTES;
+;	src/link.c:166: case 4: return FW_RING_BYTES;
 	ret
 00126$:
-	mov	dpl,#0x27
-;	src/link.c:180: case 5: return FW_MAX_DATA;
+	mov	dpl,#0x2f
+;	src/link.c:167: case 5: return FW_MAX_DATA;
 	ret
 00127$:
-	mov	dpl,#0x13
-;	src/link.c:181: case 6: return FW_WINDOW_FRAMES;
+	mov	dpl,#0x21
+;	src/link.c:168: case 6: return FW_WINDOW_FRAMES;
 	ret
 00128$:
 	mov	dpl,#0x04
-;	src/link.c:184: default: return k < 11 ? fw_table_id[k - 7] : 0;
+;	src/link.c:171: default: return k < 11 ? fw_table_id[k - 7] : 0;
 	ret
 00129$:
 	cjne	r7,#0x0b,00213$
@@ -868,12 +820,12 @@ _payload_byte:
 	mov	r6,#0x00
 00144$:
 	mov	dpl,r5
-;	src/link.c:186: default: return ack_field(k);
+;	src/link.c:173: default: return ack_field(k);
 	ret
 00131$:
 	mov	dpl,r7
-;	src/link.c:187: }
-;	src/link.c:188: }
+;	src/link.c:174: }
+;	src/link.c:175: }
 	ljmp	_ack_field
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'rp_crc_byte'
@@ -881,13 +833,13 @@ _payload_byte:
 ;b                         Allocated to registers r7 
 ;i                         Allocated to registers r6 
 ;------------------------------------------------------------
-;	src/link.c:190: static uint8_t rp_crc_byte(uint8_t b) {
+;	src/link.c:177: static uint8_t rp_crc_byte(uint8_t b) {
 ;	-----------------------------------------
 ;	 function rp_crc_byte
 ;	-----------------------------------------
 _rp_crc_byte:
 	mov	r7,dpl
-;	src/link.c:192: rp_crc ^= (uint16_t)((uint16_t)b << 8);
+;	src/link.c:179: rp_crc ^= (uint16_t)((uint16_t)b << 8);
 	mov	ar5,r7
 	mov	ar6,r5
 	clr	a
@@ -895,10 +847,10 @@ _rp_crc_byte:
 	xrl	_rp_crc,a
 	mov	a,r6
 	xrl	(_rp_crc + 1),a
-;	src/link.c:193: for (i = 0; i < 8; ++i) {
+;	src/link.c:180: for (i = 0; i < 8; ++i) {
 	mov	r6,#0x00
 00105$:
-;	src/link.c:194: if (rp_crc & 0x8000) rp_crc = (uint16_t)((uint16_t)(rp_crc << 1) ^ 0x1021U);
+;	src/link.c:181: if (rp_crc & 0x8000) rp_crc = (uint16_t)((uint16_t)(rp_crc << 1) ^ 0x1021U);
 	mov	r4,_rp_crc
 	mov	a,(_rp_crc + 1)
 	mov	r5,a
@@ -915,7 +867,7 @@ _rp_crc_byte:
 	mov	(_rp_crc + 1),r5
 	sjmp	00106$
 00102$:
-;	src/link.c:195: else rp_crc = (uint16_t)(rp_crc << 1);
+;	src/link.c:182: else rp_crc = (uint16_t)(rp_crc << 1);
 	mov	a,_rp_crc
 	add	a,_rp_crc
 	mov	_rp_crc,a
@@ -923,24 +875,24 @@ _rp_crc_byte:
 	rlc	a
 	mov	(_rp_crc + 1),a
 00106$:
-;	src/link.c:193: for (i = 0; i < 8; ++i) {
+;	src/link.c:180: for (i = 0; i < 8; ++i) {
 	inc	r6
 	cjne	r6,#0x08,00123$
 00123$:
 	jc	00105$
-;	src/link.c:197: return b;
+;	src/link.c:184: return b;
 	mov	dpl,r7
-;	src/link.c:198: }
+;	src/link.c:185: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'rp_len'
 ;------------------------------------------------------------
-;	src/link.c:200: static uint8_t rp_len(void) {
+;	src/link.c:187: static uint8_t rp_len(void) {
 ;	-----------------------------------------
 ;	 function rp_len
 ;	-----------------------------------------
 _rp_len:
-;	src/link.c:201: switch (rp_type) {
+;	src/link.c:188: switch (rp_type) {
 	mov	a,#0x81
 	cjne	a,_rp_type,00120$
 	sjmp	00101$
@@ -950,25 +902,25 @@ _rp_len:
 	sjmp	00102$
 00121$:
 	mov	a,#0x84
-;	src/link.c:202: case T_HELLO_REPLY: return 13;
+;	src/link.c:189: case T_HELLO_REPLY: return 13;
 	cjne	a,_rp_type,00104$
 	sjmp	00103$
 00101$:
 	mov	dpl,#0x0d
-;	src/link.c:203: case T_NAK: return 9;
+;	src/link.c:190: case T_NAK: return 9;
 	ret
 00102$:
 	mov	dpl,#0x09
-;	src/link.c:204: case T_STATUS_REPLY: return 25;
+;	src/link.c:191: case T_STATUS_REPLY: return 25;
 	ret
 00103$:
 	mov	dpl,#0x19
-;	src/link.c:205: default: return 8;
+;	src/link.c:192: default: return 8;
 	ret
 00104$:
 	mov	dpl,#0x08
-;	src/link.c:206: }
-;	src/link.c:207: }
+;	src/link.c:193: }
+;	src/link.c:194: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_reply_byte'
@@ -976,76 +928,76 @@ _rp_len:
 ;k                         Allocated to registers r7 
 ;len                       Allocated to registers r6 
 ;------------------------------------------------------------
-;	src/link.c:209: int16_t fw_reply_byte(void) {
+;	src/link.c:196: int16_t fw_reply_byte(void) {
 ;	-----------------------------------------
 ;	 function fw_reply_byte
 ;	-----------------------------------------
 _fw_reply_byte:
-;	src/link.c:211: if (rp_pos == 0) {
+;	src/link.c:198: if (rp_pos == 0) {
 	mov	a,_rp_pos
 	jnz	00114$
-;	src/link.c:213: if (rp_hello) {
-;	src/link.c:214: rp_hello = 0;
+;	src/link.c:200: if (rp_hello) {
+;	src/link.c:201: rp_hello = 0;
 ;	assignBit
 	jbc	_rp_hello,00178$
 	sjmp	00111$
 00178$:
-;	src/link.c:215: rp_type = T_HELLO_REPLY;
+;	src/link.c:202: rp_type = T_HELLO_REPLY;
 	mov	_rp_type,#0x81
 	sjmp	00112$
 00111$:
-;	src/link.c:216: } else if (rp_nak) {
-;	src/link.c:217: rp_nak = 0;
+;	src/link.c:203: } else if (rp_nak) {
+;	src/link.c:204: rp_nak = 0;
 ;	assignBit
 	jbc	_rp_nak,00179$
 	sjmp	00108$
 00179$:
-;	src/link.c:218: rp_type = T_NAK;
+;	src/link.c:205: rp_type = T_NAK;
 	mov	_rp_type,#0x83
 	sjmp	00112$
 00108$:
-;	src/link.c:219: } else if (rp_status) {
-;	src/link.c:220: rp_status = 0;
+;	src/link.c:206: } else if (rp_status) {
+;	src/link.c:207: rp_status = 0;
 ;	assignBit
 	jbc	_rp_status,00180$
 	sjmp	00105$
 00180$:
-;	src/link.c:221: rp_type = T_STATUS_REPLY;
+;	src/link.c:208: rp_type = T_STATUS_REPLY;
 	mov	_rp_type,#0x84
 	sjmp	00112$
 00105$:
-;	src/link.c:222: } else if (rp_ack) {
-;	src/link.c:223: rp_ack = 0;
+;	src/link.c:209: } else if (rp_ack) {
+;	src/link.c:210: rp_ack = 0;
 ;	assignBit
 	jbc	_rp_ack,00181$
 	sjmp	00102$
 00181$:
-;	src/link.c:224: rp_type = T_ACK;
+;	src/link.c:211: rp_type = T_ACK;
 	mov	_rp_type,#0x82
 	sjmp	00112$
 00102$:
-;	src/link.c:226: return -1;
+;	src/link.c:213: return -1;
 	mov	dptr,#0xffff
 	ret
 00112$:
-;	src/link.c:228: rp_crc = 0xFFFF;
+;	src/link.c:215: rp_crc = 0xFFFF;
 	mov	_rp_crc,#0xff
 	mov	(_rp_crc + 1),#0xff
-;	src/link.c:229: rp_pos = 1;
+;	src/link.c:216: rp_pos = 1;
 	mov	_rp_pos,#0x01
-;	src/link.c:230: return FW_SYNC;
+;	src/link.c:217: return FW_SYNC;
 	mov	dptr,#0x007e
 	ret
 00114$:
-;	src/link.c:232: k = rp_pos++;
+;	src/link.c:219: k = rp_pos++;
 	mov	r7,_rp_pos
 	inc	_rp_pos
-;	src/link.c:233: len = rp_len();
+;	src/link.c:220: len = rp_len();
 	push	ar7
 	lcall	_rp_len
 	mov	r6,dpl
 	pop	ar7
-;	src/link.c:234: if (k == 1) return rp_crc_byte(len);
+;	src/link.c:221: if (k == 1) return rp_crc_byte(len);
 	cjne	r7,#0x01,00116$
 	mov	dpl,r6
 	lcall	_rp_crc_byte
@@ -1053,7 +1005,7 @@ _fw_reply_byte:
 	mov	dph,r4
 	ret
 00116$:
-;	src/link.c:235: if (k == 2) return rp_crc_byte(expected); /* the next SEQ this controller expects */
+;	src/link.c:222: if (k == 2) return rp_crc_byte(expected); /* the next SEQ this controller expects */
 	cjne	r7,#0x02,00118$
 	mov	dpl,_expected
 	lcall	_rp_crc_byte
@@ -1061,7 +1013,7 @@ _fw_reply_byte:
 	mov	dph,r4
 	ret
 00118$:
-;	src/link.c:236: if (k == 3) return rp_crc_byte(rp_type);
+;	src/link.c:223: if (k == 3) return rp_crc_byte(rp_type);
 	cjne	r7,#0x03,00120$
 	mov	dpl,_rp_type
 	lcall	_rp_crc_byte
@@ -1069,12 +1021,12 @@ _fw_reply_byte:
 	mov	dph,r4
 	ret
 00120$:
-;	src/link.c:237: k = (uint8_t)(k - 4);
+;	src/link.c:224: k = (uint8_t)(k - 4);
 	dec	r7
 	dec	r7
 	dec	r7
 	dec	r7
-;	src/link.c:238: if (k < len) return rp_crc_byte(payload_byte(k));
+;	src/link.c:225: if (k < len) return rp_crc_byte(payload_byte(k));
 	clr	c
 	mov	a,r7
 	subb	a,r6
@@ -1086,7 +1038,7 @@ _fw_reply_byte:
 	mov	dph,r4
 	ret
 00122$:
-;	src/link.c:239: if (k == len) return (uint8_t)(rp_crc >> 8);
+;	src/link.c:226: if (k == len) return (uint8_t)(rp_crc >> 8);
 	mov	a,r7
 	cjne	a,ar6,00124$
 	mov	r7,(_rp_crc + 1)
@@ -1095,39 +1047,39 @@ _fw_reply_byte:
 	mov	dph,r6
 	ret
 00124$:
-;	src/link.c:240: rp_pos = 0;
+;	src/link.c:227: rp_pos = 0;
 	mov	_rp_pos,#0x00
-;	src/link.c:241: return (uint8_t)rp_crc;
+;	src/link.c:228: return (uint8_t)rp_crc;
 	mov	r7,_rp_crc
 	mov	r6,#0x00
 	mov	dpl,r7
 	mov	dph,r6
-;	src/link.c:242: }
+;	src/link.c:229: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_report_room'
 ;------------------------------------------------------------
 ;free                      Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/link.c:244: void fw_report_room(void) {
+;	src/link.c:231: void fw_report_room(void) {
 ;	-----------------------------------------
 ;	 function fw_report_room
 ;	-----------------------------------------
 _fw_report_room:
-;	src/link.c:246: if (!session) return;
+;	src/link.c:233: if (!session) return;
 	mov	a,_session
 	jnz	00102$
 	ret
 00102$:
-;	src/link.c:247: free = fw_ring_free();
+;	src/link.c:234: free = fw_ring_free();
 	lcall	_fw_ring_free
 	mov	r7,dpl
-;	src/link.c:248: if ((uint16_t)free >= (uint16_t)reported + FW_MAX_DATA ||
+;	src/link.c:235: if ((uint16_t)free >= (uint16_t)reported + FW_MAX_DATA ||
 	mov	ar5,r7
 	mov	r6,#0x00
 	mov	r3,_reported
 	mov	r4,#0x00
-	mov	a,#0x13
+	mov	a,#0x21
 	add	a,r3
 	mov	r3,a
 	clr	a
@@ -1139,28 +1091,28 @@ _fw_report_room:
 	mov	a,r6
 	subb	a,r4
 	jnc	00103$
-;	src/link.c:249: (free >= FW_MAX_DATA && reported < FW_MAX_DATA))
-	cjne	r7,#0x13,00123$
+;	src/link.c:236: (free >= FW_MAX_DATA && reported < FW_MAX_DATA))
+	cjne	r7,#0x21,00123$
 00123$:
 	jc	00107$
-	mov	a,#0x100 - 0x13
+	mov	a,#0x100 - 0x21
 	add	a,_reported
 	jc	00107$
 00103$:
-;	src/link.c:250: fw_ack();
-;	src/link.c:251: }
+;	src/link.c:237: fw_ack();
+;	src/link.c:238: }
 	ljmp	_fw_ack
 00107$:
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_starved'
 ;------------------------------------------------------------
-;	src/link.c:253: void fw_starved(void) {
+;	src/link.c:240: void fw_starved(void) {
 ;	-----------------------------------------
 ;	 function fw_starved
 ;	-----------------------------------------
 _fw_starved:
-;	src/link.c:254: if (session && fw_ring_free() > reported) fw_ack();
+;	src/link.c:241: if (session && fw_ring_free() > reported) fw_ack();
 	mov	a,_session
 	jz	00104$
 	lcall	_fw_ring_free
@@ -1169,7 +1121,7 @@ _fw_starved:
 	mov	a,_reported
 	subb	a,r7
 	jnc	00104$
-;	src/link.c:255: }
+;	src/link.c:242: }
 	ljmp	_fw_ack
 00104$:
 	ret
@@ -1180,366 +1132,372 @@ _fw_starved:
 ;p                         Allocated to registers r7 
 ;i                         Allocated to registers r6 
 ;b                         Allocated to registers r5 
-;k                         Allocated to registers r4 
 ;------------------------------------------------------------
-;	src/link.c:262: static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
+;	src/link.c:251: static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
 ;	-----------------------------------------
 ;	 function check_ops
 ;	-----------------------------------------
 _check_ops:
 	mov	r7,dpl
-;	src/link.c:264: done_at = 0;
+;	src/link.c:253: done_at = 0;
 	mov	_done_at,#0x00
-;	src/link.c:265: for (i = 0; i < len; ++i) {
+;	src/link.c:254: for (i = 0; i < len; ++i) {
 	mov	r6,#0x00
-00151$:
+00136$:
 	clr	c
 	mov	a,r6
 	subb	a,_check_ops_PARM_2
-	jc	00273$
-	ljmp	00147$
-00273$:
-;	src/link.c:266: b = p[i];
+	jc	00233$
+	ljmp	00134$
+00233$:
+;	src/link.c:255: b = p[i];
 	mov	a,r6
 	add	a,r7
 	mov	r1,a
 	mov	ar5,@r1
-;	src/link.c:267: if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) {
-	mov	r4,_vs
-	cjne	r4,#0x02,00274$
-00274$:
-	jc	00106$
-	mov	a,r4
-	add	a,#0xff - 0x0a
-	jc	00106$
-;	src/link.c:270: vs.crc ^= (uint16_t)((uint16_t)b << 8);
-	mov	ar3,r5
-	mov	ar4,r3
-	mov	r3,#0x00
-	mov	a,(_vs + 0x0004)
-	xrl	ar3,a
-	mov	a,((_vs + 0x0004) + 1)
-	xrl	ar4,a
-	mov	((_vs + 0x0004) + 0),r3
-	mov	((_vs + 0x0004) + 1),r4
-;	src/link.c:271: for (k = 0; k < 8; ++k) {
-	mov	r4,#0x00
-00148$:
-;	src/link.c:272: if (vs.crc & 0x8000) vs.crc = (uint16_t)((uint16_t)(vs.crc << 1) ^ 0x8BB7U);
-	mov	a,((_vs + 0x0004) + 1)
-	jnb	acc.7,00102$
-	mov	a,(_vs + 0x0004)
-	add	a,(_vs + 0x0004)
-	mov	r2,a
-	mov	a,((_vs + 0x0004) + 1)
-	rlc	a
-	mov	r3,a
-	xrl	ar2,#0xb7
-	xrl	ar3,#0x8b
-	mov	((_vs + 0x0004) + 0),r2
-	mov	((_vs + 0x0004) + 1),r3
-	sjmp	00149$
-00102$:
-;	src/link.c:273: else vs.crc = (uint16_t)(vs.crc << 1);
-	mov	a,(_vs + 0x0004)
-	add	a,(_vs + 0x0004)
-	mov	r2,a
-	mov	a,((_vs + 0x0004) + 1)
-	rlc	a
-	mov	r3,a
-	mov	((_vs + 0x0004) + 0),r2
-	mov	((_vs + 0x0004) + 1),r3
-00149$:
-;	src/link.c:271: for (k = 0; k < 8; ++k) {
-	inc	r4
-	cjne	r4,#0x08,00278$
-00278$:
-	jc	00148$
-00106$:
-;	src/link.c:276: switch (vs.st) {
+;	src/link.c:256: switch (vs.st) {
 	mov	a,_vs
 	mov	r4,a
-	add	a,#0xff - 0x0c
-	jnc	00280$
-	ljmp	00144$
-00280$:
+	add	a,#0xff - 0x0a
+	jnc	00234$
+	ljmp	00131$
+00234$:
 	mov	a,r4
-	add	a,#(00281$-3-.)
+	add	a,#(00235$-3-.)
 	movc	a,@a+pc
 	mov	dpl,a
 	mov	a,r4
-	add	a,#(00282$-3-.)
+	add	a,#(00236$-3-.)
 	movc	a,@a+pc
 	mov	dph,a
 	clr	a
 	jmp	@a+dptr
-00281$:
-	.db	00108$
+00235$:
+	.db	00101$
+	.db	00112$
+	.db	00115$
+	.db	00118$
 	.db	00119$
+	.db	00120$
+	.db	00121$
 	.db	00122$
-	.db	00125$
-	.db	00126$
+	.db	00123$
 	.db	00127$
-	.db	00128$
-	.db	00129$
 	.db	00130$
-	.db	00136$
-	.db	00139$
-	.db	00140$
-	.db	00141$
-00282$:
-	.db	00108$>>8
+00236$:
+	.db	00101$>>8
+	.db	00112$>>8
+	.db	00115$>>8
+	.db	00118$>>8
 	.db	00119$>>8
+	.db	00120$>>8
+	.db	00121$>>8
 	.db	00122$>>8
-	.db	00125$>>8
-	.db	00126$>>8
+	.db	00123$>>8
 	.db	00127$>>8
-	.db	00128$>>8
-	.db	00129$>>8
 	.db	00130$>>8
-	.db	00136$>>8
-	.db	00139$>>8
-	.db	00140$>>8
-	.db	00141$>>8
-;	src/link.c:277: case VS_OP:
-00108$:
-;	src/link.c:278: switch (b) {
-	cjne	r5,#0x10,00283$
-	sjmp	00112$
-00283$:
-	cjne	r5,#0x11,00284$
-	sjmp	00111$
-00284$:
-	cjne	r5,#0x12,00285$
-	sjmp	00115$
-00285$:
-	cjne	r5,#0x13,00286$
-	sjmp	00111$
-00286$:
-	cjne	r5,#0x14,00287$
-	sjmp	00116$
-00287$:
-	cjne	r5,#0x40,00288$
-	sjmp	00111$
-00288$:
-	cjne	r5,#0x42,00289$
-	sjmp	00115$
-00289$:
-;	src/link.c:281: case OP_HOME: done_at = (uint8_t)(i + 1); continue;
-	cjne	r5,#0x43,00117$
-	sjmp	00115$
-00111$:
+;	src/link.c:257: case VS_OP:
+00101$:
+;	src/link.c:258: switch (b) {
+	cjne	r5,#0x10,00237$
+	sjmp	00105$
+00237$:
+	cjne	r5,#0x11,00238$
+	sjmp	00104$
+00238$:
+	cjne	r5,#0x12,00239$
+	sjmp	00108$
+00239$:
+	cjne	r5,#0x13,00240$
+	sjmp	00104$
+00240$:
+	cjne	r5,#0x14,00241$
+	sjmp	00109$
+00241$:
+	cjne	r5,#0x40,00242$
+	sjmp	00104$
+00242$:
+	cjne	r5,#0x42,00243$
+	sjmp	00108$
+00243$:
+;	src/link.c:261: case OP_HOME: done_at = (uint8_t)(i + 1); continue;
+	cjne	r5,#0x43,00110$
+	sjmp	00108$
+00104$:
 	mov	ar4,r6
 	inc	r4
 	mov	_done_at,r4
-	ljmp	00146$
-;	src/link.c:282: case OP_JOB_BEGIN: vs.n = 4; vs.st = VS_FIXED; continue;
-00112$:
+	ljmp	00133$
+;	src/link.c:262: case OP_JOB_BEGIN: vs.n = 4; vs.st = VS_FIXED; continue;
+00105$:
 	mov	(_vs + 0x0001),#0x04
 	mov	_vs,#0x01
-	ljmp	00146$
-;	src/link.c:285: case OP_SEEK_FEED: vs.n = 2; vs.st = VS_FIXED; continue;
-00115$:
+	ljmp	00133$
+;	src/link.c:265: case OP_SEEK_FEED: vs.n = 2; vs.st = VS_FIXED; continue;
+00108$:
 	mov	(_vs + 0x0001),#0x02
 	mov	_vs,#0x01
-	ljmp	00146$
-;	src/link.c:286: case OP_PASS:
-00116$:
-;	src/link.c:287: vs.crc = 0x4C7B; /* pass_crc_update(0xFFFF, OP_PASS), precomputed */
-	mov	((_vs + 0x0004) + 0),#0x7b
-	mov	((_vs + 0x0004) + 1),#0x4c
-;	src/link.c:288: vs.st = VS_FLAGS;
+	ljmp	00133$
+;	src/link.c:266: case OP_PASS: vs.st = VS_FLAGS; continue;
+00109$:
 	mov	_vs,#0x02
-;	src/link.c:289: continue;
-	ljmp	00146$
-;	src/link.c:290: default: return 1;
-00117$:
+	ljmp	00133$
+;	src/link.c:267: default: return 1;
+00110$:
 	mov	dpl,#0x01
 	ret
-;	src/link.c:292: case VS_FIXED:
-00119$:
-;	src/link.c:293: if (--vs.n == 0) {
+;	src/link.c:269: case VS_FIXED:
+00112$:
+;	src/link.c:270: if (--vs.n == 0) {
 	mov	a,(_vs + 0x0001)
 	dec	a
 	mov	r4,a
 	mov	(_vs + 0x0001),r4
-	jz	00291$
-	ljmp	00146$
-00291$:
-;	src/link.c:294: vs.st = VS_OP;
+	jz	00245$
+	ljmp	00133$
+00245$:
+;	src/link.c:271: vs.st = VS_OP;
 	mov	_vs,#0x00
-;	src/link.c:295: done_at = (uint8_t)(i + 1);
+;	src/link.c:272: done_at = (uint8_t)(i + 1);
 	mov	ar4,r6
 	inc	r4
 	mov	_done_at,r4
-;	src/link.c:297: continue;
-	ljmp	00146$
-;	src/link.c:298: case VS_FLAGS:
-00122$:
-;	src/link.c:299: if (b & (uint8_t)~PF_ALL) return 1;
+;	src/link.c:274: continue;
+	ljmp	00133$
+;	src/link.c:275: case VS_FLAGS:
+00115$:
+;	src/link.c:276: if (b & (uint8_t)~PF_ALL) return 1;
 	mov	a,r5
 	anl	a,#0xe0
-	jz	00124$
+	jz	00117$
 	mov	dpl,#0x01
 	ret
-00124$:
-;	src/link.c:300: vs.flags = b;
-;	src/link.c:301: vs.st = (b & PF_SKIP) ? VS_SKIP : VS_FEED;
+00117$:
+;	src/link.c:277: vs.flags = b;
+;	src/link.c:278: vs.st = (b & PF_SKIP) ? VS_SKIP : VS_FEED;
 	mov	a,r5
 	mov	(_vs + 0x0002),a
-	jnb	acc.4,00154$
+	jnb	acc.4,00139$
 	mov	r4,#0x03
-	sjmp	00155$
-00154$:
+	sjmp	00140$
+00139$:
 	mov	r4,#0x04
-00155$:
+00140$:
 	mov	_vs,r4
-;	src/link.c:302: continue;
-	ljmp	00146$
-;	src/link.c:303: case VS_SKIP: vs.hi = b; vs.st = VS_FEED; continue; /* skip: checked against n */
-00125$:
+;	src/link.c:279: continue;
+	ljmp	00133$
+;	src/link.c:280: case VS_SKIP: vs.hi = b; vs.st = VS_FEED; continue; /* skip: checked against n */
+00118$:
 	mov	(_vs + 0x0003),r5
 	mov	_vs,#0x04
-	ljmp	00146$
-;	src/link.c:304: case VS_FEED: vs.st = (b & 0x80) ? VS_FEED2 : VS_FIRST; continue;
-00126$:
+	ljmp	00133$
+;	src/link.c:281: case VS_FEED: vs.st = (b & 0x80) ? VS_FEED2 : VS_FIRST; continue;
+00119$:
 	mov	a,r5
-	jnb	acc.7,00156$
+	jnb	acc.7,00141$
 	mov	r4,#0x05
-	sjmp	00157$
-00156$:
+	sjmp	00142$
+00141$:
 	mov	r4,#0x06
-00157$:
+00142$:
 	mov	_vs,r4
-	ljmp	00146$
-;	src/link.c:305: case VS_FEED2: vs.st = VS_FIRST; continue;
-00127$:
+;	src/link.c:282: case VS_FEED2: vs.st = VS_FIRST; continue;
+	sjmp	00133$
+00120$:
 	mov	_vs,#0x06
-	ljmp	00146$
-;	src/link.c:306: case VS_FIRST: vs.st = (b & 0x80) ? VS_FIRST2 : VS_N; continue;
-00128$:
+;	src/link.c:283: case VS_FIRST: vs.st = (b & 0x80) ? VS_FIRST2 : VS_N; continue;
+	sjmp	00133$
+00121$:
 	mov	a,r5
-	jnb	acc.7,00158$
+	jnb	acc.7,00143$
 	mov	r4,#0x07
-	sjmp	00159$
-00158$:
+	sjmp	00144$
+00143$:
 	mov	r4,#0x08
-00159$:
+00144$:
 	mov	_vs,r4
-;	src/link.c:307: case VS_FIRST2: vs.st = VS_N; continue;
-	sjmp	00146$
-00129$:
+;	src/link.c:284: case VS_FIRST2: vs.st = VS_N; continue;
+	sjmp	00133$
+00122$:
 	mov	_vs,#0x08
-;	src/link.c:308: case VS_N:
-	sjmp	00146$
-00130$:
-;	src/link.c:309: if (b > PASS_MAX_ENTRIES) return 1;
-	mov	a,r5
-	add	a,#0xff - 0x0e
-	jnc	00132$
-	mov	dpl,#0x01
-	ret
-00132$:
-;	src/link.c:310: if ((vs.flags & PF_SKIP) && vs.hi > b) return 1;
+;	src/link.c:285: case VS_N:
+	sjmp	00133$
+00123$:
+;	src/link.c:286: if ((vs.flags & PF_SKIP) && vs.hi > b) return 1;
 	mov	a,(_vs + 0x0002)
-	jnb	acc.4,00134$
+	jnb	acc.4,00125$
 	clr	c
 	mov	a,r5
 	subb	a,(_vs + 0x0003)
-	jnc	00134$
+	jnc	00125$
 	mov	dpl,#0x01
 	ret
-00134$:
-;	src/link.c:311: vs.n = b;
-;	src/link.c:312: vs.st = b ? VS_ENTRY : VS_CHECK;
+00125$:
+;	src/link.c:287: vs.n = b;
+;	src/link.c:288: vs.st = b ? VS_ENTRY : VS_OP;
 	mov	a,r5
 	mov	(_vs + 0x0001),a
-	jz	00160$
-	mov	r4,#0x09
-	sjmp	00161$
-00160$:
-	mov	r4,#0x0b
-00161$:
-	mov	_vs,r4
-;	src/link.c:313: continue;
-;	src/link.c:314: case VS_ENTRY:
+	jz	00145$
+	mov	r3,#0x09
+	mov	r4,#0x00
 	sjmp	00146$
-00136$:
-;	src/link.c:315: if (b & E_EXT) {
+00145$:
+	mov	r3,#0x00
+	mov	r4,#0x00
+00146$:
+	mov	_vs,r3
+;	src/link.c:289: done_at = (uint8_t)(i + 1); /* the header: the feed may start */
+	mov	ar4,r6
+	inc	r4
+	mov	_done_at,r4
+;	src/link.c:290: continue;
+;	src/link.c:291: case VS_ENTRY:
+	sjmp	00133$
+00127$:
+;	src/link.c:292: if (b & E_EXT) {
 	mov	a,r5
-	jnb	acc.6,00139$
-;	src/link.c:316: vs.st = VS_ENTRY2;
+	jnb	acc.6,00130$
+;	src/link.c:293: vs.st = VS_ENTRY2;
 	mov	_vs,#0x0a
-;	src/link.c:317: continue;
-;	src/link.c:320: case VS_ENTRY2:
-	sjmp	00146$
-00139$:
-;	src/link.c:321: vs.st = --vs.n ? VS_ENTRY : VS_CHECK;
+;	src/link.c:294: continue;
+;	src/link.c:297: case VS_ENTRY2:
+	sjmp	00133$
+00130$:
+;	src/link.c:298: vs.st = --vs.n ? VS_ENTRY : VS_OP;
 	mov	a,(_vs + 0x0001)
 	dec	a
-	mov	r4,a
-	mov	(_vs + 0x0001),r4
-	jz	00162$
+	mov	r5,a
+	mov	(_vs + 0x0001),r5
+	jz	00147$
 	mov	r4,#0x09
-	sjmp	00163$
-00162$:
-	mov	r4,#0x0b
-00163$:
+	mov	r5,#0x00
+	sjmp	00148$
+00147$:
+	mov	r4,#0x00
+	mov	r5,#0x00
+00148$:
 	mov	_vs,r4
-;	src/link.c:322: continue;
-;	src/link.c:323: case VS_CHECK: vs.hi = b; vs.st = VS_CHECK2; continue;
-	sjmp	00146$
-00140$:
-	mov	(_vs + 0x0003),r5
-	mov	_vs,#0x0c
-;	src/link.c:324: case VS_CHECK2:
-	sjmp	00146$
-00141$:
-;	src/link.c:325: if ((uint16_t)(((uint16_t)vs.hi << 8) | b) != vs.crc) return 2;
-	mov	r3,(_vs + 0x0003)
-	mov	ar4,r3
-	clr	a
-	mov	r3,a
-	mov	r2,a
-	mov	a,r5
-	orl	ar3,a
-	mov	a,r2
-	orl	ar4,a
-	mov	a,r3
-	cjne	a,(_vs + 0x0004),00302$
-	mov	a,r4
-	cjne	a,((_vs + 0x0004) + 1),00302$
-	sjmp	00143$
-00302$:
-	mov	dpl,#0x02
-	ret
-00143$:
-;	src/link.c:326: vs.st = VS_OP;
-	mov	_vs,#0x00
-;	src/link.c:327: done_at = (uint8_t)(i + 1);
+;	src/link.c:299: done_at = (uint8_t)(i + 1);
 	mov	ar5,r6
 	inc	r5
 	mov	_done_at,r5
-;	src/link.c:328: continue;
-;	src/link.c:329: default: return 1;
-	sjmp	00146$
-00144$:
+;	src/link.c:300: continue;
+;	src/link.c:301: default: return 1;
+	sjmp	00133$
+00131$:
 	mov	dpl,#0x01
-;	src/link.c:330: }
+;	src/link.c:302: }
 	ret
-00146$:
-;	src/link.c:265: for (i = 0; i < len; ++i) {
+00133$:
+;	src/link.c:254: for (i = 0; i < len; ++i) {
 	inc	r6
-	ljmp	00151$
-00147$:
-;	src/link.c:332: return 0;
+	ljmp	00136$
+00134$:
+;	src/link.c:304: return 0;
 	mov	dpl,#0x00
-;	src/link.c:333: }
+;	src/link.c:305: }
+	ret
+;------------------------------------------------------------
+;Allocation info for local variables in function 'pass_crc_update'
+;------------------------------------------------------------
+;b                         Allocated with name '_pass_crc_update_PARM_2'
+;c                         Allocated to registers r4 r5 
+;------------------------------------------------------------
+;	src/link.c:314: uint16_t pass_crc_update(uint16_t c, uint8_t b) {
+;	-----------------------------------------
+;	 function pass_crc_update
+;	-----------------------------------------
+_pass_crc_update:
+	mov	r6,dpl
+	mov	r7,dph
+;	src/link.c:315: c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b >> 4))]);
+	mov	ar4,r6
+	mov	a,r7
+	swap	a
+	anl	a,#0xf0
+	xch	a,r4
+	swap	a
+	xch	a,r4
+	xrl	a,r4
+	xch	a,r4
+	anl	a,#0xf0
+	xch	a,r4
+	xrl	a,r4
+	mov	r5,a
+	mov	a,r7
+	swap	a
+	anl	a,#0x0f
+	mov	r6,a
+	mov	a,_pass_crc_update_PARM_2
+	swap	a
+	anl	a,#0x0f
+	xrl	a,r6
+	mov	b,#0x02
+	mul	ab
+	add	a,#_chk_nib
+	mov	dpl,a
+	mov	a,#(_chk_nib >> 8)
+	addc	a,b
+	mov	dph,a
+	clr	a
+	movc	a,@a+dptr
+	mov	r6,a
+	inc	dptr
+	clr	a
+	movc	a,@a+dptr
+	mov	r7,a
+	mov	a,r6
+	xrl	ar4,a
+	mov	a,r7
+	xrl	ar5,a
+;	src/link.c:316: c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b & 0x0F))]);
+	mov	ar6,r4
+	mov	a,r5
+	swap	a
+	anl	a,#0xf0
+	xch	a,r6
+	swap	a
+	xch	a,r6
+	xrl	a,r6
+	xch	a,r6
+	anl	a,#0xf0
+	xch	a,r6
+	xrl	a,r6
+	mov	r7,a
+	mov	a,r5
+	swap	a
+	anl	a,#0x0f
+	mov	r4,a
+	mov	a,_pass_crc_update_PARM_2
+	anl	a,#0x0f
+	xrl	a,r4
+	mov	b,#0x02
+	mul	ab
+	add	a,#_chk_nib
+	mov	dpl,a
+	mov	a,#(_chk_nib >> 8)
+	addc	a,b
+	mov	dph,a
+	clr	a
+	movc	a,@a+dptr
+	mov	r4,a
+	inc	dptr
+	clr	a
+	movc	a,@a+dptr
+	mov	r5,a
+	mov	a,r4
+	xrl	a,r6
+	mov	dpl,a
+	mov	a,r5
+	xrl	a,r7
+	mov	dph,a
+;	src/link.c:317: return c;
+;	src/link.c:318: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'accept'
 ;------------------------------------------------------------
-;	src/link.c:337: static void accept(void) { ++expected; }
+;	src/link.c:322: static void accept(void) { ++expected; }
 ;	-----------------------------------------
 ;	 function accept
 ;	-----------------------------------------
@@ -1554,13 +1512,13 @@ _accept:
 ;p                         Allocated to registers r1 
 ;n                         Allocated to registers r7 r6 
 ;------------------------------------------------------------
-;	src/link.c:339: static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
+;	src/link.c:324: static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
 ;	-----------------------------------------
 ;	 function on_hello
 ;	-----------------------------------------
 _on_hello:
 	mov	r1,dpl
-;	src/link.c:341: if (len != 3 || p[2] != FW_PROTOCOL) {
+;	src/link.c:326: if (len != 3 || p[2] != FW_PROTOCOL) {
 	mov	a,#0x03
 	cjne	a,_on_hello_PARM_2,00101$
 	mov	a,#0x02
@@ -1571,12 +1529,12 @@ _on_hello:
 	sjmp	00102$
 00161$:
 00101$:
-;	src/link.c:342: nak(NAK_BAD_PAYLOAD);
+;	src/link.c:327: nak(NAK_BAD_PAYLOAD);
 	mov	dpl,#0x04
-;	src/link.c:343: return;
+;	src/link.c:328: return;
 	ljmp	_nak
 00102$:
-;	src/link.c:345: n = (uint16_t)(((uint16_t)p[0] << 8) | p[1]);
+;	src/link.c:330: n = (uint16_t)(((uint16_t)p[0] << 8) | p[1]);
 	mov	ar7,@r1
 	mov	ar6,r7
 	mov	r7,#0x00
@@ -1587,7 +1545,7 @@ _on_hello:
 	orl	ar7,a
 	mov	a,r4
 	orl	ar6,a
-;	src/link.c:348: if (!session || n != nonce) {
+;	src/link.c:333: if (!session || n != nonce) {
 	mov	a,_session
 	jz	00116$
 	mov	a,r7
@@ -1597,16 +1555,16 @@ _on_hello:
 	sjmp	00117$
 00163$:
 00116$:
-;	src/link.c:351: fw_flush();
+;	src/link.c:336: fw_flush();
 	push	ar7
 	push	ar6
 	lcall	_fw_flush
 	pop	ar6
 	pop	ar7
-;	src/link.c:352: if (fw_flags & FL_JOB_ACTIVE) {
+;	src/link.c:337: if (fw_flags & FL_JOB_ACTIVE) {
 	mov	a,_fw_flags
 	jnb	acc.4,00112$
-;	src/link.c:353: if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
+;	src/link.c:338: if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
 	mov	a,#0x01
 	cjne	a,_fw_state,00165$
 	sjmp	00107$
@@ -1618,7 +1576,7 @@ _on_hello:
 	mov	a,#0x05
 	cjne	a,_fw_state,00112$
 00107$:
-;	src/link.c:354: if (exec_busy()) fw_pause_req = 1;
+;	src/link.c:339: if (exec_busy()) fw_pause_req = 1;
 	push	ar7
 	push	ar6
 	lcall	_exec_busy
@@ -1629,26 +1587,26 @@ _on_hello:
 	mov	_fw_pause_req,#0x01
 	sjmp	00112$
 00105$:
-;	src/link.c:355: else fw_state = ST_PAUSED;
+;	src/link.c:340: else fw_state = ST_PAUSED;
 	mov	_fw_state,#0x03
 00112$:
-;	src/link.c:358: session = 1;
+;	src/link.c:343: session = 1;
 	mov	_session,#0x01
-;	src/link.c:359: nonce = n;
+;	src/link.c:344: nonce = n;
 	mov	_nonce,r7
 	mov	(_nonce + 1),r6
-;	src/link.c:360: expected = (uint8_t)(seq + 1);
+;	src/link.c:345: expected = (uint8_t)(seq + 1);
 	mov	r7,_on_hello_PARM_3
 	inc	r7
 	mov	_expected,r7
-;	src/link.c:361: fw_faults &= (uint8_t) ~(F_POWER_ON | F_WARM_RESET);
+;	src/link.c:346: fw_faults &= (uint8_t) ~(F_POWER_ON | F_WARM_RESET);
 	anl	_fw_faults,#0xe7
-;	src/link.c:362: if (fw_state == ST_FAULT && fw_faults == 0)
+;	src/link.c:347: if (fw_state == ST_FAULT && fw_faults == 0)
 	mov	a,#0x04
 	cjne	a,_fw_state,00117$
 	mov	a,_fw_faults
 	jnz	00117$
-;	src/link.c:363: fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_PAUSED : ST_IDLE;
+;	src/link.c:348: fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_PAUSED : ST_IDLE;
 	mov	a,_fw_flags
 	jnb	acc.4,00121$
 	mov	r6,#0x03
@@ -1660,237 +1618,322 @@ _on_hello:
 00122$:
 	mov	_fw_state,r6
 00117$:
-;	src/link.c:365: rp_hello = 1;
+;	src/link.c:350: rp_hello = 1;
 ;	assignBit
 	setb	_rp_hello
-;	src/link.c:366: due();
-;	src/link.c:367: }
+;	src/link.c:351: due();
+;	src/link.c:352: }
 	ljmp	_due
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'on_data'
 ;------------------------------------------------------------
 ;len                       Allocated with name '_on_data_PARM_2'
-;frame                     Allocated to registers r7 
-;r                         Allocated to registers r5 
-;i                         Allocated to registers r5 
-;src                       Allocated to registers r6 
+;frame                     Allocated with name '_on_data_frame_65536_85'
+;i                         Allocated to registers r3 
+;c                         Allocated with name '_on_data_c_65536_86'
+;p                         Allocated to registers r4 
 ;------------------------------------------------------------
-;	src/link.c:369: static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
+;	src/link.c:354: static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
 ;	-----------------------------------------
 ;	 function on_data
 ;	-----------------------------------------
 _on_data:
-	mov	r7,dpl
-;	src/link.c:371: if (len == 0 || len > FW_MAX_DATA) {
+	mov	_on_data_frame_65536_85,dpl
+;	src/link.c:356: uint16_t c = 0xFFFF;
+	mov	_on_data_c_65536_86,#0xff
+	mov	(_on_data_c_65536_86 + 1),#0xff
+;	src/link.c:357: FW_IDATA uint8_t *p = frame + 3;
+	mov	a,#0x03
+	add	a,_on_data_frame_65536_85
+	mov	r4,a
+;	src/link.c:358: if (len < 3 || len > FW_MAX_DATA) {
+	mov	a,#0x100 - 0x03
+	add	a,_on_data_PARM_2
+	jnc	00101$
 	mov	a,_on_data_PARM_2
-	jz	00101$
-	mov	a,_on_data_PARM_2
-	add	a,#0xff - 0x13
+	add	a,#0xff - 0x21
 	jnc	00102$
 00101$:
-;	src/link.c:372: nak(NAK_BAD_PAYLOAD);
+;	src/link.c:359: nak(NAK_BAD_PAYLOAD);
 	mov	dpl,#0x04
-;	src/link.c:373: return;
+;	src/link.c:360: return;
 	ljmp	_nak
 00102$:
-;	src/link.c:375: if (len > fw_ring_free()) {
-	push	ar7
-	lcall	_fw_ring_free
-	mov	r6,dpl
-	pop	ar7
+;	src/link.c:362: len = (uint8_t)(len - 2); /* the ops; the check follows them */
+	mov	r3,_on_data_PARM_2
+	dec	r3
+	dec	r3
+	mov	_on_data_PARM_2,r3
+;	src/link.c:363: for (i = 0; i < len; ++i) c = pass_crc_update(c, p[i]);
+	mov	r3,#0x00
+00117$:
 	clr	c
-	mov	a,r6
+	mov	a,r3
 	subb	a,_on_data_PARM_2
-	jnc	00105$
-;	src/link.c:376: nak(NAK_NO_SPACE);
-	mov	dpl,#0x02
-;	src/link.c:377: return;
-	ljmp	_nak
-00105$:
-;	src/link.c:379: r = check_ops(frame + 3, len);
-	mov	a,#0x03
-	add	a,r7
-	mov	dpl,a
-	mov	_check_ops_PARM_2,_on_data_PARM_2
-	push	ar7
-	lcall	_check_ops
-	mov	r6,dpl
-	pop	ar7
-;	src/link.c:380: if (r) {
+	jnc	00104$
+	mov	a,r3
+	add	a,r4
+	mov	r1,a
+	mov	_pass_crc_update_PARM_2,@r1
+	mov	dpl,_on_data_c_65536_86
+	mov	dph,(_on_data_c_65536_86 + 1)
+	push	ar4
+	push	ar3
+	lcall	_pass_crc_update
+	mov	_on_data_c_65536_86,dpl
+	mov	(_on_data_c_65536_86 + 1),dph
+	pop	ar3
+	pop	ar4
+	inc	r3
+	sjmp	00117$
+00104$:
+;	src/link.c:364: if (c != (uint16_t)(((uint16_t)p[len] << 8) | p[len + 1])) {
+	mov	a,_on_data_PARM_2
+	add	a,r4
+	mov	r1,a
+	mov	ar3,@r1
+	mov	ar2,r3
+	mov	r3,#0x00
+	mov	r6,_on_data_PARM_2
+	mov	r7,#0x00
+	inc	r6
+	cjne	r6,#0x00,00169$
+	inc	r7
+00169$:
 	mov	a,r6
-	mov	r5,a
-	jz	00111$
-;	src/link.c:385: fw_flush();
-	push	ar5
+	add	a,r4
+	mov	r1,a
+	mov	ar7,@r1
+	mov	r6,#0x00
+	mov	a,r7
+	orl	ar3,a
+	mov	a,r6
+	orl	ar2,a
+	mov	a,r3
+;	src/link.c:368: return;
+	cjne	a,_on_data_c_65536_86,00122$
+	mov	a,r2
+	cjne	a,(_on_data_c_65536_86 + 1),00122$
+;	src/link.c:370: if (len > fw_ring_free()) {
+	push	ar4
+	lcall	_fw_ring_free
+	mov	r7,dpl
+	pop	ar4
+	clr	c
+	mov	a,r7
+	subb	a,_on_data_PARM_2
+	jnc	00108$
+;	src/link.c:371: nak(NAK_NO_SPACE);
+	mov	dpl,#0x02
+;	src/link.c:372: return;
+	ljmp	_nak
+00108$:
+;	src/link.c:374: if (check_ops(p, len)) {
+	mov	_check_ops_PARM_2,_on_data_PARM_2
+	mov	dpl,r4
+	push	ar4
+	lcall	_check_ops
+	mov	a,dpl
+	pop	ar4
+	jz	00112$
+;	src/link.c:378: fw_flush();
 	lcall	_fw_flush
-;	src/link.c:386: fw_faults |= F_STREAM;
+;	src/link.c:379: fw_faults |= F_STREAM;
 	orl	_fw_faults,#0x80
-;	src/link.c:387: fw_state = ST_FAULT;
+;	src/link.c:380: fw_state = ST_FAULT;
 	mov	_fw_state,#0x04
-;	src/link.c:388: if (exec_busy()) exec_abort();
+;	src/link.c:381: if (exec_busy()) exec_abort();
 	lcall	_exec_busy
 	mov	a,dpl
-	pop	ar5
-	jz	00107$
-	push	ar5
+	jz	00110$
 	lcall	_exec_abort
-	pop	ar5
-00107$:
-;	src/link.c:389: if (r == 1) {
-	cjne	r5,#0x01,00109$
-;	src/link.c:390: nak(NAK_BAD_PAYLOAD);
+00110$:
+;	src/link.c:382: nak(NAK_BAD_PAYLOAD);
 	mov	dpl,#0x04
-;	src/link.c:391: return;
+;	src/link.c:383: return;
 	ljmp	_nak
-00109$:
-;	src/link.c:393: accept();
-	lcall	_accept
-;	src/link.c:394: fw_ack();
-;	src/link.c:395: return;
-	ljmp	_fw_ack
-00111$:
-;	src/link.c:397: accept();
-	push	ar7
-	lcall	_accept
-	pop	ar7
-;	src/link.c:401: FW_IDATA uint8_t *src = frame + 3;
-	mov	a,#0x03
-	add	a,r7
-	mov	r6,a
-;	src/link.c:402: for (i = 0; i < len; ++i) frame[i] = src[i];
-	mov	r5,#0x00
-00116$:
-	clr	c
-	mov	a,r5
-	subb	a,_on_data_PARM_2
-	jnc	00112$
-	mov	a,r5
-	add	a,r7
-	mov	r1,a
-	mov	a,r5
-	add	a,r6
-	mov	r0,a
-	mov	ar4,@r0
-	mov	@r1,ar4
-	inc	r5
-	sjmp	00116$
 00112$:
-;	src/link.c:404: if (done_at) fw_ops_done = (uint8_t)(fw_ops_end + done_at);
+;	src/link.c:385: accept();
+	push	ar4
+	lcall	_accept
+	pop	ar4
+;	src/link.c:387: for (i = 0; i < len; ++i) frame[i] = p[i];
+	mov	r7,#0x00
+00120$:
+	clr	c
+	mov	a,r7
+	subb	a,_on_data_PARM_2
+	jnc	00113$
+	mov	a,r7
+	add	a,_on_data_frame_65536_85
+	mov	r1,a
+	mov	a,r7
+	add	a,r4
+	mov	r0,a
+	mov	ar6,@r0
+	mov	@r1,ar6
+	inc	r7
+	sjmp	00120$
+00113$:
+;	src/link.c:388: if (done_at) fw_ops_done = (uint8_t)(fw_ops_end + done_at);
 	mov	a,_done_at
-	jz	00114$
+	jz	00115$
 	mov	a,_done_at
 	add	a,_fw_ops_end
 	mov	_fw_ops_done,a
-00114$:
-;	src/link.c:405: fw_ops_end = (uint8_t)(fw_ops_end + len);
+00115$:
+;	src/link.c:389: fw_ops_end = (uint8_t)(fw_ops_end + len);
 	mov	a,_on_data_PARM_2
 	add	a,_fw_ops_end
 	mov	_fw_ops_end,a
-;	src/link.c:406: fw_ack();
-;	src/link.c:407: }
+;	src/link.c:390: fw_ack();
+;	src/link.c:391: }
 	ljmp	_fw_ack
+00122$:
+	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'on_configure'
 ;------------------------------------------------------------
 ;len                       Allocated with name '_on_configure_PARM_2'
-;p                         Allocated to registers r7 
-;v                         Allocated with name '_on_configure_v_65536_99'
-;i                         Allocated to registers r6 
+;p                         Allocated with name '_on_configure_p_65536_93'
+;sloc0                     Allocated with name '_on_configure_sloc0_1_0'
+;sloc1                     Allocated with name '_on_configure_sloc1_1_0'
+;sloc2                     Allocated with name '_on_configure_sloc2_1_0'
 ;------------------------------------------------------------
-;	src/link.c:409: static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
+;	src/link.c:394: static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
 ;	-----------------------------------------
 ;	 function on_configure
 ;	-----------------------------------------
 _on_configure:
-	mov	r7,dpl
-;	src/link.c:412: if (len != 10) return 0;
+	mov	_on_configure_p_65536_93,dpl
+;	src/link.c:397: if (len != 10 || BE16(p, 0) == 0 || BE16(p, 2) < 64 || BE16(p, 4) == 0) return 0;
 	mov	a,#0x0a
-	cjne	a,_on_configure_PARM_2,00133$
-	sjmp	00113$
-00133$:
-	mov	dpl,#0x00
-	ret
-;	src/link.c:413: for (i = 0; i < 5; ++i) v[i] = (uint16_t)(((uint16_t)p[2 * i] << 8) | p[2 * i + 1]);
-00113$:
-	mov	r6,#0x00
-00108$:
-	mov	a,r6
-	add	a,r6
-	add	a,#_on_configure_v_65536_99
-	mov	r1,a
-	mov	ar4,r6
+	cjne	a,_on_configure_PARM_2,00120$
+	sjmp	00121$
+00120$:
+	ljmp	00101$
+00121$:
+	mov	r0,_on_configure_p_65536_93
+	mov	ar7,@r0
+	mov	ar6,r7
+	mov	r7,#0x00
+	mov	a,_on_configure_p_65536_93
+	inc	a
+	mov	r0,a
+	mov	ar5,@r0
+	mov	ar4,r5
 	mov	r5,#0x00
 	mov	a,r4
-	add	a,r4
-	mov	r4,a
+	orl	a,r7
+	mov	r2,a
 	mov	a,r5
-	rlc	a
-	mov	r5,a
-	mov	a,r4
-	add	a,r7
+	orl	a,r6
+	mov	r3,a
+	orl	a,r2
+	jz	00101$
+	push	ar4
+	push	ar5
+	mov	a,#0x02
+	add	a,_on_configure_p_65536_93
 	mov	r0,a
 	mov	ar3,@r0
 	mov	ar2,r3
 	mov	r3,#0x00
-	inc	r4
-	cjne	r4,#0x00,00134$
-	inc	r5
-00134$:
-	mov	a,r4
-	add	a,r7
+	mov	a,#0x03
+	add	a,_on_configure_p_65536_93
 	mov	r0,a
 	mov	ar5,@r0
-	mov	r4,#0x00
-	mov	a,r5
-	orl	ar3,a
-	mov	a,r4
-	orl	ar2,a
-	mov	@r1,ar3
-	inc	r1
-	mov	@r1,ar2
-	dec	r1
-	inc	r6
-	cjne	r6,#0x05,00135$
-00135$:
-	jc	00108$
-;	src/link.c:416: if (v[0] == 0 || v[1] < 64 || v[2] == 0) return 0;
-	mov	r6,(_on_configure_v_65536_99 + 0)
-	mov	r7,(_on_configure_v_65536_99 + 1)
-	mov	a,r6
-	orl	a,r7
-	jz	00104$
-	mov	r4,(_on_configure_v_65536_99 + 0x0002)
-	mov	r5,((_on_configure_v_65536_99 + 0x0002) + 1)
+	mov	_on_configure_sloc0_1_0,r5
+;	1-genFromRTrack replaced	mov	(_on_configure_sloc0_1_0 + 1),#0x00
+	mov	(_on_configure_sloc0_1_0 + 1),r3
+	mov	a,_on_configure_sloc0_1_0
+	orl	a,r3
+	mov	r4,a
+	mov	a,(_on_configure_sloc0_1_0 + 1)
+	orl	a,r2
+	mov	r5,a
 	clr	c
 	mov	a,r4
 	subb	a,#0x40
 	mov	a,r5
 	subb	a,#0x00
-	jc	00104$
-	mov	a,(_on_configure_v_65536_99 + 0x0004)
-	orl	a,((_on_configure_v_65536_99 + 0x0004) + 1)
-	jnz	00105$
-00104$:
+	pop	ar5
+	pop	ar4
+	jc	00101$
+	push	ar3
+	push	ar2
+	mov	a,#0x04
+	add	a,_on_configure_p_65536_93
+	mov	r1,a
+	mov	ar3,@r1
+	mov	r2,#0x00
+	mov	(_on_configure_sloc1_1_0 + 1),r3
+;	1-genFromRTrack replaced	mov	_on_configure_sloc1_1_0,#0x00
+	mov	_on_configure_sloc1_1_0,r2
+	mov	a,#0x05
+	add	a,_on_configure_p_65536_93
+	mov	r1,a
+	mov	ar3,@r1
+	mov	_on_configure_sloc2_1_0,r3
+;	1-genFromRTrack replaced	mov	(_on_configure_sloc2_1_0 + 1),#0x00
+	mov	(_on_configure_sloc2_1_0 + 1),r2
+	mov	a,_on_configure_sloc2_1_0
+	orl	a,_on_configure_sloc1_1_0
+	mov	r2,a
+	mov	a,(_on_configure_sloc2_1_0 + 1)
+	orl	a,(_on_configure_sloc1_1_0 + 1)
+	orl	a,r2
+	pop	ar2
+	pop	ar3
+	jnz	00102$
+00101$:
 	mov	dpl,#0x00
 	ret
-00105$:
-;	src/link.c:417: cfg_travel = v[0];
-	mov	_cfg_travel,r6
-	mov	(_cfg_travel + 1),r7
-;	src/link.c:418: cfg_home_iv = v[1];
-	mov	_cfg_home_iv,((_on_configure_v_65536_99 + 0x0002) + 0)
-	mov	(_cfg_home_iv + 1),((_on_configure_v_65536_99 + 0x0002) + 1)
-;	src/link.c:419: cfg_hammer = v[2];
-	mov	_cfg_hammer,((_on_configure_v_65536_99 + 0x0004) + 0)
-	mov	(_cfg_hammer + 1),((_on_configure_v_65536_99 + 0x0004) + 1)
-;	src/link.c:420: cfg_settle = v[3];
-	mov	_cfg_settle,((_on_configure_v_65536_99 + 0x0006) + 0)
-	mov	(_cfg_settle + 1),((_on_configure_v_65536_99 + 0x0006) + 1)
-;	src/link.c:422: fw_flags |= FL_CONFIGURED;
+00102$:
+;	src/link.c:398: cfg_travel = BE16(p, 0);
+	mov	a,r4
+	orl	a,r7
+	mov	_cfg_travel,a
+	mov	a,r5
+	orl	a,r6
+	mov	(_cfg_travel + 1),a
+;	src/link.c:399: cfg_home_iv = BE16(p, 2);
+	mov	a,_on_configure_sloc0_1_0
+	orl	a,r3
+	mov	_cfg_home_iv,a
+	mov	a,(_on_configure_sloc0_1_0 + 1)
+	orl	a,r2
+	mov	(_cfg_home_iv + 1),a
+;	src/link.c:400: cfg_hammer = BE16(p, 4);
+	mov	a,_on_configure_sloc2_1_0
+	orl	a,_on_configure_sloc1_1_0
+	mov	_cfg_hammer,a
+	mov	a,(_on_configure_sloc2_1_0 + 1)
+	orl	a,(_on_configure_sloc1_1_0 + 1)
+	mov	(_cfg_hammer + 1),a
+;	src/link.c:401: cfg_settle = BE16(p, 6);
+	mov	a,#0x06
+	add	a,_on_configure_p_65536_93
+	mov	r1,a
+	mov	ar7,@r1
+	mov	ar6,r7
+	mov	r7,#0x00
+	mov	a,#0x07
+	add	a,_on_configure_p_65536_93
+	mov	r1,a
+	mov	ar5,@r1
+	mov	r4,#0x00
+	mov	a,r5
+	orl	a,r7
+	mov	_cfg_settle,a
+	mov	a,r4
+	orl	a,r6
+	mov	(_cfg_settle + 1),a
+;	src/link.c:403: fw_flags |= FL_CONFIGURED;
 	orl	_fw_flags,#0x01
-;	src/link.c:423: return 1;
+;	src/link.c:404: return 1;
 	mov	dpl,#0x01
-;	src/link.c:424: }
+;	src/link.c:405: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fw_frame'
@@ -1902,13 +1945,13 @@ _on_configure:
 ;diff                      Allocated to registers r6 
 ;p                         Allocated to registers r4 
 ;------------------------------------------------------------
-;	src/link.c:426: void fw_frame(FW_IDATA uint8_t *f) {
+;	src/link.c:407: void fw_frame(FW_IDATA uint8_t *f) {
 ;	-----------------------------------------
 ;	 function fw_frame
 ;	-----------------------------------------
 _fw_frame:
 	mov	r1,dpl
-;	src/link.c:427: uint8_t len = f[0], seq = f[1], type = f[2], diff;
+;	src/link.c:408: uint8_t len = f[0], seq = f[1], type = f[2], diff;
 	mov	ar7,@r1
 	mov	a,r1
 	inc	a
@@ -1918,57 +1961,57 @@ _fw_frame:
 	add	a,r1
 	mov	r0,a
 	mov	ar5,@r0
-;	src/link.c:428: const FW_IDATA uint8_t *p = f + 3;
+;	src/link.c:409: const FW_IDATA uint8_t *p = f + 3;
 	mov	a,#0x03
 	add	a,r1
 	mov	r4,a
-;	src/link.c:429: if (type == T_HELLO) {
+;	src/link.c:410: if (type == T_HELLO) {
 	cjne	r5,#0x01,00102$
-;	src/link.c:430: on_hello(p, len, seq);
+;	src/link.c:411: on_hello(p, len, seq);
 	mov	_on_hello_PARM_2,r7
 	mov	_on_hello_PARM_3,r6
 	mov	dpl,r4
-;	src/link.c:431: return;
+;	src/link.c:412: return;
 	ljmp	_on_hello
 00102$:
-;	src/link.c:433: if (!session) {
+;	src/link.c:414: if (!session) {
 	mov	a,_session
 	jnz	00104$
-;	src/link.c:434: nak(NAK_NO_SESSION);
+;	src/link.c:415: nak(NAK_NO_SESSION);
 	mov	dpl,#0x03
-;	src/link.c:435: return;
+;	src/link.c:416: return;
 	ljmp	_nak
 00104$:
-;	src/link.c:437: diff = (uint8_t)(seq - expected);
+;	src/link.c:418: diff = (uint8_t)(seq - expected);
 	mov	a,r6
 	clr	c
 	subb	a,_expected
 	mov	r6,a
-;	src/link.c:438: if (diff >= 128) {
+;	src/link.c:419: if (diff >= 128) {
 	cjne	r6,#0x80,00232$
 00232$:
 	jc	00106$
-;	src/link.c:440: fw_ack();
-;	src/link.c:441: return;
+;	src/link.c:421: fw_ack();
+;	src/link.c:422: return;
 	ljmp	_fw_ack
 00106$:
-;	src/link.c:443: if (diff != 0) {
+;	src/link.c:424: if (diff != 0) {
 	mov	a,r6
 	jz	00108$
-;	src/link.c:444: nak(NAK_OUT_OF_ORDER);
+;	src/link.c:425: nak(NAK_OUT_OF_ORDER);
 	mov	dpl,#0x01
-;	src/link.c:445: return;
+;	src/link.c:426: return;
 	ljmp	_nak
 00108$:
-;	src/link.c:447: if (type == T_DATA) {
+;	src/link.c:428: if (type == T_DATA) {
 	cjne	r5,#0x03,00110$
-;	src/link.c:448: on_data(f, len);
+;	src/link.c:429: on_data(f, len);
 	mov	_on_data_PARM_2,r7
 	mov	dpl,r1
-;	src/link.c:449: return;
+;	src/link.c:430: return;
 	ljmp	_on_data
 00110$:
-;	src/link.c:451: if (type < T_CONFIGURE || type > T_KEEPALIVE) {
+;	src/link.c:432: if (type < T_CONFIGURE || type > T_KEEPALIVE) {
 	cjne	r5,#0x02,00237$
 00237$:
 	jc	00111$
@@ -1976,43 +2019,43 @@ _fw_frame:
 	add	a,#0xff - 0x08
 	jnc	00112$
 00111$:
-;	src/link.c:452: nak(NAK_UNKNOWN_TYPE);
+;	src/link.c:433: nak(NAK_UNKNOWN_TYPE);
 	mov	dpl,#0x05
-;	src/link.c:453: return;
+;	src/link.c:434: return;
 	ljmp	_nak
 00112$:
-;	src/link.c:455: if (type == T_CONFIGURE) {
+;	src/link.c:436: if (type == T_CONFIGURE) {
 	cjne	r5,#0x02,00117$
-;	src/link.c:456: if (!on_configure(p, len)) {
+;	src/link.c:437: if (!on_configure(p, len)) {
 	mov	_on_configure_PARM_2,r7
 	mov	dpl,r4
 	lcall	_on_configure
 	mov	a,dpl
 	jnz	00115$
-;	src/link.c:457: nak(NAK_BAD_PAYLOAD);
+;	src/link.c:438: nak(NAK_BAD_PAYLOAD);
 	mov	dpl,#0x04
-;	src/link.c:458: return;
+;	src/link.c:439: return;
 	ljmp	_nak
 00115$:
-;	src/link.c:460: accept();
+;	src/link.c:441: accept();
 	lcall	_accept
-;	src/link.c:461: fw_ack();
-;	src/link.c:462: return;
+;	src/link.c:442: fw_ack();
+;	src/link.c:443: return;
 	ljmp	_fw_ack
 00117$:
-;	src/link.c:464: if (len != 0) {
+;	src/link.c:445: if (len != 0) {
 	mov	a,r7
 	jz	00119$
-;	src/link.c:465: nak(NAK_BAD_PAYLOAD);
+;	src/link.c:446: nak(NAK_BAD_PAYLOAD);
 	mov	dpl,#0x04
-;	src/link.c:466: return;
+;	src/link.c:447: return;
 	ljmp	_nak
 00119$:
-;	src/link.c:468: accept();
+;	src/link.c:449: accept();
 	push	ar5
 	lcall	_accept
 	pop	ar5
-;	src/link.c:469: switch (type) {
+;	src/link.c:450: switch (type) {
 	cjne	r5,#0x04,00244$
 	sjmp	00120$
 00244$:
@@ -2026,9 +2069,9 @@ _fw_frame:
 	ljmp	00138$
 00247$:
 	ljmp	00140$
-;	src/link.c:470: case T_PAUSE:
+;	src/link.c:451: case T_PAUSE:
 00120$:
-;	src/link.c:471: if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
+;	src/link.c:452: if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
 	mov	a,#0x01
 	cjne	a,_fw_state,00248$
 	sjmp	00124$
@@ -2044,36 +2087,36 @@ _fw_frame:
 	ljmp	00140$
 00251$:
 00124$:
-;	src/link.c:472: if (exec_busy()) fw_pause_req = 1;
+;	src/link.c:453: if (exec_busy()) fw_pause_req = 1;
 	lcall	_exec_busy
 	mov	a,dpl
 	jz	00122$
 	mov	_fw_pause_req,#0x01
 	sjmp	00140$
 00122$:
-;	src/link.c:473: else fw_state = ST_PAUSED;
+;	src/link.c:454: else fw_state = ST_PAUSED;
 	mov	_fw_state,#0x03
-;	src/link.c:475: break;
-;	src/link.c:476: case T_RESUME:
+;	src/link.c:456: break;
+;	src/link.c:457: case T_RESUME:
 	sjmp	00140$
 00128$:
-;	src/link.c:477: fw_pause_req = 0;
+;	src/link.c:458: fw_pause_req = 0;
 	mov	_fw_pause_req,#0x00
-;	src/link.c:478: fw_faults &= (uint8_t) ~(F_HOST_TIMEOUT | F_LIMIT | F_HAMMER | F_STREAM | F_UNDERRUN);
+;	src/link.c:459: fw_faults &= (uint8_t) ~(F_HOST_TIMEOUT | F_LIMIT | F_HAMMER | F_STREAM | F_UNDERRUN);
 	anl	_fw_faults,#0x19
-;	src/link.c:479: if (fw_paper_present()) fw_faults &= (uint8_t)~F_PAPER_OUT;
+;	src/link.c:460: if (fw_paper_present()) fw_faults &= (uint8_t)~F_PAPER_OUT;
 	lcall	_fw_paper_present
 	mov	a,dpl
 	jz	00130$
 	anl	_fw_faults,#0xfe
 00130$:
-;	src/link.c:480: if ((fw_faults & (F_PAPER_OUT | F_POWER_ON | F_WARM_RESET)) == 0 &&
+;	src/link.c:461: if ((fw_faults & (F_PAPER_OUT | F_POWER_ON | F_WARM_RESET)) == 0 &&
 	mov	a,_fw_faults
 	anl	a,#0x19
 	jz	00255$
 	sjmp	00140$
 00255$:
-;	src/link.c:481: (fw_state == ST_PAUSED || fw_state == ST_FAULT))
+;	src/link.c:462: (fw_state == ST_PAUSED || fw_state == ST_FAULT))
 	mov	a,#0x03
 	cjne	a,_fw_state,00256$
 	sjmp	00131$
@@ -2081,7 +2124,7 @@ _fw_frame:
 	mov	a,#0x04
 	cjne	a,_fw_state,00140$
 00131$:
-;	src/link.c:482: fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_RUNNING : ST_IDLE;
+;	src/link.c:463: fw_state = (fw_flags & FL_JOB_ACTIVE) ? ST_RUNNING : ST_IDLE;
 	mov	a,_fw_flags
 	jnb	acc.4,00143$
 	mov	r6,#0x01
@@ -2092,44 +2135,61 @@ _fw_frame:
 	mov	r7,#0x00
 00144$:
 	mov	_fw_state,r6
-;	src/link.c:483: break;
-;	src/link.c:484: case T_ABORT:
+;	src/link.c:464: break;
+;	src/link.c:465: case T_ABORT:
 	sjmp	00140$
 00135$:
-;	src/link.c:485: exec_abort();
+;	src/link.c:466: exec_abort();
 	lcall	_exec_abort
-;	src/link.c:486: fw_flush();
+;	src/link.c:467: fw_flush();
 	lcall	_fw_flush
-;	src/link.c:487: fw_flags &= (uint8_t) ~(FL_JOB_ACTIVE | FL_PASS_ACTIVE);
+;	src/link.c:468: fw_flags &= (uint8_t) ~(FL_JOB_ACTIVE | FL_PASS_ACTIVE);
 	anl	_fw_flags,#0xeb
-;	src/link.c:488: fw_pause_req = 0;
+;	src/link.c:469: fw_pause_req = 0;
 	mov	_fw_pause_req,#0x00
-;	src/link.c:489: if ((fw_faults & (F_POWER_ON | F_WARM_RESET)) == 0) {
+;	src/link.c:470: if ((fw_faults & (F_POWER_ON | F_WARM_RESET)) == 0) {
 	mov	a,_fw_faults
 	anl	a,#0x18
 	jz	00261$
 	sjmp	00140$
 00261$:
-;	src/link.c:490: fw_faults = 0;
+;	src/link.c:471: fw_faults = 0;
 	mov	_fw_faults,#0x00
-;	src/link.c:491: fw_state = ST_IDLE;
+;	src/link.c:472: fw_state = ST_IDLE;
 	mov	_fw_state,#0x00
-;	src/link.c:493: break;
-;	src/link.c:494: case T_STATUS:
+;	src/link.c:474: break;
+;	src/link.c:475: case T_STATUS:
 	sjmp	00140$
 00138$:
-;	src/link.c:495: rp_status = 1;
+;	src/link.c:476: rp_status = 1;
 ;	assignBit
 	setb	_rp_status
-;	src/link.c:496: due();
-;	src/link.c:497: return;
-;	src/link.c:499: }
+;	src/link.c:477: due();
+;	src/link.c:478: return;
+;	src/link.c:480: }
 	ljmp	_due
 00140$:
-;	src/link.c:500: fw_ack();
-;	src/link.c:501: }
+;	src/link.c:481: fw_ack();
+;	src/link.c:482: }
 	ljmp	_fw_ack
 	.area CSEG    (CODE)
 	.area CONST   (CODE)
+_chk_nib:
+	.byte #0x00, #0x00	; 0
+	.byte #0xb7, #0x8b	; 35767
+	.byte #0xd9, #0x9c	; 40153
+	.byte #0x6e, #0x17	; 5998
+	.byte #0x05, #0xb2	; 45573
+	.byte #0xb2, #0x39	; 14770
+	.byte #0xdc, #0x2e	; 11996
+	.byte #0x6b, #0xa5	; 42347
+	.byte #0xbd, #0xef	; 61373
+	.byte #0x0a, #0x64	; 25610
+	.byte #0x64, #0x73	; 29540
+	.byte #0xd3, #0xf8	; 63699
+	.byte #0xb8, #0x5d	; 23992
+	.byte #0x0f, #0xd6	; 54799
+	.byte #0x61, #0xc1	; 49505
+	.byte #0xd6, #0x4a	; 19158
 	.area XINIT   (CODE)
 	.area CABS    (ABS,CODE)

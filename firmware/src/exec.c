@@ -19,7 +19,7 @@ enum {
     X_MOVE,     /* pass: carriage move to the next strike under way */
     X_SETTLE,   /* pass: at rest before the hammer */
     X_DWELL,    /* pass: hammer down */
-    X_NEXT      /* pass: the strike is done; next entry or end */
+    X_NEXT      /* pass: at rest, ready for the next entry once it is in the ring */
 };
 static uint8_t xs;
 static uint8_t p_flags, p_left; /* pass flags, entries not yet struck */
@@ -27,6 +27,7 @@ static uint16_t p_first;        /* grid units to the first strike */
 static __bit c_neg;             /* carriage's last direction (backlash) */
 static __bit f_neg;
 static __bit ham_ccv;
+static __bit p_is_first; /* the next entry is the pass's first (its move is the header's) */
 
 uint8_t exec_busy(void) { return xs != X_FETCH || !mv_done; }
 
@@ -84,7 +85,8 @@ static int16_t svar(void) {
 }
 
 /* Starts a pass record at the head: reads its header, consumes it, and
- * starts the feed. The whole record is in the ring and its check verified. */
+ * starts the feed. The header is whole in the ring; its entries follow as
+ * they arrive (each strike starts once its entry is in). */
 static void pass_begin(void) {
     int16_t feed;
     vi = 1;
@@ -127,7 +129,6 @@ static void strike_move(uint8_t first) {
 }
 
 static void pass_end(void) {
-    fw_ops_head += PASS_CHECK;
     fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
     ++fw_pass_index;
     fw_executed = fw_pass_index;
@@ -285,7 +286,8 @@ void exec_poll(void) {
                 pass_end();
                 return;
             }
-            strike_move(1);
+            p_is_first = 1;
+            xs = X_NEXT;
             return;
         case X_MOVE:
             if (fw_carriage < 0 || (uint16_t)fw_carriage > cfg_travel) {
@@ -323,18 +325,27 @@ void exec_poll(void) {
                 pass_end();
                 return;
             }
+            p_is_first = 0;
+            xs = X_NEXT;
             if (fw_pause_req) {
+                /* A safe point: at rest between two strikes. */
                 fw_pause_req = 0;
                 fw_state = ST_PAUSED;
-                xs = X_NEXT;
                 fw_ack();
-                return;
             }
-            strike_move(0);
             return;
         case X_NEXT:
             if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
-            strike_move(0);
+            if (fw_ops_head == fw_ops_done) {
+                /* The next strike's entry has not arrived: wait at rest. */
+                if (fw_state != ST_WAITING) {
+                    fw_state = ST_WAITING;
+                    fw_starved();
+                }
+                return;
+            }
+            if (fw_state == ST_WAITING) fw_state = ST_RUNNING;
+            strike_move(p_is_first);
             return;
         default: return;
     }

@@ -34,12 +34,4 @@ uint8_t exec_busy(void);
 #define E_EXT 0x40
 #define E_DIST 0x3F
 
-/* Header bytes at most (op, flags, skip, feed 2, first 2, n) and the check. */
-#define PASS_MAX_HEADER 8
-#define PASS_CHECK 2
-/* Most entries a pass may carry: the whole record must fit in the ring, since
- * it is verified before its first strike. Longer rows are sent as two passes,
- * the second without feed. */
-#define PASS_MAX_ENTRIES ((FW_RING_BYTES - PASS_MAX_HEADER - PASS_CHECK) / 2)
-
 #endif

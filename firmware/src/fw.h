@@ -34,15 +34,16 @@
  * what the 89C52's 256 bytes leave once registers, variables and the stack are
  * placed; tools/check-size.py proves the stack keeps its 24 bytes. */
 #ifndef FW_BUF_CAP
-#define FW_BUF_CAP 120
+#define FW_BUF_CAP 64
 #endif
 /* Room kept beyond the window so a control frame always fits, even when the
  * host has filled every byte of the ring it was offered. */
 #define FW_SLACK 17
 #define FW_RING_BYTES (FW_BUF_CAP - FW_SLACK)
-/* Largest DATA payload accepted: two fit the ring, one executing while the
- * next arrives. */
-#define FW_MAX_DATA ((FW_RING_BYTES / 2) < 80 ? (FW_RING_BYTES / 2) : 80)
+/* Largest DATA payload accepted (ops + the 2-byte check): about two thirds of
+ * the ring, so the next frame fits while the ring still holds more than the
+ * executor uses up during its transmission (PROTOCOL-v3.md, "Window"). */
+#define FW_MAX_DATA ((FW_RING_BYTES * 2 / 3 + 2) < 80 ? (FW_RING_BYTES * 2 / 3 + 2) : 80)
 #define FW_WINDOW_FRAMES 4
 
 /* Frame types (host -> controller below 0x80). */

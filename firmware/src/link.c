@@ -38,26 +38,13 @@ enum {
     VS_FIRST2,
     VS_N,
     VS_ENTRY,
-    VS_ENTRY2,
-    VS_CHECK,
-    VS_CHECK2
+    VS_ENTRY2
 };
 struct vstate {
     uint8_t st, n, flags, hi; /* n: bytes left of a fixed op, or entries left */
-    uint16_t crc;
 };
 static struct vstate vs;
 static uint8_t done_at; /* payload offset just past the last op completed in it */
-
-uint16_t pass_crc_update(uint16_t c, uint8_t b) {
-    uint8_t i;
-    c ^= (uint16_t)((uint16_t)b << 8);
-    for (i = 0; i < 8; ++i) {
-        if (c & 0x8000) c = (uint16_t)((uint16_t)(c << 1) ^ 0x8BB7U);
-        else c = (uint16_t)(c << 1);
-    }
-    return c;
-}
 
 uint8_t fw_ring_free(void) {
     uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
@@ -256,23 +243,16 @@ void fw_starved(void) {
 
 /* --- the job-stream check */
 
-/* Runs the check over one payload. Returns 0 if every byte fits the grammar,
- * 1 for a malformed stream, 2 when a pass check fails (the stream is
- * corrupt). Sets done_at. */
+/* Runs the job-stream grammar over one payload's ops. Returns 0 if every
+ * byte fits, 1 for a malformed stream. Sets done_at: the payload offset just
+ * past the last thing the executor may start, a whole op, or a pass header,
+ * or one whole strike entry of a pass (passes stream: a strike starts when its
+ * entry is in the ring). */
 static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
     uint8_t i, b;
     done_at = 0;
     for (i = 0; i < len; ++i) {
         b = p[i];
-        if (vs.st >= VS_FLAGS && vs.st <= VS_ENTRY2) {
-            /* pass_crc_update, inline: the stack has no level to spare */
-            uint8_t k;
-            vs.crc ^= (uint16_t)((uint16_t)b << 8);
-            for (k = 0; k < 8; ++k) {
-                if (vs.crc & 0x8000) vs.crc = (uint16_t)((uint16_t)(vs.crc << 1) ^ 0x8BB7U);
-                else vs.crc = (uint16_t)(vs.crc << 1);
-            }
-        }
         switch (vs.st) {
             case VS_OP:
                 switch (b) {
@@ -283,10 +263,7 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
                     case OP_SHEET_BEGIN:
                     case OP_SEEK_CARRIAGE:
                     case OP_SEEK_FEED: vs.n = 2; vs.st = VS_FIXED; continue;
-                    case OP_PASS:
-                        vs.crc = 0x4C7B; /* pass_crc_update(0xFFFF, OP_PASS), precomputed */
-                        vs.st = VS_FLAGS;
-                        continue;
+                    case OP_PASS: vs.st = VS_FLAGS; continue;
                     default: return 1;
                 }
             case VS_FIXED:
@@ -306,10 +283,10 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
             case VS_FIRST: vs.st = (b & 0x80) ? VS_FIRST2 : VS_N; continue;
             case VS_FIRST2: vs.st = VS_N; continue;
             case VS_N:
-                if (b > PASS_MAX_ENTRIES) return 1;
                 if ((vs.flags & PF_SKIP) && vs.hi > b) return 1;
                 vs.n = b;
-                vs.st = b ? VS_ENTRY : VS_CHECK;
+                vs.st = b ? VS_ENTRY : VS_OP;
+                done_at = (uint8_t)(i + 1); /* the header: the feed may start */
                 continue;
             case VS_ENTRY:
                 if (b & E_EXT) {
@@ -318,18 +295,26 @@ static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
                 }
                 /* fall through */
             case VS_ENTRY2:
-                vs.st = --vs.n ? VS_ENTRY : VS_CHECK;
-                continue;
-            case VS_CHECK: vs.hi = b; vs.st = VS_CHECK2; continue;
-            case VS_CHECK2:
-                if ((uint16_t)(((uint16_t)vs.hi << 8) | b) != vs.crc) return 2;
-                vs.st = VS_OP;
+                vs.st = --vs.n ? VS_ENTRY : VS_OP;
                 done_at = (uint8_t)(i + 1);
                 continue;
             default: return 1;
         }
     }
     return 0;
+}
+
+/* The DATA check (PROTOCOL-v3.md): CRC-16 with poly 0x8BB7 over the ops,
+ * nibble table. A polynomial other than the frame's, so an error pattern the
+ * frame CRC misses is caught here: together about a 32-bit check. */
+static FW_CODE uint16_t chk_nib[16] = {
+    0x0000, 0x8BB7, 0x9CD9, 0x176E, 0xB205, 0x39B2, 0x2EDC, 0xA56B,
+    0xEFBD, 0x640A, 0x7364, 0xF8D3, 0x5DB8, 0xD60F, 0xC161, 0x4AD6
+};
+uint16_t pass_crc_update(uint16_t c, uint8_t b) {
+    c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b >> 4))]);
+    c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b & 0x0F))]);
+    return c;
 }
 
 /* --- frames */
@@ -367,58 +352,54 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
 }
 
 static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
-    uint8_t r;
-    if (len == 0 || len > FW_MAX_DATA) {
+    uint8_t i;
+    uint16_t c = 0xFFFF;
+    FW_IDATA uint8_t *p = frame + 3;
+    if (len < 3 || len > FW_MAX_DATA) {
         nak(NAK_BAD_PAYLOAD);
+        return;
+    }
+    len = (uint8_t)(len - 2); /* the ops; the check follows them */
+    for (i = 0; i < len; ++i) c = pass_crc_update(c, p[i]);
+    if (c != (uint16_t)(((uint16_t)p[len] << 8) | p[len + 1])) {
+        /* The frame CRC passed but the DATA check did not: an error the frame
+         * CRC missed. Dropped like a bad frame (its SEQ cannot be trusted);
+         * the host sends it again. Never executed. */
         return;
     }
     if (len > fw_ring_free()) {
         nak(NAK_NO_SPACE);
         return;
     }
-    r = check_ops(frame + 3, len);
-    if (r) {
-        /* A malformed op (a host bug) or a pass whose check fails (an error
-         * the frame CRC missed): nothing of it may run. The ring is dropped
-         * and the host restarts from the progress it is told. A malformed
-         * frame is refused; a failed check is acknowledged with the fault. */
+    if (check_ops(p, len)) {
+        /* A malformed op: a host bug, and the ops before it may end
+         * mid-record. The ring is dropped with a fault; the host restarts
+         * from the progress it is told. */
         fw_flush();
         fw_faults |= F_STREAM;
         fw_state = ST_FAULT;
         if (exec_busy()) exec_abort();
-        if (r == 1) {
-            nak(NAK_BAD_PAYLOAD);
-            return;
-        }
-        accept();
-        fw_ack();
+        nak(NAK_BAD_PAYLOAD);
         return;
     }
     accept();
-    /* The payload already lies at the ring's end, behind its 3 header bytes. */
-    {
-        uint8_t i;
-        FW_IDATA uint8_t *src = frame + 3;
-        for (i = 0; i < len; ++i) frame[i] = src[i];
-    }
+    /* The ops already lie at the ring's end, behind the 3 header bytes. */
+    for (i = 0; i < len; ++i) frame[i] = p[i];
     if (done_at) fw_ops_done = (uint8_t)(fw_ops_end + done_at);
     fw_ops_end = (uint8_t)(fw_ops_end + len);
     fw_ack();
 }
 
+#define BE16(p, i) ((uint16_t)(((uint16_t)(p)[i] << 8) | (p)[(i) + 1]))
 static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
-    uint16_t v[5];
-    uint8_t i;
-    if (len != 10) return 0;
-    for (i = 0; i < 5; ++i) v[i] = (uint16_t)(((uint16_t)p[2 * i] << 8) | p[2 * i + 1]);
     /* A homing interval below what the step interrupt can keep up with, or a
      * hammer pulse of zero, would silently misbehave: refuse it. */
-    if (v[0] == 0 || v[1] < 64 || v[2] == 0) return 0;
-    cfg_travel = v[0];
-    cfg_home_iv = v[1];
-    cfg_hammer = v[2];
-    cfg_settle = v[3];
-    /* v[4], the keep-alive, is accepted but not enforced yet (README, "Not done"). */
+    if (len != 10 || BE16(p, 0) == 0 || BE16(p, 2) < 64 || BE16(p, 4) == 0) return 0;
+    cfg_travel = BE16(p, 0);
+    cfg_home_iv = BE16(p, 2);
+    cfg_hammer = BE16(p, 4);
+    cfg_settle = BE16(p, 6);
+    /* p[8..9], the keep-alive, is accepted but not enforced yet (README, "Not done"). */
     fw_flags |= FL_CONFIGURED;
     return 1;
 }

@@ -51,9 +51,9 @@ uint8_t fw_paper_present(void);
 /* Platform: the generated ramp table's identity (HELLO_REPLY). */
 extern FW_CODE uint8_t fw_table_id[4];
 
-/* Pass check (PROTOCOL-v3.md): CRC-16 with poly 0x8BB7, init 0xFFFF; a
- * polynomial other than the frame's, so an error the frame CRC misses is not
- * missed by this one for the same algebraic reason. */
+/* The DATA check (PROTOCOL-v3.md): CRC-16 with poly 0x8BB7, init 0xFFFF,
+ * over a DATA payload's ops; a polynomial other than the frame's, so an error
+ * the frame CRC misses is not missed by this one for the same reason. */
 uint16_t pass_crc_update(uint16_t c, uint8_t b);
 
 #endif

@@ -25,7 +25,16 @@ def crc16(data, crc=0xFFFF, poly=0x1021):
     return crc
 
 
+def data_check(ops):
+    """The DATA payload's check: CRC-16, poly 0x8BB7, over the ops."""
+    c = crc16(ops, poly=0x8BB7)
+    return bytes([c >> 8, c & 0xFF])
+
+
 def frame(seq, typ, payload=b""):
+    """A frame; a DATA payload gets its check appended."""
+    if typ == T_DATA:
+        payload = bytes(payload) + data_check(payload)
     body = bytes([len(payload), seq & 0xFF, typ]) + bytes(payload)
     c = crc16(body)
     return bytes([SYNC]) + body + bytes([c >> 8, c & 0xFF])
@@ -70,7 +79,7 @@ def home():
 def pass_record(feed_units, first_units, entries, sweep_neg=False, first_neg=False,
                 back=False, no_feed=False, skip=None):
     """entries: [(concave: bool, distance_units)], the first entry's distance
-    is ignored (the move to it is first_units)."""
+    is ignored (the move to it is first_units). Up to 255 entries."""
     flags = (1 if back else 0) | (2 if no_feed else 0) | (4 if sweep_neg else 0) | \
         (8 if first_neg else 0) | (0x10 if skip is not None else 0)
     out = bytearray([0x14, flags])
@@ -86,8 +95,7 @@ def pass_record(feed_units, first_units, entries, sweep_neg=False, first_neg=Fal
             out += bytes([h | 0x40 | (d >> 8), d & 0xFF])
         else:
             raise ValueError(f"strike distance {d} units out of range")
-    c = crc16(out, poly=0x8BB7)
-    return bytes(out + bytes([c >> 8, c & 0xFF]))
+    return bytes(out)
 
 
 class Reply:
@@ -181,9 +189,10 @@ class Link:
     def configure(self, travel, home_iv, hammer, settle, keepalive=0):
         return self.request(T_CONFIGURE, struct.pack(">HHHHH", travel, home_iv, hammer, settle, keepalive))
 
-    def send_stream(self, stream, max_data, wait_free=True, timeout=120.0):
-        """Sends the job stream in DATA frames of at most max_data bytes, one
-        frame in flight, each sent once the ring has room for it."""
+    def send_stream(self, stream, max_payload, wait_free=True, timeout=120.0):
+        """Sends the job stream in DATA frames (ops + 2-byte check, at most
+        max_payload), one frame in flight, each once the ring has room."""
+        max_data = max_payload - 2
         free = None
         pos = 0
         deadline = time.monotonic() + timeout
