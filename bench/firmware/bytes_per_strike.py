@@ -8,12 +8,13 @@ which the firmware never waits for data.
 
 Encodes every pass of the plan as v3 pass records (tools/fwhost.py, the same
 encoder the emulator tests use; split into records the firmware's ring can
-check whole), cuts the stream into DATA frames of the firmware's largest
-payload, and counts the line bytes. Then it runs the firmware's timing (table
-moves from build-emu/ramp.json, settle, hammer) against a link at a given
-baud: a pass record starts only when all of it is in the ring, and its bytes
-free as its strikes are made. The controller "waits" whenever it could start
-the next pass and the record is not whole yet.
+in one record each), cuts the stream into DATA frames of the firmware's
+largest payload, and counts the line bytes. Then it runs the firmware's timing
+(table moves from build-emu/ramp.json, settle, hammer) against a link at a
+given baud: a pass's feed starts once its header is in the ring, each strike
+once its entry is, and bytes free as they are executed. The controller
+"waits" whenever it is ready for the next header or entry and it has not
+arrived. The host sends a frame when the ring has room for a full one.
 """
 import argparse
 import json
@@ -28,12 +29,13 @@ import fwhost  # noqa: E402
 RAMP = json.loads((ROOT / "firmware" / "build-emu" / "ramp.json").read_text())
 PROFILE = json.loads((ROOT / "resources" / "profiles" / "default.json").read_text())
 CYCLE = 12 / 11.0592e6
-RING = 39          # HELLO_REPLY of the default build (BUF_CAP 56)
-MAX_DATA = 19
-MAX_ENTRIES = (RING - 10) // 2
+RING = 47          # HELLO_REPLY of the default build (BUF_CAP 64)
+MAX_PAYLOAD = 33   # ops + the 2-byte DATA check
+MAX_DATA = MAX_PAYLOAD - 2
+MAX_ENTRIES = 255
 SETTLE = 7373      # 8 ms, the auto-tuner's usual settle on the default machine (docs/motion.md)
 HAMMER = 3686      # 4 ms dwell
-OVERHEAD = 6       # frame bytes besides the payload
+OVERHEAD = 8       # frame bytes besides the ops: SYNC LEN SEQ TYPE, CRC, DATA check
 
 
 def move_cycles(tab, n):
@@ -99,57 +101,62 @@ def encode(plan, sheet_filter=None):
 
 
 def simulate(records, baud):
-    """Seconds the controller waited for a whole record, and the job's length.
-    The host sends frames of the stream back to back whenever the ring has
-    room for them (ACKs taken as instant); a record starts when it is whole
-    and the previous one is done; its bytes free as it runs."""
+    """Seconds the controller waited (after the first pass header arrived),
+    the job's length, frames and bytes sent."""
     byte_s = 10 / baud
-    ends = []
-    acc = 0
-    for r in records:
-        acc += r[0]
-        ends.append(acc)
-    total = acc
-    frees = []   # (time, bytes) freed by records already started
-    frames_sent = []
+    units = []  # (stream end offset, bytes, cycles to execute, freed when done?)
+    off = 0
+    for size, header, sizes, times, feed in records:
+        off += header
+        units.append((off, header, feed))
+        for b, c in zip(sizes, times):
+            off += b
+            units.append((off, b, c))
+    total = off
+    frees = []   # (time, bytes)
     sent = 0
     line_t = 0.0
-    arrive = []
+    arrived_to = 0       # stream bytes whole in the ring
+    arrival = []         # (end offset, time)
+    frames = 0
     t = 0.0
     waited = 0.0
-    for i, (size, header, sizes, times, feed) in enumerate(records):
-        while len(arrive) <= i:
-            # The next frame carries what fits: at most MAX_DATA bytes, at most
-            # the room the ring has (the host knows it from the ACKs).
+    first = True
+    for end, nbytes, cycles in units:
+        while arrived_to < end:
+            chunk = min(MAX_DATA, total - sent)
             frees.sort()
             t_send = line_t
             freed = sum(b for ft, b in frees if ft <= t_send)
-            if sent - freed >= RING:
+            if sent - freed + chunk > RING:
                 for ft, b in frees:
                     if ft <= t_send:
                         continue
                     freed += b
-                    if sent - freed < RING:
+                    if sent - freed + chunk <= RING:
                         t_send = ft
                         break
                 else:
-                    raise RuntimeError("the ring never frees")
-            chunk = min(MAX_DATA, total - sent, RING - (sent - freed))
-            frames_sent.append(chunk)
+                    # No full frame fits before the controller frees more,
+                    # and it cannot go on without these bytes: send what fits.
+                    chunk = RING - (sent - freed)
+                    if chunk <= 0:
+                        raise RuntimeError("deadlock: ring full of unexecutable bytes")
             line_t = t_send + (chunk + OVERHEAD) * byte_s
             sent += chunk
-            while len(arrive) < len(ends) and ends[len(arrive)] <= sent:
-                arrive.append(line_t)
-        start = max(t, arrive[i])
-        waited += start - t
-        t = start
-        frees.append((t, header))
-        t += feed * CYCLE
-        for b, c in zip(sizes, times):
-            t += c * CYCLE
-            frees.append((t, b))
-        frees.append((t, 2))
-    return waited, t, len(frames_sent), sum(frames_sent)
+            frames += 1
+            arrived_to = sent
+            arrival.append((sent, line_t))
+        ready = next(at for e, at in arrival if e >= end)
+        if first:
+            t = max(t, ready)
+            first = False
+        elif ready > t:
+            waited += ready - t
+            t = ready
+        t += cycles * CYCLE
+        frees.append((t, nbytes))
+    return waited, t, frames, sent
 
 
 def main():
@@ -161,14 +168,14 @@ def main():
     records, other, strikes = encode(plan, a.sheet)
     stream = sum(r[0] for r in records) + other
     frames = math.ceil(stream / MAX_DATA)
-    line = stream + frames * OVERHEAD
+    line = stream + frames * OVERHEAD  # full frames
     print(f"{strikes} strikes, {len(records)} pass records, {stream} stream bytes, {frames} frames, "
           f"{line} line bytes: {line / strikes:.2f} line bytes per strike "
           f"({stream / strikes:.2f} stream bytes)")
     for baud in (1200, 2400, 4800, 9600):
         w, t, nf, nb = simulate(records, baud)
         line = nb + nf * OVERHEAD + other
-        print(f"{baud:6d} baud: waited {w:.3f} s of {t:.1f} s; {nf} frames as sent (cut to the ring's room): "
+        print(f"{baud:6d} baud: waited {w:.3f} s of {t:.1f} s; {nf} frames as sent: "
               f"{line / strikes:.2f} line bytes per strike")
     lo, hi = 100, 9600
     if simulate(records, hi)[0] > 0:

@@ -165,7 +165,7 @@ def run_job(tmp):
     # the whole move equals the table's sum but for the two edges' latency.
     # Each edge comes 7 (fast path) or 19 (slow path) cycles after its timer
     # event, plus up to 3 for the instruction the interrupt waits for; a phase
-    # change at full speed can hold one edge back further (README, "Timing").
+    # change at full speed can hold one edge back further (firmware/PROTOCOL-v3.md, "Timing").
     check(abs(total) <= 16, f"no drift over the move ({total:+.1f} cycles)")
     check(close >= 0.98 * len(dev), f"98 % of step intervals within 4 cycles ({close} of {len(dev)})")
     check(worst <= 48, f"every step interval within 48 cycles of the table (worst {worst:.1f})")
