@@ -5,6 +5,7 @@ job-stream encoding of PROTOCOL-v3.md, and a VCD reader for the pins. Used by
 tests/firmware/emu_test.py and bench/firmware. (The real host is tactus-cli;
 this is the firmware's own test harness, kept small and independent of it.)"""
 import os
+import random
 import select
 import struct
 import termios
@@ -113,7 +114,13 @@ class Reply:
 
 
 class Link:
-    def __init__(self, path):
+    """noise: probability that a byte on the line (either way) has a bit
+    flipped, for the noisy-line tests (seeded: reproducible)."""
+
+    def __init__(self, path, noise=0.0, seed=1):
+        self.noise = noise
+        self.rng = random.Random(seed)
+        self.corrupted = 0
         self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
         tty.setraw(self.fd)
         attrs = termios.tcgetattr(self.fd)
@@ -126,9 +133,19 @@ class Link:
     def close(self):
         os.close(self.fd)
 
+    def _noisy(self, data):
+        if not self.noise:
+            return data
+        out = bytearray(data)
+        for i in range(len(out)):
+            if self.rng.random() < self.noise:
+                out[i] ^= 1 << self.rng.randrange(8)
+                self.corrupted += 1
+        return bytes(out)
+
     def write(self, data):
         self.sent_bytes += len(data)
-        os.write(self.fd, data)
+        os.write(self.fd, self._noisy(data))
 
     def read_reply(self, timeout):
         end = time.monotonic() + timeout
@@ -141,7 +158,7 @@ class Link:
                 return None
             rd, _, _ = select.select([self.fd], [], [], left)
             if rd:
-                self.buf += os.read(self.fd, 256)
+                self.buf += self._noisy(os.read(self.fd, 256))
 
     def _parse(self):
         while self.buf:
@@ -183,11 +200,25 @@ class Link:
                 return r
         raise TimeoutError(f"no reply to frame type {typ} seq {s}")
 
+    def reliable(self, typ, payload=b"", tries=40, seq=None):
+        """request(), re-sent on silence or NAK out-of-order/no-space (the
+        same SEQ: the controller acknowledges a duplicate, never runs it)."""
+        for _ in range(tries):
+            try:
+                r = self.request(typ, payload, timeout=0.8, seq=seq)
+            except TimeoutError:
+                continue
+            if r.type == T_NAK and r.payload[0] in (1, 2):
+                time.sleep(0.1)
+                continue
+            return r
+        raise TimeoutError(f"frame type {typ} not acknowledged after {tries} tries")
+
     def hello(self, nonce=0x1234):
-        return self.request(T_HELLO, struct.pack(">HB", nonce, 3), seq=0)
+        return self.reliable(T_HELLO, struct.pack(">HB", nonce, 3), seq=0)
 
     def configure(self, travel, home_iv, hammer, settle, keepalive=0):
-        return self.request(T_CONFIGURE, struct.pack(">HHHHH", travel, home_iv, hammer, settle, keepalive))
+        return self.reliable(T_CONFIGURE, struct.pack(">HHHHH", travel, home_iv, hammer, settle, keepalive))
 
     def send_stream(self, stream, max_payload, wait_free=True, timeout=120.0):
         """Sends the job stream in DATA frames (ops + 2-byte check, at most
@@ -202,14 +233,14 @@ class Link:
             if free is not None and free < len(chunk):
                 r = self.read_reply(0.5)
                 if r is None:
-                    r = self.request(T_KEEPALIVE)
+                    r = self.reliable(T_KEEPALIVE)
                 if r.type in (T_ACK, T_NAK):
                     free = r.ack["free"]
                     last = r
                 if time.monotonic() > deadline:
                     raise TimeoutError("the ring never had room")
                 continue
-            r = self.request(T_DATA, chunk)
+            r = self.reliable(T_DATA, chunk)
             if r.type == T_NAK:
                 raise RuntimeError(f"NAK {r.payload[0]} for DATA at {pos}: {r}")
             free = r.ack["free"]
@@ -224,7 +255,7 @@ class Link:
         while time.monotonic() < end:
             r = self.read_reply(0.5)
             if r is None:
-                r = self.request(T_KEEPALIVE)
+                r = self.reliable(T_KEEPALIVE)
             if r.type in (T_ACK, T_NAK) and pred(r.ack):
                 return r.ack
         raise TimeoutError("state not reached")

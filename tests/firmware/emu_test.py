@@ -10,7 +10,9 @@ Checks: every hammer edge at the carriage and feed step the job implies
 (counted from the step and direction pins, backlash included); every
 carriage step interval equal to the ramp table's (firmware/PROTOCOL-v3.md,
 "Moves"), within the interrupt-latency jitter; the controller's counts
-(executed passes, state) as ACKs report them; paper out reported as a fault.
+(executed passes, state) as ACKs report them; paper out reported as a fault;
+the same job with bit flips at 1e-2 per byte both ways (the host re-sends on
+silence): every strike still exact; the stack never full.
 """
 import json
 import os
@@ -41,7 +43,7 @@ def check(cond, what):
 
 
 class Emulator:
-    def __init__(self, tmp, vcd=None, paper_out=False):
+    def __init__(self, tmp, vcd=None, paper_out=False, noise=0.0):
         args = [str(ROOT / "firmware" / "tools" / "run-s51.sh"), str(FW), "--dir", str(tmp)]
         if vcd:
             args += ["--vcd", str(vcd)]
@@ -52,7 +54,7 @@ class Emulator:
         if len(line) != 2 or line[0] != "PTY":
             raise RuntimeError(f"run-s51.sh did not start: {line}")
         self.pty = line[1]
-        self.link = fwhost.Link(self.pty)
+        self.link = fwhost.Link(self.pty, noise=noise)
 
     def stop(self):
         self.link.close()
@@ -113,9 +115,9 @@ def table_interval(k, n):
     return tab[min(k, n + 2 - k, r + 1) - 1]
 
 
-def run_job(tmp):
+def run_job(tmp, noise=0.0):
     vcd = tmp / "pins.vcd"
-    emu = Emulator(tmp, vcd=vcd)
+    emu = Emulator(tmp, vcd=vcd, noise=noise)
     try:
         hr = emu.link.hello()
         check(hr.payload[0] == 3, "HELLO_REPLY reports protocol 3")
@@ -128,6 +130,12 @@ def run_job(tmp):
             dict(feed=1, first=3, first_neg=True, sweep_neg=True,
                  entries=[(True, 0), (False, 10), (True, 0), (False, 24)]),
         ]
+        if noise:
+            # More frames for the noise to hit; rows that stay inside the
+            # carriage's travel (the first pair moves it 297 units right).
+            back = dict(feed=1, first=250, first_neg=True, sweep_neg=True,
+                        entries=[(False, 0), (True, 10), (False, 14)])
+            passes = passes + [back] + passes + [back]
         stream = fwhost.job_begin(7) + fwhost.sheet_begin(1) + fwhost.home()
         for p in passes:
             stream += fwhost.pass_record(p["feed"], p["first"], p["entries"], sweep_neg=p["sweep_neg"],
@@ -135,12 +143,15 @@ def run_job(tmp):
         stream += fwhost.sheet_end() + fwhost.job_end()
         t0 = time.monotonic()
         emu.link.send_stream(stream, max_data)
-        ack = emu.link.wait_state(lambda a: a["executed"] == 2 and a["state"] == 0, timeout=120)
+        ack = emu.link.wait_state(lambda a: a["executed"] == len(passes) and a["state"] == 0, timeout=120)
         wall = time.monotonic() - t0
         check(ack["faults"] == 0 and ack["job"] == 7, f"job 7 completes without faults: {ack}")
-        st = emu.link.request(fwhost.T_STATUS)
+        st = emu.link.reliable(fwhost.T_STATUS)
         stack = st.payload[24]
-        print(f"job done in {wall:.1f} s wall; {len(stream)} stream bytes; stack high-water {stack} bytes")
+        print(f"job done in {wall:.1f} s wall; {len(stream)} stream bytes; stack high-water {stack} bytes; "
+              f"{emu.link.corrupted} bytes corrupted on the line")
+        if noise:
+            check(emu.link.corrupted > 0, "the noisy run corrupted some bytes")
         check(stack < STACK_BYTES, f"the stack never filled ({stack} of {STACK_BYTES} bytes used)")
     finally:
         emu.stop()
@@ -193,8 +204,11 @@ def main():
         d = Path(d)
         (d / "job").mkdir()
         (d / "paper").mkdir()
+        (d / "noisy").mkdir()
         run_job(d / "job")
         run_paper_out(d / "paper")
+        # Bit flips at 1e-2 per byte, both ways: every strike still exact.
+        run_job(d / "noisy", noise=1e-2)
     if failures:
         print(f"{len(failures)} check(s) failed")
         sys.exit(1)
