@@ -32,6 +32,9 @@ static __bit p_is_first; /* the next entry is the pass's first (its move is the 
 uint8_t exec_busy(void) { return xs != X_FETCH || !mv_done; }
 
 void exec_abort(void) {
+    /* A move cut short leaves the counter at its target, not where the steps
+     * got to: the position is no longer known until the next HOME. */
+    if (!mv_done) fw_flags &= (uint8_t)~FL_HOMED;
     motion_stop();
     HAM_CVX = 0;
     HAM_CCV = 0;
