@@ -405,69 +405,73 @@ _exec_busy:
 ;	 function exec_abort
 ;	-----------------------------------------
 _exec_abort:
-;	src/exec.c:35: motion_stop();
+;	src/exec.c:37: if (!mv_done) fw_flags &= (uint8_t)~FL_HOMED;
+	jb	_mv_done,00102$
+	anl	_fw_flags,#0xfd
+00102$:
+;	src/exec.c:38: motion_stop();
 	lcall	_motion_stop
-;	src/exec.c:36: HAM_CVX = 0;
+;	src/exec.c:39: HAM_CVX = 0;
 ;	assignBit
 	clr	_P1_4
-;	src/exec.c:37: HAM_CCV = 0;
+;	src/exec.c:40: HAM_CCV = 0;
 ;	assignBit
 	clr	_P1_5
-;	src/exec.c:38: xs = X_FETCH;
+;	src/exec.c:41: xs = X_FETCH;
 	mov	_xs,#0x00
-;	src/exec.c:39: fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
+;	src/exec.c:42: fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
 	anl	_fw_flags,#0xfb
-;	src/exec.c:40: }
+;	src/exec.c:43: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'exec_init'
 ;------------------------------------------------------------
-;	src/exec.c:42: void exec_init(void) {
+;	src/exec.c:45: void exec_init(void) {
 ;	-----------------------------------------
 ;	 function exec_init
 ;	-----------------------------------------
 _exec_init:
-;	src/exec.c:43: xs = X_FETCH;
+;	src/exec.c:46: xs = X_FETCH;
 	mov	_xs,#0x00
-;	src/exec.c:44: c_neg = 0;
+;	src/exec.c:47: c_neg = 0;
 ;	assignBit
 	clr	_c_neg
-;	src/exec.c:45: f_neg = 0;
+;	src/exec.c:48: f_neg = 0;
 ;	assignBit
 	clr	_f_neg
-;	src/exec.c:46: }
+;	src/exec.c:49: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'fault'
 ;------------------------------------------------------------
 ;bits                      Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/exec.c:48: static void fault(uint8_t bits) {
+;	src/exec.c:51: static void fault(uint8_t bits) {
 ;	-----------------------------------------
 ;	 function fault
 ;	-----------------------------------------
 _fault:
 	mov	r7,dpl
-;	src/exec.c:49: exec_abort();
+;	src/exec.c:52: exec_abort();
 	push	ar7
 	lcall	_exec_abort
 	pop	ar7
-;	src/exec.c:50: fw_faults |= bits;
+;	src/exec.c:53: fw_faults |= bits;
 	mov	a,r7
 	orl	_fw_faults,a
-;	src/exec.c:51: fw_state = ST_FAULT;
+;	src/exec.c:54: fw_state = ST_FAULT;
 	mov	_fw_state,#0x04
-;	src/exec.c:52: fw_flush();
+;	src/exec.c:55: fw_flush();
 	lcall	_fw_flush
-;	src/exec.c:53: fw_ack();
-;	src/exec.c:54: }
+;	src/exec.c:56: fw_ack();
+;	src/exec.c:57: }
 	ljmp	_fw_ack
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'at'
 ;------------------------------------------------------------
 ;i                         Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/exec.c:56: static uint8_t at(uint8_t i) { return fw_buf[fw_ops_head + i]; }
+;	src/exec.c:59: static uint8_t at(uint8_t i) { return fw_buf[fw_ops_head + i]; }
 ;	-----------------------------------------
 ;	 function at
 ;	-----------------------------------------
@@ -484,23 +488,23 @@ _at:
 ;steps                     Allocated to registers r6 r7 
 ;motor                     Allocated to registers r4 r5 
 ;------------------------------------------------------------
-;	src/exec.c:61: static void carriage(uint16_t steps) {
+;	src/exec.c:64: static void carriage(uint16_t steps) {
 ;	-----------------------------------------
 ;	 function carriage
 ;	-----------------------------------------
 _carriage:
 	mov	r6,dpl
 	mov	r7,dph
-;	src/exec.c:62: uint16_t motor = steps;
+;	src/exec.c:65: uint16_t motor = steps;
 	mov	ar4,r6
 	mov	ar5,r7
-;	src/exec.c:63: if (steps == 0) return;
+;	src/exec.c:66: if (steps == 0) return;
 	mov	a,r6
 	orl	a,r7
 	jnz	00102$
 	ret
 00102$:
-;	src/exec.c:64: if (neg != c_neg) motor += C_BACKLASH;
+;	src/exec.c:67: if (neg != c_neg) motor += C_BACKLASH;
 	mov	c,_neg
 	jb	_c_neg,00123$
 	cpl	c
@@ -513,15 +517,15 @@ _carriage:
 	mov	ar4,r6
 	mov	ar5,r7
 00104$:
-;	src/exec.c:65: c_neg = neg;
+;	src/exec.c:68: c_neg = neg;
 ;	assignBit
 	mov	c,_neg
 	mov	_c_neg,c
-;	src/exec.c:66: CDIR = !neg;
+;	src/exec.c:69: CDIR = !neg;
 	mov	c,_neg
 	cpl	c
 	mov	_P1_1,c
-;	src/exec.c:67: if (neg) fw_carriage -= (int16_t)motor;
+;	src/exec.c:70: if (neg) fw_carriage -= (int16_t)motor;
 	jnb	_neg,00106$
 	mov	ar6,r4
 	mov	ar7,r5
@@ -534,7 +538,7 @@ _carriage:
 	mov	(_fw_carriage + 1),a
 	sjmp	00107$
 00106$:
-;	src/exec.c:68: else fw_carriage += (int16_t)motor;
+;	src/exec.c:71: else fw_carriage += (int16_t)motor;
 	mov	ar6,r4
 	mov	ar7,r5
 	mov	a,r6
@@ -544,26 +548,26 @@ _carriage:
 	addc	a,(_fw_carriage + 1)
 	mov	(_fw_carriage + 1),a
 00107$:
-;	src/exec.c:69: move_carriage(motor);
+;	src/exec.c:72: move_carriage(motor);
 	mov	dpl,r4
 	mov	dph,r5
-;	src/exec.c:70: }
+;	src/exec.c:73: }
 	ljmp	_move_carriage
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'uvar'
 ;------------------------------------------------------------
 ;b                         Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/exec.c:75: static uint16_t uvar(void) {
+;	src/exec.c:78: static uint16_t uvar(void) {
 ;	-----------------------------------------
 ;	 function uvar
 ;	-----------------------------------------
 _uvar:
-;	src/exec.c:76: uint8_t b = at(vi++);
+;	src/exec.c:79: uint8_t b = at(vi++);
 	mov	dpl,_vi
 	inc	_vi
 	lcall	_at
-;	src/exec.c:77: if (!(b & 0x80)) return b;
+;	src/exec.c:80: if (!(b & 0x80)) return b;
 	mov	a,dpl
 	mov	r7,a
 	jb	acc.7,00102$
@@ -573,7 +577,7 @@ _uvar:
 	mov	dph,r6
 	ret
 00102$:
-;	src/exec.c:78: return (uint16_t)(((uint16_t)(b & 0x7F) << 8) | at(vi++));
+;	src/exec.c:81: return (uint16_t)(((uint16_t)(b & 0x7F) << 8) | at(vi++));
 	anl	ar7,#0x7f
 	mov	ar6,r7
 	mov	r7,#0x00
@@ -592,7 +596,7 @@ _uvar:
 	mov	a,r4
 	orl	a,r6
 	mov	dph,a
-;	src/exec.c:79: }
+;	src/exec.c:82: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'svar'
@@ -600,12 +604,12 @@ _uvar:
 ;two                       Allocated to registers r7 
 ;u                         Allocated to registers r5 r6 
 ;------------------------------------------------------------
-;	src/exec.c:80: static int16_t svar(void) {
+;	src/exec.c:83: static int16_t svar(void) {
 ;	-----------------------------------------
 ;	 function svar
 ;	-----------------------------------------
 _svar:
-;	src/exec.c:81: uint8_t two = (at(vi) & 0x80) != 0;
+;	src/exec.c:84: uint8_t two = (at(vi) & 0x80) != 0;
 	mov	dpl,_vi
 	lcall	_at
 	mov	r7,dpl
@@ -620,13 +624,13 @@ _svar:
 	clr	a
 	rlc	a
 	mov	r7,a
-;	src/exec.c:82: uint16_t u = uvar();
+;	src/exec.c:85: uint16_t u = uvar();
 	push	ar7
 	lcall	_uvar
 	mov	r5,dpl
 	mov	r6,dph
 	pop	ar7
-;	src/exec.c:83: if (two) return (u & 0x4000) ? (int16_t)(u | 0x8000) : (int16_t)u;
+;	src/exec.c:86: if (two) return (u & 0x4000) ? (int16_t)(u | 0x8000) : (int16_t)u;
 	mov	a,r7
 	jz	00102$
 	mov	a,r6
@@ -643,7 +647,7 @@ _svar:
 	mov	dph,r7
 	ret
 00102$:
-;	src/exec.c:84: return (u & 0x40) ? (int16_t)u - 128 : (int16_t)u;
+;	src/exec.c:87: return (u & 0x40) ? (int16_t)u - 128 : (int16_t)u;
 	mov	a,r5
 	jnb	acc.6,00107$
 	mov	ar4,r5
@@ -661,7 +665,7 @@ _svar:
 00108$:
 	mov	dpl,r4
 	mov	dph,r7
-;	src/exec.c:85: }
+;	src/exec.c:88: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'pass_begin'
@@ -670,19 +674,19 @@ _svar:
 ;neg                       Allocated to registers r5 
 ;steps                     Allocated to registers r6 r7 
 ;------------------------------------------------------------
-;	src/exec.c:90: static void pass_begin(void) {
+;	src/exec.c:93: static void pass_begin(void) {
 ;	-----------------------------------------
 ;	 function pass_begin
 ;	-----------------------------------------
 _pass_begin:
-;	src/exec.c:93: p_flags = at(vi++);
+;	src/exec.c:96: p_flags = at(vi++);
 	mov	_vi,#0x02
 	mov	dpl,#0x01
 	lcall	_at
 	mov	_p_flags,dpl
-;	src/exec.c:94: fw_skip = 0;
+;	src/exec.c:97: fw_skip = 0;
 	mov	_fw_skip,#0x00
-;	src/exec.c:95: if (p_flags & PF_SKIP) fw_skip = at(vi++);
+;	src/exec.c:98: if (p_flags & PF_SKIP) fw_skip = at(vi++);
 	mov	a,_p_flags
 	jnb	acc.4,00102$
 	mov	dpl,_vi
@@ -690,34 +694,34 @@ _pass_begin:
 	lcall	_at
 	mov	_fw_skip,dpl
 00102$:
-;	src/exec.c:96: feed = svar();
+;	src/exec.c:99: feed = svar();
 	lcall	_svar
 	mov	r6,dpl
 	mov	r7,dph
-;	src/exec.c:97: p_first = uvar();
+;	src/exec.c:100: p_first = uvar();
 	push	ar7
 	push	ar6
 	lcall	_uvar
 	mov	_p_first,dpl
 	mov	(_p_first + 1),dph
-;	src/exec.c:98: p_left = at(vi++);
+;	src/exec.c:101: p_left = at(vi++);
 	mov	dpl,_vi
 	inc	_vi
 	lcall	_at
 	mov	_p_left,dpl
 	pop	ar6
 	pop	ar7
-;	src/exec.c:99: fw_ops_head += vi;
+;	src/exec.c:102: fw_ops_head += vi;
 	mov	a,_vi
 	add	a,_fw_ops_head
 	mov	_fw_ops_head,a
-;	src/exec.c:100: fw_strikes_in_pass = fw_skip;
+;	src/exec.c:103: fw_strikes_in_pass = fw_skip;
 	mov	_fw_strikes_in_pass,_fw_skip
-;	src/exec.c:101: fw_flags |= FL_PASS_ACTIVE;
+;	src/exec.c:104: fw_flags |= FL_PASS_ACTIVE;
 	orl	_fw_flags,#0x04
-;	src/exec.c:102: xs = X_FEED;
+;	src/exec.c:105: xs = X_FEED;
 	mov	_xs,#0x03
-;	src/exec.c:103: if (!(p_flags & PF_NO_FEED) && feed != 0) {
+;	src/exec.c:106: if (!(p_flags & PF_NO_FEED) && feed != 0) {
 	mov	a,_p_flags
 	jnb	acc.1,00139$
 	ret
@@ -727,13 +731,13 @@ _pass_begin:
 	jnz	00140$
 	ret
 00140$:
-;	src/exec.c:104: uint8_t neg = feed < 0;
+;	src/exec.c:107: uint8_t neg = feed < 0;
 	mov	ar5,r7
 	mov	a,r5
 	rlc	a
 	clr	a
 	rlc	a
-;	src/exec.c:105: uint16_t steps = (uint16_t)(neg ? -feed : feed) * F_GRID;
+;	src/exec.c:108: uint16_t steps = (uint16_t)(neg ? -feed : feed) * F_GRID;
 	mov	r5,a
 	jz	00110$
 	clr	c
@@ -756,7 +760,7 @@ _pass_begin:
 	mov	r6,dpl
 	mov	r7,dph
 	pop	ar5
-;	src/exec.c:106: if ((__bit)neg != f_neg) steps += F_BACKLASH;
+;	src/exec.c:109: if ((__bit)neg != f_neg) steps += F_BACKLASH;
 ;	assignBit
 	mov	a,r5
 	add	a,#0xff
@@ -774,11 +778,11 @@ _pass_begin:
 	mov	ar6,r3
 	mov	ar7,r4
 00104$:
-;	src/exec.c:107: f_neg = neg;
+;	src/exec.c:110: f_neg = neg;
 ;	assignBit
 	mov	c,_pass_begin_sloc0_1_0
 	mov	_f_neg,c
-;	src/exec.c:108: FDIR = !neg;
+;	src/exec.c:111: FDIR = !neg;
 	mov	a,r5
 	cjne	a,#0x01,00145$
 00145$:
@@ -787,7 +791,7 @@ _pass_begin:
 	rlc	a
 	add	a,#0xff
 	mov	_P1_3,c
-;	src/exec.c:109: fw_feed += neg ? -(int16_t)steps : (int16_t)steps;
+;	src/exec.c:112: fw_feed += neg ? -(int16_t)steps : (int16_t)steps;
 	mov	a,r5
 	jz	00112$
 	mov	ar4,r6
@@ -810,10 +814,10 @@ _pass_begin:
 	mov	a,r5
 	addc	a,(_fw_feed + 1)
 	mov	(_fw_feed + 1),a
-;	src/exec.c:110: move_feed(steps);
+;	src/exec.c:113: move_feed(steps);
 	mov	dpl,r6
 	mov	dph,r7
-;	src/exec.c:112: }
+;	src/exec.c:115: }
 	ljmp	_move_feed
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'strike_move'
@@ -822,19 +826,19 @@ _pass_begin:
 ;e                         Allocated to registers r6 
 ;d                         Allocated to registers r4 r5 
 ;------------------------------------------------------------
-;	src/exec.c:115: static void strike_move(uint8_t first) {
+;	src/exec.c:118: static void strike_move(uint8_t first) {
 ;	-----------------------------------------
 ;	 function strike_move
 ;	-----------------------------------------
 _strike_move:
 	mov	r7,dpl
-;	src/exec.c:116: uint8_t e = at(0);
+;	src/exec.c:119: uint8_t e = at(0);
 	mov	dpl,#0x00
 	push	ar7
 	lcall	_at
 	mov	r6,dpl
 	pop	ar7
-;	src/exec.c:118: ham_ccv = (e & E_CONCAVE) != 0;
+;	src/exec.c:121: ham_ccv = (e & E_CONCAVE) != 0;
 	mov	ar4,r6
 	mov	a,#0x80
 	anl	a,r4
@@ -845,10 +849,10 @@ _strike_move:
 	mov  _strike_move_sloc0_1_0,c
 	cpl	c
 	mov	_ham_ccv,c
-;	src/exec.c:119: if (first) {
+;	src/exec.c:122: if (first) {
 	mov	a,r7
 	jz	00104$
-;	src/exec.c:120: neg = (p_flags & PF_FIRST_NEG) != 0;
+;	src/exec.c:123: neg = (p_flags & PF_FIRST_NEG) != 0;
 	mov	r3,_p_flags
 	anl	ar3,#0x08
 	mov	r7,#0x00
@@ -859,7 +863,7 @@ _strike_move:
 	mov  _strike_move_sloc0_1_0,c
 	cpl	c
 	mov	_neg,c
-;	src/exec.c:121: carriage(p_first * C_GRID);
+;	src/exec.c:124: carriage(p_first * C_GRID);
 	mov	__mulint_PARM_2,_p_first
 	mov	(__mulint_PARM_2 + 1),(_p_first + 1)
 	mov	dptr,#0x0014
@@ -867,10 +871,10 @@ _strike_move:
 	lcall	_carriage
 	sjmp	00105$
 00104$:
-;	src/exec.c:123: d = e & E_DIST;
+;	src/exec.c:126: d = e & E_DIST;
 	anl	ar4,#0x3f
 	mov	r5,#0x00
-;	src/exec.c:124: if (e & E_EXT) d = (uint16_t)((d << 8) | at(1));
+;	src/exec.c:127: if (e & E_EXT) d = (uint16_t)((d << 8) | at(1));
 	mov	a,r6
 	jnb	acc.6,00102$
 	mov	ar7,r4
@@ -890,7 +894,7 @@ _strike_move:
 	orl	a,r7
 	mov	r5,a
 00102$:
-;	src/exec.c:125: neg = (p_flags & PF_SWEEP_NEG) != 0;
+;	src/exec.c:128: neg = (p_flags & PF_SWEEP_NEG) != 0;
 	mov	r6,_p_flags
 	anl	ar6,#0x04
 	mov	r7,#0x00
@@ -901,49 +905,49 @@ _strike_move:
 	mov  _strike_move_sloc0_1_0,c
 	cpl	c
 	mov	_neg,c
-;	src/exec.c:126: carriage(d * C_GRID);
+;	src/exec.c:129: carriage(d * C_GRID);
 	mov	__mulint_PARM_2,r4
 	mov	(__mulint_PARM_2 + 1),r5
 	mov	dptr,#0x0014
 	lcall	__mulint
 	lcall	_carriage
 00105$:
-;	src/exec.c:128: xs = X_MOVE;
+;	src/exec.c:131: xs = X_MOVE;
 	mov	_xs,#0x04
-;	src/exec.c:129: }
+;	src/exec.c:132: }
 	ret
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'pass_end'
 ;------------------------------------------------------------
-;	src/exec.c:131: static void pass_end(void) {
+;	src/exec.c:134: static void pass_end(void) {
 ;	-----------------------------------------
 ;	 function pass_end
 ;	-----------------------------------------
 _pass_end:
-;	src/exec.c:132: fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
+;	src/exec.c:135: fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
 	anl	_fw_flags,#0xfb
-;	src/exec.c:133: ++fw_pass_index;
+;	src/exec.c:136: ++fw_pass_index;
 	inc	_fw_pass_index
 	clr	a
 	cjne	a,_fw_pass_index,00103$
 	inc	(_fw_pass_index + 1)
 00103$:
-;	src/exec.c:134: fw_executed = fw_pass_index;
+;	src/exec.c:137: fw_executed = fw_pass_index;
 	mov	_fw_executed,_fw_pass_index
 	mov	(_fw_executed + 1),(_fw_pass_index + 1)
-;	src/exec.c:135: fw_strikes_in_pass = 0;
+;	src/exec.c:138: fw_strikes_in_pass = 0;
 	mov	_fw_strikes_in_pass,#0x00
-;	src/exec.c:136: xs = X_FETCH;
+;	src/exec.c:139: xs = X_FETCH;
 	mov	_xs,#0x00
-;	src/exec.c:137: fw_ack(); /* the host counts a pass only when it is executed */
-;	src/exec.c:138: }
+;	src/exec.c:140: fw_ack(); /* the host counts a pass only when it is executed */
+;	src/exec.c:141: }
 	ljmp	_fw_ack
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'be16'
 ;------------------------------------------------------------
 ;i                         Allocated to registers r7 
 ;------------------------------------------------------------
-;	src/exec.c:140: static uint16_t be16(uint8_t i) { return (uint16_t)(((uint16_t)at(i) << 8) | at((uint8_t)(i + 1))); }
+;	src/exec.c:143: static uint16_t be16(uint8_t i) { return (uint16_t)(((uint16_t)at(i) << 8) | at((uint8_t)(i + 1))); }
 ;	-----------------------------------------
 ;	 function be16
 ;	-----------------------------------------
@@ -980,12 +984,12 @@ _be16:
 ;from                      Allocated to registers 
 ;d                         Allocated to registers r3 r4 
 ;------------------------------------------------------------
-;	src/exec.c:142: static void fetch(void) {
+;	src/exec.c:145: static void fetch(void) {
 ;	-----------------------------------------
 ;	 function fetch
 ;	-----------------------------------------
 _fetch:
-;	src/exec.c:144: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
+;	src/exec.c:147: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
 	mov	a,#0x03
 	cjne	a,_fw_state,00263$
 	ret
@@ -994,56 +998,56 @@ _fetch:
 	cjne	a,_fw_state,00102$
 	ret
 00102$:
-;	src/exec.c:145: if (fw_ops_head == fw_ops_done) {
+;	src/exec.c:148: if (fw_ops_head == fw_ops_done) {
 	mov	a,_fw_ops_done
 	cjne	a,_fw_ops_head,00108$
-;	src/exec.c:146: if ((fw_flags & FL_JOB_ACTIVE) && fw_state != ST_WAITING) {
+;	src/exec.c:149: if ((fw_flags & FL_JOB_ACTIVE) && fw_state != ST_WAITING) {
 	mov	a,_fw_flags
 	jnb	acc.4,00105$
 	mov	a,#0x02
 	cjne	a,_fw_state,00269$
 	ret
 00269$:
-;	src/exec.c:147: fw_state = ST_WAITING;
+;	src/exec.c:150: fw_state = ST_WAITING;
 	mov	_fw_state,#0x02
-;	src/exec.c:148: fw_starved();
-;	src/exec.c:150: return;
+;	src/exec.c:151: fw_starved();
+;	src/exec.c:153: return;
 	ljmp	_fw_starved
 00105$:
 	ret
 00108$:
-;	src/exec.c:152: if (fw_pause_req) {
+;	src/exec.c:155: if (fw_pause_req) {
 	mov	a,_fw_pause_req
 	jz	00110$
-;	src/exec.c:153: fw_pause_req = 0;
+;	src/exec.c:156: fw_pause_req = 0;
 	mov	_fw_pause_req,#0x00
-;	src/exec.c:154: fw_state = ST_PAUSED;
+;	src/exec.c:157: fw_state = ST_PAUSED;
 	mov	_fw_state,#0x03
-;	src/exec.c:155: fw_ack();
-;	src/exec.c:156: return;
+;	src/exec.c:158: fw_ack();
+;	src/exec.c:159: return;
 	ljmp	_fw_ack
 00110$:
-;	src/exec.c:158: op = at(0);
+;	src/exec.c:161: op = at(0);
 	mov	dpl,#0x00
 	lcall	_at
 	mov	r7,dpl
-;	src/exec.c:159: if (!(fw_flags & FL_JOB_ACTIVE) && op != OP_JOB_BEGIN) {
+;	src/exec.c:162: if (!(fw_flags & FL_JOB_ACTIVE) && op != OP_JOB_BEGIN) {
 	mov	a,_fw_flags
 	jb	acc.4,00112$
 	cjne	r7,#0x10,00272$
 	sjmp	00112$
 00272$:
-;	src/exec.c:160: fault(F_STREAM); /* ops outside a job: a host bug */
+;	src/exec.c:163: fault(F_STREAM); /* ops outside a job: a host bug */
 	mov	dpl,#0x80
-;	src/exec.c:161: return;
+;	src/exec.c:164: return;
 	ljmp	_fault
 00112$:
-;	src/exec.c:163: if (fw_state == ST_WAITING) fw_state = ST_RUNNING;
+;	src/exec.c:166: if (fw_state == ST_WAITING) fw_state = ST_RUNNING;
 	mov	a,#0x02
 	cjne	a,_fw_state,00115$
 	mov	_fw_state,#0x01
 00115$:
-;	src/exec.c:164: switch (op) {
+;	src/exec.c:167: switch (op) {
 	cjne	r7,#0x10,00275$
 	sjmp	00116$
 00275$:
@@ -1069,109 +1073,109 @@ _fetch:
 	ljmp	00127$
 00282$:
 	ljmp	00141$
-;	src/exec.c:165: case OP_JOB_BEGIN:
+;	src/exec.c:168: case OP_JOB_BEGIN:
 00116$:
-;	src/exec.c:166: fw_job_id = be16(1);
+;	src/exec.c:169: fw_job_id = be16(1);
 	mov	dpl,#0x01
 	lcall	_be16
 	mov	_fw_job_id,dpl
 	mov	(_fw_job_id + 1),dph
-;	src/exec.c:167: fw_pass_index = be16(3);
+;	src/exec.c:170: fw_pass_index = be16(3);
 	mov	dpl,#0x03
 	lcall	_be16
 	mov	_fw_pass_index,dpl
 	mov	(_fw_pass_index + 1),dph
-;	src/exec.c:168: fw_executed = fw_pass_index;
+;	src/exec.c:171: fw_executed = fw_pass_index;
 	mov	_fw_executed,_fw_pass_index
 	mov	(_fw_executed + 1),(_fw_pass_index + 1)
-;	src/exec.c:169: fw_strikes_in_pass = 0;
+;	src/exec.c:172: fw_strikes_in_pass = 0;
 	mov	_fw_strikes_in_pass,#0x00
-;	src/exec.c:170: fw_flags |= FL_JOB_ACTIVE;
+;	src/exec.c:173: fw_flags |= FL_JOB_ACTIVE;
 	orl	_fw_flags,#0x10
-;	src/exec.c:171: fw_state = ST_RUNNING;
+;	src/exec.c:174: fw_state = ST_RUNNING;
 	mov	_fw_state,#0x01
-;	src/exec.c:172: fw_ops_head += 5;
+;	src/exec.c:175: fw_ops_head += 5;
 	mov	r6,_fw_ops_head
 	mov	a,#0x05
 	add	a,r6
 	mov	_fw_ops_head,a
-;	src/exec.c:173: fw_ack();
-;	src/exec.c:174: break;
+;	src/exec.c:176: fw_ack();
+;	src/exec.c:177: break;
 	ljmp	_fw_ack
-;	src/exec.c:175: case OP_JOB_END:
+;	src/exec.c:178: case OP_JOB_END:
 00117$:
-;	src/exec.c:176: fw_ops_head += 1;
+;	src/exec.c:179: fw_ops_head += 1;
 	mov	a,_fw_ops_head
 	inc	a
 	mov	_fw_ops_head,a
-;	src/exec.c:182: *(volatile __xdata uint8_t *)0xFFFF = 's';
+;	src/exec.c:185: *(volatile __xdata uint8_t *)0xFFFF = 's';
 	mov	dptr,#0xffff
 	mov	a,#0x73
 	movx	@dptr,a
-;	src/exec.c:184: fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
+;	src/exec.c:187: fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
 	anl	_fw_flags,#0xef
-;	src/exec.c:185: fw_state = ST_IDLE;
+;	src/exec.c:188: fw_state = ST_IDLE;
 	mov	_fw_state,#0x00
-;	src/exec.c:186: fw_ack();
-;	src/exec.c:187: break;
+;	src/exec.c:189: fw_ack();
+;	src/exec.c:190: break;
 	ljmp	_fw_ack
-;	src/exec.c:188: case OP_SHEET_BEGIN:
+;	src/exec.c:191: case OP_SHEET_BEGIN:
 00118$:
-;	src/exec.c:189: if (!PAPER) {
+;	src/exec.c:192: if (!PAPER) {
 	jb	_P3_6,00120$
-;	src/exec.c:191: fw_faults |= F_PAPER_OUT;
+;	src/exec.c:194: fw_faults |= F_PAPER_OUT;
 	orl	_fw_faults,#0x01
-;	src/exec.c:192: fw_state = ST_FAULT;
+;	src/exec.c:195: fw_state = ST_FAULT;
 	mov	_fw_state,#0x04
-;	src/exec.c:193: fw_ack();
-;	src/exec.c:194: return;
+;	src/exec.c:196: fw_ack();
+;	src/exec.c:197: return;
 	ljmp	_fw_ack
 00120$:
-;	src/exec.c:196: fw_sheet = be16(1);
+;	src/exec.c:199: fw_sheet = be16(1);
 	mov	dpl,#0x01
 	lcall	_be16
 	mov	_fw_sheet,dpl
 	mov	(_fw_sheet + 1),dph
-;	src/exec.c:197: fw_feed = 0; /* the sheet's top edge is the feed origin */
+;	src/exec.c:200: fw_feed = 0; /* the sheet's top edge is the feed origin */
 	clr	a
 	mov	_fw_feed,a
 	mov	(_fw_feed + 1),a
-;	src/exec.c:198: fw_ops_head += 3;
+;	src/exec.c:201: fw_ops_head += 3;
 	mov	r6,_fw_ops_head
 	mov	a,#0x03
 	add	a,r6
 	mov	_fw_ops_head,a
-;	src/exec.c:199: break;
+;	src/exec.c:202: break;
 	ret
-;	src/exec.c:200: case OP_SHEET_END:
+;	src/exec.c:203: case OP_SHEET_END:
 00121$:
-;	src/exec.c:201: fw_sheet = 0;
+;	src/exec.c:204: fw_sheet = 0;
 	clr	a
 	mov	_fw_sheet,a
 	mov	(_fw_sheet + 1),a
-;	src/exec.c:202: fw_ops_head += 1;
-	mov	a,_fw_ops_head
-	inc	a
-	mov	_fw_ops_head,a
-;	src/exec.c:203: break;
-	ret
-;	src/exec.c:204: case OP_HOME:
-00122$:
 ;	src/exec.c:205: fw_ops_head += 1;
 	mov	a,_fw_ops_head
 	inc	a
 	mov	_fw_ops_head,a
-;	src/exec.c:206: fw_state = ST_HOMING;
+;	src/exec.c:206: break;
+	ret
+;	src/exec.c:207: case OP_HOME:
+00122$:
+;	src/exec.c:208: fw_ops_head += 1;
+	mov	a,_fw_ops_head
+	inc	a
+	mov	_fw_ops_head,a
+;	src/exec.c:209: fw_state = ST_HOMING;
 	mov	_fw_state,#0x05
-;	src/exec.c:207: CDIR = 0;
+;	src/exec.c:210: CDIR = 0;
 ;	assignBit
 	clr	_P1_1
-;	src/exec.c:208: c_neg = 1;
+;	src/exec.c:211: c_neg = 1;
 ;	assignBit
 	setb	_c_neg
-;	src/exec.c:209: xs = X_HOME;
+;	src/exec.c:212: xs = X_HOME;
 	mov	_xs,#0x01
-;	src/exec.c:214: if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
+;	src/exec.c:217: if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
 	mov	r5,_fw_carriage
 	mov	r6,(_fw_carriage + 1)
 	clr	c
@@ -1184,7 +1188,7 @@ _fetch:
 	jnc	00124$
 	mov	a,_fw_flags
 	jnb	acc.1,00124$
-;	src/exec.c:215: move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
+;	src/exec.c:218: move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
 	mov	_move_constant_PARM_2,_fw_carriage
 	mov	(_move_constant_PARM_2 + 1),(_fw_carriage + 1)
 	mov	_move_constant_PARM_3,_cfg_home_iv
@@ -1192,26 +1196,26 @@ _fetch:
 	mov	dpl,#0x01
 	lcall	_move_constant
 00124$:
-;	src/exec.c:217: mv_limit = 1;
+;	src/exec.c:220: mv_limit = 1;
 ;	assignBit
 	setb	_mv_limit
-;	src/exec.c:221: break;
+;	src/exec.c:224: break;
 	ret
-;	src/exec.c:223: case OP_SEEK_FEED: {
+;	src/exec.c:226: case OP_SEEK_FEED: {
 00127$:
-;	src/exec.c:224: int16_t target = (int16_t)be16(1);
+;	src/exec.c:227: int16_t target = (int16_t)be16(1);
 	mov	dpl,#0x01
 	push	ar7
 	lcall	_be16
 	mov	r5,dpl
 	mov	r6,dph
 	pop	ar7
-;	src/exec.c:225: uint8_t feed = op == OP_SEEK_FEED;
+;	src/exec.c:228: uint8_t feed = op == OP_SEEK_FEED;
 	clr	a
 	cjne	r7,#0x43,00286$
 	inc	a
 00286$:
-;	src/exec.c:226: int16_t from = feed ? fw_feed : fw_carriage;
+;	src/exec.c:229: int16_t from = feed ? fw_feed : fw_carriage;
 	mov	r7,a
 	jz	00145$
 	mov	r3,_fw_feed
@@ -1221,7 +1225,7 @@ _fetch:
 	mov	r3,_fw_carriage
 	mov	r4,(_fw_carriage + 1)
 00146$:
-;	src/exec.c:227: int16_t d = target - from;
+;	src/exec.c:230: int16_t d = target - from;
 	mov	a,r5
 	clr	c
 	subb	a,r3
@@ -1229,12 +1233,12 @@ _fetch:
 	mov	a,r6
 	subb	a,r4
 	mov	r4,a
-;	src/exec.c:228: fw_ops_head += 3;
+;	src/exec.c:231: fw_ops_head += 3;
 	mov	r2,_fw_ops_head
 	mov	a,#0x03
 	add	a,r2
 	mov	_fw_ops_head,a
-;	src/exec.c:229: if (!feed && (!(fw_flags & FL_HOMED) || target < 0 || (uint16_t)target > cfg_travel)) {
+;	src/exec.c:232: if (!feed && (!(fw_flags & FL_HOMED) || target < 0 || (uint16_t)target > cfg_travel)) {
 	mov	a,r7
 	jnz	00129$
 	mov	a,_fw_flags
@@ -1252,21 +1256,21 @@ _fetch:
 	subb	a,r2
 	jnc	00129$
 00128$:
-;	src/exec.c:230: fault(F_STREAM);
+;	src/exec.c:233: fault(F_STREAM);
 	mov	dpl,#0x80
-;	src/exec.c:231: return;
+;	src/exec.c:234: return;
 	ljmp	_fault
 00129$:
-;	src/exec.c:233: if (d == 0) break;
+;	src/exec.c:236: if (d == 0) break;
 	mov	a,r3
 	orl	a,r4
 	jnz	00293$
 	ret
 00293$:
-;	src/exec.c:234: if (feed) {
+;	src/exec.c:237: if (feed) {
 	mov	a,r7
 	jz	00136$
-;	src/exec.c:235: FDIR = d > 0;
+;	src/exec.c:238: FDIR = d > 0;
 	mov	ar1,r3
 	mov	ar2,r4
 	clr	c
@@ -1281,16 +1285,16 @@ _fetch:
 	rlc	a
 	add	a,#0xff
 	mov	_P1_3,c
-;	src/exec.c:236: f_neg = d < 0;
+;	src/exec.c:239: f_neg = d < 0;
 	mov	a,r2
 	rlc	a
 	mov	_f_neg,c
-;	src/exec.c:237: fw_feed = target;
+;	src/exec.c:240: fw_feed = target;
 	mov	_fw_feed,r5
 	mov	(_fw_feed + 1),r6
 	sjmp	00137$
 00136$:
-;	src/exec.c:239: CDIR = d > 0;
+;	src/exec.c:242: CDIR = d > 0;
 	mov	ar1,r3
 	mov	ar2,r4
 	clr	c
@@ -1305,15 +1309,15 @@ _fetch:
 	rlc	a
 	add	a,#0xff
 	mov	_P1_1,c
-;	src/exec.c:240: c_neg = d < 0;
+;	src/exec.c:243: c_neg = d < 0;
 	mov	a,r2
 	rlc	a
 	mov	_c_neg,c
-;	src/exec.c:241: fw_carriage = target;
+;	src/exec.c:244: fw_carriage = target;
 	mov	_fw_carriage,r5
 	mov	(_fw_carriage + 1),r6
 00137$:
-;	src/exec.c:243: move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d), cfg_home_iv);
+;	src/exec.c:246: move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d), cfg_home_iv);
 	mov	a,r7
 	jz	00147$
 	mov	r6,#0x04
@@ -1344,40 +1348,40 @@ _fetch:
 	mov	(_move_constant_PARM_3 + 1),(_cfg_home_iv + 1)
 	mov	dpl,r6
 	lcall	_move_constant
-;	src/exec.c:244: xs = X_SEEK;
+;	src/exec.c:247: xs = X_SEEK;
 	mov	_xs,#0x02
-;	src/exec.c:245: break;
-;	src/exec.c:247: case OP_PASS:
+;	src/exec.c:248: break;
+;	src/exec.c:250: case OP_PASS:
 	ret
 00138$:
-;	src/exec.c:248: if (!(fw_flags & FL_HOMED)) {
+;	src/exec.c:251: if (!(fw_flags & FL_HOMED)) {
 	mov	a,_fw_flags
 	jb	acc.1,00140$
-;	src/exec.c:249: fault(F_STREAM); /* the host must home before positioning */
+;	src/exec.c:252: fault(F_STREAM); /* the host must home before positioning */
 	mov	dpl,#0x80
-;	src/exec.c:250: return;
+;	src/exec.c:253: return;
 	ljmp	_fault
 00140$:
-;	src/exec.c:252: pass_begin();
-;	src/exec.c:253: break;
-;	src/exec.c:254: default: fault(F_STREAM); break; /* checked on receipt: cannot happen */
+;	src/exec.c:255: pass_begin();
+;	src/exec.c:256: break;
+;	src/exec.c:257: default: fault(F_STREAM); break; /* checked on receipt: cannot happen */
 	ljmp	_pass_begin
 00141$:
 	mov	dpl,#0x80
-;	src/exec.c:255: }
-;	src/exec.c:256: }
+;	src/exec.c:258: }
+;	src/exec.c:259: }
 	ljmp	_fault
 ;------------------------------------------------------------
 ;Allocation info for local variables in function 'exec_poll'
 ;------------------------------------------------------------
-;	src/exec.c:258: void exec_poll(void) {
+;	src/exec.c:261: void exec_poll(void) {
 ;	-----------------------------------------
 ;	 function exec_poll
 ;	-----------------------------------------
 _exec_poll:
-;	src/exec.c:259: if (!mv_done) {
+;	src/exec.c:262: if (!mv_done) {
 	jb	_mv_done,00107$
-;	src/exec.c:262: if (xs != X_HOME && !LIMIT && !CDIR && fw_carriage > (int16_t)(4 * C_GRID)) {
+;	src/exec.c:265: if (xs != X_HOME && !LIMIT && !CDIR && fw_carriage > (int16_t)(4 * C_GRID)) {
 	mov	a,#0x01
 	cjne	a,_xs,00232$
 	ret
@@ -1392,16 +1396,16 @@ _exec_poll:
 	xrl	b,#0x80
 	subb	a,b
 	jnc	00102$
-;	src/exec.c:263: fw_flags &= (uint8_t)~FL_HOMED;
+;	src/exec.c:266: fw_flags &= (uint8_t)~FL_HOMED;
 	anl	_fw_flags,#0xfd
-;	src/exec.c:264: fault(F_LIMIT);
+;	src/exec.c:267: fault(F_LIMIT);
 	mov	dpl,#0x02
-;	src/exec.c:266: return;
+;	src/exec.c:269: return;
 	ljmp	_fault
 00102$:
 	ret
 00107$:
-;	src/exec.c:268: switch (xs) {
+;	src/exec.c:271: switch (xs) {
 	mov	a,_xs
 	add	a,#0xff - 0x07
 	jnc	00236$
@@ -1435,56 +1439,56 @@ _exec_poll:
 	.db	00122$>>8
 	.db	00128$>>8
 	.db	00135$>>8
-;	src/exec.c:269: case X_FETCH: fetch(); return;
+;	src/exec.c:272: case X_FETCH: fetch(); return;
 00108$:
 	ljmp	_fetch
-;	src/exec.c:270: case X_HOME:
+;	src/exec.c:273: case X_HOME:
 00109$:
-;	src/exec.c:272: mv_limit = 1;
+;	src/exec.c:275: mv_limit = 1;
 ;	assignBit
 	setb	_mv_limit
-;	src/exec.c:274: if (!mv_limit) {
+;	src/exec.c:277: if (!mv_limit) {
 	jb	_mv_limit,00111$
-;	src/exec.c:275: fault(F_LIMIT); /* travelled the whole width without finding the switch */
+;	src/exec.c:278: fault(F_LIMIT); /* travelled the whole width without finding the switch */
 	mov	dpl,#0x02
-;	src/exec.c:276: return;
+;	src/exec.c:279: return;
 	ljmp	_fault
 00111$:
-;	src/exec.c:278: fw_carriage = 0;
+;	src/exec.c:281: fw_carriage = 0;
 	clr	a
 	mov	_fw_carriage,a
 	mov	(_fw_carriage + 1),a
-;	src/exec.c:279: fw_flags |= FL_HOMED;
+;	src/exec.c:282: fw_flags |= FL_HOMED;
 	orl	_fw_flags,#0x02
-;	src/exec.c:280: fw_state = ST_RUNNING;
+;	src/exec.c:283: fw_state = ST_RUNNING;
 	mov	_fw_state,#0x01
-;	src/exec.c:281: xs = X_FETCH;
+;	src/exec.c:284: xs = X_FETCH;
 	mov	_xs,#0x00
-;	src/exec.c:282: return;
+;	src/exec.c:285: return;
 	ret
-;	src/exec.c:283: case X_SEEK: xs = X_FETCH; return;
+;	src/exec.c:286: case X_SEEK: xs = X_FETCH; return;
 00112$:
 	mov	_xs,#0x00
 	ret
-;	src/exec.c:284: case X_FEED:
+;	src/exec.c:287: case X_FEED:
 00113$:
-;	src/exec.c:285: if (p_left == 0) {
+;	src/exec.c:288: if (p_left == 0) {
 	mov	a,_p_left
 	jnz	00115$
-;	src/exec.c:286: pass_end();
-;	src/exec.c:287: return;
+;	src/exec.c:289: pass_end();
+;	src/exec.c:290: return;
 	ljmp	_pass_end
 00115$:
-;	src/exec.c:289: p_is_first = 1;
+;	src/exec.c:292: p_is_first = 1;
 ;	assignBit
 	setb	_p_is_first
-;	src/exec.c:290: xs = X_NEXT;
+;	src/exec.c:293: xs = X_NEXT;
 	mov	_xs,#0x07
-;	src/exec.c:291: return;
+;	src/exec.c:294: return;
 	ret
-;	src/exec.c:292: case X_MOVE:
+;	src/exec.c:295: case X_MOVE:
 00116$:
-;	src/exec.c:293: if (fw_carriage < 0 || (uint16_t)fw_carriage > cfg_travel) {
+;	src/exec.c:296: if (fw_carriage < 0 || (uint16_t)fw_carriage > cfg_travel) {
 	mov	a,(_fw_carriage + 1)
 	jb	acc.7,00117$
 	mov	r6,_fw_carriage
@@ -1496,70 +1500,70 @@ _exec_poll:
 	subb	a,r7
 	jnc	00118$
 00117$:
-;	src/exec.c:294: fw_flags &= (uint8_t)~FL_HOMED;
+;	src/exec.c:297: fw_flags &= (uint8_t)~FL_HOMED;
 	anl	_fw_flags,#0xfd
-;	src/exec.c:295: fault(F_LIMIT);
+;	src/exec.c:298: fault(F_LIMIT);
 	mov	dpl,#0x02
-;	src/exec.c:296: return;
+;	src/exec.c:299: return;
 	ljmp	_fault
 00118$:
-;	src/exec.c:298: xs = X_SETTLE;
+;	src/exec.c:301: xs = X_SETTLE;
 	mov	_xs,#0x05
-;	src/exec.c:299: if (cfg_settle) {
+;	src/exec.c:302: if (cfg_settle) {
 	mov	a,_cfg_settle
 	orl	a,(_cfg_settle + 1)
 	jz	00122$
-;	src/exec.c:300: wait_ticks(cfg_settle);
+;	src/exec.c:303: wait_ticks(cfg_settle);
 	mov	dpl,_cfg_settle
 	mov	dph,(_cfg_settle + 1)
-;	src/exec.c:301: return;
+;	src/exec.c:304: return;
 	ljmp	_wait_ticks
-;	src/exec.c:304: case X_SETTLE:
+;	src/exec.c:307: case X_SETTLE:
 00122$:
-;	src/exec.c:305: xs = X_DWELL;
+;	src/exec.c:308: xs = X_DWELL;
 	mov	_xs,#0x06
-;	src/exec.c:306: if (fw_skip) {
+;	src/exec.c:309: if (fw_skip) {
 	mov	a,_fw_skip
 	jz	00124$
-;	src/exec.c:307: --fw_skip; /* made before the reset: pass over it */
+;	src/exec.c:310: --fw_skip; /* made before the reset: pass over it */
 	dec	_fw_skip
-;	src/exec.c:308: return;
+;	src/exec.c:311: return;
 	ret
 00124$:
-;	src/exec.c:310: if (ham_ccv) HAM_CCV = 1;
+;	src/exec.c:313: if (ham_ccv) HAM_CCV = 1;
 	jnb	_ham_ccv,00126$
 ;	assignBit
 	setb	_P1_5
 	sjmp	00127$
 00126$:
-;	src/exec.c:311: else HAM_CVX = 1;
+;	src/exec.c:314: else HAM_CVX = 1;
 ;	assignBit
 	setb	_P1_4
 00127$:
-;	src/exec.c:312: wait_ticks(cfg_hammer);
+;	src/exec.c:315: wait_ticks(cfg_hammer);
 	mov	dpl,_cfg_hammer
 	mov	dph,(_cfg_hammer + 1)
 	lcall	_wait_ticks
-;	src/exec.c:313: ++fw_strikes_in_pass;
+;	src/exec.c:316: ++fw_strikes_in_pass;
 	inc	_fw_strikes_in_pass
-;	src/exec.c:314: return;
+;	src/exec.c:317: return;
 	ret
-;	src/exec.c:315: case X_DWELL:
+;	src/exec.c:318: case X_DWELL:
 00128$:
-;	src/exec.c:316: HAM_CVX = 0;
+;	src/exec.c:319: HAM_CVX = 0;
 ;	assignBit
 	clr	_P1_4
-;	src/exec.c:317: HAM_CCV = 0;
+;	src/exec.c:320: HAM_CCV = 0;
 ;	assignBit
 	clr	_P1_5
-;	src/exec.c:319: if (!HAM_SENSE) {
+;	src/exec.c:322: if (!HAM_SENSE) {
 	jb	_P3_7,00130$
-;	src/exec.c:320: fault(F_HAMMER);
+;	src/exec.c:323: fault(F_HAMMER);
 	mov	dpl,#0x04
-;	src/exec.c:321: return;
+;	src/exec.c:324: return;
 	ljmp	_fault
 00130$:
-;	src/exec.c:323: fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
+;	src/exec.c:326: fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
 	mov	dpl,#0x00
 	lcall	_at
 	mov	a,dpl
@@ -1575,32 +1579,32 @@ _exec_poll:
 	mov	a,r6
 	add	a,r7
 	mov	_fw_ops_head,a
-;	src/exec.c:324: if (--p_left == 0) {
+;	src/exec.c:327: if (--p_left == 0) {
 	djnz	_p_left,00132$
-;	src/exec.c:325: pass_end();
-;	src/exec.c:326: return;
+;	src/exec.c:328: pass_end();
+;	src/exec.c:329: return;
 	ljmp	_pass_end
 00132$:
-;	src/exec.c:328: p_is_first = 0;
+;	src/exec.c:331: p_is_first = 0;
 ;	assignBit
 	clr	_p_is_first
-;	src/exec.c:329: xs = X_NEXT;
+;	src/exec.c:332: xs = X_NEXT;
 	mov	_xs,#0x07
-;	src/exec.c:330: if (fw_pause_req) {
+;	src/exec.c:333: if (fw_pause_req) {
 	mov	a,_fw_pause_req
 	jz	00134$
-;	src/exec.c:332: fw_pause_req = 0;
+;	src/exec.c:335: fw_pause_req = 0;
 	mov	_fw_pause_req,#0x00
-;	src/exec.c:333: fw_state = ST_PAUSED;
+;	src/exec.c:336: fw_state = ST_PAUSED;
 	mov	_fw_state,#0x03
-;	src/exec.c:334: fw_ack();
-;	src/exec.c:336: return;
-;	src/exec.c:337: case X_NEXT:
+;	src/exec.c:337: fw_ack();
+;	src/exec.c:339: return;
+;	src/exec.c:340: case X_NEXT:
 	ljmp	_fw_ack
 00134$:
 	ret
 00135$:
-;	src/exec.c:338: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
+;	src/exec.c:341: if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
 	mov	a,#0x03
 	cjne	a,_fw_state,00250$
 	sjmp	00136$
@@ -1610,37 +1614,37 @@ _exec_poll:
 00136$:
 	ret
 00137$:
-;	src/exec.c:339: if (fw_ops_head == fw_ops_done) {
+;	src/exec.c:342: if (fw_ops_head == fw_ops_done) {
 	mov	a,_fw_ops_done
 	cjne	a,_fw_ops_head,00142$
-;	src/exec.c:341: if (fw_state != ST_WAITING) {
+;	src/exec.c:344: if (fw_state != ST_WAITING) {
 	mov	a,#0x02
 	cjne	a,_fw_state,00255$
 	sjmp	00140$
 00255$:
-;	src/exec.c:342: fw_state = ST_WAITING;
+;	src/exec.c:345: fw_state = ST_WAITING;
 	mov	_fw_state,#0x02
-;	src/exec.c:343: fw_starved();
-;	src/exec.c:345: return;
+;	src/exec.c:346: fw_starved();
+;	src/exec.c:348: return;
 	ljmp	_fw_starved
 00140$:
 	ret
 00142$:
-;	src/exec.c:347: if (fw_state == ST_WAITING) fw_state = ST_RUNNING;
+;	src/exec.c:350: if (fw_state == ST_WAITING) fw_state = ST_RUNNING;
 	mov	a,#0x02
 	cjne	a,_fw_state,00144$
 	mov	_fw_state,#0x01
 00144$:
-;	src/exec.c:348: strike_move(p_is_first);
+;	src/exec.c:351: strike_move(p_is_first);
 	mov	c,_p_is_first
 	clr	a
 	rlc	a
 	mov	dpl,a
 	lcall	_strike_move
-;	src/exec.c:349: return;
-;	src/exec.c:350: default: return;
-;	src/exec.c:351: }
-;	src/exec.c:352: }
+;	src/exec.c:352: return;
+;	src/exec.c:353: default: return;
+;	src/exec.c:354: }
+;	src/exec.c:355: }
 	ret
 	.area CSEG    (CODE)
 	.area CONST   (CODE)

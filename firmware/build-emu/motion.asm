@@ -130,6 +130,7 @@
 	.globl _P0
 	.globl _mv_limit
 	.globl _mv_done
+	.globl _m_upcr
 	.globl _m_fu
 	.globl _m_cr
 	.globl _m_slow
@@ -363,6 +364,8 @@ _m_slow::
 _m_cr::
 	.ds 1
 _m_fu::
+	.ds 1
+_m_upcr::
 	.ds 1
 _mv_done::
 	.ds 1

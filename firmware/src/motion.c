@@ -17,7 +17,7 @@
 
 /* Read by step.asm. */
 __data uint8_t c_cl, c_ch, c_ui, c_di, s_pl, s_ph, s_pin, s_kind, mv_p;
-volatile __bit m_slow, m_cr, m_fu, mv_done, mv_limit;
+volatile __bit m_slow, m_cr, m_fu, m_upcr, mv_done, mv_limit;
 /* Seven phases at most: slow up, fast up, cruise, fast down, slow down, the
  * last two steps, and the end (one byte). */
 static __idata uint8_t prog[6 * 5 + 1];

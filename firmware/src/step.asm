@@ -26,7 +26,7 @@
         .module step
         .globl  _t2_isr
         .globl  _nextph
-        .globl  _m_slow, _m_cr, _m_fu, _mv_done, _mv_limit
+        .globl  _m_slow, _m_cr, _m_fu, _m_upcr, _mv_done, _mv_limit
         .globl  _c_cl, _c_ch, _c_ui, _c_di, _s_pl, _s_ph, _s_pin, _s_kind, _mv_p
 
 ACC     = 0xE0
@@ -68,7 +68,19 @@ _t2_isr:
         .include "ramp_up.inc"
 11$:    djnz    _c_cl, 12$              ; 2
         djnz    _c_ch, 12$
-        lcall   _nextph
+        ; The ramp ends at full speed, where a step is 46 cycles: loading the
+        ; cruise through _nextph (about 55 cycles) here would let the next two
+        ; timer events fall inside this interrupt and one would be lost.
+        ; _nextph prepared the cruise when it loaded this phase: switch inline.
+        jnb     _m_upcr, 14$
+        clr     _m_upcr
+        clr     _m_fu
+        setb    _m_cr
+        mov     _c_cl, _s_pl
+        mov     _c_ch, _s_ph
+        mov     _mv_p, _s_kind
+        sjmp    12$
+14$:    lcall   _nextph
 12$:    clr     CSTEP                   ; 1
         reti                            ; 2
 
@@ -174,6 +186,19 @@ _nextph:
         mov     _c_ui, _s_pl            ; FAST_UP
         clr     _m_slow
         setb    _m_fu
+        ; A cruise next: keep its counts and the record after it in s_pl,
+        ; s_ph, s_kind (unused on the fast paths) for the inline switch.
+        clr     _m_upcr
+        mov     a, @r0
+        cjne    a, #2, 9$
+        inc     r0
+        mov     _s_pl, @r0
+        inc     r0
+        mov     _s_ph, @r0
+        mov     a, _mv_p
+        add     a, #5
+        mov     _s_kind, a
+        setb    _m_upcr
         sjmp    9$
 2$:     cjne    a, #2, 3$
         clr     _m_slow                 ; COUNT (carriage)
