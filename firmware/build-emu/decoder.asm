@@ -300,8 +300,8 @@ _scan:
 	subb	a,_scan_total_196608_22
 	jnc	00105$
 00104$:
-;	src/decoder.c:54: resync(1);
-	mov	dpl,#0x01
+;	src/decoder.c:54: resync(0); /* from the LEN byte: it may itself be a SYNC */
+	mov	dpl,#0x00
 	lcall	_resync
 ;	src/decoder.c:55: continue;
 	sjmp	00115$
@@ -359,8 +359,8 @@ _scan:
 	cjne	a,(_scan_sloc0_1_0 + 1),00154$
 	sjmp	00110$
 00154$:
-;	src/decoder.c:60: resync(1);
-	mov	dpl,#0x01
+;	src/decoder.c:60: resync(0); /* from the LEN byte: it may itself be a SYNC */
+	mov	dpl,#0x00
 	lcall	_resync
 ;	src/decoder.c:61: continue;
 	ljmp	00115$
@@ -487,8 +487,8 @@ _fw_rx_byte:
 	subb	a,_fw_rx_byte_total_327680_34
 	jnc	00110$
 00109$:
-;	src/decoder.c:54: resync(1);
-	mov	dpl,#0x01
+;	src/decoder.c:54: resync(0); /* from the LEN byte: it may itself be a SYNC */
+	mov	dpl,#0x00
 	lcall	_resync
 ;	src/decoder.c:55: continue;
 	sjmp	00120$
@@ -546,8 +546,8 @@ _fw_rx_byte:
 	cjne	a,(_fw_rx_byte_sloc0_1_0 + 1),00177$
 	sjmp	00114$
 00177$:
-;	src/decoder.c:60: resync(1);
-	mov	dpl,#0x01
+;	src/decoder.c:60: resync(0); /* from the LEN byte: it may itself be a SYNC */
+	mov	dpl,#0x00
 	lcall	_resync
 ;	src/decoder.c:61: continue;
 	ljmp	00120$

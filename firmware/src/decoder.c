@@ -51,13 +51,13 @@ static inline void scan(void) {
          * SYNC (the host never sends more than it was offered, plus the slack
          * a control frame needs). */
         if (len > FW_WIRE_MAX_PAYLOAD || total > room) {
-            resync(1);
+            resync(0); /* from the LEN byte: it may itself be a SYNC */
             continue;
         }
         if (rx_fill < total) return;
         if (crc16_block(r, (uint8_t)(total - 2), 0xFFFF) !=
             (uint16_t)(((uint16_t)r[total - 2] << 8) | r[total - 1])) {
-            resync(1);
+            resync(0); /* from the LEN byte: it may itself be a SYNC */
             continue;
         }
         {

@@ -194,6 +194,12 @@ class Link:
             if typ == T_HELLO and r.type == T_HELLO_REPLY:
                 self.seq = r.seq
                 return r
+            if typ == T_STATUS and r.type == T_ACK and r.seq == (s + 1) & 0xFF:
+                # STATUS was taken but its reply may have been lost: a repeat
+                # with this SEQ would only be acknowledged (a duplicate), so
+                # the next try asks again under the new SEQ.
+                self.seq = r.seq
+                continue
             if r.type == T_NAK or (r.type in (T_ACK, T_STATUS_REPLY) and r.seq == (s + 1) & 0xFF):
                 if r.type != T_NAK:
                     self.seq = r.seq

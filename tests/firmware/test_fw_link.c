@@ -325,6 +325,14 @@ static void test_resync(void) {
     n = frame(buf, 4, T_KEEPALIVE, NULL, 0);
     feed(buf, n);
     CHECK(one_reply().seq == 5);
+    /* A lone SYNC before a frame: the frame's own SYNC is read as LEN (0x7E,
+     * too long), and the rescan must start at that byte, which is a SYNC
+     * (found by fuzzing against the host's decoder). */
+    const uint8_t lone[1] = {FW_SYNC};
+    feed(lone, 1);
+    n = frame(buf, 5, T_KEEPALIVE, NULL, 0);
+    feed(buf, n);
+    CHECK(one_reply().seq == 6);
 }
 
 static void test_control(void) {
