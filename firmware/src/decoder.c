@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+#include "decoder.h"
+
+#include "crc16.h"
+
+static uint8_t rx_fill; /* bytes stored from LEN on, at fw_buf[fw_ops_end] */
+static uint8_t rx_sync; /* a SYNC was seen: collecting a candidate frame */
+
+void fw_rx_reset(void) {
+    rx_fill = 0;
+    rx_sync = 0;
+}
+
+uint8_t fw_rx_busy(void) { return rx_sync; }
+uint8_t fw_rx_fill(void) { return rx_fill; }
+
+/* Moves n bytes down (dst < src): the receive area only ever shifts toward
+ * its start. */
+static void move_down(FW_IDATA uint8_t *dst, const FW_IDATA uint8_t *src, uint8_t n) {
+    while (n--) *dst++ = *src++;
+}
+
+/* Drops the first `skip` stored bytes and looks for a SYNC in the rest; what
+ * follows it becomes the new candidate. Bytes before it are garbage. */
+static void resync(uint8_t skip) {
+    FW_IDATA uint8_t *r = fw_buf + fw_ops_end;
+    uint8_t i = skip;
+    while (i < rx_fill && r[i] != FW_SYNC) ++i;
+    if (i >= rx_fill) {
+        rx_fill = 0;
+        rx_sync = 0;
+        return;
+    }
+    ++i; /* past the SYNC */
+    move_down(r, r + i, (uint8_t)(rx_fill - i));
+    rx_fill = (uint8_t)(rx_fill - i);
+    rx_sync = 1;
+}
+
+/* Evaluates the stored bytes until a frame needs more of them. */
+static inline void scan(void) {
+    for (;;) {
+        FW_IDATA uint8_t *r;
+        uint8_t len, room, total;
+        if (!rx_sync || rx_fill == 0) return;
+        r = fw_buf + fw_ops_end;
+        room = (uint8_t)(FW_BUF_CAP - fw_ops_end);
+        len = r[0];
+        total = (uint8_t)(len + FW_FRAME_OVERHEAD);
+        /* A LEN the wire never carries, or one that cannot be stored: a false
+         * SYNC (the host never sends more than it was offered, plus the slack
+         * a control frame needs). */
+        if (len > FW_WIRE_MAX_PAYLOAD || total > room) {
+            resync(0); /* from the LEN byte: it may itself be a SYNC */
+            continue;
+        }
+        if (rx_fill < total) return;
+        if (crc16_block(r, (uint8_t)(total - 2), 0xFFFF) !=
+            (uint16_t)(((uint16_t)r[total - 2] << 8) | r[total - 1])) {
+            resync(0); /* from the LEN byte: it may itself be a SYNC */
+            continue;
+        }
+        {
+            /* Bytes after the frame arrived during a rescan: keep them, they
+             * are scanned for the next SYNC once the frame is handled. */
+            uint8_t left = (uint8_t)(rx_fill - total);
+            uint8_t old_end = fw_ops_end;
+            rx_fill = 0;
+            rx_sync = 0;
+            fw_frame(r);
+            if (left) {
+                FW_IDATA uint8_t *from = fw_buf + old_end + total;
+                r = fw_buf + fw_ops_end;
+                move_down(r, from, left);
+                rx_fill = left;
+                resync(0);
+            }
+        }
+    }
+}
+
+void fw_rx_byte(uint8_t b) {
+    if (!rx_sync) {
+        if (b == FW_SYNC) {
+            rx_sync = 1;
+            rx_fill = 0;
+        }
+        return;
+    }
+    /* scan() rejects a LEN whose frame would not fit, so this never overflows. */
+    fw_buf[fw_ops_end + rx_fill] = b;
+    ++rx_fill;
+    scan();
+}

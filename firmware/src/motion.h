@@ -1,0 +1,28 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+#ifndef TACTUS_FW_MOTION_H
+#define TACTUS_FW_MOTION_H
+#include "fw.h"
+
+/* Moves and timed waits on timer 2 (step.asm runs them). One at a time: the
+ * feed and the carriage never move together on this firmware. */
+
+/* Pins (firmware/README.md, "Pin map"). */
+#define PIN_CSTEP 0x01 /* P1.0 */
+#define PIN_FSTEP 0x04 /* P1.2 */
+
+extern volatile __bit mv_done, mv_limit;
+
+void motion_init(void);
+/* A carriage table move of n steps (n >= 1) in the direction already set. */
+void move_carriage(uint16_t n);
+/* A feed table move of n steps. */
+void move_feed(uint16_t n);
+/* n steps at a constant interval on the pin mask (seek). */
+void move_constant(uint8_t pin, uint16_t n, uint16_t interval);
+/* Toward the limit switch at `interval`, at most n steps. */
+void move_home(uint16_t n, uint16_t interval);
+/* A timed wait of `ticks` machine cycles (at least 1). */
+void wait_ticks(uint16_t ticks);
+void motion_stop(void);
+
+#endif
