@@ -74,7 +74,8 @@ Result<void> check_braille_fits(const document::Document& doc, const LayoutOptio
                         std::to_string(cols) + " cells (the file's page is " + source_size +
                         "), but the page holds " + std::to_string(g.cells_per_line) + " cells x " +
                         std::to_string(g.lines_per_page) +
-                        " lines; nothing was embossed. Use a printer or --preset whose page is at least "
+                        " lines; stopped before anything was laid out or embossed. Use a printer or --preset whose page is"
+                        " at least "
                         "that large, or --reflow to lay the braille out again on this page",
                     pages[p].source_line > 0 ? std::to_string(pages[p].source_line) : std::string{});
     }

@@ -9,6 +9,11 @@
 #include <memory>
 
 namespace tactus::translate {
+namespace {
+
+bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000 || c == 0xA0; }
+
+}  // namespace
 
 std::vector<bool> print_break_opportunities(std::u32string_view text) {
     std::vector<bool> out(text.size() + 1, false);
@@ -64,14 +69,17 @@ LineBreaks find_line_breaks(std::u32string_view text, const document::BrailleLin
         }
         const auto after = suffix_min[i];
         if (before >= after) continue;  // never: inside one print character's cells
-        // Print may break anywhere between the last character before and the
-        // first after (characters that gave no cells lie in between).
-        bool print_allows = false;
-        for (auto p = before + 1; p <= after && p < print.size(); ++p)
-            if (print[p]) {
-                print_allows = true;
-                break;
-            }
+        // The next line would start with print character `after`: may print
+        // break before it? Characters between `before` and `after` gave no cells
+        // of their own (liblouis folded them into a neighbour's), so the cut is
+        // before `after` whatever print says about them.
+        bool print_allows = after < print.size() && print[after];
+        // A space that braille writes as a sign is not a word space: UEB's
+        // numeric space (dot 5 inside "84 2") at a line end would read as the
+        // line continuation indicator and make 842 of it.
+        if (print_allows && !cells[i - 1].blank() && source[i - 1] < text.size() &&
+            is_space(text[source[i - 1]]))
+            print_allows = false;
         out[i] = print_allows ? BreakBefore::allowed : BreakBefore::between_chars;
     }
     return out;

@@ -8,6 +8,7 @@ namespace tactus::translate {
 namespace {
 
 bool is_digit(char32_t c) { return c >= U'0' && c <= U'9'; }
+bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000 || c == 0xA0; }
 
 // Index of the first cell made from print character `q` or later: where a cut
 // before character q falls in the cells, if it is clean (no cell of an earlier
@@ -95,17 +96,27 @@ private:
         for (int pass = 0; pass < 2; ++pass) {
             for (std::size_t q = hint; q > pos_; --q) {
                 const bool digits = is_digit(word_[q - 1]) && is_digit(word_[q]);
+                // A space inside a word is UEB's numeric space ("6 1" is one number).
+                const bool numeric_space = q >= pos_ + 2 && is_space(word_[q - 1]) && is_digit(word_[q - 2]) &&
+                                           is_digit(word_[q]);
+                if ((is_space(word_[q - 1]) || is_space(word_[q])) && !numeric_space) continue;
                 const bool syllable = q < hyphenation_.size() && hyphenation_[q];
-                if (pass == 0 && !digits && !syllable) continue;
-                if (digits && rules_.number_continuation) {
-                    const auto k = cell_cut(rest, static_cast<std::uint32_t>(q - pos_));
-                    if (!k || *k == 0 || *k + 1 > room_) continue;
+                if (pass == 0 && !digits && !numeric_space && !syllable) continue;
+                if ((digits || numeric_space) && rules_.number_continuation) {
+                    // UEB 6.10.3: between digits, the one-cell continuation
+                    // indicator; 6.10.4: at a numeric space, the two-cell one in
+                    // its place.
+                    const auto at = numeric_space ? q - 1 : q;
+                    const std::size_t signs = numeric_space ? 2 : 1;
+                    const auto k = cell_cut(rest, static_cast<std::uint32_t>(at - pos_));
+                    if (!k || *k == 0 || *k + signs > room_) continue;
                     document::BrailleLine cells(rest.cells.begin(),
-                                      rest.cells.begin() + static_cast<std::ptrdiff_t>(*k));
-                    cells.push_back(*rules_.number_continuation);
+                                                rest.cells.begin() + static_cast<std::ptrdiff_t>(*k));
+                    cells.insert(cells.end(), signs, *rules_.number_continuation);
                     accept(std::move(cells), q, true);
                     return {};
                 }
+                if (numeric_space) continue;
                 auto left = translate(q, true);
                 if (!left) return std::unexpected(left.error());
                 if (left->cells.size() <= room_) {

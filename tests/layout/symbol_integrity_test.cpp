@@ -58,13 +58,13 @@ bool is_space(char32_t c) { return c == U' '; }
 bool is_dash(char32_t c) { return c == U'-' || c == 0x2010 || c == 0x2013 || c == 0x2014; }
 bool is_cjk_stop(char32_t c) { return c == 0xFF0C || c == 0x3002 || c == 0x3001; }  // ，。、
 
-// What print allows between text[a] and text[b] (a < b, the last character
-// before the break and the first after): a stricter reading of UAX #14 than
-// ICU's, for the characters the generators below use.
+// What print allows before text[b], the first character of the next line (the
+// characters from a to b gave no cells of their own): a stricter reading of
+// UAX #14 than ICU's, for the characters the generators below use.
 bool print_allows(const std::u32string& t, int a, int b) {
-    for (int i = a; i < b; ++i)
-        if (is_space(t[static_cast<std::size_t>(i)])) return true;
+    (void)a;
     const char32_t x = t[static_cast<std::size_t>(b - 1)], y = t[static_cast<std::size_t>(b)];
+    if (is_space(x) && !is_space(y)) return true;
     if (is_dash(x) && !is_dash(y) && !(y >= U'0' && y <= U'9')) return true;
     return (is_han(x) || is_cjk_stop(x)) && is_han(y);
 }
@@ -97,6 +97,11 @@ std::vector<std::string> check_breaks(const std::string& table, const std::strin
                 for (std::size_t i = o; i < oracle.cells.size(); ++i) after = std::min(after, oracle.source[i]);
                 if (!clean)
                     problems.push_back("line " + std::to_string(l + 1) + " starts inside a print character's cells: " +
+                                       brf(lines[l - 1]) + " | " + brf(line));
+                else if (is_space(text[static_cast<std::size_t>(oracle.source[o - 1])]))
+                    // UEB's numeric space (dot 5 in "84 2") ending a line reads as
+                    // the line continuation indicator: 842.
+                    problems.push_back("line " + std::to_string(l) + " ends with a space written as a sign: " +
                                        brf(lines[l - 1]) + " | " + brf(line));
                 else if (!print_allows(text, before + 1, after))
                     problems.push_back("line " + std::to_string(l + 1) + " starts where print allows no break: " +
