@@ -70,7 +70,7 @@ nlohmann::json tuning_json(const estimate::MoveTuner& t) {
 void run_plan(const PlanArgs& a) {
     const auto prof = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(prof);
-    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
+    const auto doc = lay_out_for_cli(a.layout, options);
     auto planner = require(plan::Planner::create(prof));
     auto& out = std::cout;
     if (a.json) out << "{\"profile\":" << nlohmann::json(prof.name).dump() << ",\"sheets\":[";

@@ -19,6 +19,8 @@
 #include "pipeline/pipeline.hpp"
 
 using namespace tactus;
+using namespace tactus::document;
+using namespace tactus::pipeline;
 using Clock = std::chrono::steady_clock;
 
 namespace {
