@@ -47,9 +47,13 @@ TEST(BrailleCli, PefThatDoesNotFitStopsWithExitFiveAndOffersReflow) {
     EXPECT_NE(r.err.find("--reflow"), std::string::npos) << r.err;
     const auto reflowed = run_command(cli("layout --reflow --to brf " + kPef + "us_braille_40x25.pef"));
     EXPECT_EQ(reflowed.exit_code, 0) << reflowed.err;
-    const auto us = run_command(cli("layout --preset us-braille --to brf " + kPef + "us_braille_40x25.pef"));
+    const auto us = run_command(cli("layout --preset us-braille --single-sided --to brf " + kPef +
+                                    "us_braille_40x25.pef"));
     EXPECT_EQ(us.exit_code, 0) << us.err;
     EXPECT_EQ(count(us.out, '\f'), 2u);
+    // On interpoint paper each page of the single-sided PEF gets a blank back.
+    const auto both = run_command(cli("layout --preset us-braille --to brf " + kPef + "us_braille_40x25.pef"));
+    EXPECT_EQ(count(both.out, '\f'), 4u);
 }
 
 TEST(BrailleCli, PefRoundTripThroughTheCommandLineKeepsMetadata) {

@@ -76,7 +76,8 @@ bool print_allows(const std::u32string& t, int a, int b) {
 std::vector<std::string> check_breaks(const std::string& table, const std::string& utf8,
                                       const std::vector<BrailleLine>& lines) {
     std::vector<std::string> problems;
-    const auto text = *utf8_to_utf32(utf8);
+    const auto decoded = utf8_to_utf32(utf8);
+    const std::u32string text = decoded.value();
     const auto oracle = louis_oracle(table, text);
     std::size_t o = 0;  // next oracle cell
     const auto skip_blanks = [&] {
@@ -260,7 +261,8 @@ std::string random_english(std::mt19937& rng) {
 
 std::string random_chinese(std::mt19937& rng, const std::string& sample) {
     std::u32string han;
-    for (char32_t c : *utf8_to_utf32(sample))
+    const auto decoded = utf8_to_utf32(sample);
+    for (char32_t c : decoded.value())
         if (is_han(c)) han.push_back(c);
     std::u32string out;
     const int n = std::uniform_int_distribution<int>(5, 120)(rng);
