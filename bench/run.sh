@@ -10,6 +10,7 @@ mkdir -p "$data"
 run() { echo "== $1"; shift; "$@"; }
 run "layout: KJV, Tactus pipeline vs lou_translate" "$build/bench/layout/bench_layout" "$data/kjv.txt"
 run "plan + estimate: KJV" "$build/bench/plan/bench_plan" "$data/kjv.txt"
+run "single-line text: 1, 4, 16 MB" "$build/bench/single_line/bench_single_line"
 run "import: 100 MiB text" "$build/bench/import/bench_import"
 run "link: efficiency on the pty simulator" "$build/bench/link/bench_link"
 run "spool: 10,000 jobs" "$build/bench/spool/bench_spool"

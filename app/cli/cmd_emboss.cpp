@@ -50,7 +50,7 @@ Prepared prepare(const EmbossArgs& a) {
     }
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
-    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
+    const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, profile);
     out.plan = require(plan::plan_job(doc, profile));
     out.config = profile::controller_config(profile);

@@ -56,8 +56,7 @@ void print_summary(std::ostream& out, const layout::PagedDocument& doc, const pi
 
 void run_layout(const LayoutCommandArgs& a) {
     const auto options = a.layout.pipeline_options();
-    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
-    for (const auto& w : doc.warnings) std::cerr << "tactus-cli: " << a.layout.file << ": " << w << '\n';
+    const auto doc = lay_out_for_cli(a.layout, options);
     if (a.summary) {
         print_summary(std::cout, doc, options, a.layout.file);
         if (a.to.empty()) return;
@@ -65,9 +64,8 @@ void run_layout(const LayoutCommandArgs& a) {
     if (a.to.empty())
         throw CLI::RequiredError("--to (or --summary)");
     const auto format = require(exporter::parse_export_format(a.to), exit_usage);
-    exporter::PefMetadata meta;
-    meta.title = std::filesystem::path(a.layout.file).stem().string();
-    meta.date = today();
+    // A PEF's own metadata is kept; anything else gets the file's name and today.
+    const auto meta = exporter::pef_metadata(doc.metadata, std::filesystem::path(a.layout.file).stem().string(), today());
     if (a.output.empty() || a.output == "-") {
         require(exporter::write_document(doc, format, meta, std::cout));
         return;

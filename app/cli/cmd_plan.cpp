@@ -71,7 +71,7 @@ nlohmann::json tuning_json(const estimate::MoveTuner& t) {
 void run_plan(const PlanArgs& a) {
     const auto prof = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(prof);
-    const auto doc = require(pipeline::lay_out_file(a.layout.file, options));
+    const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, prof);
     auto planner = require(plan::Planner::create(prof));
     auto& out = std::cout;

@@ -18,6 +18,8 @@ enum ExitCode : int {
     exit_usage = 2,      // bad arguments
     exit_bad_input = 3,  // unreadable or malformed input file, profile, table
     exit_device = 4,     // device missing, busy or gone
+    exit_page_too_small = 5,  // ready-made braille (BRF, PEF) has pages larger than the
+                              // target page; nothing was embossed (--reflow lays it out again)
 };
 
 // The one table from a core error's kind to the exit code.

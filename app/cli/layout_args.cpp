@@ -1,7 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "layout_args.hpp"
 
+#include <unistd.h>
+
+#include <chrono>
+#include <iostream>
+
 #include "command.hpp"
+#include "layout/braille_pages.hpp"
 
 namespace tactus::cli {
 
@@ -14,9 +20,17 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--preset", preset, "Page format preset (default a4):" + presets);
     cmd.add_option("--cells", cells, "Cells per line (default 27)")->check(CLI::Range(4, 200));
     cmd.add_option("--lines", lines, "Lines per page (default 24)")->check(CLI::Range(3, 200));
-    if (with_interpoint)
+    if (with_interpoint) {
         cmd.add_flag("--interpoint", interpoint,
-                     "Interpoint: emboss both sides of each sheet (default single-sided)");
+                     "Interpoint: both sides of each sheet (the default of the a4, us-braille and letter presets)");
+        cmd.add_flag("--single-sided", single_sided, "One side of each sheet (the default of a4-single)")
+            ->excludes("--interpoint");
+    }
+    cmd.add_flag("--reflow", reflow,
+                 "BRF/PEF input: lay the braille out again on this page instead of keeping its own pages "
+                 "(without it, a file whose pages do not fit is refused with exit status 5)");
+    cmd.add_flag("--blank-page", blank_page,
+                 "An empty document gives one blank page (without it, an empty document is an error, exit status 3)");
     cmd.add_flag("--eight-dot", eight_dot, "8-dot cells (keeps dots 7 and 8)");
     cmd.add_option("--page-numbers", page_numbers,
                    "Braille page number position: none, top-right, bottom-right, bottom-centre")
@@ -43,7 +57,11 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
         if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset"});
         o.layout.geometry = p->geometry;
     }
-    o.layout.geometry.interpoint = interpoint;
+    // The preset decides sides (a4 is interpoint, as its help says); the flags override it.
+    if (interpoint) o.layout.geometry.interpoint = true;
+    if (single_sided) o.layout.geometry.interpoint = false;
+    o.reflow_braille = reflow;
+    o.allow_empty = blank_page;
     if (cells > 0) o.layout.geometry.cells_per_line = cells;
     if (lines > 0) o.layout.geometry.lines_per_page = lines;
     o.layout.geometry.eight_dot = eight_dot;
@@ -66,6 +84,52 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options(const profile::PrinterPro
     if (lines == 0) g.lines_per_page = machine.geometry.lines_per_page;
     g.eight_dot = machine.geometry.eight_dot || eight_dot;
     return o;
+}
+
+namespace {
+
+// "laying out: 42%" on a terminal, once a job has taken more than a second;
+// nothing when stderr is a file or a pipe (scripts read it).
+class ProgressLine {
+public:
+    ProgressLine() : tty_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+    ~ProgressLine() {
+        if (shown_) std::cerr << "\r                         \r" << std::flush;
+    }
+    void operator()(std::size_t done, std::size_t total) {
+        if (!tty_ || total == 0) return;
+        const auto percent = static_cast<int>(100 * done / total);
+        if (percent == last_) return;
+        if (!shown_ && std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+        last_ = percent;
+        shown_ = true;
+        std::cerr << "\rlaying out: " << percent << "%" << std::flush;
+    }
+
+private:
+    bool tty_;
+    std::chrono::steady_clock::time_point start_;
+    bool shown_ = false;
+    int last_ = -1;
+};
+
+}  // namespace
+
+layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options) {
+    const auto doc = require(import::import_file(args.file, options.import));
+    if (layout::is_ready_braille(doc) && !options.reflow_braille)
+        if (auto fits = layout::check_braille_fits(doc, options.layout); !fits)
+            fail_with(exit_page_too_small, located(fits.error(), args.file));
+    Result<layout::PagedDocument> laid = fail("not laid out");
+    {
+        ProgressLine progress;
+        auto with_progress = options;
+        with_progress.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+        laid = pipeline::lay_out(doc, with_progress);
+    }
+    auto paged = require(std::move(laid));
+    for (const auto& w : paged.warnings) std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
+    return paged;
 }
 
 }  // namespace tactus::cli

@@ -20,7 +20,10 @@ struct LayoutArgs {
     std::string page_numbers = "bottom-right";
     int cells = 0;  // 0: from the preset
     int lines = 0;
-    bool interpoint = false;
+    bool interpoint = false;    // --interpoint: both sides, whatever the preset says
+    bool single_sided = false;  // --single-sided: one side, whatever the preset says
+    bool reflow = false;        // lay ready-made braille out again instead of keeping its pages
+    bool blank_page = false;    // an empty document gives one blank page instead of an error
     bool eight_dot = false;
     bool no_print_pages = false;
     int indent = 2;
@@ -33,5 +36,10 @@ struct LayoutArgs {
     // command line overrides it (the planner then refuses pages that do not fit).
     [[nodiscard]] pipeline::PipelineOptions pipeline_options(const profile::PrinterProfile& machine) const;
 };
+
+// Imports `args.file`, tells the user before anything else happens when
+// ready-made braille does not fit the page (exit_page_too_small) or the table
+// does not suit the text (a warning), then lays it out. Warnings go to stderr.
+layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options);
 
 }  // namespace tactus::cli

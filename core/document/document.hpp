@@ -2,7 +2,9 @@
 #pragma once
 // The document model every importer produces and the translator consumes:
 // a flat list of blocks, each a run of styled text, or braille taken verbatim.
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,10 +52,37 @@ struct Block {
     }
 };
 
+// Braille that arrives formatted (BRF, PEF): the page grid it was made for.
+struct BrailleGrid {
+    int cols = 0;  // PEF cols (the widest section); BRF: the longest line
+    int rows = 0;  // PEF rows (the tallest section); BRF: the longest page
+    bool operator==(const BrailleGrid&) const = default;
+};
+
+// A PEF section: its pages start at block `first_block` and on a new sheet.
+struct BrailleSection {
+    std::size_t first_block = 0;
+    int cols = 0;
+    int rows = 0;
+    bool duplex = false;
+    bool starts_volume = false;
+    bool operator==(const BrailleSection&) const = default;
+};
+
+// One Dublin Core element of a PEF head: "title", "creator", ... and its text.
+struct MetadataItem {
+    std::string name;
+    std::string value;
+    bool operator==(const MetadataItem&) const = default;
+};
+
 struct Document {
     std::vector<Block> blocks;
     std::string source_name;  // file name the document came from, for messages
     std::string encoding;     // detected or given source encoding (text imports)
+    std::optional<BrailleGrid> braille_grid;     // BRF, PEF: the source's page size
+    std::vector<BrailleSection> braille_sections;  // PEF sections, in order
+    std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order
     bool operator==(const Document&) const = default;
 };
 

@@ -62,7 +62,8 @@ void LiveLayout::translate_entry(std::size_t i) {
         }
         e.block->label = label;
     }
-    auto tb = translate::translate_block(*e.block, translator_);
+    auto tb = translate::translate_block(*e.block, translator_,
+                              layout::word_room(options_, e.block->kind, e.block->level));
     if (!tb) {
         e.error = located(tb.error(), "line " + std::to_string(i + 1));
         return;
@@ -142,8 +143,9 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
 Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
     options_ = std::move(options);
-    for (std::size_t i = 0; i < entries_.size(); ++i)  // braille lines wrap to the new width
-        if (entries_[i].block && entries_[i].block->kind == document::BlockKind::braille) translate_entry(i);
+    // Braille lines wrap to the new width, and a word too long for the new line
+    // is divided again (the division is made at translation).
+    for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};
     relayout_from(0);
     return {};
@@ -288,21 +290,16 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
     const auto& tb = e.translated;
     if (e.block && !e.error &&
         (tb.kind == document::BlockKind::paragraph || tb.kind == document::BlockKind::heading || tb.kind == document::BlockKind::list_item)) {
-        int first = options_.paragraph_indent, runover = 0;
-        bool centre = false;
-        if (tb.kind == document::BlockKind::heading) {
-            centre = options_.centre_headings && tb.level <= 2;
-            first = runover = centre ? 0 : 4;
-            if (options_.blank_line_before_heading && line > 0) ++line;
-        } else if (tb.kind == document::BlockKind::list_item) {
-            first = std::min(2 * std::max(tb.level - 1, 0), width / 2);
-            runover = first + options_.list_runover;
-        }
+        // The paginator's own indents (one rule, in core/layout).
+        const auto indents = layout::block_indents(options_, tb.kind, tb.level);
+        const int first = indents.first, runover = indents.runover;
+        const bool centre = indents.centred;
+        if (tb.kind == document::BlockKind::heading && options_.blank_line_before_heading && line > 0) ++line;
         // Count the written cells before the target; blanks at line ends vanish when wrapping.
         cell = std::min(cell, tb.cells.size());
         std::size_t target = 0;
         for (std::size_t c = 0; c < cell; ++c) if (!tb.cells[c].blank()) ++target;
-        const auto lines = layout::break_lines(tb.cells, width, first, runover);
+        const auto lines = layout::break_lines(tb.cells, tb.breaks, width, first, runover);
         std::size_t seen = 0;
         for (std::size_t l = 0; l < lines.size(); ++l) {
             int pad = 0;

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/result.hpp"
 #include "layout/page.hpp"
@@ -20,14 +21,23 @@ struct PefMetadata {
     std::string identifier;  // empty: derived from the content
     std::string language;    // BCP 47, e.g. "en" or "zh-TW"; empty: omitted
     std::string date;        // YYYY-MM-DD; empty: omitted
+    // The dc: elements of a source PEF, in its order: when present they are
+    // written as they are instead of the fields above, so metadata survives a
+    // round trip (dc:format is always application/x-pef+xml).
+    std::vector<document::MetadataItem> source;
 };
+
+// The metadata to write: the source's own (a PEF's dc: elements) when it has
+// any, else a title and date made for this export.
+PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title, std::string date);
 
 // Braille ASCII: CRLF after every line, a form feed after every page (blank
 // backs included, so an interpoint embosser stays in step). Fails on dots 7-8,
 // which BRF cannot carry, naming the page and line.
 Result<std::string> to_brf(const layout::PagedDocument& doc);
 
-// PEF 2008-1: one volume, one section; duplex from the geometry.
+// PEF 2008-1: one volume; one section with duplex from the geometry, or the
+// source's sections with their own duplex (ready-made braille).
 Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta = {});
 
 // Unicode braille text: LF line ends, a form feed between pages.

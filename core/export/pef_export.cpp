@@ -29,8 +29,37 @@ std::string content_id(const layout::PagedDocument& doc) {
     return buf;
 }
 
+void write_page(const layout::Page& page, std::string& row, std::ostream& out) {
+    std::size_t used = page.lines.size();
+    while (used > 0 && page.lines[used - 1].empty()) --used;
+    if (used == 0) {
+        out << "        <page />\n";
+        return;
+    }
+    out << "        <page>\n";
+    for (std::size_t i = 0; i < used; ++i) {
+        if (page.lines[i].empty()) {
+            out << "          <row />\n";
+            continue;
+        }
+        row = "          <row>";
+        for (document::Cell c : page.lines[i]) append_utf8(row, c.unicode());
+        row += "</row>\n";
+        out << row;
+    }
+    out << "        </page>\n";
+}
 
 }  // namespace
+
+PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title,
+                         std::string date) {
+    PefMetadata m;
+    m.title = std::move(title);
+    m.date = std::move(date);
+    m.source = source;
+    return m;
+}
 
 Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta, std::ostream& out) {
     // The head carries user text (title), so pugixml writes and escapes it. The
@@ -42,51 +71,70 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
     auto m = head.append_child("meta");
     m.append_attribute("xmlns:dc") = "http://purl.org/dc/elements/1.1/";
     m.append_child("dc:format").text() = "application/x-pef+xml";
-    m.append_child("dc:identifier").text() =
-        (meta.identifier.empty() ? content_id(doc) : meta.identifier).c_str();
-    m.append_child("dc:title").text() = meta.title.c_str();
-    if (!meta.language.empty()) m.append_child("dc:language").text() = meta.language.c_str();
-    if (!meta.date.empty()) m.append_child("dc:date").text() = meta.date.c_str();
+    if (!meta.source.empty()) {
+        // The source's own metadata, in its order; an identifier is required.
+        bool has_identifier = false;
+        for (const auto& item : meta.source) {
+            if (item.name == "format") continue;
+            has_identifier = has_identifier || item.name == "identifier";
+            m.append_child(("dc:" + item.name).c_str()).text() = item.value.c_str();
+        }
+        if (!has_identifier) m.append_child("dc:identifier").text() = content_id(doc).c_str();
+    } else {
+        m.append_child("dc:identifier").text() =
+            (meta.identifier.empty() ? content_id(doc) : meta.identifier).c_str();
+        m.append_child("dc:title").text() = meta.title.c_str();
+        if (!meta.language.empty()) m.append_child("dc:language").text() = meta.language.c_str();
+        if (!meta.date.empty()) m.append_child("dc:date").text() = meta.date.c_str();
+    }
     std::ostringstream head_text;
     head_xml.save(head_text, "  ", pugi::format_indent | pugi::format_no_declaration,
                   pugi::encoding_utf8);
 
     const auto& g = doc.geometry;
+    // Ready-made braille keeps its sections and their duplex; laid-out text is one
+    // section whose duplex is the layout's.
+    const bool volume_duplex = doc.sections.empty() ? g.interpoint : doc.sections.front().duplex;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\">\n";
     std::istringstream head_lines(head_text.str());
     for (std::string line; std::getline(head_lines, line);) out << "  " << line << '\n';
     out << "  <body>\n    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page
         << "\" rowgap=\"" << (g.eight_dot ? 1 : 0) << "\" duplex=\""
-        << (g.interpoint ? "true" : "false") << "\">\n      <section>\n";
+        << (volume_duplex ? "true" : "false") << "\">\n";
     std::string row;
-    for (const auto& page : doc.pages) {
+    std::size_t next_section = 0;
+    bool section_has_page = false;
+    out << "      <section>\n";
+    for (std::size_t p = 0; p < doc.pages.size(); ++p) {
+        const auto& page = doc.pages[p];
+        if (next_section < doc.sections.size() && doc.sections[next_section].first_page == p) {
+            const bool d = doc.sections[next_section].duplex;
+            if (next_section > 0) {
+                if (!section_has_page) out << "        <page />\n";  // a section needs a page
+                out << "      </section>\n";
+                out << (d == volume_duplex ? std::string("      <section>\n")
+                                           : std::string("      <section duplex=\"") + (d ? "true" : "false") + "\">\n");
+            } else if (d != volume_duplex) {
+                // Cannot happen: the volume takes the first section's duplex.
+                return fail("first section's duplex differs from its volume");
+            }
+            section_has_page = false;
+            ++next_section;
+        }
+        // Blank backs added for the embosser: PEF's sections and duplex say the same.
+        if (page.filler) continue;
         if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
             return fail("page has more rows than the volume allows",
                         "page " + std::to_string(page.braille_number));
-        std::size_t used = page.lines.size();
-        while (used > 0 && page.lines[used - 1].empty()) --used;
-        if (used == 0) {
-            out << "        <page />\n";
-            continue;
-        }
-        out << "        <page>\n";
-        for (std::size_t i = 0; i < used; ++i) {
+        for (std::size_t i = 0; i < page.lines.size(); ++i)
             if (page.lines[i].size() > static_cast<std::size_t>(g.cells_per_line))
                 return fail("row longer than cols", "page " + std::to_string(page.braille_number) +
                                                         " row " + std::to_string(i + 1));
-            if (page.lines[i].empty()) {
-                out << "          <row />\n";
-                continue;
-            }
-            row = "          <row>";
-            for (document::Cell c : page.lines[i]) append_utf8(row, c.unicode());
-            row += "</row>\n";
-            out << row;
-        }
-        out << "        </page>\n";
+        write_page(page, row, out);
+        section_has_page = true;
     }
-    if (doc.pages.empty()) out << "        <page />\n";  // a section needs a page
+    if (!section_has_page) out << "        <page />\n";  // a section needs a page
     out << "      </section>\n    </volume>\n  </body>\n</pef>\n";
     return {};
 }

@@ -39,6 +39,8 @@ public:
     void braille_page_break(int source_line);
     void braille_block(std::vector<document::BrailleLine> lines, int source_line);
 
+    // Blocks kept so far (the open one not counted).
+    [[nodiscard]] std::size_t size() const { return blocks_.size(); }
     // True once the block cap is reached; importers may stop early.
     [[nodiscard]] bool full() const { return overflow_line_ >= 0; }
     Result<document::Document> finish();

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // PEF 2008-1: every <page> becomes one verbatim braille block (its <row>s), with
-// a braille page break between pages. Volume and section boundaries start a new
-// page in PEF anyway, so they become page breaks too.
+// a braille page break between pages. The page grid (cols, rows, duplex of each
+// volume and section, sections overriding their volume), the sections
+// themselves and the dc: metadata are kept in the document, so the pages can be
+// embossed and exported as they are (layout/braille_pages.hpp). Impossible
+// attribute values (cols="0", rows="-5", duplex="maybe") are refused with their line.
 #include <array>
+#include <charconv>
 #include <cstdio>
 
 #include "common/utf8.hpp"
@@ -15,6 +19,20 @@ namespace tactus::import::detail {
 namespace {
 
 constexpr std::string_view pef_ns = "http://www.daisy.org/ns/2008/pef";
+constexpr std::string_view dc_ns = "http://purl.org/dc/elements/1.1/";
+
+std::string_view trim(std::string_view s) {
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) return {};
+    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+// The grid in force for a section: its volume's attributes, overridden by its own.
+struct Grid {
+    int cols = 0;
+    int rows = 0;
+    bool duplex = false;
+};
 
 class PefReader {
 public:
@@ -27,29 +45,98 @@ public:
                             std::string(namespace_uri(root)) + "', expected <pef> in '" +
                             std::string(pef_ns) + "'",
                         std::to_string(line_of(root)));
+        read_metadata(pef_child(root, "head"));
         const auto body = pef_child(root, "body");
         if (!body) return fail("PEF has no <body>", std::to_string(line_of(root)));
         bool any_volume = false;
         for (const auto& volume : pef_children(body, "volume")) {
             any_volume = true;
-            for (const auto& section : pef_children(volume, "section"))
+            Grid volume_grid;
+            if (auto ok = read_grid(volume, volume_grid, true); !ok) return std::unexpected(ok.error());
+            bool first_section = true;
+            for (const auto& section : pef_children(volume, "section")) {
+                Grid grid = volume_grid;
+                if (auto ok = read_grid(section, grid, false); !ok) return std::unexpected(ok.error());
+                sections_.push_back(document::BrailleSection{builder_.size(), grid.cols, grid.rows, grid.duplex,
+                                                   first_section});
+                first_section = false;
+                max_cols_ = std::max(max_cols_, grid.cols);
+                max_rows_ = std::max(max_rows_, grid.rows);
                 for (const auto& page : pef_children(section, "page"))
-                    if (auto ok = read_page(page); !ok) return std::unexpected(ok.error());
+                    if (auto ok = read_page(page, grid); !ok) return std::unexpected(ok.error());
+            }
         }
         if (!any_volume) return fail("PEF <body> has no <volume>", std::to_string(line_of(body)));
-        return builder_.finish();
+        auto doc = builder_.finish();
+        if (!doc) return doc;
+        doc->braille_sections = std::move(sections_);
+        doc->braille_grid = document::BrailleGrid{max_cols_, max_rows_};
+        doc->metadata = std::move(metadata_);
+        return doc;
     }
 
 private:
-    Result<void> read_page(const pugi::xml_node& page) {
+    // Every Dublin Core element of <meta>, in document order (dc:format included),
+    // so an exported PEF can carry them again.
+    void read_metadata(const pugi::xml_node& head) {
+        if (!head) return;
+        for (const auto& meta : head.children()) {
+            if (!is_pef(meta, "meta")) continue;
+            for (const auto& e : meta.children())
+                if (e.type() == pugi::node_element && namespace_uri(e) == dc_ns)
+                    metadata_.push_back(document::MetadataItem{std::string(local_name(e)), std::string(trim(e.child_value()))});
+        }
+    }
+
+    // xsd:positiveInteger / xsd:boolean as the schema defines them.
+    Result<void> read_grid(const pugi::xml_node& n, Grid& grid, bool required) {
+        const auto where = std::to_string(line_of(n));
+        const auto element = "<" + std::string(local_name(n)) + ">";
+        for (const auto& [name, field] : {std::pair{"cols", &grid.cols}, std::pair{"rows", &grid.rows}}) {
+            const auto a = n.attribute(name);
+            if (!a) {
+                if (required) return fail(element + " has no " + name + " attribute", where);
+                continue;
+            }
+            auto v = trim(a.value());
+            if (v.starts_with('+')) v.remove_prefix(1);
+            int value = 0;
+            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
+            if (v.empty() || ec != std::errc{} || end != v.data() + v.size() || value < 1 || value > 1000)
+                return fail(element + " " + name + "=\"" + a.value() +
+                                "\" is not a page size: it must be a whole number from 1 to 1000",
+                            where);
+            *field = value;
+        }
+        if (const auto a = n.attribute("duplex")) {
+            const auto v = trim(a.value());
+            if (v == "true" || v == "1") grid.duplex = true;
+            else if (v == "false" || v == "0") grid.duplex = false;
+            else
+                return fail(element + " duplex=\"" + std::string(a.value()) + "\" must be true or false", where);
+        } else if (required) {
+            return fail(element + " has no duplex attribute", where);
+        }
+        return {};
+    }
+
+    Result<void> read_page(const pugi::xml_node& page, const Grid& grid) {
         if (builder_.full()) return {};
         builder_.braille_page_break(line_of(page));
         std::vector<document::BrailleLine> rows;
         for (const auto& row : pef_children(page, "row")) {
             auto line = read_row(row);
             if (!line) return std::unexpected(line.error());
+            if (static_cast<int>(line->size()) > grid.cols)
+                return fail("row of " + std::to_string(line->size()) + " cells is longer than cols=\"" +
+                                std::to_string(grid.cols) + "\"",
+                            std::to_string(line_of(row)));
             rows.push_back(std::move(*line));
         }
+        if (static_cast<int>(rows.size()) > grid.rows)
+            return fail("page has " + std::to_string(rows.size()) + " rows but rows=\"" + std::to_string(grid.rows) +
+                            "\"",
+                        std::to_string(line_of(page)));
         builder_.braille_block(std::move(rows), line_of(page));
         return {};
     }
@@ -98,6 +185,9 @@ private:
 
     LineIndex lines_;
     DocumentBuilder builder_;
+    std::vector<document::BrailleSection> sections_;
+    std::vector<document::MetadataItem> metadata_;
+    int max_cols_ = 0, max_rows_ = 0;
 };
 
 }  // namespace

@@ -36,6 +36,30 @@ Result<PageNumberPosition> parse_page_number_position(std::string_view s) {
                 "--page-numbers");
 }
 
+BlockIndents block_indents(const LayoutOptions& o, document::BlockKind kind, int level) {
+    const int width = o.geometry.cells_per_line - o.left_margin - o.right_margin;
+    switch (kind) {
+        case document::BlockKind::heading:
+            // BANA Braille Formats §4.4-4.6: the main heading centred, the next
+            // level a cell-5 heading, deeper levels cell-7 headings; cell-5 and
+            // cell-7 headings are blocked (their runover lines start in the same cell).
+            if (o.centre_headings && level <= 1) return {0, 0, true};
+            return level <= 2 ? BlockIndents{4, 4, false} : BlockIndents{6, 6, false};
+        case document::BlockKind::list_item: {
+            const int indent = std::min(2 * std::max(level - 1, 0), width / 2);
+            return {indent, indent + o.list_runover, false};
+        }
+        default:
+            return {o.paragraph_indent, 0, false};
+    }
+}
+
+std::size_t word_room(const LayoutOptions& o, document::BlockKind kind, int level) {
+    const int width = o.geometry.cells_per_line - o.left_margin - o.right_margin;
+    const auto in = block_indents(o, kind, level);
+    return static_cast<std::size_t>(std::max(1, width - std::max(in.first, in.runover)));
+}
+
 Result<void> validate(const LayoutOptions& o) {
     const auto& g = o.geometry;
     if (g.cells_per_line < 4 || g.cells_per_line > 200)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/result.hpp"
+#include "document/document.hpp"
 #include "layout/page.hpp"
 
 namespace tactus::layout {
@@ -21,7 +22,7 @@ struct LayoutOptions {
     int bottom_margin = 0;  // lines
     int paragraph_indent = 2;        // blank cells before a paragraph's first line
     int list_runover = 2;            // extra indent of a list item's following lines
-    bool centre_headings = true;     // levels 1 and 2; deeper headings start at cell 5
+    bool centre_headings = true;     // level 1; level 2 starts at cell 5, deeper ones at cell 7
     bool blank_line_before_heading = true;
     bool blank_line_after_heading = true;  // after level-1 headings
     bool blank_line_between_paragraphs = false;
@@ -43,6 +44,19 @@ const std::vector<LayoutPreset>& layout_presets();
 std::optional<LayoutPreset> find_layout_preset(std::string_view name);
 
 Result<PageNumberPosition> parse_page_number_position(std::string_view);
+
+// Where a block's lines start: the one place these rules live (the paginator,
+// word division and the editor's cursor mapping all ask here).
+struct BlockIndents {
+    int first = 0;    // blank cells before the first line
+    int runover = 0;  // blank cells before the following lines
+    bool centred = false;
+};
+BlockIndents block_indents(const LayoutOptions& options, document::BlockKind kind, int level);
+
+// The cells a word of this block can have on any of its lines: a word longer
+// than this is divided (translate/word_division.hpp).
+std::size_t word_room(const LayoutOptions& options, document::BlockKind kind, int level);
 
 // Rejects geometries in which no text fits, naming the offending option.
 Result<void> validate(const LayoutOptions& options);

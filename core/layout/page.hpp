@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "document/cell.hpp"
+#include "document/document.hpp"
 
 namespace tactus::layout {
 
@@ -15,6 +16,10 @@ struct Page {
     std::vector<document::BrailleLine> lines;  // at most lines_per_page; each at most cells_per_line
     int braille_number = 0;          // 1-based braille page number
     std::string print_page;          // print page in effect at the top of this page ("" if none)
+    // A blank back added to ready-made braille so a section, or a page of a
+    // single-sided section, ends its sheet on interpoint paper. Written to BRF
+    // (the embosser must feed it), left out of PEF (its sections say the same).
+    bool filler = false;
     bool operator==(const Page&) const = default;
 };
 
@@ -47,9 +52,18 @@ struct PageGeometry {
     }
 };
 
+// Ready-made braille (PEF) keeps its sections: each starts on a new sheet.
+struct PageSection {
+    std::size_t first_page = 0;
+    bool duplex = false;  // the source section's duplex, written back to PEF
+    bool operator==(const PageSection&) const = default;
+};
+
 struct PagedDocument {
     PageGeometry geometry;
     std::vector<Page> pages;
+    std::vector<PageSection> sections;   // empty: one section
+    std::vector<document::MetadataItem> metadata;  // the source's PEF metadata, for export
     // Things the reader should know that did not stop the layout, as "line N: why".
     std::vector<std::string> warnings;
 

@@ -125,9 +125,10 @@ void Paginator::close_page() {
     body_.clear();
 }
 
-void Paginator::add_wrapped(const document::BrailleLine& cells, int first, int runover, bool centre,
-                            int source_line) {
-    auto lines = break_lines(cells, width(), first, runover);
+void Paginator::add_wrapped(const translate::TranslatedBlock& b, const BlockIndents& in) {
+    auto lines = break_lines(b.cells, b.breaks, width(), in.first, in.runover);
+    const bool centre = in.centred;
+    const int source_line = b.source_line;
     for (auto& l : lines) {
         if (centre) {
             trim_right(l);
@@ -144,20 +145,17 @@ void Paginator::add(const translate::TranslatedBlock& b) {
             if (o_.blank_line_before_heading) add_blank_line();
             // Keep a heading off the last body line of a page: it would head nothing.
             if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
-            const bool centred = o_.centre_headings && b.level <= 2;
-            add_wrapped(b.cells, centred ? 0 : 4, centred ? 0 : 4, centred, b.source_line);
+            add_wrapped(b, block_indents(o_, b.kind, b.level));
             if (o_.blank_line_after_heading && b.level <= 1) add_blank_line();
             break;
         }
         case document::BlockKind::paragraph:
             if (o_.blank_line_between_paragraphs) add_blank_line();
-            add_wrapped(b.cells, o_.paragraph_indent, 0, false, b.source_line);
+            add_wrapped(b, block_indents(o_, b.kind, b.level));
             break;
-        case document::BlockKind::list_item: {
-            const int indent = std::min(2 * std::max(b.level - 1, 0), width() / 2);
-            add_wrapped(b.cells, indent, indent + o_.list_runover, false, b.source_line);
+        case document::BlockKind::list_item:
+            add_wrapped(b, block_indents(o_, b.kind, b.level));
             break;
-        }
         case document::BlockKind::print_page_break: {
             print_page_ = document::to_unicode_text(b.label);
             if (!o_.print_page_indicators || body_.empty()) break;

@@ -48,8 +48,7 @@ private:
     void add_blank_line();
     void break_page();
     void close_page();
-    void add_wrapped(const document::BrailleLine& cells, int first, int runover, bool centre,
-                     int source_line);
+    void add_wrapped(const translate::TranslatedBlock& block, const BlockIndents& indents);
 
     LayoutOptions o_;
     std::function<document::BrailleLine(int)> number_cells_;

@@ -9,7 +9,9 @@
 #include <unordered_map>
 
 #include "common/utf8.hpp"
+#include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
+#include "translate/script_check.hpp"
 #include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
@@ -56,12 +58,37 @@ private:
     std::optional<Error> error_;
 };
 
+// Code points of a block's text (UTF-8 bytes that start a character).
+std::size_t text_size(const document::Block& b) {
+    std::size_t n = 0;
+    for (const auto& s : b.spans)
+        for (char c : s.text) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80 ? 1u : 0u;
+    return n;
+}
+
+layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::string> first_warnings) {
+    auto doc = std::move(paginator).finish();
+    doc.warnings.insert(doc.warnings.begin(), first_warnings.begin(), first_warnings.end());
+    return doc;
+}
+
 }  // namespace
 
 Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options) {
     if (auto ok = validate(options.layout); !ok) return std::unexpected(ok.error());
+    if (document.blocks.empty() && !options.allow_empty)
+        return fail("the document is empty: there is nothing to emboss (ask for a blank page to get one)",
+                    document.source_name);
+    if (layout::is_ready_braille(document) && !options.reflow_braille)
+        return layout::keep_braille_pages(document, options.layout);
     auto translator = translate::Translator::open(options.tables);
     if (!translator) return std::unexpected(translator.error());
+    const auto room = [&options](const document::Block& b) { return layout::word_room(options.layout, b.kind, b.level); };
+    std::size_t total = 0;
+    if (options.progress)
+        for (const auto& b : document.blocks) total += text_size(b);
+    std::vector<std::string> script_warnings;
+    if (auto w = translate::check_script(document, options.tables)) script_warnings.push_back(*w);
 
     std::unordered_map<int, document::BrailleLine> numbers;
     std::optional<Error> number_error;
@@ -81,22 +108,33 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
                                  ? options.translation_workers
                                  : TranslationWorkers::suggested_workers(document);
     if (workers > 1) {
-        auto pool = TranslationWorkers::start(document, *translator, workers);
+        auto pool = TranslationWorkers::start(document, *translator, workers, 64, room);
+        std::size_t done = 0, index = 0;
         if (!pool) return std::unexpected(pool.error());
         for (;;) {
             auto block = pool->next();
             if (!block) return std::unexpected(block.error());
             if (!*block) break;
+            if (options.progress) {
+                done += text_size(document.blocks[index++]);
+                options.progress(done, total);
+            }
             paginator.add(**block);
         }
         if (number_error) return std::unexpected(*number_error);
-        return std::move(paginator).finish();
+        return finish(std::move(paginator), std::move(script_warnings));
     }
 
     BlockQueue queue;
     std::jthread producer([&] {
+        std::size_t done = 0;
+        const std::function<void(std::size_t)> on_piece = [&](std::size_t in_block) {
+            options.progress(done + in_block, total);
+        };
         for (const auto& block : document.blocks) {
-            auto tb = translate::translate_block(block, *translator);
+            auto tb = translate::translate_block(block, *translator, room(block),
+                                      options.progress ? on_piece : std::function<void(std::size_t)>{});
+            if (options.progress) done += text_size(block);
             if (!tb) {
                 queue.close(located(tb.error(), document.source_name));
                 return;
@@ -109,7 +147,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     producer.join();
     if (auto e = queue.error()) return std::unexpected(*e);
     if (number_error) return std::unexpected(*number_error);
-    return std::move(paginator).finish();
+    return finish(std::move(paginator), std::move(script_warnings));
 }
 
 Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,

@@ -6,6 +6,7 @@
 // through a bounded queue; a big document is translated by several forked
 // worker processes instead (pipeline/translation_workers.hpp).
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "common/result.hpp"
@@ -24,6 +25,14 @@ struct PipelineOptions {
     // Translation processes for big documents: 0 picks by size and cores
     // (TranslationWorkers::suggested_workers), 1 keeps everything in-process.
     unsigned translation_workers = 0;
+    // Ready-made braille (BRF, PEF) is kept page for page (layout/braille_pages.hpp)
+    // unless this asks to lay it out again like text on the layout's pages.
+    bool reflow_braille = false;
+    // An empty document is an error unless the user asks for one blank page.
+    bool allow_empty = false;
+    // Hears (code points done, code points in all) as translation goes on, from
+    // the translating thread; for a terminal's progress line.
+    std::function<void(std::size_t, std::size_t)> progress;
 };
 
 Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options);

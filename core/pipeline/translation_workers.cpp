@@ -49,11 +49,13 @@ int read_all(int fd, void* data, std::size_t n) {
 
 // The worker: translate my chunks, write one record per block, exit.
 [[noreturn]] void work(const document::Document& doc, const translate::Translator& translator, unsigned index,
-                       unsigned workers, std::size_t chunk, int fd) {
+                       unsigned workers, std::size_t chunk, int fd,
+                       const TranslationWorkers::WordRoom& word_room) {
     const std::size_t n = doc.blocks.size();
     for (std::size_t c = index; c * chunk < n; c += workers) {
         for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
-            auto tb = translate::translate_block(doc.blocks[i], translator);
+            auto tb = translate::translate_block(doc.blocks[i], translator,
+                                      word_room ? word_room(doc.blocks[i]) : 0);
             if (!tb) {
                 const auto e = located(tb.error(), doc.source_name);
                 const std::string msg = e.where + '\0' + e.message;
@@ -62,11 +64,15 @@ int read_all(int fd, void* data, std::size_t n) {
                 write_all(fd, msg.data(), msg.size());
                 ::_exit(1);
             }
-            const auto& cells = tb->kind == document::BlockKind::print_page_break ? tb->label : tb->cells;
+            const bool label = tb->kind == document::BlockKind::print_page_break;
+            tb->breaks.resize(tb->cells.size(), translate::BreakBefore::never);
+            const auto& cells = label ? tb->label : tb->cells;
             const auto header = static_cast<std::uint32_t>(cells.size());
-            static_assert(sizeof(document::Cell) == 1);
+            static_assert(sizeof(document::Cell) == 1 && sizeof(translate::BreakBefore) == 1);
+            // The cells, then one break kind per cell (none for a page label).
             if (!write_all(fd, &header, sizeof header) ||
-                !write_all(fd, cells.data(), cells.size()))
+                !write_all(fd, cells.data(), cells.size()) ||
+                (!label && !write_all(fd, tb->breaks.data(), cells.size())))
                 ::_exit(2);  // the reader is gone: nothing left to do
         }
     }
@@ -83,7 +89,8 @@ unsigned TranslationWorkers::suggested_workers(const document::Document& documen
 
 Result<TranslationWorkers> TranslationWorkers::start(const document::Document& document,
                                                      const translate::Translator& translator,
-                                                     unsigned workers, std::size_t chunk_blocks) {
+                                                     unsigned workers, std::size_t chunk_blocks,
+                                                     WordRoom word_room) {
     TranslationWorkers pool(document, std::max<std::size_t>(chunk_blocks, 1));
     workers = std::max(workers, 1u);
     // Compile the table before forking, so no worker compiles it again.
@@ -102,7 +109,7 @@ Result<TranslationWorkers> TranslationWorkers::start(const document::Document& d
                 translate::louis::lock().unlock();
                 ::close(fds[0]);
                 for (int fd : pool.fds_) ::close(fd);
-                work(document, translator, w, workers, pool.chunk_blocks_, fds[1]);
+                work(document, translator, w, workers, pool.chunk_blocks_, fds[1], word_room);
             }
         }
         ::close(fds[1]);
@@ -164,6 +171,14 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     if (read_all(fd, cells.data(), cells.size()) != 1)
         return fail("translation worker ended in the middle of a block");
     const document::Block& b = blocks[i];
+    translate::LineBreaks breaks;
+    const bool text = b.kind == document::BlockKind::heading || b.kind == document::BlockKind::paragraph ||
+                      b.kind == document::BlockKind::list_item;
+    if (text) {
+        breaks.resize(cells.size());
+        if (read_all(fd, breaks.data(), breaks.size()) != 1)
+            return fail("translation worker ended in the middle of a block");
+    }
     translate::TranslatedBlock tb;
     tb.kind = b.kind;
     tb.level = b.level;
@@ -171,6 +186,7 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     if (b.kind == document::BlockKind::braille) tb.lines = b.braille_lines;
     if (b.kind == document::BlockKind::print_page_break) tb.label = std::move(cells);
     else tb.cells = std::move(cells);
+    tb.breaks = std::move(breaks);
     return std::optional<translate::TranslatedBlock>(std::move(tb));
 }
 

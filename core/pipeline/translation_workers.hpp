@@ -10,6 +10,7 @@
 #include <sys/types.h>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -22,9 +23,13 @@ namespace tactus::pipeline {
 
 class TranslationWorkers {
 public:
+    // The narrowest line each block's words must fit (layout::word_room()).
+    using WordRoom = std::function<std::size_t(const document::Block&)>;
+
     // The document and translator must outlive this object.
     static Result<TranslationWorkers> start(const document::Document& document, const translate::Translator& translator,
-                                            unsigned workers, std::size_t chunk_blocks = 64);
+                                            unsigned workers, std::size_t chunk_blocks = 64,
+                                            WordRoom word_room = {});
     TranslationWorkers(TranslationWorkers&&) noexcept;
     TranslationWorkers& operator=(TranslationWorkers&&) = delete;
     ~TranslationWorkers();

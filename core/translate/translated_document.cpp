@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "common/utf8.hpp"
+#include "translate/word_division.hpp"
 
 namespace tactus::translate {
 namespace {
@@ -25,31 +26,130 @@ Result<void> flatten(const document::Block& block, std::u32string& text, std::ve
     return {};
 }
 
-Result<document::BrailleLine> translate_text(const Translator& tr, std::u32string_view text,
-                                   std::span<const std::uint8_t> emph) {
+// Appends one piece of text (at most kChunk code points) to the block's cells
+// and breaks; a unit longer than `room` cells is divided by the code's rules.
+class BlockWriter {
+public:
+    BlockWriter(const Translator& tr, std::size_t room, TranslatedBlock& out)
+        : tr_(tr), room_(room), out_(out) {}
+
+    Result<void> add(std::u32string_view text, std::span<const std::uint8_t> emph, BreakBefore join) {
+        auto m = tr_.translate_mapped(text, emph);
+        if (!m) return std::unexpected(m.error());
+        auto breaks = find_line_breaks(text, m->cells, m->source);
+        if (!breaks.empty()) breaks[0] = m->cells[0].blank() ? BreakBefore::blank : join;
+        const std::size_t n = m->cells.size();
+        std::size_t i = 0;
+        while (i < n) {
+            std::size_t j = i + 1;
+            while (j < n && !is_line_break(breaks[j])) ++j;
+            if (room_ > 0 && j - i > room_ && !m->cells[i].blank()) {
+                if (auto ok = divide(text, emph, *m, breaks[i], i, j); !ok) return ok;
+            } else {
+                out_.cells.insert(out_.cells.end(), m->cells.begin() + static_cast<std::ptrdiff_t>(i),
+                                  m->cells.begin() + static_cast<std::ptrdiff_t>(j));
+                out_.breaks.insert(out_.breaks.end(), breaks.begin() + static_cast<std::ptrdiff_t>(i),
+                                   breaks.begin() + static_cast<std::ptrdiff_t>(j));
+            }
+            i = j;
+        }
+        return {};
+    }
+
+    // A word too long to translate in one piece: divided straight away.
+    Result<void> add_long_word(std::u32string_view word, std::span<const std::uint8_t> emph, BreakBefore join) {
+        if (room_ == 0) return add(word, emph, join);
+        return append_pieces(divide_word(tr_, word, emph, room_), join);
+    }
+
+private:
+    Result<void> append_pieces(Result<std::vector<document::BrailleLine>> pieces, BreakBefore first_break) {
+        if (!pieces) return std::unexpected(pieces.error());
+        bool first = true;
+        for (auto& piece : *pieces) {
+            if (piece.empty()) continue;
+            out_.breaks.push_back(first ? first_break : BreakBefore::forced);
+            out_.breaks.insert(out_.breaks.end(), piece.size() - 1, BreakBefore::never);
+            out_.cells.insert(out_.cells.end(), piece.begin(), piece.end());
+            first = false;
+        }
+        return {};
+    }
+
+    // The print word behind cells [i, j) is translated again piece by piece.
+    Result<void> divide(std::u32string_view text, std::span<const std::uint8_t> emph,
+                        const MappedBraille& m, BreakBefore first_break, std::size_t i, std::size_t j) {
+        const auto [lo, hi] = std::minmax_element(m.source.begin() + static_cast<std::ptrdiff_t>(i),
+                                                  m.source.begin() + static_cast<std::ptrdiff_t>(j));
+        const std::size_t a = *lo, b = std::min<std::size_t>(*hi + 1, text.size());
+        return append_pieces(divide_word(tr_, text.substr(a, b - a),
+                                         emph.empty() ? emph : emph.subspan(a, b - a), room_),
+                             first_break);
+    }
+
+    const Translator& tr_;
+    std::size_t room_;
+    TranslatedBlock& out_;
+};
+
+Result<void> translate_text(const Translator& tr, std::u32string_view text,
+                            std::span<const std::uint8_t> emph, std::size_t room, TranslatedBlock& out,
+                            const std::function<void(std::size_t)>& progress) {
     const bool any_emphasis =
         std::ranges::any_of(emph, [](std::uint8_t e) { return e != document::emphasis_none; });
-    document::BrailleLine out;
+    const auto emph_of = [&](std::size_t from, std::size_t n) {
+        return any_emphasis ? emph.subspan(from, n) : std::span<const std::uint8_t>{};
+    };
+    BlockWriter writer(tr, room, out);
     std::size_t start = 0;
+    BreakBefore join = BreakBefore::never;  // the block's first cell
     while (start < text.size()) {
         std::size_t end = std::min(text.size(), start + kChunk);
         if (end < text.size()) {
-            const auto space = text.rfind(U' ', end);
-            if (space != std::u32string_view::npos && space > start) end = space + 1;
+            // Cut after a space, searching this chunk only; without a space (Chinese
+            // has none) at the last place print allows a break. Either way no
+            // contraction or sign spans the cut.
+            const auto piece = text.substr(start, end - start);
+            const auto space = piece.rfind(U' ');
+            std::size_t cut = space != std::u32string_view::npos && space > 0 ? space + 1 : 0;
+            if (cut == 0) {
+                const auto print = print_break_opportunities(piece);
+                for (std::size_t i = piece.size(); i-- > 1;)
+                    if (print[i]) {
+                        cut = i;
+                        break;
+                    }
+            }
+            if (cut == 0) {
+                // One word of more than kChunk characters: divided as a whole, up
+                // to the next space, without translating it first.
+                const auto next_space = text.find(U' ', start);
+                const std::size_t word_end = next_space == std::u32string_view::npos ? text.size() : next_space;
+                if (auto ok = writer.add_long_word(text.substr(start, word_end - start),
+                                                   emph_of(start, word_end - start), join);
+                    !ok)
+                    return ok;
+                start = word_end;
+                join = BreakBefore::allowed;
+                if (progress) progress(start);
+                continue;
+            }
+            end = start + cut;
         }
-        auto piece = tr.translate(text.substr(start, end - start),
-                                  any_emphasis ? emph.subspan(start, end - start)
-                                               : std::span<const std::uint8_t>{});
-        if (!piece) return piece;
-        out.insert(out.end(), piece->begin(), piece->end());
+        if (auto ok = writer.add(text.substr(start, end - start), emph_of(start, end - start), join); !ok)
+            return ok;
+        join = BreakBefore::allowed;
         start = end;
+        if (progress) progress(start);
     }
-    return out;
+    return {};
 }
 
 }  // namespace
 
-Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator) {
+Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator,
+                                        std::size_t word_room,
+                                        const std::function<void(std::size_t)>& progress) {
     TranslatedBlock tb;
     tb.kind = block.kind;
     tb.level = block.level;
@@ -78,9 +178,8 @@ Result<TranslatedBlock> translate_block(const document::Block& block, const Tran
             std::vector<std::uint8_t> emph;
             if (auto ok = flatten(block, text, emph); !ok)
                 return std::unexpected(located(ok.error(), where));
-            auto cells = translate_text(translator, text, emph);
-            if (!cells) return std::unexpected(located(cells.error(), where));
-            tb.cells = std::move(*cells);
+            if (auto ok = translate_text(translator, text, emph, word_room, tb, progress); !ok)
+                return std::unexpected(located(ok.error(), where));
             break;
         }
     }

@@ -3,7 +3,10 @@
 
 #include <liblouis/liblouis.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <vector>
+#include <algorithm>
 
 #include "document/document.hpp"
 #include "translate/louis.hpp"
@@ -29,8 +32,12 @@ enum class Direction { forward, backward };
 // One liblouis call with a growing output buffer: liblouis stops silently when the
 // buffer is full, so a short `inlen` afterwards means "try again with more room".
 Result<std::u32string> run(const std::string& table_list, std::u32string_view in,
-                           std::span<const std::uint8_t> emphasis, Direction dir) {
-    if (in.empty()) return std::u32string{};
+                           std::span<const std::uint8_t> emphasis, Direction dir,
+                           std::vector<int>* input_pos = nullptr) {
+    if (in.empty()) {
+        if (input_pos) input_pos->clear();
+        return std::u32string{};
+    }
     if (in.size() > 1u << 24) return fail("text block too long for one translation");
     const auto* inbuf = reinterpret_cast<const widechar*>(in.data());
     std::vector<formtype> typeform;
@@ -42,13 +49,19 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
     std::size_t capacity = in.size() * 2 + 32;
     for (int attempt = 0; attempt < 6; ++attempt, capacity *= 4) {
         std::u32string out(capacity, U'\0');
+        if (input_pos) input_pos->assign(capacity, 0);
         int inlen = static_cast<int>(in.size());
         int outlen = static_cast<int>(capacity);
         int ok = 0;
         std::string log;
         {
             std::lock_guard guard(louis::lock());
-            if (dir == Direction::forward) {
+            if (dir == Direction::forward && input_pos) {
+                ok = lou_translate(table_list.c_str(), inbuf, &inlen,
+                                   reinterpret_cast<widechar*>(out.data()), &outlen,
+                                   typeform.empty() ? nullptr : typeform.data(), nullptr, nullptr,
+                                   input_pos->data(), nullptr, 0);
+            } else if (dir == Direction::forward) {
                 ok = lou_translateString(table_list.c_str(), inbuf, &inlen,
                                          reinterpret_cast<widechar*>(out.data()), &outlen,
                                          typeform.empty() ? nullptr : typeform.data(), nullptr,
@@ -66,11 +79,45 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
         if (static_cast<std::size_t>(inlen) >= in.size() &&
             static_cast<std::size_t>(outlen) < capacity) {
             out.resize(static_cast<std::size_t>(outlen));
+            if (input_pos) input_pos->resize(static_cast<std::size_t>(outlen));
             return out;
         }
         if (!typeform.empty()) typeform.resize(capacity * 4, plain_text);
     }
     return fail("translation output kept overflowing its buffer");
+}
+
+std::string table_info(const std::string& table, const char* key) {
+    char* v = lou_getTableInfo(table.c_str(), key);
+    if (!v) return {};
+    std::string s(v);
+    std::free(v);  // NOLINT: liblouis hands ownership to the caller
+    return s;
+}
+
+// The first installed hyphenation dictionary for the language ("en" ->
+// hyph_en_US.dic), checked by hyphenating a known word with it.
+std::string find_hyphenation(const std::string& first_table, const std::string& language) {
+    if (language.empty()) return {};
+    const auto lang = language.substr(0, language.find('-'));
+    std::vector<std::string> candidates;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(TACTUS_LOUIS_DATADIR, ec)) {
+        const auto name = e.path().filename().string();
+        if (name.ends_with(".dic") &&
+            (name == "hyph_" + lang + ".dic" || name.starts_with("hyph_" + lang + "_")))
+            candidates.push_back(name);
+    }
+    std::ranges::sort(candidates);
+    for (const auto& dic : candidates) {
+        const std::u32string probe = U"hyphenation";
+        std::vector<char> h(probe.size() + 1, '\0');
+        const std::string list = first_table + "," + dic;
+        if (lou_hyphenate(list.c_str(), reinterpret_cast<const widechar*>(probe.data()),
+                          static_cast<int>(probe.size()), h.data(), 0))
+            return dic;
+    }
+    return {};
 }
 
 }  // namespace
@@ -90,7 +137,59 @@ Result<Translator> Translator::open(std::string tables) {
         return fail("unknown or broken braille table '" + tables + "'" +
                         (log.empty() ? std::string{} : " (liblouis: " + log + ")"),
                     "--table");
-    return Translator(std::move(tables));
+    Translator t(std::move(tables));
+    const auto first = t.tables_.substr(0, t.tables_.find(','));
+    {
+        std::lock_guard guard(louis::lock());
+        t.hyphenation_ = find_hyphenation(first, table_info(first, "language"));
+        if (table_info(first, "system") == "ueb") t.division_.number_continuation = document::Cell{0x10};  // dot 5
+        louis::take_log();
+    }
+    if (t.division_.number_continuation) {
+        // The numeric indicator is what liblouis writes before a digit: "1" is
+        // the indicator and the digit's own cell.
+        auto one = t.translate(U"1");
+        if (one && one->size() >= 2) t.division_.numeric_indicator.assign(one->begin(), one->end() - 1);
+    }
+    return t;
+}
+
+Result<MappedBraille> Translator::translate_mapped(std::u32string_view text,
+                                                   std::span<const std::uint8_t> emphasis) const {
+    std::vector<int> positions;
+    auto out = run(std::string(kUnicodeDisplay) + "," + tables_, text, emphasis, Direction::forward,
+                   &positions);
+    if (!out) return std::unexpected(out.error());
+    MappedBraille m;
+    m.cells.reserve(out->size());
+    m.source.reserve(out->size());
+    for (std::size_t i = 0; i < out->size(); ++i) {
+        const char32_t c = (*out)[i];
+        m.cells.push_back(document::Cell::is_unicode_braille(c) ? document::Cell::from_unicode(c) : document::Cell{});
+        const int p = positions[i];
+        m.source.push_back(static_cast<std::uint32_t>(
+            std::clamp(p, 0, static_cast<int>(text.size()) - 1)));
+    }
+    return m;
+}
+
+std::vector<bool> Translator::hyphenation_points(std::u32string_view word) const {
+    std::vector<bool> out(word.size() + 1, false);
+    // A dictionary knows words, not kilobytes of letters: longer runs are not asked.
+    if (hyphenation_.empty() || word.size() < 4 || word.size() > 200) return out;
+    std::vector<char> h(word.size() + 1, '\0');
+    const auto first = tables_.substr(0, tables_.find(','));
+    const std::string list = first + "," + hyphenation_;
+    int ok = 0;
+    {
+        std::lock_guard guard(louis::lock());
+        ok = lou_hyphenate(list.c_str(), reinterpret_cast<const widechar*>(word.data()),
+                           static_cast<int>(word.size()), h.data(), 0);
+        louis::take_log();
+    }
+    if (!ok) return out;
+    for (std::size_t i = 1; i < word.size(); ++i) out[i] = h[i] == '1';
+    return out;
 }
 
 Result<document::BrailleLine> Translator::translate(std::u32string_view text,

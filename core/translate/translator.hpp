@@ -4,14 +4,35 @@
 // display table (unicode.dis) so cells come back as Unicode braille whatever the
 // table's own display defaults are.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/result.hpp"
 #include "document/cell.hpp"
 
 namespace tactus::translate {
+
+// Cells with the print character each one was made from (liblouis's inputPos):
+// an indicator or a contraction carries the position of the characters it
+// belongs to, which is what line breaking needs (translate/line_breaks.hpp).
+struct MappedBraille {
+    document::BrailleLine cells;
+    std::vector<std::uint32_t> source;  // index into the translated text, one per cell
+};
+
+// What the table's braille code writes when a word is divided at a line end
+// (translate/word_division.hpp). Derived from the table when it is opened.
+struct DivisionRules {
+    // UEB 6.10.3: a number divided between digits ends its line with the one-cell
+    // line continuation indicator (dot 5); UEB 6.10.5: the next line goes on in
+    // numeric mode, without the numeric indicator. Empty outside UEB, where a
+    // number is divided like a word.
+    std::optional<document::Cell> number_continuation;
+    document::BrailleLine numeric_indicator;
+};
 
 class Translator {
 public:
@@ -26,6 +47,17 @@ public:
     Result<document::BrailleLine> translate(std::u32string_view text,
                                   std::span<const std::uint8_t> emphasis = {}) const;
 
+    // translate() with the print position of every cell.
+    Result<MappedBraille> translate_mapped(std::u32string_view text,
+                                           std::span<const std::uint8_t> emphasis = {}) const;
+
+    [[nodiscard]] const DivisionRules& division_rules() const { return division_; }
+
+    // Where `word` may be hyphenated (true before character i), from the
+    // hyphenation dictionary liblouis has for the table's language
+    // (hyph_en_US.dic for English); all false when there is none.
+    [[nodiscard]] std::vector<bool> hyphenation_points(std::u32string_view word) const;
+
     // Back-translation for proofreading: what a reader of these cells would read.
     Result<std::u32string> back_translate(const document::BrailleLine& cells) const;
 
@@ -37,6 +69,8 @@ public:
 private:
     explicit Translator(std::string tables) : tables_(std::move(tables)) {}
     std::string tables_;
+    std::string hyphenation_;  // e.g. "hyph_en_US.dic"; empty: none for this language
+    DivisionRules division_;
 };
 
 }  // namespace tactus::translate

@@ -200,3 +200,20 @@ TEST(LayoutOptions, RejectsImpossibleGeometry) {
     o.right_margin = 5;
     EXPECT_EQ(validate(o).error().where, "margins");
 }
+
+// BANA Braille Formats, headings: the main heading centred with a blank line
+// before and after; level 2 a cell-5 heading and level 3 a cell-7 heading, both
+// blocked (runover lines in the same cell), a blank line before, none after.
+TEST(Paginator, HeadingLevelsCentredCellFiveCellSeven) {
+    layout::Paginator p(small(14, 12, false), number);
+    p.add(heading("TITLE", 1));
+    p.add(heading("SECTION NAME", 2));
+    p.add(para("TEXT"));
+    p.add(heading("SUB PARTS", 3));
+    p.add(para("MORE"));
+    auto doc = std::move(p).finish();
+    const auto r = rows(doc.pages[0]);
+    EXPECT_EQ(std::vector<std::string>(r.begin(), r.begin() + 9),
+              (std::vector<std::string>{"    TITLE", "", "    SECTION", "    NAME", "  TEXT", "", "      SUB",
+                                        "      PARTS", "  MORE"}));
+}

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "layout/braille_pages.hpp"
+
+#include <algorithm>
+
+namespace tactus::layout {
+namespace {
+
+// One source page: the rows of the braille blocks between two page breaks.
+struct SourcePage {
+    const document::Block* first = nullptr;
+    std::vector<document::BrailleLine> rows;
+    int source_line = 0;
+    std::size_t section = 0;
+};
+
+std::vector<SourcePage> source_pages(const document::Document& doc) {
+    std::vector<SourcePage> pages;
+    std::size_t section = 0;
+    bool open = false;
+    for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
+        while (section + 1 < doc.braille_sections.size() && doc.braille_sections[section + 1].first_block <= i) {
+            ++section;
+            open = false;  // a section always starts a page
+        }
+        const auto& b = doc.blocks[i];
+        if (b.kind == document::BlockKind::braille_page_break) {
+            open = false;
+            continue;
+        }
+        if (b.kind != document::BlockKind::braille) continue;
+        if (!open) {
+            pages.push_back(SourcePage{&b, {}, b.source_line, section});
+            open = true;
+        }
+        auto& rows = pages.back().rows;
+        rows.insert(rows.end(), b.braille_lines.begin(), b.braille_lines.end());
+    }
+    return pages;
+}
+
+int longest_row(const std::vector<document::BrailleLine>& rows) {
+    std::size_t n = 0;
+    for (const auto& r : rows) n = std::max(n, r.size());
+    return static_cast<int>(n);
+}
+
+}  // namespace
+
+bool is_ready_braille(const document::Document& doc) {
+    bool any = false;
+    for (const auto& b : doc.blocks) {
+        switch (b.kind) {
+            case document::BlockKind::braille: any = true; break;
+            case document::BlockKind::braille_page_break: break;
+            default: return false;
+        }
+    }
+    return any;
+}
+
+Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target) {
+    const auto& g = target.geometry;
+    const auto pages = source_pages(doc);
+    for (std::size_t p = 0; p < pages.size(); ++p) {
+        const int rows = static_cast<int>(pages[p].rows.size());
+        const int cols = longest_row(pages[p].rows);
+        if (rows <= g.lines_per_page && cols <= g.cells_per_line) continue;
+        const auto grid = doc.braille_grid;
+        const std::string source_size =
+            grid ? std::to_string(grid->cols) + " cells x " + std::to_string(grid->rows) + " lines"
+                 : std::to_string(cols) + " cells x " + std::to_string(rows) + " lines";
+        return fail("braille page " + std::to_string(p + 1) + " has " + std::to_string(rows) + " rows of up to " +
+                        std::to_string(cols) + " cells (the file's page is " + source_size +
+                        "), but the page holds " + std::to_string(g.cells_per_line) + " cells x " +
+                        std::to_string(g.lines_per_page) +
+                        " lines; stopped before anything was laid out or embossed. Use a printer or --preset whose page is"
+                        " at least "
+                        "that large, or --reflow to lay the braille out again on this page",
+                    pages[p].source_line > 0 ? std::to_string(pages[p].source_line) : std::string{});
+    }
+    return {};
+}
+
+Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target) {
+    if (auto ok = check_braille_fits(doc, target); !ok) return std::unexpected(located(ok.error(), doc.source_name));
+    const auto pages = source_pages(doc);
+    PagedDocument out;
+    out.metadata = doc.metadata;
+    out.geometry.interpoint = target.geometry.interpoint;
+    int cols = 0, rows = 0;
+    bool eight_dot = false;
+    for (const auto& p : pages) {
+        cols = std::max(cols, longest_row(p.rows));
+        rows = std::max(rows, static_cast<int>(p.rows.size()));
+        for (const auto& r : p.rows)
+            eight_dot = eight_dot || std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+    }
+    if (doc.braille_grid) {
+        cols = std::max(cols, doc.braille_grid->cols);
+        rows = std::max(rows, doc.braille_grid->rows);
+    }
+    out.geometry.cells_per_line = std::max(cols, 1);
+    out.geometry.lines_per_page = std::max(rows, 1);
+    out.geometry.eight_dot = eight_dot || target.geometry.eight_dot;
+
+    const bool interpoint = out.geometry.interpoint;
+    const auto blank_back = [&] {
+        Page filler;
+        filler.filler = true;
+        filler.braille_number = static_cast<int>(out.pages.size()) + 1;
+        filler.lines.assign(static_cast<std::size_t>(out.geometry.lines_per_page), document::BrailleLine{});
+        out.pages.push_back(std::move(filler));
+    };
+    std::size_t section = static_cast<std::size_t>(-1);
+    for (const auto& p : pages) {
+        const bool section_duplex =
+            p.section < doc.braille_sections.size() ? doc.braille_sections[p.section].duplex : interpoint;
+        if (p.section != section) {
+            section = p.section;
+            // A new section starts on a new sheet: never on the back of the last one.
+            if (interpoint && out.pages.size() % 2 == 1) blank_back();
+            out.sections.push_back(PageSection{out.pages.size(), section_duplex});
+        }
+        Page page;
+        page.braille_number = static_cast<int>(out.pages.size()) + 1;
+        page.lines = p.rows;
+        page.lines.resize(static_cast<std::size_t>(out.geometry.lines_per_page));
+        out.pages.push_back(std::move(page));
+        // A single-sided section on interpoint paper: every page has its own sheet.
+        if (interpoint && !section_duplex) blank_back();
+    }
+    if (doc.braille_sections.empty()) out.sections.clear();  // BRF: one stream of pages
+    return out;
+}
+
+}  // namespace tactus::layout

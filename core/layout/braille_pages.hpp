@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Ready-made braille (BRF, PEF) is embossed and exported page for page: the
+// source's rows on the source's pages, with the page numbers it carries and no
+// new ones, PEF sections each starting on a new sheet. Laying it out again
+// (the paginator) is a choice the user makes, not something done silently.
+#include "common/result.hpp"
+#include "document/document.hpp"
+#include "layout/layout_options.hpp"
+#include "layout/page.hpp"
+
+namespace tactus::layout {
+
+// True when the document is formatted braille: it has braille pages and no text
+// to translate (what the BRF and PEF importers produce).
+bool is_ready_braille(const document::Document& doc);
+
+// Fails, naming the first page that does not fit and both sizes, when a source
+// page has more rows than `target` has lines or a row longer than its cells.
+Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target);
+
+// The source pages as they are. The result's cells and lines are the source's
+// own grid (PEF cols/rows; for BRF the longest line and page found); whether
+// sheets are interpoint is the target's (the printer's) choice. On interpoint
+// paper a section that would start on a back gets a blank back first, and each
+// page of a single-sided section gets a blank back of its own (`Page::filler`).
+Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target);
+
+}  // namespace tactus::layout

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "translate/script_check.hpp"
+
+#include <liblouis/liblouis.h>
+#include <unicode/translit.h>
+#include <unicode/uscript.h>
+#include <unicode/unistr.h>
+
+#include <cstdlib>
+#include <memory>
+#include <mutex>
+
+#include "common/utf8.hpp"
+#include "translate/louis.hpp"
+
+namespace tactus::translate {
+namespace {
+
+constexpr std::size_t kSample = 20'000;  // letters looked at; a book's first pages decide
+constexpr std::size_t kEnough = 20;      // fewer letters than this say nothing
+
+std::string table_language(const std::string& tables) {
+    const auto first = tables.substr(0, tables.find(','));
+    louis::install_log_capture();
+    std::lock_guard guard(louis::lock());
+    char* v = lou_getTableInfo(first.c_str(), "language");
+    louis::take_log();
+    if (!v) return {};
+    std::string s(v);
+    std::free(v);  // NOLINT: liblouis hands ownership to the caller
+    return s;
+}
+
+bool chinese_language(const std::string& tag) {
+    const auto lang = tag.substr(0, tag.find('-'));
+    return lang == "zh" || lang == "cmn" || lang == "yue" || lang == "wuu" || lang == "nan";
+}
+
+bool english_language(const std::string& tag) { return tag.substr(0, tag.find('-')) == "en"; }
+
+}  // namespace
+
+ScriptCounts count_scripts(const document::Document& document) {
+    ScriptCounts counts;
+    std::u32string han;
+    for (const auto& block : document.blocks) {
+        if (counts.han + counts.latin >= kSample) break;
+        for (const auto& span : block.spans) {
+            const auto text = utf8_to_utf32(span.text);
+            if (!text) continue;
+            for (char32_t c : *text) {
+                UErrorCode status = U_ZERO_ERROR;
+                const auto script = uscript_getScript(static_cast<UChar32>(c), &status);
+                if (U_FAILURE(status)) continue;
+                if (script == USCRIPT_HAN) {
+                    ++counts.han;
+                    han.push_back(c);
+                } else if (script == USCRIPT_LATIN) {
+                    ++counts.latin;
+                }
+            }
+        }
+    }
+    if (han.empty()) return counts;
+    // Traditional characters are those ICU's Traditional-to-Simplified
+    // transliteration changes; Simplified text passes through unchanged.
+    UErrorCode status = U_ZERO_ERROR;
+    std::unique_ptr<icu::Transliterator> to_simplified(
+        icu::Transliterator::createInstance("Hant-Hans", UTRANS_FORWARD, status));
+    if (U_FAILURE(status) || !to_simplified) return counts;
+    for (char32_t c : han) {
+        icu::UnicodeString s(static_cast<UChar32>(c));
+        const icu::UnicodeString before = s;
+        to_simplified->transliterate(s);
+        if (s != before) ++counts.traditional_only;
+    }
+    return counts;
+}
+
+std::optional<std::string> check_script(const document::Document& document, const std::string& tables) {
+    const auto counts = count_scripts(document);
+    const auto language = table_language(tables);
+    if (counts.han >= kEnough && counts.han > counts.latin && !chinese_language(language)) {
+        const bool traditional = counts.traditional_only * 20 >= counts.han;  // 5% or more
+        const std::string better = traditional ? "zh-tw.ctb" : "zhcn-g2.ctb";
+        return "the text is mostly Chinese (" + std::string(traditional ? "Traditional" : "Simplified") +
+               ") but " + tables + " is not a Chinese table; " + better +
+               (traditional ? " (Taiwanese bopomofo braille)" : " (Chinese double-phonic braille; or zhcn-g1.ctb)") +
+               " suits it: --table " + better;
+    }
+    if (counts.latin >= kEnough && counts.latin > counts.han && chinese_language(language) &&
+        !english_language(language))
+        return "the text is mostly in Latin letters but " + tables +
+               " is a Chinese table; for English en-ueb-g2.ctb (Unified English Braille) suits it:"
+               " --table en-ueb-g2.ctb";
+    return std::nullopt;
+}
+
+}  // namespace tactus::translate
