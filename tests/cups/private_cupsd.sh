@@ -136,19 +136,31 @@ CONF
     env_lines "$dir"
 }
 
+# Backends of this cupsd left running (a test that failed half-way, or one
+# orphaned by `kill`), found by their exact program path, never by name.
+kill_backends() {
+    local dir=$1 p exe
+    for p in /proc/[0-9]*; do
+        exe=$(readlink "$p/exe" 2>/dev/null) || continue
+        case "$exe" in "$dir/bin/backend/"*|"$dir/bin/filter/"*) kill -KILL "${p#/proc/}" 2>/dev/null || true ;; esac
+    done
+}
+
 stop() {
     local dir=$1 pid
     [ -f "$dir/cupsd.pid" ] || return 0
     pid=$(cat "$dir/cupsd.pid")
-    kill -TERM "$pid" 2>/dev/null || return 0
-    local i
-    for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || return 0; sleep 0.05; done
-    kill -KILL "$pid" 2>/dev/null || true
+    if kill -TERM "$pid" 2>/dev/null; then
+        local i
+        for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.05; done
+        kill -KILL "$pid" 2>/dev/null || true
+    fi
+    kill_backends "$dir"
 }
 
 case "${1:-}" in
     start) shift; [ $# -ge 5 ] || die "usage: start DIR BACKEND FILTER PPD TYPES [ENV=VALUE...]"; start "$@" ;;
-    stop) stop "$2" ;;
+    stop) stop "$(cd "$2" && pwd)" ;;
     kill) kill -KILL "$(cat "$2/cupsd.pid")" ;;
     restart) launch "$(cd "$2" && pwd)"; env_lines "$(cd "$2" && pwd)" ;;
     env) env_lines "$(cd "$2" && pwd)" ;;
