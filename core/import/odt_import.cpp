@@ -26,6 +26,24 @@
 namespace tactus::import_detail {
 namespace {
 
+// ODF 1.3 part 3, 6.1.2: in text content every run of spaces, tabs and line
+// ends is one space; real tabs, breaks and runs of spaces are elements.
+std::string collapse_white_space(std::string_view s) {
+    std::string out;
+    bool space = false;
+    for (const char c : s) {
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+            space = true;
+            continue;
+        }
+        if (space) out += ' ';
+        space = false;
+        out += c;
+    }
+    if (space) out += ' ';
+    return out;
+}
+
 struct OdtStyle {
     std::string parent;
     std::uint8_t emphasis = emphasis_none;  // set bits
@@ -190,7 +208,7 @@ private:
     void inline_content(const pugi::xml_node& node, std::uint8_t emphasis) {
         for (const auto& c : node.children()) {
             if (c.type() == pugi::node_pcdata) {
-                text(c.value(), emphasis);
+                text(collapse_white_space(c.value()), emphasis);
                 continue;
             }
             if (c.type() != pugi::node_element) continue;
