@@ -43,7 +43,7 @@ Result<std::string> read_input(const std::optional<std::string>& file) {
         ss << std::cin.rdbuf();
         data = ss.str();
     }
-    if (data.size() > max_import_bytes) return fail("the print data is larger than 256 MB");
+    if (data.size() > import::max_import_bytes) return fail("the print data is larger than 256 MB");
     return data;
 }
 
@@ -71,7 +71,7 @@ JobView view_of(spool::Spool& s, const spool::JobRecord& j) {
 // The spool job for this CUPS job: the one an earlier run submitted (set
 // going again if it stopped), or a new one.
 Result<spool::JobRecord> submit_once(spool::Spool& s, const BackendJob& job, const spool::PrinterRecord& printer,
-                                     const PagedDocument& doc, const std::function<void(const std::string&)>& say) {
+                                     const layout::PagedDocument& doc, const std::function<void(const std::string&)>& say) {
     const auto key = origin_key(job);
     auto existing = s.job_by_origin(key);
     if (!existing) return std::unexpected(existing.error());

@@ -48,7 +48,7 @@ Result<std::string> read_all(int argc, char** argv) {
         ss << std::cin.rdbuf();
         data = ss.str();
     }
-    if (data.size() > max_import_bytes) return fail("the document is larger than 256 MB");
+    if (data.size() > import::max_import_bytes) return fail("the document is larger than 256 MB");
     return data;
 }
 
@@ -71,13 +71,13 @@ int main(int argc, char** argv) {
     if (!s) return fail_job("cannot open the Tactus spool: " + s.error().to_string());
     const auto printer = cups::bind_printer(*s, *device, env("PRINTER"));
     if (!printer) return fail_job(printer.error().to_string());
-    const auto profile = profile::parse_profile(printer->profile_json);
-    if (!profile)
+    const auto machine = profile::parse_profile(printer->profile_json);
+    if (!machine)
         return fail_job("the profile of embosser '" + printer->name + "' on the print server is broken (" +
-                        profile.error().to_string() + "); fix it with `tactus-cli queue printer set " + printer->name +
+                        machine.error().to_string() + "); fix it with `tactus-cli queue printer set " + printer->name +
                         " --profile FILE`");
 
-    PagedDocument doc;
+    layout::PagedDocument doc;
     if (content_type == "application/vnd.tactus-paged") {
         // Already laid out (e.g. by the Tactus app): checked, passed on.
         auto d = spool::from_snapshot(*bytes);
@@ -86,22 +86,22 @@ int main(int argc, char** argv) {
     } else {
         const auto format = cups::source_format(content_type);
         if (!format) return fail_job(format.error().message);
-        auto pipeline = cups::pipeline_options(options, *profile);
-        if (!pipeline) return fail_job(pipeline.error().to_string());
-        pipeline->import.format = *format;
-        pipeline->translation_workers = 1;  // one job, one process: cupsd runs several at once
+        auto layout_options = cups::pipeline_options(options, *machine);
+        if (!layout_options) return fail_job(layout_options.error().to_string());
+        layout_options->import.format = *format;
+        layout_options->translation_workers = 1;  // one job, one process: cupsd runs several at once
         const auto name_it = options.find("document-name-supplied");
         const std::string name = name_it != options.end() ? name_it->second : argv[3];
-        auto document = import_bytes(*bytes, name, pipeline->import);
+        auto document = import::import_bytes(*bytes, name, layout_options->import);
         if (!document) return fail_job(document.error().to_string());
-        auto laid = lay_out(*document, *pipeline);
+        auto laid = pipeline::lay_out(*document, *layout_options);
         if (!laid) return fail_job(laid.error().to_string());
         doc = std::move(*laid);
     }
     if (doc.pages.empty()) return fail_job("the document has no text to emboss");
     // Planned once here so a page the machine cannot emboss fails the job now,
     // naming page and line, instead of at the embosser.
-    if (auto plan = plan::plan_job(doc, *profile); !plan)
+    if (auto plan = plan::plan_job(doc, *machine); !plan)
         return fail_job("embosser '" + printer->name + "' cannot emboss this layout: " + plan.error().to_string());
     for (std::size_t i = 0; i < doc.warnings.size() && i < 5; ++i) std::cerr << "WARNING: " << doc.warnings[i] << '\n';
     std::cerr << "INFO: " << doc.pages.size() << " braille page(s) on " << doc.sheet_count() << " sheet(s)"

@@ -54,7 +54,7 @@ Result<std::string> braille_table(std::string_view value) {
         // A table is named as liblouis names it, or without its extension.
         for (const auto& candidate : {one, one + ".ctb", one + ".utb"}) {
             if (one.empty() || one.find('/') != std::string::npos) break;  // no paths from the network
-            if (Translator::open(candidate)) {
+            if (translate::Translator::open(candidate)) {
                 chosen = candidate;
                 break;
             }
@@ -68,11 +68,14 @@ Result<std::string> braille_table(std::string_view value) {
     return list;
 }
 
-Result<PipelineOptions> pipeline_options(const CupsOptions& o, const profile::PrinterProfile& profile) {
-    PipelineOptions out;
+Result<pipeline::PipelineOptions> pipeline_options(const CupsOptions& o, const profile::PrinterProfile& profile) {
+    pipeline::PipelineOptions out;
     const auto& machine = profile.geometry;
     auto& g = out.layout.geometry;
-    g = machine;
+    g.cells_per_line = machine.cells_per_line;
+    g.lines_per_page = machine.lines_per_page;
+    g.interpoint = machine.interpoint;
+    g.eight_dot = machine.eight_dot;
     if (const auto* t = find(o, kBrailleTable)) {
         auto tables = braille_table(*t);
         if (!tables) return std::unexpected(tables.error());
@@ -96,7 +99,7 @@ Result<PipelineOptions> pipeline_options(const CupsOptions& o, const profile::Pr
     if (!eight) return std::unexpected(eight.error());
     g.eight_dot = machine.eight_dot || *eight;
     if (const auto* v = find(o, kPageNumbers)) {
-        auto pos = parse_page_number_position(*v);
+        auto pos = layout::parse_page_number_position(*v);
         if (!pos) return std::unexpected(located(pos.error(), "option " + std::string(kPageNumbers)));
         out.layout.page_numbers = *pos;
     }
@@ -104,15 +107,17 @@ Result<PipelineOptions> pipeline_options(const CupsOptions& o, const profile::Pr
     if (!print_pages) return std::unexpected(print_pages.error());
     out.layout.print_page_indicators = *print_pages;
     if (const auto* v = find(o, kTextEncoding)) out.import.encoding = *v;
-    if (auto ok = validate(out.layout); !ok) return std::unexpected(ok.error());
+    if (auto ok = layout::validate(out.layout); !ok) return std::unexpected(ok.error());
     return out;
 }
 
-Result<SourceFormat> source_format(std::string_view mime_type) {
+Result<import::SourceFormat> source_format(std::string_view mime_type) {
+    using import::SourceFormat;
     const auto t = lower(mime_type);
     if (t == "text/plain") return SourceFormat::text;
     if (t == "text/markdown") return SourceFormat::markdown;
     if (t == "application/vnd.openxmlformats-officedocument.wordprocessingml.document") return SourceFormat::docx;
+    if (t == "application/vnd.oasis.opendocument.text") return SourceFormat::odt;
     if (t == "application/x-brf") return SourceFormat::brf;
     if (t == "application/x-pef+xml") return SourceFormat::pef;
     return fail("Tactus cannot lay out " + std::string(mime_type) +

@@ -37,10 +37,10 @@ Result<std::string> braille_table(std::string_view value);
 
 // The pipeline options for one job: the profile's page format, narrowed by
 // the options.
-Result<PipelineOptions> pipeline_options(const CupsOptions& options, const profile::PrinterProfile& profile);
+Result<pipeline::PipelineOptions> pipeline_options(const CupsOptions& options, const profile::PrinterProfile& profile);
 
 // The source format from the MIME type CUPS decided on (CONTENT_TYPE):
-// text/plain, text/markdown, DOCX, BRF, PEF. ODT and others are errors.
-Result<SourceFormat> source_format(std::string_view mime_type);
+// text/plain, text/markdown, DOCX, ODT, BRF, PEF; anything else is an error.
+Result<import::SourceFormat> source_format(std::string_view mime_type);
 
 }  // namespace tactus::cups

@@ -23,7 +23,13 @@
 #include "import/xml_util.hpp"
 #include "import/zip_archive.hpp"
 
-namespace tactus::import_detail {
+namespace tactus::import::detail {
+
+using document::BlockKind;
+using document::emphasis_bold;
+using document::emphasis_italic;
+using document::emphasis_none;
+using document::emphasis_underline;
 namespace {
 
 // ODF 1.3 part 3, 6.1.2: in text content every run of spaces, tabs and line
@@ -155,7 +161,7 @@ public:
         }
     }
 
-    Result<Document> finish() { return builder_.finish(); }
+    Result<document::Document> finish() { return builder_.finish(); }
 
 private:
     void list(const pugi::xml_node& l, int level, std::string style) {
@@ -268,7 +274,7 @@ Result<bool> load(ZipArchive& zip, const std::string& part, pugi::xml_document& 
 
 }  // namespace
 
-Result<Document> import_odt(std::string_view bytes) {
+Result<document::Document> import_odt(std::string_view bytes) {
     auto zip = ZipArchive::open(bytes);
     if (!zip) return std::unexpected(zip.error());
     if (zip->contains("mimetype")) {
@@ -299,4 +305,4 @@ Result<Document> import_odt(std::string_view bytes) {
     return reader.finish();
 }
 
-}  // namespace tactus::import_detail
+}  // namespace tactus::import::detail

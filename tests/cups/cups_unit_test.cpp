@@ -112,11 +112,13 @@ TEST(CupsJobOptions, TablesAreNamedWithOrWithoutTheirExtension) {
 }
 
 TEST(CupsJobOptions, TheProfileGivesThePageFormatAndOptionsMayOnlyNarrowIt) {
-    const auto profile = profile::default_profile();  // 27 x 24, interpoint
-    auto o = pipeline_options({}, profile);
+    const auto machine = profile::default_profile();  // 27 x 24, interpoint
+    auto o = pipeline_options({}, machine);
     ASSERT_TRUE(o) << o.error().to_string();
-    EXPECT_EQ(o->layout.geometry, profile.geometry);
-    EXPECT_EQ(o->tables, kDefaultTable);
+    EXPECT_EQ(o->layout.geometry.cells_per_line, machine.geometry.cells_per_line);
+    EXPECT_EQ(o->layout.geometry.lines_per_page, machine.geometry.lines_per_page);
+    EXPECT_EQ(o->layout.geometry.interpoint, machine.geometry.interpoint);
+    EXPECT_EQ(o->tables, translate::kDefaultTable);
 
     o = pipeline_options({{"braille-table", "en-ueb-g1"}, {"interpoint", "true"}, {"cells-per-line", "20"},
                           {"lines-per-page", "20"}, {"braille-page-numbers", "none"}, {"print-page-indicators", "no"}},
@@ -126,7 +128,7 @@ TEST(CupsJobOptions, TheProfileGivesThePageFormatAndOptionsMayOnlyNarrowIt) {
     EXPECT_EQ(o->layout.geometry.cells_per_line, 20);
     EXPECT_EQ(o->layout.geometry.lines_per_page, 20);
     EXPECT_TRUE(o->layout.geometry.interpoint);
-    EXPECT_EQ(o->layout.page_numbers, PageNumberPosition::none);
+    EXPECT_EQ(o->layout.page_numbers, layout::PageNumberPosition::none);
     EXPECT_FALSE(o->layout.print_page_indicators);
 
     struct Bad {
@@ -140,20 +142,22 @@ TEST(CupsJobOptions, TheProfileGivesThePageFormatAndOptionsMayOnlyNarrowIt) {
                           Bad{{{"lines-per-page", "x"}}, "option lines-per-page", "not a whole number"},
                           Bad{{{"braille-page-numbers", "left"}}, "option braille-page-numbers", ""},
                           Bad{{{"braille-table", "xx"}}, "option braille-table", "not an installed braille table"}}) {
-        const auto r = pipeline_options(b.options, profile);
+        const auto r = pipeline_options(b.options, machine);
         ASSERT_FALSE(r) << b.where;
         EXPECT_EQ(r.error().where.rfind(b.where, 0), 0u) << r.error().to_string();
         EXPECT_NE(r.error().message.find(b.says), std::string::npos) << r.error().to_string();
     }
     // CUPS's own options are not ours to refuse.
-    EXPECT_TRUE(pipeline_options({{"number-up", "1"}, {"job-uuid", "urn:uuid:x"}, {"finishings", "3"}}, profile));
+    EXPECT_TRUE(pipeline_options({{"number-up", "1"}, {"job-uuid", "urn:uuid:x"}, {"finishings", "3"}}, machine));
 }
 
 TEST(CupsJobOptions, MimeTypesMapToImporters) {
+    using import::SourceFormat;
     EXPECT_EQ(source_format("text/plain").value(), SourceFormat::text);
     EXPECT_EQ(source_format("text/markdown").value(), SourceFormat::markdown);
     EXPECT_EQ(source_format("application/vnd.openxmlformats-officedocument.wordprocessingml.document").value(),
               SourceFormat::docx);
+    EXPECT_EQ(source_format("application/vnd.oasis.opendocument.text").value(), SourceFormat::odt);
     EXPECT_EQ(source_format("application/x-brf").value(), SourceFormat::brf);
     EXPECT_EQ(source_format("application/x-pef+xml").value(), SourceFormat::pef);
     const auto r = source_format("image/png");

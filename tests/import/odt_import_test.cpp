@@ -4,19 +4,19 @@
 namespace tactus::test {
 namespace {
 
-const auto H = BlockKind::heading;
-const auto P = BlockKind::paragraph;
-const auto LI = BlockKind::list_item;
-constexpr std::uint8_t I = emphasis_italic;
-constexpr std::uint8_t B = emphasis_bold;
-constexpr std::uint8_t U = emphasis_underline;
+const auto H = document::BlockKind::heading;
+const auto P = document::BlockKind::paragraph;
+const auto LI = document::BlockKind::list_item;
+constexpr std::uint8_t I = document::emphasis_italic;
+constexpr std::uint8_t B = document::emphasis_bold;
+constexpr std::uint8_t U = document::emphasis_underline;
 
 // lesson.odt is hand-made (tests/data/import/README.md) with the structure
 // LibreOffice writes: automatic text styles, list styles, a page break from a
 // paragraph style, soft page breaks, a note, a table.
 TEST(OdtImport, TheSameLessonAsTheDocx) {
     const auto doc = import_data_file("lesson.odt");
-    const std::vector<Block> expected = {
+    const std::vector<document::Block> expected = {
         text_block(H, 1, {{"Weather Lesson"}}),
         text_block(P, 0,
                    {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I}, {", and the "},
@@ -39,9 +39,9 @@ TEST(OdtImport, TheSameLessonAsTheDocx) {
 
 TEST(OdtImport, DetectedByExtensionAndContent) {
     const auto bytes = read_data("lesson.odt");
-    EXPECT_EQ(detect_source_format(bytes, "lesson.odt"), SourceFormat::odt);
-    EXPECT_EQ(detect_source_format(bytes, "no-extension"), SourceFormat::odt);
-    EXPECT_EQ(parse_source_format("ODT").value(), SourceFormat::odt);
+    EXPECT_EQ(import::detect_source_format(bytes, "lesson.odt"), import::SourceFormat::odt);
+    EXPECT_EQ(import::detect_source_format(bytes, "no-extension"), import::SourceFormat::odt);
+    EXPECT_EQ(import::parse_source_format("ODT").value(), import::SourceFormat::odt);
 }
 
 TEST(OdtImport, AMissingContentPartIsNamed) {
