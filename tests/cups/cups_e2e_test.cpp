@@ -185,7 +185,9 @@ TEST(CupsE2E, AnUnknownTableFailsTheJobWithAClearErrorAndEmbossesNothing) {
     EXPECT_NE(status.find("'no-such-table' is not an installed braille table"), std::string::npos) << status;
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     EXPECT_TRUE(sim.strikes().empty());
-    if (std::filesystem::exists(rig.e.db)) EXPECT_TRUE(rig.e.spool().jobs(true)->empty());
+    if (std::filesystem::exists(rig.e.db)) {
+        EXPECT_TRUE(rig.e.spool().jobs(true)->empty());
+    }
 }
 
 }  // namespace

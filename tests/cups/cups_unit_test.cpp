@@ -122,7 +122,7 @@ TEST(CupsJobOptions, TheProfileGivesThePageFormatAndOptionsMayOnlyNarrowIt) {
 
     o = pipeline_options({{"braille-table", "en-ueb-g1"}, {"interpoint", "true"}, {"cells-per-line", "20"},
                           {"lines-per-page", "20"}, {"braille-page-numbers", "none"}, {"print-page-indicators", "no"}},
-                         profile);
+                         machine);
     ASSERT_TRUE(o) << o.error().to_string();
     EXPECT_EQ(o->tables, "en-ueb-g1.ctb");
     EXPECT_EQ(o->layout.geometry.cells_per_line, 20);
