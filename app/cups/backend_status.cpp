@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "backend_status.hpp"
 
+#include <algorithm>
+
 namespace tactus::cups {
 namespace {
 
@@ -47,7 +49,10 @@ std::vector<std::string> StatusReporter::update(const JobView& job) {
         }
     }
 
-    const bool paper_out = job.state == JobState::paused && contains(job.reason, "paper out");
+    // The runner pauses on the first fault report ("controller fault"); the
+    // link's next note names it ("paper out at sheet 2: load paper").
+    const bool paper_out =
+        job.state == JobState::paused && (contains(job.reason, "paper out") || contains(job.last_note, "paper out"));
     const bool offline = job.state == JobState::running && contains(job.last_note, "connection lost");
     for (auto& l : set_reason(kPaperOut, paper_out)) out.push_back(std::move(l));
     for (auto& l : set_reason(kOffline, offline)) out.push_back(std::move(l));
@@ -63,10 +68,11 @@ std::vector<std::string> StatusReporter::update(const JobView& job) {
         break;
     case JobState::running:
         info = offline ? "The embosser is not answering (" + job.last_note + ")"
-                       : "Embossing sheet " + std::to_string(current ? current->sheet : done) + of;
+                       : "Embossing sheet " + std::to_string(current ? current->sheet : std::min(done + 1, job.total_sheets)) + of;
         break;
     case JobState::paused:
-        info = paper_out ? capitalised(job.reason) : "Paused: " + job.reason;
+        info = paper_out ? capitalised(contains(job.reason, "paper out") ? job.reason : job.last_note)
+                         : "Paused: " + job.reason;
         break;
     case JobState::completed: info = "Embossed all " + std::to_string(job.total_sheets) + " sheet(s)"; break;
     case JobState::cancelled: info = "Cancelled after " + std::to_string(done) + of + " sheet(s)"; break;

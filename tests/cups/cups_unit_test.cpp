@@ -216,6 +216,16 @@ TEST(CupsStatus, PaperOutAndOfflineSetAndClearPrinterStateReasons) {
     EXPECT_TRUE(r.clear().empty());
 }
 
+TEST(CupsStatus, PaperOutIsSeenInTheLinksNoteWhenThePauseReasonIsGeneric) {
+    // What the runner records: paused on "controller fault", then the note.
+    StatusReporter r;
+    const auto lines = r.update({JobState::paused, "controller fault", sheets({{4, 4}, {1, 4}}), 2,
+                                 "paper out at sheet 2 (pass 61 of the job): load paper", 0});
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "STATE: +media-empty-error"), lines.end());
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "INFO: Paper out at sheet 2 (pass 61 of the job): load paper"),
+              lines.end());
+}
+
 TEST(CupsStatus, WaitingBehindLocalJobsIsSaid) {
     StatusReporter r;
     const auto lines = r.update({JobState::queued, "", sheets({{0, 4}}), 1, "", 2});
