@@ -41,7 +41,7 @@ wait_running() {
     local i
     for i in $(seq 1 200); do
         if env $(env_lines "$dir") lpstat -r 2>/dev/null | grep -q "is running"; then return 0; fi
-        if ! kill -0 "$(cat "$dir/cupsd.pid")" 2>/dev/null; then
+        if ! kill -0 "$(cat "$dir/private-cupsd.pid")" 2>/dev/null; then
             cat "$dir/log/error_log" >&2 2>/dev/null || true
             die "cupsd exited while starting (see $dir/log/error_log)"
         fi
@@ -54,7 +54,7 @@ launch() {
     local dir=$1
     # -f: foreground (we keep its pid); -c/-s: our configuration only.
     cupsd -f -c "$dir/cupsd.conf" -s "$dir/cups-files.conf" >>"$dir/log/cupsd.out" 2>&1 &
-    echo $! >"$dir/cupsd.pid"
+    echo $! >"$dir/private-cupsd.pid"
     wait_running "$dir"
 }
 
@@ -125,6 +125,7 @@ AccessLog $dir/log/access_log
 ErrorLog $dir/log/error_log
 PageLog $dir/log/page_log
 FileDevice No
+Printcap $dir/printcap
 ${setenv}
 CONF
     if [ "$(id -u)" -eq 0 ]; then
@@ -148,8 +149,8 @@ kill_backends() {
 
 stop() {
     local dir=$1 pid
-    [ -f "$dir/cupsd.pid" ] || return 0
-    pid=$(cat "$dir/cupsd.pid")
+    [ -f "$dir/private-cupsd.pid" ] || return 0
+    pid=$(cat "$dir/private-cupsd.pid")
     if kill -TERM "$pid" 2>/dev/null; then
         local i
         for i in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.05; done
@@ -161,7 +162,7 @@ stop() {
 case "${1:-}" in
     start) shift; [ $# -ge 5 ] || die "usage: start DIR BACKEND FILTER PPD TYPES [ENV=VALUE...]"; start "$@" ;;
     stop) stop "$(cd "$2" && pwd)" ;;
-    kill) kill -KILL "$(cat "$2/cupsd.pid")" ;;
+    kill) kill -KILL "$(cat "$2/private-cupsd.pid")" ;;
     restart) launch "$(cd "$2" && pwd)"; env_lines "$(cd "$2" && pwd)" ;;
     env) env_lines "$(cd "$2" && pwd)" ;;
     *) die "usage: private_cupsd.sh start|stop|kill|restart|env DIR ..." ;;
