@@ -79,6 +79,10 @@ public:
 
     // The queue: lpadmin on the simulator's pty; the pty is opened by lp.
     bool add_queue(const PtySim& sim, const std::string& name = "Embosser") {
+        if (sim.path().empty()) {
+            ADD_FAILURE() << "tactus-cli sim --pty printed no pty path (machine overloaded?)";
+            return false;
+        }
         if (is_root()) ::chmod(sim.path().c_str(), 0666);
         const auto [code, out] =
             client({"lpadmin", "-p", name, "-E", "-v", "tactus:" + sim.device(), "-P", TACTUS_CUPS_PPD});
