@@ -16,6 +16,8 @@ packages=(
   qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools libgl-dev
   libxml2-utils bible-kjv time
+  cups-daemon cups-client cups-bsd libcups2-dev
+  help2man desktop-file-utils appstream appstream-util lintian dpkg-dev
   xvfb xauth xdotool at-spi2-core python3-pyatspi dbus dbus-x11 imagemagick
 )
 export DEBIAN_FRONTEND=noninteractive

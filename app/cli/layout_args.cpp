@@ -12,7 +12,7 @@
 namespace tactus::cli {
 
 void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
-    cmd.add_option("file", file, "Document: .txt, .md, .docx, .brf or .pef")->required();
+    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .brf or .pef")->required();
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
     std::string presets;
@@ -41,7 +41,7 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--margin-right", margin_right, "Right margin in cells");
     cmd.add_option("--margin-top", margin_top, "Top margin in lines");
     cmd.add_option("--margin-bottom", margin_bottom, "Bottom margin in lines");
-    cmd.add_option("--format", format, "Input format: auto, txt, md, docx, brf, pef")
+    cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, brf, pef")
         ->capture_default_str();
     cmd.add_option("--encoding", encoding,
                    "Text encoding override (e.g. UTF-8, Big5, GB18030, windows-1252); default: detect");

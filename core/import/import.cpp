@@ -29,6 +29,7 @@ std::optional<SourceFormat> format_from_extension(const std::string& ext) {
     if (ext == "txt" || ext == "text") return SourceFormat::text;
     if (ext == "md" || ext == "markdown") return SourceFormat::markdown;
     if (ext == "docx") return SourceFormat::docx;
+    if (ext == "odt") return SourceFormat::odt;
     if (ext == "brf" || ext == "brl") return SourceFormat::brf;
     if (ext == "pef") return SourceFormat::pef;
     return std::nullopt;
@@ -61,7 +62,7 @@ Result<SourceFormat> parse_source_format(std::string_view name) {
     // The format names are the extensions (plus their long forms).
     if (const auto f = format_from_extension(n)) return *f;
     return fail("unknown input format '" + std::string(name) +
-                    "' (expected auto, txt, md, docx, brf or pef)",
+                    "' (expected auto, txt, md, docx, odt, brf or pef)",
                 "format");
 }
 
@@ -71,6 +72,7 @@ std::string_view source_format_name(SourceFormat format) {
         case SourceFormat::text: return "txt";
         case SourceFormat::markdown: return "md";
         case SourceFormat::docx: return "docx";
+        case SourceFormat::odt: return "odt";
         case SourceFormat::brf: return "brf";
         case SourceFormat::pef: return "pef";
     }
@@ -79,7 +81,13 @@ std::string_view source_format_name(SourceFormat format) {
 
 SourceFormat detect_source_format(std::string_view bytes, std::string_view name) {
     if (const auto f = format_from_extension(extension_of(name))) return *f;
-    if (bytes.starts_with("PK\x03\x04")) return SourceFormat::docx;
+    if (bytes.starts_with("PK\x03\x04")) {
+        // An OpenDocument package stores its type, uncompressed, as the first entry.
+        if (bytes.substr(30, 8) == "mimetype" &&
+            bytes.substr(38).starts_with("application/vnd.oasis.opendocument.text"))
+            return SourceFormat::odt;
+        return SourceFormat::docx;
+    }
     if (looks_like_pef(bytes)) return SourceFormat::pef;
     // Braille ASCII cannot be told from upper-case English by content, and
     // Markdown is valid plain text: both need their extension or an explicit format.
@@ -118,6 +126,10 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
         case SourceFormat::docx:
             if (bytes.empty()) return fail("empty file is not a DOCX document", where);
             doc = detail::import_docx(bytes);
+            break;
+        case SourceFormat::odt:
+            if (bytes.empty()) return fail("empty file is not an ODT document", where);
+            doc = detail::import_odt(bytes);
             break;
         case SourceFormat::brf: doc = detail::import_brf(bytes); break;
         case SourceFormat::pef:

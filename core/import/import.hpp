@@ -13,7 +13,7 @@
 
 namespace tactus::import {
 
-enum class SourceFormat { automatic, text, markdown, docx, brf, pef };
+enum class SourceFormat { automatic, text, markdown, docx, odt, brf, pef };
 
 struct ImportOptions {
     SourceFormat format = SourceFormat::automatic;

@@ -16,5 +16,6 @@ Result<document::Document> import_markdown(std::string_view utf8);
 Result<document::Document> import_docx(std::string_view bytes);
 Result<document::Document> import_brf(std::string_view bytes);
 Result<document::Document> import_pef(std::string_view bytes);
+Result<document::Document> import_odt(std::string_view bytes);
 
 }  // namespace tactus::import::detail

@@ -33,6 +33,10 @@ struct JobSubmission {
     std::size_t last_page = 0;
     int priority = 0;           // higher first; equal priorities in submission order
     std::string user;
+    // Where the job comes from when another system sent it (e.g.
+    // "cups:urn:uuid:..."); empty for local jobs. Submitting a job with an
+    // origin the spool already has returns that job instead of a new one.
+    std::string origin;
 };
 
 struct JobRecord {

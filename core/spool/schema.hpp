@@ -10,6 +10,17 @@ namespace tactus::spool {
 inline constexpr int kSchemaVersion = 1;
 inline constexpr std::int32_t kApplicationId = 0x54435350;  // "TCSP"
 
+// Jobs sent from another system (a CUPS job, by its job-uuid) and the spool
+// job each became: submitting the same origin again gives the same job, so a
+// job CUPS runs twice is queued once. Made on open when missing, so spools
+// written before it gain it without a version change.
+inline constexpr const char* kJobOrigins = R"sql(
+CREATE TABLE IF NOT EXISTS job_origins(
+  origin TEXT PRIMARY KEY,
+  job_id INTEGER NOT NULL UNIQUE REFERENCES jobs(id) ON DELETE CASCADE
+) WITHOUT ROWID;
+)sql";
+
 inline constexpr const char* kSchema = R"sql(
 CREATE TABLE printers(
   id            INTEGER PRIMARY KEY,

@@ -147,6 +147,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
         SPOOL_TRY(db.exec("PRAGMA synchronous=FULL"));
     }
+    if (!read_only) SPOOL_TRY(db.exec(kJobOrigins));
     SPOOL_TRY(db.exec("PRAGMA foreign_keys=ON"));
     return Spool(std::move(db), read_only);
 }
@@ -254,6 +255,13 @@ Result<JobId> Spool::submit(const JobSubmission& job) {
     if (job.sheets_per_copy == 0) return fail("the document has no pages to emboss");
     if (job.copies == 0 || job.copies > 10000) return fail("copies must be 1 to 10000", "--copies");
     SPOOL_LET(tx, sql::Transaction::begin(db_));
+    if (!job.origin.empty()) {
+        // Inside the transaction: two submitters of one origin cannot both miss it.
+        SPOOL_LET(known, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
+        known.bind(1, job.origin);
+        SPOOL_LET(row, known.step());
+        if (row) return known.int64(0);
+    }
     SPOOL_LET(p, printer(job.printer));
     SPOOL_LET(s, db_.prepare(
                      "INSERT INTO jobs(printer_id, title, document, profile_json, sheets_per_copy, "
@@ -266,6 +274,11 @@ Result<JobId> Spool::submit(const JobSubmission& job) {
         .bind(11, now).bind(12, now);
     SPOOL_TRY(s.run());
     const JobId id = db_.last_insert_rowid();
+    if (!job.origin.empty()) {
+        SPOOL_LET(o, db_.prepare("INSERT INTO job_origins(origin, job_id) VALUES(?,?)"));
+        o.bind(1, job.origin).bind(2, id);
+        SPOOL_TRY(o.run());
+    }
     SPOOL_TRY(insert_event(id, p.id, "submitted",
                            "'" + job.title + "' by " + job.user + ": " +
                                std::to_string(job.sheets_per_copy) + " sheet(s) x " +
@@ -284,6 +297,16 @@ Result<JobRecord> Spool::job_locked(JobId id) {
 }
 
 Result<JobRecord> Spool::job(JobId id) { return job_locked(id); }
+
+Result<std::optional<JobRecord>> Spool::job_by_origin(std::string_view origin) {
+    SPOOL_LET(s, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
+    s.bind(1, origin);
+    SPOOL_LET(row, s.step());
+    if (!row) return std::optional<JobRecord>{};
+    const JobId id = s.int64(0);
+    SPOOL_LET(j, job_locked(id));
+    return std::optional<JobRecord>(std::move(j));
+}
 
 Result<std::string> Spool::document_snapshot(JobId id) {
     SPOOL_LET(s, db_.prepare("SELECT document FROM jobs WHERE id = ?"));

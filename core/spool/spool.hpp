@@ -52,7 +52,10 @@ public:
 
     // --- clients
     // The profile snapshot is the printer's profile at this moment.
+    // Idempotent on `job.origin` (records.hpp): a known origin returns its job.
     Result<JobId> submit(const JobSubmission& job);
+    // The job submitted with this origin, if any.
+    Result<std::optional<JobRecord>> job_by_origin(std::string_view origin);
     Result<JobRecord> job(JobId id);
     Result<std::string> document_snapshot(JobId id);
     Result<std::string> profile_snapshot(JobId id);
