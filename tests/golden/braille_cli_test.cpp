@@ -9,7 +9,32 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../common/run.hpp"
+#include "../common/process.hpp"
+
+namespace {
+// tactus-cli with a command line written as one string: words split at spaces,
+// '...' quoting a word (no shell involved).
+tactus::test::RunResult run_cli(const std::string& line) {
+    std::vector<std::string> args;
+    std::string word;
+    bool quoted = false, have = false;
+    for (const char c : line) {
+        if (c == '\'') {
+            quoted = !quoted;
+            have = true;
+        } else if (c == ' ' && !quoted) {
+            if (have) args.push_back(word);
+            word.clear();
+            have = false;
+        } else {
+            word += c;
+            have = true;
+        }
+    }
+    if (have) args.push_back(word);
+    return tactus::test::run_captured(tactus::test::cli(args));
+}
+}  // namespace
 
 namespace fs = std::filesystem;
 
@@ -30,35 +55,35 @@ std::size_t count(const std::string& s, char c) { return static_cast<std::size_t
 // `layout --to brf` of a document, fed back in, gives the same pages (it gave
 // twice as many: the old page-number lines kept and new numbers added).
 TEST(BrailleCli, BrfBackInIsPageForPage) {
-    const auto first = run_command(cli("layout --to brf " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto first = run_cli(("layout --to brf " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
     ASSERT_EQ(first.exit_code, 0) << first.err;
     const auto brf = temp_file("welcome.brf", first.out);
-    const auto again = run_command(cli("layout --to brf '" + brf.string() + "'"));
+    const auto again = run_cli(("layout --to brf '" + brf.string() + "'"));
     ASSERT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(count(again.out, '\f'), count(first.out, '\f'));
     EXPECT_EQ(again.out, first.out);
 }
 
 TEST(BrailleCli, PefThatDoesNotFitStopsWithExitFiveAndOffersReflow) {
-    const auto r = run_command(cli("layout --to brf " + kPef + "us_braille_40x25.pef"));
+    const auto r = run_cli(("layout --to brf " + kPef + "us_braille_40x25.pef"));
     EXPECT_EQ(r.exit_code, 5) << r.err;
     EXPECT_TRUE(r.out.empty());
     EXPECT_NE(r.err.find("us_braille_40x25.pef"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--reflow"), std::string::npos) << r.err;
-    const auto reflowed = run_command(cli("layout --reflow --to brf " + kPef + "us_braille_40x25.pef"));
+    const auto reflowed = run_cli(("layout --reflow --to brf " + kPef + "us_braille_40x25.pef"));
     EXPECT_EQ(reflowed.exit_code, 0) << reflowed.err;
-    const auto us = run_command(cli("layout --preset us-braille --single-sided --to brf " + kPef +
+    const auto us = run_cli(("layout --preset us-braille --single-sided --to brf " + kPef +
                                     "us_braille_40x25.pef"));
     EXPECT_EQ(us.exit_code, 0) << us.err;
     EXPECT_EQ(count(us.out, '\f'), 2u);
     // On interpoint paper each page of the single-sided PEF gets a blank back.
-    const auto both = run_command(cli("layout --preset us-braille --to brf " + kPef + "us_braille_40x25.pef"));
+    const auto both = run_cli(("layout --preset us-braille --to brf " + kPef + "us_braille_40x25.pef"));
     EXPECT_EQ(count(both.out, '\f'), 4u);
 }
 
 TEST(BrailleCli, PefRoundTripThroughTheCommandLineKeepsMetadata) {
     const auto out = fs::temp_directory_path() / "tactus-braille-cli-sections.pef";
-    const auto r = run_command(cli("layout --to pef -o '" + out.string() + "' " + kPef + "sections.pef"));
+    const auto r = run_cli(("layout --to pef -o '" + out.string() + "' " + kPef + "sections.pef"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::ifstream f(out);
     const std::string pef((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -72,7 +97,7 @@ TEST(BrailleCli, PefRoundTripThroughTheCommandLineKeepsMetadata) {
 }
 
 TEST(BrailleCli, ImpossiblePefAttributeIsBadInputWithItsLine) {
-    const auto r = run_command(cli("layout --to brf " + kPef + "bad_duplex.pef"));
+    const auto r = run_cli(("layout --to brf " + kPef + "bad_duplex.pef"));
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find("bad_duplex.pef:11"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("maybe"), std::string::npos) << r.err;
@@ -80,35 +105,35 @@ TEST(BrailleCli, ImpossiblePefAttributeIsBadInputWithItsLine) {
 
 // The help says a4 (the default) is interpoint: `layout` now lays it out so.
 TEST(BrailleCli, DefaultPresetIsInterpointAsTheHelpSays) {
-    const auto help = run_command(cli("layout --help"));
+    const auto help = run_cli(("layout --help"));
     EXPECT_NE(help.out.find("a4: A4, 27 cells x 24 lines, interpoint"), std::string::npos) << help.out;
-    const auto s = run_command(cli("layout --summary " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto s = run_cli(("layout --summary " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
     ASSERT_EQ(s.exit_code, 0) << s.err;
     EXPECT_NE(s.out.find("interpoint"), std::string::npos) << s.out;
-    const auto single = run_command(cli("layout --summary --single-sided " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto single = run_cli(("layout --summary --single-sided " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
     EXPECT_NE(single.out.find("single-sided"), std::string::npos) << single.out;
-    const auto preset = run_command(cli("layout --summary --preset a4-single " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto preset = run_cli(("layout --summary --preset a4-single " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
     EXPECT_NE(preset.out.find("single-sided"), std::string::npos) << preset.out;
 }
 
 TEST(BrailleCli, EmptyDocumentIsAnErrorUnlessABlankPageIsAskedFor) {
     const auto empty = temp_file("empty.txt", "");
-    const auto r = run_command(cli("layout --to brf '" + empty.string() + "'"));
+    const auto r = run_cli(("layout --to brf '" + empty.string() + "'"));
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.err.find("empty"), std::string::npos) << r.err;
-    const auto blank = run_command(cli("layout --blank-page --to brf '" + empty.string() + "'"));
+    const auto blank = run_cli(("layout --blank-page --to brf '" + empty.string() + "'"));
     EXPECT_EQ(blank.exit_code, 0) << blank.err;
     EXPECT_EQ(count(blank.out, '\f'), 1u);
 }
 
 TEST(BrailleCli, TableThatDoesNotSuitTheScriptIsNamed) {
-    const auto zh = run_command(cli("layout --to brf " TACTUS_RESOURCES_DIR "/samples/chinese-tw.txt"));
+    const auto zh = run_cli(("layout --to brf " TACTUS_RESOURCES_DIR "/samples/chinese-tw.txt"));
     EXPECT_NE(zh.err.find("warning"), std::string::npos) << zh.err;
     EXPECT_NE(zh.err.find("zh-tw.ctb"), std::string::npos) << zh.err;
-    const auto cn = run_command(cli("layout --to unicode " TACTUS_RESOURCES_DIR "/samples/chinese-cn.txt"));
+    const auto cn = run_cli(("layout --to unicode " TACTUS_RESOURCES_DIR "/samples/chinese-cn.txt"));
     EXPECT_NE(cn.err.find("zhcn-g2.ctb"), std::string::npos) << cn.err;
-    const auto en = run_command(cli("layout --table zh-tw.ctb --to unicode " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
+    const auto en = run_cli(("layout --table zh-tw.ctb --to unicode " TACTUS_RESOURCES_DIR "/samples/welcome.md"));
     EXPECT_NE(en.err.find("en-ueb-g2.ctb"), std::string::npos) << en.err;
-    const auto fine = run_command(cli("layout --table zh-tw.ctb --to brf " TACTUS_RESOURCES_DIR "/samples/chinese-tw.txt"));
+    const auto fine = run_cli(("layout --table zh-tw.ctb --to brf " TACTUS_RESOURCES_DIR "/samples/chinese-tw.txt"));
     EXPECT_EQ(fine.err.find("warning"), std::string::npos) << fine.err;
 }
