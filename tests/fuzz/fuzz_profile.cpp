@@ -21,12 +21,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // A round trip keeps an accepted profile accepted.
     if (!profile::parse_profile(profile::to_json(*profile).dump())) std::abort();
     // One line of a few cells: enough to move both axes and strike.
-    PagedDocument doc;
+    layout::PagedDocument doc;
     doc.geometry.cells_per_line = std::min(profile->geometry.cells_per_line, 4);
     doc.geometry.lines_per_page = 1;
     doc.geometry.interpoint = false;
-    Page page;
-    page.lines.push_back(BrailleLine(static_cast<std::size_t>(doc.geometry.cells_per_line), Cell{0x3F}));
+    layout::Page page;
+    page.lines.push_back(document::BrailleLine(static_cast<std::size_t>(doc.geometry.cells_per_line), document::Cell{0x3F}));
     doc.pages.push_back(page);
     (void)plan::plan_job(doc, *profile);
     return 0;

@@ -28,7 +28,7 @@ using test::TempDir;
 // the controller has gone quiet until restore().
 class LineCutWhenMuted final : public transport::ByteStream {
 public:
-    LineCutWhenMuted(std::shared_ptr<transport::SimTransport> line, std::shared_ptr<bool> cut)
+    LineCutWhenMuted(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<bool> cut)
         : line_(std::move(line)), cut_(std::move(cut)) {}
     Result<void> write(std::span<const std::uint8_t> b) override {
         if (is_cut()) return fail("device gone", "sim");
@@ -55,7 +55,7 @@ private:
         if (line_->controller().muted()) *cut_ = true;
         return *cut_;
     }
-    std::shared_ptr<transport::SimTransport> line_;
+    std::shared_ptr<controller::SimTransport> line_;
     std::shared_ptr<bool> cut_;
 };
 
@@ -64,8 +64,8 @@ struct Edge {
     std::filesystem::path db = dir / "spool.db";
     Spool spool = *Spool::open(db);
     std::shared_ptr<controller::SimController> controller = std::make_shared<controller::SimController>();
-    std::shared_ptr<transport::SimTransport> line =
-        std::make_shared<transport::SimTransport>(controller, transport::SimLineOptions{});
+    std::shared_ptr<controller::SimTransport> line =
+        std::make_shared<controller::SimTransport>(controller, controller::SimLineOptions{});
     std::shared_ptr<bool> cut = std::make_shared<bool>(false);
     std::atomic<bool> stop{false};
 
