@@ -38,7 +38,8 @@ std::vector<std::size_t> sheet_ends(const plan::JobPlan& plan) {
 
 std::size_t recorded_passes(E2E& e, JobId id) {
     std::size_t n = 0;
-    for (const auto& p : *e.spool().progress(id)) n += p.passes_done;
+    const auto progress = *e.spool().progress(id);
+    for (const auto& p : progress) n += p.passes_done;
     return n;
 }
 

@@ -24,11 +24,18 @@ namespace {
 
 using test::TempDir;
 
+// Whether the line is cut; it is cut once, the first time the controller is
+// seen quiet, and stays whole after the test restores it.
+struct Cut {
+    bool cut = false;
+    bool happened = false;
+};
+
 // The in-process line, cut (reads, writes and reopening fail) from the moment
-// the controller has gone quiet until restore().
+// the controller has gone quiet until the test restores it.
 class LineCutWhenMuted final : public transport::ByteStream {
 public:
-    LineCutWhenMuted(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<bool> cut)
+    LineCutWhenMuted(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<Cut> cut)
         : line_(std::move(line)), cut_(std::move(cut)) {}
     Result<void> write(std::span<const std::uint8_t> b) override {
         if (is_cut()) return fail("device gone", "sim");
@@ -52,11 +59,11 @@ public:
 
 private:
     bool is_cut() {
-        if (line_->controller().muted()) *cut_ = true;
-        return *cut_;
+        if (!cut_->happened && line_->controller().muted()) cut_->cut = cut_->happened = true;
+        return cut_->cut;
     }
     std::shared_ptr<controller::SimTransport> line_;
-    std::shared_ptr<bool> cut_;
+    std::shared_ptr<Cut> cut_;
 };
 
 struct Edge {
@@ -66,14 +73,14 @@ struct Edge {
     std::shared_ptr<controller::SimController> controller = std::make_shared<controller::SimController>();
     std::shared_ptr<controller::SimTransport> line =
         std::make_shared<controller::SimTransport>(controller, controller::SimLineOptions{});
-    std::shared_ptr<bool> cut = std::make_shared<bool>(false);
+    std::shared_ptr<Cut> cut = std::make_shared<Cut>();
     std::atomic<bool> stop{false};
 
     Edge() { EXPECT_TRUE(spool.add_printer("lab", "sim", profile::to_json(profile::default_profile()).dump())); }
 
     ConnectFn connect() {
         return [this](const PrinterRecord&) -> Result<link::Link> {
-            if (*cut) return fail("no such device: sim (unplugged)", "sim");
+            if (cut->cut) return fail("no such device: sim (unplugged)", "sim");
             return link::Link::over(std::make_unique<LineCutWhenMuted>(line, cut));
         };
     }
@@ -90,7 +97,8 @@ struct Edge {
     }
     std::size_t recorded(JobId id) {
         std::size_t n = 0;
-        for (const auto& p : *spool.progress(id)) n += p.passes_done;
+        const auto progress = *spool.progress(id);
+        for (const auto& p : progress) n += p.passes_done;
         return n;
     }
 };
@@ -129,13 +137,14 @@ TEST_P(PassEdge, TheControllersCountIsRecordedBeforeAnythingIsSentAgain) {
         EXPECT_NE(st.flags & encode::flag::job_ended, 0);
     }
 
-    *e.cut = false;  // the printer is back
+    e.cut->cut = false;  // the printer is back
     auto second = r.run_next(e.stop);
     ASSERT_TRUE(second) << second.error().to_string();
     EXPECT_EQ(*second, RunEnd::completed);
     const auto audit = test::audit_strikes(e.plan_of(id), e.controller->strike_log(), *e.spool.progress(id));
     std::string history;
-    for (const auto& ev : *e.spool.events(id, 1000)) history += ev.kind + ": " + ev.message + "\n";
+    const auto events = *e.spool.events(id, 1000);
+    for (const auto& ev : events) history += ev.kind + ": " + ev.message + "\n";
     EXPECT_EQ(audit.problems, "") << history;
     // Nothing claims the sheet was cut short one pass before its end (the
     // record's count, which the controller had already passed).
@@ -169,10 +178,13 @@ TEST(RunnerEdge, TheRunRecordNamesTheStreamBeforeItsFirstDataFrame) {
     EXPECT_NE(*jb.link_job, previous);
     EXPECT_EQ(*jb.link_job, e.controller->status().ack.job_id);
     EXPECT_TRUE(jb.run_open);
-    *e.cut = false;
+    e.cut->cut = false;
     auto again = r.run_next(e.stop);
     ASSERT_TRUE(again);
-    EXPECT_EQ(*again, RunEnd::completed);
+    std::string history;
+    const auto events = *e.spool.events(b, 1000);
+    for (const auto& ev : events) history += ev.kind + ": " + ev.message + "\n";
+    EXPECT_EQ(*again, RunEnd::completed) << history;
     EXPECT_EQ(test::audit_strikes(e.plan_of(b), [&] {
                   // Only job b's strikes: a and b are different documents of the same shape.
                   std::vector<controller::LoggedStrike> log = e.controller->strike_log();
