@@ -3,7 +3,8 @@
 // moments while it embosses over a pseudo-terminal to `tactus-cli sim --pty`,
 // restarted after each kill; every finished job's strike log is audited
 // against its plan. The figure that matters is zero: sheets lost, sheets
-// embossed twice. Usage: bench_kill [KILLS] [SEED]; TACTUS_KILL_SEED works too.
+// embossed twice. Usage: bench_kill [KILLS] [SEED] [KILLS_PER_JOB]; TACTUS_KILL_SEED
+// works too.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
     o.kills = argc > 1 ? std::stoi(argv[1]) : 2000;
     o.seed = argc > 2 ? static_cast<std::uint32_t>(std::stoul(argv[2])) : test::kill_seed();
     o.budget = std::chrono::seconds(6 * 3600);
+    // At most 10 kills per job, then it runs to its end: many jobs, many sheets audited.
+    o.kills_per_job = argc > 3 ? std::stoi(argv[3]) : 10;
     o.text = "The spool keeps every page.\n\nA teacher queues a book and walks away; the technician clears a jam.\n";
     std::printf("kill soak: %d SIGKILLs of `serve`, seed %u\n", o.kills, o.seed);
     std::fflush(stdout);

@@ -64,6 +64,7 @@ struct KillOptions {
     std::chrono::seconds budget{240};
     std::uint32_t seed = 1;
     int max_delay_ms = 700;          // a kill lands 0..max after serve starts
+    int kills_per_job = 0;           // then the job runs to its end (0: no limit)
     std::string copies = "4";
     std::string text;                // the document queued each round
     std::function<void(const std::string&)> progress;  // one line per finished round
@@ -126,6 +127,7 @@ inline KillReport kill_loop(const KillOptions& o) {
             return j ? std::optional<JobState>(j->state) : std::nullopt;
         };
         bool completed = false;
+        int job_kills = 0;
         for (;;) {
             Process serve({o.cli, "serve", "--db", db.string(), "--poll-ms", "20", "--retry-ms", "200", "--reconnect-ms",
                            "3000"},
@@ -133,7 +135,8 @@ inline KillReport kill_loop(const KillOptions& o) {
             // Anywhere from "still starting" to "several sheets in".
             std::this_thread::sleep_for(
                 std::chrono::milliseconds(std::uniform_int_distribution<int>(0, o.max_delay_ms)(rng)));
-            if (state() == JobState::completed || r.kills >= o.kills || Clock::now() - start >= o.budget) {
+            if (state() == JobState::completed || r.kills >= o.kills || Clock::now() - start >= o.budget ||
+                (o.kills_per_job > 0 && job_kills >= o.kills_per_job)) {
                 const auto until = Clock::now() + std::chrono::seconds(120);
                 while (Clock::now() < until) {
                     const auto st = state();
@@ -148,6 +151,7 @@ inline KillReport kill_loop(const KillOptions& o) {
             serve.signal(SIGKILL);
             serve.wait();
             ++r.kills;
+            ++job_kills;
         }
         auto s = Spool::open(db, {.create = false});
         if (!s) {
