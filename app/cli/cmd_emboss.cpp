@@ -67,7 +67,11 @@ void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e)
 }
 
 void run_emboss(const EmbossArgs& a) {
-    if (a.queue.enabled) return enqueue_emboss(a.layout, a.queue);
+    if (a.queue.enabled) {
+        EmbossQueueArgs q = a.queue;
+        q.device = a.device;  // --device with --queue: the queue printer on that device
+        return enqueue_emboss(a.layout, q);
+    }
     const auto prepared = prepare(a);
     const auto& plan = prepared.plan;
     if (a.dry_run) {

@@ -177,11 +177,25 @@ void printer_list(const QueueArgs& a) {
 
 void recover(const QueueArgs& a) {
     const auto path = require(spool::spool_path(a.db), exit_usage);
-    if (auto s = Spool::open(path, {.create = false}); s) {
-        if (auto c = s->check(); c) {
-            std::cout << path.string() << ": the spool database is fine; nothing to do\n";
-            return;
-        }
+    // Only a damaged file is moved aside; anything else keeps its queue.
+    const auto d = spool::diagnose(path);
+    switch (d.health) {
+    case spool::SpoolHealth::missing:
+        std::cout << path.string() << ": no spool database here; nothing to recover\n";
+        return;
+    case spool::SpoolHealth::healthy:
+        std::cout << path.string() << ": the spool database is fine; nothing to do\n";
+        return;
+    case spool::SpoolHealth::read_only:
+        std::cout << path.string() << ": the spool database is fine but read-only (make the file and its "
+                                      "folder writable to queue again); nothing moved\n";
+        return;
+    case spool::SpoolHealth::newer:
+    case spool::SpoolHealth::foreign:
+    case spool::SpoolHealth::in_use:
+        fail_with(exit_bad_input, Error{d.detail.message + " (not damaged, so `queue recover` leaves it where it is)",
+                                        d.detail.where});
+    case spool::SpoolHealth::damaged: break;
     }
     const auto aside = require(spool::set_aside(path), exit_failure);
     std::cout << "moved the damaged spool to " << aside.string()

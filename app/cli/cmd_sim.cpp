@@ -24,6 +24,31 @@ struct SimArgs {
     int reset_at_strike = 0;
     int power_loss_at_strike = 0;
     int limit_at_strike = 0;
+    int mute_after_pass = 0;
+};
+
+// With --mute-after-pass: one line when the controller goes quiet, one when it
+// has come to rest by itself (job ended, or paused by its keep-alive watchdog),
+// so a test can kill the host exactly in between.
+struct MuteWatch {
+    bool said_muted = false;
+    bool said_rest = false;
+    void operator()(const controller::SimController& ctl) {
+        if (!ctl.muted()) return;
+        const auto st = ctl.status();
+        if (!said_muted) {
+            said_muted = true;
+            std::cout << "muted after pass " << st.ack.executed_passes << std::endl;
+        }
+        const auto state = st.ack.state;
+        if (!said_rest && (state == encode::ControllerState::idle || state == encode::ControllerState::paused ||
+                           state == encode::ControllerState::fault)) {
+            said_rest = true;
+            std::cout << "at rest: " << encode::state_name(state) << ", job " << st.ack.job_id << ", "
+                      << st.ack.executed_passes << " passes executed"
+                      << ((st.flags & encode::flag::job_ended) ? ", job ended" : "") << std::endl;
+        }
+    }
 };
 
 void run_sim(const SimArgs& a) {
@@ -36,6 +61,8 @@ void run_sim(const SimArgs& a) {
     if (a.power_loss_at_strike > 0)
         ctl.reset_at_strike(static_cast<std::size_t>(a.power_loss_at_strike), false);
     if (a.limit_at_strike > 0) ctl.inject_limit_switch_at_strike(static_cast<std::size_t>(a.limit_at_strike));
+    if (a.mute_after_pass > 0) ctl.mute_after_pass(static_cast<std::uint16_t>(a.mute_after_pass));
+    MuteWatch watch;
     std::ofstream log;
     if (!a.strike_log.empty()) {
         log.open(a.strike_log, std::ios::trunc);
@@ -59,6 +86,8 @@ void run_sim(const SimArgs& a) {
                    .dump()
             << '\n'
             << std::flush;
+    }, [&](const controller::SimController& c) {
+        if (a.mute_after_pass > 0) watch(c);
     });
     if (!r) fail_with(r.error());
     std::cerr << "sim: " << ctl.strike_log().size() << " strikes, " << ctl.frames_accepted()
@@ -93,6 +122,10 @@ void add_sim_command(CLI::App& app) {
                     "Power loss right after strike N")->check(CLI::PositiveNumber);
     cmd->add_option("--limit-at-strike", args->limit_at_strike,
                     "Limit switch trips before strike N")->check(CLI::PositiveNumber);
+    cmd->add_option("--mute-after-pass", args->mute_after_pass,
+                    "Stop replying once N passes of the job are executed, until the host opens a new session "
+                    "(the ACK is lost with the host); says \"muted\" and then \"at rest\" on stdout")
+        ->check(CLI::Range(1, 65535));
     cmd->add_flag("--instant", args->server.sim.instant_motion,
                   "Execute motion in no time (link benchmarks)");
     cmd->add_option("--strike-log", args->strike_log, "Append each strike to FILE as a JSON line");

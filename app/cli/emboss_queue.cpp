@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "pipeline/pipeline.hpp"
+#include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/snapshot.hpp"
 #include "spool_args.hpp"
@@ -37,31 +38,81 @@ std::pair<std::size_t, std::size_t> parse_range(const std::string& r) {
     return {first, last};
 }
 
+
 }  // namespace
 
 void add_emboss_queue_options(CLI::App& cmd, EmbossQueueArgs& a) {
     cmd.add_flag("--queue", a.enabled,
                  "Store the job in the print queue and return (`tactus-cli serve` embosses it)");
     add_db_option(cmd, a.db);
-    cmd.add_option("--printer", a.printer, "With --queue: the queue's printer (default: the only one set up)");
+    cmd.add_option("--printer", a.printer,
+                   "With --queue: the queue's printer (default: the one on --device, set up on first use; "
+                   "else the only one set up)");
     cmd.add_option("--copies", a.copies, "With --queue: copies")->capture_default_str()->check(CLI::Range(1, 10000));
     cmd.add_option("--pages", a.pages, "With --queue: braille page range, e.g. 3-10, 5- or 7 (default: all)");
     cmd.add_option("--priority", a.priority, "With --queue: higher runs first")->capture_default_str();
     cmd.add_option("--title", a.title, "With --queue: job title (default: the file name)");
 }
 
-void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
-    // The printer first: an unknown printer should not cost a layout.
-    spool::Spool s = open_spool(a.db, false);
-    std::string printer = a.printer;
-    if (printer.empty()) {
-        const auto all = require(s.printers());
-        if (all.size() != 1)
-            fail_with(exit_usage, Error{all.empty() ? "no printers are set up; add one with `tactus-cli queue printer add`"
-                                                    : "several printers are set up; choose one with --printer",
-                                        "--printer"});
-        printer = all.front().name;
+namespace {
+
+// A printer name from a device string: "serial:/dev/ttyUSB0?baud=9600" ->
+// "ttyUSB0", "pty:/dev/pts/3" -> "pts-3", "hid:10c4:ea80" -> "hid-10c4-ea80",
+// "sim" -> "sim".
+std::string name_for_device(const std::string& device) {
+    const std::string head = device.substr(0, device.find('?'));
+    const auto colon = head.find(':');
+    const std::string scheme = head.substr(0, colon);
+    std::string path = colon == std::string::npos ? "" : head.substr(colon + 1);
+    if (path.rfind("/dev/", 0) == 0) path.erase(0, 5);
+    while (!path.empty() && path.front() == '/') path.erase(0, 1);
+    std::string name = path.empty() ? scheme : (scheme == "hid" ? "hid-" + path : path);
+    for (char& c : name)
+        if (c == ':' || c == '/' || c == ' ') c = '-';
+    return name;
+}
+
+// The queue printer for this job: --printer; else the one on --device (set up
+// on first use, so `emboss --queue --device X` works on a fresh machine);
+// else the only one there is.
+std::string choose_printer(spool::Spool& s, const EmbossQueueArgs& a) {
+    const auto all = require(s.printers());
+    if (!a.printer.empty()) {
+        if (!a.device.empty() && !s.printer(a.printer)) {
+            require(s.add_printer(a.printer, a.device, profile::to_json(profile::default_profile()).dump()));
+            std::cerr << "set up queue printer '" << a.printer << "' on " << a.device << '\n';
+        }
+        return a.printer;
     }
+    if (!a.device.empty()) {
+        for (const auto& p : all)
+            if (p.device == a.device) return p.name;
+        std::string name = name_for_device(a.device);
+        for (int n = 2; s.printer(name); ++n) name = name_for_device(a.device) + "-" + std::to_string(n);
+        require(s.add_printer(name, a.device, profile::to_json(profile::default_profile()).dump()));
+        std::cerr << "set up queue printer '" << name << "' on " << a.device
+                  << " with the default profile (change it with `tactus-cli queue printer set " << name
+                  << " --profile FILE`)\n";
+        return name;
+    }
+    if (all.size() == 1) return all.front().name;
+    if (all.empty())
+        fail_with(exit_usage, Error{"no printers are set up: give the embosser's device (--device serial:/dev/ttyUSB0, "
+                                    "--device sim, ...) and a queue printer is set up for it, or add one with "
+                                    "`tactus-cli queue printer add NAME --device DEVICE`",
+                                    "--printer"});
+    std::string names;
+    for (const auto& p : all) names += (names.empty() ? "" : ", ") + p.name + " (" + p.device + ")";
+    fail_with(exit_usage, Error{"several printers are set up: " + names + "; choose one with --printer", "--printer"});
+}
+
+}  // namespace
+
+void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
+    // The printer first: an unknown printer should not cost a layout. With a
+    // device the spool is created on first use.
+    spool::Spool s = open_spool(a.db, !a.device.empty());
+    const std::string printer = choose_printer(s, a);
     const auto record = require(s.printer(printer));
     const auto [first, last] = parse_range(a.pages);
     // The page format is the queue printer's unless the command line overrides

@@ -21,6 +21,7 @@ struct EmbossQueueArgs {
     std::string pages;
     int priority = 0;
     std::string title;
+    std::string device;  // emboss --device: the queue printer on that device (made if none)
 };
 
 void add_emboss_queue_options(CLI::App& emboss, EmbossQueueArgs& args);

@@ -65,7 +65,8 @@ PtyServer::~PtyServer() {
 }
 
 Result<void> PtyServer::serve(const std::atomic<bool>& stop,
-                              const std::function<void(const LoggedStrike&)>& on_strike) {
+                              const std::function<void(const LoggedStrike&)>& on_strike,
+                              const std::function<void(const SimController&)>& on_tick) {
     struct Timed {
         double at;  // wall time the byte has fully crossed the line
         std::uint8_t byte;
@@ -127,6 +128,7 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
         const auto& log = ctl_.strike_log();
         for (; logged < log.size(); ++logged)
             if (on_strike) on_strike(log[logged]);
+        if (on_tick) on_tick(ctl_);
 
         double next = now + 0.05;
         if (!inbound.empty()) next = std::min(next, inbound.front().at);

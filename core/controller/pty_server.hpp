@@ -36,9 +36,11 @@ public:
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] SimController& controller() { return ctl_; }
 
-    // Serves until `stop` is set. `on_strike` sees each strike as it is logged.
+    // Serves until `stop` is set. `on_strike` sees each strike as it is logged;
+    // `on_tick` (optional) runs after every turn of the loop, to watch the controller.
     Result<void> serve(const std::atomic<bool>& stop,
-                       const std::function<void(const LoggedStrike&)>& on_strike);
+                       const std::function<void(const LoggedStrike&)>& on_strike,
+                       const std::function<void(const SimController&)>& on_tick = {});
 
 private:
     explicit PtyServer(const PtyServerOptions& o) : options_(o), ctl_(o.sim) {}

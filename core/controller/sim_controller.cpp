@@ -78,7 +78,7 @@ encode::Status SimController::status() const {
         (configured_ ? encode::flag::configured : 0) | (homed_ ? encode::flag::homed : 0) |
         (pass_active_ ? encode::flag::pass_active : 0) |
         (paper_present_ ? encode::flag::paper_present : 0) |
-        (job_active_ ? encode::flag::job_active : 0));
+        (job_active_ ? encode::flag::job_active : 0) | (job_ended_ ? encode::flag::job_ended : 0));
     s.job_id = job_id_;
     s.sheet = sheet_;
     s.pass_index = pass_index_;
@@ -89,6 +89,7 @@ encode::Status SimController::status() const {
 }
 
 void SimController::reply(FrameType type, std::span<const std::uint8_t> payload) {
+    if (muted_) return;  // the line back to the host is dead (mute_after_pass)
     encode::append_frame(out_, expected_seq_, type, payload);
     free_reported_ = ring_free();
 }
@@ -125,6 +126,7 @@ void SimController::boot(double now, bool keep_ram) {
         faults_ = fault::power_on_reset;
         job_id_ = 0;
         job_active_ = false;
+        job_ended_ = false;
         sheet_ = 0;
         pass_index_ = 0;
         pass_active_ = false;
@@ -204,6 +206,7 @@ void SimController::on_frame(const encode::Frame& f, double now) {
                 }
             }
             session_ = true;
+            muted_ = false;
             nonce_ = h->nonce;
             expected_seq_ = static_cast<std::uint8_t>(f.seq + 1);
             faults_ &= static_cast<std::uint8_t>(~(fault::power_on_reset | fault::warm_reset));
@@ -314,6 +317,7 @@ void SimController::immediate(const encode::Frame& f, double now) {
             if (current_) interrupt_op(now);
             current_.reset();
             ring_.clear();
+            if (job_active_) job_ended_ = false;  // an aborted job did not run to its end
             job_active_ = false;
             pass_active_ = false;
             pause_requested_ = false;
@@ -496,6 +500,7 @@ bool SimController::start_next_op(double now) {
         case OpCode::job_begin:
             job_id_ = op.id;
             job_active_ = true;
+            job_ended_ = false;
             executed_passes_ = op.first_pass;
             strikes_in_pass_ = 0;
             pass_active_ = false;
@@ -559,6 +564,7 @@ void SimController::finish_op() {
     switch (op.code) {
         case OpCode::job_end:
             job_active_ = false;
+            job_ended_ = true;
             state_ = ControllerState::idle;
             set_waiting(false, now_);
             ack();
@@ -572,6 +578,10 @@ void SimController::finish_op() {
             executed_passes_ = static_cast<std::uint16_t>(pass_index_ + 1);
             pass_active_ = false;
             strikes_in_pass_ = 0;
+            if (mute_after_ && executed_passes_ == *mute_after_) {
+                mute_after_.reset();
+                muted_ = true;
+            }
             ack();  // the host counts a pass only when it is executed
             break;
         case OpCode::move: {

@@ -79,6 +79,12 @@ public:
     void warm_reset(double now);   // watchdog/RST: registers reset, RAM (progress) kept
     void power_loss(double now);   // power cycle: RAM lost
     void reset_at_strike(std::size_t nth, bool keep_ram);  // reset just after the nth strike
+    // From the moment the job-wide executed-pass count reaches `executed`, every
+    // reply is dropped until a new session (HELLO with a new nonce): the ACK of
+    // that pass never reaches the host, as when the host dies with it on the
+    // wire. The kill tests place SIGKILLs exactly at this edge.
+    void mute_after_pass(std::uint16_t executed) { mute_after_ = executed; }
+    [[nodiscard]] bool muted() const { return muted_; }
 
     [[nodiscard]] const std::vector<LoggedStrike>& strike_log() const { return log_; }
     [[nodiscard]] encode::Status status() const;
@@ -144,6 +150,7 @@ private:
     [[nodiscard]] bool move_buffered(std::size_t first_op_size) const;
     std::uint16_t job_id_ = 0;
     bool job_active_ = false;
+    bool job_ended_ = false;  // job_id_ ran to its JOB_END
     std::uint16_t sheet_ = 0;
     std::uint16_t pass_index_ = 0;
     bool pass_active_ = false;
@@ -169,6 +176,8 @@ private:
     std::size_t strike_count_ = 0;
     std::optional<std::size_t> limit_at_, hammer_at_, reset_at_;
     bool reset_keeps_ram_ = true;
+    std::optional<std::uint16_t> mute_after_;
+    bool muted_ = false;
     std::vector<LoggedStrike> log_;
     std::size_t max_ring_used_ = 0;
     std::size_t frames_accepted_ = 0;

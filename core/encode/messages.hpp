@@ -66,6 +66,10 @@ inline constexpr std::uint8_t homed = 0x02;  // carriage position known
 inline constexpr std::uint8_t pass_active = 0x04;  // inside a pass (its feed is done)
 inline constexpr std::uint8_t paper_present = 0x08;
 inline constexpr std::uint8_t job_active = 0x10;
+// The job named by job_id ran to its JOB_END (cleared by JOB_BEGIN, by ABORT of
+// a running job and by power loss). Job id and counts outlive the job, so a
+// host that died meanwhile reads what the controller finished (docs/protocol.md).
+inline constexpr std::uint8_t job_ended = 0x20;
 }  // namespace flag
 
 // Why a frame was refused (NAK payload byte 0).

@@ -299,7 +299,8 @@ private:
 Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                              const StreamStart& start) {
     const auto table = pass_table(plan);
-    if (table.size() > 0xFFFF) return fail("more than 65535 passes in one job", "plan");
+    if (table.size() > kMaxJobPasses)
+        return fail(std::to_string(table.size()) + " passes in one job; the controller counts at most 65,535", "plan");
     if (start.first_pass > table.size()) return fail("start pass beyond the plan", "plan");
     JobStream s;
     s.first_pass = start.first_pass;

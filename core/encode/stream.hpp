@@ -54,6 +54,9 @@ inline constexpr std::size_t kMaxSegmentsPerOp = (kMaxMoveOpBytes - 2) / 3;
 // The longest settle before a strike: 0.9 s at 921.6 kHz (a three-byte varint
 // carries 21 bits).
 inline constexpr std::uint32_t kMaxStrikeWaitTicks = (1U << 21) - 1;
+// The controller counts a job's passes in 16 bits (JOB_BEGIN, PASS_BEGIN, the
+// executed-pass count of every ACK), so one job has at most this many.
+inline constexpr std::size_t kMaxJobPasses = 0xFFFF;
 
 struct Op {
     OpCode code = OpCode::job_end;

@@ -37,7 +37,8 @@ struct JobState {
 }  // namespace
 
 Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t start_sheet,
-                                        const ProgressFn& progress, const CancelToken& cancel) {
+                                        const ProgressFn& progress, const CancelToken& cancel,
+                                        std::uint16_t job_id) {
     if (!session) return fail(ErrorKind::internal, "no session: call hello() first", device);
     JobState js(plan);
     std::size_t sp = 0;
@@ -52,9 +53,11 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
                     "start_sheet");
     js.reported = js.first;
     // A fresh job id per call, so counts left from an earlier job are never
-    // mistaken for this one's.
-    js.job_id = static_cast<std::uint16_t>(opt.job_id + (rng() % 0x7FFF) + 1);
-    if (js.job_id == 0) js.job_id = 1;
+    // mistaken for this one's: the caller's, or one from the direct range that
+    // differs from the controller's last.
+    js.job_id = job_id;
+    while (js.job_id == 0 || (job_id == 0 && js.job_id == ack.job_id))
+        js.job_id = static_cast<std::uint16_t>(opt.job_id + (rng() % 0x7FFF) + 1);
 
     auto build = [&](const encode::StreamStart& st) -> Result<void> {
         auto stream = encode::encode_job(plan, js.job_id, st);

@@ -54,8 +54,9 @@ std::string Link::device() const { return impl_->device; }
 transport::ByteStream& Link::stream() { return *impl_->s; }
 
 Result<JobOutcome> Link::send_job(const plan::JobPlan& plan, std::size_t start_sheet,
-                                  const ProgressFn& progress, const CancelToken& cancel) {
-    return impl_->send_job(plan, start_sheet, progress, cancel);
+                                  const ProgressFn& progress, const CancelToken& cancel,
+                                  std::uint16_t job_id) {
+    return impl_->send_job(plan, start_sheet, progress, cancel, job_id);
 }
 
 }  // namespace tactus::link

@@ -132,9 +132,16 @@ public:
     // is executed, the job is cancelled (the controller is told to abort), or it
     // fails for good (hammer fault, device gone past the reconnect deadline,
     // paper not loaded in time). A Result error is returned only for misuse
-    // (no session, start_sheet out of range); job failures are in JobOutcome.
+    // (no session, start_sheet out of range, a plan the protocol cannot carry);
+    // job failures are in JobOutcome.
+    //
+    // `job_id` is the id JOB_BEGIN carries. 0: the link picks one from
+    // 0x0002-0x8000, never the id the controller last reported. The spool
+    // picks its own (0x8001-0xFFFF) and stores it before calling, so a
+    // controller count under that id is known to be this stream's.
     Result<JobOutcome> send_job(const plan::JobPlan& plan, std::size_t start_sheet,
-                                const ProgressFn& progress, const CancelToken& cancel);
+                                const ProgressFn& progress, const CancelToken& cancel,
+                                std::uint16_t job_id = 0);
 
     // Thread-safe requests honoured by a running send_job().
     void request_pause();

@@ -316,7 +316,8 @@ struct Link::Impl {
     }
 
     Result<JobOutcome> send_job(const plan::JobPlan& plan, std::size_t start_sheet,
-                                const ProgressFn& progress, const CancelToken& cancel);
+                                const ProgressFn& progress, const CancelToken& cancel,
+                                std::uint16_t job_id);
 };
 
 }  // namespace tactus::link

@@ -31,6 +31,9 @@ std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps
         double lo = 0, hi = pc.dt;
         while (hi - lo > 1e-4 / machine::kTickHz) {
             const double mid = 0.5 * (lo + hi);
+            // Past 2^19 s a double cannot resolve 1e-4 tick: stop when the
+            // halves no longer move instead of looping for ever.
+            if (mid <= lo || mid >= hi) break;
             if (advance_derivs(pc.d, mid)[0] < p) lo = mid;
             else hi = mid;
         }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plan/plan_file.hpp"
 
+#include <initializer_list>
 #include <limits>
+#include <string>
 
 #include "common/file_io.hpp"
 
@@ -31,6 +33,21 @@ Result<T> get(const json& j, const char* key, const std::string& where) {
             return fail("out of range", where + "." + key);
         return static_cast<T>(x);
     }
+}
+
+// An optional word from a fixed set: absent gives the first; anything else
+// (another word, a number, ...) is an error naming the field, never a throw.
+Result<std::string> word(const json& j, const char* key, std::initializer_list<const char*> allowed,
+                         const std::string& where) {
+    const std::string first = *allowed.begin();
+    if (!j.is_object() || !j.contains(key)) return first;
+    const json& v = j.at(key);
+    if (v.is_string())
+        for (const char* a : allowed)
+            if (v.get<std::string>() == a) return std::string(a);
+    std::string list;
+    for (const char* a : allowed) list += (list.empty() ? "" : " or ") + std::string(a);
+    return fail("expected " + list, where + "." + key);
 }
 
 Result<motion::StepMove> move_from(const json& j, const std::string& where) {
@@ -107,12 +124,16 @@ Result<plan::JobPlan> plan_from_json(const json& j) {
             const auto wp = ws + ".passes[" + std::to_string(pi) + "]";
             plan::Pass p;
             p.sheet = sheet.index;
-            p.side = jp.value("side", "front") == "back" ? plan::Side::back : plan::Side::front;
+            auto side = word(jp, "side", {"front", "back"}, wp);
+            if (!side) return std::unexpected(side.error());
+            p.side = *side == "back" ? plan::Side::back : plan::Side::front;
             if (auto y = get<double>(jp, "y_mm", wp)) p.y_mm = *y;
             auto fs = get<std::int32_t>(jp, "feed_step", wp);
             if (!fs) return std::unexpected(fs.error());
             p.feed_step = *fs;
-            p.direction = jp.value("direction", 1) < 0 ? -1 : 1;
+            if (jp.contains("direction") && !jp["direction"].is_number())
+                return fail("not a number", wp + ".direction");
+            p.direction = jp.contains("direction") && jp["direction"].get<double>() < 0 ? -1 : 1;
             if (!jp.contains("feed")) return fail("missing field", wp + ".feed");
             auto feed = move_from(jp["feed"], wp + ".feed");
             if (!feed) return std::unexpected(feed.error());
@@ -123,8 +144,12 @@ Result<plan::JobPlan> plan_from_json(const json& j) {
                 const auto& jk = jp["strikes"][k];
                 const auto wk = wp + ".strikes[" + std::to_string(k) + "]";
                 plan::Strike s;
-                s.hammer = jk.value("hammer", "convex") == "concave" ? plan::Hammer::concave : plan::Hammer::convex;
-                s.side = jk.value("side", "front") == "back" ? plan::Side::back : plan::Side::front;
+                auto hammer = word(jk, "hammer", {"convex", "concave"}, wk);
+                if (!hammer) return std::unexpected(hammer.error());
+                s.hammer = *hammer == "concave" ? plan::Hammer::concave : plan::Hammer::convex;
+                auto strike_side = word(jk, "side", {"front", "back"}, wk);
+                if (!strike_side) return std::unexpected(strike_side.error());
+                s.side = *strike_side == "back" ? plan::Side::back : plan::Side::front;
                 auto cs = get<std::int32_t>(jk, "carriage_step", wk);
                 if (!cs) return std::unexpected(cs.error());
                 s.carriage_step = *cs;

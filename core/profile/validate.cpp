@@ -47,6 +47,16 @@ void check_axis(Checker& c, const Axis& a, const std::string& name) {
     c.positive(a.a_max_mm_s2, 1e7, f[2].c_str(), " mm/s2");
     c.positive(a.j_max_mm_s3, 1e11, f[3].c_str(), " mm/s3");
     c.range(a.backlash_mm, 0, 1, f[4].c_str(), " mm");
+    // Far slower than any embosser: a move would last days, and the planner
+    // would spend as long timing its steps (issue 16).
+    auto at_least = [&](double v, double lo, const char* field, const char* unit) {
+        c.require(!std::isfinite(v) || v <= 0 || v >= lo, field,
+                  "is " + num(v) + unit + ", below " + num(lo) + unit +
+                      ": motion that slow would take days to plan and to emboss");
+    };
+    at_least(a.v_max_mm_s, 1, f[1].c_str(), " mm/s");
+    at_least(a.a_max_mm_s2, 1, f[2].c_str(), " mm/s2");
+    at_least(a.j_max_mm_s3, 1, f[3].c_str(), " mm/s3");
     // The controller times each step with the 89C52 timer; it needs at least a
     // few ticks between steps to do its additions.
     const double steps_per_s = a.v_max_mm_s * a.steps_per_mm;

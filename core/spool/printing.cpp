@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "encode/stream.hpp"
 #include "plan/planner.hpp"
 
 namespace tactus::spool {
@@ -31,6 +32,15 @@ Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profil
                                   std::size_t copies) {
     auto one = plan::plan_job(doc, profile);
     if (!one) return std::unexpected(one.error());
+    // Refused before the copies are made: a job the controller cannot count
+    // would otherwise cost the memory of all of them first.
+    std::size_t passes = 0;
+    for (const auto& sheet : one->sheets) passes += sheet.passes.size();
+    if (passes * std::max<std::size_t>(copies, 1) > encode::kMaxJobPasses)
+        return fail("the job has " + std::to_string(passes * std::max<std::size_t>(copies, 1)) +
+                        " passes; the controller counts at most 65,535 in one job. Queue it in parts "
+                        "(--pages, or fewer copies at a time)",
+                    kPassesWhere);
     if (copies <= 1) return std::move(*one);
     return repeat_plan(*one, copies);
 }

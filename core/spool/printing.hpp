@@ -17,7 +17,10 @@
 namespace tactus::spool {
 
 // Plans `copies` copies of `doc`. Fails, naming page and line, when the
-// document does not fit the profile (e.g. the profile now has fewer cells per line).
+// document does not fit the profile (e.g. the profile now has fewer cells per
+// line), and with `where` == kPassesWhere when all copies together have more
+// passes than the controller counts in one job (encode::kMaxJobPasses).
+inline constexpr const char* kPassesWhere = "passes";
 Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies);
 

@@ -61,6 +61,7 @@ struct JobRecord {
     // Write-ahead record of the stream in flight (see docs/spool.md, crash safety).
     std::optional<std::uint16_t> link_job;
     std::size_t run_start_sheet = 0;
+    std::size_t run_first_pass = 0;  // job-wide index of run_start_sheet's first pass
     bool run_open = false;
 
     [[nodiscard]] std::size_t total_sheets() const { return sheets_per_copy * copies; }

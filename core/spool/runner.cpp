@@ -10,6 +10,7 @@
 #include "profile/profile_json.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner_token.hpp"
+#include "spool/settlement.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/try.hpp"
 
@@ -29,14 +30,6 @@ void sleep_unless(const std::atomic<bool>& stop, milliseconds d) {
     const auto until = std::chrono::steady_clock::now() + d;
     while (!stop.load() && std::chrono::steady_clock::now() < until)
         std::this_thread::sleep_for(std::min(d, milliseconds(20)));
-}
-
-// First pass (job-wide index) of each sheet, from the stored plan shape.
-std::vector<std::size_t> first_passes(const std::vector<SheetProgress>& progress) {
-    std::vector<std::size_t> first(progress.size() + 1, 0);
-    for (std::size_t i = 0; i < progress.size(); ++i)
-        first[i + 1] = first[i] + progress[i].passes_total;
-    return first;
 }
 
 // The sheet a stream stopped on (1-based; 0: none) goes out of the machine
@@ -114,55 +107,34 @@ Result<void> Runner::connect() {
     if (auto c = link->configure(profile::controller_config(*profile)); !c) return c;
     link_.emplace(std::move(*link));
     (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
+    if (auto r = settle_open_runs(); !r) {
+        link_.reset();
+        return r;
+    }
     return {};
 }
 
 // After a crash or a lost link the controller may have executed passes whose
-// acknowledgement never reached the database. A new session leaves the
-// controller's job paused with its count (`executed_passes`, job-wide) intact,
-// so the count is read back and recorded before anything else is sent; then
-// the leftover job is aborted so it can never run on.
-Result<void> Runner::reconcile(const JobRecord& job) {
+// acknowledgement never reached the database, up to finishing the job by
+// itself. The controller keeps the id and count of the job it last ran (a new
+// session pauses a running job, the count intact), so before anything else is
+// planned or sent the count is read and every open run record of this printer
+// is settled with it (settlement.hpp, in one transaction each); then a job the
+// controller still holds is aborted so it can never run on.
+Result<void> Runner::settle_open_runs() {
     SPOOL_LET(st, link_->status());
-    const bool active = (st.flags & encode::flag::job_active) != 0;
-    if (job.run_open && active && (!job.link_job || *job.link_job == st.ack.job_id)) {
+    controller_job_ = st.ack.job_id;
+    SPOOL_LET(open, spool_->open_runs(printer_.id));
+    for (const auto& job : open) {
         SPOOL_LET(progress, spool_->progress(job.id));
-        const auto first = first_passes(progress);
-        const std::size_t start = std::clamp<std::size_t>(job.run_start_sheet, 1, progress.size());
-        // The count is 16 bits wide: unwrap it next to what is already recorded.
-        std::size_t recorded = first[start - 1];
-        for (std::size_t k = start; k <= progress.size(); ++k) {
-            if (progress[k - 1].passes_done == 0) break;
-            recorded = first[k - 1] + progress[k - 1].passes_done;
-        }
-        std::size_t executed = st.ack.executed_passes;
-        while (executed + 65536 <= recorded + 32768) executed += 65536;
-        if (executed > recorded && executed <= first.back()) {
-            for (std::size_t k = start; k <= progress.size(); ++k) {
-                if (first[k - 1] >= executed) break;
-                const auto done = std::min(progress[k - 1].passes_total, executed - first[k - 1]);
-                SPOOL_TRY(spool_->record_passes(job.id, k, done));
-            }
-            SPOOL_TRY(spool_->log(job.id, printer_.id, "reconciled",
-                                  "the controller had executed " + std::to_string(executed - recorded) +
-                                      " pass(es) not yet recorded; recorded now"));
-        }
+        SPOOL_TRY(spool_->settle_run(job.id, settle(job, progress, st)));
     }
-    if (active && st.sheet != 0) {
-        // The sheet in the machine when the stream stopped: if it is not
-        // complete it has (or may have) dots on it and is ejected by the abort.
-        SPOOL_LET(progress, spool_->progress(job.id));
-        if (st.sheet <= progress.size() && !progress[st.sheet - 1].done())
-            SPOOL_TRY(spool_->spoil_sheet(job.id, st.sheet,
-                                          sheet_word(st.sheet) + " was in the printer, unfinished, when the "
-                                              "stream stopped: discard it; it is embossed again in full"));
-    }
-    if (active) {
+    if ((st.flags & encode::flag::job_active) != 0) {
         if (auto a = link_->abort(); !a) return a;
-        SPOOL_TRY(spool_->log(job.id, printer_.id, "aborted",
-                              "the interrupted stream left on the controller was aborted"));
+        SPOOL_TRY(spool_->log({}, printer_.id, "aborted",
+                              "the interrupted stream left on the controller (job " + std::to_string(st.ack.job_id) +
+                                  ") was aborted"));
     }
-    if (job.run_open) SPOOL_TRY(spool_->end_run(job.id));
     return {};
 }
 
@@ -207,6 +179,10 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         return RunEnd::failed;
     }
     auto plan = plan_copies(*doc, *profile, job.copies);
+    if (!plan && plan.error().where == kPassesWhere) {
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, plan.error().message, "failed", plan.error().message));
+        return RunEnd::failed;
+    }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
         const auto why = "the document no longer lays out with printer '" + printer.name +
                          "''s current profile: " +
@@ -217,19 +193,19 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
+    std::vector<std::size_t> passes;
+    for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
     SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
     if (submitted_profile != printer.profile_json)
         SPOOL_TRY(s.log(job.id, printer.id, "profile",
                         "the printer's profile changed since submission; planned with the current one"));
-    std::vector<std::size_t> passes;
-    for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
-    SPOOL_TRY(s.set_sheet_passes(job.id, passes));
 
-    // --- the printer: connect, then settle whatever an earlier run left behind
+    // --- the printer: connect, which settles whatever an earlier run left
+    // behind with the controller's count, before the plan shape is replaced
     if (!link_) {
         if (auto c = connect(); !c) return transient_failure(job, c.error().to_string());
     }
-    if (auto r = reconcile(job); !r) return transient_failure(job, r.error().to_string());
+    SPOOL_TRY(s.set_sheet_passes(job.id, passes));
 
     // --- where to start: the first unfinished sheet, or the operator's choice
     SPOOL_LET(progress, s.progress(job.id));
@@ -259,15 +235,20 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         if (p.done())
             SPOOL_TRY(s.restart_sheet(job.id, k, sheet_word(k) + " is embossed again at the operator's request"));
         else if (p.passes_done > 0)
+            // Settled runs leave no partial sheet; this is a record from
+            // before that rule (or an operator's restart point inside one).
             SPOOL_TRY(s.spoil_sheet(job.id, k,
-                                    sheet_word(k) + " was interrupted after pass " +
-                                        std::to_string(p.passes_done) + " of " +
-                                        std::to_string(p.passes_total) +
-                                        ": that partial sheet is discarded and the sheet embossed again in full"));
+                                    sheet_word(k) + " was left unfinished (" + std::to_string(p.passes_done) +
+                                        " of " + std::to_string(p.passes_total) +
+                                        " passes recorded): that partial sheet is discarded and the sheet "
+                                        "embossed again in full"));
     }
 
-    // --- stream it
-    SPOOL_TRY(s.begin_run(job.id, std::nullopt, start));
+    // --- stream it, named first: the controller job id, the start sheet and
+    // the first pass are committed before the first DATA frame
+    const auto first = first_passes(progress);
+    SPOOL_LET(link_job, s.begin_run(job.id, start, first[start - 1], controller_job_));
+    controller_job_ = link_job;
     SPOOL_TRY(s.log(job.id, printer.id, "sending",
                     "sending " + sheet_word(start) + " to " + std::to_string(job.total_sheets()) + " to " +
                         printer.device));
@@ -278,7 +259,6 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     bool fault_paused = false;
     std::optional<Error> db_error;
     std::uint8_t last_faults = 0;
-    bool link_job_recorded = false;
 
     link::Link& link = *link_;
     // Operator requests arrive through the database from any client; the watcher
@@ -316,11 +296,6 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
 
     auto on_progress = [&](const link::Progress& p) {
         last_faults = p.status.ack.faults;
-        if (!link_job_recorded && p.status.ack.job_id != 0) {
-            // Now the controller's number for this stream is known: a later
-            // reconciliation checks it before trusting the controller's count.
-            if (s.begin_run(job.id, p.status.ack.job_id, start)) link_job_recorded = true;
-        }
         if (p.executed) {
             // Recorded before the link goes on. If the disk refuses, keep trying:
             // the link stalls, the controller's keep-alive pauses it and its
@@ -351,14 +326,23 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         }
     };
 
-    auto outcome = link.send_job(*plan, start, on_progress, cancel);
+    auto outcome = link.send_job(*plan, start, on_progress, cancel, link_job);
     watching = false;
     watcher.join();
-    if (db_error)
+    if (db_error) {
+        link_.reset();  // the next start settles the open run with the controller's count
         return std::unexpected(Error{"cannot record progress in the spool (" + db_error->message +
                                          "); the controller's count is kept for the next start",
                                      db_error->where});
-    if (!outcome) return transient_failure(job, outcome.error().to_string());
+    }
+    if (!outcome) {
+        // Nothing was sent: the plan is one the protocol cannot carry. Retrying
+        // cannot change that.
+        SPOOL_TRY(s.end_run(job.id));
+        const auto why = "the printer cannot be sent this job: " + outcome.error().to_string();
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        return RunEnd::failed;
+    }
 
     switch (outcome->end) {
     case link::JobEnd::completed:
@@ -367,15 +351,18 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                               "all " + std::to_string(job.total_sheets()) + " sheets embossed"));
         return RunEnd::completed;
     case link::JobEnd::cancelled: {
-        // The link aborted the controller's job: nothing is left to reconcile,
-        // and the sheet it was on is ejected unfinished.
-        SPOOL_TRY(s.end_run(job.id));
-        SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was stopped"));
         if (operator_cancel) {
+            // The link aborted the controller's job; the sheet it was on is ejected unfinished.
+            SPOOL_TRY(s.end_run(job.id));
+            SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was cancelled"));
             SPOOL_TRY(s.set_state(job.id, JobState::cancelled, "cancelled by the operator", "cancelled",
                                   "aborted on the controller at " + sheet_word(outcome->resume_sheet)));
             return RunEnd::cancelled;
         }
+        // The server is stopping. A pass may have finished between the last
+        // report and the abort, so the run stays open: the next start settles
+        // it with the controller's count, as after a crash.
+        link_.reset();
         SPOOL_TRY(s.requeue(job.id, "the print server stopped; resumes at the first unfinished sheet",
                             0, false));
         return RunEnd::stopped;

@@ -64,8 +64,10 @@ public:
 private:
     struct Run;
     Result<RunEnd> run_job(JobRecord job, const std::atomic<bool>& stop);
+    // Opens the device, hello, configure, then settles every open run record
+    // of the printer with the controller's own count before anything is sent.
     Result<void> connect();
-    Result<void> reconcile(const JobRecord& job);
+    Result<void> settle_open_runs();
     Result<RunEnd> transient_failure(const JobRecord& job, const std::string& why);
 
     std::filesystem::path db_path_;
@@ -76,6 +78,7 @@ private:
     std::optional<Spool> spool_;
     PrinterRecord printer_;
     std::optional<link::Link> link_;
+    std::uint16_t controller_job_ = 0;  // the job id the controller last reported
 };
 
 }  // namespace tactus::spool

@@ -7,7 +7,7 @@
 
 namespace tactus::spool {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 inline constexpr std::int32_t kApplicationId = 0x54435350;  // "TCSP"
 
 // Jobs sent from another system (a CUPS job, by its job-uuid) and the spool
@@ -28,7 +28,8 @@ CREATE TABLE printers(
   device        TEXT NOT NULL,
   profile_json  TEXT NOT NULL,
   runner        TEXT NOT NULL DEFAULT '',
-  created_at    REAL NOT NULL
+  created_at    REAL NOT NULL,
+  next_link_job INTEGER NOT NULL DEFAULT 0
 );
 CREATE TABLE jobs(
   id              INTEGER PRIMARY KEY,
@@ -51,6 +52,7 @@ CREATE TABLE jobs(
   link_job        INTEGER,
   run_start_sheet INTEGER NOT NULL DEFAULT 0,
   run_open        INTEGER NOT NULL DEFAULT 0,
+  run_first_pass  INTEGER NOT NULL DEFAULT 0,
   submitted_by    TEXT NOT NULL,
   submitted_at    REAL NOT NULL,
   started_at      REAL,
@@ -77,5 +79,15 @@ CREATE TABLE events(
 );
 CREATE INDEX events_by_job ON events(job_id, id);
 )sql";
+
+// From version 1: the run record names the stream's first pass, and each
+// printer counts the controller job ids it hands out (docs/spool.md).
+inline constexpr const char* kMigrate1To2 = R"sql(
+ALTER TABLE printers ADD COLUMN next_link_job INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE jobs ADD COLUMN run_first_pass INTEGER NOT NULL DEFAULT 0;
+)sql";
+
+// Controller job ids the spool hands out; direct embossing uses the rest.
+inline constexpr std::uint16_t kFirstLinkJob = 0x8001;
 
 }  // namespace tactus::spool

@@ -40,7 +40,10 @@ std::string to_snapshot(const layout::PagedDocument& doc) {
 Result<layout::PagedDocument> from_snapshot(std::string_view text) {
     const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded() || !j.is_object()) return fail("document snapshot is not valid JSON");
-    if (j.value("format", "") != kSnapshotFormat)
+    // Every field's type is checked before it is read: json::value() and get()
+    // throw on a wrong type, and one stored job must never abort the server.
+    const auto format = j.find("format");
+    if (format == j.end() || !format->is_string() || format->get<std::string>() != kSnapshotFormat)
         return fail("document snapshot has an unknown format (expected " +
                         std::string(kSnapshotFormat) + ")",
                     "format");
@@ -52,9 +55,10 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
     layout::PagedDocument doc;
     auto int_field = [&](const char* name, int& out) -> Result<void> {
         const auto it = g->find(name);
-        if (it == g->end() || !it->is_number_integer() || it->get<int>() < 1 || it->get<int>() > 1000)
+        if (it == g->end() || !it->is_number_integer() || it->get<std::int64_t>() < 1 ||
+            it->get<std::int64_t>() > 1000)
             return fail("missing or out of range", std::string("geometry.") + name);
-        out = it->get<int>();
+        out = static_cast<int>(it->get<std::int64_t>());
         return {};
     };
     auto bool_field = [&](const char* name, bool& out) -> Result<void> {
@@ -77,7 +81,8 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
         const auto number = p.find("number");
         const auto print = p.find("print_page");
         if (!p.is_object() || lines == p.end() || !lines->is_array() || number == p.end() ||
-            !number->is_number_integer() || print == p.end() || !print->is_string())
+            !number->is_number_integer() || number->get<std::int64_t>() < -1000000 ||
+            number->get<std::int64_t>() > 1000000 || print == p.end() || !print->is_string())
             return fail("malformed page", page_where(page_no));
         if (lines->size() > max_lines)
             return fail(std::to_string(lines->size()) + " lines, the geometry allows " +

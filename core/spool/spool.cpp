@@ -10,6 +10,7 @@
 #include "spool/runner_token.hpp"
 #include "spool/schema.hpp"
 #include "spool/try.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::spool {
 namespace {
@@ -18,7 +19,7 @@ constexpr const char* kJobColumns =
     "j.id, j.printer_id, p.name, j.title, j.sheets_per_copy, j.copies, j.first_page, "
     "j.last_page, j.priority, j.state, j.reason, j.control, j.resume_sheet, j.retries, "
     "j.not_before, j.runner, j.submitted_by, j.submitted_at, j.updated_at, j.started_at, "
-    "j.finished_at, j.link_job, j.run_start_sheet, j.run_open";
+    "j.finished_at, j.link_job, j.run_start_sheet, j.run_open, j.run_first_pass";
 
 std::string job_query(std::string_view tail) {
     return std::string("SELECT ") + kJobColumns +
@@ -58,6 +59,7 @@ Result<JobRecord> read_job(const sql::Statement& s) {
     if (!s.is_null(21)) j.link_job = static_cast<std::uint16_t>(s.int64(21));
     j.run_start_sheet = size_col(s, 22);
     j.run_open = s.int64(23) != 0;
+    j.run_first_pass = size_col(s, 24);
     return j;
 }
 
@@ -71,6 +73,19 @@ auto i64(std::size_t v) { return static_cast<std::int64_t>(v); }
 
 std::string job_where(JobId id) { return "job " + std::to_string(id); }
 
+// Whether the first read works (it fails with SQLITE_CANTOPEN on a WAL
+// database whose folder is read-only and has no -shm file).
+bool can_read_wal(sql::Database& db) {
+    auto s = db.prepare("PRAGMA user_version");
+    return s && s->step().has_value();
+}
+
+bool wal_is_empty(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto wal = std::filesystem::path(path.string() + "-wal");
+    return !std::filesystem::exists(wal, ec) || std::filesystem::file_size(wal, ec) == 0;
+}
+
 }  // namespace
 
 double now_seconds() {
@@ -82,7 +97,11 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
     if (!exists) {
-        if (!options.create) return fail("no spool database here (nothing queued yet?)", path.string());
+        if (!options.create)
+            return fail("no spool database here yet: nothing has been queued on this machine. Queue a "
+                        "document with `tactus-cli emboss --queue --device DEVICE FILE` (it sets up a printer "
+                        "for DEVICE), or add one first with `tactus-cli queue printer add NAME --device DEVICE`",
+                        path.string());
         if (path.has_parent_path()) {
             std::filesystem::create_directories(path.parent_path(), ec);
             if (ec)
@@ -90,8 +109,15 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
                             path.parent_path().string());
         }
     }
-    SPOOL_LET(db, sql::Database::open(path, options.create, options.busy_timeout_ms));
-    const bool read_only = sqlite3_db_readonly(db.handle(), "main") == 1;
+    SPOOL_LET(opened, sql::Database::open(path, options.create, options.busy_timeout_ms));
+    sql::Database db = std::move(opened);
+    bool read_only = sqlite3_db_readonly(db.handle(), "main") == 1;
+    if (read_only && options.read_only_ok && !can_read_wal(db) && wal_is_empty(path)) {
+        // A read-only spool in a read-only folder: SQLite cannot make the WAL's
+        // shared-memory file, yet nobody can be writing it either.
+        SPOOL_LET(frozen, sql::Database::open_immutable(path));
+        db = std::move(frozen);
+    }
     if (read_only && !options.read_only_ok)
         return fail("the spool database is read-only (file or disk write-protected); "
                     "nothing can be queued or changed",
@@ -137,8 +163,18 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     } else if (user_version > kSchemaVersion) {
         return fail("the spool was written by a newer Tactus (schema " +
                         std::to_string(user_version) + ", this one knows " +
-                        std::to_string(kSchemaVersion) + ")",
+                        std::to_string(kSchemaVersion) + "); it was left untouched: use that "
+                        "Tactus, or point --db elsewhere",
                     path.string());
+    } else if (user_version < kSchemaVersion) {
+        if (read_only)
+            return fail("the spool is from an older Tactus and read-only, so it cannot be upgraded",
+                        path.string());
+        auto tx = sql::Transaction::begin(db);
+        if (!tx) return std::unexpected(tx.error());
+        SPOOL_TRY(db.exec(kMigrate1To2));
+        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion)));
+        SPOOL_TRY(tx->commit());
     }
     if (!read_only) {
         // WAL: readers never block the runner's progress writes. FULL: a
@@ -180,6 +216,7 @@ Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view
                                          std::string_view profile_json) {
     if (name.empty()) return fail("a printer needs a name", "--printer");
     if (device.empty()) return fail("a printer needs a device string", "--device");
+    if (auto d = transport::check_device(device); !d) return std::unexpected(located(d.error(), "--device"));
     {
         SPOOL_LET(tx, sql::Transaction::begin(db_));
         SPOOL_LET(s, db_.prepare(
@@ -199,6 +236,8 @@ Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view
 
 Result<PrinterRecord> Spool::update_printer(std::string_view name, std::optional<std::string> device,
                                             std::optional<std::string> profile_json) {
+    if (device)
+        if (auto d = transport::check_device(*device); !d) return std::unexpected(located(d.error(), "--device"));
     SPOOL_LET(p, printer(name));
     SPOOL_LET(tx, sql::Transaction::begin(db_));
     SPOOL_LET(s, db_.prepare("UPDATE printers SET device = ?, profile_json = ? WHERE id = ?"));
@@ -544,13 +583,66 @@ Result<void> Spool::restart_sheet(JobId id, std::size_t sheet, std::string_view 
     return tx.commit();
 }
 
-Result<void> Spool::begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet) {
-    SPOOL_LET(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_open = 1, "
-                             "updated_at = ? WHERE id = ?"));
-    std::optional<std::int64_t> lj;
-    if (link_job) lj = *link_job;
-    s.bind(1, lj).bind(2, i64(start_sheet)).bind(3, now_seconds()).bind(4, id);
-    return s.run();
+Result<std::uint16_t> Spool::begin_run(JobId id, std::size_t start_sheet, std::size_t first_pass,
+                                       std::uint16_t avoid) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(j, job_locked(id));
+    SPOOL_LET(q, db_.prepare("SELECT next_link_job FROM printers WHERE id = ?"));
+    q.bind(1, j.printer_id);
+    SPOOL_LET(row, q.step());
+    if (!row) return fail("no printer for the job", job_where(id));
+    // 0x8001..0xFFFF in turn, skipping the controller's current id.
+    auto next = [](std::int64_t v) -> std::uint16_t {
+        return v < kFirstLinkJob || v > 0xFFFF ? kFirstLinkJob : static_cast<std::uint16_t>(v);
+    };
+    std::uint16_t link_job = next(q.int64(0));
+    if (link_job == avoid) link_job = next(std::int64_t{link_job} + 1);
+    SPOOL_LET(p, db_.prepare("UPDATE printers SET next_link_job = ? WHERE id = ?"));
+    p.bind(1, std::int64_t{link_job} + 1).bind(2, j.printer_id);
+    SPOOL_TRY(p.run());
+    SPOOL_LET(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_first_pass = ?, "
+                             "run_open = 1, updated_at = ? WHERE id = ?"));
+    s.bind(1, std::int64_t{link_job}).bind(2, i64(start_sheet)).bind(3, i64(first_pass)).bind(4, now_seconds())
+        .bind(5, id);
+    SPOOL_TRY(s.run());
+    SPOOL_TRY(tx.commit());
+    return link_job;
+}
+
+Result<std::vector<JobRecord>> Spool::open_runs(PrinterId printer_id) {
+    SPOOL_LET(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.run_open = 1 ORDER BY j.id")));
+    s.bind(1, printer_id);
+    std::vector<JobRecord> out;
+    for (;;) {
+        SPOOL_LET(row, s.step());
+        if (!row) break;
+        SPOOL_LET(j, read_job(s));
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
+Result<void> Spool::settle_run(JobId id, const RunSettlement& settlement) {
+    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    SPOOL_LET(j, job_locked(id));
+    for (const auto& [sheet, done] : settlement.record) {
+        SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
+                                 "WHERE job_id = ? AND sheet = ? AND ? <= passes_total"));
+        s.bind(1, i64(done)).bind(2, id).bind(3, i64(sheet)).bind(4, i64(done));
+        SPOOL_TRY(s.run());
+    }
+    if (settlement.discard) {
+        SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
+                                 "WHERE job_id = ? AND sheet = ?"));
+        s.bind(1, id).bind(2, i64(*settlement.discard));
+        SPOOL_TRY(s.run());
+    }
+    SPOOL_TRY(insert_event(id, j.printer_id, "reconciled", settlement.message));
+    if (settlement.discard) SPOOL_TRY(insert_event(id, j.printer_id, "spoiled", settlement.discard_message));
+    SPOOL_LET(c, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
+    c.bind(1, now_seconds()).bind(2, id);
+    SPOOL_TRY(c.run());
+    return tx.commit();
 }
 
 Result<void> Spool::end_run(JobId id) {
@@ -618,6 +710,49 @@ Result<std::int64_t> Spool::data_version() {
     SPOOL_LET(row, s.step());
     if (!row) return fail("no data_version", db_.path().string());
     return s.int64(0);
+}
+
+Diagnosis diagnose(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return {SpoolHealth::missing, Error{"no spool database here", path.string()}};
+    auto s = Spool::open(path, {.create = false, .read_only_ok = true, .busy_timeout_ms = 2000});
+    if (s) {
+        if (auto c = s->check(); !c) return {SpoolHealth::damaged, c.error()};
+        if (s->read_only())
+            return {SpoolHealth::read_only,
+                    Error{"the spool is healthy but read-only (file, folder or disk write-protected)", path.string()}};
+        return {SpoolHealth::healthy, Error{"the spool database is fine", path.string()}};
+    }
+    // Why it would not open: read the header without writing anything.
+    sqlite3* db = nullptr;
+    const std::string uri = "file:" + path.string() + "?mode=ro";
+    int rc = sqlite3_open_v2(uri.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
+    std::int64_t app_id = 0, version = 0;
+    auto read = [&](const char* sql, std::int64_t& out) {
+        sqlite3_stmt* st = nullptr;
+        rc = sqlite3_prepare_v2(db, sql, -1, &st, nullptr);
+        if (rc == SQLITE_OK) rc = sqlite3_step(st);
+        if (rc == SQLITE_ROW) {
+            out = sqlite3_column_int64(st, 0);
+            rc = SQLITE_OK;
+        }
+        sqlite3_finalize(st);
+        return rc == SQLITE_OK;
+    };
+    sqlite3_busy_timeout(db, 2000);
+    const bool header = rc == SQLITE_OK && read("PRAGMA application_id", app_id) && read("PRAGMA user_version", version);
+    const int code = rc & 0xFF;
+    sqlite3_close_v2(db);
+    if (!header && (code == SQLITE_BUSY || code == SQLITE_LOCKED)) return {SpoolHealth::in_use, s.error()};
+    if (!header && code != SQLITE_NOTADB && code != SQLITE_CORRUPT) {
+        // Not readable for another reason (permissions, a read-only folder):
+        // nothing says the file itself is damaged.
+        return {SpoolHealth::in_use, s.error()};
+    }
+    if (!header) return {SpoolHealth::damaged, s.error()};
+    if (app_id != kApplicationId) return {SpoolHealth::foreign, s.error()};
+    if (version > kSchemaVersion) return {SpoolHealth::newer, s.error()};
+    return {SpoolHealth::in_use, s.error()};
 }
 
 Result<std::filesystem::path> set_aside(const std::filesystem::path& path) {

@@ -15,6 +15,7 @@
 
 #include "common/result.hpp"
 #include "spool/records.hpp"
+#include "spool/settlement.hpp"
 #include "spool/sqlite.hpp"
 
 namespace tactus::spool {
@@ -88,10 +89,18 @@ public:
     // Sheets embossed before that the operator asked to emboss again: their
     // progress restarts (not counted as spoiled: they were finished).
     Result<void> restart_sheet(JobId id, std::size_t sheet, std::string_view message);
-    // Write-ahead: a stream from `start_sheet` is about to be sent (the link's
-    // job number is added once the controller has reported it).
-    Result<void> begin_run(JobId id, std::optional<std::uint16_t> link_job, std::size_t start_sheet);
+    // Write-ahead, before the first DATA frame of a stream: in one transaction,
+    // hands out the printer's next controller job id (never `avoid`, the id the
+    // controller reports now) and records it with the start sheet and the
+    // stream's first pass (job-wide). Returns the id the stream must carry.
+    Result<std::uint16_t> begin_run(JobId id, std::size_t start_sheet, std::size_t first_pass,
+                                    std::uint16_t avoid);
     Result<void> end_run(JobId id);
+    // Jobs of `printer` with a run record still open (at most one in practice).
+    Result<std::vector<JobRecord>> open_runs(PrinterId printer);
+    // Applies a settlement (settlement.hpp) and closes the run record, all in
+    // one transaction: a crash half-way settles it again from scratch.
+    Result<void> settle_run(JobId id, const RunSettlement& settlement);
     // Runner-side state change with its event (`kind`) and reason. `held`:
     // the runner keeps the job on its printer (running, or paused inside a
     // stream it can resume); otherwise the job is let go.
@@ -116,6 +125,17 @@ private:
     sql::Database db_;
     bool read_only_ = false;
 };
+
+// What `queue recover` finds at a spool path. Only `damaged` (SQLite cannot
+// read it, or its integrity check fails) may be moved aside: a read-only
+// spool, one from a newer Tactus, another program's file or one in use is
+// healthy or not ours, and is left where it is.
+enum class SpoolHealth { missing, healthy, read_only, newer, foreign, in_use, damaged };
+struct Diagnosis {
+    SpoolHealth health = SpoolHealth::missing;
+    Error detail;  // what was found, naming the file
+};
+Diagnosis diagnose(const std::filesystem::path& path);
 
 // Moves a damaged database (and its -wal/-shm files) aside to
 // "<name>.broken-<UTC time>" so a new one can be created; returns the new name.

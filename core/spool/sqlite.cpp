@@ -50,6 +50,20 @@ Result<Database> Database::open(const std::filesystem::path& path, bool create,
     return Database(db, path);
 }
 
+Result<Database> Database::open_immutable(const std::filesystem::path& path) {
+    sqlite3* db = nullptr;
+    const std::string uri = "file:" + path.string() + "?immutable=1";
+    const int flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI | SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE;
+    const int rc = sqlite3_open_v2(uri.c_str(), &db, flags, nullptr);
+    if (rc != SQLITE_OK) {
+        std::string why = explain(rc, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
+        sqlite3_close_v2(db);
+        return fail("cannot open the spool database: " + why, path.string());
+    }
+    sqlite3_extended_result_codes(db, 1);
+    return Database(db, path);
+}
+
 Database::Database(Database&& o) noexcept
     : db_(std::exchange(o.db_, nullptr)), path_(std::move(o.path_)) {}
 

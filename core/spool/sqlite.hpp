@@ -26,6 +26,10 @@ public:
     // timeout, so concurrent clients wait for each other instead of failing.
     static Result<Database> open(const std::filesystem::path& path, bool create,
                                  int busy_timeout_ms);
+    // Opens a file nobody can be writing (read-only file in a read-only
+    // folder, where SQLite cannot make the WAL's shared-memory file): no
+    // locks, no WAL. Only valid when no -wal file holds changes.
+    static Result<Database> open_immutable(const std::filesystem::path& path);
 
     Database(Database&& o) noexcept;
     Database& operator=(Database&& o) noexcept;

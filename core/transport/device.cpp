@@ -51,6 +51,21 @@ Result<DeviceSpec> parse_device(std::string_view device) {
     return spec;
 }
 
+Result<void> check_device(std::string_view device) {
+    auto spec = parse_device(device);
+    if (!spec) return std::unexpected(spec.error());
+    if (spec->scheme == "sim") {
+        for (const auto& [k, v] : spec->options)
+            if (k != "baud" && k != "noise" && k != "seed" && k != "paper-reload")
+                return fail("unknown option (baud, noise, seed, paper-reload)", "sim option " + k);
+        return {};
+    }
+    if (spec->scheme == "lpt") return {};
+    auto uart = uart_settings(*spec);
+    if (!uart) return std::unexpected(uart.error());
+    return {};
+}
+
 Result<UartSettings> uart_settings(const DeviceSpec& spec) {
     UartSettings u;
     for (const auto& [k, v] : spec.options) {

@@ -39,6 +39,11 @@ struct UartSettings {
 };
 Result<UartSettings> uart_settings(const DeviceSpec& spec);
 
+// Checks a device string without opening anything: its type, its path and
+// its line options. A spool printer is refused at `queue printer add` rather
+// than when its first job runs.
+Result<void> check_device(std::string_view device);
+
 // Opens the device. Errors say which device and why: "no such device",
 // "busy (in use by another program)", "permission denied (add yourself to the
 // dialout group)", "not a terminal".

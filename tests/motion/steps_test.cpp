@@ -29,6 +29,17 @@ TEST(Steps, NoDriftOverThousandsOfMoves) {
     EXPECT_NE(naive, motor);  // the per-move rounding it replaces does drift
 }
 
+TEST(Steps, TimingAMoveLongerThan2To19SecondsEnds) {
+    // v_max 1e-5 mm/s: 10 mm take 10^6 s; with a and j tiny as well the move
+    // lasts far past 2^19 s, where halving an interval stops changing it.
+    const Limits lim{1e-5, 1e-9, 1e-13};
+    const auto m = make_move(tactus::profile::ProfileShape::scurve, 10.0, lim);
+    ASSERT_GT(m.duration, 524288.0);
+    const auto t = step_times_ticks(m, 800, 80.0);
+    ASSERT_EQ(t.size(), 800U);
+    for (std::size_t i = 1; i < t.size(); ++i) ASSERT_GE(t[i], t[i - 1]);
+}
+
 TEST(Steps, EncodedScheduleWithinOneTick) {
     const Limits lim{250, 20000, 4e6};
     const double spm = 80.0;

@@ -137,6 +137,16 @@ TEST(Profile, ImpossibleDynamicsAndPitches) {
                  "field carriage.a_max_mm_s2", "must not exceed");
 }
 
+TEST(Profile, MotionSoSlowThePlannerWouldNeverFinishIsRefused) {
+    // Accepted before issue 16, and planning never returned.
+    expect_error(edited([](json& j) { j["carriage"]["v_max_mm_s"] = 1e-6; }), "field carriage.v_max_mm_s",
+                 "would take days");
+    expect_error(edited([](json& j) { j["feed"]["a_max_mm_s2"] = 1e-300; }), "field feed.a_max_mm_s2",
+                 "would take days");
+    expect_error(edited([](json& j) { j["carriage"]["j_max_mm_s3"] = 1e-300; }), "field carriage.j_max_mm_s3",
+                 "would take days");
+}
+
 TEST(Profile, MissingUnknownAndMistypedFields) {
     expect_error(edited([](json& j) { j["carriage"].erase("j_max_mm_s3"); }),
                  "field carriage.j_max_mm_s3", "missing");

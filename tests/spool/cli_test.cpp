@@ -68,6 +68,54 @@ TEST(QueueCli, ADamagedDatabaseIsReportedKeptAndOnlyMovedAsideOnRequest) {
     EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
 }
 
+TEST(QueueCli, ANewcomersFirstQueuedJobSetsUpTheSpoolAndAPrinterForTheDevice) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    std::ofstream(dir / "a.txt") << "Hello.\n";
+    // Before anything was queued, a read-only command says what to do.
+    EXPECT_EQ(cli(db, {"queue", "list"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("emboss --queue --device"), std::string::npos) << test::read_text(err);
+    EXPECT_FALSE(std::filesystem::exists(db));
+    // The README's example on a fresh machine.
+    const auto [code, out] = cli(db, {"emboss", "--queue", "--device", "pty:/dev/null", (dir / "a.txt").string()}, err);
+    ASSERT_EQ(code, 0) << test::read_text(err);
+    EXPECT_EQ(out.rfind("queued job 1:", 0), 0u) << out;
+    EXPECT_NE(test::read_text(err).find("set up queue printer 'null' on pty:/dev/null"), std::string::npos)
+        << test::read_text(err);
+    // The same device again: the same printer.
+    ASSERT_EQ(cli(db, {"emboss", "--queue", "--device", "pty:/dev/null", (dir / "a.txt").string()}, err).first, 0);
+    const auto [lcode, printers] = cli(db, {"queue", "printer", "list"}, err);
+    EXPECT_EQ(lcode, 0);
+    EXPECT_EQ(printers, "null  pty:/dev/null\n");
+}
+
+TEST(QueueCli, SeveralPrintersAndNoneChosenAreNamed) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    std::ofstream(dir / "a.txt") << "Hello.\n";
+    ASSERT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
+    ASSERT_EQ(cli(db, {"queue", "printer", "add", "office", "--device", "sim"}, err).first, 0);
+    EXPECT_EQ(cli(db, {"emboss", "--queue", (dir / "a.txt").string()}, err).first, 2);
+    const auto e = test::read_text(err);
+    EXPECT_NE(e.find("lab (pty:/dev/null)"), std::string::npos) << e;
+    EXPECT_NE(e.find("office (sim)"), std::string::npos) << e;
+    EXPECT_NE(e.find("--printer"), std::string::npos) << e;
+}
+
+TEST(QueueCli, AMalformedDeviceIsRefusedWhenThePrinterIsAdded) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "bogus:/dev/x"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("unknown device type"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "serial:/dev/ttyUSB0?baud=12"}, err).first, 3);
+    EXPECT_NE(test::read_text(err).find("baud rate"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:"}, err).first, 3);
+    ASSERT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
+    EXPECT_EQ(cli(db, {"queue", "printer", "set", "lab", "--device", "serial:/dev/ttyUSB0?parity=q"}, err).first, 3);
+    const auto [code, printers] = cli(db, {"queue", "printer", "list"}, err);
+    EXPECT_EQ(printers, "lab  pty:/dev/null\n");
+}
+
 TEST(QueueCli, TheDefaultDatabaseFollowsTheEnvironment) {
     TempDir dir;
     const auto err = dir / "err";

@@ -37,6 +37,9 @@ public:
     }
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] std::string device() const { return "pty:" + path_ + "?baud=230400"; }
+    // The simulator's next line on stdout (empty on timeout), e.g. what
+    // --mute-after-pass says.
+    std::string next_line(std::chrono::milliseconds timeout) { return sim_->read_line(timeout); }
 
     [[nodiscard]] std::vector<controller::LoggedStrike> strikes() const {
         std::vector<controller::LoggedStrike> out;

@@ -3,6 +3,7 @@
 // operator actions, progress bookkeeping, runner take-over, concurrency and
 // every way the file can be unusable.
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -14,6 +15,7 @@
 
 #include "common/file_io.hpp"
 #include "spool/runner_token.hpp"
+#include "spool/schema.hpp"
 #include "spool/spool.hpp"
 #include "spool/sqlite.hpp"
 #include "spool_fixtures.hpp"
@@ -194,7 +196,10 @@ TEST(SpoolStore, ADeadRunnersJobsAreReleasedWithTheirWriteAheadRecord) {
     ASSERT_FALSE(runner_alive(dead));
     ASSERT_TRUE(s.claim_printer(pid, dead));
     ASSERT_TRUE(s.claim_next(pid, dead, now_seconds()).value());
-    ASSERT_TRUE(s.begin_run(id, std::uint16_t{7}, 2));
+    ASSERT_TRUE(s.set_sheet_passes(id, {4, 5, 6}));
+    const auto link_job = s.begin_run(id, 2, 4, 0);
+    ASSERT_TRUE(link_job);
+    EXPECT_GE(*link_job, kFirstLinkJob);
 
     const auto me = this_runner_token();
     ASSERT_TRUE(s.claim_printer(pid, me)) << "a dead holder must not block the printer";
@@ -202,14 +207,64 @@ TEST(SpoolStore, ADeadRunnersJobsAreReleasedWithTheirWriteAheadRecord) {
     EXPECT_EQ(j.state, JobState::queued);
     EXPECT_TRUE(j.runner.empty());
     EXPECT_TRUE(j.run_open);
-    EXPECT_EQ(j.link_job, 7);
+    EXPECT_EQ(j.link_job, *link_job);
     EXPECT_EQ(j.run_start_sheet, 2u);
+    EXPECT_EQ(j.run_first_pass, 4u);
     EXPECT_EQ(s.events(id)->back().kind, "interrupted");
 
     // A live holder (this process, another token) is respected.
     auto other = s.claim_printer(pid, std::string(host) + ":1");  // pid 1 is alive
     ASSERT_FALSE(other);
     EXPECT_NE(other.error().message.find("already served by"), std::string::npos);
+}
+
+TEST(SpoolStore, EachRunGetsTheNextControllerJobIdNeverTheOneTheControllerHolds) {
+    TempDir dir;
+    auto s = *Spool::open(dir / "spool.db");
+    ASSERT_TRUE(s.add_printer("lab", "sim", "{}"));
+    const JobId id = *s.submit(submission("lab", 2));
+    ASSERT_TRUE(s.set_sheet_passes(id, {4}));
+    const auto a = *s.begin_run(id, 1, 0, 0);
+    const auto b = *s.begin_run(id, 1, 0, static_cast<std::uint16_t>(a + 1));  // the controller holds a+1
+    EXPECT_EQ(a, kFirstLinkJob);
+    EXPECT_EQ(b, a + 2);
+    // Settling closes the run in the same transaction as its records.
+    RunSettlement settlement;
+    settlement.record = {{1, 3}};
+    settlement.discard = 1;
+    settlement.discard_message = "sheet 1 was interrupted after pass 3 of 4 (the controller's count)";
+    settlement.message = "settled";
+    ASSERT_TRUE(s.settle_run(id, settlement));
+    EXPECT_FALSE(s.job(id)->run_open);
+    EXPECT_EQ((*s.progress(id))[0].passes_done, 0u);
+    EXPECT_EQ((*s.progress(id))[0].spoiled, 1u);
+    EXPECT_TRUE(s.open_runs(s.printer("lab")->id)->empty());
+}
+
+TEST(SpoolStore, AVersion1SpoolIsUpgradedInPlace) {
+    TempDir dir;
+    const auto db = dir / "spool.db";
+    {
+        auto s = *Spool::open(db);
+        ASSERT_TRUE(s.add_printer("lab", "sim", "{}"));
+        ASSERT_TRUE(s.submit(submission("lab", 2)));
+    }
+    // Back to the version 1 layout: without the two columns version 2 added.
+    {
+        sqlite3* h = nullptr;
+        ASSERT_EQ(sqlite3_open(db.c_str(), &h), SQLITE_OK);
+        ASSERT_EQ(sqlite3_exec(h,
+                               "ALTER TABLE printers DROP COLUMN next_link_job; "
+                               "ALTER TABLE jobs DROP COLUMN run_first_pass; PRAGMA user_version=1;",
+                               nullptr, nullptr, nullptr),
+                  SQLITE_OK)
+            << sqlite3_errmsg(h);
+        sqlite3_close(h);
+    }
+    auto s = Spool::open(db);
+    ASSERT_TRUE(s) << s.error().to_string();
+    EXPECT_EQ(s->jobs(false)->size(), 1u);
+    EXPECT_TRUE(s->begin_run(1, 1, 0, 0));
 }
 
 TEST(SpoolStore, ConcurrentClientsAddAndCancelWithoutLosingAnything) {
