@@ -17,6 +17,9 @@ packages=(
   qt6-l10n-tools libgl-dev
   libxml2-utils bible-kjv time
   xvfb xauth xdotool at-spi2-core python3-pyatspi dbus dbus-x11 imagemagick
+  # The Orca-in-the-loop tests (tests/accessibility/orca_*.py): the real screen
+  # reader and a window manager, which window activation events need.
+  orca openbox
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
