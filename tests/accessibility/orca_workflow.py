@@ -43,8 +43,9 @@ def scenario_open(tactus, sample, work):
         s.start()
         s.launch([tactus, "--no-recovery"])
         s.step("Ctrl+O opens the dialog", keys=["ctrl+o"], expect=[r"Open or import"])
-        s.step("type the path, Enter: the file opens", type_text=sample, keys=[],
-               expect=[], allow_silent=True, quiet=0.5)
+        # Qt's file dialog floods Orca while a path is typed (its file list
+        # follows every key): not the app's doing, so not held against it.
+        s.step("type the path", type_text=sample, allow_silent=True, allow_deluge=True)
         s.step("Enter opens the file", keys=["Return"], expect=[r"Opened welcome\.md"], once=[r"Opened welcome\.md"])
         # Item 2: the main window must be active again after the dialog.
         s.step("Tab after the dialog speaks", keys=["Tab"])
@@ -61,7 +62,7 @@ def scenario_open(tactus, sample, work):
         s.step("Right speaks the next cell", keys=["Right"], expect=[r"cell 2"])
         s.step("Ctrl+E opens the export dialog", keys=["ctrl+e"], expect=[r"Export"])
         brf = os.path.join(work, "heard.brf")
-        s.step("type the BRF name", keys=["ctrl+a"], type_text=brf, allow_silent=True, quiet=0.5)
+        s.step("type the BRF name", keys=["ctrl+a"], type_text=brf, allow_silent=True, allow_deluge=True)
         s.step("Enter exports", keys=["Return"], expect=[r"Exported heard\.brf"], once=[r"Exported heard\.brf"])
         if not os.path.exists(brf):
             raise StepFailed("the export was announced but heard.brf was not written")
