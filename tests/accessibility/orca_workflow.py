@@ -84,7 +84,6 @@ def scenario_emboss(tactus, sample, work):
     with s:
         s.start()
         s.launch([tactus, "--no-recovery", doc])
-        s.step("the document is open", keys=["ctrl+1"], expect=[r"Print text"])
         rec = s.step("Ctrl+P embosses to the simulator", keys=["ctrl+p"],
                      expect=[r"Embossing three-sheets\.md", r"Embossed three-sheets\.md: all \d+ strikes checked"],
                      once=[r"Embossed three-sheets\.md"], timeout=240, quiet=2.0)
