@@ -96,4 +96,4 @@ private Q_SLOTS:
 };
 
 QTEST_GUILESS_MAIN(ProgressStepsTest)
-#include "tst_progress_steps.moc"
+#include "progress_steps_test.moc"

@@ -131,4 +131,4 @@ private Q_SLOTS:
 };
 
 QTEST_MAIN(MnemonicsTest)
-#include "tst_mnemonics.moc"
+#include "mnemonics_test.moc"
