@@ -43,6 +43,7 @@
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
+#include "print_word.hpp"
 #include "sheet_geometry.hpp"
 #include "status_label.hpp"
 #include "system_look.hpp"
@@ -142,6 +143,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* sp = preview_->preview();
     sp->set_back_translator([this](const document::BrailleLine& cells) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
+    });
+    sp->set_print_word([this](std::size_t page, int line, int cell) {
+        return editor_->has_layout() ? print_word_at(editor_->layout(), PagePosition{page, line, cell}) : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
         sp->set_document(&editor_->layout().paged());

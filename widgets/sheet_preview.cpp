@@ -234,6 +234,12 @@ QString SheetPreview::cursor_description() const {
         return where + tr(": blank");
     const auto& line = page->lines[l];
     QString text = where + QStringLiteral(": ") + tr("dots %1").arg(cell_text(line[c]));
+    if (print_word_) {
+        const auto interpoint = doc_ && doc_->geometry.interpoint;
+        const std::size_t index = interpoint ? 2 * (sheet_ - 1) + (options_.cursor_on_back ? 1 : 0) : sheet_ - 1;
+        if (const auto word = print_word_(index, options_.cursor_line, options_.cursor_cell); !word.isEmpty())
+            return text + tr(", in the word \u201c%1\u201d").arg(word);
+    }
     if (back_translate_) {
         std::size_t a = c, b = c;
         while (a > 0 && !line[a - 1].blank()) --a;
