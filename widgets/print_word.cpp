@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "print_word.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "cursor_map.hpp"
 #include "editor_lines.hpp"
 
@@ -33,6 +36,24 @@ QString print_word_at(const LiveLayout& layout, const PagePosition& where) {
     if (k == cells.size() || cells[k].blank()) return {};
     const auto content = QString::fromStdString(editor_line_content(layout.line(i))).toStdU32String();
     if (content.empty()) return {};
+    // Contractions never cross a space, so the n-th braille word is the n-th
+    // print word whenever both have as many words (cursor_map's rule).
+    std::vector<std::u32string> words;
+    for (std::size_t a = 0; a < content.size();) {
+        while (a < content.size() && is_space(content[a])) ++a;
+        std::size_t b = a;
+        while (b < content.size() && !is_space(content[b])) ++b;
+        if (b > a) words.push_back(content.substr(a, b - a));
+        a = b;
+    }
+    std::size_t braille_words = 0, word_of_k = 0;
+    for (std::size_t c = 0; c < cells.size(); ++c)
+        if (!cells[c].blank() && (c == 0 || cells[c - 1].blank())) {
+            if (c <= k) word_of_k = braille_words;
+            ++braille_words;
+        }
+    const bool spaced = std::none_of(content.begin(), content.end(), unspaced_script);
+    if (spaced && braille_words == words.size()) return QString::fromStdU32String(words[word_of_k]);
     auto col = std::min(braille_to_print(cells, k, content), content.size() - 1);
     if (is_space(content[col])) return {};
     if (unspaced_script(content[col])) return QString::fromStdU32String(std::u32string(1, content[col]));

@@ -390,3 +390,12 @@ def run(main):
     except StepFailed as e:
         print("FAIL:", e, file=sys.stderr)
         return 1
+    finally:
+        # Orca's log and the AT-SPI events, for a CI artefact or a closer look.
+        keep = os.environ.get("TACTUS_ORCA_ARTIFACTS")
+        work = os.environ.get("TACTUS_WORK")
+        if keep and work:
+            os.makedirs(keep, exist_ok=True)
+            for name in ("orca.log", "atspi-events.log", "app.log"):
+                if os.path.exists(os.path.join(work, name)):
+                    shutil.copy(os.path.join(work, name), os.path.join(keep, name))
