@@ -28,7 +28,8 @@ QString print_word_at(const LiveLayout& layout, const PagePosition& where) {
     std::size_t k = cells.size();
     for (std::size_t c = 0; c < cells.size(); ++c) {
         const auto p = layout.position_of(i, c);
-        if (p.page == where.page && p.line == where.line && p.cell == where.cell) {
+        // A blank may share its place with the next cell (a space at a line end).
+        if (p.page == where.page && p.line == where.line && p.cell == where.cell && !cells[c].blank()) {
             k = c;
             break;
         }
