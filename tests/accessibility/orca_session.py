@@ -304,7 +304,7 @@ class OrcaSession:
     # ---- steps ----
 
     def step(self, name, keys=(), type_text=None, expect=(), forbid=(), max_events=None, timeout=30,
-             quiet=1.5, allow_silent=False, once=(), allow_deluge=False):
+             quiet=1.5, allow_silent=False, once=(), allow_deluge=False, settle=True):
         """One user action and what must be heard after it.
 
         keys / type_text: what the user presses. expect: regexes that must each be
@@ -327,7 +327,8 @@ class OrcaSession:
                 self._wait(lambda: self.phrases_since(mark), f"'{name}': Orca to say anything", timeout)
         except StepFailed as e:
             failure = str(e)
-        self.settle(mark, quiet)
+        if settle:  # else the next step follows at once (a job still running)
+            self.settle(mark, quiet)
         heard = self.phrases_since(mark)
         rec.phrases = [p.text for p in heard]
         if heard:

@@ -88,9 +88,9 @@ def scenario_emboss(tactus, sample, work):
         mark = s.mark()
         # Ctrl+P: the job starts and the focus goes to the queue, where Alt+P/U/N work.
         s.step("Ctrl+P embosses to the simulator", keys=["ctrl+p"], expect=[r"Embossing sheets\.md", r"Job queue"],
-               quiet=0.5)
-        s.step("Alt+P pauses", keys=["alt+p"], expect=[r"Paus"], quiet=0.5)
-        s.step("Alt+U resumes", keys=["alt+u"], expect=[r"Resum"], quiet=0.5)
+               settle=False)
+        s.step("Alt+P pauses", keys=["alt+p"], expect=[r"Paus"], settle=False)
+        s.step("Alt+U resumes", keys=["alt+u"], expect=[r"Resum"], settle=False)
         rec = s.step("the job runs to the end", expect=[r"Embossed sheets\.md: all \d+ strikes checked"],
                      once=[r"Embossed sheets\.md"], timeout=330, quiet=2.0)
         events = s.events_since(mark)
@@ -106,7 +106,7 @@ def scenario_emboss(tactus, sample, work):
             raise StepFailed(f"embossing {sheets} sheet(s) sent {len(events)} AT-SPI events, more than {budget}: {top}")
         if not any(re.search(r"\d+ percent|sheet \d+ of \d+", t, re.I) for t in heard):
             raise StepFailed(f"no progress was heard while embossing: {heard}")
-        s.step("Ctrl+P again queues a second job", keys=["ctrl+p"], expect=[r"Embossing sheets\.md"], quiet=0.5)
+        s.step("Ctrl+P again queues a second job", keys=["ctrl+p"], expect=[r"Embossing sheets\.md"], settle=False)
         s.step("Alt+N cancels", keys=["alt+n"], expect=[r"cancelled"], once=[r"sheets\.md cancelled"], timeout=120)
         print(s.summary())
     return 0
@@ -143,7 +143,7 @@ def scenario_focus(tactus, sample, work):
         s.step("F10 opens the menus", keys=["F10"], expect=[r"File"])
         s.step("Escape closes the menu", keys=["Escape", "Escape"], allow_silent=True, quiet=0.8)
         s.step("Ctrl+P raises the printer panel with the focus", keys=["ctrl+p"],
-               expect=[r"Embossing welcome\.md", r"Job queue|Embosser|Pause"], timeout=60)
+               expect=[r"Printer", r"Job queue"], timeout=60)
         print(s.summary())
     return 0
 
