@@ -436,7 +436,8 @@ void PrinterPanel::finished_job(int id) {
         show_fault(text);
     }
     update_row(*j);
-    poll_status();  // "idle" again, said only now that the job is over
+    // "idle" again, now that the job is over; after a failure the fault stays what was said.
+    if (j->state != QueuedJob::State::failed) poll_status();
     log(text);
     Q_EMIT message(text, j->state == QueuedJob::State::failed);
     Q_EMIT job_finished(id, out.completed, text);
