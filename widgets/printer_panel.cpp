@@ -342,6 +342,7 @@ void PrinterPanel::start_next() {
         }, Qt::QueuedConnection);
     };
     connect(&running_->watcher, &QFutureWatcher<Outcome>::finished, this, [this, id] { finished_job(id); });
+    update_buttons();  // Pause and Cancel now reach the running job
     running_->watcher.setFuture(QtConcurrent::run([=]() -> Outcome {
         Outcome out;
         auto plan = plan::plan_job(*pages, prof);

@@ -79,7 +79,9 @@ def scenario_open(tactus, sample, work):
 def scenario_emboss(tactus, sample, work):
     doc = os.path.join(work, "sheets.md")
     with open(doc, "w", encoding="utf-8") as f:
-        f.write(multi_sheet_text(12))  # about twenty interpoint sheets
+        # About seventy interpoint sheets: long enough on the fast simulator for
+        # Alt+P to reach a running job.
+        f.write(multi_sheet_text(50))
     s = OrcaSession("tactus", work)
     with s:
         s.start()
@@ -126,7 +128,11 @@ def scenario_focus(tactus, sample, work):
     with s:
         s.start()
         s.launch([tactus, "--no-recovery", sample])
-        s.step("Ctrl+1 speaks the print text", keys=["ctrl+1"], expect=[r"Print text"])
+        # The print text has the focus at start (said at launch, or now if the
+        # window became active late); Ctrl+1 keeps it there.
+        s.key("ctrl+1")
+        s.wait_phrase(r"Print text", (0, 0, 0, 0, 0), 60)
+        s.settle(s.mark())
         stops = []
         for i in range(80):
             rec = s.step(f"Tab {i + 1}", keys=["Tab"], quiet=0.8)
