@@ -323,7 +323,15 @@ void SheetPreview::mousePressEvent(QMouseEvent* e) {
 void SheetPreview::focusInEvent(QFocusEvent* e) {
     QWidget::focusInEvent(e);
     update();
-    cursor_changed();
+    // Only the accessible description and caret: the screen reader reads them with
+    // the focus. Announcing the cell too said it twice and, when the focus came
+    // back after a dialog, replaced the dialog's result before it was heard.
+    if (QAccessible::isActive()) {
+        QAccessibleEvent desc(this, QAccessible::DescriptionChanged);
+        QAccessible::updateAccessibility(&desc);
+        QAccessibleTextCursorEvent caret(this, options_.cursor_cell);
+        QAccessible::updateAccessibility(&caret);
+    }
 }
 
 void SheetPreview::focusOutEvent(QFocusEvent* e) {
