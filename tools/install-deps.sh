@@ -19,6 +19,9 @@ packages=(
   cups-daemon cups-client cups-bsd libcups2-dev
   help2man desktop-file-utils appstream appstream-util lintian dpkg-dev
   xvfb xauth xdotool at-spi2-core python3-pyatspi dbus dbus-x11 imagemagick
+  # The Orca-in-the-loop tests (tests/accessibility/orca_*.py): the real screen
+  # reader and a window manager, which window activation events need.
+  orca openbox
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

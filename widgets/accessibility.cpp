@@ -4,10 +4,12 @@
 // splitter handles, which otherwise show up with no role at all.
 #include <QAccessible>
 #include <QAccessibleWidget>
+#include <QLabel>
 #include <QSplitterHandle>
 
 #include "announcer.hpp"
 #include "sheet_preview.hpp"
+#include "status_label.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -17,7 +19,10 @@ public:
     explicit AccessibleAnnouncer(Announcer* a) : QAccessibleWidget(a, QAccessible::Notification) {}
     QString text(QAccessible::Text t) const override {
         const auto* a = static_cast<const Announcer*>(object());
-        if (t == QAccessible::Name || t == QAccessible::Description) return a->message();
+        if (t == QAccessible::Name) return a->message();
+        // No description: screen readers cache it, so Orca spoke each new message
+        // followed by the previous one (issue 14).
+        if (t == QAccessible::Description) return {};
         return QAccessibleWidget::text(t);
     }
 };
@@ -38,6 +43,8 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (classname == QLatin1String("tactus::gui::SheetPreview"))
         return make_accessible_sheet_preview(static_cast<SheetPreview*>(w));
     if (classname == QLatin1String("QSplitterHandle")) return new AccessibleSplitterHandle(w);
+    if (classname == QLatin1String("QLabel"))
+        if (auto* l = static_cast<QLabel*>(w); !status_caption(l).isEmpty()) return make_accessible_status(l);
     return nullptr;
 }
 

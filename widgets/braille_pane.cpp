@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "braille_pane.hpp"
 
+#include <QDropEvent>
+#include <QInputMethodEvent>
 #include <QKeyEvent>
 #include <QMimeData>
 #include <QUrl>
@@ -32,8 +34,11 @@ bool leave_to_window(QEvent* e) {
 
 BraillePane::BraillePane(QWidget* parent) : QPlainTextEdit(parent) {
     setObjectName(QStringLiteral("braillePane"));
-    setReadOnly(true);
-    setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
+    // Not read-only: a read-only pane is announced "Braille read only text" and
+    // screen readers stop echoing it (issue 14). Every edit still goes through
+    // cells_typed / erase_*: keys, input methods, cut, paste and drops are
+    // intercepted below, so the text is never changed behind the document's back.
+    setContextMenuPolicy(Qt::NoContextMenu);  // its Cut and Delete would edit the text directly
     setAccessibleName(tr("Braille"));
     setAccessibleDescription(
         tr("The braille of each paragraph. Type with S D F J K L as dots 3 2 1 4 5 6; "
@@ -90,6 +95,28 @@ void BraillePane::keyPressEvent(QKeyEvent* e) {
             return;
         }
     }
+    if (e->matches(QKeySequence::Cut)) {
+        copy();
+        if (textCursor().hasSelection()) Q_EMIT cells_typed({});
+        e->accept();
+        return;
+    }
+    if (e->matches(QKeySequence::Paste)) {
+        paste();  // through insertFromMimeData: braille only
+        e->accept();
+        return;
+    }
+    // Anything else that would change the text (other letters, word deletes)
+    // is not braille: swallow it.
+    const bool deletes = e->matches(QKeySequence::DeleteEndOfWord) || e->matches(QKeySequence::DeleteStartOfWord) ||
+                         e->matches(QKeySequence::DeleteEndOfLine) || e->matches(QKeySequence::DeleteCompleteLine) ||
+                         e->key() == Qt::Key_Backspace || e->key() == Qt::Key_Delete ||
+                         e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter;
+    const bool prints = !e->text().isEmpty() && e->text().front().isPrint();
+    if (deletes || prints) {
+        e->accept();
+        return;
+    }
     QPlainTextEdit::keyPressEvent(e);
 }
 
@@ -102,6 +129,21 @@ void BraillePane::keyReleaseEvent(QKeyEvent* e) {
         return;
     }
     QPlainTextEdit::keyReleaseEvent(e);
+}
+
+void BraillePane::inputMethodEvent(QInputMethodEvent* e) {
+    // Composed text is print, not braille: only Unicode braille gets in, as cells.
+    if (const auto cells = braille_in(e->commitString()); !cells.empty()) Q_EMIT cells_typed(cells);
+    e->accept();
+}
+
+void BraillePane::dropEvent(QDropEvent* e) {
+    // Moving a selection by dragging would cut it out of the text directly.
+    if (e->source() == this || e->source() == viewport()) {
+        e->ignore();
+        return;
+    }
+    QPlainTextEdit::dropEvent(e);
 }
 
 void BraillePane::focusOutEvent(QFocusEvent* e) {

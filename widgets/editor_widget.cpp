@@ -304,6 +304,12 @@ void EditorWidget::braille_typed(const document::BrailleLine& cells) {
     const auto to = end_block == start_block ? static_cast<std::size_t>(c.selectionEnd() - start_block.position())
                                              : static_cast<std::size_t>(start_block.length() - 1);
     edit_braille(line, from, to, cells);
+    if (cells.size() == 1 && !cells.front().blank() && layout_) {
+        auto spoken = tr("dots %1").arg(QString::fromStdString(document::dot_numbers(cells.front())));
+        if (const auto print = QString::fromStdString(layout_->back_translate(cells)).trimmed(); !print.isEmpty())
+            spoken += QStringLiteral(", ") + print;
+        Q_EMIT cell_entered(spoken);
+    }
 }
 
 void EditorWidget::braille_erase(bool backward) {

@@ -50,6 +50,9 @@ Q_SIGNALS:
     void layout_changed();
     void position_changed(const tactus::edit::PagePosition& position);
     void files_dropped(const QStringList& paths);
+    // A cell typed with six keys, in words: "dots 1-2, b" (the dots, then the
+    // print it back-translates to), for the screen reader to echo.
+    void cell_entered(const QString& spoken);
 
 private:
     void refresh_braille();

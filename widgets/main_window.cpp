@@ -37,14 +37,18 @@
 #include "editor_widget.hpp"
 #include "export/export.hpp"
 #include "find_replace.hpp"
+#include "focus_return.hpp"
 #include "motion_view.hpp"
 #include "printer_panel.hpp"
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
+#include "print_word.hpp"
 #include "sheet_geometry.hpp"
+#include "status_label.hpp"
 #include "system_look.hpp"
 #include "table_picker.hpp"
+#include "visible_focus.hpp"
 #include "translate/catalogue.hpp"
 
 namespace tactus::gui {
@@ -128,7 +132,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("positionLabel"));
-    status_->setAccessibleName(tr("Position"));
+    expose_status(status_, tr("Position"));
     statusBar()->addPermanentWidget(status_);
     statusBar()->setSizeGripEnabled(false);  // a grip has no accessible role; the window manager resizes
     statusBar()->setAccessibleName(tr("Status"));
@@ -140,6 +144,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     sp->set_back_translator([this](const document::BrailleLine& cells) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
+    sp->set_print_word([this](std::size_t page, int line, int cell) {
+        return editor_->has_layout() ? print_word_at(editor_->layout(), PagePosition{page, line, cell}) : QString{};
+    });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
         sp->set_document(&editor_->layout().paged());
         update_status();
@@ -149,6 +156,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
         update_status();
     });
+    connect(editor_, &EditorWidget::cell_entered, announcer_, &Announcer::announce);
     connect(sp, &SheetPreview::cursor_moved, this, [this, sp](const QString& text) {
         if (sp->hasFocus()) announcer_->announce(text);
     });
@@ -229,7 +237,7 @@ void MainWindow::build_actions() {
         show_panel(QStringLiteral("motion"));
         if (auto* first = motion_->findChild<QSpinBox*>()) first->setFocus(Qt::ShortcutFocusReason);
     });
-    focus_vibration_ = make(tr("Go to vi&bration"), QKeySequence(tr("Ctrl+5")), QStringLiteral("focusVibration"), [this] {
+    focus_vibration_ = make(tr("Go to vibratio&n"), QKeySequence(tr("Ctrl+5")), QStringLiteral("focusVibration"), [this] {
         show_panel(QStringLiteral("vibration"));
         vibration_->metrics()->setFocus(Qt::ShortcutFocusReason);
     });
@@ -247,6 +255,10 @@ void MainWindow::build_actions() {
                       [this] { show_shortcuts(); });
     about_ = make(tr("&About Tactus"), QKeySequence(tr("Shift+F1")), QStringLiteral("helpAbout"), [this] { show_about(); });
     for (auto* a : preview_->view_actions()) addAction(a);
+    // F10 opens the menu bar, as in GTK and Windows applications (Qt has no such key).
+    menus_ = make(tr("Open the menu bar"), QKeySequence(Qt::Key_F10), QStringLiteral("openMenus"), [this] {
+        if (!menuBar()->actions().isEmpty()) menuBar()->setActiveAction(menuBar()->actions().front());
+    });
 }
 
 void MainWindow::build_menus() {
@@ -320,7 +332,14 @@ void MainWindow::set_table(const QString& table) {
         report(tr("Cannot use table %1: %2").arg(table, QString::fromStdString(ok.error().to_string())), true);
         return;
     }
-    report(tr("Braille table: %1").arg(tables_->currentText()));
+    const auto& warnings = editor_->layout().paged().warnings;
+    report(tr("Braille table: %1").arg(tables_->currentText()) +
+           (warnings.empty() ? QString() : QLatin1Char(' ') + table_warning(QString::fromStdString(warnings.front()))));
+}
+
+QString MainWindow::table_warning(const QString& detail) const {
+    return tr("Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.")
+        .arg(tables_->currentText(), detail);
 }
 
 void MainWindow::new_document() {
@@ -334,6 +353,7 @@ void MainWindow::new_document() {
 
 void MainWindow::open_dialog() {
     if (!maybe_save()) return;
+    FocusReturn back(this, editor_->print_pane());
     const auto path = QFileDialog::getOpenFileName(
         this, tr("Open or import"), QFileInfo(path_).absolutePath(),
         tr("Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)"));
@@ -355,6 +375,7 @@ bool MainWindow::open_file_now(const QString& path) {
 void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text) {
     auto* watcher = new QFutureWatcher<LoadResultPtr>(this);
     busy_ = watcher;
+    busy_return_ = std::make_shared<FocusReturn>(this, editor_->print_pane());
     editor_->print_pane()->setReadOnly(true);  // edits during a re-layout would be lost
     progress_ = new QProgressDialog(what, tr("Cancel"), 0, 100, this);
     progress_->setObjectName(QStringLiteral("progress"));
@@ -373,11 +394,16 @@ void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, 
             r = std::make_shared<LoadResult>();
             r->cancelled = true;
         }
+        // Hidden before it goes: a modal dialog deleted while shown left the
+        // main window inactive under a window manager, and Orca silent.
+        progress_->reset();
+        progress_->hide();
         progress_->deleteLater();
         progress_ = nullptr;
         busy_ = nullptr;
         watcher->deleteLater();
         editor_->print_pane()->setReadOnly(false);
+        if (auto back = std::exchange(busy_return_, nullptr)) back->restore();
         finish_load(r, replace_text);
     });
     announcer_->announce(what);
@@ -408,7 +434,11 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         add_recent(info.absoluteFilePath());
         update_title();
         const auto& paged = editor_->layout().paged();
-        report(tr("Opened %1: %n sheet(s)", nullptr, static_cast<int>(paged.sheet_count())).arg(info.fileName()));
+        // One message: a second one would cut the first off in the screen reader.
+        auto said = tr("Opened %1: %n sheet(s)", nullptr, static_cast<int>(paged.sheet_count())).arg(info.fileName());
+        if (!paged.warnings.empty())
+            said += QLatin1Char(' ') + table_warning(QString::fromStdString(paged.warnings.front()));
+        report(said);
         if (editor_->layout().error_count() > 0)
             report(tr("%n line(s) could not be translated; they are left out of the braille", nullptr,
                       static_cast<int>(editor_->layout().error_count())),
@@ -439,8 +469,7 @@ QString MainWindow::status_text() const {
 }
 
 void MainWindow::update_status() {
-    status_->setText(status_text());
-    status_->setAccessibleDescription(status_->text());
+    if (const auto text = status_text(); status_->text() != text) status_->setText(text);
 }
 
 void MainWindow::update_title() {
@@ -452,7 +481,10 @@ void MainWindow::update_title() {
 void MainWindow::report(const QString& message, bool error) {
     statusBar()->showMessage(message, 10000);
     announcer_->announce(message);
-    if (error && interactive_ && isVisible()) QMessageBox::warning(this, tr("Tactus"), message);
+    if (error && interactive_ && isVisible()) {
+        FocusReturn back(this, editor_->print_pane());
+        QMessageBox::warning(this, tr("Tactus"), message);
+    }
 }
 
 bool MainWindow::save() { return path_.isEmpty() ? save_as() : save_to(path_); }
@@ -461,6 +493,7 @@ bool MainWindow::save_as() {
     auto suggested = path_;
     if (suggested.isEmpty() && !source_name_.isEmpty())
         suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
+    FocusReturn back(this, editor_->print_pane());
     auto path = QFileDialog::getSaveFileName(this, tr("Save as Markdown"), suggested, tr("Markdown (*.md)"));
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".md");
@@ -490,6 +523,7 @@ bool MainWindow::save_to(const QString& path) {
 void MainWindow::export_dialog(const QString& format) {
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
     const auto filter = format == QLatin1String("pef") ? tr("PEF (*.pef)") : tr("Braille ASCII (*.brf)");
+    FocusReturn back(this, editor_->print_pane());
     auto path = QFileDialog::getSaveFileName(this, tr("Export"), base + QLatin1Char('.') + format, filter);
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QLatin1Char('.') + format;
@@ -526,6 +560,7 @@ bool MainWindow::export_to(const QString& path) {
 
 void MainWindow::print_pdf_dialog() {
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    FocusReturn back(this, editor_->print_pane());
     auto path = QFileDialog::getSaveFileName(this, tr("Print preview to PDF"), base + QStringLiteral("-proof.pdf"),
                                              tr("PDF (*.pdf)"));
     if (!path.isEmpty()) print_pdf_to(path);
@@ -572,6 +607,7 @@ void MainWindow::update_recent_menu() {
 
 bool MainWindow::maybe_save() {
     if (editor_->undo_stack()->isClean() || !interactive_) return true;
+    FocusReturn back(this, editor_->print_pane());
     const auto answer = QMessageBox::question(this, tr("Tactus"), tr("Save the changes to %1?")
                                                                       .arg(source_name_.isEmpty() ? tr("Untitled") : source_name_),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
@@ -591,6 +627,11 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     s.setValue(QStringLiteral("window/state"), saveState());
     remove_autosave();
     e->accept();
+}
+
+bool MainWindow::focusNextPrevChild(bool next) {
+    // Only the controls on the raised tab of each dock (issue 14).
+    return focus_next_visible(this, next) || QMainWindow::focusNextPrevChild(next);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
@@ -613,9 +654,18 @@ void MainWindow::show_panel(const QString& name) {
 }
 
 bool MainWindow::emboss() {
-    if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) return false;
+    if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) {
+        // The fault is on the printer panel, beside the device picker: go there.
+        show_panel(QStringLiteral("printer"));
+        if (auto* picker = printer_->findChild<QWidget*>(QStringLiteral("devicePicker")))
+            picker->setFocus(Qt::ShortcutFocusReason);
+        return false;
+    }
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
     printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
+    // The queue is where the job's progress, pause and cancel are: raise it with the focus.
+    show_panel(QStringLiteral("printer"));
+    if (auto* queue = printer_->findChild<QWidget*>(QStringLiteral("jobQueue"))) queue->setFocus(Qt::ShortcutFocusReason);
     return true;
 }
 
@@ -626,6 +676,7 @@ QDockWidget* MainWindow::add_dock(const QString& title, const QString& name, QWi
     dock->setWidget(w);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(area, dock);
+    track_dock_page(dock);
     return dock;
 }
 
@@ -762,6 +813,7 @@ void MainWindow::offer_recovery() {
 // ---- help ----
 
 void MainWindow::show_shortcuts() {
+    FocusReturn back(this, editor_->print_pane());
     QDialog d(this);
     d.setWindowTitle(tr("Keyboard Shortcuts"));
     d.setAccessibleName(d.windowTitle());
@@ -808,6 +860,7 @@ QList<QPair<QString, QString>> MainWindow::shortcut_rows() const {
 }
 
 void MainWindow::show_about() {
+    FocusReturn back(this, editor_->print_pane());
     QMessageBox::about(this, tr("About Tactus"),
                        tr("<p><b>Tactus %1</b></p><p>Braille editor and embosser print manager.</p>"
                           "<p>Licensed under the GNU GPL, version 3 or later.</p>")

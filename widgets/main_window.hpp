@@ -8,6 +8,7 @@
 #include <QPointer>
 #include <QDateTime>
 #include <QTimer>
+#include <memory>
 
 #include "document_loader.hpp"
 #include "motion_model.hpp"
@@ -21,6 +22,7 @@ namespace tactus::gui {
 
 class Announcer;
 class EditorWidget;
+class FocusReturn;
 class MotionView;
 class PrinterPanel;
 class ProfileEditor;
@@ -90,6 +92,7 @@ Q_SIGNALS:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    bool focusNextPrevChild(bool next) override;
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;
 
@@ -110,6 +113,7 @@ private:
     void update_recent_menu();
     void add_recent(const QString& path);
     void report(const QString& message, bool error = false);
+    [[nodiscard]] QString table_warning(const QString& detail) const;
     bool maybe_save();
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
@@ -133,6 +137,7 @@ private:
     QTimer autosave_timer_;
     QPointer<QFutureWatcher<LoadResultPtr>> busy_;
     QProgressDialog* progress_ = nullptr;
+    std::shared_ptr<FocusReturn> busy_return_;  // where the focus goes when the background work ends
 
     QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
     MotionView* motion_ = nullptr;
@@ -143,7 +148,7 @@ private:
     QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
     QAction *focus_motion_, *focus_vibration_, *focus_profile_, *focus_printer_ = nullptr, *emboss_ = nullptr;
     QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
-        *focus_table_, *shortcuts_, *about_;
+        *focus_table_, *shortcuts_, *about_, *menus_ = nullptr;
 };
 
 }  // namespace tactus::gui

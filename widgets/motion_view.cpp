@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motion_view.hpp"
+#include "status_label.hpp"
 
 #include <QChart>
 #include <QChartView>
@@ -67,13 +68,13 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     quantity_->setAccessibleName(tr("Quantity"));
     quantity_->addItems({tr("Position (mm)"), tr("Velocity (mm/s)"), tr("Acceleration (mm/s\u00b2)"),
                          tr("Jerk (mm/s\u00b3)")});
-    compare_ = new QCheckBox(tr("Compare &profile shapes"), this);
+    compare_ = new QCheckBox(tr("Compare prof&ile shapes"), this);
     compare_->setChecked(true);
     auto* controls = new QHBoxLayout;
     auto* form = new QFormLayout;
-    form->addRow(tr("S&heet:"), sheet_);
+    form->addRow(tr("&Sheet:"), sheet_);
     form->addRow(tr("P&ass:"), pass_);
-    form->addRow(tr("&Show:"), quantity_);
+    form->addRow(tr("Sho&w:"), quantity_);
     controls->addLayout(form);
     controls->addWidget(compare_);
     controls->addStretch();
@@ -87,7 +88,7 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     chart_view_->viewport()->setAccessibleName(chart_view_->accessibleName());
     times_ = new QLabel(this);
     times_->setObjectName(QStringLiteral("motionTimes"));
-    times_->setAccessibleName(tr("Time estimates"));
+    expose_status(times_, tr("Time estimates"));
     times_->setWordWrap(true);
     times_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
 

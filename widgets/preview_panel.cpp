@@ -8,6 +8,8 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include "status_label.hpp"
+
 namespace tactus::gui {
 
 PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
@@ -31,18 +33,18 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
         return a;
     };
     auto* sides = new QActionGroup(this);
-    front_ = make(tr("&Front"), QKeySequence(tr("Ctrl+Alt+F")), QStringLiteral("viewFront"));
-    back_ = make(tr("&Back"), QKeySequence(tr("Ctrl+Alt+B")), QStringLiteral("viewBack"));
+    front_ = make(tr("Fr&ont"), QKeySequence(tr("Ctrl+Alt+F")), QStringLiteral("viewFront"));
+    back_ = make(tr("Bac&k"), QKeySequence(tr("Ctrl+Alt+B")), QStringLiteral("viewBack"));
     both_ = make(tr("Front &and back"), QKeySequence(tr("Ctrl+Alt+A")), QStringLiteral("viewBoth"));
     for (auto* a : {front_, back_, both_}) {
         a->setCheckable(true);
         sides->addAction(a);
     }
     both_->setChecked(true);
-    previous_ = make(tr("&Previous sheet"), QKeySequence(tr("Ctrl+PgUp")), QStringLiteral("previousSheet"));
-    next_ = make(tr("&Next sheet"), QKeySequence(tr("Ctrl+PgDown")), QStringLiteral("nextSheet"));
+    previous_ = make(tr("Pr&evious sheet"), QKeySequence(tr("Ctrl+PgUp")), QStringLiteral("previousSheet"));
+    next_ = make(tr("Ne&xt sheet"), QKeySequence(tr("Ctrl+PgDown")), QStringLiteral("nextSheet"));
     zoom_in_ = make(tr("Zoom &in"), QKeySequence::ZoomIn, QStringLiteral("zoomIn"));
-    zoom_out_ = make(tr("Zoom &out"), QKeySequence::ZoomOut, QStringLiteral("zoomOut"));
+    zoom_out_ = make(tr("Zoom o&ut"), QKeySequence::ZoomOut, QStringLiteral("zoomOut"));
     contrast_ = make(tr("&High contrast"), QKeySequence(tr("Ctrl+Alt+H")), QStringLiteral("highContrast"));
     contrast_->setCheckable(true);
     pdf_ = make(tr("Print preview to P&DF..."), QKeySequence(tr("Ctrl+Alt+P")), QStringLiteral("printPdf"));
@@ -65,7 +67,7 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     bar->addActions({previous_, next_, zoom_out_, zoom_in_, contrast_, pdf_});
     label_ = new QLabel(this);
     label_->setObjectName(QStringLiteral("previewLabel"));
-    label_->setAccessibleName(tr("Preview status"));
+    expose_status(label_, tr("Preview status"));
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -20,6 +20,7 @@
 
 #include "controller/sim_controller.hpp"
 #include "plan/planner.hpp"
+#include "status_label.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -65,12 +66,12 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     connect_->setObjectName(QStringLiteral("connectButton"));
     status_ = new QLabel(tr("Not connected"), this);
     status_->setObjectName(QStringLiteral("controllerStatus"));
-    status_->setAccessibleName(tr("Controller status"));
+    expose_status(status_, tr("Controller status"));
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
     fault_ = new QLabel(this);
     fault_->setObjectName(QStringLiteral("faultMessage"));
-    fault_->setAccessibleName(tr("Fault"));
+    expose_status(fault_, tr("Fault"));
     fault_->setWordWrap(true);
     fault_->setStyleSheet(QStringLiteral("QLabel { color: #a00000; font-weight: bold; }"));
     queue_ = new QTableWidget(0, 4, this);
@@ -97,7 +98,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     log_->setTabChangesFocus(true);
 
     auto* device_row = new QHBoxLayout;
-    auto* label = new QLabel(tr("&Embosser:"), this);
+    auto* label = new QLabel(tr("E&mbosser:"), this);
     label->setBuddy(devices_);
     device_row->addWidget(label);
     device_row->addWidget(devices_, 1);
@@ -116,7 +117,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(fault_);
     layout->addWidget(queue_, 2);
     layout->addLayout(job_row);
-    auto* log_label = new QLabel(tr("&Link log (for technicians):"), this);
+    auto* log_label = new QLabel(tr("Lin&k log (for technicians):"), this);
     log_label->setBuddy(log_);
     layout->addWidget(log_label);
     layout->addWidget(log_, 1);
@@ -132,6 +133,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     connect(from_page_, &QPushButton::clicked, this, [this] { resume_from_page(page_->value()); });
     status_timer_.setInterval(1000);
     connect(&status_timer_, &QTimer::timeout, this, &PrinterPanel::poll_status);
+    update_buttons();
     refresh_devices();
     select_device(QSettings().value(QStringLiteral("printer/last"), QStringLiteral("sim")).toString());
 }
@@ -169,6 +171,10 @@ void PrinterPanel::log(const QString& line) {
 QString PrinterPanel::log_text() const { return log_->toPlainText(); }
 QString PrinterPanel::fault_text() const { return fault_->text(); }
 
+void PrinterPanel::set_status(const QString& text) {
+    if (status_->text() != text) status_->setText(text);  // an unchanged text sends no event
+}
+
 void PrinterPanel::show_fault(const QString& text) {
     fault_->setText(text);
     if (!text.isEmpty()) Q_EMIT message(text, true);
@@ -203,7 +209,8 @@ void PrinterPanel::disconnect_device() {
     if (embosser_) log(tr("Disconnected from %1").arg(QString::fromStdString(embosser_->device())));
     embosser_.reset();
     connect_->setText(tr("&Connect"));
-    status_->setText(tr("Not connected"));
+    set_status(tr("Not connected"));
+    update_buttons();
 }
 
 void PrinterPanel::poll_status() {
@@ -212,12 +219,12 @@ void PrinterPanel::poll_status() {
     if (!s) {
         const auto why = QString::fromStdString(s.error().to_string());
         log(why);
-        status_->setText(tr("No answer from the embosser"));
+        set_status(tr("No answer from the embosser"));
         show_fault(tr("The embosser does not answer (%1). Check the cable and the power switch.").arg(why));
         return;
     }
-    status_->setText(tr("Connected to %1: %2").arg(QString::fromStdString(embosser_->device()),
-                                                    QString::fromStdString(explain_status(*s))));
+    set_status(tr("Connected to %1: %2").arg(QString::fromStdString(embosser_->device()),
+                                              QString::fromStdString(explain_status(*s))));
 }
 
 int PrinterPanel::enqueue(const QString& name, const layout::PagedDocument& pages, const profile::PrinterProfile& p,
@@ -262,12 +269,50 @@ QueuedJob* PrinterPanel::selected_job() {
 
 void PrinterPanel::update_row(const QueuedJob& j) {
     const auto row = static_cast<int>(&j - jobs_.data());
-    queue_->item(row, 1)->setText(state_text(j.state) + (j.message.isEmpty() ? QString() : QStringLiteral(": ") + j.message));
     auto* bar = static_cast<QProgressBar*>(queue_->cellWidget(row, 2));
     const int pct = j.passes_total ? static_cast<int>(100 * j.passes_done / j.passes_total) : (j.state == QueuedJob::State::done ? 100 : 0);
-    bar->setValue(pct);
-    bar->setAccessibleDescription(tr("%1 percent").arg(pct));
-    queue_->item(row, 3)->setText(QString::number(j.resume_sheet));
+    // The bar's value is what a screen reader reads; a description per update
+    // only doubled the events (issue 14).
+    if (bar->value() != pct) bar->setValue(pct);
+    const auto state = state_text(j.state) + (j.message.isEmpty() ? QString() : QStringLiteral(": ") + j.message);
+    if (queue_->item(row, 1)->text() != state) queue_->item(row, 1)->setText(state);
+    const auto sheet = QString::number(j.resume_sheet);
+    if (queue_->item(row, 3)->text() != sheet) queue_->item(row, 3)->setText(sheet);
+    update_buttons();
+}
+
+void PrinterPanel::on_progress(int id, std::size_t done, std::size_t total, std::size_t sheet) {
+    auto* j = job(id);
+    if (!j) return;
+    j->passes_done = done;
+    j->passes_total = total;
+    j->resume_sheet = sheet;
+    if (!j->steps) j->steps = std::make_shared<ProgressSteps>(j->pages->sheet_count() + 1 - j->start_sheet);
+    // The link reports every pass; the bar, the status and the screen reader
+    // hear only the steps (issue 14: one event per strike flooded Orca).
+    const auto step = j->steps->update(done, total, sheet + 1 - std::min(sheet, j->start_sheet));
+    if (!step) return;
+    update_row(*j);
+    set_status(tr("Embossing %1: sheet %2 of %3, %4 percent")
+                   .arg(j->name).arg(step->sheet).arg(step->sheets).arg(step->percent));
+    if (j->steps->speak(ProgressSteps::Clock::now()))
+        Q_EMIT message(step->by_sheet ? tr("%1: sheet %2 of %3").arg(j->name).arg(step->sheet).arg(step->sheets)
+                                      : tr("%1: %2 percent, sheet %3 of %4")
+                                            .arg(j->name).arg(step->percent / 10 * 10).arg(step->sheet).arg(step->sheets),
+                       false);
+}
+
+void PrinterPanel::update_buttons() {
+    const QueuedJob* r = running_ ? job(running_->id) : nullptr;
+    const bool any_queued = std::any_of(jobs_.begin(), jobs_.end(),
+                                        [](const QueuedJob& j) { return j.state == QueuedJob::State::queued; });
+    const bool any_stopped = std::any_of(jobs_.begin(), jobs_.end(), [](const QueuedJob& j) {
+        return j.state == QueuedJob::State::failed || j.state == QueuedJob::State::cancelled;
+    });
+    pause_->setEnabled(r && r->state == QueuedJob::State::running);
+    resume_->setEnabled((r && r->state == QueuedJob::State::paused) || (!r && any_stopped));
+    cancel_->setEnabled(r != nullptr || any_queued);
+    from_page_->setEnabled(!jobs_.empty());
 }
 
 void PrinterPanel::start_next() {
@@ -288,6 +333,7 @@ void PrinterPanel::start_next() {
     auto* cancel = &running_->cancel;
     QPointer<PrinterPanel> self(this);
     log(tr("Embossing %1 from sheet %2").arg(it->name).arg(start));
+    set_status(tr("Embossing %1").arg(it->name));
     Q_EMIT message(tr("Embossing %1").arg(it->name), false);
     // Progress crosses to the GUI thread as queued calls; the worker touches no widget.
     const auto post = [self](std::function<void(PrinterPanel&)> f) {
@@ -296,6 +342,7 @@ void PrinterPanel::start_next() {
         }, Qt::QueuedConnection);
     };
     connect(&running_->watcher, &QFutureWatcher<Outcome>::finished, this, [this, id] { finished_job(id); });
+    update_buttons();  // Pause and Cancel now reach the running job
     running_->watcher.setFuture(QtConcurrent::run([=]() -> Outcome {
         Outcome out;
         auto plan = plan::plan_job(*pages, prof);
@@ -308,9 +355,13 @@ void PrinterPanel::start_next() {
         post([id, total = std::accumulate(plan->sheets.begin(), plan->sheets.end(), std::size_t{0},
                                           [&](std::size_t n, const plan::SheetPlan& s) {
                                               return s.index >= start ? n + s.passes.size() : n;
-                                          })](PrinterPanel& p) {
+                                          }),
+              sheets = static_cast<std::size_t>(std::count_if(plan->sheets.begin(), plan->sheets.end(),
+                                                              [&](const plan::SheetPlan& s) { return s.index >= start; }))](
+                 PrinterPanel& p) {
             if (auto* j = p.job(id)) {
                 j->passes_total = total;
+                j->steps = std::make_shared<ProgressSteps>(sheets);
                 p.update_row(*j);
             }
         });
@@ -318,17 +369,7 @@ void PrinterPanel::start_next() {
             if (pr.executed) {
                 const auto done = pr.executed->passes_done, total = pr.executed->passes_total;
                 const auto sheet = pr.executed->sheet;
-                post([id, done, total, sheet](PrinterPanel& p) {
-                    if (auto* j = p.job(id)) {
-                        const auto before = j->passes_total ? 100 * j->passes_done / j->passes_total : 0;
-                        j->passes_done = done;
-                        j->passes_total = total;
-                        j->resume_sheet = sheet;
-                        p.update_row(*j);
-                        const auto now = total ? 100 * done / total : 100;
-                        if (now / 25 > before / 25) Q_EMIT p.message(tr("%1: %2 percent").arg(j->name).arg(now / 25 * 25), false);
-                    }
-                });
+                post([id, done, total, sheet](PrinterPanel& p) { p.on_progress(id, done, total, sheet); });
                 return;
             }
             const auto note = QString::fromStdString(pr.note);
@@ -396,6 +437,8 @@ void PrinterPanel::finished_job(int id) {
         show_fault(text);
     }
     update_row(*j);
+    // "idle" again, now that the job is over; after a failure the fault stays what was said.
+    if (j->state != QueuedJob::State::failed) poll_status();
     log(text);
     Q_EMIT message(text, j->state == QueuedJob::State::failed);
     Q_EMIT job_finished(id, out.completed, text);

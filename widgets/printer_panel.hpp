@@ -13,6 +13,7 @@
 
 #include "embosser.hpp"
 #include "layout/page.hpp"
+#include "progress_steps.hpp"
 
 class QComboBox;
 class QLabel;
@@ -35,6 +36,7 @@ struct QueuedJob {
     std::size_t passes_total = 0;
     std::size_t resume_sheet = 1;
     QString message;
+    std::shared_ptr<ProgressSteps> steps;  // when the bar moves and what is spoken
 };
 
 class PrinterPanel : public QWidget {
@@ -76,6 +78,9 @@ private:
     void log(const QString& line);
     void poll_status();
     void show_fault(const QString& text);
+    void set_status(const QString& text);
+    void on_progress(int id, std::size_t done, std::size_t total, std::size_t sheet);
+    void update_buttons();
     QueuedJob* job(int id);
     QueuedJob* selected_job();
 

@@ -62,7 +62,7 @@ ProfileEditor::ProfileEditor(QWidget* parent) : QWidget(parent) {
     status_->setWordWrap(true);
     status_->setAccessibleName(tr("Profile check"));
     auto* load_button = new QPushButton(tr("&Load profile..."), this);
-    auto* save_button = new QPushButton(tr("Sa&ve profile..."), this);
+    auto* save_button = new QPushButton(tr("Save pr&ofile..."), this);
     auto* reset_button = new QPushButton(tr("&Defaults"), this);
     connect(load_button, &QPushButton::clicked, this, [this] {
         const auto path = QFileDialog::getOpenFileName(this, tr("Load printer profile"), {}, tr("Profiles (*.json)"));

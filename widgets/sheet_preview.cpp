@@ -235,6 +235,12 @@ QString SheetPreview::cursor_description() const {
         return where + tr(": blank");
     const auto& line = page->lines[l];
     QString text = where + QStringLiteral(": ") + tr("dots %1").arg(cell_text(line[c]));
+    if (print_word_) {
+        const auto interpoint = doc_ && doc_->geometry.interpoint;
+        const std::size_t index = interpoint ? 2 * (sheet_ - 1) + (options_.cursor_on_back ? 1 : 0) : sheet_ - 1;
+        if (const auto word = print_word_(index, options_.cursor_line, options_.cursor_cell); !word.isEmpty())
+            return text + tr(", in the word \u201c%1\u201d").arg(word);
+    }
     if (back_translate_) {
         std::size_t a = c, b = c;
         while (a > 0 && !line[a - 1].blank()) --a;
@@ -315,7 +321,15 @@ void SheetPreview::mousePressEvent(QMouseEvent* e) {
 void SheetPreview::focusInEvent(QFocusEvent* e) {
     QWidget::focusInEvent(e);
     update();
-    cursor_changed();
+    // Only the accessible description and caret: the screen reader reads them with
+    // the focus. Announcing the cell too said it twice and, when the focus came
+    // back after a dialog, replaced the dialog's result before it was heard.
+    if (QAccessible::isActive()) {
+        QAccessibleEvent desc(this, QAccessible::DescriptionChanged);
+        QAccessible::updateAccessibility(&desc);
+        QAccessibleTextCursorEvent caret(this, options_.cursor_cell);
+        QAccessible::updateAccessibility(&caret);
+    }
 }
 
 void SheetPreview::focusOutEvent(QFocusEvent* e) {

@@ -39,6 +39,9 @@ public:
     void set_document(const layout::PagedDocument* doc);
     void set_geometry(const SheetGeometry& g);
     void set_back_translator(std::function<QString(const document::BrailleLine&)> f) { back_translate_ = std::move(f); }
+    // The print word that produced the cell at (page index, line, cell); the
+    // back-translation is only the fallback when it gives nothing.
+    void set_print_word(std::function<QString(std::size_t page, int line, int cell)> f) { print_word_ = std::move(f); }
 
     [[nodiscard]] std::size_t sheet() const { return sheet_; }
     [[nodiscard]] std::size_t sheet_count() const;
@@ -95,6 +98,7 @@ private:
     double zoom_ = 1.0;
     std::vector<DotConflict> conflicts_;
     std::function<QString(const document::BrailleLine&)> back_translate_;
+    std::function<QString(std::size_t, int, int)> print_word_;
 };
 
 QAccessibleInterface* make_accessible_sheet_preview(SheetPreview* preview);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vibration_view.hpp"
+#include "status_label.hpp"
 
 #include <QBarCategoryAxis>
 #include <QBarSeries>
@@ -32,7 +33,7 @@ VibrationView::VibrationView(QWidget* parent) : QWidget(parent) {
     metrics_->setMaximumHeight(150);
     metrics_->verticalHeader()->setVisible(false);
     modes_ = new QLabel(this);
-    modes_->setAccessibleName(tr("Natural frequencies"));
+    expose_status(modes_, tr("Natural frequencies"));
     modes_->setWordWrap(true);
     residuals_ = new QLabel(this);
     residuals_->setObjectName(QStringLiteral("residualSummary"));

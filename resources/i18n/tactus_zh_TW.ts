@@ -393,8 +393,8 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="224" />
-        <source>Go to vi&amp;bration</source>
-        <translation>移到振動(&amp;B)</translation>
+        <source>Go to vibratio&amp;n</source>
+        <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="224" />
@@ -774,13 +774,13 @@
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="70" />
-        <source>Compare &amp;profile shapes</source>
-        <translation>比較運動曲線(&amp;P)</translation>
+        <source>Compare prof&amp;ile shapes</source>
+        <translation>比較運動曲線(&amp;I)</translation>
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="74" />
-        <source>S&amp;heet:</source>
-        <translation>紙張(&amp;H)：</translation>
+        <source>&amp;Sheet:</source>
+        <translation>紙張(&amp;S)：</translation>
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="75" />
@@ -789,8 +789,8 @@
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="76" />
-        <source>&amp;Show:</source>
-        <translation>顯示(&amp;S)：</translation>
+        <source>Sho&amp;w:</source>
+        <translation>顯示(&amp;W)：</translation>
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="83" />
@@ -926,8 +926,8 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="34" />
-        <source>&amp;Front</source>
-        <translation>正面(&amp;F)</translation>
+        <source>Fr&amp;ont</source>
+        <translation>正面(&amp;O)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="34" />
@@ -936,8 +936,8 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="35" />
-        <source>&amp;Back</source>
-        <translation>背面(&amp;B)</translation>
+        <source>Bac&amp;k</source>
+        <translation>背面(&amp;K)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="35" />
@@ -956,8 +956,8 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="42" />
-        <source>&amp;Previous sheet</source>
-        <translation>上一張(&amp;P)</translation>
+        <source>Pr&amp;evious sheet</source>
+        <translation>上一張(&amp;E)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="42" />
@@ -966,8 +966,8 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="43" />
-        <source>&amp;Next sheet</source>
-        <translation>下一張(&amp;N)</translation>
+        <source>Ne&amp;xt sheet</source>
+        <translation>下一張(&amp;X)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="43" />
@@ -981,8 +981,8 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="45" />
-        <source>Zoom &amp;out</source>
-        <translation>縮小(&amp;O)</translation>
+        <source>Zoom o&amp;ut</source>
+        <translation>縮小(&amp;U)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="46" />
@@ -1227,8 +1227,8 @@
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="64" />
-        <source>Sa&amp;ve profile...</source>
-        <translation>儲存設定檔(&amp;V)...</translation>
+        <source>Save pr&amp;ofile...</source>
+        <translation>儲存設定檔(&amp;O)...</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="65" />

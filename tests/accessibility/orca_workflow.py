@@ -1,0 +1,170 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""What a blind user hears, checked with the real Orca screen reader.
+
+Each scenario starts Orca and tactus in a fresh session (orca_session.py) and
+works the app by keyboard only, asserting after every key what Orca says:
+
+  open    File > Open through the dialog, then Tab / Ctrl+1 / arrows still speak;
+          reading print and braille line by line; changing the table; the preview
+          cell by cell; export; opening again from the recent-files menu.
+  emboss  a multi-sheet job to the built-in simulator: progress in few events per
+          sheet, no DELUGE, "Embossed ...: all N strikes checked" heard once;
+          pause, resume and cancel of a second job.
+  focus   Tab from the print text back to it stays on the visible page; F10
+          opens the menus; Ctrl+P puts the focus on the printer panel.
+
+usage: orca_workflow.py SCENARIO TACTUS SAMPLE
+Exit 0 pass, 1 fail (with the transcript), 77 skipped (no Orca / window manager).
+"""
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from orca_session import OrcaSession, StepFailed, run  # noqa: E402
+
+# A user hears progress in steps (every 10 % or every sheet, whichever is rarer)
+# and a handful of state changes per sheet; this bounds what a sheet may send.
+EVENTS_PER_SHEET = 20
+EVENTS_PER_JOB = 60  # queueing, the row, the completion, the focus moves
+
+
+def multi_sheet_text(sheets_hint):
+    """Markdown long enough for several interpoint sheets of plain words."""
+    para = ("The embosser strikes each dot with a small hammer, and the reader feels "
+            "the raised dots with the fingertips. ")
+    return "\n\n".join(f"Paragraph {i + 1}. " + para * 3 for i in range(sheets_hint * 6)) + "\n"
+
+
+def scenario_open(tactus, sample, work):
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery"])
+        s.step("Ctrl+O opens the dialog", keys=["ctrl+o"], expect=[r"Open or import"])
+        # Qt's file dialog floods Orca while a path is typed (its file list
+        # follows every key): not the app's doing, so not held against it.
+        s.step("type the path", type_text=sample, allow_silent=True, allow_deluge=True)
+        s.step("Enter opens the file", keys=["Return"], expect=[r"Opened welcome\.md"], once=[r"Opened welcome\.md"])
+        # Item 2: the main window must be active again after the dialog.
+        s.step("Tab after the dialog speaks", keys=["Tab"])
+        s.step("Ctrl+1 speaks the print text", keys=["ctrl+1"], expect=[r"Print text"])
+        s.step("Ctrl+Home, Down reads the next print line", keys=["ctrl+Home", "Down"],
+               expect=[r"Braille is a tactile writing system"])
+        s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"],
+               forbid=[r"read only"])
+        s.step("Down reads a braille line", keys=["Down"], expect=[r"[\u2800-\u28ff]|dots? \d"])
+        s.step("Ctrl+T opens the table list", keys=["ctrl+t"], expect=[r"Table: combo box"])
+        s.step("the new table is announced", keys=["Up", "Return"], expect=[r"Braille table: .*uncontracted"],
+               once=[r"Braille table: "])
+        s.step("Ctrl+3 speaks the preview", keys=["ctrl+3"], expect=[r"Interpoint preview"])
+        s.step("Right speaks the next cell", keys=["Right"], expect=[r"cell 2"])
+        s.step("Ctrl+E opens the export dialog", keys=["ctrl+e"], expect=[r"Export"])
+        brf = os.path.join(work, "heard.brf")
+        s.step("type the BRF name", keys=["ctrl+a"], type_text=brf, allow_silent=True, allow_deluge=True)
+        s.step("Enter exports", keys=["Return"], expect=[r"Exported heard\.brf"], once=[r"Exported heard\.brf"])
+        if not os.path.exists(brf):
+            raise StepFailed("the export was announced but heard.brf was not written")
+        s.step("Tab after the export dialog speaks", keys=["Tab"])
+        # The recent-files menu: File (Alt+F), Open Recent (R), the first file (1).
+        s.step("Alt+F opens the File menu", keys=["alt+f"], expect=[r"New"])
+        s.step("R opens Open Recent", keys=["r"], expect=[r"welcome\.md"])
+        s.step("1 opens the recent file", keys=["1"], expect=[r"Opened welcome\.md"], once=[r"Opened welcome\.md"])
+        s.step("Ctrl+1 after opening from the recent list speaks", keys=["ctrl+1"], expect=[r"Print text"])
+        print(s.summary())
+    return 0
+
+
+def scenario_emboss(tactus, sample, work):
+    doc = os.path.join(work, "sheets.md")
+    with open(doc, "w", encoding="utf-8") as f:
+        # About seventy interpoint sheets: long enough on the fast simulator for
+        # Alt+P to reach a running job.
+        f.write(multi_sheet_text(50))
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", doc])
+        sheets = sheet_count(s)
+        mark = s.mark()
+        # Ctrl+P: the job starts and the focus goes to the queue, where Alt+P/U/N work.
+        s.step("Ctrl+P embosses to the simulator", keys=["ctrl+p"], expect=[r"Embossing sheets\.md", r"Job queue"],
+               settle=False)
+        s.step("Alt+P pauses", keys=["alt+p"], expect=[r"Paus"], settle=False)
+        s.step("Alt+U resumes", keys=["alt+u"], expect=[r"Resum"], settle=False)
+        rec = s.step("the job runs to the end", expect=[r"Embossed sheets\.md: all \d+ strikes checked"],
+                     once=[r"Embossed sheets\.md"], timeout=330, quiet=2.0)
+        events = s.events_since(mark)
+        heard = [p.text for p in s.phrases_since(mark)]
+        budget = EVENTS_PER_JOB + EVENTS_PER_SHEET * sheets
+        print(f"emboss: {sheets} sheet(s), {len(events)} AT-SPI events "
+              f"({len(events) / max(1, sheets):.1f} per sheet), budget {budget}", flush=True)
+        if len(events) > budget:
+            types = {}
+            for _, t, _, _ in events:
+                types[t] = types.get(t, 0) + 1
+            top = sorted(types.items(), key=lambda kv: -kv[1])[:5]
+            raise StepFailed(f"embossing {sheets} sheet(s) sent {len(events)} AT-SPI events, more than {budget}: {top}")
+        if not any(re.search(r"\d+ percent|sheet \d+ of \d+", t, re.I) for t in heard):
+            raise StepFailed(f"no progress was heard while embossing: {heard}")
+        s.step("Ctrl+P again queues a second job", keys=["ctrl+p"], expect=[r"Embossing sheets\.md"], settle=False)
+        s.step("Alt+N cancels", keys=["alt+n"], expect=[r"cancelled"], once=[r"sheets\.md cancelled"], timeout=120)
+        print(s.summary())
+    return 0
+
+
+def sheet_count(s):
+    """The sheets of the job, from what the app said ("... N sheet(s)")."""
+    for p in reversed(s.orca_log.phrases):
+        m = re.search(r"Opened .*?: (\d+) sheet", p.text)
+        if m:
+            return int(m.group(1))
+    return 1
+
+
+def scenario_focus(tactus, sample, work):
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", sample])
+        # The print text has the focus at start (said at launch, or now if the
+        # window became active late); Ctrl+1 keeps it there.
+        s.key("ctrl+1")
+        s.wait_phrase(r"Print text", (0, 0, 0, 0, 0), 60)
+        s.settle(s.mark())
+        stops = []
+        for i in range(80):
+            rec = s.step(f"Tab {i + 1}", keys=["Tab"], quiet=0.8)
+            stops.append(" ".join(rec.phrases))
+            if any(re.search(r"Print text", p) for p in rec.phrases):
+                break
+        else:
+            raise StepFailed(f"80 Tabs never came back to the print text: {stops}")
+        print(f"Tab stops from the print text back to it: {len(stops)}", flush=True)
+        hidden = [t for t in stops if re.search(r"Carriage|Sheet spin|Natural frequencies|Paper width|Job queue|"
+                                                  r"Step response|Time estimates", t)]
+        if hidden:
+            raise StepFailed(f"Tab walked the hidden tabs' controls: {hidden}")
+        s.step("F10 opens the menus", keys=["F10"], expect=[r"File"])
+        s.step("Escape closes the menu", keys=["Escape", "Escape"], allow_silent=True, quiet=0.8)
+        s.step("Ctrl+P raises the printer panel with the focus", keys=["ctrl+p"],
+               expect=[r"Printer", r"Job queue"], timeout=60)
+        print(s.summary())
+    return 0
+
+
+SCENARIOS = {"open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus}
+
+
+def main():
+    if len(sys.argv) != 4 or sys.argv[1] not in SCENARIOS:
+        print(__doc__, file=sys.stderr)
+        return 2
+    scenario, tactus, sample = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
+    work = os.environ.get("TACTUS_WORK") or "/tmp"
+    return run(lambda: SCENARIOS[scenario](tactus, sample, work))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
