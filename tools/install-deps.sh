@@ -22,6 +22,8 @@ packages=(
   # The Orca-in-the-loop tests (tests/accessibility/orca_*.py): the real screen
   # reader and a window manager, which window activation events need.
   orca openbox
+  # The 89C52 firmware (firmware/): SDCC, and the s51 emulator with its pty bridge.
+  sdcc sdcc-ucsim socat
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq

@@ -11,6 +11,11 @@ jobs=$(nproc)
 echo "== architecture (stage order, declared includes, no cycles)"
 python3 tools/check-architecture.py
 
+echo "== 89C52 firmware: build, fit in 8 KB flash and 256 B RAM, native link tests"
+make -C firmware clean >/dev/null 2>&1 || true
+make -C firmware
+make -C firmware test
+
 echo "== default build (warnings are errors)"
 cmake --preset default >/dev/null
 cmake --build build/default -j"$jobs"

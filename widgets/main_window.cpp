@@ -145,7 +145,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
     sp->set_print_word([this](std::size_t page, int line, int cell) {
-        return editor_->has_layout() ? print_word_at(editor_->layout(), PagePosition{page, line, cell}) : QString{};
+        return editor_->has_layout() ? print_word_at(editor_->layout(), edit::PagePosition{page, line, cell}) : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
         sp->set_document(&editor_->layout().paged());

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "cursor_map.hpp"
-#include "editor_lines.hpp"
+#include "edit/cursor_map.hpp"
+#include "edit/editor_lines.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -20,10 +20,10 @@ bool unspaced_script(char32_t c) {
 
 }  // namespace
 
-QString print_word_at(const LiveLayout& layout, const PagePosition& where) {
+QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& where) {
     if (layout.line_count() == 0) return {};
     const auto i = layout.line_at(where.page, where.line);
-    if (i >= layout.line_count() || is_braille_line(layout.line(i))) return {};
+    if (i >= layout.line_count() || edit::is_braille_line(layout.line(i))) return {};
     const auto cells = layout.braille_of(i);
     std::size_t k = cells.size();
     for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -35,7 +35,7 @@ QString print_word_at(const LiveLayout& layout, const PagePosition& where) {
         }
     }
     if (k == cells.size() || cells[k].blank()) return {};
-    const auto content = QString::fromStdString(editor_line_content(layout.line(i))).toStdU32String();
+    const auto content = QString::fromStdString(edit::editor_line_content(layout.line(i))).toStdU32String();
     if (content.empty()) return {};
     // Contractions never cross a space, so the n-th braille word is the n-th
     // print word whenever both have as many words (cursor_map's rule).
@@ -55,7 +55,7 @@ QString print_word_at(const LiveLayout& layout, const PagePosition& where) {
         }
     const bool spaced = std::none_of(content.begin(), content.end(), unspaced_script);
     if (spaced && braille_words == words.size()) return QString::fromStdU32String(words[word_of_k]);
-    auto col = std::min(braille_to_print(cells, k, content), content.size() - 1);
+    auto col = std::min(edit::braille_to_print(cells, k, content), content.size() - 1);
     if (is_space(content[col])) return {};
     if (unspaced_script(content[col])) return QString::fromStdU32String(std::u32string(1, content[col]));
     std::size_t a = col, b = col + 1;

@@ -7,12 +7,12 @@
 // under it, with the same word-by-word map the cursor uses (cursor_map).
 #include <QString>
 
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 
 namespace tactus::gui {
 
 // Empty when the cell is not part of a print paragraph (a page number, a blank,
 // or a line written in braille).
-[[nodiscard]] QString print_word_at(const LiveLayout& layout, const PagePosition& where);
+[[nodiscard]] QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& where);
 
 }  // namespace tactus::gui

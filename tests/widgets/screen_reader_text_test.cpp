@@ -9,7 +9,7 @@
 #include <QtTest>
 
 #include "announcer.hpp"
-#include "live_layout.hpp"
+#include "edit/live_layout.hpp"
 #include "print_word.hpp"
 #include "status_label.hpp"
 
@@ -51,7 +51,7 @@ private Q_SLOTS:
     }
 
     void the_preview_names_the_print_word() {
-        auto l = LiveLayout::create("en-ueb-g2.ctb", {});
+        auto l = edit::LiveLayout::create("en-ueb-g2.ctb", {});
         QVERIFY(l);
         l->reset({"See you on FRIDAY, at noon."});
         const auto cells = l->braille_of(0);
@@ -70,7 +70,7 @@ private Q_SLOTS:
     }
 
     void chinese_names_the_character_written() {
-        auto l = LiveLayout::create("zh-tw.ctb", {});
+        auto l = edit::LiveLayout::create("zh-tw.ctb", {});
         QVERIFY(l);
         l->reset({"今天星期五"});
         const auto cells = l->braille_of(0);
