@@ -35,6 +35,7 @@
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
+#include "edit/markdown_writer.hpp"
 #include "export/export.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
@@ -501,12 +502,12 @@ bool MainWindow::save_as() {
 }
 
 bool MainWindow::save_to(const QString& path) {
-    // One block per editor line; Markdown needs a blank line between blocks.
-    QStringList blocks;
-    for (const auto& line : editor_->text().split(QLatin1Char('\n')))
-        if (!line.trimmed().isEmpty()) blocks << line;
+    // The editor's lines as Markdown: core's writer, which the importer reads back.
+    std::vector<std::string> lines;
+    for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
+    const auto markdown = edit::to_markdown(lines);
     QString error;
-    if (!write_atomically(path, (blocks.join(QStringLiteral("\n\n")) + QLatin1Char('\n')).toUtf8(), &error)) {
+    if (!write_atomically(path, QByteArray::fromStdString(markdown), &error)) {
         report(error, true);
         return false;
     }
