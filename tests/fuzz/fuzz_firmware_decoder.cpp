@@ -26,12 +26,7 @@ extern "C" {
 #undef fw_frame
 }
 
-#if __has_include("encode/frame.hpp")
 #include "encode/frame.hpp"
-#define HAVE_HOST_DECODER 1
-#else
-#define HAVE_HOST_DECODER 0
-#endif
 
 namespace {
 
@@ -94,7 +89,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fw_link_init(0);
     if (!link_mode) {
         for (std::size_t i = 0; i < n; ++i) fw_rx_byte(bytes[i]);
-#if HAVE_HOST_DECODER
         tactus::encode::FrameDecoder host;
         std::vector<tactus::encode::Frame> frames;
         host.push(std::span<const std::uint8_t>(bytes, n), frames);
@@ -103,7 +97,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             require(frames[i].seq == seen[i].seq && frames[i].type == seen[i].type);
             require(frames[i].payload == seen[i].payload);
         }
-#endif
         for (const auto& f : seen) require(f.payload.size() <= FW_WIRE_MAX_PAYLOAD);
         return 0;
     }
