@@ -111,7 +111,7 @@ void add_sim_command(CLI::App& app) {
         ->check(CLI::Range(0.0, 0.5));
     cmd->add_option("--seed", args->server.seed, "Noise seed");
     cmd->add_option("--disconnect-at", args->server.disconnect_at_s,
-                    "Kill the line this many seconds after start ...");
+                    "Kill the line this many seconds after the host's first byte ...");
     cmd->add_option("--disconnect-for", args->server.disconnect_for_s, "... for this many seconds");
     cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(CLI::PositiveNumber);
     cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,

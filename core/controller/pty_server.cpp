@@ -79,8 +79,13 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
     auto wall_of = [&](double sim) { return t0 + sim / options_.time_scale; };
     std::mt19937_64 rng(options_.seed);
     std::uniform_real_distribution<double> u(0, 1);
+    // The pulled cable is timed from the host's first byte, not from our start:
+    // a host that starts slowly (a loaded machine, a sanitizer build) must still
+    // meet the cut in the middle of its job, not before its HELLO.
+    double first_byte = -1;
     auto line_dead = [&](double wall) {
-        const double t = wall - t0;
+        if (first_byte < 0) return false;
+        const double t = wall - first_byte;
         return options_.disconnect_at_s >= 0 && t >= options_.disconnect_at_s &&
                t < options_.disconnect_at_s + options_.disconnect_for_s;
     };
@@ -145,6 +150,7 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
         if (r > 0 && (p.revents & POLLIN)) {
             const auto n = ::read(master_, buf.data(), buf.size());
             const double at = wall_now();
+            if (n > 0 && first_byte < 0) first_byte = at;
             for (ssize_t i = 0; i < n; ++i) put(inbound, in_free, at, buf[static_cast<std::size_t>(i)]);
         }
     }
