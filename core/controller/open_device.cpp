@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "controller/open_device.hpp"
 
-#include <charconv>
 #include <optional>
 #include <string>
 
@@ -12,18 +11,11 @@
 namespace tactus::controller {
 namespace {
 
-std::optional<double> to_double(const std::string& s) {
-    double v = 0;
-    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
-    return v;
-}
-
 Result<std::unique_ptr<transport::ByteStream>> open_sim(const transport::DeviceSpec& spec) {
     SimLineOptions line;
     SimOptions sim;
     for (const auto& [k, v] : spec.options) {
-        const auto d = to_double(v);
+        const auto d = transport::option_number(v);
         const std::string where = "sim option " + k;
         if (!d || *d < 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a non-negative number", where);
         if (k == "baud") line.baud = *d;

@@ -9,16 +9,13 @@
 #include "transport/tty_port.hpp"
 
 namespace tactus::transport {
-namespace {
 
-std::optional<double> to_double(const std::string& s) {
+std::optional<double> option_number(const std::string& s) {
     double v = 0;
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
     return v;
 }
-
-}  // namespace
 
 Result<DeviceSpec> parse_device(std::string_view device) {
     const std::string where = "device \"" + std::string(device) + "\"";
@@ -71,7 +68,7 @@ Result<UartSettings> uart_settings(const DeviceSpec& spec) {
     for (const auto& [k, v] : spec.options) {
         const std::string where = spec.scheme + " option " + k;
         if (k == "baud") {
-            const auto b = to_double(v);
+            const auto b = option_number(v);
             if (!b || *b < 300 || *b > 1'000'000 || *b != static_cast<int>(*b))
                 return fail(ErrorKind::usage, "baud rate \"" + v + "\" is not a whole number from 300 to 1000000", where);
             u.baud = static_cast<int>(*b);

@@ -7,6 +7,7 @@
 //   lpt:/dev/parport0
 //   sim?baud=115200&noise=1e-3&seed=7
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,6 +24,9 @@ struct DeviceSpec {
 };
 
 Result<DeviceSpec> parse_device(std::string_view device);
+
+// An option's value as a number: the whole text, nothing left over.
+std::optional<double> option_number(const std::string& value);
 
 // Serial line settings shared by serial, pty and hid.
 struct UartSettings {
