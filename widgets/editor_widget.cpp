@@ -181,7 +181,16 @@ void EditorWidget::replace_braille_blocks(int first, int removed, int count) {
     for (int i = first; i < first + count; ++i) lines << braille_text(static_cast<std::size_t>(i));
     QTextCursor c(doc);
     const auto start = doc->findBlockByNumber(first);
-    if (removed > 0 && start.isValid()) {
+    if (removed == count && start.isValid()) {
+        // The same paragraphs changed in place: change only the cells that differ.
+        // A six-key chord then inserts its one cell, which is what a screen reader
+        // echoes; replacing the paragraph made Orca say nothing and moved the caret.
+        auto block = start;
+        for (const auto& line : lines) {
+            replace_changed_cells(block, line);
+            block = block.next();
+        }
+    } else if (removed > 0 && start.isValid()) {
         const auto end = doc->findBlockByNumber(first + removed - 1);
         c.setPosition(start.position());
         c.setPosition(end.position() + end.length() - 1, QTextCursor::KeepAnchor);
@@ -194,6 +203,20 @@ void EditorWidget::replace_braille_blocks(int first, int removed, int count) {
         c.insertText(QLatin1Char('\n') + lines.join(QLatin1Char('\n')));
     }
     syncing_ = was;
+}
+
+void EditorWidget::replace_changed_cells(const QTextBlock& block, const QString& text) {
+    const auto old = block.text();
+    qsizetype prefix = 0;
+    const auto shorter = std::min(old.size(), text.size());
+    while (prefix < shorter && old[prefix] == text[prefix]) ++prefix;
+    qsizetype suffix = 0;
+    while (suffix < shorter - prefix && old[old.size() - 1 - suffix] == text[text.size() - 1 - suffix]) ++suffix;
+    if (prefix == old.size() && prefix == text.size()) return;  // unchanged: no event at all
+    QTextCursor c(block);
+    c.setPosition(block.position() + static_cast<int>(prefix));
+    c.setPosition(block.position() + static_cast<int>(old.size() - suffix), QTextCursor::KeepAnchor);
+    c.insertText(text.mid(prefix, text.size() - prefix - suffix));
 }
 
 int EditorWidget::current_line() const { return print_->textCursor().blockNumber(); }
@@ -305,7 +328,9 @@ void EditorWidget::braille_typed(const document::BrailleLine& cells) {
                                              : static_cast<std::size_t>(start_block.length() - 1);
     edit_braille(line, from, to, cells);
     if (cells.size() == 1 && !cells.front().blank() && layout_) {
-        auto spoken = tr("dots %1").arg(QString::fromStdString(document::dot_numbers(cells.front())));
+        // "dots 1 2", not "1-2": a screen reader reads the dash as "minus" or a range.
+        const auto dots = QString::fromStdString(document::dot_numbers(cells.front())).replace(QLatin1Char('-'), QLatin1Char(' '));
+        auto spoken = tr("dots %1").arg(dots);
         if (const auto print = QString::fromStdString(layout_->back_translate(cells)).trimmed(); !print.isEmpty())
             spoken += QStringLiteral(", ") + print;
         Q_EMIT cell_entered(spoken);

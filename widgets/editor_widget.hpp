@@ -5,6 +5,7 @@
 // edits in the braille pane turn that paragraph into verbatim braille. Both go
 // through the print document, so one QUndoStack undoes either.
 #include <QSplitter>
+#include <QTextBlock>
 #include <QUndoStack>
 #include <memory>
 #include <optional>
@@ -58,6 +59,8 @@ private:
     void refresh_braille();
     void on_contents_change(int position, int removed, int added);
     void replace_braille_blocks(int first, int removed, int count);
+    // Replaces a braille paragraph's text by changing only the cells that differ.
+    void replace_changed_cells(const QTextBlock& block, const QString& text);
     void sync_from_print();
     void sync_from_braille();
     void braille_typed(const document::BrailleLine& cells);

@@ -7,7 +7,7 @@ works the app by keyboard only, asserting after every key what Orca says:
 
   open    File > Open through the dialog, then Tab / Ctrl+1 / arrows still speak;
           reading print and braille line by line; changing the table; the preview
-          cell by cell; export; opening again from the recent-files menu.
+          cell by cell; six-key entry; export; opening again from the recent-files menu.
   emboss  a multi-sheet job to the built-in simulator: progress in few events per
           sheet, no DELUGE, "Embossed ...: all N strikes checked" heard (twice at times: item 7);
           pause, resume and cancel of a second job.
@@ -55,6 +55,10 @@ def scenario_open(tactus, sample, work):
         s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"],
                forbid=[r"read only"])
         s.step("Down reads a braille line", keys=["Down"], expect=[r"[\u2800-\u28ff]|dots? \d"])
+        # Six-key entry (xdotool holds F and D together: dots 1 and 2) is echoed
+        # once with its dots and its print letter (issue 14 items 1 and 5).
+        s.step("a six-key chord is echoed", keys=["f+d"], expect=[r"dots 1 2, \w+"], once=[r"dots 1 2"])
+        s.step("Ctrl+Z takes the cell back", keys=["ctrl+z"], allow_silent=True, quiet=0.8)
         s.step("Ctrl+T opens the table list", keys=["ctrl+t"], expect=[r"Table: combo box"])
         s.step("the new table is announced", keys=["Up", "Return"], expect=[r"Braille table: .*uncontracted"],
                once=[r"Braille table: "])

@@ -208,6 +208,39 @@ private Q_SLOTS:
         QCOMPARE(m[5], int(Qt::Key_L));
     }
 
+    // Issue 14 item 5: a chord speaks the cell it typed and the print letter,
+    // and the status bar and the preview's cell cursor stay on the new cell.
+    void a_chord_is_echoed_and_the_cursor_stays_on_it() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        auto* pane = w.editor()->braille_pane();
+        pane->setFocus();
+        QTextCursor c(pane->document()->findBlockByNumber(2));
+        c.setPosition(c.position() + 4);
+        pane->setTextCursor(c);
+        QSignalSpy spoken(w.announcer(), &Announcer::announced);
+        for (auto k : {Qt::Key_F, Qt::Key_D}) QTest::keyPress(pane, k);  // dots 1 2
+        for (auto k : {Qt::Key_F, Qt::Key_D}) QTest::keyRelease(pane, k);
+        QCOMPARE(spoken.size(), 1);
+        // Contracted UEB: the lone cell b is the wordsign "but".
+        QCOMPARE(spoken.front().front().toString(), QStringLiteral("dots 1 2, but"));
+        QCOMPARE(pane->textCursor().positionInBlock(), 5);
+        const auto pos = w.editor()->current_position();
+        const auto want = w.editor()->layout().position_of(2, 5);
+        QCOMPARE(pos.page, want.page);
+        QCOMPARE(pos.line, want.line);
+        QCOMPARE(pos.cell, want.cell);
+        QRegularExpression cell(QStringLiteral(R"(\| cell (\d+) \|)"));
+        const auto m = cell.match(w.status_text());
+        QVERIFY2(m.hasMatch(), qPrintable(w.status_text()));
+        QCOMPARE(m.captured(1).toInt(), pos.cell + 1);
+        QCOMPARE(w.preview_panel()->preview()->cursor_page(), pos.page);
+        QCOMPARE(w.preview_panel()->preview()->cursor_line(), pos.line);
+        QCOMPARE(w.preview_panel()->preview()->cursor_cell(), pos.cell);
+    }
+
     void keyboard_reaches_everything_with_names() {
         MainWindow w;
         w.show();

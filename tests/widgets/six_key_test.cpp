@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Six-key chords: committed on the last release, auto-repeat ignored, mapping
 // configurable; and typed into the braille pane they become the paragraph's braille.
+#include <QTextBlock>
 #include <QtTest>
 
 #include "braille_pane.hpp"
@@ -9,6 +10,7 @@
 
 using namespace tactus;
 using namespace tactus::gui;
+
 
 class SixKeyTest : public QObject {
     Q_OBJECT
@@ -87,6 +89,60 @@ private Q_SLOTS:
         QCOMPARE(editor.text(), QStringLiteral("\u2813\u2811\u2800\u2801\u2803"));
         editor.undo_stack()->redo();
         QCOMPARE(editor.text(), QStringLiteral("\u2813\u2811\u2800\u2801"));
+    }
+
+    // Issue 14 item 5: a chord inserts its one cell into the braille pane, so a
+    // screen reader echoes that cell; it used to replace the whole paragraph
+    // (Orca echoed nothing), and the caret, the status and the preview cursor
+    // jumped to cell 1.
+    void a_chord_inserts_only_its_cell_and_the_caret_follows() {
+        EditorWidget editor;
+        auto layout = edit::LiveLayout::create("en-ueb-g1.ctb", {});
+        QVERIFY(layout.has_value());
+        layout->reset({"hello world", "second line"});
+        editor.adopt(std::move(*layout));
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        auto* pane = editor.braille_pane();
+        pane->setFocus();
+        const auto before = pane->document()->findBlockByNumber(0).text();
+        const int at = 3;
+        QTextCursor c(pane->document()->findBlockByNumber(0));
+        c.setPosition(c.position() + at);
+        pane->setTextCursor(c);
+        std::vector<edit::PagePosition> reported;
+        connect(&editor, &EditorWidget::position_changed, &editor,
+                [&](const edit::PagePosition& p) { reported.push_back(p); });
+
+        // Every change of the pane's document is what Qt's text control reports
+        // to AT-SPI as object:text-changed (insert, delete or both): record them.
+        struct Change {
+            int position, removed, added;
+        };
+        std::vector<Change> changes;
+        connect(pane->document(), &QTextDocument::contentsChange, &editor,
+                [&](int position, int removed, int added) { changes.push_back({position, removed, added}); });
+        for (auto k : {Qt::Key_F, Qt::Key_D}) QTest::keyPress(pane, k);  // b: dots 1 2
+        for (auto k : {Qt::Key_F, Qt::Key_D}) QTest::keyRelease(pane, k);
+
+        const auto after = pane->document()->findBlockByNumber(0).text();
+        QCOMPARE(after, before.left(at) + QChar(0x2803) + before.mid(at));
+        // The pane's text changes by exactly that cell: one insertion, nothing removed.
+        QCOMPARE(changes.size(), std::size_t{1});
+        QCOMPARE(changes.front().position, at);
+        QCOMPARE(changes.front().removed, 0);
+        QCOMPARE(changes.front().added, 1);
+        // The caret stands after the new cell, in the pane, the status and the preview.
+        QCOMPARE(pane->textCursor().blockNumber(), 0);
+        QCOMPARE(pane->textCursor().positionInBlock(), at + 1);
+        QCOMPARE(editor.current_cell(), std::size_t(at + 1));
+        const auto want = editor.layout().position_of(0, std::size_t(at + 1));
+        QVERIFY(!reported.empty());
+        for (const auto& p : reported) {
+            QCOMPARE(p.page, want.page);
+            QCOMPARE(p.line, want.line);
+            QCOMPARE(p.cell, want.cell);
+        }
     }
 };
 
