@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
     cli.process(app);
 
     const QLocale locale = cli.isSet(language) ? QLocale(cli.value(language)) : QLocale::system();
+    QLocale::setDefault(locale);  // widgets name languages and format numbers in it
     QTranslator qt_translator, translator;
     if (qt_translator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))

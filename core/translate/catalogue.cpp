@@ -29,14 +29,15 @@ std::string info(const char* table, const char* key) {
     return s;
 }
 
-// "cmn-TW" -> "Chinese (Taiwan)" via ICU's locale display names; falls back to the tag.
-std::string language_name(const std::string& tag) {
+// "cmn-TW" -> "Chinese (Taiwan)" (or "中文（台灣）" for a zh-TW reader) via
+// ICU's locale display names; falls back to the tag.
+std::string language_name(const std::string& tag, const icu::Locale& reader) {
     if (tag.empty()) return "Other";
     UErrorCode status = U_ZERO_ERROR;
     const icu::Locale locale = icu::Locale::forLanguageTag(tag, status);
     if (U_FAILURE(status)) return tag;
     icu::UnicodeString display;
-    locale.getDisplayName(icu::Locale::getEnglish(), display);
+    locale.getDisplayName(reader, display);
     std::string out;
     display.toUTF8String(out);
     return out.empty() ? tag : out;
@@ -44,7 +45,10 @@ std::string language_name(const std::string& tag) {
 
 }  // namespace
 
-std::vector<TableInfo> table_catalogue() {
+std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
+    UErrorCode status = U_ZERO_ERROR;
+    icu::Locale reader = icu::Locale::forLanguageTag(std::string(display_locale), status);
+    if (U_FAILURE(status) || reader.isBogus()) reader = icu::Locale::getEnglish();
     louis::install_log_capture();
     std::vector<TableInfo> out;
     std::lock_guard guard(louis::lock());
@@ -56,10 +60,12 @@ std::vector<TableInfo> table_catalogue() {
         ti.language_tag = info(*t, "language");
         const auto region = info(*t, "region");
         if (!region.empty()) ti.language_tag = region;  // region tags are fuller: "cmn-TW"
-        ti.language = language_name(ti.language_tag);
+        ti.language = language_name(ti.language_tag, reader);
         ti.name = info(*t, "display-name");
         if (ti.name.empty()) ti.name = info(*t, "index-name");
         ti.grade = info(*t, "grade");
+        ti.contraction = info(*t, "contraction");
+        ti.system = info(*t, "system");
         ti.recommended = std::ranges::find(kRecommended, ti.file) != kRecommended.end();
         out.push_back(std::move(ti));
         std::free(*t);  // NOLINT

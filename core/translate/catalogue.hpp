@@ -3,6 +3,7 @@
 // The tables a user can pick, by language name rather than file name: built from
 // liblouis's own table metadata (lou_listTables / lou_getTableInfo).
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tactus::translate {
@@ -10,14 +11,18 @@ namespace tactus::translate {
 struct TableInfo {
     std::string file;          // what to pass as --table, e.g. "en-ueb-g2.ctb"
     std::string language_tag;  // BCP 47 from the table, e.g. "en", "cmn-TW"
-    std::string language;      // human-readable, e.g. "English", "Chinese (Taiwan)"
+    std::string language;      // in the display locale, e.g. "English", "Chinese (Taiwan)", "中文（台灣）"
     std::string name;          // the table's display name, e.g. "Unified English contracted braille"
     std::string grade;         // "1", "2" or ""
+    std::string contraction;   // liblouis metadata: "no", "partial", "full" or ""
+    std::string system;        // liblouis metadata, e.g. "ueb", "cmn-bopomofo", or ""
     bool recommended = false;  // the tables Tactus is specified and tested with
 };
 
 // Every installed table with metadata, recommended ones first, then by language.
-std::vector<TableInfo> table_catalogue();
+// Language names come from ICU in display_locale (a BCP 47 tag such as "en" or
+// "zh-TW"), so a Chinese interface lists "中文（台灣）" rather than English names.
+std::vector<TableInfo> table_catalogue(std::string_view display_locale = "en");
 
 // The table Tactus uses when none is chosen.
 inline constexpr const char* kDefaultTable = "en-ueb-g2.ctb";

@@ -125,6 +125,51 @@ T = {
     "%1 strikes on %2 planned sheets: worst case %3 \u00b5m at %4 (tolerance %5 \u00b5m) \u2014 %6.":
         "已規劃 %2 張共 %1 個擊點：最差 %3 \u00b5m，位於%4（容許 %5 \u00b5m）\u2014 %6。",
     "within tolerance": "在容許範圍內", "OVER TOLERANCE": "超出容許範圍",
+    # Printer panel, six-key entry, table names (session 2).
+    "waiting": "等待中", "embossing": "列印中", "paused": "已暫停", "done": "已完成", "stopped": "已停止",
+    "cancelled": "已取消",
+    "Emboss the file on the last used embosser once it is open.": "檔案開啟後，以上次使用的點字印表機列印。",
+    "dots %1": "點 %1", "Printer": "印表機", "Go to p&rinter": "前往印表機(&R)", "&Emboss": "列印點字(&E)",
+    "Open the menu bar": "開啟選單列",
+    "Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.":
+        "警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。",
+    "Embosser": "點字印表機",
+    "Serial ports with their USB descriptions, HID bridges, parallel ports, and the built-in simulator":
+        "序列埠（含 USB 說明）、HID 轉接器、平行埠，以及內建模擬器",
+    "&Refresh": "重新整理(&R)", "&Connect": "連線(&C)", "Not connected": "未連線", "Controller status": "控制器狀態",
+    "Fault": "故障", "Job queue": "工作佇列", "Document": "文件", "State": "狀態", "Progress": "進度", "Sheet": "紙張",
+    "&Pause": "暫停(&P)", "Res&ume": "繼續(&U)", "Ca&ncel job": "取消工作(&N)",
+    "Braille page to resume from": "從哪一個點字頁繼續", "Resume from pa&ge": "從指定頁繼續(&G)", "Link log": "連線紀錄",
+    "E&mbosser:": "點字印表機(&M)：", "Lin&k log (for technicians):": "連線紀錄（技術人員用）(&K)：",
+    "Listing devices: %1": "列出裝置：%1", "Connecting to %1": "正在連線到 %1",
+    "Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.":
+        "無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。",
+    "Dis&connect": "中斷連線(&C)", "Connected to %1": "已連線到 %1", "Disconnected from %1": "已與 %1 中斷連線",
+    "No answer from the embosser": "點字印表機沒有回應",
+    "The embosser does not answer (%1). Check the cable and the power switch.":
+        "點字印表機沒有回應（%1）。請檢查纜線與電源開關。",
+    "Connected to %1: %2": "已連線到 %1：%2", "Progress of %1": "%1 的進度",
+    "Queued %1 (job %2) from sheet %3": "已將 %1 排入佇列（工作 %2），從第 %3 張開始",
+    "%1 added to the queue": "%1 已加入佇列",
+    "Embossing %1: sheet %2 of %3, %4 percent": "正在列印 %1：第 %2 張，共 %3 張，百分之 %4",
+    "%1: sheet %2 of %3": "%1：第 %2 張，共 %3 張", "%1: %2 percent, sheet %3 of %4": "%1：百分之 %2，第 %3 張，共 %4 張",
+    "Embossing %1 from sheet %2": "正在列印 %1，從第 %2 張開始", "Embossing %1": "正在列印 %1",
+    "Cannot plan the job: %1": "無法規劃工作：%1",
+    "Link: %1 frames sent, %2 resent, %3 bytes, %4 NAKs, %5 timeouts, %6 reconnects, %7 restarts":
+        "連線：已傳送 %1 個訊框，重送 %2 個，%3 位元組，%4 次 NAK，%5 次逾時，%6 次重新連線，%7 次重新啟動",
+    "all %1 strikes checked against the plan": "全部 %1 個擊點均已與規劃核對",
+    "%1 strikes embossed but %2 planned: the simulator disagrees with the plan": "已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符",
+    "Embossed %1": "已列印 %1", "%1 cancelled; resume from sheet %2": "%1 已取消；可從第 %2 張繼續",
+    "%1 stopped at sheet %2: %3. The queue is kept; fix the problem, then resume from sheet %2.":
+        "%1 停在第 %2 張：%3。佇列已保留；排除問題後，請從第 %2 張繼續。",
+    "Pause requested: the embosser stops at the end of the current move": "已要求暫停：點字印表機會在目前動作結束時停止",
+    "Pausing": "正在暫停", "Resume requested": "已要求繼續", "Resuming": "正在繼續", "Cancel requested": "已要求取消",
+    "Page %1 is not in %2 (it has %3 pages)": "%2 沒有第 %1 頁（共 %3 頁）",
+    "Step timing tolerance": "步進時間容許誤差", "of a step interval": "個步進間隔",
+    "Unified English Braille": "統一英文點字", "English Braille American Edition": "美國版英文點字",
+    "Taiwanese braille (bopomofo)": "台灣國語點字（注音）", "current Chinese braille": "現行中文點字",
+    "two-cell Chinese braille": "雙拼中文點字", "uncontracted": "未縮寫", "partly contracted": "部分縮寫",
+    "contracted": "縮寫", "grade %1": "第 %1 級", ", ": "，",
 }
 
 

@@ -26,3 +26,19 @@ TEST(Catalogue, NamesTheSpecifiedTablesByLanguage) {
     EXPECT_TRUE(tables.front().recommended);
     EXPECT_GT(tables.size(), 50u);  // Debian's liblouis-data ships about 200
 }
+
+// Issue 14 item 3: a Chinese interface names languages in Chinese (from ICU),
+// and the metadata a translated name is built from is there.
+TEST(Catalogue, NamesLanguagesInTheReadersLocale) {
+    const auto tables = translate::table_catalogue("zh-TW");
+    auto find = [&](std::string_view file) { return std::ranges::find(tables, file, &translate::TableInfo::file); };
+    ASSERT_NE(find("zh-tw.ctb"), tables.end());
+    EXPECT_EQ(find("zh-tw.ctb")->language, "中文（台灣）");
+    EXPECT_EQ(find("en-ueb-g2.ctb")->language, "英文");
+    EXPECT_EQ(find("en-ueb-g1.ctb")->contraction, "no");
+    EXPECT_EQ(find("en-ueb-g2.ctb")->contraction, "full");
+    EXPECT_EQ(find("en-ueb-g2.ctb")->system, "ueb");
+    // An unknown locale falls back to English rather than failing.
+    const auto fallback = translate::table_catalogue("not a locale!");
+    EXPECT_EQ(std::ranges::find(fallback, "en-ueb-g2.ctb", &translate::TableInfo::file)->language, "English");
+}
