@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "fit_columns.hpp"
 #include "motion_view.hpp"
 #include "status_label.hpp"
 
@@ -98,14 +99,14 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     shapes_->setHorizontalHeaderLabels({tr("Profile shape"), tr("Pass time"), tr("Versus lower bound")});
     shapes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     shapes_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
-    shapes_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    fit_columns_to_headings(shapes_);
     strikes_ = new QTableWidget(0, 4, this);
     strikes_->setObjectName(QStringLiteral("strikeTable"));
     strikes_->setAccessibleName(tr("Strikes of this pass"));
     strikes_->setHorizontalHeaderLabels({tr("Time (ms)"), tr("Carriage (mm)"), tr("Side"), tr("Residual (\u00b5m)")});
     strikes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     strikes_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
-    strikes_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    fit_columns_to_headings(strikes_);
 
     auto* tables = new QSplitter(Qt::Horizontal, this);
     tables->addWidget(shapes_);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "fit_columns.hpp"
 #include "vibration_view.hpp"
 #include "status_label.hpp"
 
@@ -28,7 +29,7 @@ VibrationView::VibrationView(QWidget* parent) : QWidget(parent) {
     metrics_->setHorizontalHeaderLabels({tr("Quantity"), tr("Value"), tr("Target"), tr("Result")});
     metrics_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     metrics_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
-    metrics_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    fit_columns_to_headings(metrics_);
     metrics_->setMinimumHeight(130);
     metrics_->setMaximumHeight(150);
     metrics_->verticalHeader()->setVisible(false);

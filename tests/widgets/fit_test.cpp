@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Nothing a user reads is cut off (issue 14 item 4): every main view, in
+// English and in zh_TW, at 1280 x 800 and 1920 x 1080. Each visible label,
+// button, tab and header is checked against the room it was given, and a
+// screenshot of each view is saved for CI's artefacts
+// (TACTUS_SCREENSHOT_DIR, default: screenshots/ in the working directory).
+#include <QAbstractButton>
+#include <QDir>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTabBar>
+#include <QTranslator>
+#include <QtTest>
+
+#include "announcer.hpp"
+#include "gui_test_support.hpp"
+#include "main_window.hpp"
+
+using namespace tactus;
+using namespace tactus::gui;
+
+namespace {
+
+QString plain(QString text) {
+    text.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
+    // A mnemonic's & is not drawn; "&&" is one drawn ampersand.
+    text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    text.remove(QLatin1Char('&'));
+    text.replace(QLatin1Char('\x01'), QLatin1Char('&'));
+    return text;
+}
+
+QString describe(const QWidget* w, const QString& text, int need, int have) {
+    return QStringLiteral("%1 '%2' \"%3\" needs %4 px, has %5")
+        .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName(), text)
+        .arg(need)
+        .arg(have);
+}
+
+// What is drawn narrower than its text, in the visible part of the window.
+QStringList clipped(QWidget* root) {
+    QStringList out;
+    for (auto* w : root->findChildren<QWidget*>()) {
+        // Only what is drawn: a tabbed-away dock's widgets keep isVisible().
+        if (!w->isVisible() || w->width() <= 1 || w->visibleRegion().isEmpty()) continue;
+        if (auto* l = qobject_cast<QLabel*>(w)) {
+            if (l->wordWrap() || l->text().isEmpty()) continue;
+            const int need = l->minimumSizeHint().width();
+            if (need > l->width()) out << describe(l, plain(l->text()), need, l->width());
+        } else if (auto* b = qobject_cast<QAbstractButton*>(w)) {
+            if (b->text().isEmpty()) continue;
+            const int need = b->minimumSizeHint().width();
+            if (need > b->width()) out << describe(b, plain(b->text()), need, b->width());
+        } else if (auto* g = qobject_cast<QGroupBox*>(w)) {
+            const int need = g->fontMetrics().horizontalAdvance(plain(g->title())) + 16;
+            if (need > g->width()) out << describe(g, plain(g->title()), need, g->width());
+        } else if (auto* t = qobject_cast<QTabBar*>(w)) {
+            for (int i = 0; i < t->count(); ++i) {
+                const auto text = plain(t->tabText(i));
+                const int need = t->fontMetrics().horizontalAdvance(text);
+                if (need > t->tabRect(i).width()) out << describe(t, text, need, t->tabRect(i).width());
+            }
+        } else if (auto* h = qobject_cast<QHeaderView*>(w)) {
+            if (!h->model()) continue;
+            for (int i = 0; i < h->count(); ++i) {
+                if (h->isSectionHidden(i)) continue;
+                const auto text = h->model()->headerData(i, h->orientation()).toString();
+                const int need = h->fontMetrics().horizontalAdvance(text) + 8;
+                const int have = h->orientation() == Qt::Horizontal ? h->sectionSize(i) : h->width();
+                if (need > have) out << describe(h, text, need, have);
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+class FitTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("TactusTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tactus-fit-test"));
+        QSettings().clear();
+        install_accessibility();
+    }
+
+    void every_view_fits_its_text_data() {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        for (const auto* lang : {"en", "zh_TW"})
+            for (const auto size : {QSize(1280, 800), QSize(1920, 1080)})
+                QTest::addRow("%s %dx%d", lang, size.width(), size.height()) << QString::fromLatin1(lang) << size;
+    }
+
+    void every_view_fits_its_text() {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        QTranslator translator;
+        if (language != QLatin1String("en")) {
+            QVERIFY2(translator.load(QStringLiteral("tactus_") + language, QStringLiteral(TACTUS_QM_DIR)),
+                     "the app's .qm file is not built");
+            QCoreApplication::installTranslator(&translator);
+        }
+        const auto restore = qScopeGuard([&] {
+            QCoreApplication::removeTranslator(&translator);
+            QLocale::setDefault(QLocale(QLocale::English));
+        });
+        QLocale::setDefault(QLocale(language));
+        const auto shots = QDir(qEnvironmentVariable("TACTUS_SCREENSHOT_DIR", QStringLiteral("screenshots")));
+        QVERIFY(QDir().mkpath(shots.path()));
+
+        MainWindow w;
+        w.set_interactive(false);
+        w.resize(size);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QStringList problems;
+        for (const auto* panel : {"preview", "motion", "vibration", "profile", "printer"}) {
+            w.show_panel(QString::fromLatin1(panel));
+            QTest::qWait(20);  // the layout settles the new view
+            for (const auto& p : clipped(&w)) problems << QStringLiteral("%1: %2").arg(QString::fromLatin1(panel), p);
+            const auto file = shots.filePath(
+                QStringLiteral("%1-%2-%3x%4.png").arg(language, QString::fromLatin1(panel)).arg(size.width()).arg(size.height()));
+            QVERIFY2(w.grab().save(file), qPrintable(file));
+        }
+        problems.removeDuplicates();
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+};
+
+QTEST_MAIN(FitTest)
+#include "fit_test.moc"
