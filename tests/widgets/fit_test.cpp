@@ -6,6 +6,7 @@
 // (TACTUS_SCREENSHOT_DIR, default: screenshots/ in the working directory).
 #include <QAbstractButton>
 #include <QDir>
+#include <QDockWidget>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -38,12 +39,25 @@ QString describe(const QWidget* w, const QString& text, int need, int have) {
         .arg(have);
 }
 
+// Tabified docks keep isVisible() when another tab is raised, and offscreen
+// windows have no visible region: a widget in a dock is drawn when its dock is
+// the raised tab of the main window's dock tab bar (or in no tab bar at all).
+bool drawn(QWidget* root, QWidget* w) {
+    QDockWidget* dock = nullptr;
+    for (auto* p = w; p && !dock; p = p->parentWidget()) dock = qobject_cast<QDockWidget*>(p);
+    if (!dock) return true;
+    for (auto* bar : root->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+        for (int i = 0; i < bar->count(); ++i)
+            if (bar->tabText(i) == dock->windowTitle()) return i == bar->currentIndex();
+    }
+    return true;
+}
+
 // What is drawn narrower than its text, in the visible part of the window.
 QStringList clipped(QWidget* root) {
     QStringList out;
     for (auto* w : root->findChildren<QWidget*>()) {
-        // Only what is drawn: a tabbed-away dock's widgets keep isVisible().
-        if (!w->isVisible() || w->width() <= 1 || w->visibleRegion().isEmpty()) continue;
+        if (!w->isVisible() || w->width() <= 1 || !drawn(root, w)) continue;
         if (auto* l = qobject_cast<QLabel*>(w)) {
             if (l->wordWrap() || l->text().isEmpty()) continue;
             const int need = l->minimumSizeHint().width();
