@@ -80,7 +80,9 @@ QStringList clipped(QWidget* root) {
             for (int i = 0; i < h->count(); ++i) {
                 if (h->isSectionHidden(i)) continue;
                 const auto text = h->model()->headerData(i, h->orientation()).toString();
-                const int need = h->fontMetrics().horizontalAdvance(text) + 8;
+                // The header's own measure of its text with the style's margins.
+                const int need = h->orientation() == Qt::Horizontal ? h->sectionSizeHint(i)
+                                                                    : h->fontMetrics().horizontalAdvance(text);
                 const int have = h->orientation() == Qt::Horizontal ? h->sectionSize(i) : h->width();
                 if (need > have) out << describe(h, text, need, have);
             }
