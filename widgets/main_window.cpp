@@ -36,6 +36,7 @@
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
 #include "edit/markdown_writer.hpp"
+#include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
@@ -44,7 +45,6 @@
 #include "profile_editor.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
-#include "print_word.hpp"
 #include "sheet_geometry.hpp"
 #include "status_label.hpp"
 #include "system_look.hpp"
@@ -146,7 +146,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
     sp->set_print_word([this](std::size_t page, int line, int cell) {
-        return editor_->has_layout() ? print_word_at(editor_->layout(), edit::PagePosition{page, line, cell}) : QString{};
+        return editor_->has_layout() ? QString::fromStdU32String(edit::print_word_at(editor_->layout(), edit::PagePosition{page, line, cell}))
+                                     : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
         sp->set_document(&editor_->layout().paged());

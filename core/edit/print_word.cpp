@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "print_word.hpp"
+#include "edit/print_word.hpp"
 
 #include <algorithm>
 #include <vector>
 
+#include "common/utf8.hpp"
 #include "edit/cursor_map.hpp"
 #include "edit/editor_lines.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 namespace {
 
 bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000; }
@@ -20,10 +21,10 @@ bool unspaced_script(char32_t c) {
 
 }  // namespace
 
-QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& where) {
+std::u32string print_word_at(const LiveLayout& layout, const PagePosition& where) {
     if (layout.line_count() == 0) return {};
     const auto i = layout.line_at(where.page, where.line);
-    if (i >= layout.line_count() || edit::is_braille_line(layout.line(i))) return {};
+    if (i >= layout.line_count() || is_braille_line(layout.line(i))) return {};
     const auto cells = layout.braille_of(i);
     std::size_t k = cells.size();
     for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -35,8 +36,9 @@ QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& 
         }
     }
     if (k == cells.size() || cells[k].blank()) return {};
-    const auto content = QString::fromStdString(edit::editor_line_content(layout.line(i))).toStdU32String();
-    if (content.empty()) return {};
+    auto decoded = utf8_to_utf32(editor_line_content(layout.line(i)));
+    if (!decoded || decoded->empty()) return {};
+    const std::u32string content = std::move(*decoded);
     // Contractions never cross a space, so the n-th braille word is the n-th
     // print word whenever both have as many words (cursor_map's rule).
     std::vector<std::u32string> words;
@@ -54,14 +56,14 @@ QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& 
             ++braille_words;
         }
     const bool spaced = std::none_of(content.begin(), content.end(), unspaced_script);
-    if (spaced && braille_words == words.size()) return QString::fromStdU32String(words[word_of_k]);
-    auto col = std::min(edit::braille_to_print(cells, k, content), content.size() - 1);
+    if (spaced && braille_words == words.size()) return words[word_of_k];
+    auto col = std::min(braille_to_print(cells, k, content), content.size() - 1);
     if (is_space(content[col])) return {};
-    if (unspaced_script(content[col])) return QString::fromStdU32String(std::u32string(1, content[col]));
+    if (unspaced_script(content[col])) return std::u32string(1, content[col]);
     std::size_t a = col, b = col + 1;
     while (a > 0 && !is_space(content[a - 1]) && !unspaced_script(content[a - 1])) --a;
     while (b < content.size() && !is_space(content[b]) && !unspaced_script(content[b])) ++b;
-    return QString::fromStdU32String(content.substr(a, b - a));
+    return content.substr(a, b - a);
 }
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit

@@ -5,14 +5,14 @@
 // wrote: Chinese came back as unrelated ideographs and "FRIDAY," as "friday,"
 // (issue 14). This finds the editor line the cell came from and the print word
 // under it, with the same word-by-word map the cursor uses (cursor_map).
-#include <QString>
+#include <string>
 
 #include "edit/live_layout.hpp"
 
-namespace tactus::gui {
+namespace tactus::edit {
 
 // Empty when the cell is not part of a print paragraph (a page number, a blank,
 // or a line written in braille).
-[[nodiscard]] QString print_word_at(const edit::LiveLayout& layout, const edit::PagePosition& where);
+[[nodiscard]] std::u32string print_word_at(const LiveLayout& layout, const PagePosition& where);
 
-}  // namespace tactus::gui
+}  // namespace tactus::edit
