@@ -104,6 +104,12 @@ def scenario_emboss(tactus, sample, work):
                      timeout=330, quiet=2.0)
         events = s.events_since(mark)
         heard = [p.text for p in s.phrases_since(mark)]
+        # The launch's "Opened ...: N sheet(s)" is not always heard (the window
+        # may become active after it); the progress says "sheet K of N" too.
+        for t in heard:
+            m = re.search(r"sheet \d+ of (\d+)", t)
+            if m:
+                sheets = max(sheets, int(m.group(1)))
         budget = EVENTS_PER_JOB + EVENTS_PER_SHEET * sheets
         print(f"emboss: {sheets} sheet(s), {len(events)} AT-SPI events "
               f"({len(events) / max(1, sheets):.1f} per sheet), budget {budget}", flush=True)
