@@ -91,7 +91,10 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
             std::cout << "embossed job " << id << " on " << uri << std::endl;
             return;
         case ipp::RemoteJobState::cancelled:
-            throw CommandFailed(exit_failure, "job " + std::to_string(id) + " was cancelled on " + uri);
+            // CUPS also ends a job its filter refused as cancelled: the
+            // printer's message then says why.
+            throw CommandFailed(exit_failure, "job " + std::to_string(id) + " was cancelled on " + uri +
+                                                  (last.message.empty() ? "" : ": " + last.message));
         default:
             throw CommandFailed(exit_failure, "job " + std::to_string(id) + " was aborted on " + uri +
                                                   (last.message.empty() ? "" : ": " + last.message));

@@ -145,6 +145,22 @@ TEST_F(CupsIppE2E, CtrlCInTheCliCancelsTheJobOnTheServer) {
     EXPECT_FALSE(rig().cups_job_active(cups_id));
 }
 
+TEST_F(CupsIppE2E, AnUnknownTableEndsTheCliWithTheFiltersErrorAndEmbossesNothing) {
+    PtySim sim(rig().e.dir.path(), "sim-badtable");
+    ASSERT_TRUE(rig().add_queue(sim, "EmbosserD"));
+    const auto doc = lesson_file("badtable.md", 1);
+    spool::test::Process cli(emboss("EmbosserD", doc, {"-t", "no-such-table"}),
+                             spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+    const auto out = cli.read_all();
+    EXPECT_EQ(cli.wait(), 1) << out;
+    // CUPS ends a job its filter refused as cancelled, with the filter's ERROR: line.
+    EXPECT_NE(out.find("was cancelled on " + rig().queue_uri("EmbosserD") +
+                       ": option braille-table: 'no-such-table' is not an installed braille table"),
+              std::string::npos)
+        << out;
+    EXPECT_TRUE(sim.strikes().empty());
+}
+
 TEST_F(CupsIppE2E, AQueueThatIsNotThereIsExit4AndOptionsTheServerDecidesAreExit2) {
     const auto doc = lesson_file("nowhere.md", 1);
     const auto full = rig().client({spool::test::kCli, "emboss", "--device", rig().queue_uri("NoSuchQueue"), doc.string()});
