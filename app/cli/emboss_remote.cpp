@@ -22,18 +22,22 @@ bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; 
 // format, margins and profile are the server's: the filter lays the document
 // out for the embosser the server holds, so those options are refused here
 // rather than silently dropped.
-std::vector<std::pair<std::string, std::string>> queue_options(const LayoutArgs& a, const CLI::App& cmd) {
-    for (const char* server_side : {"--preset", "--margin-left", "--margin-right", "--margin-top", "--margin-bottom",
-                                    "--indent", "--reflow", "--blank-page", "--profile", "--dry-run", "--plan",
-                                    "--start-sheet", "--format", "--queue", "--pages", "--priority", "--printer",
-                                    "--db"})
+std::vector<std::pair<std::string, std::string>> queue_options(const LayoutArgs& a,
+                                                               const CLI::App& cmd) {
+    for (const char* server_side :
+         {"--preset", "--margin-left", "--margin-right", "--margin-top", "--margin-bottom",
+          "--indent", "--reflow", "--blank-page", "--profile", "--dry-run", "--plan",
+          "--start-sheet", "--format", "--queue", "--pages", "--priority", "--printer", "--db"})
         if (given(cmd, server_side))
-            throw CommandFailed(exit_usage, std::string("emboss: ") + server_side +
-                                                " cannot go to a CUPS queue: the server lays the document out "
-                                                "with its embosser's profile (docs/cups.md)");
+            throw CommandFailed(exit_usage,
+                                std::string("emboss: ") + server_side +
+                                    " cannot go to a CUPS queue: the server lays the document out "
+                                    "with its embosser's profile (docs/cups.md)");
     namespace o = ipp::option;
     std::vector<std::pair<std::string, std::string>> out;
-    auto add = [&](std::string_view k, std::string v) { out.emplace_back(std::string(k), std::move(v)); };
+    auto add = [&](std::string_view k, std::string v) {
+        out.emplace_back(std::string(k), std::move(v));
+    };
     if (given(cmd, "--table")) add(o::braille_table, a.tables);
     if (given(cmd, "--cells")) add(o::cells_per_line, std::to_string(a.cells));
     if (given(cmd, "--lines")) add(o::lines_per_page, std::to_string(a.lines));
@@ -55,8 +59,8 @@ std::string describe(const ipp::RemoteJobStatus& s) {
 
 }  // namespace
 
-void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::App& cmd, std::size_t copies,
-                   const std::string& title) {
+void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::App& cmd,
+                   std::size_t copies, const std::string& title) {
     const auto queue = require(ipp::parse_queue_uri(uri));
     ipp::RemoteJobRequest request;
     request.file = layout.file;
@@ -75,7 +79,8 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
     // a sheet: the server reports progress by the percent.
     std::optional<ipp::RemoteJobStatus> shown;
     const auto show = [&](const ipp::RemoteJobStatus& s) {
-        const bool same = shown && shown->state == s.state && shown->sheets_completed == s.sheets_completed &&
+        const bool same = shown && shown->state == s.state &&
+                          shown->sheets_completed == s.sheets_completed &&
                           shown->message == s.message && shown->reasons == s.reasons &&
                           shown->media_progress / 10 == s.media_progress / 10;
         if (same) return;
@@ -93,11 +98,13 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
         case ipp::RemoteJobState::cancelled:
             // CUPS also ends a job its filter refused as cancelled: the
             // printer's message then says why.
-            throw CommandFailed(exit_failure, "job " + std::to_string(id) + " was cancelled on " + uri +
-                                                  (last.message.empty() ? "" : ": " + last.message));
+            throw CommandFailed(exit_failure,
+                                "job " + std::to_string(id) + " was cancelled on " + uri +
+                                    (last.message.empty() ? "" : ": " + last.message));
         default:
-            throw CommandFailed(exit_failure, "job " + std::to_string(id) + " was aborted on " + uri +
-                                                  (last.message.empty() ? "" : ": " + last.message));
+            throw CommandFailed(exit_failure,
+                                "job " + std::to_string(id) + " was aborted on " + uri +
+                                    (last.message.empty() ? "" : ": " + last.message));
     }
 }
 

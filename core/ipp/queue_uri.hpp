@@ -9,7 +9,7 @@
 namespace tactus::ipp {
 
 struct QueueUri {
-    std::string uri;       // as given, for printer-uri and messages
+    std::string uri;  // as given, for printer-uri and messages
     std::string host;
     int port = 631;
     std::string resource;  // "/printers/Embosser"

@@ -24,13 +24,19 @@ int integer(ipp_t* response, const char* name) {
     return a ? ippGetInteger(a, 0) : -1;
 }
 
-Result<RemoteJobStatus> status_on(http_t* http, const QueueUri& queue, int job_id, bool* transient = nullptr) {
+Result<RemoteJobStatus> status_on(http_t* http, const QueueUri& queue, int job_id,
+                                  bool* transient = nullptr) {
     ipp_t* req = job_request(IPP_OP_GET_JOB_ATTRIBUTES, queue, job_id);
-    static const char* const wanted[] = {"job-id", "job-state", "job-state-reasons", "job-printer-state-message",
-                                         "job-media-sheets-completed", "job-media-progress"};
+    static const char* const wanted[] = {"job-id",
+                                         "job-state",
+                                         "job-state-reasons",
+                                         "job-printer-state-message",
+                                         "job-media-sheets-completed",
+                                         "job-media-progress"};
     ippAddStrings(req, IPP_TAG_OPERATION, IPP_TAG_KEYWORD, "requested-attributes",
                   static_cast<int>(std::size(wanted)), nullptr, wanted);
-    auto response = detail::call(http, req, queue.resource, "read job " + std::to_string(job_id), {}, transient);
+    auto response = detail::call(http, req, queue.resource, "read job " + std::to_string(job_id),
+                                 {}, transient);
     if (!response) return std::unexpected(response.error());
     RemoteJobStatus s;
     s.id = job_id;
@@ -38,12 +44,14 @@ Result<RemoteJobStatus> status_on(http_t* http, const QueueUri& queue, int job_i
     if (!state)
         return fail(ErrorKind::protocol, "the server did not say the job's state", queue.uri);
     s.state = static_cast<RemoteJobState>(ippGetInteger(state, 0));
-    if (ipp_attribute_t* r = ippFindAttribute(response->get(), "job-state-reasons", IPP_TAG_KEYWORD))
+    if (ipp_attribute_t* r =
+            ippFindAttribute(response->get(), "job-state-reasons", IPP_TAG_KEYWORD))
         for (int i = 0; i < ippGetCount(r); ++i) {
             if (!s.reasons.empty()) s.reasons += ", ";
             s.reasons += ippGetString(r, i, nullptr);
         }
-    if (ipp_attribute_t* m = ippFindAttribute(response->get(), "job-printer-state-message", IPP_TAG_TEXT))
+    if (ipp_attribute_t* m =
+            ippFindAttribute(response->get(), "job-printer-state-message", IPP_TAG_TEXT))
         s.message = ippGetString(m, 0, nullptr);
     s.sheets_completed = integer(response->get(), "job-media-sheets-completed");
     s.media_progress = integer(response->get(), "job-media-progress");
@@ -61,13 +69,20 @@ Result<void> cancel_on(http_t* http, const QueueUri& queue, int job_id) {
 
 const char* to_string(RemoteJobState s) {
     switch (s) {
-        case RemoteJobState::pending: return "pending";
-        case RemoteJobState::held: return "held";
-        case RemoteJobState::processing: return "processing";
-        case RemoteJobState::stopped: return "stopped";
-        case RemoteJobState::cancelled: return "cancelled";
-        case RemoteJobState::aborted: return "aborted";
-        case RemoteJobState::completed: return "completed";
+        case RemoteJobState::pending:
+            return "pending";
+        case RemoteJobState::held:
+            return "held";
+        case RemoteJobState::processing:
+            return "processing";
+        case RemoteJobState::stopped:
+            return "stopped";
+        case RemoteJobState::cancelled:
+            return "cancelled";
+        case RemoteJobState::aborted:
+            return "aborted";
+        case RemoteJobState::completed:
+            return "completed";
     }
     return "unknown";
 }
@@ -84,17 +99,22 @@ Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
                  (request.title.empty() ? name : request.title).c_str());
     ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_NAME, "document-name", nullptr, name.c_str());
     // Typed by the server from the name and content (tactus.types), as lp does.
-    ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_MIMETYPE, "document-format", nullptr, CUPS_FORMAT_AUTO);
+    ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_MIMETYPE, "document-format", nullptr,
+                 CUPS_FORMAT_AUTO);
     cups_option_t* options = nullptr;
     int count = 0;
-    for (const auto& [k, v] : request.options) count = cupsAddOption(k.c_str(), v.c_str(), count, &options);
-    if (request.copies > 1) count = cupsAddOption("copies", std::to_string(request.copies).c_str(), count, &options);
+    for (const auto& [k, v] : request.options)
+        count = cupsAddOption(k.c_str(), v.c_str(), count, &options);
+    if (request.copies > 1)
+        count = cupsAddOption("copies", std::to_string(request.copies).c_str(), count, &options);
     cupsEncodeOptions2(req, count, options, IPP_TAG_JOB);
     cupsFreeOptions(count, options);
-    auto response = detail::call(http->get(), req, queue.resource, "send the job", request.file.string());
+    auto response =
+        detail::call(http->get(), req, queue.resource, "send the job", request.file.string());
     if (!response) return std::unexpected(response.error());
     const int id = integer(response->get(), "job-id");
-    if (id <= 0) return fail(ErrorKind::protocol, "the server took the job but gave no job id", queue.uri);
+    if (id <= 0)
+        return fail(ErrorKind::protocol, "the server took the job but gave no job id", queue.uri);
     return id;
 }
 
@@ -122,8 +142,10 @@ Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
         Result<RemoteJobStatus> s = fail(ErrorKind::device, "not connected");
         bool transient = true;  // a failed connect is worth another try
         if (!http) {
-            if (auto h = detail::connect(queue.host, queue.port, queue.tls)) http = std::move(*h);
-            else s = std::unexpected(h.error());
+            if (auto h = detail::connect(queue.host, queue.port, queue.tls))
+                http = std::move(*h);
+            else
+                s = std::unexpected(h.error());
         }
         if (http) {
             if (cancel.load() && !cancel_sent) {

@@ -25,10 +25,11 @@ enum class RemoteJobState { pending = 3, held, processing, stopped, cancelled, a
 struct RemoteJobStatus {
     int id = 0;
     RemoteJobState state = RemoteJobState::pending;
-    std::string reasons;         // job-state-reasons, comma-separated
-    std::string message;         // job-printer-state-message: the backend's last INFO/ERROR line
-    int sheets_completed = -1;   // job-media-sheets-completed (the backend's PAGE: lines); -1 unknown
-    int media_progress = -1;     // job-media-progress, percent of the current sheet; -1 unknown
+    std::string reasons;  // job-state-reasons, comma-separated
+    std::string message;  // job-printer-state-message: the backend's last INFO/ERROR line
+    int sheets_completed =
+        -1;                   // job-media-sheets-completed (the backend's PAGE: lines); -1 unknown
+    int media_progress = -1;  // job-media-progress, percent of the current sheet; -1 unknown
 
     [[nodiscard]] bool ended() const { return state >= RemoteJobState::cancelled; }
     friend bool operator==(const RemoteJobStatus&, const RemoteJobStatus&) = default;

@@ -22,16 +22,17 @@ std::string uri_host(const std::string& host) {
 }  // namespace
 
 bool is_tactus_queue(std::string_view device_uri, std::string_view make_and_model) {
-    return device_uri.starts_with("tactus:") || make_and_model.starts_with("Tactus Braille Embosser");
+    return device_uri.starts_with("tactus:") ||
+           make_and_model.starts_with("Tactus Braille Embosser");
 }
 
 Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port) {
     auto http = detail::connect(host, port, false);
     if (!http) return std::unexpected(http.error());
     ipp_t* req = ippNewRequest(IPP_OP_CUPS_GET_PRINTERS);
-    static const char* const wanted[] = {"printer-name",      "printer-info",  "printer-location",
-                                         "printer-make-and-model", "device-uri", "printer-state",
-                                         "printer-state-message", "printer-is-accepting-jobs"};
+    static const char* const wanted[] = {
+        "printer-name", "printer-info",  "printer-location",      "printer-make-and-model",
+        "device-uri",   "printer-state", "printer-state-message", "printer-is-accepting-jobs"};
     ippAddStrings(req, IPP_TAG_OPERATION, IPP_TAG_KEYWORD, "requested-attributes",
                   static_cast<int>(std::size(wanted)), nullptr, wanted);
     ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_NAME, "requesting-user-name", nullptr, cupsUser());
@@ -51,16 +52,21 @@ Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port
             q.location = text(group, "printer-location");
             ipp_attribute_t* st = ippFindAttribute(group, "printer-state", IPP_TAG_ENUM);
             const int state = st ? ippGetInteger(st, 0) : IPP_PSTATE_IDLE;
-            q.state = state == IPP_PSTATE_PROCESSING ? "processing" : state == IPP_PSTATE_STOPPED ? "stopped" : "idle";
-            if (const auto m = text(group, "printer-state-message"); !m.empty()) q.state += ": " + m;
-            ipp_attribute_t* acc = ippFindAttribute(group, "printer-is-accepting-jobs", IPP_TAG_BOOLEAN);
+            q.state = state == IPP_PSTATE_PROCESSING ? "processing"
+                      : state == IPP_PSTATE_STOPPED  ? "stopped"
+                                                     : "idle";
+            if (const auto m = text(group, "printer-state-message"); !m.empty())
+                q.state += ": " + m;
+            ipp_attribute_t* acc =
+                ippFindAttribute(group, "printer-is-accepting-jobs", IPP_TAG_BOOLEAN);
             q.accepting = !acc || ippGetBoolean(acc, 0) != 0;
             out.push_back(std::move(q));
         }
         ippDelete(group);
         group = ippNew();
     };
-    for (ipp_attribute_t* a = ippFirstAttribute(response->get()); a; a = ippNextAttribute(response->get())) {
+    for (ipp_attribute_t* a = ippFirstAttribute(response->get()); a;
+         a = ippNextAttribute(response->get())) {
         if (ippGetGroupTag(a) != IPP_TAG_PRINTER) {
             if (ippGetName(a) == nullptr) flush();  // the separator between printers
             continue;

@@ -22,7 +22,7 @@ using test::CupsRig;
 using test::PtySim;
 
 class CupsIppE2E : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         if (test::have_cupsd()) rig_ = std::make_unique<CupsRig>();
     }
@@ -37,14 +37,16 @@ protected:
     std::filesystem::path lesson_file(const std::string& name, int paragraphs) {
         const auto doc = rig().e.dir / name;
         std::ofstream(doc) << test::lesson(paragraphs);
-        std::filesystem::permissions(doc, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
-                                              std::filesystem::perms::group_read | std::filesystem::perms::others_read);
+        std::filesystem::permissions(
+            doc, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                     std::filesystem::perms::group_read | std::filesystem::perms::others_read);
         return doc;
     }
     // tactus-cli emboss to queue `name`, as the teacher.
     std::vector<std::string> emboss(const std::string& queue, const std::filesystem::path& doc,
                                     std::vector<std::string> extra = {}, bool as_teacher = true) {
-        std::vector<std::string> args{spool::test::kCli, "emboss", "--device", rig().queue_uri(queue)};
+        std::vector<std::string> args{spool::test::kCli, "emboss", "--device",
+                                      rig().queue_uri(queue)};
         args.insert(args.end(), extra.begin(), extra.end());
         args.push_back(doc.string());
         return rig().command(args, as_teacher);
@@ -71,7 +73,8 @@ TEST_F(CupsIppE2E, TheCliSendsTheDocumentAndFollowsTheJobToCompletion) {
     PtySim sim(rig().e.dir.path(), "sim-complete");
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserA")) << rig().error_log();
     const auto doc = lesson_file("complete.md", 3);
-    const auto [code, out] = spool::test::run(emboss("EmbosserA", doc, {"-t", "en-ueb-g1", "--copies", "2"}));
+    const auto [code, out] =
+        spool::test::run(emboss("EmbosserA", doc, {"-t", "en-ueb-g1", "--copies", "2"}));
     ASSERT_EQ(code, 0) << out << rig().error_log();
     const int cups_id = cups_job_id(out);
     ASSERT_GT(cups_id, 0) << out;
@@ -80,8 +83,9 @@ TEST_F(CupsIppE2E, TheCliSendsTheDocumentAndFollowsTheJobToCompletion) {
     const auto prefix = "job " + std::to_string(cups_id) + " ";
     EXPECT_NE(out.find(prefix + "processing"), std::string::npos) << out;
     EXPECT_NE(out.find(prefix + "completed"), std::string::npos) << out;
-    EXPECT_NE(out.find("embossed job " + std::to_string(cups_id) + " on " + rig().queue_uri("EmbosserA")),
-              std::string::npos)
+    EXPECT_NE(
+        out.find("embossed job " + std::to_string(cups_id) + " on " + rig().queue_uri("EmbosserA")),
+        std::string::npos)
         << out;
     // The server laid it out and embossed it through its spool, exactly as planned.
     const auto id = rig().newest_spool_job(before_);
@@ -98,7 +102,8 @@ TEST_F(CupsIppE2E, TheCliSendsTheDocumentAndFollowsTheJobToCompletion) {
     // The sheet count the CLI printed last is the server's page count.
     std::smatch m;
     std::string last_count;
-    for (auto it = out.cbegin(); std::regex_search(it, out.cend(), m, std::regex("sheets embossed: ([0-9]+)"));
+    for (auto it = out.cbegin();
+         std::regex_search(it, out.cend(), m, std::regex("sheets embossed: ([0-9]+)"));
          it = m[0].second)
         last_count = m[1];
     EXPECT_EQ(last_count, std::to_string(job.total_sheets())) << out;
@@ -108,18 +113,22 @@ TEST_F(CupsIppE2E, ACancelOnTheServerEndsTheCliWithExit1) {
     PtySim sim(rig().e.dir.path(), "sim-cancel", {}, 100);  // slow: still running when cancelled
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserB"));
     const auto doc = lesson_file("cancel.md", 6);
-    spool::test::Process cli(emboss("EmbosserB", doc, {"--copies", "5"}), spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+    spool::test::Process cli(
+        emboss("EmbosserB", doc, {"--copies", "5"}),
+        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
     const auto sent = cli.read_line(std::chrono::seconds(30));
     const int cups_id = cups_job_id(sent);
     ASSERT_GT(cups_id, 0) << sent;
     const auto id = rig().newest_spool_job(before_);
     ASSERT_NE(id, 0) << rig().error_log();
-    ASSERT_TRUE(rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
+    ASSERT_TRUE(
+        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
     const auto [code, msg] = rig().client({"cancel", "EmbosserB-" + std::to_string(cups_id)});
     ASSERT_EQ(code, 0) << msg;
     const auto rest = cli.read_all();
     EXPECT_EQ(cli.wait(), 1) << rest;
-    EXPECT_NE(rest.find("job " + std::to_string(cups_id) + " was cancelled on " + rig().queue_uri("EmbosserB")),
+    EXPECT_NE(rest.find("job " + std::to_string(cups_id) + " was cancelled on " +
+                        rig().queue_uri("EmbosserB")),
               std::string::npos)
         << rest;
     ASSERT_TRUE(rig().e.wait_state(id, JobState::cancelled)) << rig().e.history(id);
@@ -131,12 +140,15 @@ TEST_F(CupsIppE2E, CtrlCInTheCliCancelsTheJobOnTheServer) {
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserC"));
     const auto doc = lesson_file("interrupt.md", 6);
     // Not through runuser: the signal goes to tactus-cli itself.
-    spool::test::Process cli(emboss("EmbosserC", doc, {"--copies", "5"}, /*as_teacher=*/false), spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+    spool::test::Process cli(
+        emboss("EmbosserC", doc, {"--copies", "5"}, /*as_teacher=*/false),
+        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
     const int cups_id = cups_job_id(cli.read_line(std::chrono::seconds(30)));
     ASSERT_GT(cups_id, 0);
     const auto id = rig().newest_spool_job(before_);
     ASSERT_NE(id, 0) << rig().error_log();
-    ASSERT_TRUE(rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
+    ASSERT_TRUE(
+        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
     cli.signal(SIGINT);
     const auto rest = cli.read_all();
     EXPECT_EQ(cli.wait(), 1) << rest;
@@ -149,8 +161,9 @@ TEST_F(CupsIppE2E, AnUnknownTableEndsTheCliWithTheFiltersErrorAndEmbossesNothing
     PtySim sim(rig().e.dir.path(), "sim-badtable");
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserD"));
     const auto doc = lesson_file("badtable.md", 1);
-    spool::test::Process cli(emboss("EmbosserD", doc, {"-t", "no-such-table"}),
-                             spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+    spool::test::Process cli(
+        emboss("EmbosserD", doc, {"-t", "no-such-table"}),
+        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
     const auto out = cli.read_all();
     EXPECT_EQ(cli.wait(), 1) << out;
     // CUPS ends a job its filter refused as cancelled, with the filter's ERROR: line.
@@ -163,13 +176,15 @@ TEST_F(CupsIppE2E, AnUnknownTableEndsTheCliWithTheFiltersErrorAndEmbossesNothing
 
 TEST_F(CupsIppE2E, AQueueThatIsNotThereIsExit4AndOptionsTheServerDecidesAreExit2) {
     const auto doc = lesson_file("nowhere.md", 1);
-    const auto full = rig().client({spool::test::kCli, "emboss", "--device", rig().queue_uri("NoSuchQueue"), doc.string()});
+    const auto full = rig().client(
+        {spool::test::kCli, "emboss", "--device", rig().queue_uri("NoSuchQueue"), doc.string()});
     EXPECT_EQ(full.first, 4);
     EXPECT_NE(full.second.find("cannot send the job"), std::string::npos) << full.second;
-    const auto preset = rig().client(
-        {spool::test::kCli, "emboss", "--preset", "letter", "--device", rig().queue_uri("NoSuchQueue"), doc.string()});
+    const auto preset = rig().client({spool::test::kCli, "emboss", "--preset", "letter", "--device",
+                                      rig().queue_uri("NoSuchQueue"), doc.string()});
     EXPECT_EQ(preset.first, 2);
-    EXPECT_NE(preset.second.find("--preset cannot go to a CUPS queue"), std::string::npos) << preset.second;
+    EXPECT_NE(preset.second.find("--preset cannot go to a CUPS queue"), std::string::npos)
+        << preset.second;
 }
 
 TEST_F(CupsIppE2E, TheServersTactusQueuesAreListedAndOtherQueuesAreNot) {
@@ -179,9 +194,10 @@ TEST_F(CupsIppE2E, TheServersTactusQueuesAreListedAndOtherQueuesAreNot) {
     // nobody answers (never printed to). cupsd takes a device URI only for a
     // backend in its ServerBin.
     std::error_code ec;
-    std::filesystem::create_symlink("/usr/lib/cups/backend/ipp", rig().cups_dir / "bin/backend/ipp", ec);
-    const auto [code, msg] =
-        rig().client({"lpadmin", "-p", "Laser", "-E", "-v", "ipp://127.0.0.1:9/ipp/print", "-m", "raw"});
+    std::filesystem::create_symlink("/usr/lib/cups/backend/ipp", rig().cups_dir / "bin/backend/ipp",
+                                    ec);
+    const auto [code, msg] = rig().client(
+        {"lpadmin", "-p", "Laser", "-E", "-v", "ipp://127.0.0.1:9/ipp/print", "-m", "raw"});
     ASSERT_EQ(code, 0) << msg;
     ASSERT_EQ(rig().client({"lpstat", "-p", "Laser"}).first, 0);  // it is there, and left out
     const auto server = rig().server();

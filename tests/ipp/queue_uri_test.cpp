@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The address of a CUPS queue, as `tactus-cli emboss --device` takes it.
-#include <gtest/gtest.h>
-
 #include "ipp/queue_uri.hpp"
+
+#include <gtest/gtest.h>
 
 namespace tactus::ipp {
 namespace {
@@ -29,9 +29,9 @@ TEST(QueueUri, DefaultPortIsIppsAndClassesAreQueuesToo) {
 }
 
 TEST(QueueUri, RefusesWhatNamesNoQueueWithAUsageError) {
-    for (const char* bad : {"ipp://host", "ipp://host/", "ipp://host/printers/", "ipp://host/jobs/3",
-                            "ipp://host/printers/A/B", "ipp:///printers/A", "sim", "pty:/dev/pts/3",
-                            "http://host/printers/A"}) {
+    for (const char* bad : {"ipp://host", "ipp://host/", "ipp://host/printers/",
+                            "ipp://host/jobs/3", "ipp://host/printers/A/B", "ipp:///printers/A",
+                            "sim", "pty:/dev/pts/3", "http://host/printers/A"}) {
         const auto q = parse_queue_uri(bad);
         ASSERT_FALSE(q) << bad;
         EXPECT_EQ(q.error().kind, ErrorKind::usage) << bad;

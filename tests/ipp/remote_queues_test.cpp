@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What counts as a Tactus queue on a CUPS server (the picker's filter). The
 // listing itself runs against a real cupsd in tests/cups/ipp_e2e_test.cpp.
-#include <gtest/gtest.h>
-
 #include "ipp/remote_queues.hpp"
+
+#include <gtest/gtest.h>
 
 namespace tactus::ipp {
 namespace {
 
 TEST(RemoteQueues, ATactusQueueRunsTheBackendOrWasMadeFromThePpd) {
     EXPECT_TRUE(is_tactus_queue("tactus:serial:/dev/ttyUSB0?baud=57600", ""));
-    EXPECT_TRUE(is_tactus_queue("", "Tactus Braille Embosser"));  // device-uri hidden from this client
+    EXPECT_TRUE(
+        is_tactus_queue("", "Tactus Braille Embosser"));  // device-uri hidden from this client
     EXPECT_FALSE(is_tactus_queue("ipp://laser.local/ipp/print", "HP LaserJet"));
     EXPECT_FALSE(is_tactus_queue("socket://10.0.0.9", "Local Raw Printer"));
     EXPECT_FALSE(is_tactus_queue("usb://Tactus", ""));  // a name is not the backend
