@@ -157,6 +157,30 @@ TEST_F(CupsIppE2E, CtrlCInTheCliCancelsTheJobOnTheServer) {
     EXPECT_FALSE(rig().cups_job_active(cups_id));
 }
 
+TEST_F(CupsIppE2E, TheCliWaitsThroughACupsdRestartAndSeesTheJobComplete) {
+    PtySim sim(rig().e.dir.path(), "sim-restart", {}, 300);
+    ASSERT_TRUE(rig().add_queue(sim, "EmbosserR"));
+    const auto doc = lesson_file("restart.md", 4);
+    spool::test::Process cli(
+        emboss("EmbosserR", doc, {"--copies", "3"}),
+        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+    const int cups_id = cups_job_id(cli.read_line(std::chrono::seconds(30)));
+    ASSERT_GT(cups_id, 0);
+    const auto id = rig().newest_spool_job(before_);
+    ASSERT_NE(id, 0) << rig().error_log();
+    ASSERT_TRUE(
+        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 100; }, id));
+    rig().kill_cupsd();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    ASSERT_TRUE(rig().restart_cupsd()) << rig().error_log();
+    const auto rest = cli.read_all();
+    EXPECT_EQ(cli.wait(), 0) << rest << rig().error_log();
+    EXPECT_NE(rest.find("embossed job " + std::to_string(cups_id)), std::string::npos) << rest;
+    ASSERT_TRUE(rig().e.wait_state(id, JobState::completed)) << rig().e.history(id);
+    const auto audit = rig().e.audit(id, sim);
+    EXPECT_EQ(audit.problems, "") << rig().e.history(id);
+}
+
 TEST_F(CupsIppE2E, AnUnknownTableEndsTheCliWithTheFiltersErrorAndEmbossesNothing) {
     PtySim sim(rig().e.dir.path(), "sim-badtable");
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserD"));
