@@ -5,9 +5,11 @@
 # help2man writes them when it is installed; otherwise a small generator puts
 # the --help text under NAME, SYNOPSIS and DESCRIPTION. Pages are gzipped -n
 # (no time stamp: the same input gives the same bytes).
-#   make_man.sh TACTUS_CLI OUTDIR VERSION
+# The desktop app's page, tactus.1, comes from its --help too when GUI (the
+# built `tactus`) is given; it runs on Qt's offscreen platform (no display).
+#   make_man.sh TACTUS_CLI OUTDIR VERSION [GUI]
 set -euo pipefail
-cli=$1 out=$2 version=$3
+cli=$1 out=$2 version=$3 gui=${4:-}
 mkdir -p "$out"
 rm -f "$out"/*.1 "$out"/*.1.gz
 
@@ -52,8 +54,25 @@ page() {  # page TITLE "PROGRAM ARGS" SUMMARY
     [ -s "$file" ] || { echo "make_man: $file is empty" >&2; exit 1; }
 }
 
+# help2man names a command page after the program line, "tactus-cli emboss";
+# whatis (lexgrog, lintian's bad-whatis-entry) wants one word, the page's own
+# name: tactus-cli-emboss, as in git-commit(1).
+own_name() {  # own_name TITLE FILE
+    local title=$1 file=$2 upper
+    upper=$(echo "$title" | tr '[:lower:]' '[:upper:]')
+    sed -i -e "s/^\.TH \"\{0,1\}TACTUS-CLI\"\{0,1\} /.TH \"$upper\" /" \
+           -e "/^\.SH NAME/{n;s/^tactus-cli ${title#tactus-cli-} \\\\-/$title \\\\-/}" "$file"
+}
+
 page tactus-cli "$cli" "translate, lay out and emboss braille"
 for c in $commands; do
     page "tactus-cli-$c" "$cli $c" "$(summary "$c")"
+    own_name "tactus-cli-$c" "$out/tactus-cli-$c.1"
 done
+if [ -n "$gui" ]; then
+    runtime=$(mktemp -d)
+    QT_QPA_PLATFORM=offscreen XDG_RUNTIME_DIR=$runtime \
+        page tactus "$gui" "braille editor and embosser print manager"
+    rmdir "$runtime"
+fi
 gzip -9n "$out"/*.1

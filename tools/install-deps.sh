@@ -17,7 +17,9 @@ packages=(
   qt6-l10n-tools libgl-dev
   libxml2-utils bible-kjv time
   cups-daemon cups-client cups-bsd libcups2-dev
-  help2man desktop-file-utils appstream appstream-util lintian dpkg-dev
+  help2man desktop-file-utils appstream appstream-util lintian dpkg-dev file man-db
+  # The .deb test installs the package into a clean Debian 12 chroot.
+  debootstrap
   xvfb xauth xdotool at-spi2-core python3-pyatspi dbus dbus-x11 imagemagick
   # The Orca-in-the-loop tests (tests/accessibility/orca_*.py): the real screen
   # reader and a window manager, which window activation events need.

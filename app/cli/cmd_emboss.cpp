@@ -9,6 +9,8 @@
 #include "command.hpp"
 #include "conflict_warnings.hpp"
 #include "emboss_queue.hpp"
+#include "emboss_remote.hpp"
+#include "ipp/queue_uri.hpp"
 #include "profile/controller_config.hpp"
 #include "encode/frame.hpp"
 #include "plan/plan_file.hpp"
@@ -66,7 +68,9 @@ void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e)
               << done << '/' << total << std::flush;
 }
 
-void run_emboss(const EmbossArgs& a) {
+void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
+    if (ipp::is_queue_uri(a.device))
+        return emboss_remote(a.layout, a.device, cmd, a.queue.copies, a.queue.title);
     if (a.queue.enabled) {
         EmbossQueueArgs q = a.queue;
         q.device = a.device;  // --device with --queue: the queue printer on that device
@@ -149,13 +153,17 @@ void add_emboss_command(CLI::App& app) {
     args->layout.add_to(*cmd, /*with_interpoint=*/false);
     cmd->add_option("--profile,-p", args->profile, "Printer profile (JSON); default: the source embosser");
     cmd->add_option("--device,-d", args->device,
-                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim");
+                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim, or a "
+                    "CUPS queue ipp://host[:port]/printers/NAME (the server lays the document out with its "
+                    "embosser's profile; --table, --cells, --lines, --page-numbers, --no-print-pages, "
+                    "--eight-dot, --encoding, --copies and --title go with the job; the command follows "
+                    "the job until it ends, Ctrl-C cancels it)");
     cmd->add_flag("--dry-run", args->dry_run, "Stop after encoding and print the byte count");
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
         ->check(CLI::PositiveNumber);
     add_emboss_queue_options(*cmd, args->queue);
-    cmd->callback([args] { run_emboss(*args); });
+    cmd->callback([args, cmd] { run_emboss(*args, *cmd); });
 }
 
 }  // namespace tactus::cli

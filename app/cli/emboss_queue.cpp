@@ -48,10 +48,10 @@ void add_emboss_queue_options(CLI::App& cmd, EmbossQueueArgs& a) {
     cmd.add_option("--printer", a.printer,
                    "With --queue: the queue's printer (default: the one on --device, set up on first use; "
                    "else the only one set up)");
-    cmd.add_option("--copies", a.copies, "With --queue: copies")->capture_default_str()->check(CLI::Range(1, 10000));
+    cmd.add_option("--copies", a.copies, "With --queue or an ipp:// device: copies")->capture_default_str()->check(CLI::Range(1, 10000));
     cmd.add_option("--pages", a.pages, "With --queue: braille page range, e.g. 3-10, 5- or 7 (default: all)");
     cmd.add_option("--priority", a.priority, "With --queue: higher runs first")->capture_default_str();
-    cmd.add_option("--title", a.title, "With --queue: job title (default: the file name)");
+    cmd.add_option("--title", a.title, "With --queue or an ipp:// device: job title (default: the file name)");
 }
 
 namespace {

@@ -11,6 +11,7 @@
 
 #include "common/result.hpp"
 #include "import/import.hpp"
+#include "ipp/queue_options.hpp"
 #include "pipeline/pipeline.hpp"
 #include "profile/profile.hpp"
 
@@ -21,15 +22,17 @@ namespace tactus::cups {
 // (job-uuid, number-up, ...) and are ignored.
 using CupsOptions = std::map<std::string, std::string, std::less<>>;
 
-// Every option the filter reads; the PPD and docs/cups.md list the same.
-inline constexpr std::string_view kBrailleTable = "braille-table";
-inline constexpr std::string_view kInterpoint = "interpoint";
-inline constexpr std::string_view kCellsPerLine = "cells-per-line";
-inline constexpr std::string_view kLinesPerPage = "lines-per-page";
-inline constexpr std::string_view kPageNumbers = "braille-page-numbers";
-inline constexpr std::string_view kPrintPages = "print-page-indicators";
-inline constexpr std::string_view kEightDot = "eight-dot";
-inline constexpr std::string_view kTextEncoding = "text-encoding";
+// Every option the filter reads; the PPD and docs/cups.md list the same. The
+// names live in core (ipp/queue_options.hpp), where clients that send jobs to
+// a Tactus queue (tactus-cli emboss --device ipp://...) take them from too.
+inline constexpr std::string_view kBrailleTable = ipp::option::braille_table;
+inline constexpr std::string_view kInterpoint = ipp::option::interpoint;
+inline constexpr std::string_view kCellsPerLine = ipp::option::cells_per_line;
+inline constexpr std::string_view kLinesPerPage = ipp::option::lines_per_page;
+inline constexpr std::string_view kPageNumbers = ipp::option::page_numbers;
+inline constexpr std::string_view kPrintPages = ipp::option::print_pages;
+inline constexpr std::string_view kEightDot = ipp::option::eight_dot;
+inline constexpr std::string_view kTextEncoding = ipp::option::text_encoding;
 
 // "en-ueb-g2" or "en-ueb-g2.ctb" (or a comma-separated list) -> the liblouis
 // table list; each must be an installed table (`tactus-cli tables`).

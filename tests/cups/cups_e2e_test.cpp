@@ -17,15 +17,7 @@ using spool::JobState;
 using test::CupsRig;
 using test::PtySim;
 
-// Long enough for several sheets on the interpoint A4 default profile.
-std::string lesson(int paragraphs) {
-    std::string md = "# Braille for everyone\n\n";
-    for (int i = 0; i < paragraphs; ++i)
-        md += "Paragraph " + std::to_string(i + 1) +
-              ": the school's one embosser is shared through CUPS, so every teacher can print "
-              "from their own desk while the spool keeps each sheet exactly once.\n\n";
-    return md;
-}
+using test::lesson;
 
 #define REQUIRE_CUPS(rig)                                                               \
     if (!test::have_cupsd()) GTEST_SKIP() << "cupsd, lpadmin, lp, lpstat not installed"; \

@@ -33,6 +33,16 @@ inline const std::string kTeacher = "tactus-teacher";
 inline bool have_cupsd() { return spool::test::run({"/bin/sh", "-c", "command -v cupsd lpadmin lp lpstat"}).first == 0; }
 inline bool is_root() { return geteuid() == 0; }
 
+// A Markdown lesson long enough for several sheets on the interpoint A4 default profile.
+inline std::string lesson(int paragraphs) {
+    std::string md = "# Braille for everyone\n\n";
+    for (int i = 0; i < paragraphs; ++i)
+        md += "Paragraph " + std::to_string(i + 1) +
+              ": the school's one embosser is shared through CUPS, so every teacher can print "
+              "from their own desk while the spool keeps each sheet exactly once.\n\n";
+    return md;
+}
+
 class CupsRig {
 public:
     E2E e;  // the spool database the CUPS backend and filter use, and its helpers
@@ -62,14 +72,29 @@ public:
     [[nodiscard]] bool started() const { return started_; }
     [[nodiscard]] std::string error_log() const { return spool::test::read_text((cups_dir / "log/error_log").string()); }
 
-    // A CUPS client command with the private server's environment; as the
-    // teacher when `as_teacher` and we are root.
-    std::pair<int, std::string> client(const std::vector<std::string>& args, bool as_teacher = false) {
+    // The command line that runs `args` with the private server's
+    // environment; as the teacher when `as_teacher` and we are root.
+    [[nodiscard]] std::vector<std::string> command(const std::vector<std::string>& args, bool as_teacher = false) const {
         std::vector<std::string> cmd;
         if (as_teacher && is_root()) cmd = {"/usr/sbin/runuser", "-u", kTeacher, "--"};
         cmd.push_back("/usr/bin/env");
         cmd.insert(cmd.end(), env_.begin(), env_.end());
         cmd.insert(cmd.end(), args.begin(), args.end());
+        return cmd;
+    }
+
+    // host:port of the private cupsd (its CUPS_SERVER), and a queue's IPP address there.
+    [[nodiscard]] std::string server() const {
+        for (const auto& kv : env_)
+            if (kv.starts_with("CUPS_SERVER=")) return kv.substr(12);
+        return {};
+    }
+    [[nodiscard]] std::string queue_uri(const std::string& name) const { return "ipp://" + server() + "/printers/" + name; }
+
+    // A CUPS client command with the private server's environment; as the
+    // teacher when `as_teacher` and we are root.
+    std::pair<int, std::string> client(const std::vector<std::string>& args, bool as_teacher = false) {
+        const auto cmd = command(args, as_teacher);
         // stderr too: lp and lpadmin explain failures there.
         std::vector<std::string> sh{"/bin/sh", "-c", ""};
         for (const auto& a : cmd) sh[2] += "'" + a + "' ";
@@ -117,6 +142,21 @@ public:
         return false;
     }
     std::string printer_status() { return client({"lpstat", "-l", "-p", "Embosser"}).second; }
+
+    // The newest spool job (the backend made it for the last CUPS job sent;
+    // 0 if none within `timeout`), newer than `after`.
+    spool::JobId newest_spool_job(spool::JobId after, std::chrono::seconds timeout = std::chrono::seconds(60)) {
+        const auto end = std::chrono::steady_clock::now() + timeout;
+        while (std::chrono::steady_clock::now() < end) {
+            if (std::filesystem::exists(e.db))
+                if (auto s = spool::Spool::open(e.db, {.create = false}))
+                    if (auto jobs = s->jobs(true); jobs)
+                        for (const auto& j : *jobs)
+                            if (j.id > after) return j.id;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return 0;
+    }
 
     // The spool job the backend made for the (one) CUPS job sent so far.
     spool::JobId spool_job(std::chrono::seconds timeout = std::chrono::seconds(60)) {

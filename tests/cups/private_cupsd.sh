@@ -92,6 +92,10 @@ DefaultAuthType None
 JobRetryInterval 1
 JobKillDelay 20
 PreserveJobHistory Yes
+# Write job files at once (the default waits up to 30 s): a job sent just
+# before cupsd is killed is still there after the restart, as on a server
+# that has been up a while.
+DirtyCleanInterval 0
 <Location />
   Order allow,deny
   Allow 127.0.0.1

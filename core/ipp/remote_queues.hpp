@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The Tactus queues a CUPS server offers, for the printer picker beside the
+// local cables: CUPS-Get-Printers, kept when the queue runs the Tactus
+// backend (device-uri tactus:...) or was made from the Tactus PPD
+// (printer-make-and-model, for servers that hide device-uri from clients).
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.hpp"
+
+namespace tactus::ipp {
+
+struct RemoteQueue {
+    std::string uri;             // ipp://host:port/printers/NAME: what `--device` takes
+    std::string name;            // printer-name
+    std::string info;            // printer-info: what the administrator called it
+    std::string location;        // printer-location
+    std::string make_and_model;  // printer-make-and-model
+    std::string state;           // idle, processing or stopped, with printer-state-message
+    bool accepting = true;       // printer-is-accepting-jobs
+};
+
+// "tactus:..." device or the PPD's model name: the one test of "a Tactus queue".
+[[nodiscard]] bool is_tactus_queue(std::string_view device_uri, std::string_view make_and_model);
+
+// The Tactus queues of the server at host:port, by name. A server that is not
+// there is a device error.
+Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port = 631);
+
+}  // namespace tactus::ipp
