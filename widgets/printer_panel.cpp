@@ -435,7 +435,7 @@ spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocum
     job.title = title.toStdString();
     job.document = spool::to_snapshot(pages);
     job.sheets_per_copy = pages.sheet_count();
-    job.user = qgetenv("USER").toStdString();
+    job.user = spool::this_user_name();
     auto id = spool_->submit(job);
     if (!id) {
         show_fault(tr("Cannot queue %1: %2").arg(title, qs(id.error().to_string())));
