@@ -26,20 +26,7 @@
 using namespace tactus;
 using namespace tactus::gui;
 
-namespace {
-
-template <typename Pred>
-bool wait_until(Pred pred, int ms = 120000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > ms) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
-
-}  // namespace
+using test::wait_until;
 
 class AppSpoolTest : public QObject {
     Q_OBJECT
@@ -53,11 +40,7 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QSettings().clear();
     }
-    void init() {
-        static int n = 0;
-        db_ = (dir_.path() + QStringLiteral("/spool-%1.db").arg(++n)).toStdString();
-        qputenv("TACTUS_SPOOL_DB", QByteArray::fromStdString(db_));
-    }
+    void init() { db_ = test::fresh_spool(dir_.path()); }
 
     void connect_configures_the_controller_with_the_profile_being_edited() {
         MainWindow w;

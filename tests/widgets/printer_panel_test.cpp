@@ -31,6 +31,7 @@
 
 using namespace tactus;
 using namespace tactus::gui;
+using tactus::test::wait_until;
 
 namespace {
 
@@ -40,18 +41,6 @@ layout::PagedDocument book(int paragraphs) {
     auto l = edit::LiveLayout::create("en-ueb-g2.ctb", {});
     l->reset(test::synthetic_book(paragraphs));
     return l->paged();
-}
-
-// Waits (processing events) until `pred` holds; false after `ms`.
-template <typename Pred>
-bool wait_until(Pred pred, int ms = 120000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > ms) return false;
-        QTest::qWait(20);
-    }
-    return true;
 }
 
 }  // namespace
@@ -78,12 +67,7 @@ private Q_SLOTS:
     }
 
     // Each test gets its own spool file.
-    void init() {
-        static int n = 0;
-        db_ = (dir_.path() + QStringLiteral("/spool-%1.db").arg(++n)).toStdString();
-        qputenv("TACTUS_SPOOL_DB", QByteArray::fromStdString(db_));
-        QSettings().clear();  // the last device used is remembered: each test starts on the simulator
-    }
+    void init() { db_ = test::fresh_spool(dir_.path()); }
 
     void simulator_is_always_listed_first() {
         const auto devices = controller::list_devices();
