@@ -702,13 +702,26 @@ void PrinterPanel::update_buttons() {
     if (const auto id = selected_job())
         for (const auto& j : jobs_)
             if (j.id == *id) job = j;
-    const auto state = job ? std::optional(job->state) : std::nullopt;
-    pause_->setEnabled(state == spool::JobState::running || state == spool::JobState::queued);
-    resume_->setEnabled(state == spool::JobState::paused || state == spool::JobState::failed ||
-                        state == spool::JobState::cancelled);
-    cancel_->setEnabled(state && !spool::is_terminal(*state));
-    from_page_->setEnabled(state && *state != spool::JobState::running);
-    faults_box_->setEnabled(selected_device() == QLatin1String(kSim));
+    // A request the runner has not carried out yet counts as done: Alt+P turns
+    // the buttons at once, as the click is heard.
+    std::optional<spool::JobState> state = job ? std::optional(job->state) : std::nullopt;
+    if (job && job->control == spool::Control::pause) state = spool::JobState::paused;
+    if (job && job->control == spool::Control::resume) state = spool::JobState::running;
+    const bool cancelling = job && job->control == spool::Control::cancel;
+    const std::pair<QWidget*, bool> wanted[] = {
+        {pause_, !cancelling && (state == spool::JobState::running || state == spool::JobState::queued)},
+        {resume_, !cancelling && (state == spool::JobState::paused || state == spool::JobState::failed ||
+                                  state == spool::JobState::cancelled)},
+        {cancel_, !cancelling && state && !spool::is_terminal(*state)},
+        {from_page_, state && *state != spool::JobState::running},
+        {faults_box_, selected_device() == QLatin1String(kSim)},
+    };
+    // Enable first, then disable: a pressed button that turns off hands the
+    // focus to the next one in the row (Pause -> Resume), not out of the panel.
+    for (const auto& [w, on] : wanted)
+        if (on) w->setEnabled(true);
+    for (const auto& [w, on] : wanted)
+        if (!on) w->setEnabled(false);
 }
 
 void PrinterPanel::act(int action, std::optional<std::size_t> sheet) {

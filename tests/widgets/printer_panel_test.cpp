@@ -163,6 +163,18 @@ private Q_SLOTS:
         QVERIFY2(wait_until([&] { return job(id).state == spool::JobState::paused && job(id).control == spool::Control::none; }),
                  history(id).c_str());
         QVERIFY(panel.embossing().has_value());  // held on the machine, paused
+        // Paused means paused: no pass is executed while it lasts.
+        const auto passes = [&] {
+            auto s = spool::Spool::open(db_, {.create = false});
+            const auto progress = *s->progress(id);
+            std::size_t n = 0;
+            for (const auto& p : progress) n += p.passes_done;
+            return n;
+        };
+        const auto at_pause = passes();
+        QTest::qWait(1500);
+        QCOMPARE(passes(), at_pause);
+        QCOMPARE(job(id).state, spool::JobState::paused);
         panel.resume_job();
         QVERIFY(wait_until([&] { return job(id).state == spool::JobState::running; }));
         panel.cancel_job();
