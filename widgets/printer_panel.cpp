@@ -452,11 +452,18 @@ spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocum
 
 void PrinterPanel::poll() {
     if (runner_) {
-        std::lock_guard lock(runner_->mutex);
-        if (runner_->error) {
+        std::optional<Error> error;
+        {
+            std::lock_guard lock(runner_->mutex);
+            error = runner_->error;
+        }
+        if (error) {
+            // The runner stopped itself: nothing more could be recorded, so nothing more is embossed.
+            stop_runner();
+            connect_->setText(tr("&Connect"));
             show_fault(tr("The print queue cannot be written (%1): this window stopped running printer %2")
-                           .arg(qs(runner_->error->to_string()), qs(printer_)));
-            runner_->error.reset();
+                           .arg(qs(error->to_string()), qs(printer_)));
+            update_status();
         }
     }
     if (!spool_) {
