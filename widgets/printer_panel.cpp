@@ -501,6 +501,11 @@ void PrinterPanel::reload() {
     }
     jobs_ = std::move(shown);
     for (const auto& j : jobs_) {
+        // A finished job's progress no longer changes: read it once.
+        const auto seen = watch_.find(j.id);
+        if (spool::is_terminal(j.state) && seen != watch_.end() && seen->second.state == j.state &&
+            shown_.count(j.id))
+            continue;
         Shown s;
         std::size_t done = 0, total = 0;
         if (auto progress = spool_->progress(j.id); progress) {
