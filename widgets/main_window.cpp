@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QSaveFile>
@@ -109,7 +110,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(profile_dock, printer_dock);
     connect(printer_, &PrinterPanel::message, this, [this](const QString& m, bool) { report(m, false); });
     connect(printer_, &PrinterPanel::job_finished, this,
-            [this](int, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
+            [this](qint64, bool completed, const QString& text) { Q_EMIT job_finished(completed, text); });
+    // Connect configures the controller with the profile being edited, as the jobs are planned.
+    printer_->set_profile_source([this] { return profile_->profile(); });
     preview_dock->raise();
     plan_timer_.setSingleShot(true);
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
@@ -617,11 +620,31 @@ bool MainWindow::maybe_save() {
     return answer == QMessageBox::Discard;
 }
 
+bool MainWindow::may_stop_embossing() {
+    const auto job = printer_->embossing();
+    if (!job || !interactive_) return true;
+    FocusReturn back(this, editor_->print_pane());
+    QMessageBox box(QMessageBox::Question, tr("Tactus"),
+                    tr("%1 is being embossed. Quit anyway?").arg(QString::fromStdString(job->title)),
+                    QMessageBox::NoButton, this);
+    box.setInformativeText(tr("The job stays in the print queue. The sheet in the embosser now is discarded; the "
+                              "rest is embossed when Tactus or tactus-cli serve runs printer %1 again.")
+                               .arg(QString::fromStdString(job->printer)));
+    auto* quit = box.addButton(tr("&Quit"), QMessageBox::AcceptRole);
+    auto* stay = box.addButton(tr("&Keep embossing"), QMessageBox::RejectRole);
+    box.setDefaultButton(stay);
+    box.setEscapeButton(stay);
+    box.exec();
+    return box.clickedButton() == quit;
+}
+
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (!maybe_save()) {
+    if (!may_stop_embossing() || !maybe_save()) {
         e->ignore();
         return;
     }
+    // This window's runner lets go of the printer; its job waits in the spool.
+    printer_->disconnect_device();
     if (busy_) busy_->cancel();
     if (planning_) planning_->cancel();
     QSettings s;
@@ -656,15 +679,15 @@ void MainWindow::show_panel(const QString& name) {
 }
 
 bool MainWindow::emboss() {
-    if (!printer_->connected() && !printer_->connect_device(printer_->selected_device(), profile_->profile())) {
+    const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
+    // Into the spool: the job outlives this window, and waits if the embosser is unreachable.
+    if (!printer_->submit(name, editor_->layout().paged(), profile_->profile())) {
         // The fault is on the printer panel, beside the device picker: go there.
         show_panel(QStringLiteral("printer"));
         if (auto* picker = printer_->findChild<QWidget*>(QStringLiteral("devicePicker")))
             picker->setFocus(Qt::ShortcutFocusReason);
         return false;
     }
-    const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
-    printer_->enqueue(name, editor_->layout().paged(), profile_->profile());
     // The queue is where the job's progress, pause and cancel are: raise it with the focus.
     show_panel(QStringLiteral("printer"));
     if (auto* queue = printer_->findChild<QWidget*>(QStringLiteral("jobQueue"))) queue->setFocus(Qt::ShortcutFocusReason);

@@ -62,7 +62,7 @@ public:
     [[nodiscard]] ProfileEditor* profile_editor() const { return profile_; }
     // Null when this build has no link stage.
     [[nodiscard]] PrinterPanel* printer_panel() const { return printer_; }
-    // Queues the document on the printer panel (connecting to the chosen embosser).
+    // Queues the document in the spool on the chosen embosser's printer (printer panel).
     bool emboss();
     // Plans the document now (tests); normally planning follows edits after a pause.
     DocumentPlanPtr plan_now();
@@ -92,6 +92,9 @@ Q_SIGNALS:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    // With a job embossing on this window's runner, asks before quitting (the
+    // job stays in the spool); true to go on.
+    bool may_stop_embossing();
     bool focusNextPrevChild(bool next) override;
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;

@@ -3,10 +3,12 @@
 
 #include <QComboBox>
 #include <QDateTime>
-#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
@@ -14,75 +16,136 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QCoreApplication>
 #include <QtConcurrent/QtConcurrentRun>
-#include <numeric>
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
 
-#include "controller/sim_controller.hpp"
-#include "plan/planner.hpp"
+#include "controller/builtin_sim.hpp"
+#include "controller/device_choices.hpp"
+#include "link/fault_words.hpp"
+#include "link/link.hpp"
+#include "profile/controller_config.hpp"
+#include "profile/profile_json.hpp"
+#include "spool/db_path.hpp"
+#include "spool/printer_setup.hpp"
+#include "spool/printing.hpp"
+#include "spool/runner.hpp"
+#include "spool/runner_token.hpp"
+#include "spool/snapshot.hpp"
+#include "spool/spool.hpp"
 #include "status_label.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::gui {
 namespace {
 
-QString state_text(QueuedJob::State s) {
+constexpr const char* kSim = "sim";
+constexpr std::size_t kFinishedShown = 100;
+enum Column { col_job, col_document, col_printer, col_state, col_progress, col_sheet, col_count };
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+QString state_text(spool::JobState s) {
     switch (s) {
-        case QueuedJob::State::queued: return QObject::tr("waiting");
-        case QueuedJob::State::running: return QObject::tr("embossing");
-        case QueuedJob::State::paused: return QObject::tr("paused");
-        case QueuedJob::State::done: return QObject::tr("done");
-        case QueuedJob::State::failed: return QObject::tr("stopped");
-        case QueuedJob::State::cancelled: return QObject::tr("cancelled");
+        case spool::JobState::queued: return QObject::tr("waiting");
+        case spool::JobState::running: return QObject::tr("embossing");
+        case spool::JobState::paused: return QObject::tr("paused");
+        case spool::JobState::completed: return QObject::tr("done");
+        case spool::JobState::failed: return QObject::tr("stopped");
+        case spool::JobState::cancelled: return QObject::tr("cancelled");
     }
     return {};
 }
 
-// What the worker reports back; built on the worker thread, read on the GUI thread.
-struct Outcome {
-    bool completed = false;
-    bool cancelled = false;
-    std::size_t passes_done = 0;
-    std::size_t resume_sheet = 1;
-    QString message;
-    QString check;  // the simulator's strikes against the plan
-};
+// Opens the printer's device: the app's one built-in simulator for "sim"
+// (so its controller keeps its count across connections), else the cable.
+spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, link::LinkOptions options) {
+    return [sim = std::move(sim), options](const spool::PrinterRecord& p) -> Result<link::Link> {
+        if (p.device == kSim) return link::Link::over(sim->connect(), options);
+        return link::Link::open(p.device, options);
+    };
+}
+
+// The strikes of a job's last stream as the built-in simulator logged them,
+// against the plan (planned again with the printer's profile, as the runner did).
+QString strike_check(const std::string& document, const std::string& profile_json, const spool::JobRecord& job,
+                     const std::vector<controller::LoggedStrike>& logged) {
+    auto doc = spool::from_snapshot(document);
+    auto prof = profile::parse_profile(profile_json);
+    if (!doc || !prof) return {};
+    auto plan = spool::plan_copies(*doc, *prof, job.copies);
+    if (!plan || !job.link_job) return {};
+    const auto from = std::max<std::size_t>(job.run_start_sheet, 1);
+    std::vector<controller::LoggedStrike> expected;
+    for (const auto& s : controller::planned_strikes(*plan))
+        if (s.sheet >= from) expected.push_back(s);
+    std::vector<controller::LoggedStrike> got;
+    for (const auto& s : logged)
+        if (s.job_id == *job.link_job) got.push_back(s);
+    if (got != expected)
+        return QObject::tr("%1 strikes embossed but %2 planned: the simulator disagrees with the plan")
+            .arg(got.size()).arg(expected.size());
+    return from > 1 ? QObject::tr("all %1 strikes of sheets %2 to %3 checked against the plan")
+                          .arg(got.size()).arg(from).arg(job.total_sheets())
+                    : QObject::tr("all %1 strikes checked against the plan").arg(got.size());
+}
 
 }  // namespace
 
-struct PrinterPanel::Running {
-    int id = 0;
-    link::CancelToken cancel;
-    QFutureWatcher<Outcome> watcher;
+// This window's runner: core's spool::Runner on its own thread, stopped and
+// joined when the window lets go of the printer.
+struct PrinterPanel::AppRunner {
+    std::atomic<bool> stop{false};
+    std::unique_ptr<spool::Runner> runner;
+    std::thread thread;
+    std::mutex mutex;
+    std::optional<Error> error;  // the spool became unusable
+
+    ~AppRunner() {
+        stop = true;
+        if (thread.joinable()) thread.join();
+        runner->finish();
+    }
 };
 
 PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("printerPanel"));
+    if (auto p = spool::spool_path(); p) db_ = *p;
     devices_ = new QComboBox(this);
     devices_->setObjectName(QStringLiteral("devicePicker"));
+    devices_->setEditable(true);
+    devices_->setInsertPolicy(QComboBox::NoInsert);
     devices_->setAccessibleName(tr("Embosser"));
-    devices_->setAccessibleDescription(tr("Serial ports with their USB descriptions, HID bridges, parallel ports, and the built-in simulator"));
-    auto* refresh = new QPushButton(tr("&Refresh"), this);
+    devices_->setAccessibleDescription(
+        tr("The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; "
+           "or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600"));
+    devices_->lineEdit()->setAccessibleName(tr("Embosser device"));
+    auto* refresh_button = new QPushButton(tr("&Refresh"), this);
     connect_ = new QPushButton(tr("&Connect"), this);
     connect_->setObjectName(QStringLiteral("connectButton"));
-    status_ = new QLabel(tr("Not connected"), this);
-    status_->setObjectName(QStringLiteral("controllerStatus"));
-    expose_status(status_, tr("Controller status"));
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
+    status_label_ = new QLabel(tr("Not connected"), this);
+    status_label_->setObjectName(QStringLiteral("controllerStatus"));
+    expose_status(status_label_, tr("Controller status"));
+    status_label_->setWordWrap(true);
+    status_label_->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
     fault_ = new QLabel(this);
     fault_->setObjectName(QStringLiteral("faultMessage"));
     expose_status(fault_, tr("Fault"));
     fault_->setWordWrap(true);
     fault_->setStyleSheet(QStringLiteral("QLabel { color: #a00000; font-weight: bold; }"));
-    queue_ = new QTableWidget(0, 4, this);
+    queue_ = new QTableWidget(0, col_count, this);
     queue_->setObjectName(QStringLiteral("jobQueue"));
     queue_->setAccessibleName(tr("Job queue"));
-    queue_->setHorizontalHeaderLabels({tr("Document"), tr("State"), tr("Progress"), tr("Sheet")});
+    queue_->setAccessibleDescription(tr("The print spool's jobs, from this window, tactus-cli and the network"));
+    queue_->setHorizontalHeaderLabels({tr("Job"), tr("Document"), tr("Printer"), tr("State"), tr("Progress"), tr("Sheet")});
+    queue_->verticalHeader()->hide();
     queue_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     queue_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     queue_->setSelectionBehavior(QAbstractItemView::SelectRows);
     queue_->setSelectionMode(QAbstractItemView::SingleSelection);
-    queue_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    queue_->horizontalHeader()->setSectionResizeMode(col_document, QHeaderView::Stretch);
     pause_ = new QPushButton(tr("&Pause"), this);
     resume_ = new QPushButton(tr("Res&ume"), this);
     cancel_ = new QPushButton(tr("Ca&ncel job"), this);
@@ -97,12 +160,36 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     log_->setMaximumBlockCount(5000);
     log_->setTabChangesFocus(true);
 
+    // The technician's bench: faults for the built-in simulator only.
+    faults_box_ = new QGroupBox(tr("Simulator faults (built-in simulator)"), this);
+    faults_box_->setObjectName(QStringLiteral("simulatorFaults"));
+    auto* fault_row = new QHBoxLayout(faults_box_);
+    const auto fault_button = [&](const QString& text, const QString& name, const QString& what, void (PrinterPanel::*slot)()) {
+        auto* b = new QPushButton(text, faults_box_);
+        b->setObjectName(name);
+        b->setAccessibleDescription(what);
+        connect(b, &QPushButton::clicked, this, slot);
+        fault_row->addWidget(b);
+    };
+    fault_button(tr("Paper out"), QStringLiteral("injectPaperOut"),
+                 tr("The feeder runs empty; the simulated operator loads paper 5 seconds later"),
+                 &PrinterPanel::inject_paper_out);
+    fault_button(tr("Pull the cable"), QStringLiteral("injectPulledCable"),
+                 tr("The cable is out for 5 seconds; the link reconnects"), &PrinterPanel::inject_pulled_cable);
+    fault_button(tr("Line noise"), QStringLiteral("injectNoise"),
+                 tr("For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again"),
+                 &PrinterPanel::inject_noise);
+    fault_button(tr("Controller reset"), QStringLiteral("injectReset"),
+                 tr("A watchdog reset: the controller keeps its place and the job continues"),
+                 &PrinterPanel::inject_reset);
+    fault_row->addStretch();
+
     auto* device_row = new QHBoxLayout;
     auto* label = new QLabel(tr("E&mbosser:"), this);
     label->setBuddy(devices_);
     device_row->addWidget(label);
     device_row->addWidget(devices_, 1);
-    device_row->addWidget(refresh);
+    device_row->addWidget(refresh_button);
     device_row->addWidget(connect_);
     auto* job_row = new QHBoxLayout;
     job_row->addWidget(pause_);
@@ -113,55 +200,74 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     job_row->addWidget(from_page_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(device_row);
-    layout->addWidget(status_);
+    layout->addWidget(status_label_);
     layout->addWidget(fault_);
     layout->addWidget(queue_, 2);
     layout->addLayout(job_row);
+    layout->addWidget(faults_box_);
     auto* log_label = new QLabel(tr("Lin&k log (for technicians):"), this);
     log_label->setBuddy(log_);
     layout->addWidget(log_label);
     layout->addWidget(log_, 1);
 
-    connect(refresh, &QPushButton::clicked, this, &PrinterPanel::refresh_devices);
+    connect(refresh_button, &QPushButton::clicked, this, &PrinterPanel::refresh_devices);
     connect(connect_, &QPushButton::clicked, this, [this] {
         if (connected()) disconnect_device();
-        else connect_device(selected_device(), profile::default_profile());
+        else connect_device(selected_device(), profile_source_ ? profile_source_() : profile::default_profile());
     });
     connect(pause_, &QPushButton::clicked, this, &PrinterPanel::pause_job);
     connect(resume_, &QPushButton::clicked, this, &PrinterPanel::resume_job);
     connect(cancel_, &QPushButton::clicked, this, &PrinterPanel::cancel_job);
     connect(from_page_, &QPushButton::clicked, this, [this] { resume_from_page(page_->value()); });
-    status_timer_.setInterval(1000);
-    connect(&status_timer_, &QTimer::timeout, this, &PrinterPanel::poll_status);
-    update_buttons();
+    connect(queue_, &QTableWidget::itemSelectionChanged, this, &PrinterPanel::update_buttons);
+    connect(devices_, &QComboBox::currentTextChanged, this, &PrinterPanel::update_buttons);
+    // Another process's commit (a runner's progress, `tactus-cli queue`, CUPS)
+    // shows as a new PRAGMA data_version: cheap to ask, so asked often.
+    poll_timer_.setInterval(200);
+    connect(&poll_timer_, &QTimer::timeout, this, &PrinterPanel::poll);
     refresh_devices();
-    select_device(QSettings().value(QStringLiteral("printer/last"), QStringLiteral("sim")).toString());
+    select_device(QSettings().value(QStringLiteral("printer/last"), QString::fromLatin1(kSim)).toString());
+    if (std::filesystem::exists(db_)) open_spool(false);
+    refresh();
+    poll_timer_.start();
 }
 
-PrinterPanel::~PrinterPanel() {
-    if (running_) {
-        running_->cancel.cancel();
-        running_->watcher.waitForFinished();
-    }
+PrinterPanel::~PrinterPanel() { stop_runner(); }
+
+void PrinterPanel::set_profile_source(std::function<profile::PrinterProfile()> source) {
+    profile_source_ = std::move(source);
+}
+
+controller::BuiltInSimulator& PrinterPanel::simulator() {
+    if (!sim_) sim_ = std::make_shared<controller::BuiltInSimulator>();
+    return *sim_;
 }
 
 void PrinterPanel::refresh_devices() {
     const auto current = selected_device();
     std::vector<std::string> problems;
-    const auto found = list_devices(&problems);
+    const auto found = controller::list_devices(&problems);
     devices_->clear();
     for (const auto& d : found)
-        devices_->addItem(QStringLiteral("%1 [%2]").arg(QString::fromStdString(d.description), QString::fromStdString(d.device)),
-                          QString::fromStdString(d.device));
-    for (const auto& p : problems) log(tr("Listing devices: %1").arg(QString::fromStdString(p)));
+        devices_->addItem(QStringLiteral("%1 [%2]").arg(qs(d.description), qs(d.device)), qs(d.device));
+    for (const auto& p : problems) log(tr("Listing devices: %1").arg(qs(p)));
     select_device(current);
 }
 
-QString PrinterPanel::selected_device() const { return devices_->currentData().toString(); }
+QString PrinterPanel::selected_device() const {
+    // A listed device shows as "description [device]"; anything else typed is
+    // taken as a device string.
+    const auto text = devices_->currentText().trimmed();
+    const int i = devices_->findText(text);
+    if (i >= 0) return devices_->itemData(i).toString();
+    return text;
+}
 
 void PrinterPanel::select_device(const QString& device) {
+    if (device.isEmpty()) return;
     const int i = devices_->findData(device);
     if (i >= 0) devices_->setCurrentIndex(i);
+    else devices_->setEditText(device);
 }
 
 void PrinterPanel::log(const QString& line) {
@@ -170,336 +276,528 @@ void PrinterPanel::log(const QString& line) {
 
 QString PrinterPanel::log_text() const { return log_->toPlainText(); }
 QString PrinterPanel::fault_text() const { return fault_->text(); }
-
-void PrinterPanel::set_status(const QString& text) {
-    if (status_->text() != text) status_->setText(text);  // an unchanged text sends no event
-}
+QString PrinterPanel::status_text() const { return status_label_->text(); }
 
 void PrinterPanel::show_fault(const QString& text) {
+    if (fault_->text() == text) return;  // an unchanged text sends no event
     fault_->setText(text);
     if (!text.isEmpty()) Q_EMIT message(text, true);
 }
 
-bool PrinterPanel::connect_device(const QString& device, const profile::PrinterProfile& p) {
-    if (running_) return false;
-    disconnect_device();
-    log(tr("Connecting to %1").arg(device));
-    auto e = Embosser::connect(device.toStdString(), p);
-    if (!e) {
-        const auto why = QString::fromStdString(e.error().to_string());
-        log(why);
-        show_fault(tr("Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.").arg(device, why));
-        return false;
+spool::Spool* PrinterPanel::open_spool(bool create) {
+    if (spool_) return spool_.get();
+    if (db_.empty()) {
+        show_fault(tr("No place for the print queue: set TACTUS_SPOOL_DB or HOME."));
+        return nullptr;
     }
-    embosser_.emplace(std::move(*e));
+    auto s = spool::Spool::open(db_, {.create = create});
+    if (!s) {
+        show_fault(tr("Cannot open the print queue: %1").arg(qs(s.error().to_string())));
+        return nullptr;
+    }
+    spool_ = std::make_unique<spool::Spool>(std::move(*s));
+    return spool_.get();
+}
+
+std::string PrinterPanel::setup_printer(const QString& device, const profile::PrinterProfile& p) {
+    const auto dev = device.trimmed().toStdString();
+    if (auto ok = transport::check_device(dev); !ok) {
+        show_fault(tr("“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, "
+                      "pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.")
+                       .arg(device, qs(ok.error().to_string())));
+        return {};
+    }
+    auto* s = open_spool(true);
+    if (!s) return {};
+    const auto json = profile::to_json(p).dump();
+    bool created = false;
+    auto printer = spool::printer_for_device(*s, dev, json, &created);
+    if (!printer) {
+        show_fault(tr("Cannot set up a printer for %1: %2").arg(device, qs(printer.error().to_string())));
+        return {};
+    }
+    if (created) {
+        log(tr("Set up printer %1 on %2 with the profile being edited").arg(qs(printer->name), device));
+    } else {
+        // The controller is configured and the job planned with the printer's
+        // profile: make it the one the user chose here.
+        auto stored = profile::parse_profile(printer->profile_json);
+        if (!stored || profile::to_json(*stored).dump() != json) {
+            if (auto u = s->update_printer(printer->name, std::nullopt, json); !u) {
+                show_fault(tr("Cannot give printer %1 the profile being edited: %2")
+                               .arg(qs(printer->name), qs(u.error().to_string())));
+                return {};
+            }
+            log(tr("Printer %1 now uses the profile being edited").arg(qs(printer->name)));
+        }
+    }
     QSettings().setValue(QStringLiteral("printer/last"), device);
-    select_device(device);
+    return printer->name;
+}
+
+void PrinterPanel::start_runner(const std::string& printer) {
+    if (runner_ && printer_ == printer) return;
+    stop_runner();
+    printer_ = printer;
+    auto* s = open_spool(true);
+    if (!s) return;
+    auto record = s->printer(printer);
+    if (!record) return;
+    if (!record->runner.empty() && record->runner != spool::this_runner_token() && spool::runner_alive(record->runner)) {
+        log(tr("Printer %1 is run by %2: this window shows its jobs").arg(qs(printer), qs(record->runner)));
+        update_status();
+        return;
+    }
+    spool::RunnerOptions options;
+    options.poll = std::chrono::milliseconds(100);
+    if (record->device == kSim) simulator();
+    auto r = std::make_unique<AppRunner>();
+    r->runner = std::make_unique<spool::Runner>(db_, printer, connector(sim_, options.link), options);
+    if (auto started = r->runner->start(); !started) {
+        // Another runner took it first: watch.
+        log(tr("Printer %1: %2; this window shows its jobs").arg(qs(printer), qs(started.error().to_string())));
+        update_status();
+        return;
+    }
+    auto* raw = r.get();
+    r->thread = std::thread([raw] {
+        if (auto ran = raw->runner->run(raw->stop); !ran) {
+            std::lock_guard lock(raw->mutex);
+            raw->error = ran.error();
+        }
+    });
+    runner_ = std::move(r);
+    log(tr("This window runs printer %1").arg(qs(printer)));
     connect_->setText(tr("Dis&connect"));
-    fault_->clear();
-    poll_status();
-    status_timer_.start();
+    update_status();
+}
+
+void PrinterPanel::stop_runner() {
+    if (!runner_) return;
+    // Stopping aborts the job in hand on the controller; it goes back to the
+    // queue and the next runner settles it with the controller's count.
+    runner_.reset();
+    log(tr("This window no longer runs printer %1").arg(qs(printer_)));
+}
+
+bool PrinterPanel::connect_device(const QString& device, const profile::PrinterProfile& p) {
+    const auto printer = setup_printer(device, p);
+    if (printer.empty()) return false;
+    auto record = spool_->printer(printer);
+    if (!record) return false;
+    const bool held_elsewhere = !record->runner.empty() && record->runner != spool::this_runner_token() &&
+                                spool::runner_alive(record->runner);
+    if (!held_elsewhere && !runner_) {
+        // Talk to the controller before the runner takes the device: it answers,
+        // and it is configured from this profile.
+        log(tr("Connecting to %1").arg(device));
+        if (record->device == kSim) simulator();
+        auto link = connector(sim_, {})(*record);
+        Result<encode::Status> status = link ? Result<encode::Status>{} : std::unexpected(link.error());
+        if (link) {
+            if (auto h = link->hello(); !h) status = std::unexpected(h.error());
+            else if (auto c = link->configure(profile::controller_config(p)); !c) status = std::unexpected(c.error());
+            else status = link->status();
+        }
+        if (!status) {
+            const auto why = qs(located(status.error(), record->device).to_string());
+            log(why);
+            show_fault(tr("Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.")
+                           .arg(device, why));
+            return false;
+        }
+        status_ = tr("Connected to %1: %2").arg(device, qs(link::explain_status(*status)));
+        fault_->clear();
+    }
+    start_runner(printer);
+    select_device(device);
     Q_EMIT message(tr("Connected to %1").arg(devices_->currentText()), false);
-    start_next();
+    refresh();
     return true;
 }
 
 void PrinterPanel::disconnect_device() {
-    if (running_) cancel_job();
-    status_timer_.stop();
-    if (embosser_) log(tr("Disconnected from %1").arg(QString::fromStdString(embosser_->device())));
-    embosser_.reset();
+    stop_runner();
+    if (!printer_.empty()) log(tr("Disconnected from printer %1").arg(qs(printer_)));
+    printer_.clear();
+    status_.clear();
     connect_->setText(tr("&Connect"));
-    set_status(tr("Not connected"));
+    update_status();
     update_buttons();
 }
 
-void PrinterPanel::poll_status() {
-    if (!embosser_ || running_) return;  // during a job the link reports status itself
-    auto s = embosser_->status();
-    if (!s) {
-        const auto why = QString::fromStdString(s.error().to_string());
-        log(why);
-        set_status(tr("No answer from the embosser"));
-        show_fault(tr("The embosser does not answer (%1). Check the cable and the power switch.").arg(why));
+spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocument& pages,
+                                  const profile::PrinterProfile& p) {
+    const auto printer = setup_printer(selected_device(), p);
+    if (printer.empty()) return 0;
+    spool::JobSubmission job;
+    job.printer = printer;
+    job.title = title.toStdString();
+    job.document = spool::to_snapshot(pages);
+    job.sheets_per_copy = pages.sheet_count();
+    job.user = spool::this_user_name();
+    auto id = spool_->submit(job);
+    if (!id) {
+        show_fault(tr("Cannot queue %1: %2").arg(title, qs(id.error().to_string())));
+        return 0;
+    }
+    watch_[*id] = Watch{};  // followed from "queued", however soon the runner takes it
+    log(tr("Queued %1 as job %2 on printer %3").arg(title).arg(*id).arg(qs(printer)));
+    Q_EMIT message(tr("%1 added to the queue").arg(title), false);
+    if (!runner_ || printer_ != printer) start_runner(printer);
+    refresh();
+    select_job(*id);
+    return *id;
+}
+
+void PrinterPanel::poll() {
+    if (runner_) {
+        std::optional<Error> error;
+        {
+            std::lock_guard lock(runner_->mutex);
+            error = runner_->error;
+        }
+        if (error) {
+            // The runner stopped itself: nothing more could be recorded, so nothing more is embossed.
+            stop_runner();
+            connect_->setText(tr("&Connect"));
+            show_fault(tr("The print queue cannot be written (%1): this window stopped running printer %2")
+                           .arg(qs(error->to_string()), qs(printer_)));
+            update_status();
+        }
+    }
+    if (!spool_) {
+        if (!std::filesystem::exists(db_) || !open_spool(false)) return;
+    }
+    auto v = spool_->data_version();
+    if (v && *v == data_version_) return;
+    if (v) data_version_ = *v;
+    refresh();
+}
+
+void PrinterPanel::refresh() {
+    if (!spool_) {
+        update_status();
+        update_buttons();
         return;
     }
-    set_status(tr("Connected to %1: %2").arg(QString::fromStdString(embosser_->device()),
-                                              QString::fromStdString(explain_status(*s))));
-}
-
-int PrinterPanel::enqueue(const QString& name, const layout::PagedDocument& pages, const profile::PrinterProfile& p,
-                          std::size_t start_sheet) {
-    QueuedJob j;
-    j.id = next_id_++;
-    j.name = name;
-    j.pages = std::make_shared<const layout::PagedDocument>(pages);
-    j.profile = p;
-    j.start_sheet = start_sheet;
-    j.resume_sheet = start_sheet;
-    jobs_.push_back(j);
-    const int row = queue_->rowCount();
-    queue_->insertRow(row);
-    queue_->setItem(row, 0, new QTableWidgetItem(name));
-    queue_->setItem(row, 1, new QTableWidgetItem);
-    auto* bar = new QProgressBar(queue_);
-    bar->setAccessibleName(tr("Progress of %1").arg(name));
-    bar->setRange(0, 100);
-    bar->setValue(0);
-    queue_->setCellWidget(row, 2, bar);
-    queue_->setItem(row, 3, new QTableWidgetItem);
-    update_row(jobs_.back());
-    queue_->selectRow(row);
-    log(tr("Queued %1 (job %2) from sheet %3").arg(name).arg(j.id).arg(start_sheet));
-    Q_EMIT message(tr("%1 added to the queue").arg(name), false);
-    start_next();
-    return j.id;
-}
-
-QueuedJob* PrinterPanel::job(int id) {
-    for (auto& j : jobs_)
-        if (j.id == id) return &j;
-    return nullptr;
-}
-
-QueuedJob* PrinterPanel::selected_job() {
-    const int row = queue_->currentRow();
-    if (row >= 0 && row < static_cast<int>(jobs_.size())) return &jobs_[static_cast<std::size_t>(row)];
-    return running_ ? job(running_->id) : nullptr;
-}
-
-void PrinterPanel::update_row(const QueuedJob& j) {
-    const auto row = static_cast<int>(&j - jobs_.data());
-    auto* bar = static_cast<QProgressBar*>(queue_->cellWidget(row, 2));
-    const int pct = j.passes_total ? static_cast<int>(100 * j.passes_done / j.passes_total) : (j.state == QueuedJob::State::done ? 100 : 0);
-    // The bar's value is what a screen reader reads; a description per update
-    // only doubled the events (issue 14).
-    if (bar->value() != pct) bar->setValue(pct);
-    const auto state = state_text(j.state) + (j.message.isEmpty() ? QString() : QStringLiteral(": ") + j.message);
-    if (queue_->item(row, 1)->text() != state) queue_->item(row, 1)->setText(state);
-    const auto sheet = QString::number(j.resume_sheet);
-    if (queue_->item(row, 3)->text() != sheet) queue_->item(row, 3)->setText(sheet);
+    reload();
+    append_events();
+    update_status();
     update_buttons();
 }
 
-void PrinterPanel::on_progress(int id, std::size_t done, std::size_t total, std::size_t sheet) {
-    auto* j = job(id);
-    if (!j) return;
-    j->passes_done = done;
-    j->passes_total = total;
-    j->resume_sheet = sheet;
-    if (!j->steps) j->steps = std::make_shared<ProgressSteps>(j->pages->sheet_count() + 1 - j->start_sheet);
-    // The link reports every pass; the bar, the status and the screen reader
-    // hear only the steps (issue 14: one event per strike flooded Orca).
-    const auto step = j->steps->update(done, total, sheet + 1 - std::min(sheet, j->start_sheet));
-    if (!step) return;
-    update_row(*j);
-    set_status(tr("Embossing %1: sheet %2 of %3, %4 percent")
-                   .arg(j->name).arg(step->sheet).arg(step->sheets).arg(step->percent));
-    if (j->steps->speak(ProgressSteps::Clock::now()))
-        Q_EMIT message(step->by_sheet ? tr("%1: sheet %2 of %3").arg(j->name).arg(step->sheet).arg(step->sheets)
-                                      : tr("%1: %2 percent, sheet %3 of %4")
-                                            .arg(j->name).arg(step->percent / 10 * 10).arg(step->sheet).arg(step->sheets),
-                       false);
+void PrinterPanel::reload() {
+    auto all = spool_->jobs(true);
+    if (!all) {
+        show_fault(tr("Cannot read the print queue: %1").arg(qs(all.error().to_string())));
+        return;
+    }
+    std::vector<spool::JobRecord> shown;
+    std::size_t finished = 0;
+    for (auto& j : *all) {
+        if (spool::is_terminal(j.state) && ++finished > kFinishedShown) continue;
+        shown.push_back(std::move(j));
+    }
+    jobs_ = std::move(shown);
+    for (const auto& j : jobs_) {
+        // A finished job's progress no longer changes: read it once.
+        const auto seen = watch_.find(j.id);
+        if (spool::is_terminal(j.state) && seen != watch_.end() && seen->second.state == j.state &&
+            shown_.count(j.id))
+            continue;
+        Shown s;
+        std::size_t done = 0, total = 0;
+        if (auto progress = spool_->progress(j.id); progress) {
+            for (const auto& p : *progress) {
+                done += p.passes_done;
+                total += p.passes_total;
+                if (!s.sheet && !p.done()) s.sheet = p.sheet;
+            }
+        }
+        s.percent = j.state == spool::JobState::completed ? 100 : total ? static_cast<int>(100 * done / total) : 0;
+        follow(j, s, done, total);
+        shown_[j.id] = s;
+    }
+    show_jobs();
+}
+
+// What a screen reader hears of a job: its start, progress in steps, a fault,
+// and its end; other changes only update the row.
+void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t done, std::size_t total) {
+    const auto title = qs(j.title);
+    auto it = watch_.find(j.id);
+    if (it == watch_.end()) {
+        // Seen for the first time: what happened before is history, not news.
+        Watch w;
+        w.state = j.state;
+        w.reason = j.reason;
+        watch_.emplace(j.id, std::move(w));
+        return;
+    }
+    Watch& w = it->second;
+    const auto before = w.state;
+    w.state = j.state;
+    const bool reason_changed = w.reason != j.reason;
+    w.reason = j.reason;
+    if (before != j.state) {
+        if (j.state == spool::JobState::running && before == spool::JobState::queued) {
+            w.steps = std::make_unique<ProgressSteps>(std::max<std::size_t>(j.total_sheets(), 1));
+            log(tr("Embossing %1 (job %2) on %3").arg(title).arg(j.id).arg(qs(j.printer)));
+            Q_EMIT message(tr("Embossing %1").arg(title), false);
+        }
+        if (spool::is_terminal(j.state)) finished(j, s);
+    }
+    if (j.state == spool::JobState::paused && reason_changed && !j.reason.empty() &&
+        j.reason != "paused by the operator")
+        show_fault(tr("%1 paused: %2").arg(title, qs(j.reason)));
+    if (j.state == spool::JobState::queued && reason_changed && !j.reason.empty())
+        show_fault(tr("%1 waits: %2").arg(title, qs(j.reason)));
+    if (j.state == spool::JobState::running && !w.steps)
+        w.steps = std::make_unique<ProgressSteps>(std::max<std::size_t>(j.total_sheets(), 1));
+    if (j.state == spool::JobState::running && total) {
+        // The runner records every pass; the bar, the status and the screen
+        // reader hear only the steps (issue 14: one event per strike flooded Orca).
+        const auto step = w.steps->update(done, total, std::max<std::size_t>(s.sheet, 1));
+        if (step && w.steps->speak(ProgressSteps::Clock::now()))
+            Q_EMIT message(step->by_sheet ? tr("%1: sheet %2 of %3").arg(title).arg(step->sheet).arg(step->sheets)
+                                          : tr("%1: %2 percent, sheet %3 of %4")
+                                                .arg(title).arg(step->percent / 10 * 10).arg(step->sheet).arg(step->sheets),
+                           false);
+    }
+}
+
+void PrinterPanel::finished(const spool::JobRecord& j, const Shown& s) {
+    const auto title = qs(j.title);
+    watch_[j.id].steps.reset();
+    if (j.state == spool::JobState::completed) {
+        // Only this window's simulator has the strikes (serve's "sim" is its own).
+        const auto printer = spool_->printer(j.printer_id);
+        if (runner_ && sim_ && j.printer == printer_ && printer && printer->device == kSim) {
+            check_strikes(j);
+            return;
+        }
+        const auto text = tr("Embossed %1").arg(title);
+        log(text);
+        Q_EMIT message(text, false);
+        Q_EMIT job_finished(j.id, true, text);
+        return;
+    }
+    QString text;
+    if (j.state == spool::JobState::cancelled) {
+        text = s.sheet ? tr("%1 cancelled; resume from sheet %2").arg(title).arg(s.sheet) : tr("%1 cancelled").arg(title);
+    } else {
+        text = tr("%1 stopped: %2. The job is kept; fix the problem, then resume it.").arg(title, qs(j.reason));
+        show_fault(text);
+    }
+    log(text);
+    Q_EMIT message(text, j.state == spool::JobState::failed);
+    Q_EMIT job_finished(j.id, false, text);
+}
+
+// On the built-in simulator the app compares what the simulated 89C52 struck
+// with the plan, off the GUI thread (planning a book takes a while).
+void PrinterPanel::check_strikes(const spool::JobRecord& j) {
+    auto doc = spool_->document_snapshot(j.id);
+    auto printer = spool_->printer(j.printer_id);
+    if (!doc || !printer) return;
+    auto* watcher = new QFutureWatcher<QString>(this);
+    const auto title = qs(j.title);
+    const auto id = j.id;
+    connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, title, id] {
+        const auto check = watcher->result();
+        watcher->deleteLater();
+        const auto text = tr("Embossed %1").arg(title) + (check.isEmpty() ? QString() : QStringLiteral(": ") + check);
+        log(text);
+        Q_EMIT message(text, false);
+        Q_EMIT job_finished(id, true, text);
+    });
+    watcher->setFuture(QtConcurrent::run(
+        [document = *doc, profile = printer->profile_json, j, strikes = sim_->strikes()] {
+            return strike_check(document, profile, j, strikes);
+        }));
+}
+
+void PrinterPanel::show_jobs() {
+    const auto selected = selected_job();
+    const auto set_text = [this](int row, int col, const QString& text) {
+        auto* item = queue_->item(row, col);
+        if (!item) queue_->setItem(row, col, new QTableWidgetItem(text));
+        else if (item->text() != text) item->setText(text);  // an unchanged text sends no event
+    };
+    const int rows = static_cast<int>(jobs_.size());
+    if (queue_->rowCount() != rows) queue_->setRowCount(rows);
+    for (int row = 0; row < rows; ++row) {
+        const auto& j = jobs_[static_cast<std::size_t>(row)];
+        const auto& s = shown_[j.id];
+        set_text(row, col_job, QString::number(j.id));
+        set_text(row, col_document, qs(j.title));
+        set_text(row, col_printer, qs(j.printer));
+        set_text(row, col_state, state_text(j.state) + (j.reason.empty() ? QString() : QStringLiteral(": ") + qs(j.reason)));
+        set_text(row, col_sheet, s.sheet ? QString::number(s.sheet) : QString());
+        auto* bar = static_cast<QProgressBar*>(queue_->cellWidget(row, col_progress));
+        if (!bar) {
+            bar = new QProgressBar(queue_);
+            bar->setRange(0, 100);
+            queue_->setCellWidget(row, col_progress, bar);
+        }
+        const auto name = tr("Progress of %1").arg(qs(j.title));
+        if (bar->accessibleName() != name) bar->setAccessibleName(name);
+        // The bar moves in tenths (issue 14: its value is what a screen reader reads).
+        const int pct = s.percent == 100 ? 100 : s.percent / 10 * 10;
+        if (bar->value() != pct) bar->setValue(pct);
+    }
+    if (selected) select_job(*selected);
+}
+
+std::optional<spool::JobId> PrinterPanel::selected_job() const {
+    const int row = queue_->currentRow();
+    if (row >= 0 && row < static_cast<int>(jobs_.size()) && queue_->selectionModel()->isRowSelected(row, {}))
+        return jobs_[static_cast<std::size_t>(row)].id;
+    if (auto e = embossing()) return e->id;
+    return std::nullopt;
+}
+
+void PrinterPanel::select_job(spool::JobId id) {
+    for (std::size_t i = 0; i < jobs_.size(); ++i)
+        if (jobs_[i].id == id) {
+            if (queue_->currentRow() != static_cast<int>(i)) queue_->selectRow(static_cast<int>(i));
+            return;
+        }
+}
+
+std::optional<spool::JobRecord> PrinterPanel::embossing() const {
+    if (!runner_) return std::nullopt;
+    const auto token = runner_->runner->token();
+    for (const auto& j : jobs_)
+        if ((j.state == spool::JobState::running || j.state == spool::JobState::paused) && j.runner == token) return j;
+    return std::nullopt;
+}
+
+void PrinterPanel::append_events() {
+    auto events = spool_->events(std::nullopt, last_event_ ? 200 : 50);
+    if (!events) return;
+    for (const auto& e : *events) {
+        if (e.id <= last_event_) continue;
+        last_event_ = e.id;
+        log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + qs(e.kind) + QStringLiteral(": ") + qs(e.message));
+    }
+}
+
+void PrinterPanel::update_status() {
+    QString text;
+    if (printer_.empty()) {
+        text = tr("Not connected");
+    } else {
+        QString who;
+        if (runner_) {
+            who = tr("run by this window");
+        } else if (spool_) {
+            auto p = spool_->printer(printer_);
+            who = p && !p->runner.empty() ? tr("run by %1").arg(qs(p->runner))
+                                          : tr("no runner: start tactus-cli serve or press Connect");
+        }
+        QString doing;
+        for (const auto& j : jobs_)
+            if (j.printer == printer_ && (j.state == spool::JobState::running || j.state == spool::JobState::paused)) {
+                doing = tr("%1 %2").arg(state_text(j.state), qs(j.title));
+                break;
+            }
+        text = tr("Printer %1, %2").arg(qs(printer_), who) + (doing.isEmpty() ? QString() : QStringLiteral(": ") + doing);
+        if (!status_.isEmpty() && doing.isEmpty()) text += QStringLiteral(". ") + status_;
+    }
+    if (status_label_->text() != text) status_label_->setText(text);  // an unchanged text sends no event
 }
 
 void PrinterPanel::update_buttons() {
-    const QueuedJob* r = running_ ? job(running_->id) : nullptr;
-    const bool any_queued = std::any_of(jobs_.begin(), jobs_.end(),
-                                        [](const QueuedJob& j) { return j.state == QueuedJob::State::queued; });
-    const bool any_stopped = std::any_of(jobs_.begin(), jobs_.end(), [](const QueuedJob& j) {
-        return j.state == QueuedJob::State::failed || j.state == QueuedJob::State::cancelled;
-    });
-    pause_->setEnabled(r && r->state == QueuedJob::State::running);
-    resume_->setEnabled((r && r->state == QueuedJob::State::paused) || (!r && any_stopped));
-    cancel_->setEnabled(r != nullptr || any_queued);
-    from_page_->setEnabled(!jobs_.empty());
-}
-
-void PrinterPanel::start_next() {
-    if (running_ || !embosser_) return;
-    auto it = std::find_if(jobs_.begin(), jobs_.end(), [](const QueuedJob& j) { return j.state == QueuedJob::State::queued; });
-    if (it == jobs_.end()) return;
-    it->state = QueuedJob::State::running;
-    it->message.clear();
-    update_row(*it);
-    fault_->clear();
-    running_ = std::make_unique<Running>();
-    running_->id = it->id;
-    const int id = it->id;
-    auto pages = it->pages;
-    auto prof = it->profile;
-    const auto start = it->start_sheet;
-    auto* e = &*embosser_;
-    auto* cancel = &running_->cancel;
-    QPointer<PrinterPanel> self(this);
-    log(tr("Embossing %1 from sheet %2").arg(it->name).arg(start));
-    set_status(tr("Embossing %1").arg(it->name));
-    Q_EMIT message(tr("Embossing %1").arg(it->name), false);
-    // Progress crosses to the GUI thread as queued calls; the worker touches no widget.
-    const auto post = [self](std::function<void(PrinterPanel&)> f) {
-        QMetaObject::invokeMethod(qApp, [self, f = std::move(f)] {
-            if (self) f(*self);
-        }, Qt::QueuedConnection);
+    std::optional<spool::JobRecord> job;
+    if (const auto id = selected_job())
+        for (const auto& j : jobs_)
+            if (j.id == *id) job = j;
+    // A request the runner has not carried out yet counts as done: Alt+P turns
+    // the buttons at once, as the click is heard.
+    std::optional<spool::JobState> state = job ? std::optional(job->state) : std::nullopt;
+    if (job && job->control == spool::Control::pause) state = spool::JobState::paused;
+    if (job && job->control == spool::Control::resume) state = spool::JobState::running;
+    const bool cancelling = job && job->control == spool::Control::cancel;
+    const std::pair<QWidget*, bool> wanted[] = {
+        {pause_, !cancelling && (state == spool::JobState::running || state == spool::JobState::queued)},
+        {resume_, !cancelling && (state == spool::JobState::paused || state == spool::JobState::failed ||
+                                  state == spool::JobState::cancelled)},
+        {cancel_, !cancelling && state && !spool::is_terminal(*state)},
+        {from_page_, state && *state != spool::JobState::running},
+        {faults_box_, selected_device() == QLatin1String(kSim)},
     };
-    connect(&running_->watcher, &QFutureWatcher<Outcome>::finished, this, [this, id] { finished_job(id); });
-    update_buttons();  // Pause and Cancel now reach the running job
-    running_->watcher.setFuture(QtConcurrent::run([=]() -> Outcome {
-        Outcome out;
-        auto plan = plan::plan_job(*pages, prof);
-        if (!plan) {
-            out.message = tr("Cannot plan the job: %1").arg(QString::fromStdString(plan.error().to_string()));
-            out.resume_sheet = start;
-            return out;
-        }
-        const auto log_before = e->simulator() ? e->simulator()->strike_log().size() : 0;
-        post([id, total = std::accumulate(plan->sheets.begin(), plan->sheets.end(), std::size_t{0},
-                                          [&](std::size_t n, const plan::SheetPlan& s) {
-                                              return s.index >= start ? n + s.passes.size() : n;
-                                          }),
-              sheets = static_cast<std::size_t>(std::count_if(plan->sheets.begin(), plan->sheets.end(),
-                                                              [&](const plan::SheetPlan& s) { return s.index >= start; }))](
-                 PrinterPanel& p) {
-            if (auto* j = p.job(id)) {
-                j->passes_total = total;
-                j->steps = std::make_shared<ProgressSteps>(sheets);
-                p.update_row(*j);
-            }
-        });
-        auto result = e->link().send_job(*plan, start, [&](const link::Progress& pr) {
-            if (pr.executed) {
-                const auto done = pr.executed->passes_done, total = pr.executed->passes_total;
-                const auto sheet = pr.executed->sheet;
-                post([id, done, total, sheet](PrinterPanel& p) { p.on_progress(id, done, total, sheet); });
-                return;
-            }
-            const auto note = QString::fromStdString(pr.note);
-            const auto faults = pr.status.ack.faults;
-            post([note, faults](PrinterPanel& p) {
-                p.log(note);
-                if (faults) p.show_fault(QString::fromStdString(explain_faults(faults)));
-            });
-        }, *cancel);
-        if (!result) {
-            out.message = QString::fromStdString(result.error().to_string());
-            out.resume_sheet = start;
-            return out;
-        }
-        out.passes_done = result->passes_done;
-        out.resume_sheet = result->resume_sheet ? result->resume_sheet : start;
-        out.completed = result->end == link::JobEnd::completed;
-        out.cancelled = result->end == link::JobEnd::cancelled;
-        const auto& st = result->stats;
-        post([st](PrinterPanel& p) {
-            p.log(tr("Link: %1 frames sent, %2 resent, %3 bytes, %4 NAKs, %5 timeouts, %6 reconnects, %7 restarts")
-                      .arg(st.frames_sent).arg(st.frames_resent).arg(st.bytes_written).arg(st.naks)
-                      .arg(st.timeouts).arg(st.reconnects).arg(st.restarts));
-        });
-        if (result->end == link::JobEnd::failed) {
-            const auto& err = result->error;
-            out.message = QString::fromStdString(err.to_string());
-        }
-        if (out.completed && e->simulator()) {
-            // The simulator logs every dot it struck: compare with what was planned.
-            auto expected = controller::planned_strikes(*plan);
-            expected.erase(std::remove_if(expected.begin(), expected.end(),
-                                          [&](const controller::LoggedStrike& s) { return s.sheet < start; }),
-                           expected.end());
-            const auto& log = e->simulator()->strike_log();
-            const std::vector<controller::LoggedStrike> got(log.begin() + static_cast<std::ptrdiff_t>(log_before), log.end());
-            out.check = got == expected ? tr("all %1 strikes checked against the plan").arg(got.size())
-                                        : tr("%1 strikes embossed but %2 planned: the simulator disagrees with the plan")
-                                              .arg(got.size()).arg(expected.size());
-        }
-        return out;
-    }));
+    // Enable first, then disable: a pressed button that turns off hands the
+    // focus to the next one in the row (Pause -> Resume), not out of the panel.
+    for (const auto& [w, on] : wanted)
+        if (on) w->setEnabled(true);
+    for (const auto& [w, on] : wanted)
+        if (!on) w->setEnabled(false);
 }
 
-void PrinterPanel::finished_job(int id) {
-    const auto out = running_->watcher.result();
-    running_.reset();
-    auto* j = job(id);
-    if (!j) return;
-    j->passes_done = out.completed ? j->passes_total : j->passes_done;
-    j->resume_sheet = out.resume_sheet;
-    QString text;
-    if (out.completed) {
-        j->state = QueuedJob::State::done;
-        j->message = out.check;
-        text = tr("Embossed %1").arg(j->name) + (out.check.isEmpty() ? QString() : QStringLiteral(": ") + out.check);
-    } else if (out.cancelled) {
-        j->state = QueuedJob::State::cancelled;
-        text = tr("%1 cancelled; resume from sheet %2").arg(j->name).arg(j->resume_sheet);
-    } else {
-        j->state = QueuedJob::State::failed;
-        j->message = out.message;
-        text = tr("%1 stopped at sheet %2: %3. The queue is kept; fix the problem, then resume from sheet %2.")
-                   .arg(j->name).arg(j->resume_sheet).arg(out.message);
-        show_fault(text);
+void PrinterPanel::act(int action, std::optional<std::size_t> sheet) {
+    const auto id = selected_job();
+    if (!id || !spool_) return;
+    auto j = spool_->act(*id, static_cast<spool::Action>(action), sheet);
+    if (!j) {
+        Q_EMIT message(qs(j.error().message), true);
+        return;
     }
-    update_row(*j);
-    // "idle" again, now that the job is over; after a failure the fault stays what was said.
-    if (j->state != QueuedJob::State::failed) poll_status();
-    log(text);
-    Q_EMIT message(text, j->state == QueuedJob::State::failed);
-    Q_EMIT job_finished(id, out.completed, text);
-    // After a failure the queue waits: the next job would meet the same problem.
-    if (j->state != QueuedJob::State::failed) start_next();
+    log(tr("Job %1: %2 sent to the queue").arg(*id).arg(qs(spool::to_string(static_cast<spool::Action>(action)))));
+    refresh();
 }
 
 void PrinterPanel::pause_job() {
-    if (!running_ || !embosser_) return;
-    embosser_->link().request_pause();
-    if (auto* j = job(running_->id)) {
-        j->state = QueuedJob::State::paused;
-        update_row(*j);
-    }
-    log(tr("Pause requested: the embosser stops at the end of the current move"));
     Q_EMIT message(tr("Pausing"), false);
+    act(static_cast<int>(spool::Action::pause));
 }
 
 void PrinterPanel::resume_job() {
-    if (running_ && embosser_) {
-        embosser_->link().request_resume();
-        if (auto* j = job(running_->id)) {
-            j->state = QueuedJob::State::running;
-            update_row(*j);
-        }
-        log(tr("Resume requested"));
-        Q_EMIT message(tr("Resuming"), false);
-        return;
-    }
+    const auto id = selected_job();
+    const auto it = std::find_if(jobs_.begin(), jobs_.end(), [&](const auto& j) { return id && j.id == *id; });
+    if (it == jobs_.end()) return;
     // A stopped or cancelled job starts again where it stopped.
-    if (auto* j = selected_job(); j && (j->state == QueuedJob::State::failed || j->state == QueuedJob::State::cancelled))
-        resume_from_page(static_cast<int>(j->pages->geometry.first_page_of_sheet(j->resume_sheet) + 1));
+    const bool stopped = it->state == spool::JobState::failed || it->state == spool::JobState::cancelled;
+    Q_EMIT message(tr("Resuming"), false);
+    act(static_cast<int>(stopped ? spool::Action::retry : spool::Action::resume));
 }
 
-void PrinterPanel::cancel_job() {
-    if (running_) {
-        running_->cancel.cancel();
-        embosser_->link().request_resume();  // a paused job must run to notice the cancel
-        log(tr("Cancel requested"));
-        return;
-    }
-    if (auto* j = selected_job(); j && j->state == QueuedJob::State::queued) {
-        j->state = QueuedJob::State::cancelled;
-        update_row(*j);
-    }
-}
+void PrinterPanel::cancel_job() { act(static_cast<int>(spool::Action::cancel)); }
 
 void PrinterPanel::resume_from_page(int page) {
-    auto* j = selected_job();
-    if (!j || j->state == QueuedJob::State::running || j->state == QueuedJob::State::paused) return;
-    // Braille page numbers count from 1; a page before the first is no sheet.
-    const auto sheet = page < 1 ? 0 : j->pages->geometry.sheet_of_page(static_cast<std::size_t>(page) - 1);
-    if (sheet < 1 || sheet > j->pages->sheet_count()) {
-        Q_EMIT message(tr("Page %1 is not in %2 (it has %3 pages)").arg(page).arg(j->name).arg(j->pages->pages.size()), true);
+    const auto id = selected_job();
+    if (!id || !spool_) return;
+    const auto it = std::find_if(jobs_.begin(), jobs_.end(), [&](const auto& j) { return j.id == *id; });
+    if (it == jobs_.end()) return;
+    auto snapshot = spool_->document_snapshot(*id);
+    auto doc = snapshot ? spool::from_snapshot(*snapshot) : std::unexpected(snapshot.error());
+    auto sheet = doc ? spool::sheet_of_page(*doc, static_cast<std::size_t>(std::max(page, 0)))
+                     : std::unexpected(doc.error());
+    if (!sheet) {
+        Q_EMIT message(tr("%1: %2").arg(qs(it->title), qs(sheet.error().message)), true);
         return;
     }
-    // Copies: enqueue grows jobs_, which moves the job `j` points at.
-    const auto name = j->name;
-    const auto pages = j->pages;
-    const auto prof = j->profile;
-    enqueue(name, *pages, prof, sheet);
+    const bool stopped = spool::is_terminal(it->state);
+    Q_EMIT message(tr("%1 is embossed again from sheet %2").arg(qs(it->title)).arg(*sheet), false);
+    act(static_cast<int>(stopped ? spool::Action::retry : spool::Action::resume), *sheet);
+}
+
+void PrinterPanel::inject_paper_out() {
+    simulator().paper_out();
+    log(tr("Simulator: the paper runs out"));
+}
+void PrinterPanel::inject_pulled_cable() {
+    simulator().pull_cable(5);
+    log(tr("Simulator: the cable is pulled for 5 seconds"));
+}
+void PrinterPanel::inject_noise() {
+    simulator().noise(2, 0.01);
+    log(tr("Simulator: line noise for 2 seconds"));
+}
+void PrinterPanel::inject_reset() {
+    simulator().reset_controller();
+    log(tr("Simulator: the controller resets"));
 }
 
 }  // namespace tactus::gui

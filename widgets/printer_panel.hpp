@@ -1,102 +1,170 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The printer panel: device picker (the simulator always there), connect and
-// live controller status, the job queue with progress bars, pause / resume /
-// cancel / resume from a page, faults in plain words with what to do, and the
-// link log for technicians. Jobs run one at a time off the GUI thread.
-#include <QFutureWatcher>
+// The printer panel is a client of the spool (docs/spool.md), like `tactus-cli
+// queue` and the CUPS backend: Ctrl+P stores a job in the SQLite spool on the
+// chosen device's spool printer, so it survives quitting the app and `tactus-cli
+// serve` can finish it. The queue view is the spool's (jobs from the CLI, the
+// app and the network alike), read again whenever another process commits.
+// One runner per printer: the panel starts core's spool::Runner on a thread
+// when no live runner holds the printer, otherwise it only watches. Pause,
+// resume, cancel and resume-from-page are spool actions, carried out by
+// whichever runner holds the job.
+//
+// For technicians: a device picker that takes any device string, Connect
+// (HELLO, CONFIGURE with the profile being edited, STATUS), faults injected
+// into the built-in simulator, and the spool's event log.
 #include <QPointer>
 #include <QTimer>
 #include <QWidget>
+#include <filesystem>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
-#include "embosser.hpp"
 #include "layout/page.hpp"
+#include "profile/profile.hpp"
 #include "progress_steps.hpp"
+#include "spool/records.hpp"
 
 class QComboBox;
+class QGroupBox;
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
 
-namespace tactus::gui {
+namespace tactus::controller {
+class BuiltInSimulator;
+}
+namespace tactus::spool {
+class Spool;
+}
 
-struct QueuedJob {
-    enum class State { queued, running, paused, done, failed, cancelled };
-    int id = 0;
-    QString name;
-    std::shared_ptr<const layout::PagedDocument> pages;
-    profile::PrinterProfile profile;
-    std::size_t start_sheet = 1;
-    State state = State::queued;
-    std::size_t passes_done = 0;
-    std::size_t passes_total = 0;
-    std::size_t resume_sheet = 1;
-    QString message;
-    std::shared_ptr<ProgressSteps> steps;  // when the bar moves and what is spoken
-};
+namespace tactus::gui {
 
 class PrinterPanel : public QWidget {
     Q_OBJECT
 public:
+    // The spool at spool::spool_path() ($TACTUS_SPOOL_DB, else the XDG data folder).
     explicit PrinterPanel(QWidget* parent = nullptr);
+    // Stops this window's runner: a job it was embossing goes back to the queue
+    // (the sheet in the machine is discarded), for the next runner to finish.
     ~PrinterPanel() override;
 
+    // Where Connect and Ctrl+P take the profile from (the profile editor's);
+    // default_profile() until set.
+    void set_profile_source(std::function<profile::PrinterProfile()> source);
+
+    // Connect: checks the device string, sets up its spool printer with `p`
+    // (a new printer, or the existing one's profile replaced by `p`), and unless
+    // another live runner holds the printer, talks to the controller (HELLO,
+    // CONFIGURE from `p`, STATUS) and starts this window's runner on it.
     bool connect_device(const QString& device, const profile::PrinterProfile& p);
+    // Stops this window's runner and lets go of the printer.
     void disconnect_device();
-    [[nodiscard]] bool connected() const { return embosser_.has_value(); }
+    // This window runs or watches a printer.
+    [[nodiscard]] bool connected() const { return !printer_.empty(); }
+    // This window's runner holds the printer.
+    [[nodiscard]] bool runs_printer() const { return runner_ != nullptr; }
     [[nodiscard]] QString selected_device() const;
+    // Chooses a listed device, or types the device string into the picker.
     void select_device(const QString& device);
-    // Adds a job; it starts when the printer is connected and free.
-    int enqueue(const QString& name, const layout::PagedDocument& pages, const profile::PrinterProfile& p,
-                std::size_t start_sheet = 1);
-    [[nodiscard]] const std::vector<QueuedJob>& jobs() const { return jobs_; }
+
+    // Ctrl+P: stores `pages` as a job on the chosen device's spool printer (set
+    // up with `p` if needed, as `emboss --queue --device` does) and makes sure a
+    // runner serves the printer. An unreachable embosser does not stop it: the
+    // job waits in the queue. Returns the spool job id, or 0 with the fault shown.
+    spool::JobId submit(const QString& title, const layout::PagedDocument& pages, const profile::PrinterProfile& p);
+
+    // The spool's jobs as the queue view shows them (all printers; unfinished
+    // first in queue order, then the 100 most recent finished ones).
+    [[nodiscard]] const std::vector<spool::JobRecord>& jobs() const { return jobs_; }
+    // A job this window's runner is embossing (running or paused on the machine).
+    [[nodiscard]] std::optional<spool::JobRecord> embossing() const;
     [[nodiscard]] QString fault_text() const;
     [[nodiscard]] QString log_text() const;
-    [[nodiscard]] Embosser* embosser() { return embosser_ ? &*embosser_ : nullptr; }
+    [[nodiscard]] QString status_text() const;
+    [[nodiscard]] std::filesystem::path spool_path() const { return db_; }
+    // The built-in simulator ("sim"), made on first use; it lives as long as the panel.
+    controller::BuiltInSimulator& simulator();
+    // Reads the spool now (a timer also does it whenever another process commits).
+    void refresh();
+    // The job selected in the queue view, else the job being embossed.
+    [[nodiscard]] std::optional<spool::JobId> selected_job() const;
+    void select_job(spool::JobId id);
 
 public Q_SLOTS:
     void refresh_devices();
     void pause_job();
     void resume_job();
     void cancel_job();
-    // Queues the selected job again from the sheet holding braille page `page`.
+    // Embosses the selected job again from the sheet holding braille page `page`.
     void resume_from_page(int page);
+    // Faults for the built-in simulator (the technician's test bench).
+    void inject_paper_out();
+    void inject_pulled_cable();
+    void inject_noise();
+    void inject_reset();
 
 Q_SIGNALS:
     void message(const QString& text, bool error);
-    void job_finished(int id, bool completed, const QString& text);
+    void job_finished(qint64 id, bool completed, const QString& text);
 
 private:
-    struct Running;
-    void start_next();
-    void finished_job(int id);
-    void update_row(const QueuedJob& job);
-    void log(const QString& line);
-    void poll_status();
-    void show_fault(const QString& text);
-    void set_status(const QString& text);
-    void on_progress(int id, std::size_t done, std::size_t total, std::size_t sheet);
+    struct AppRunner;
+    struct Watch {
+        spool::JobState state = spool::JobState::queued;
+        std::string reason;
+        std::unique_ptr<ProgressSteps> steps;
+    };
+    struct Shown {
+        int percent = 0;
+        std::size_t sheet = 0;  // first unfinished sheet (0: none)
+    };
+    spool::Spool* open_spool(bool create);
+    // The spool printer for the chosen device with profile `p`; empty on error (shown).
+    std::string setup_printer(const QString& device, const profile::PrinterProfile& p);
+    void start_runner(const std::string& printer);
+    void stop_runner();
+    void poll();
+    void reload();
+    void show_jobs();
+    void follow(const spool::JobRecord& job, const Shown& shown, std::size_t passes_done, std::size_t passes_total);
+    void finished(const spool::JobRecord& job, const Shown& shown);
+    void check_strikes(const spool::JobRecord& job);
+    void append_events();
+    void update_status();
     void update_buttons();
-    QueuedJob* job(int id);
-    QueuedJob* selected_job();
+    void log(const QString& line);
+    void show_fault(const QString& text);
+    void act(int action, std::optional<std::size_t> sheet = {});
+
+    std::filesystem::path db_;
+    std::unique_ptr<spool::Spool> spool_;
+    std::function<profile::PrinterProfile()> profile_source_;
+    std::shared_ptr<controller::BuiltInSimulator> sim_;
+    std::unique_ptr<AppRunner> runner_;
+    std::string printer_;  // the spool printer this window runs or watches
+    std::vector<spool::JobRecord> jobs_;
+    std::map<spool::JobId, Shown> shown_;
+    std::map<spool::JobId, Watch> watch_;
+    std::int64_t data_version_ = -1;
+    std::int64_t last_event_ = 0;
+    QString status_;
 
     QComboBox* devices_;
     QPushButton* connect_;
-    QLabel* status_;
+    QLabel* status_label_;
     QLabel* fault_;
     QTableWidget* queue_;
     QPushButton *pause_, *resume_, *cancel_, *from_page_;
     QSpinBox* page_;
+    QGroupBox* faults_box_;
     QPlainTextEdit* log_;
-    std::optional<Embosser> embosser_;
-    std::vector<QueuedJob> jobs_;
-    int next_id_ = 1;
-    std::unique_ptr<Running> running_;
-    QTimer status_timer_;
+    QTimer poll_timer_;
 };
 
 }  // namespace tactus::gui

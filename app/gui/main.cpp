@@ -7,13 +7,17 @@
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTimer>
+#include <QSocketNotifier>
 #include <QTranslator>
+#include <csignal>
 #include <cstdio>
+#include <unistd.h>
 
 #include "announcer.hpp"
 #include "editor_widget.hpp"
 #include "main_window.hpp"
 #include "preview_panel.hpp"
+#include "printer_panel.hpp"
 
 using namespace tactus::gui;
 
@@ -26,6 +30,15 @@ bool wants_text_only(int argc, char** argv) {
         if (a == "--help" || a == "-h" || a == "--help-all" || a == "--version" || a == "-v") return true;
     }
     return false;
+}
+
+// SIGTERM and SIGINT (a session ending, a script) quit the event loop; the
+// window's destructor then stops its spool runner, so the job it was embossing
+// waits in the queue. No question is asked: nobody is there to answer.
+int g_signal_pipe[2] = {-1, -1};
+extern "C" void on_quit_signal(int) {
+    const char c = 1;
+    (void)!write(g_signal_pipe[1], &c, 1);
 }
 
 }  // namespace
@@ -70,7 +83,10 @@ int main(int argc, char** argv) {
                                            QApplication::translate("main", "Emboss the file on the last used embosser once it is open."));
     const QCommandLineOption no_recovery(QStringLiteral("no-recovery"),
                                          QApplication::translate("main", "Do not offer to recover autosaved work."));
-    cli.addOptions({table, side, sheet, language, screenshot, panel_name, emboss_option, no_recovery});
+    const QCommandLineOption device_option(QStringLiteral("device"),
+                                           QApplication::translate("main", "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3."),
+                                           QStringLiteral("device"));
+    cli.addOptions({table, side, sheet, language, screenshot, panel_name, emboss_option, no_recovery, device_option});
     cli.process(app);
 
     const QLocale locale = cli.isSet(language) ? QLocale(cli.value(language)) : QLocale::system();
@@ -83,7 +99,14 @@ int main(int argc, char** argv) {
         QApplication::installTranslator(&translator);
 
     install_accessibility();
+    if (pipe(g_signal_pipe) == 0) {
+        auto* quit_notifier = new QSocketNotifier(g_signal_pipe[0], QSocketNotifier::Read, &app);
+        QObject::connect(quit_notifier, &QSocketNotifier::activated, &app, [] { QApplication::quit(); });
+        std::signal(SIGTERM, on_quit_signal);
+        std::signal(SIGINT, on_quit_signal);
+    }
     MainWindow window;
+    if (cli.isSet(device_option)) window.printer_panel()->select_device(cli.value(device_option));
     const bool shooting = cli.isSet(screenshot);
     window.set_interactive(!shooting);
     if (cli.isSet(table)) window.set_table(cli.value(table));

@@ -160,6 +160,8 @@ void SimController::reset_at_strike(std::size_t nth, bool keep_ram) {
     reset_keeps_ram_ = keep_ram;
 }
 
+void SimController::remove_paper() { paper_present_ = false; }
+
 void SimController::load_paper() {
     paper_present_ = true;
     paper_out_sheet_.reset();
@@ -531,6 +533,7 @@ bool SimController::start_next_op(double now) {
                 l.carriage_step = carriage_;
                 l.feed_step = feed_;
                 l.pass_index = pass_index_;
+                l.job_id = job_id_;
                 l.time_s = now + wait;
                 l.x_mm = carriage_ * 1000.0 / config_.carriage_steps_per_m;
                 l.y_mm = feed_ * 1000.0 / config_.feed_steps_per_m;

@@ -31,10 +31,12 @@ struct LoggedStrike {
     std::int32_t carriage_step = 0;
     std::int32_t feed_step = 0;
     std::uint16_t pass_index = 0;
+    std::uint16_t job_id = 0;  // the controller job (JOB_BEGIN's id) it belongs to
     double time_s = 0;  // simulated time
     double x_mm = 0;    // carriage_step mapped back with the configured steps/mm
     double y_mm = 0;
-    // Time is not part of identity: a retried job strikes later, not differently.
+    // Time (and the job id) are not part of identity: a retried job strikes
+    // later and under another id, not differently.
     bool operator==(const LoggedStrike& o) const {
         return sheet == o.sheet && side == o.side && hammer == o.hammer &&
                carriage_step == o.carriage_step && feed_step == o.feed_step;
@@ -74,6 +76,7 @@ public:
     // Fault injection.
     void inject_paper_out_at_sheet(std::uint16_t sheet);  // sheet N has no paper when loaded
     void load_paper();                                    // operator loads paper
+    void remove_paper();  // the feeder runs empty now: the next sheet loaded finds none
     void inject_limit_switch_at_strike(std::size_t nth);  // trips before the nth strike (1-based)
     void inject_hammer_fault_at_strike(std::size_t nth);
     void warm_reset(double now);   // watchdog/RST: registers reset, RAM (progress) kept

@@ -47,6 +47,8 @@ public:
     void unplug_between(double from, double to) { unplugged_ = {from, to}; }
     // The line goes dead for [from, to): bytes are lost but the port stays open.
     void silence_between(double from, double to) { silent_ = {from, to}; }
+    // The line's noise from now on (the app's technician turns it on and off).
+    void set_noise(const LineNoise& noise) { options_.noise = noise; }
     // A watchdog reset (RAM kept) or power loss of the controller at time t.
     void reset_controller_at(double t, bool keep_ram) { reset_ = {t, keep_ram}; }
 

@@ -109,6 +109,9 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         }
     };
     auto finish = [&](JobEnd end, Error e) -> JobOutcome {
+        // Requests this stream did not get to are moot, not for the next one.
+        pause_req = false;
+        resume_req = false;
         JobOutcome out;
         out.end = end;
         out.passes_done = js.reported - js.first;
@@ -162,11 +165,15 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             return finish(JobEnd::cancelled, {});
         }
         Result<void> step{};
-        if (pause_req.exchange(false)) {
+        // A request made before the controller has begun this stream waits
+        // until it has: a PAUSE sent to an idle controller pauses nothing, and
+        // the job then ran on while the spool said "paused".
+        const bool begun = ack.job_id == js.job_id;
+        if (begun && pause_req.exchange(false)) {
             js.user_paused = true;
             step = send(FrameType::pause, {});
         }
-        if (step && resume_req.exchange(false)) {
+        if (step && begun && resume_req.exchange(false)) {
             js.user_paused = false;
             step = send(FrameType::resume, {});
         }

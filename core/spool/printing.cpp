@@ -28,6 +28,15 @@ plan::JobPlan repeat_plan(const plan::JobPlan& one, std::size_t copies) {
     return all;
 }
 
+Result<std::size_t> sheet_of_page(const layout::PagedDocument& doc, std::size_t page) {
+    if (page < 1 || page > doc.pages.size())
+        return fail(ErrorKind::input,
+                    "page " + std::to_string(page) + " is not in the job (it has " + std::to_string(doc.pages.size()) +
+                        " braille pages)",
+                    "page");
+    return doc.geometry.sheet_of_page(page - 1);
+}
+
 Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies) {
     auto one = plan::plan_job(doc, profile);

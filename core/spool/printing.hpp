@@ -24,6 +24,11 @@ inline constexpr const char* kPassesWhere = "passes";
 Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies);
 
+// The sheet carrying braille page `page` (1-based) of a stored job's first
+// copy (`queue resume --from-page`, the app's Resume from page). A page
+// beyond the document is an error naming both.
+Result<std::size_t> sheet_of_page(const layout::PagedDocument& doc, std::size_t page);
+
 // Copies of an already planned copy, renumbered (exposed for tests).
 plan::JobPlan repeat_plan(const plan::JobPlan& one, std::size_t copies);
 

@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <charconv>
 #include <csignal>
+#include <cstdlib>
+#include <pwd.h>
 #include <unistd.h>
 
 namespace tactus::spool {
@@ -18,6 +20,12 @@ std::string host_name() {
 }  // namespace
 
 std::string this_runner_token() { return host_name() + ":" + std::to_string(getpid()); }
+
+std::string this_user_name() {
+    if (const char* u = std::getenv("USER"); u && *u) return u;
+    if (const passwd* pw = getpwuid(getuid())) return pw->pw_name;
+    return "uid " + std::to_string(getuid());
+}
 
 bool runner_alive(std::string_view token) {
     const auto colon = token.rfind(':');

@@ -9,6 +9,8 @@
 namespace tactus::spool {
 
 std::string this_runner_token();
+// Who submits a job from this process: $USER, else the account name, else "uid N".
+std::string this_user_name();
 bool runner_alive(std::string_view token);
 
 }  // namespace tactus::spool

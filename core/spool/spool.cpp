@@ -424,6 +424,22 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
         SPOOL_LET(tx, sql::Transaction::begin(db_));
         SPOOL_LET(j, job_locked(id));
         const bool held = !j.runner.empty();
+        // The opposite request while one is still waiting for the runner
+        // withdraws it (Pause then Resume at once, before the runner looked):
+        // refusing the second left the job paused against the operator's word.
+        const bool withdraws = held && !resume_sheet &&
+                               ((action == Action::resume && j.control == Control::pause) ||
+                                (action == Action::pause && j.control == Control::resume));
+        if (withdraws) {
+            SPOOL_LET(w, db_.prepare("UPDATE jobs SET control = ?, updated_at = ? WHERE id = ?"));
+            w.bind(1, to_string(Control::none)).bind(2, now_seconds()).bind(3, id);
+            SPOOL_TRY(w.run());
+            SPOOL_TRY(insert_event(id, j.printer_id, to_string(action),
+                                   std::string(to_string(action)) + " requested by the operator: the " +
+                                       to_string(j.control) + " had not reached the runner and is withdrawn"));
+            SPOOL_TRY(tx.commit());
+            return job(id);
+        }
         auto t = apply(j.state, held, action);
         if (!t) return std::unexpected(located(t.error(), job_where(id)));
         if (resume_sheet) {

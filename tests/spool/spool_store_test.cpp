@@ -158,6 +158,32 @@ TEST(SpoolStore, OperatorActionsFollowTheStateMachineAndAreLogged) {
                                                "paused", "resume", "cancel", "cancelled", "retry"}));
 }
 
+TEST(SpoolStore, AnOppositeRequestWithdrawsOneTheRunnerHasNotTaken) {
+    TempDir dir;
+    Spool s = open_with_printer(dir / "spool.db");
+    const auto pid = s.printer("lab")->id;
+    const JobId id = *s.submit(submission("lab", 4));
+    const auto token = this_runner_token();
+    ASSERT_TRUE(s.claim_printer(pid, token));
+    ASSERT_TRUE(s.claim_next(pid, token, now_seconds()).value());
+    // Pause, then Resume before the runner looked: nothing is left for it.
+    EXPECT_EQ(s.act(id, Action::pause)->control, Control::pause);
+    auto resumed = s.act(id, Action::resume);
+    ASSERT_TRUE(resumed) << resumed.error().to_string();
+    EXPECT_EQ(resumed->state, JobState::running);
+    EXPECT_EQ(resumed->control, Control::none);
+    EXPECT_EQ(*s.take_control(id), Control::none);
+    // Paused on the printer: Resume, then Pause before the runner looked.
+    ASSERT_TRUE(s.set_state(id, JobState::paused, "paused by the operator", "paused", "stopped", /*held=*/true));
+    EXPECT_EQ(s.act(id, Action::resume)->control, Control::resume);
+    auto paused = s.act(id, Action::pause);
+    ASSERT_TRUE(paused) << paused.error().to_string();
+    EXPECT_EQ(paused->state, JobState::paused);
+    EXPECT_EQ(paused->control, Control::none);
+    const auto events = *s.events(id);
+    EXPECT_NE(events.back().message.find("had not reached the runner and is withdrawn"), std::string::npos);
+}
+
 TEST(SpoolStore, ProgressOnlyGrowsAndSpoilingRestartsASheet) {
     TempDir dir;
     Spool s = open_with_printer(dir / "spool.db");

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The desktop app's built-in simulated embosser: one simulated 89C52 and one
+// line for the app's whole life, so the controller keeps its job count across
+// connections as a real machine does (the spool's reconciliation reads it).
+// Each connection (the printer panel's Connect, the app's spool runner) gets a
+// stream onto that line; only one is used at a time. A technician injects
+// faults from another thread (the GUI's) while a runner thread streams: every
+// call goes through one mutex, and a fault takes effect at the line's next
+// moment in simulated time.
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "controller/sim_controller.hpp"
+#include "controller/sim_transport.hpp"
+#include "transport/byte_stream.hpp"
+
+namespace tactus::controller {
+
+class BuiltInSimulator {
+public:
+    explicit BuiltInSimulator(SimOptions options = default_options(), SimLineOptions line = {});
+
+    // A simulated operator loads paper 5 s after it runs out.
+    static SimOptions default_options();
+
+    // A new connection to the same controller.
+    std::unique_ptr<transport::ByteStream> connect();
+
+    // Faults, at the simulated moment the line is next used:
+    void paper_out();                      // the feeder runs empty (the operator reloads it)
+    void pull_cable(double seconds);       // reads, writes and reopen fail for this long
+    void noise(double seconds, double per_byte);  // bytes lost, flipped and doubled for this long
+    void reset_controller();               // a watchdog reset: registers lost, RAM (the count) kept
+
+    [[nodiscard]] std::vector<LoggedStrike> strikes() const;
+    // What the last CONFIGURE set (zeros before any).
+    [[nodiscard]] machine::ControllerConfig config() const;
+    [[nodiscard]] encode::Status status() const;
+
+private:
+    class Stream;
+    struct Pending {
+        bool paper_out = false;
+        std::optional<double> unplug_s;
+        std::optional<std::pair<double, double>> noise;  // seconds, rate
+        bool reset = false;
+    };
+    // Applies pending faults and ends a noise burst that is over; mutex held.
+    void apply_pending();
+
+    mutable std::mutex mutex_;
+    std::shared_ptr<SimController> controller_;
+    SimTransport line_;
+    Pending pending_;
+    double noise_until_ = -1;
+};
+
+}  // namespace tactus::controller
