@@ -8,12 +8,12 @@
         <translation>輸入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="68" />
+        <location filename="../../widgets/main_window.cpp" line="69" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="72" />
+        <location filename="../../widgets/main_window.cpp" line="73" />
         <source>Saving %1 failed: %2</source>
         <translation>儲存 %1 失敗：%2</translation>
     </message>
@@ -58,102 +58,122 @@
         <translation>明眼字與點字的分隔線</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="55" />
+        <location filename="../../widgets/motion_view.cpp" line="56" />
         <source>%1 s</source>
         <translation>%1 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="57" />
+        <location filename="../../widgets/motion_view.cpp" line="58" />
         <source>%1 min %2 s</source>
         <translation>%1 分 %2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="58" />
+        <location filename="../../widgets/motion_view.cpp" line="59" />
         <source>%1 h %2 min</source>
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="30" />
+        <location filename="../../widgets/printer_panel.cpp" line="52" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="31" />
+        <location filename="../../widgets/printer_panel.cpp" line="53" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="32" />
+        <location filename="../../widgets/printer_panel.cpp" line="54" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="33" />
+        <location filename="../../widgets/printer_panel.cpp" line="55" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="34" />
+        <location filename="../../widgets/printer_panel.cpp" line="56" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="35" />
+        <location filename="../../widgets/printer_panel.cpp" line="57" />
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
+        <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
+        <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="92" />
+        <source>all %1 strikes checked against the plan</source>
+        <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/gui/main.cpp" line="44" />
+        <location filename="../../app/gui/main.cpp" line="57" />
         <source>Braille editor and embosser print manager: edit print and braille side by side, preview interpoint sheets, emboss.</source>
         <translation>點字編輯器與點字印表機管理：並排編輯明眼字與點字、預覽雙面點字、送印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="50" />
+        <location filename="../../app/gui/main.cpp" line="63" />
         <source>Document to open (Markdown, text, DOCX, BRF, PEF).</source>
         <translation>要開啟的文件（Markdown、純文字、DOCX、BRF、PEF）。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="53" />
+        <location filename="../../app/gui/main.cpp" line="66" />
         <source>liblouis table, e.g. en-ueb-g2.ctb or zh-tw.ctb.</source>
         <translation>liblouis 點字表，例如 en-ueb-g2.ctb 或 zh-tw.ctb。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="56" />
+        <location filename="../../app/gui/main.cpp" line="69" />
         <source>Preview side: front, back or both.</source>
         <translation>預覽面：front、back 或 both。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="58" />
+        <location filename="../../app/gui/main.cpp" line="71" />
         <source>Sheet to preview.</source>
         <translation>要預覽的紙張。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="61" />
+        <location filename="../../app/gui/main.cpp" line="74" />
         <source>User interface language, e.g. zh_TW.</source>
         <translation>介面語言，例如 zh_TW。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="64" />
+        <location filename="../../app/gui/main.cpp" line="77" />
         <source>Save a picture of the window and quit.</source>
         <translation>儲存視窗畫面後結束。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="67" />
+        <location filename="../../app/gui/main.cpp" line="80" />
         <source>Panel to show: preview, motion, vibration, profile, printer.</source>
         <translation>要顯示的面板：preview、motion、vibration、profile、printer。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="70" />
+        <location filename="../../app/gui/main.cpp" line="83" />
         <source>Emboss the file on the last used embosser once it is open.</source>
         <translation>檔案開啟後，以上次使用的點字印表機列印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="72" />
+        <location filename="../../app/gui/main.cpp" line="85" />
         <source>Do not offer to recover autosaved work.</source>
         <translation>不要詢問是否復原自動儲存的內容。</translation>
+    </message>
+    <message>
+        <location filename="../../app/gui/main.cpp" line="87" />
+        <source>Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3.</source>
+        <translation>Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0 或 pty:/dev/pts/3。</translation>
     </message>
 </context>
 <context>
@@ -258,558 +278,575 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="84" />
-        <location filename="../../widgets/main_window.cpp" line="487" />
-        <location filename="../../widgets/main_window.cpp" line="612" />
+        <location filename="../../widgets/main_window.cpp" line="85" />
+        <location filename="../../widgets/main_window.cpp" line="491" />
+        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="627" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="94" />
+        <location filename="../../widgets/main_window.cpp" line="95" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="101" />
+        <location filename="../../widgets/main_window.cpp" line="102" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="102" />
+        <location filename="../../widgets/main_window.cpp" line="103" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="103" />
+        <location filename="../../widgets/main_window.cpp" line="104" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="108" />
+        <location filename="../../widgets/main_window.cpp" line="109" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="126" />
+        <location filename="../../widgets/main_window.cpp" line="129" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="128" />
+        <location filename="../../widgets/main_window.cpp" line="131" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="129" />
+        <location filename="../../widgets/main_window.cpp" line="132" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="136" />
+        <location filename="../../widgets/main_window.cpp" line="139" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="139" />
+        <location filename="../../widgets/main_window.cpp" line="142" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="198" />
+        <location filename="../../widgets/main_window.cpp" line="202" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="201" />
+        <location filename="../../widgets/main_window.cpp" line="205" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="202" />
+        <location filename="../../widgets/main_window.cpp" line="206" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="203" />
+        <location filename="../../widgets/main_window.cpp" line="207" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="203" />
+        <location filename="../../widgets/main_window.cpp" line="207" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="204" />
+        <location filename="../../widgets/main_window.cpp" line="208" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="204" />
+        <location filename="../../widgets/main_window.cpp" line="208" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="206" />
+        <location filename="../../widgets/main_window.cpp" line="210" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="206" />
+        <location filename="../../widgets/main_window.cpp" line="210" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="208" />
+        <location filename="../../widgets/main_window.cpp" line="212" />
+        <location filename="../../widgets/main_window.cpp" line="633" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="208" />
+        <location filename="../../widgets/main_window.cpp" line="212" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="209" />
+        <location filename="../../widgets/main_window.cpp" line="213" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="212" />
+        <location filename="../../widgets/main_window.cpp" line="216" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="216" />
+        <location filename="../../widgets/main_window.cpp" line="220" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="222" />
+        <location filename="../../widgets/main_window.cpp" line="226" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="224" />
+        <location filename="../../widgets/main_window.cpp" line="228" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="224" />
+        <location filename="../../widgets/main_window.cpp" line="228" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="226" />
+        <location filename="../../widgets/main_window.cpp" line="230" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="226" />
+        <location filename="../../widgets/main_window.cpp" line="230" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="237" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="237" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="254" />
+        <location filename="../../widgets/main_window.cpp" line="258" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="254" />
+        <location filename="../../widgets/main_window.cpp" line="258" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="255" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="255" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="260" />
+        <location filename="../../widgets/main_window.cpp" line="264" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="266" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="275" />
+        <location filename="../../widgets/main_window.cpp" line="279" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="280" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="287" />
+        <location filename="../../widgets/main_window.cpp" line="291" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="328" />
+        <location filename="../../widgets/main_window.cpp" line="332" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="333" />
+        <location filename="../../widgets/main_window.cpp" line="337" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
-        <location filename="../../widgets/main_window.cpp" line="450" />
+        <location filename="../../widgets/main_window.cpp" line="341" />
+        <location filename="../../widgets/main_window.cpp" line="454" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342" />
+        <location filename="../../widgets/main_window.cpp" line="346" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="359" />
+        <location filename="../../widgets/main_window.cpp" line="363" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="360" />
+        <location filename="../../widgets/main_window.cpp" line="364" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="366" />
+        <location filename="../../widgets/main_window.cpp" line="370" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="381" />
+        <location filename="../../widgets/main_window.cpp" line="385" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="389" />
+        <location filename="../../widgets/main_window.cpp" line="393" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="416" />
+        <location filename="../../widgets/main_window.cpp" line="420" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="421" />
+        <location filename="../../widgets/main_window.cpp" line="425" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="422" />
+        <location filename="../../widgets/main_window.cpp" line="426" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="439" />
+        <location filename="../../widgets/main_window.cpp" line="443" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="444" />
+        <location filename="../../widgets/main_window.cpp" line="448" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="463" />
+        <location filename="../../widgets/main_window.cpp" line="467" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="466" />
+        <location filename="../../widgets/main_window.cpp" line="470" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="466" />
+        <location filename="../../widgets/main_window.cpp" line="470" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="477" />
-        <location filename="../../widgets/main_window.cpp" line="613" />
-        <location filename="../../widgets/main_window.cpp" line="665" />
+        <location filename="../../widgets/main_window.cpp" line="481" />
+        <location filename="../../widgets/main_window.cpp" line="617" />
+        <location filename="../../widgets/main_window.cpp" line="682" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="498" />
+        <location filename="../../widgets/main_window.cpp" line="502" />
         <source>Save as Markdown</source>
         <translation>另存為 Markdown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="498" />
+        <location filename="../../widgets/main_window.cpp" line="502" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="520" />
+        <location filename="../../widgets/main_window.cpp" line="524" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="525" />
-        <location filename="../../widgets/main_window.cpp" line="563" />
+        <location filename="../../widgets/main_window.cpp" line="529" />
+        <location filename="../../widgets/main_window.cpp" line="567" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="526" />
+        <location filename="../../widgets/main_window.cpp" line="530" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="526" />
+        <location filename="../../widgets/main_window.cpp" line="530" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="528" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="549" />
+        <location filename="../../widgets/main_window.cpp" line="553" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="558" />
+        <location filename="../../widgets/main_window.cpp" line="562" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="565" />
+        <location filename="../../widgets/main_window.cpp" line="569" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="566" />
+        <location filename="../../widgets/main_window.cpp" line="570" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="577" />
+        <location filename="../../widgets/main_window.cpp" line="581" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="612" />
+        <location filename="../../widgets/main_window.cpp" line="616" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="717" />
+        <location filename="../../widgets/main_window.cpp" line="628" />
+        <source>%1 is being embossed. Quit anyway?</source>
+        <translation>%1 正在列印。仍要結束嗎？</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="630" />
+        <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
+        <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="634" />
+        <source>&amp;Keep embossing</source>
+        <translation>繼續列印(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="741" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="770" />
+        <location filename="../../widgets/main_window.cpp" line="794" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="785" />
+        <location filename="../../widgets/main_window.cpp" line="809" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="791" />
+        <location filename="../../widgets/main_window.cpp" line="815" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="797" />
+        <location filename="../../widgets/main_window.cpp" line="821" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="799" />
+        <location filename="../../widgets/main_window.cpp" line="823" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="800" />
+        <location filename="../../widgets/main_window.cpp" line="824" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="843" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="823" />
+        <location filename="../../widgets/main_window.cpp" line="847" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="849" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="849" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="854" />
+        <location filename="../../widgets/main_window.cpp" line="878" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="854" />
+        <location filename="../../widgets/main_window.cpp" line="878" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="855" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="855" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="856" />
+        <location filename="../../widgets/main_window.cpp" line="880" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="856" />
+        <location filename="../../widgets/main_window.cpp" line="880" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="857" />
+        <location filename="../../widgets/main_window.cpp" line="881" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="857" />
+        <location filename="../../widgets/main_window.cpp" line="881" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="858" />
+        <location filename="../../widgets/main_window.cpp" line="882" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="858" />
+        <location filename="../../widgets/main_window.cpp" line="882" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="859" />
+        <location filename="../../widgets/main_window.cpp" line="883" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="859" />
+        <location filename="../../widgets/main_window.cpp" line="883" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="865" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="866" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -817,181 +854,181 @@
 <context>
     <name>tactus::gui::MotionView</name>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="64" />
+        <location filename="../../widgets/motion_view.cpp" line="65" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="66" />
+        <location filename="../../widgets/motion_view.cpp" line="67" />
         <source>Pass</source>
         <translation>行程</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="68" />
+        <location filename="../../widgets/motion_view.cpp" line="69" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="69" />
+        <location filename="../../widgets/motion_view.cpp" line="70" />
         <source>Position (mm)</source>
         <translation>位置 (mm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="69" />
+        <location filename="../../widgets/motion_view.cpp" line="70" />
         <source>Velocity (mm/s)</source>
         <translation>速度 (mm/s)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="69" />
+        <location filename="../../widgets/motion_view.cpp" line="70" />
         <source>Acceleration (mm/s²)</source>
         <translation>加速度 (mm/s²)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="70" />
+        <location filename="../../widgets/motion_view.cpp" line="71" />
         <source>Jerk (mm/s³)</source>
         <translation>加加速度 (mm/s³)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="71" />
+        <location filename="../../widgets/motion_view.cpp" line="72" />
         <source>Compare prof&amp;ile shapes</source>
         <translation>比較運動曲線(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="75" />
+        <location filename="../../widgets/motion_view.cpp" line="76" />
         <source>&amp;Sheet:</source>
         <translation>紙張(&amp;S)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="76" />
+        <location filename="../../widgets/motion_view.cpp" line="77" />
         <source>P&amp;ass:</source>
         <translation>行程(&amp;A)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="77" />
+        <location filename="../../widgets/motion_view.cpp" line="78" />
         <source>Sho&amp;w:</source>
         <translation>顯示(&amp;W)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="84" />
+        <location filename="../../widgets/motion_view.cpp" line="85" />
         <source>Carriage motion chart</source>
         <translation>筆架運動圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="91" />
+        <location filename="../../widgets/motion_view.cpp" line="92" />
         <source>Time estimates</source>
         <translation>時間估計</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="97" />
+        <location filename="../../widgets/motion_view.cpp" line="98" />
         <source>Profile shapes on this pass</source>
         <translation>此行程的各種運動曲線</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="98" />
+        <location filename="../../widgets/motion_view.cpp" line="99" />
         <source>Profile shape</source>
         <translation>運動曲線</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="98" />
+        <location filename="../../widgets/motion_view.cpp" line="99" />
         <source>Pass time</source>
         <translation>行程時間</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="98" />
+        <location filename="../../widgets/motion_view.cpp" line="99" />
         <source>Versus lower bound</source>
         <translation>相對於下限</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="104" />
+        <location filename="../../widgets/motion_view.cpp" line="105" />
         <source>Strikes of this pass</source>
         <translation>此行程的擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="105" />
-        <location filename="../../widgets/motion_view.cpp" line="215" />
+        <location filename="../../widgets/motion_view.cpp" line="106" />
+        <location filename="../../widgets/motion_view.cpp" line="216" />
         <source>Time (ms)</source>
         <translation>時間 (ms)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="105" />
+        <location filename="../../widgets/motion_view.cpp" line="106" />
         <source>Carriage (mm)</source>
         <translation>筆架 (mm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="105" />
+        <location filename="../../widgets/motion_view.cpp" line="106" />
         <source>Side</source>
         <translation>面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="105" />
+        <location filename="../../widgets/motion_view.cpp" line="106" />
         <source>Residual (µm)</source>
         <translation>殘留振動 (µm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="148" />
+        <location filename="../../widgets/motion_view.cpp" line="149" />
         <source>No plan yet</source>
         <translation>尚未規劃</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="156" />
+        <location filename="../../widgets/motion_view.cpp" line="157" />
         <source>Sheet %1: %2 (lower bound %3, %4). Document, %5 sheets: %6 (lower bound %7, %8).</source>
         <translation>第 %1 張：%2（下限 %3，%4）。整份文件 %5 張：%6（下限 %7，%8）。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="164" />
+        <location filename="../../widgets/motion_view.cpp" line="165" />
         <source>This sheet is blank.</source>
         <translation>這張是空白的。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="168" />
+        <location filename="../../widgets/motion_view.cpp" line="169" />
         <source>Pass %1 (%2, %3 strikes): %4, lower bound %5.</source>
         <translation>行程 %1（%2，%3 個擊點）：%4，下限 %5。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="170" />
-        <location filename="../../widgets/motion_view.cpp" line="224" />
+        <location filename="../../widgets/motion_view.cpp" line="171" />
+        <location filename="../../widgets/motion_view.cpp" line="225" />
         <source>front</source>
         <translation>正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="170" />
-        <location filename="../../widgets/motion_view.cpp" line="224" />
+        <location filename="../../widgets/motion_view.cpp" line="171" />
+        <location filename="../../widgets/motion_view.cpp" line="225" />
         <source>back</source>
         <translation>背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="177" />
-        <location filename="../../widgets/motion_view.cpp" line="204" />
+        <location filename="../../widgets/motion_view.cpp" line="178" />
+        <location filename="../../widgets/motion_view.cpp" line="205" />
         <source>Planned (auto-tuned)</source>
         <translation>規劃（自動調校）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="181" />
+        <location filename="../../widgets/motion_view.cpp" line="182" />
         <source>Strikes</source>
         <translation>擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="194" />
+        <location filename="../../widgets/motion_view.cpp" line="195" />
         <source>Trapezoid</source>
         <translation>梯形</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="195" />
+        <location filename="../../widgets/motion_view.cpp" line="196" />
         <source>S-curve (smoothstep)</source>
         <translation>S 曲線（smoothstep）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="196" />
+        <location filename="../../widgets/motion_view.cpp" line="197" />
         <source>Jerk-limited (7 segments)</source>
         <translation>限制加加速度（7 段）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="217" />
+        <location filename="../../widgets/motion_view.cpp" line="218" />
         <source>Sheet %1, pass %2</source>
         <translation>第 %1 張，行程 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="229" />
+        <location filename="../../widgets/motion_view.cpp" line="230" />
         <source>%1 against time for sheet %2, pass %3: %4 strikes over %5; from %6 to %7. The strike table lists the same data.</source>
         <translation>第 %2 張行程 %3 的%1對時間：%4 個擊點，歷時 %5；範圍 %6 到 %7。擊點表列出相同資料。</translation>
     </message>
@@ -1115,257 +1152,418 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="62" />
+        <location filename="../../widgets/printer_panel.cpp" line="120" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="63" />
-        <source>Serial ports with their USB descriptions, HID bridges, parallel ports, and the built-in simulator</source>
-        <translation>序列埠（含 USB 說明）、HID 轉接器、平行埠，以及內建模擬器</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="64" />
+        <location filename="../../widgets/printer_panel.cpp" line="125" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="65" />
-        <location filename="../../widgets/printer_panel.cpp" line="211" />
+        <location filename="../../widgets/printer_panel.cpp" line="126" />
+        <location filename="../../widgets/printer_panel.cpp" line="424" />
+        <location filename="../../widgets/printer_panel.cpp" line="463" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="67" />
-        <location filename="../../widgets/printer_panel.cpp" line="212" />
+        <location filename="../../widgets/printer_panel.cpp" line="128" />
+        <location filename="../../widgets/printer_panel.cpp" line="690" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="69" />
+        <location filename="../../widgets/printer_panel.cpp" line="130" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="74" />
+        <location filename="../../widgets/printer_panel.cpp" line="135" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="79" />
+        <location filename="../../widgets/printer_panel.cpp" line="140" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="80" />
+        <location filename="../../widgets/printer_panel.cpp" line="141" />
+        <source>The print spool's jobs, from this window, tactus-cli and the network</source>
+        <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="80" />
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="80" />
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="80" />
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="86" />
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <source>Job</source>
+        <translation>工作</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <source>Printer</source>
+        <translation>印表機</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="149" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="87" />
+        <location filename="../../widgets/printer_panel.cpp" line="150" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="151" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="91" />
+        <location filename="../../widgets/printer_panel.cpp" line="154" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="92" />
+        <location filename="../../widgets/printer_panel.cpp" line="155" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="96" />
+        <location filename="../../widgets/printer_panel.cpp" line="159" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="101" />
+        <location filename="../../widgets/printer_panel.cpp" line="164" />
+        <source>Simulator faults (built-in simulator)</source>
+        <translation>模擬器故障（內建模擬器）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="174" />
+        <source>Paper out</source>
+        <translation>缺紙</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="175" />
+        <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
+        <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="177" />
+        <source>Pull the cable</source>
+        <translation>拔除纜線</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
+        <source>The cable is out for 5 seconds; the link reconnects</source>
+        <translation>纜線拔除 5 秒；連線會重新建立</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
+        <source>Line noise</source>
+        <translation>線路雜訊</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
+        <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="182" />
+        <source>Controller reset</source>
+        <translation>控制器重設</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="183" />
+        <source>A watchdog reset: the controller keeps its place and the job continues</source>
+        <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="188" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="120" />
+        <location filename="../../widgets/printer_panel.cpp" line="208" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="156" />
+        <location filename="../../widgets/printer_panel.cpp" line="253" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="186" />
+        <location filename="../../widgets/printer_panel.cpp" line="290" />
+        <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
+        <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="295" />
+        <source>Cannot open the print queue: %1</source>
+        <translation>無法開啟列印佇列：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="305" />
+        <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
+        <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="316" />
+        <source>Cannot set up a printer for %1: %2</source>
+        <translation>無法為 %1 設定印表機：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="320" />
+        <source>Set up printer %1 on %2 with the profile being edited</source>
+        <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="327" />
+        <source>Cannot give printer %1 the profile being edited: %2</source>
+        <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="331" />
+        <source>Printer %1 now uses the profile being edited</source>
+        <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="347" />
+        <source>Printer %1 is run by %2: this window shows its jobs</source>
+        <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="358" />
+        <source>Printer %1: %2; this window shows its jobs</source>
+        <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="370" />
+        <source>This window runs printer %1</source>
+        <translation>本視窗執行印表機 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="380" />
+        <source>This window no longer runs printer %1</source>
+        <translation>本視窗不再執行印表機 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="393" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="191" />
+        <location filename="../../widgets/printer_panel.cpp" line="405" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="197" />
+        <location filename="../../widgets/printer_panel.cpp" line="683" />
+        <source>job %1: </source>
+        <translation>工作 %1：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="694" />
+        <source>run by this window</source>
+        <translation>由本視窗執行</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="697" />
+        <source>run by %1</source>
+        <translation>由 %1 執行</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="698" />
+        <source>no runner: start tactus-cli serve or press Connect</source>
+        <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="703" />
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="706" />
+        <source>Printer %1, %2</source>
+        <translation>印表機 %1，%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="747" />
+        <source>Job %1: %2 sent to the queue</source>
+        <translation>工作 %1：%2 已送入佇列</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="778" />
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="782" />
+        <source>%1 is embossed again from sheet %2</source>
+        <translation>%1 從第 %2 張重新列印</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="788" />
+        <source>Simulator: the paper runs out</source>
+        <translation>模擬器：紙張用完</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="792" />
+        <source>Simulator: the cable is pulled for 5 seconds</source>
+        <translation>模擬器：纜線拔除 5 秒</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="796" />
+        <source>Simulator: line noise for 2 seconds</source>
+        <translation>模擬器：線路雜訊 2 秒</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="800" />
+        <source>Simulator: the controller resets</source>
+        <translation>模擬器：控制器重設</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="371" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="201" />
+        <location filename="../../widgets/printer_panel.cpp" line="122" />
+        <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600</source>
+        <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠；也可以輸入裝置字串，例如 pty:/dev/pts/3 或 serial:/dev/ttyUSB0?baud=57600</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="124" />
+        <source>Embosser device</source>
+        <translation>點字印表機裝置</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="414" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="209" />
-        <source>Disconnected from %1</source>
-        <translation>已與 %1 中斷連線</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="222" />
-        <source>No answer from the embosser</source>
-        <translation>點字印表機沒有回應</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="223" />
-        <source>The embosser does not answer (%1). Check the cable and the power switch.</source>
-        <translation>點字印表機沒有回應（%1）。請檢查纜線與電源開關。</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="226" />
+        <location filename="../../widgets/printer_panel.cpp" line="409" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="245" />
+        <location filename="../../widgets/printer_panel.cpp" line="421" />
+        <source>Disconnected from printer %1</source>
+        <translation>已與印表機 %1 中斷連線</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="441" />
+        <source>Cannot queue %1: %2</source>
+        <translation>無法將 %1 排入佇列：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="445" />
+        <source>Queued %1 as job %2 on printer %3</source>
+        <translation>已將 %1 排入印表機 %3，工作 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="464" />
+        <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
+        <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="493" />
+        <source>Cannot read the print queue: %1</source>
+        <translation>無法讀取列印佇列：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="546" />
+        <source>Embossing %1 (job %2) on %3</source>
+        <translation>正在以 %3 列印 %1（工作 %2）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="553" />
+        <source>%1 paused: %2</source>
+        <translation>%1 已暫停：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="555" />
+        <source>%1 waits: %2</source>
+        <translation>%1 等待中：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="588" />
+        <source>%1 cancelled</source>
+        <translation>%1 已取消</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="590" />
+        <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
+        <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="644" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="252" />
-        <source>Queued %1 (job %2) from sheet %3</source>
-        <translation>已將 %1 排入佇列（工作 %2），從第 %3 張開始</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="253" />
+        <location filename="../../widgets/printer_panel.cpp" line="446" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="296" />
-        <source>Embossing %1: sheet %2 of %3, %4 percent</source>
-        <translation>正在列印 %1：第 %2 張，共 %3 張，百分之 %4</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="299" />
+        <location filename="../../widgets/printer_panel.cpp" line="563" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="300" />
+        <location filename="../../widgets/printer_panel.cpp" line="564" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="335" />
-        <source>Embossing %1 from sheet %2</source>
-        <translation>正在列印 %1，從第 %2 張開始</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="336" />
-        <location filename="../../widgets/printer_panel.cpp" line="337" />
+        <location filename="../../widgets/printer_panel.cpp" line="547" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="350" />
-        <source>Cannot plan the job: %1</source>
-        <translation>無法規劃工作：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="393" />
-        <source>Link: %1 frames sent, %2 resent, %3 bytes, %4 NAKs, %5 timeouts, %6 reconnects, %7 restarts</source>
-        <translation>連線：已傳送 %1 個訊框，重送 %2 個，%3 位元組，%4 次 NAK，%5 次逾時，%6 次重新連線，%7 次重新啟動</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="409" />
-        <source>all %1 strikes checked against the plan</source>
-        <translation>全部 %1 個擊點均已與規劃核對</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="410" />
-        <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
-        <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="428" />
+        <location filename="../../widgets/printer_panel.cpp" line="580" />
+        <location filename="../../widgets/printer_panel.cpp" line="610" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="431" />
+        <location filename="../../widgets/printer_panel.cpp" line="588" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="435" />
-        <source>%1 stopped at sheet %2: %3. The queue is kept; fix the problem, then resume from sheet %2.</source>
-        <translation>%1 停在第 %2 張：%3。佇列已保留；排除問題後，請從第 %2 張繼續。</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="456" />
-        <source>Pause requested: the embosser stops at the end of the current move</source>
-        <translation>已要求暫停：點字印表機會在目前動作結束時停止</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="457" />
+        <location filename="../../widgets/printer_panel.cpp" line="752" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="467" />
-        <source>Resume requested</source>
-        <translation>已要求繼續</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="468" />
+        <location filename="../../widgets/printer_panel.cpp" line="762" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="480" />
-        <source>Cancel requested</source>
-        <translation>已要求取消</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="495" />
-        <source>Page %1 is not in %2 (it has %3 pages)</source>
-        <translation>%2 沒有第 %1 頁（共 %3 頁）</translation>
     </message>
 </context>
 <context>
@@ -1774,209 +1972,209 @@
 <context>
     <name>tactus::gui::VibrationView</name>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="27" />
+        <location filename="../../widgets/vibration_view.cpp" line="28" />
         <source>Step response against the targets</source>
         <translation>步階響應與目標比較</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="28" />
+        <location filename="../../widgets/vibration_view.cpp" line="29" />
         <source>Quantity</source>
         <translation>物理量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="28" />
+        <location filename="../../widgets/vibration_view.cpp" line="29" />
         <source>Value</source>
         <translation>數值</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="28" />
+        <location filename="../../widgets/vibration_view.cpp" line="29" />
         <source>Target</source>
         <translation>目標</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="28" />
+        <location filename="../../widgets/vibration_view.cpp" line="29" />
         <source>Result</source>
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="36" />
+        <location filename="../../widgets/vibration_view.cpp" line="37" />
         <source>Natural frequencies</source>
         <translation>自然頻率</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="40" />
+        <location filename="../../widgets/vibration_view.cpp" line="41" />
         <source>Residual vibration at the strikes</source>
         <translation>擊點時的殘留振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="44" />
+        <location filename="../../widgets/vibration_view.cpp" line="45" />
         <source>Residual vibration histogram</source>
         <translation>殘留振動直方圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="49" />
+        <location filename="../../widgets/vibration_view.cpp" line="50" />
         <source>Frequency response chart</source>
         <translation>頻率響應圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="78" />
+        <location filename="../../widgets/vibration_view.cpp" line="79" />
         <source>pass</source>
         <translation>通過</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="78" />
+        <location filename="../../widgets/vibration_view.cpp" line="79" />
         <source>FAIL</source>
         <translation>未通過</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="82" />
+        <location filename="../../widgets/vibration_view.cpp" line="83" />
         <source>Overshoot</source>
         <translation>超越量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="82" />
+        <location filename="../../widgets/vibration_view.cpp" line="83" />
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="82" />
+        <location filename="../../widgets/vibration_view.cpp" line="83" />
         <source>&lt; %1 %</source>
         <translation>&lt; %1 %</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="84" />
+        <location filename="../../widgets/vibration_view.cpp" line="85" />
         <source>Rise time (10-90 %)</source>
         <translation>上升時間（10-90 %）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="84" />
-        <location filename="../../widgets/vibration_view.cpp" line="87" />
+        <location filename="../../widgets/vibration_view.cpp" line="85" />
+        <location filename="../../widgets/vibration_view.cpp" line="88" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="85" />
-        <location filename="../../widgets/vibration_view.cpp" line="88" />
+        <location filename="../../widgets/vibration_view.cpp" line="86" />
+        <location filename="../../widgets/vibration_view.cpp" line="89" />
         <source>&lt; %1 ms</source>
         <translation>&lt; %1 ms</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="86" />
+        <location filename="../../widgets/vibration_view.cpp" line="87" />
         <source>Settling time (2 %)</source>
         <translation>安定時間（2 %）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="87" />
+        <location filename="../../widgets/vibration_view.cpp" line="88" />
         <source>never settles</source>
         <translation>無法安定</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="91" />
+        <location filename="../../widgets/vibration_view.cpp" line="92" />
         <source>%1 model; natural frequencies %2 Hz; √(k/m) = %3 rad/s; damping ratio %4.</source>
         <translation>%1模型；自然頻率 %2 Hz；√(k/m) = %3 rad/s；阻尼比 %4。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="92" />
+        <location filename="../../widgets/vibration_view.cpp" line="93" />
         <source>Two-inertia</source>
         <translation>雙慣量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="92" />
+        <location filename="../../widgets/vibration_view.cpp" line="93" />
         <source>One-inertia</source>
         <translation>單慣量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="100" />
+        <location filename="../../widgets/vibration_view.cpp" line="101" />
         <source>Magnitude (dB)</source>
         <translation>增益 (dB)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="102" />
+        <location filename="../../widgets/vibration_view.cpp" line="103" />
         <source>Phase (degrees)</source>
         <translation>相位（度）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="117" />
+        <location filename="../../widgets/vibration_view.cpp" line="118" />
         <source>Frequency (Hz)</source>
         <translation>頻率 (Hz)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="120" />
+        <location filename="../../widgets/vibration_view.cpp" line="121" />
         <source>dB</source>
         <translation>dB</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="122" />
+        <location filename="../../widgets/vibration_view.cpp" line="123" />
         <source>degrees</source>
         <translation>度</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="130" />
+        <location filename="../../widgets/vibration_view.cpp" line="131" />
         <source>Head position versus command</source>
         <translation>打點頭位置對命令</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="131" />
+        <location filename="../../widgets/vibration_view.cpp" line="132" />
         <source>Peak %1 dB at %2 Hz; %3 points from %4 to %5 Hz.</source>
         <translation>峰值 %1 dB 於 %2 Hz；%3 個點，從 %4 到 %5 Hz。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="137" />
+        <location filename="../../widgets/vibration_view.cpp" line="138" />
         <source>All targets met</source>
         <translation>全部達到目標</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="137" />
+        <location filename="../../widgets/vibration_view.cpp" line="138" />
         <source>Some targets are not met</source>
         <translation>部分未達目標</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="147" />
+        <location filename="../../widgets/vibration_view.cpp" line="148" />
         <source>No plan yet</source>
         <translation>尚未規劃</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="160" />
+        <location filename="../../widgets/vibration_view.cpp" line="161" />
         <source>sheet %1, pass %2</source>
         <translation>第 %1 張行程 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="166" />
+        <location filename="../../widgets/vibration_view.cpp" line="167" />
         <source>Nominal machine</source>
         <translation>標稱機器</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="167" />
+        <location filename="../../widgets/vibration_view.cpp" line="168" />
         <source>Worst case over the band</source>
         <translation>參數範圍內最差情況</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="186" />
+        <location filename="../../widgets/vibration_view.cpp" line="187" />
         <source>Residual up to (µm)</source>
         <translation>殘留振動上限 (µm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="188" />
+        <location filename="../../widgets/vibration_view.cpp" line="189" />
         <source>Strikes</source>
         <translation>擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="195" />
+        <location filename="../../widgets/vibration_view.cpp" line="196" />
         <source>Residual vibration per strike</source>
         <translation>每個擊點的殘留振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="197" />
+        <location filename="../../widgets/vibration_view.cpp" line="198" />
         <source>%1 strikes on %2 planned sheets: worst case %3 µm at %4 (tolerance %5 µm) — %6.</source>
         <translation>已規劃 %2 張共 %1 個擊點：最差 %3 µm，位於%4（容許 %5 µm）— %6。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="203" />
+        <location filename="../../widgets/vibration_view.cpp" line="204" />
         <source>within tolerance</source>
         <translation>在容許範圍內</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="203" />
+        <location filename="../../widgets/vibration_view.cpp" line="204" />
         <source>OVER TOLERANCE</source>
         <translation>超出容許範圍</translation>
     </message>

@@ -170,6 +170,49 @@ T = {
     "Taiwanese braille (bopomofo)": "台灣國語點字（注音）", "current Chinese braille": "現行中文點字",
     "two-cell Chinese braille": "雙拼中文點字", "uncontracted": "未縮寫", "partly contracted": "部分縮寫",
     "contracted": "縮寫", "grade %1": "第 %1 級", ", ": "，",
+    # The printer panel as a spool client (session 2, appspool).
+    "all %1 strikes of sheets %2 to %3 checked against the plan": "第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對",
+    "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3.":
+        "Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0 或 pty:/dev/pts/3。",
+    "%1 is being embossed. Quit anyway?": "%1 正在列印。仍要結束嗎？",
+    "The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.":
+        "工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。",
+    "&Keep embossing": "繼續列印(&K)",
+    "The print spool's jobs, from this window, tactus-cli and the network": "列印佇列中的工作，來自本視窗、tactus-cli 與網路",
+    "Job": "工作", "Simulator faults (built-in simulator)": "模擬器故障（內建模擬器）", "Paper out": "缺紙",
+    "The feeder runs empty; the simulated operator loads paper 5 seconds later": "送紙器沒紙了；模擬的操作員會在 5 秒後補紙",
+    "Pull the cable": "拔除纜線", "The cable is out for 5 seconds; the link reconnects": "纜線拔除 5 秒；連線會重新建立",
+    "Line noise": "線路雜訊",
+    "For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again":
+        "持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送",
+    "Controller reset": "控制器重設",
+    "A watchdog reset: the controller keeps its place and the job continues": "看門狗重設：控制器記得目前位置，工作繼續進行",
+    "No place for the print queue: set TACTUS_SPOOL_DB or HOME.": "沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。",
+    "Cannot open the print queue: %1": "無法開啟列印佇列：%1",
+    "“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.":
+        "「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。",
+    "Cannot set up a printer for %1: %2": "無法為 %1 設定印表機：%2",
+    "Set up printer %1 on %2 with the profile being edited": "已在 %2 上設定印表機 %1，使用正在編輯的設定檔",
+    "Cannot give printer %1 the profile being edited: %2": "無法將正在編輯的設定檔套用到印表機 %1：%2",
+    "Printer %1 now uses the profile being edited": "印表機 %1 現在使用正在編輯的設定檔",
+    "Printer %1 is run by %2: this window shows its jobs": "印表機 %1 由 %2 執行：本視窗顯示它的工作",
+    "Printer %1: %2; this window shows its jobs": "印表機 %1：%2；本視窗顯示它的工作",
+    "This window runs printer %1": "本視窗執行印表機 %1", "This window no longer runs printer %1": "本視窗不再執行印表機 %1",
+    "job %1: ": "工作 %1：", "run by this window": "由本視窗執行", "run by %1": "由 %1 執行",
+    "no runner: start tactus-cli serve or press Connect": "沒有執行者：請啟動 tactus-cli serve 或按「連線」",
+    "%1 %2": "%1 %2", "Printer %1, %2": "印表機 %1，%2", "Job %1: %2 sent to the queue": "工作 %1：%2 已送入佇列",
+    "%1: %2": "%1：%2", "%1 is embossed again from sheet %2": "%1 從第 %2 張重新列印",
+    "Simulator: the paper runs out": "模擬器：紙張用完", "Simulator: the cable is pulled for 5 seconds": "模擬器：纜線拔除 5 秒",
+    "Simulator: line noise for 2 seconds": "模擬器：線路雜訊 2 秒", "Simulator: the controller resets": "模擬器：控制器重設",
+    "The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600":
+        "內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠；也可以輸入裝置字串，例如 pty:/dev/pts/3 或 serial:/dev/ttyUSB0?baud=57600",
+    "Embosser device": "點字印表機裝置", "Disconnected from printer %1": "已與印表機 %1 中斷連線",
+    "Cannot queue %1: %2": "無法將 %1 排入佇列：%2", "Queued %1 as job %2 on printer %3": "已將 %1 排入印表機 %3，工作 %2",
+    "The print queue cannot be written (%1): this window stopped running printer %2":
+        "無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2",
+    "Cannot read the print queue: %1": "無法讀取列印佇列：%1", "Embossing %1 (job %2) on %3": "正在以 %3 列印 %1（工作 %2）",
+    "%1 paused: %2": "%1 已暫停：%2", "%1 waits: %2": "%1 等待中：%2", "%1 cancelled": "%1 已取消",
+    "%1 stopped: %2. The job is kept; fix the problem, then resume it.": "%1 已停止：%2。工作已保留；排除問題後請繼續。",
 }
 
 
