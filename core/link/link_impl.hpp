@@ -227,7 +227,12 @@ struct Link::Impl {
                     case encode::NakReason::out_of_order:
                     case encode::NakReason::no_space: break;
                 }
-                if (n->first != encode::NakReason::no_session) {
+                // A refused frame is not lost: sending it again cannot help
+                // (and a re-sent HELLO of a refused version would be refused
+                // again after the next version was offered).
+                const bool refusal = n->first == encode::NakReason::bad_payload ||
+                                     n->first == encode::NakReason::unknown_type;
+                if (n->first != encode::NakReason::no_session && !refusal) {
                     acknowledge_through(f.seq);
                     // Go back to the first frame it lacks, at most once per round trip.
                     if (!unacked.empty() && s->now() - last_goback > rto() / 2) {
@@ -294,6 +299,10 @@ struct Link::Impl {
         refused.reset();
         last_hello.reset();
         decoder.reset();
+        // A controller before its first session reports its power-on reset in
+        // the NAK that refuses an unknown version; the session that follows
+        // clears it. That is not a power loss during the job.
+        const bool power_loss_before = saw_power_loss;
         const std::uint8_t seq = next_seq++;
         const auto payload = encode::encode_hello({nonce, version});
         unacked.push_back({seq, FrameType::hello, payload, s->now()});
@@ -316,6 +325,7 @@ struct Link::Impl {
                 return std::unexpected(r.error());
             if (refused) {
                 refused.reset();
+                saw_power_loss = power_loss_before;
                 return std::optional<HelloReply>{};
             }
         }
