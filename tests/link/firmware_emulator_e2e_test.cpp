@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// End to end against the real firmware: `tactus-cli sim --firmware` runs the
+// reference firmware (firmware/, the emulator build) in s51 behind a pty,
+// `tactus-cli emboss --device pty:...?baud=9600` embosses a document through
+// it (protocol 3, found from HELLO_REPLY), and the strikes read back from the
+// chip's port pins must be the host's plan, dot for dot. Needs sdcc, s51 and
+// socat (tools/install-deps.sh); ctest label "emulator". One emulator at a
+// time (RUN_SERIAL): s51 takes a whole core.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "controller/sim_controller.hpp"
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+#include "profile/firmware_tables.hpp"
+#include "profile/profile.hpp"
+#include "../common/process.hpp"
+
+namespace tactus {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Process;
+
+struct EmulatorRun {
+    int exit_code = -1;
+    std::string output;
+    std::vector<controller::LoggedStrike> log;
+    std::vector<double> times;
+};
+
+class FirmwareEndToEnd : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("tactus-fw-e2e-" + std::to_string(getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+        std::ofstream(dir_ / "note.txt") << "Hello, 89C52.\n";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // The plan the CLI makes for the firmware: the same library calls.
+    plan::JobPlan planned() {
+        const auto prof = profile::default_profile();
+        pipeline::PipelineOptions o;
+        o.layout.geometry.interpoint = prof.geometry.interpoint;
+        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+        auto doc = pipeline::lay_out_file(dir_ / "note.txt", o);
+        EXPECT_TRUE(doc) << doc.error().to_string();
+        plan::PlanOptions po;
+        auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_EMU_TABLES);
+        EXPECT_TRUE(tables) << tables.error().to_string();
+        po.firmware = *tables;
+        auto job = plan::plan_job(*doc, prof, po);
+        EXPECT_TRUE(job) << job.error().to_string();
+        return job ? *job : plan::JobPlan{};
+    }
+
+    EmulatorRun emboss(const std::string& tables, std::vector<std::string> sim_extra = {}) {
+        std::vector<std::string> sim{TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty",
+                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
+        sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
+        Process server(sim);
+        const std::string pty = server.read_line(std::chrono::seconds(30));
+        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+        Process client({TACTUS_CLI, "emboss", (dir_ / "note.txt").string(), "--device", "pty:" + pty + "?baud=9600",
+                        "--firmware-tables", tables},
+                       Process::Options{{}, true, {}});
+        EmulatorRun r;
+        r.output = client.read_all();
+        r.exit_code = client.wait();
+        server.signal(SIGTERM);
+        server.wait();
+        std::ifstream in(dir_ / "strikes.jsonl");
+        for (std::string line; std::getline(in, line);) {
+            const auto j = nlohmann::json::parse(line);
+            controller::LoggedStrike s;
+            s.sheet = j["sheet"];
+            s.side = j["side"] == "front" ? plan::Side::front : plan::Side::back;
+            s.hammer = j["hammer"] == "convex" ? plan::Hammer::convex : plan::Hammer::concave;
+            s.carriage_step = j["carriage_step"];
+            s.feed_step = j["feed_step"];
+            r.log.push_back(s);
+            r.times.push_back(j["time_s"]);
+        }
+        return r;
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(FirmwareEndToEnd, StrikesReadFromThePinsAreThePlan) {
+    const auto job = planned();
+    const auto want = controller::planned_strikes(job);
+    ASSERT_FALSE(want.empty());
+    const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("embossed " + std::to_string(job.sheets[0].passes.size()) + " passes"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.log, want);
+    // Figures for the report (not asserted: the emulator's clock is the
+    // chip's, but the host's pauses on a loaded machine can starve it).
+    if (r.log.size() == want.size() && want.size() > 1) {
+        const double emulated = r.times.back() - r.times.front();
+        const double plan_span = want.back().time_s - want.front().time_s;
+        for (std::size_t i = 1; i < want.size(); ++i)
+            std::printf("DBG %zu pass %u: emulated %.6f planned %.6f\n", i, want[i].pass_index,
+                        r.times[i] - r.times[i - 1], want[i].time_s - want[i - 1].time_s);
+        std::printf("first to last strike: emulated %.4f s, planned %.4f s (%+.2f %%)\n", emulated, plan_span,
+                    100 * (emulated / plan_span - 1));
+    }
+    const auto sent = r.output.find(" bytes sent");
+    if (sent != std::string::npos) {
+        const auto start = r.output.rfind(' ', sent - 1) + 1;
+        const double bytes = std::stod(r.output.substr(start, sent - start));
+        std::printf("line bytes (host to controller) per strike: %.2f (%zu strikes)\n",
+                    bytes / static_cast<double>(want.size()), want.size());
+    }
+}
+
+TEST_F(FirmwareEndToEnd, TablesOfAnotherBuildAreRefusedWithTheReason) {
+    // The same tables under another id: what a firmware built from another profile reports.
+    auto j = nlohmann::json::parse(std::ifstream(TACTUS_FIRMWARE_EMU_TABLES));
+    j["table_id"] = "1c0ffee5";
+    std::ofstream(dir_ / "other.json") << j.dump();
+    const auto r = emboss((dir_ / "other.json").string());
+    EXPECT_EQ(r.exit_code, 4) << r.output;  // exit_device
+    EXPECT_NE(r.output.find("the firmware was built for ramp table"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("1c0ffee5"), std::string::npos) << r.output;
+    EXPECT_TRUE(r.log.empty());
+}
+
+}  // namespace
+}  // namespace tactus
