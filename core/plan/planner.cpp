@@ -158,8 +158,10 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     sheet.index = sheet_number;
     const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
     const motion::Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
+    constexpr auto lat = machine::kFirmwareLatency;
+    const auto ticks = [](double n) { return n / machine::kTickHz; };
     const double dwell =
-        o_.firmware ? static_cast<double>(strike_.hammer_ticks) / machine::kTickHz : p_.head.dwell_s;
+        o_.firmware ? ticks(strike_.hammer_ticks + lat.hammer_end_ticks) : p_.head.dwell_s;
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     const auto& h = *hits;
     for (std::size_t first = 0; first < h.size();) {
@@ -179,7 +181,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         pass.feed = *fm->first;
         pass.segments += pass.feed.segments.size();
         feed_pos = pass.feed_step;
-        const double feed_time = fm->second->duration;
+        const double feed_time =
+            fm->second->duration + (o_.firmware && feed_steps > 0 ? ticks(lat.move_start_ticks) : 0.0);
         const double feed_bound = motion::jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
 
         const double t0 = clock_s_;
@@ -208,7 +211,10 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             double move_time = 0;
             if (o_.firmware) {
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), {});
-                if (sm) move_time = sm->duration_s;
+                // The firmware's main loop between phases (machine::kFirmwareLatency).
+                if (sm)
+                    move_time = sm->duration_s + ticks(lat.settle_start_ticks) +
+                                (n != 0 ? ticks(lat.move_start_ticks) : 0.0);
             } else {
                 auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
                 if (!tuned) return std::unexpected(tuned.error());

@@ -112,9 +112,6 @@ TEST_F(FirmwareEndToEnd, StrikesReadFromThePinsAreThePlan) {
     if (r.log.size() == want.size() && want.size() > 1) {
         const double emulated = r.times.back() - r.times.front();
         const double plan_span = want.back().time_s - want.front().time_s;
-        for (std::size_t i = 1; i < want.size(); ++i)
-            std::printf("DBG %zu pass %u: emulated %.6f planned %.6f\n", i, want[i].pass_index,
-                        r.times[i] - r.times[i - 1], want[i].time_s - want[i - 1].time_s);
         std::printf("first to last strike: emulated %.4f s, planned %.4f s (%+.2f %%)\n", emulated, plan_span,
                     100 * (emulated / plan_span - 1));
     }
