@@ -29,6 +29,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::Process;
 
+// The bundled short sample the README's main job embosses on the firmware.
+const std::string kNote = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+
 struct EmulatorRun {
     int exit_code = -1;
     std::string output;
@@ -42,7 +45,6 @@ protected:
         dir_ = fs::temp_directory_path() / ("tactus-fw-e2e-" + std::to_string(getpid()) + "-" +
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
-        std::ofstream(dir_ / "note.txt") << "Hello, 89C52.\n";
     }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -53,7 +55,7 @@ protected:
         o.layout.geometry.interpoint = prof.geometry.interpoint;
         o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
         o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-        auto doc = pipeline::lay_out_file(dir_ / "note.txt", o);
+        auto doc = pipeline::lay_out_file(kNote, o);
         EXPECT_TRUE(doc) << doc.error().to_string();
         plan::PlanOptions po;
         auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_EMU_TABLES);
@@ -71,7 +73,7 @@ protected:
         Process server(sim);
         const std::string pty = server.read_line(std::chrono::seconds(30));
         EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
-        Process client({TACTUS_CLI, "emboss", (dir_ / "note.txt").string(), "--device", "pty:" + pty + "?baud=9600",
+        Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600",
                         "--firmware-tables", tables},
                        Process::Options{{}, true, {}});
         EmulatorRun r;
