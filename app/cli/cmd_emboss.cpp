@@ -149,13 +149,15 @@ void run_emboss(const EmbossArgs& a) {
                     bar_drawn = true;
                 } else {
                     std::cout << "pass " << p.executed->passes_done << '/' << p.executed->passes_total
-                              << " executed (sheet " << p.executed->sheet << ")\n";
+                              << " executed (sheet " << p.executed->sheet << ")" << std::endl;
                 }
                 return;
             }
             if (tty && bar_drawn) std::cerr << '\n';
             bar_drawn = false;
-            (tty ? std::cerr : std::cout) << "emboss: " << p.note << '\n';
+            // Flushed: a program reading the pipe (a test, a front end) sees
+            // "paper out" while the job waits for paper, not after it.
+            (tty ? std::cerr : std::cout) << "emboss: " << p.note << std::endl;
         },
         cancel);
     g_cancel = nullptr;

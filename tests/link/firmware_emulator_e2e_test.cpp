@@ -138,5 +138,33 @@ TEST_F(FirmwareEndToEnd, TablesOfAnotherBuildAreRefusedWithTheReason) {
     EXPECT_TRUE(r.log.empty());
 }
 
+// Paper out, from the firmware's paper sensor (P3.6 held low): SHEET_BEGIN
+// faults, the host reports it and waits for paper; cancelled, nothing struck.
+TEST_F(FirmwareEndToEnd, PaperOutIsReportedAndNothingIsStruck) {
+    Process server({TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty", "--paper-out-at", "1",
+                    "--strike-log", (dir_ / "strikes.jsonl").string()});
+    const std::string pty = server.read_line(std::chrono::seconds(30));
+    ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+    Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600", "--firmware-tables",
+                    TACTUS_FIRMWARE_EMU_TABLES},
+                   Process::Options{{}, true, {}});
+    std::string seen;
+    for (int i = 0; i < 20 && seen.find("paper out") == std::string::npos; ++i) {
+        const auto line = client.read_line(std::chrono::seconds(15));
+        if (line.empty()) break;
+        seen += line + "\n";
+    }
+    EXPECT_NE(seen.find("paper out at sheet 1"), std::string::npos) << seen;
+    client.signal(SIGINT);
+    const auto rest = client.read_all();
+    EXPECT_EQ(client.wait(), 1) << seen << rest;
+    EXPECT_NE(rest.find("cancelled after 0 passes"), std::string::npos) << rest;
+    server.signal(SIGTERM);
+    server.wait();
+    std::ifstream in(dir_ / "strikes.jsonl");
+    std::string line;
+    EXPECT_FALSE(std::getline(in, line)) << "struck with no paper: " << line;
+}
+
 }  // namespace
 }  // namespace tactus
