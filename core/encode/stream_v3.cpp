@@ -94,13 +94,9 @@ struct Encoder {
 Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::FirmwareTables& tables,
                                 const machine::StrikeTiming& timing, std::uint16_t job_id,
                                 const StreamStart& start) {
-    const auto table = pass_table(plan);
-    if (table.size() > kMaxJobPasses)
-        return fail(std::to_string(table.size()) + " passes in one job; the controller counts at most 65,535", "plan");
-    if (start.first_pass > table.size()) return fail("start pass beyond the plan", "plan");
-    JobStream s;
-    s.first_pass = start.first_pass;
-    s.end_pass = table.size();
+    auto begun = begin_stream(plan, start);
+    if (!begun) return std::unexpected(begun.error());
+    JobStream s = std::move(*begun);
     Encoder e{tables, timing, s};
     s.bytes.push_back(v3::op_job_begin);
     put16(s.bytes, job_id);

@@ -131,15 +131,18 @@ std::vector<StrikeV3> planned(const plan::JobPlan& job) {
     return out;
 }
 
-TEST(StreamV3, RandomDocumentsRoundTripThroughTheFirmwareRules) {
-    const auto t = tables();
-    const auto prof = profile::default_profile();
-    const auto timing = profile::strike_timing(prof);
+// A random document planned for the firmware with the bundled profile.
+Result<plan::JobPlan> firmware_plan(const machine::FirmwareTables& t, unsigned seed, std::size_t pages) {
     plan::PlanOptions o;
     o.firmware = t;
+    return plan::plan_job(random_doc(seed, pages), profile::default_profile(), o);
+}
+
+TEST(StreamV3, RandomDocumentsRoundTripThroughTheFirmwareRules) {
+    const auto t = tables();
+    const auto timing = profile::strike_timing(profile::default_profile());
     for (unsigned seed = 1; seed <= 12; ++seed) {
-        const auto doc = random_doc(seed, 1 + seed % 4);
-        auto job = plan::plan_job(doc, prof, o);
+        auto job = firmware_plan(t, seed, 1 + seed % 4);
         ASSERT_TRUE(job) << job.error().to_string();
         auto s = encode_job_v3(*job, t, timing, 3, {});
         ASSERT_TRUE(s) << "seed " << seed << ": " << s.error().to_string();
@@ -151,11 +154,8 @@ TEST(StreamV3, RandomDocumentsRoundTripThroughTheFirmwareRules) {
 
 TEST(StreamV3, RestartMidPassStrikesTheRestExactly) {
     const auto t = tables();
-    const auto prof = profile::default_profile();
-    const auto timing = profile::strike_timing(prof);
-    plan::PlanOptions o;
-    o.firmware = t;
-    auto job = plan::plan_job(random_doc(5, 2), prof, o);
+    const auto timing = profile::strike_timing(profile::default_profile());
+    auto job = firmware_plan(t, 5, 2);
     ASSERT_TRUE(job) << job.error().to_string();
     const auto all = planned(*job);
     const auto table = pass_table(*job);

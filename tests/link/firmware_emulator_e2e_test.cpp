@@ -22,6 +22,7 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "../common/process.hpp"
+#include "../common/strike_log.hpp"
 
 namespace tactus {
 namespace {
@@ -81,18 +82,8 @@ protected:
         r.exit_code = client.wait();
         server.signal(SIGTERM);
         server.wait();
-        std::ifstream in(dir_ / "strikes.jsonl");
-        for (std::string line; std::getline(in, line);) {
-            const auto j = nlohmann::json::parse(line);
-            controller::LoggedStrike s;
-            s.sheet = j["sheet"];
-            s.side = j["side"] == "front" ? plan::Side::front : plan::Side::back;
-            s.hammer = j["hammer"] == "convex" ? plan::Hammer::convex : plan::Hammer::concave;
-            s.carriage_step = j["carriage_step"];
-            s.feed_step = j["feed_step"];
-            r.log.push_back(s);
-            r.times.push_back(j["time_s"]);
-        }
+        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
+        for (const auto& k : r.log) r.times.push_back(k.time_s);
         return r;
     }
 
@@ -161,9 +152,7 @@ TEST_F(FirmwareEndToEnd, PaperOutIsReportedAndNothingIsStruck) {
     EXPECT_NE(rest.find("cancelled after 0 passes"), std::string::npos) << rest;
     server.signal(SIGTERM);
     server.wait();
-    std::ifstream in(dir_ / "strikes.jsonl");
-    std::string line;
-    EXPECT_FALSE(std::getline(in, line)) << "struck with no paper: " << line;
+    EXPECT_TRUE(test::read_strike_log((dir_ / "strikes.jsonl").string()).empty()) << "struck with no paper";
 }
 
 }  // namespace

@@ -83,14 +83,16 @@ protected:
         EXPECT_EQ(h->protocol, GetParam().protocol);
         EXPECT_GE(h->window_frames, 1);
     }
-    void expect_nak(NakReason why, std::uint8_t expected_seq) {
+    void expect_nak(NakReason why, std::optional<std::uint8_t> expected_seq) {
         auto r = reply();
         ASSERT_TRUE(r) << "no reply";
         ASSERT_EQ(r->type, 0x83);
         auto n = encode::decode_nak(r->payload);
         ASSERT_TRUE(n) << n.error().to_string();
         EXPECT_EQ(static_cast<int>(n->first), static_cast<int>(why));
-        EXPECT_EQ(r->seq, expected_seq);
+        if (expected_seq) {
+            EXPECT_EQ(r->seq, *expected_seq);
+        }
     }
     void expect_ack(std::uint8_t expected_seq) {
         auto r = reply();
@@ -106,24 +108,15 @@ protected:
     std::vector<encode::Frame> pending_;
 };
 
+// Before a session the controller expects nothing: its NAK's SEQ is not checked.
 TEST_P(Conformance, NothingBeforeASession) {
     send(0, 0x08);  // KEEPALIVE
-    auto r = reply();
-    ASSERT_TRUE(r);
-    ASSERT_EQ(r->type, 0x83);
-    auto n = encode::decode_nak(r->payload);
-    ASSERT_TRUE(n);
-    EXPECT_EQ(n->first, NakReason::no_session);
+    expect_nak(NakReason::no_session, std::nullopt);
 }
 
 TEST_P(Conformance, AnotherProtocolVersionIsRefused) {
     send(0, 0x01, encode::encode_hello({0x4321, 99}));
-    auto r = reply();
-    ASSERT_TRUE(r);
-    ASSERT_EQ(r->type, 0x83);
-    auto n = encode::decode_nak(r->payload);
-    ASSERT_TRUE(n);
-    EXPECT_EQ(n->first, NakReason::bad_payload);
+    expect_nak(NakReason::bad_payload, std::nullopt);
 }
 
 TEST_P(Conformance, SequenceDuplicatesAndGaps) {
