@@ -64,18 +64,20 @@ std::ofstream open_log(const std::string& path) {
 void run_firmware_sim(const SimArgs& a) {
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required");
     const PtyServerOptionsDefaults d;
-    if (a.server.noise > 0 || a.reset_at_strike > 0 || a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
+    if (a.reset_at_strike > 0 || a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
         a.mute_after_pass > 0 || a.server.sim.instant_motion || a.server.disconnect_at_s >= 0 ||
         a.server.time_scale != d.time_scale || (a.paper_out_at > 1))
         throw CommandFailed(exit_usage,
-                            "sim --firmware: the emulated chip runs in real time with a clean line; of the fault "
-                            "options it takes only --paper-out-at 1 (no paper from the start)");
+                            "sim --firmware: the emulated chip runs in real time; of the fault options it takes "
+                            "--noise, --seed and --paper-out-at 1 (no paper from the start)");
     const auto profile = load_profile_arg(a.profile);
     FirmwareEmulatorOptions o;
     o.ihx = a.firmware;
     o.paper_out = a.paper_out_at == 1;
     o.carriage_steps_per_mm = profile.carriage.steps_per_mm;
     o.feed_steps_per_mm = profile.feed.steps_per_mm;
+    o.noise = a.server.noise;
+    o.seed = a.server.seed;
     auto log = open_log(a.strike_log);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);

@@ -71,7 +71,7 @@ protected:
         std::vector<std::string> sim{TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty",
                                      "--strike-log", (dir_ / "strikes.jsonl").string()};
         sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
-        Process server(sim);
+        Process server(sim, (dir_ / "sim.err").string());
         const std::string pty = server.read_line(std::chrono::seconds(30));
         EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
         Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600",
@@ -153,6 +153,22 @@ TEST_F(FirmwareEndToEnd, PaperOutIsReportedAndNothingIsStruck) {
     server.signal(SIGTERM);
     server.wait();
     EXPECT_TRUE(test::read_strike_log((dir_ / "strikes.jsonl").string()).empty()) << "struck with no paper";
+}
+
+// A noisy line between the host and the chip (bytes dropped, flipped and
+// duplicated, each at the rate, both ways): every strike still exactly the plan.
+TEST_F(FirmwareEndToEnd, NoisyLineStrikesExactly) {
+    const auto want = controller::planned_strikes(planned());
+    for (const auto& [rate, seed] : {std::pair{"0.001", "7"}, std::pair{"0.01", "3"}}) {
+        const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES, {"--noise", rate, "--seed", seed});
+        EXPECT_EQ(r.exit_code, 0) << rate << ": " << r.output;
+        EXPECT_EQ(r.log, want) << rate;
+        std::ifstream err(dir_ / "sim.err");
+        std::string text, last;
+        while (std::getline(err, text)) last = text;  // this run's summary (the file is appended to)
+        std::printf("noise %s: %s\n", rate, last.c_str());
+        std::printf("host: %s", r.output.substr(r.output.rfind("embossed")).c_str());
+    }
 }
 
 }  // namespace
