@@ -19,10 +19,16 @@
 #include "link/link.hpp"
 
 #include "plan/planner.hpp"
+#include "encode/stream_v3.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 
 namespace tactus::cli {
 namespace {
+
+// The reference firmware's DATA payload: 31 bytes of ops and the check
+// (firmware/PROTOCOL-v3.md); the dry run's frame count assumes it.
+constexpr std::size_t kFirmwareMaxOps = 31;
 
 link::CancelToken* g_cancel = nullptr;
 extern "C" void on_interrupt(int) {
@@ -36,25 +42,45 @@ struct EmbossArgs {
     bool dry_run = false;
     bool plan_file = false;
     std::size_t start_sheet = 1;
+    std::string firmware_tables;  // the reference firmware's build/ramp.json (protocol v3)
     EmbossQueueArgs queue;
 };
 
 struct Prepared {
     plan::JobPlan plan;
     machine::ControllerConfig config;
+    std::optional<machine::FirmwareTables> tables;
+    machine::StrikeTiming timing;
 };
 
-Prepared prepare(const EmbossArgs& a) {
+// Plans for the controller: with the firmware's ramp tables when it is the
+// reference firmware (protocol v3), so the plan's moves are the ones it makes.
+Prepared prepare(const EmbossArgs& a, bool for_firmware) {
     Prepared out;
-    if (a.plan_file) {
+    if (a.plan_file && !for_firmware) {
         out.plan = require(plan::load_plan(a.layout.file));
         return out;
     }
     const auto profile = load_profile_arg(a.profile);
+    if (for_firmware) {
+        if (a.firmware_tables.empty())
+            throw CommandFailed(exit_usage,
+                                "emboss: the controller is the reference firmware (protocol 3): give the ramp "
+                                "tables it was built with, --firmware-tables firmware/build/ramp.json");
+        out.tables = require(profile::load_firmware_tables(a.firmware_tables));
+        out.timing = profile::strike_timing(profile);
+        out.config = profile::controller_config(profile);
+    }
+    if (a.plan_file) {
+        out.plan = require(plan::load_plan(a.layout.file));
+        return out;
+    }
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, profile);
-    out.plan = require(plan::plan_job(doc, profile));
+    plan::PlanOptions po;
+    po.firmware = out.tables;
+    out.plan = require(plan::plan_job(doc, profile, po));
     out.config = profile::controller_config(profile);
     return out;
 }
@@ -76,18 +102,24 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
         q.device = a.device;  // --device with --queue: the queue printer on that device
         return enqueue_emboss(a.layout, q);
     }
-    const auto prepared = prepare(a);
-    const auto& plan = prepared.plan;
     if (a.dry_run) {
+        // With --firmware-tables: the v3 stream for the reference firmware
+        // (its payload: 31 bytes of ops and the 2-byte check).
+        const bool v3 = !a.firmware_tables.empty();
+        const auto prepared = prepare(a, v3);
+        const auto& plan = prepared.plan;
         std::size_t first = 0;
         for (const auto& s : plan.sheets) {
             if (s.index >= a.start_sheet) break;
             first += s.passes.size();
         }
-        const auto stream = require(encode::encode_job(plan, 1, {first, 0, false}));
-        const auto chunks = encode::chunk_stream(stream, encode::kMaxPayload);
+        const auto stream = v3 ? require(encode::encode_job_v3(plan, *prepared.tables, prepared.timing, 1,
+                                                               {first, 0, false}))
+                               : require(encode::encode_job(plan, 1, {first, 0, false}));
+        const auto chunks = v3 ? encode::chunk_stream_v3(stream, kFirmwareMaxOps)
+                               : encode::chunk_stream(stream, encode::kMaxPayload);
         std::size_t line = 0;
-        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead;
+        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead + (v3 ? 2 : 0);
         std::cout << stream.bytes.size() << " bytes of job stream in " << chunks.size()
                   << " frames (" << line << " bytes on the line) for " << plan.sheets.size()
                   << " sheets, " << plan.strikes << " strikes\n";
@@ -97,7 +129,13 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     // The error's kind tells a malformed device string (usage) from a device
     // that is not there (device).
     auto link = require(link::Link::open(a.device));
+    // HELLO_REPLY says which controller answered: the reference firmware
+    // (protocol 3) is planned for with its own tables.
     require(link.hello());
+    const bool firmware = link.protocol() == encode::kProtocolV3;
+    const auto prepared = prepare(a, firmware);
+    const auto& plan = prepared.plan;
+    if (firmware) require(link.use_firmware_tables(*prepared.tables, prepared.timing));
     require(link.configure(prepared.config));
 
     const bool tty = isatty(STDERR_FILENO) != 0;
@@ -115,13 +153,15 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
                     bar_drawn = true;
                 } else {
                     std::cout << "pass " << p.executed->passes_done << '/' << p.executed->passes_total
-                              << " executed (sheet " << p.executed->sheet << ")\n";
+                              << " executed (sheet " << p.executed->sheet << ")" << std::endl;
                 }
                 return;
             }
             if (tty && bar_drawn) std::cerr << '\n';
             bar_drawn = false;
-            (tty ? std::cerr : std::cout) << "emboss: " << p.note << '\n';
+            // Flushed: a program reading the pipe (a test, a front end) sees
+            // "paper out" while the job waits for paper, not after it.
+            (tty ? std::cerr : std::cout) << "emboss: " << p.note << std::endl;
         },
         cancel);
     g_cancel = nullptr;
@@ -160,6 +200,10 @@ void add_emboss_command(CLI::App& app) {
                     "the job until it ends, Ctrl-C cancels it)");
     cmd->add_flag("--dry-run", args->dry_run, "Stop after encoding and print the byte count");
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
+    cmd->add_option("--firmware-tables", args->firmware_tables,
+                    "The reference firmware's ramp tables (its build/ramp.json): a controller speaking protocol 3 "
+                    "is planned for with them, and refused when it was built with others")
+        ->check(CLI::ExistingFile);
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
         ->check(CLI::PositiveNumber);
     add_emboss_queue_options(*cmd, args->queue);

@@ -9,12 +9,17 @@
 
 #include "command.hpp"
 #include "controller/pty_server.hpp"
+#include "firmware_emulator.hpp"
+#include "profile_arg.hpp"
 
 namespace tactus::cli {
 namespace {
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop.store(true); }
+
+// What the options default to, to tell which were given.
+struct PtyServerOptionsDefaults : controller::PtyServerOptions {};
 
 struct SimArgs {
     bool pty = false;
@@ -25,7 +30,60 @@ struct SimArgs {
     int power_loss_at_strike = 0;
     int limit_at_strike = 0;
     int mute_after_pass = 0;
+    std::string firmware;  // an .ihx: the reference firmware in s51 instead of the C++ model
+    std::string profile;   // --firmware: steps/mm for the log's millimetres
 };
+
+// One strike as a JSON line, flushed: a reader sees every strike at once. The
+// same format for the C++ controller and the firmware in the emulator.
+void log_strike(std::ofstream& log, const controller::LoggedStrike& s) {
+    if (!log) return;
+    log << nlohmann::json{{"sheet", s.sheet},
+                          {"side", s.side == plan::Side::front ? "front" : "back"},
+                          {"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
+                          {"carriage_step", s.carriage_step},
+                          {"feed_step", s.feed_step},
+                          {"x_mm", s.x_mm},
+                          {"y_mm", s.y_mm},
+                          {"time_s", s.time_s}}
+               .dump()
+        << '\n'
+        << std::flush;
+}
+
+std::ofstream open_log(const std::string& path) {
+    std::ofstream log;
+    if (path.empty()) return log;
+    log.open(path, std::ios::trunc);
+    if (!log) throw CommandFailed(exit_bad_input, path + ": cannot write the strike log");
+    return log;
+}
+
+// The firmware runs as it is: faults the C++ model injects have no switch on
+// the emulated chip (only the paper sensor, from the start).
+void run_firmware_sim(const SimArgs& a) {
+    if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required");
+    const PtyServerOptionsDefaults d;
+    if (a.reset_at_strike > 0 || a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
+        a.mute_after_pass > 0 || a.server.sim.instant_motion || a.server.disconnect_at_s >= 0 ||
+        a.server.time_scale != d.time_scale || (a.paper_out_at > 1))
+        throw CommandFailed(exit_usage,
+                            "sim --firmware: the emulated chip runs in real time; of the fault options it takes "
+                            "--noise, --seed and --paper-out-at 1 (no paper from the start)");
+    const auto profile = load_profile_arg(a.profile);
+    FirmwareEmulatorOptions o;
+    o.ihx = a.firmware;
+    o.paper_out = a.paper_out_at == 1;
+    o.carriage_steps_per_mm = profile.carriage.steps_per_mm;
+    o.feed_steps_per_mm = profile.feed.steps_per_mm;
+    o.noise = a.server.noise;
+    o.seed = a.server.seed;
+    auto log = open_log(a.strike_log);
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGPIPE, SIG_IGN);
+    run_firmware_emulator(o, g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); });
+}
 
 // With --mute-after-pass: one line when the controller goes quiet, one when it
 // has come to rest by itself (job ended, or paused by its keep-alive watchdog),
@@ -52,6 +110,7 @@ struct MuteWatch {
 };
 
 void run_sim(const SimArgs& a) {
+    if (!a.firmware.empty()) return run_firmware_sim(a);
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required (the in-process simulator is the device \"sim\")");
     auto server = controller::PtyServer::open(a.server);
     if (!server) fail_with(server.error());
@@ -63,30 +122,13 @@ void run_sim(const SimArgs& a) {
     if (a.limit_at_strike > 0) ctl.inject_limit_switch_at_strike(static_cast<std::size_t>(a.limit_at_strike));
     if (a.mute_after_pass > 0) ctl.mute_after_pass(static_cast<std::uint16_t>(a.mute_after_pass));
     MuteWatch watch;
-    std::ofstream log;
-    if (!a.strike_log.empty()) {
-        log.open(a.strike_log, std::ios::trunc);
-        if (!log) throw CommandFailed(exit_bad_input, a.strike_log + ": cannot write the strike log");
-    }
+    auto log = open_log(a.strike_log);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
     std::signal(SIGPIPE, SIG_IGN);
     std::cout << server->path() << std::endl;
-    auto r = server->serve(g_stop, [&](const controller::LoggedStrike& s) {
-        if (!log) return;
-        // One JSON object per line, flushed: a reader sees every strike at once.
-        log << nlohmann::json{{"sheet", s.sheet},
-                              {"side", s.side == plan::Side::front ? "front" : "back"},
-                              {"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
-                              {"carriage_step", s.carriage_step},
-                              {"feed_step", s.feed_step},
-                              {"x_mm", s.x_mm},
-                              {"y_mm", s.y_mm},
-                              {"time_s", s.time_s}}
-                   .dump()
-            << '\n'
-            << std::flush;
-    }, [&](const controller::SimController& c) {
+    auto r = server->serve(g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); },
+                           [&](const controller::SimController& c) {
         if (a.mute_after_pass > 0) watch(c);
     });
     if (!r) fail_with(r.error());
@@ -129,6 +171,11 @@ void add_sim_command(CLI::App& app) {
     cmd->add_flag("--instant", args->server.sim.instant_motion,
                   "Execute motion in no time (link benchmarks)");
     cmd->add_option("--strike-log", args->strike_log, "Append each strike to FILE as a JSON line");
+    cmd->add_option("--firmware", args->firmware,
+                    "Run the reference firmware (make -C firmware emu: firmware/build-emu/tactus-fw.ihx) in the s51 "
+                    "emulator instead of the C++ model; strikes are read from its pins")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--profile,-p", args->profile, "With --firmware: the profile whose steps/mm the log's mm use");
     cmd->callback([args] { run_sim(*args); });
 }
 

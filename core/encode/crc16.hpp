@@ -11,4 +11,11 @@ namespace tactus::encode {
 [[nodiscard]] std::uint16_t crc16_ccitt(std::span<const std::uint8_t> bytes,
                                         std::uint16_t crc = 0xFFFF);
 
+// Protocol v3's DATA check: CRC-16 with polynomial 0x8BB7 (init 0xFFFF) over a
+// DATA payload's ops, appended to them. An error pattern the frame's CCITT CRC
+// misses is a multiple of its generator; the second generator does not divide
+// it for the same reason, so together they act as a 32-bit check
+// (firmware/PROTOCOL-v3.md, "Integrity").
+[[nodiscard]] std::uint16_t data_check_v3(std::span<const std::uint8_t> ops);
+
 }  // namespace tactus::encode

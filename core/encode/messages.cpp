@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encode/messages.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace tactus::encode {
@@ -121,12 +122,19 @@ Result<Hello> decode_hello(std::span<const std::uint8_t> p) {
 }
 
 std::vector<std::uint8_t> encode_hello_reply(const HelloReply& h) {
-    return {h.protocol, h.firmware_major, h.firmware_minor, h.capabilities,
-            h.ring_bytes, h.max_payload,  h.window_frames};
+    std::vector<std::uint8_t> o{h.protocol,   h.firmware_major, h.firmware_minor, h.capabilities,
+                                h.ring_bytes, h.max_payload,    h.window_frames};
+    if (h.protocol == kProtocolV3) {
+        put32(o, h.table_id);
+        put16(o, 0);  // reserved
+    }
+    return o;
 }
 Result<HelloReply> decode_hello_reply(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, 7, "HELLO_REPLY"); !r) return std::unexpected(r.error());
-    HelloReply h{p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+    // The protocol byte comes first in every version: it says how long the rest is.
+    const bool v3 = !p.empty() && p[0] == kProtocolV3;
+    if (auto r = need(p, v3 ? 13 : 7, "HELLO_REPLY"); !r) return std::unexpected(r.error());
+    HelloReply h{p[0], p[1], p[2], p[3], p[4], p[5], p[6], v3 ? get32(p, 7) : 0U};
     if (h.max_payload == 0 || h.ring_bytes < h.max_payload || h.window_frames == 0 ||
         h.window_frames > 127)
         return fail(ErrorKind::protocol, "controller reports an impossible buffer (ring " +
@@ -146,6 +154,17 @@ std::vector<std::uint8_t> encode_config(const machine::ControllerConfig& c) {
     put16(o, c.keepalive_ms);
     return o;
 }
+std::vector<std::uint8_t> encode_config_v3(const machine::ControllerConfig& c, std::uint16_t settle_ticks) {
+    std::vector<std::uint8_t> o;
+    put16(o, static_cast<std::uint16_t>(std::clamp<std::int32_t>(c.carriage_travel_steps, 1, 0xFFFF)));
+    // The firmware's step interrupt needs at least 64 cycles a homing step.
+    put16(o, std::max<std::uint16_t>(c.home_interval_ticks, 64));
+    put16(o, c.hammer_ticks);
+    put16(o, settle_ticks);
+    put16(o, c.keepalive_ms);
+    return o;
+}
+
 Result<machine::ControllerConfig> decode_config(std::span<const std::uint8_t> p) {
     if (auto r = need(p, 18, "CONFIGURE"); !r) return std::unexpected(r.error());
     machine::ControllerConfig c;

@@ -16,6 +16,10 @@
 namespace tactus::encode {
 
 inline constexpr std::uint8_t kProtocolVersion = 2;
+// The reference firmware's protocol (firmware/PROTOCOL-v3.md): the same frames,
+// sessions and window; table moves and dot-grid passes in the job stream
+// (encode/stream_v3.hpp); a DATA check; the ramp table id in HELLO_REPLY.
+inline constexpr std::uint8_t kProtocolV3 = 3;
 
 // Frame types. Host-to-controller types are below 0x80, replies have the top bit.
 enum class FrameType : std::uint8_t {
@@ -128,8 +132,13 @@ struct HelloReply {
     std::uint8_t ring_bytes = 0;   // size of the job-stream ring buffer
     std::uint8_t max_payload = 0;  // largest DATA payload accepted
     std::uint8_t window_frames = 0; // most frames the host may have unacknowledged
+    std::uint32_t table_id = 0;     // v3: the ramp tables the firmware was built with
     bool operator==(const HelloReply&) const = default;
 };
+
+// v3's CONFIGURE (10 bytes): travel, homing interval, hammer pulse, settle,
+// keep-alive, each u16.
+std::vector<std::uint8_t> encode_config_v3(const machine::ControllerConfig&, std::uint16_t settle_ticks);
 
 // CONFIGURE carries machine::ControllerConfig. Steps per mm are sent in
 // micro-steps per metre so the firmware never sees a float.

@@ -296,15 +296,24 @@ private:
 
 }  // namespace
 
+Result<JobStream> begin_stream(const plan::JobPlan& plan, const StreamStart& start) {
+    std::size_t passes = 0;
+    for (const auto& sheet : plan.sheets) passes += sheet.passes.size();
+    if (passes > kMaxJobPasses)
+        return fail(std::to_string(passes) + " passes in one job; the controller counts at most 65,535", "plan");
+    if (start.first_pass > passes) return fail("start pass beyond the plan", "plan");
+    JobStream s;
+    s.first_pass = start.first_pass;
+    s.end_pass = passes;
+    return s;
+}
+
 Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                              const StreamStart& start) {
     const auto table = pass_table(plan);
-    if (table.size() > kMaxJobPasses)
-        return fail(std::to_string(table.size()) + " passes in one job; the controller counts at most 65,535", "plan");
-    if (start.first_pass > table.size()) return fail("start pass beyond the plan", "plan");
-    JobStream s;
-    s.first_pass = start.first_pass;
-    s.end_pass = table.size();
+    auto begun = begin_stream(plan, start);
+    if (!begun) return std::unexpected(begun.error());
+    JobStream s = std::move(*begun);
     Writer w(s);
     Op o;
     o.code = OpCode::job_begin;

@@ -112,6 +112,11 @@ struct JobStream {
     std::size_t end_pass = 0;          // one past the last pass streamed
 };
 
+// An empty stream for the plan from `start`, its pass range set; fails when
+// the plan has more passes than the controller counts or `start` is past its
+// end. Both protocol versions' encoders begin with it.
+Result<JobStream> begin_stream(const plan::JobPlan& plan, const StreamStart& start);
+
 // Encodes the plan from `start` to its end. Fails (with the pass named) on a
 // plan the controller could not execute: step counts that do not add up,
 // intervals out of the 16-bit timer range, more than 255 strikes in a pass.

@@ -2,6 +2,7 @@
 // Streaming a job: keep the controller's ring full through a sliding window,
 // resend what the line lost, and recover from a paused, faulted, restarted or
 // unplugged controller without losing or repeating a dot.
+#include <algorithm>
 #include <string>
 
 #include "link/link_impl.hpp"
@@ -59,14 +60,22 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
     while (js.job_id == 0 || (job_id == 0 && js.job_id == ack.job_id))
         js.job_id = static_cast<std::uint16_t>(opt.job_id + (rng() % 0x7FFF) + 1);
 
+    if (v3() && !tables)
+        return fail(ErrorKind::usage,
+                    "the controller speaks protocol 3 (the reference firmware): plan with its ramp tables and "
+                    "give them to the link (use_firmware_tables)",
+                    device);
     auto build = [&](const encode::StreamStart& st) -> Result<void> {
-        auto stream = encode::encode_job(plan, js.job_id, st);
+        auto stream = v3() ? encode::encode_job_v3(plan, *tables, timing, js.job_id, st)
+                           : encode::encode_job(plan, js.job_id, st);
         if (!stream) return std::unexpected(stream.error());
         js.stream = std::move(*stream);
         std::size_t max_payload =
             std::min<std::size_t>(encode::kMaxPayload, std::max<std::uint8_t>(info.max_payload, 8));
         if (opt.max_payload > 0) max_payload = std::min(max_payload, std::max<std::size_t>(opt.max_payload, 8));
-        js.chunks = encode::chunk_stream(js.stream, max_payload);
+        // v3: ops may span frames; each payload ends with the 2-byte DATA check.
+        js.chunks = v3() ? encode::chunk_stream_v3(js.stream, max_payload - 2)
+                         : encode::chunk_stream(js.stream, max_payload);
         js.next_chunk = 0;
         js.bytes_total += js.stream.bytes.size();
         return {};
@@ -131,8 +140,11 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
     auto restart = [&]() -> Result<void> {
         ++stats.restarts;
         if (auto h = hello(); !h) return std::unexpected(h.error());
-        if (config)
-            if (auto r = transact(FrameType::configure, encode::encode_config(*config)); !r) return r;
+        if (config) {
+            auto payload = config_payload();
+            if (!payload) return std::unexpected(payload.error());
+            if (auto r = transact(FrameType::configure, std::move(*payload)); !r) return r;
+        }
         auto st = status();
         if (!st) return std::unexpected(st.error());
         ack = st->ack;
@@ -167,13 +179,16 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         Result<void> step{};
         // A request made before the controller has begun this stream waits
         // until it has: a PAUSE sent to an idle controller pauses nothing, and
-        // the job then ran on while the spool said "paused".
+        // the job then ran on while the spool said "paused". Control frames
+        // take part in the window: nothing outstanding ever exceeds it (a
+        // request waits for room).
         const bool begun = ack.job_id == js.job_id;
-        if (begun && pause_req.exchange(false)) {
+        const auto room = [&] { return unacked.size() < window_frames(); };
+        if (begun && room() && pause_req.exchange(false)) {
             js.user_paused = true;
             step = send(FrameType::pause, {});
         }
-        if (step && begun && resume_req.exchange(false)) {
+        if (step && begun && room() && resume_req.exchange(false)) {
             js.user_paused = false;
             step = send(FrameType::resume, {});
         }
@@ -218,7 +233,11 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         }
         // Paused by the controller itself (paper loaded again, keep-alive lost
         // while the cable was out): carry on unless the user paused.
-        if (step && ack.state == ControllerState::paused && this_job && !js.user_paused &&
+        const bool resume_outstanding = std::any_of(unacked.begin(), unacked.end(), [](const Outgoing& o) {
+            return o.type == FrameType::resume;
+        });
+        if (step && room() && !resume_outstanding && ack.state == ControllerState::paused && this_job &&
+            !js.user_paused &&
             (ack.faults & fault::paper_out) == 0 && s->now() - js.last_resume > rto()) {
             js.last_resume = s->now();
             note("resuming");
@@ -230,9 +249,9 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             const auto [b, e] = js.chunks[js.next_chunk];
             if (e - b > credit()) break;
             if (data_start < 0) data_start = s->now();
-            step = send(FrameType::data,
-                        std::vector<std::uint8_t>(js.stream.bytes.begin() + static_cast<std::ptrdiff_t>(b),
-                                                  js.stream.bytes.begin() + static_cast<std::ptrdiff_t>(e)));
+            const std::span<const std::uint8_t> ops(js.stream.bytes.data() + b, e - b);
+            step = send(FrameType::data, v3() ? encode::data_payload_v3(ops)
+                                              : std::vector<std::uint8_t>(ops.begin(), ops.end()));
             js.bytes_sent += e - b;
             ++js.next_chunk;
         }

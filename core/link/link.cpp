@@ -32,8 +32,16 @@ Result<HelloReply> Link::hello() { return impl_->hello(); }
 
 Result<void> Link::configure(const machine::ControllerConfig& config) {
     impl_->config = config;
-    return impl_->transact(FrameType::configure, encode::encode_config(config));
+    auto payload = impl_->config_payload();
+    if (!payload) return std::unexpected(payload.error());
+    return impl_->transact(FrameType::configure, std::move(*payload));
 }
+
+Result<void> Link::use_firmware_tables(const machine::FirmwareTables& tables, const machine::StrikeTiming& timing) {
+    return impl_->use_firmware_tables(tables, timing);
+}
+
+std::uint8_t Link::protocol() const { return impl_->session ? impl_->info.protocol : 0; }
 
 Result<Status> Link::status() { return impl_->status(); }
 Result<void> Link::pause() { return impl_->transact(FrameType::pause, {}); }

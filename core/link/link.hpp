@@ -20,6 +20,7 @@
 
 #include "common/result.hpp"
 #include "encode/messages.hpp"
+#include "machine/firmware_tables.hpp"
 #include "plan/plan.hpp"
 
 namespace tactus::transport {
@@ -49,6 +50,10 @@ struct LinkOptions {
     // payloads is the stop-and-wait style of Marlin-like senders (benchmarks).
     std::size_t max_window_frames = 0;
     std::size_t max_payload = 0;
+    // Protocol version to speak: 0 lets the controller decide (HELLO offers
+    // v2; a controller that refuses it is offered v3, which the reference
+    // firmware speaks), 2 or 3 to insist on one.
+    std::uint8_t protocol = 0;
 };
 
 // One pass the controller has executed (called in execution order).
@@ -121,6 +126,14 @@ public:
     // Opens a session: new nonce, sequence numbers reset, version checked.
     Result<HelloReply> hello();
     Result<void> configure(const machine::ControllerConfig& config);
+    // Protocol v3 (the reference firmware): the ramp tables the plan was made
+    // with (profile::load_firmware_tables) and the strike timing CONFIGURE
+    // sets. Refused, with the reason, when the firmware reports other tables
+    // in HELLO_REPLY: a job planned with them would strike in the wrong
+    // places and times. Call after hello(), before configure().
+    Result<void> use_firmware_tables(const machine::FirmwareTables& tables, const machine::StrikeTiming& timing);
+    // The protocol version of the open session (0: none).
+    [[nodiscard]] std::uint8_t protocol() const;
     Result<Status> status();
     Result<void> pause();
     Result<void> resume();

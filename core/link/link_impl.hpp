@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <cstdio>
 #include <deque>
 #include <optional>
 #include <random>
 
 #include "encode/frame.hpp"
 #include "encode/stream.hpp"
+#include "encode/stream_v3.hpp"
 #include "link/link.hpp"
 #include "transport/byte_stream.hpp"
 
@@ -41,6 +43,9 @@ struct Link::Impl {
     std::uint8_t next_seq = 0;
     HelloReply info;
     std::optional<machine::ControllerConfig> config;
+    // v3: the tables the plan was made with, matched against HELLO_REPLY.
+    std::optional<machine::FirmwareTables> tables;
+    machine::StrikeTiming timing;
     std::mt19937 rng{std::random_device{}()};
 
     // what the controller last told us
@@ -110,10 +115,51 @@ struct Link::Impl {
         return {};
     }
 
+    [[nodiscard]] bool v3() const { return session && info.protocol == encode::kProtocolV3; }
+    // The ring bytes a DATA frame takes: v3's check is not stored.
+    std::size_t ops_bytes(const Outgoing& o) const {
+        return v3() && o.payload.size() >= 2 ? o.payload.size() - 2 : o.payload.size();
+    }
+
+    Result<std::vector<std::uint8_t>> config_payload() const {
+        if (!config) return fail(ErrorKind::internal, "no configuration", device);
+        if (!v3()) return encode::encode_config(*config);
+        if (!tables)
+            return fail(ErrorKind::usage,
+                        "the controller speaks protocol 3 (the reference firmware, ramp table " + table_hex(info.table_id) +
+                            "): give the firmware's tables (its build/ramp.json) to plan with",
+                        device);
+        return encode::encode_config_v3(*config, timing.settle_ticks);
+    }
+
+    static std::string table_hex(std::uint32_t id) {
+        char b[9];
+        std::snprintf(b, sizeof b, "%08x", id);
+        return b;
+    }
+
+    Result<void> use_firmware_tables(const machine::FirmwareTables& t, const machine::StrikeTiming& st) {
+        if (!session) return fail(ErrorKind::internal, "no session: call hello() first", device);
+        if (!v3())
+            return fail(ErrorKind::device, "the controller speaks protocol " + std::to_string(info.protocol) +
+                            ", not the reference firmware's 3: it takes no firmware tables",
+                        device);
+        if (t.table_id != info.table_id)
+            return fail(ErrorKind::device,
+                        "the firmware was built for ramp table " + table_hex(info.table_id) + ", the plan's tables are " +
+                            table_hex(t.table_id) +
+                            ": rebuild the firmware with this profile (make -C firmware PROFILE=...) or plan with "
+                            "the tables it was built with (its build/ramp.json)",
+                        device);
+        tables = t;
+        timing = st;
+        return {};
+    }
+
     std::size_t data_in_flight() const {
         std::size_t n = 0;
         for (const auto& o : unacked)
-            if (o.type == FrameType::data) n += o.payload.size();
+            if (o.type == FrameType::data) n += ops_bytes(o);
         return n;
     }
     std::size_t credit() const {
@@ -181,7 +227,12 @@ struct Link::Impl {
                     case encode::NakReason::out_of_order:
                     case encode::NakReason::no_space: break;
                 }
-                if (n->first != encode::NakReason::no_session) {
+                // A refused frame is not lost: sending it again cannot help
+                // (and a re-sent HELLO of a refused version would be refused
+                // again after the next version was offered).
+                const bool refusal = n->first == encode::NakReason::bad_payload ||
+                                     n->first == encode::NakReason::unknown_type;
+                if (n->first != encode::NakReason::no_session && !refusal) {
                     acknowledge_through(f.seq);
                     // Go back to the first frame it lacks, at most once per round trip.
                     if (!unacked.empty() && s->now() - last_goback > rto() / 2) {
@@ -237,7 +288,9 @@ struct Link::Impl {
         return {};
     }
 
-    Result<HelloReply> hello() {
+    // Opens a session offering `version`. nullopt: the controller refused
+    // that version (NAK bad payload to HELLO), so another may be tried.
+    Result<std::optional<HelloReply>> hello_as(std::uint8_t version) {
         nonce = static_cast<std::uint16_t>(rng() & 0xFFFF);
         if (nonce == 0) nonce = 1;
         unacked.clear();
@@ -246,8 +299,12 @@ struct Link::Impl {
         refused.reset();
         last_hello.reset();
         decoder.reset();
+        // A controller before its first session reports its power-on reset in
+        // the NAK that refuses an unknown version; the session that follows
+        // clears it. That is not a power loss during the job.
+        const bool power_loss_before = saw_power_loss;
         const std::uint8_t seq = next_seq++;
-        const auto payload = encode::encode_hello({nonce, encode::kProtocolVersion});
+        const auto payload = encode::encode_hello({nonce, version});
         unacked.push_back({seq, FrameType::hello, payload, s->now()});
         const double start = s->now();
         if (auto r = transmit(unacked.back()); !r) return std::unexpected(r.error());
@@ -266,18 +323,44 @@ struct Link::Impl {
             }
             if (auto r = pump(unacked.front().sent_at + rto() - s->now()); !r)
                 return std::unexpected(r.error());
-            if (refused) return std::unexpected(*refused);
+            if (refused) {
+                refused.reset();
+                saw_power_loss = power_loss_before;
+                return std::optional<HelloReply>{};
+            }
         }
-        if (last_hello->protocol != encode::kProtocolVersion)
+        if (last_hello->protocol != version)
             return fail(ErrorKind::protocol, "controller speaks protocol version " +
-                            std::to_string(last_hello->protocol) + ", this host " +
-                            std::to_string(encode::kProtocolVersion),
+                            std::to_string(last_hello->protocol) + ", this host offered " +
+                            std::to_string(version),
                         device);
         info = *last_hello;
         unacked.clear();
         session = true;
         last_rx = s->now();
-        return info;
+        return std::optional<HelloReply>{info};
+    }
+
+    Result<HelloReply> hello() {
+        // The version of the last session first, so a reconnect or restart
+        // does not ask the firmware for v2 each time.
+        std::vector<std::uint8_t> versions;
+        if (opt.protocol != 0)
+            versions = {opt.protocol};
+        else if (info.protocol == encode::kProtocolV3)
+            versions = {encode::kProtocolV3, encode::kProtocolVersion};
+        else
+            versions = {encode::kProtocolVersion, encode::kProtocolV3};
+        for (const auto v : versions) {
+            auto h = hello_as(v);
+            if (!h) return std::unexpected(h.error());
+            if (*h) return **h;
+        }
+        std::string offered;
+        for (const auto v : versions) offered += (offered.empty() ? "" : " and ") + std::to_string(v);
+        return fail(ErrorKind::protocol,
+                    "the controller refused HELLO for protocol " + offered + ": firmware and host disagree on the protocol",
+                    device);
     }
 
     Result<Status> status() {

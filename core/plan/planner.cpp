@@ -7,6 +7,9 @@
 
 #include "plan/geometry.hpp"
 #include "motion/motion.hpp"
+#include "motion/table_move.hpp"
+#include "machine/limits.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
 
 namespace tactus::plan {
@@ -93,16 +96,30 @@ Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
       o_(o),
       tuner_(std::make_unique<estimate::MoveTuner>(p)),
       carriage_axis_(p.carriage.steps_per_mm),
-      feed_axis_(p.feed.steps_per_mm) {}
+      feed_axis_(p.feed.steps_per_mm) {
+    if (o_.firmware) {
+        // The firmware's HOME leaves the carriage last moving toward home, so
+        // the first move away from it takes up the backlash.
+        head_prev_ = 1;
+        strike_ = profile::strike_timing(p_);
+    }
+}
 
 Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOptions& o) {
     if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
+    if (o.firmware)
+        if (auto t = profile::check_firmware_tables(*o.firmware, p); !t) return std::unexpected(t.error());
     return Planner(p, o);
 }
 
 Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const motion::MoveShape& shape) {
     auto it = carriage_cache_.find(steps);
-    if (it == carriage_cache_.end()) {
+    if (it == carriage_cache_.end() && o_.firmware) {
+        it = carriage_cache_
+                 .emplace(steps, motion::table_move(o_.firmware->carriage, static_cast<std::int32_t>(steps),
+                                                    strike_.settle_ticks))
+                 .first;
+    } else if (it == carriage_cache_.end()) {
         auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
                              p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "carriage"));
@@ -113,7 +130,14 @@ Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const moti
 
 Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::feed_move(std::uint32_t steps) {
     auto it = feed_cache_.find(steps);
-    if (it == feed_cache_.end()) {
+    if (it == feed_cache_.end() && o_.firmware) {
+        // A table move; its shape is only a duration (the feed has no vibration model).
+        auto m = motion::table_move(o_.firmware->feed, static_cast<std::int32_t>(steps), 0);
+        motion::MoveShape shape;
+        shape.distance = steps / p_.feed.steps_per_mm;
+        shape.duration = m.duration_s;
+        it = feed_cache_.emplace(steps, std::pair{std::move(m), std::move(shape)}).first;
+    } else if (it == feed_cache_.end()) {
         auto shape = motion::make_move(feed_shape(p_), steps / p_.feed.steps_per_mm, limits(p_.feed));
         auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.feed.steps_per_mm,
                              p_.motion.step_tolerance);
@@ -134,7 +158,10 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     sheet.index = sheet_number;
     const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
     const motion::Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
-    const double dwell = p_.head.dwell_s;
+    constexpr auto lat = machine::kFirmwareLatency;
+    const auto ticks = [](double n) { return n / machine::kTickHz; };
+    const double dwell =
+        o_.firmware ? ticks(strike_.hammer_ticks + lat.hammer_end_ticks) : p_.head.dwell_s;
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     const auto& h = *hits;
     for (std::size_t first = 0; first < h.size();) {
@@ -154,7 +181,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         pass.feed = *fm->first;
         pass.segments += pass.feed.segments.size();
         feed_pos = pass.feed_step;
-        const double feed_time = fm->second->duration;
+        const double feed_time =
+            fm->second->duration + (o_.firmware && feed_steps > 0 ? ticks(lat.move_start_ticks) : 0.0);
         const double feed_bound = motion::jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
 
         const double t0 = clock_s_;
@@ -176,16 +204,33 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                 head_cur_ = target;
             }
             motor_step_ += n;
-            auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
-            if (!tuned) return std::unexpected(tuned.error());
-            const auto& choice = (*tuned)->choice;
-            auto sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), (*tuned)->shape);
+            // Table moves (v3) are not tuned: no shape to choose, no residual estimated.
+            estimate::TuneChoice choice;
+            choice.within_tolerance = true;
+            Result<motion::StepMove> sm;
+            double move_time = 0;
+            if (o_.firmware) {
+                sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), {});
+                // The firmware's main loop between phases (machine::kFirmwareLatency).
+                if (sm)
+                    move_time = sm->duration_s + ticks(lat.settle_start_ticks) +
+                                (n != 0 ? ticks(lat.move_start_ticks) : 0.0);
+            } else {
+                auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
+                if (!tuned) return std::unexpected(tuned.error());
+                choice = (*tuned)->choice;
+                sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), (*tuned)->shape);
+                move_time = (*tuned)->shape.duration;
+            }
             if (!sm) return std::unexpected(sm.error());
             sm->steps = n;
             pass.segments += sm->segments.size();
-            const double move_time = (*tuned)->shape.duration;
             const double bound = motion::jerk_min_time(head_mm, carriage_lim);
-            if (k == 0) {
+            if (k == 0 && o_.firmware) {
+                // The firmware feeds first, then moves the carriage.
+                t += feed_time + move_time;
+                pass.lower_bound_s += std::max(feed_bound, bound);
+            } else if (k == 0) {
                 // The feed and the carriage's first move run at the same time.
                 t += std::max(feed_time, move_time);
                 pass.lower_bound_s += std::max(feed_bound, bound);

@@ -6,11 +6,13 @@
 // constant memory; plan_job collects every sheet for small documents.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 
 #include "common/result.hpp"
 #include "estimate/tune.hpp"
 #include "layout/page.hpp"
+#include "machine/firmware_tables.hpp"
 #include "plan/plan.hpp"
 #include "motion/steps.hpp"
 #include "profile/profile.hpp"
@@ -20,6 +22,13 @@ namespace tactus::plan {
 struct PlanOptions {
     // Check the layout against the profile (lines and cells per page, interpoint).
     bool check_layout = true;
+    // Plan for the reference firmware (protocol v3): every move a table move
+    // of its ramp tables, the feed before the carriage (never overlapped),
+    // the strike timing of profile::strike_timing, the backlash rule the
+    // firmware applies (after HOME the carriage last moved toward home). The
+    // plan's step times are then the firmware's. Residuals are not estimated
+    // for table moves (they stay 0).
+    std::optional<machine::FirmwareTables> firmware;
 };
 
 class Planner {
@@ -48,9 +57,10 @@ private:
     // Machine state carried across passes and sheets.
     double clock_s_ = 0;
     std::int32_t motor_step_ = 0;   // the controller's carriage step counter
-    std::int32_t head_prev_ = -1;   // P1 of the reversal rule: homing ends moving +x
+    std::int32_t head_prev_ = -1;   // P1 of the reversal rule: homing ends moving +x (v3: toward home)
     std::int32_t head_cur_ = 0;     // P2: where the head stands (in carriage steps)
     int next_direction_ = +1;
+    machine::StrikeTiming strike_;  // v3 only
 };
 
 Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,

@@ -16,6 +16,8 @@
 #include "encode/frame.hpp"
 #include "plan/plan_file.hpp"
 #include "encode/stream.hpp"
+#include "encode/stream_v3.hpp"
+#include "profile/firmware_tables.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/profile.hpp"
@@ -103,3 +105,55 @@ INSTANTIATE_TEST_SUITE_P(Samples, BackHalf,
                                  if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
                              return n;
                          });
+
+namespace {
+
+// Protocol v3 (the reference firmware): welcome.md's first sheet planned with
+// the firmware's ramp tables for the bundled profile, as the DATA frames the
+// firmware receives (31 bytes of ops and the 2-byte check each, SEQ from 1).
+// Pins the planner's table moves and the v3 encoder; also the bar of issue 12:
+// at most 2 line bytes per strike on a typical page, every frame byte counted.
+TEST(BackHalfV3, WelcomeSheetOneFramesMatchExpected) {
+    const auto prof = profile::default_profile();
+    auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
+    ASSERT_TRUE(tables) << tables.error().to_string();
+    pipeline::PipelineOptions o;
+    o.tables = "en-ueb-g2.ctb";
+    o.layout.geometry.interpoint = prof.geometry.interpoint;
+    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    auto doc = pipeline::lay_out_file(kSamples / "welcome.md", o);
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    plan::PlanOptions po;
+    po.firmware = *tables;
+    auto planner = plan::Planner::create(prof, po);
+    ASSERT_TRUE(planner) << planner.error().to_string();
+    auto sheet = planner->plan_sheet(*doc, 1);
+    ASSERT_TRUE(sheet) << sheet.error().to_string();
+    plan::JobPlan job;
+    job.strikes = planner->totals().strikes;
+    job.sheets.push_back(*sheet);
+    auto stream = encode::encode_job_v3(job, *tables, profile::strike_timing(prof), 1, {});
+    ASSERT_TRUE(stream) << stream.error().to_string();
+    std::string out;
+    std::size_t line = 0;
+    std::uint8_t seq = 1;
+    for (const auto& [begin, end] : encode::chunk_stream_v3(*stream, 31)) {
+        const auto payload =
+            encode::data_payload_v3(std::span<const std::uint8_t>(stream->bytes.data() + begin, end - begin));
+        const auto frame = encode::encode_frame(seq++, encode::FrameType::data, payload);
+        line += frame.size();
+        for (const auto byte : frame) {
+            char hex[3];
+            std::snprintf(hex, sizeof hex, "%02x", byte);
+            out += hex;
+        }
+        out += '\n';
+    }
+    expect_golden(out, "welcome-sheet1.v3.frames.hex");
+    ASSERT_GT(job.strikes, 1000U);
+    const double per_strike = static_cast<double>(line) / static_cast<double>(job.strikes);
+    EXPECT_LE(per_strike, 2.0) << line << " line bytes for " << job.strikes << " strikes";
+}
+
+}  // namespace

@@ -19,6 +19,7 @@
 #include "controller/sim_controller.hpp"
 #include "plan/plan_file.hpp"
 #include "../common/process.hpp"
+#include "../common/strike_log.hpp"
 #include "../common/test_plans.hpp"
 
 namespace tactus {
@@ -64,18 +65,7 @@ protected:
         r.exit_code = client.wait();
         server.signal(SIGTERM);
         server.wait();
-        std::ifstream in(dir_ / "strikes.jsonl");
-        std::string line;
-        while (std::getline(in, line)) {
-            const auto j = nlohmann::json::parse(line);
-            controller::LoggedStrike s;
-            s.sheet = j["sheet"];
-            s.side = j["side"] == "front" ? plan::Side::front : plan::Side::back;
-            s.hammer = j["hammer"] == "convex" ? plan::Hammer::convex : plan::Hammer::concave;
-            s.carriage_step = j["carriage_step"];
-            s.feed_step = j["feed_step"];
-            r.log.push_back(s);
-        }
+        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
         return r;
     }
 

@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "firmware_emulator.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <termios.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "command.hpp"
+#include "controller/firmware_trace.hpp"
+
+namespace tactus::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool in_path(const std::string& tool) {
+    const char* path = std::getenv("PATH");
+    std::stringstream dirs(path ? path : "/usr/bin:/bin");
+    for (std::string d; std::getline(dirs, d, ':');)
+        if (!d.empty() && access((fs::path(d) / tool).c_str(), X_OK) == 0) return true;
+    return false;
+}
+
+// The firmware's sheet number in internal RAM, from the linker's map next to
+// the image: the pin trace says where the carriage and the paper are, the
+// sheet only the firmware knows.
+unsigned sheet_address(const fs::path& map) {
+    std::ifstream in(map);
+    if (!in)
+        throw CommandFailed(exit_bad_input, map.string() + ": the linker map of the firmware image is missing "
+                                                           "(it is written beside the .ihx by make -C firmware emu)");
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream w(line);
+        std::string addr, name;
+        if (w >> addr >> name && name == "_fw_sheet") return static_cast<unsigned>(std::stoul(addr, nullptr, 16));
+    }
+    throw CommandFailed(exit_bad_input, map.string() + ": no _fw_sheet: not a Tactus firmware map");
+}
+
+// A child with stdin from /dev/null, stdout and stderr to `log`, in `dir`, niced:
+// s51 is CPU-heavy and the machine is shared.
+pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const fs::path& log) {
+    const pid_t pid = fork();
+    if (pid != 0) return pid;
+    if (chdir(dir.c_str()) != 0) _exit(126);
+    const int null = open("/dev/null", O_RDONLY);
+    const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (null >= 0) dup2(null, STDIN_FILENO);
+    if (out >= 0) {
+        dup2(out, STDOUT_FILENO);
+        dup2(out, STDERR_FILENO);
+    }
+    (void)setpriority(PRIO_PROCESS, 0, 10);
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    _exit(127);
+}
+
+void stop_child(pid_t pid) {
+    if (pid <= 0) return;
+    kill(pid, SIGTERM);
+    for (int i = 0; i < 50; ++i) {
+        if (waitpid(pid, nullptr, WNOHANG) == pid) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+}
+
+// Removes the run's folder and stops the children, however the run ends.
+struct Run {
+    fs::path dir;
+    pid_t s51 = -1;
+    int fifo_in = -1, fifo_out = -1;
+    int master = -1, slave_keep = -1;
+    ~Run() {
+        stop_child(s51);
+        for (int fd : {fifo_in, fifo_out, master, slave_keep})
+            if (fd >= 0) close(fd);
+        std::error_code ec;
+        if (!dir.empty() && !std::getenv("TACTUS_KEEP_EMULATOR_DIR")) fs::remove_all(dir, ec);
+    }
+};
+
+// The line between the pty and the emulator's FIFOs: bytes either way, each
+// dropped, bit-flipped or duplicated at `noise` (seeded), like sim --pty's.
+class Bridge {
+public:
+    Bridge(int master, int to_chip, int from_chip, double noise, std::uint64_t seed)
+        : master_(master), to_chip_(to_chip), from_chip_(from_chip), noise_(noise), rng_(seed) {}
+
+    // Moves what is waiting, for up to `ms` milliseconds.
+    void pump(int ms) {
+        pollfd fds[2] = {{master_, POLLIN, 0}, {from_chip_, POLLIN, 0}};
+        if (poll(fds, 2, ms) <= 0) return;
+        std::array<std::uint8_t, 512> buf{};
+        if (fds[0].revents & POLLIN) {
+            const auto n = read(master_, buf.data(), buf.size());
+            if (n > 0) forward(to_chip_, std::span(buf).first(static_cast<std::size_t>(n)));
+        }
+        if (fds[1].revents & POLLIN) {
+            const auto n = read(from_chip_, buf.data(), buf.size());
+            if (n > 0) forward(master_, std::span(buf).first(static_cast<std::size_t>(n)));
+        }
+    }
+    [[nodiscard]] std::size_t corrupted() const { return corrupted_; }
+
+private:
+    void forward(int fd, std::span<const std::uint8_t> in) {
+        std::vector<std::uint8_t> out;
+        std::uniform_real_distribution<double> u(0, 1);
+        for (std::uint8_t b : in) {
+            if (noise_ > 0 && u(rng_) < noise_) {
+                ++corrupted_;
+                continue;  // dropped
+            }
+            if (noise_ > 0 && u(rng_) < noise_) {
+                ++corrupted_;
+                b = static_cast<std::uint8_t>(b ^ (1U << (rng_() % 8)));
+            }
+            out.push_back(b);
+            if (noise_ > 0 && u(rng_) < noise_) {
+                ++corrupted_;
+                out.push_back(b);  // duplicated
+            }
+        }
+        for (std::size_t done = 0; done < out.size();) {
+            const auto n = write(fd, out.data() + done, out.size() - done);
+            if (n <= 0) return;  // the client went away: the line loses the bytes
+            done += static_cast<std::size_t>(n);
+        }
+    }
+    int master_, to_chip_, from_chip_;
+    double noise_;
+    std::mt19937_64 rng_;
+    std::size_t corrupted_ = 0;
+};
+
+}  // namespace
+
+void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<bool>& stop,
+                           const std::function<void(const controller::LoggedStrike&)>& on_strike) {
+    const fs::path ihx = fs::absolute(o.ihx);
+    if (!fs::is_regular_file(ihx))
+        throw CommandFailed(exit_bad_input, o.ihx + ": no such firmware image (build it with make -C firmware emu)");
+    const unsigned sheet_at = sheet_address(fs::path(ihx).replace_extension(".map"));
+    if (!in_path("s51"))
+        throw CommandFailed(exit_device, "sim --firmware: s51 not found (apt-get install sdcc-ucsim)");
+    Run run;
+    std::string tmpl = (fs::temp_directory_path() / "tactus-s51.XXXXXX").string();
+    if (!mkdtemp(tmpl.data())) throw CommandFailed(exit_failure, "sim --firmware: cannot make a temporary folder");
+    run.dir = tmpl;
+    const auto h2t = run.dir / "h2t", t2h = run.dir / "t2h", vcd = run.dir / "pins.vcd";
+    if (mkfifo(h2t.c_str(), 0600) != 0 || mkfifo(t2h.c_str(), 0600) != 0)
+        throw CommandFailed(exit_failure, "sim --firmware: cannot make the emulator's FIFOs in " + run.dir.string());
+    // Held open on both ends here (this process is the bridge), so s51's opens never wait.
+    run.fifo_in = open(h2t.c_str(), O_RDWR | O_CLOEXEC);
+    run.fifo_out = open(t2h.c_str(), O_RDWR | O_CLOEXEC);
+    {
+        // A command file runs before a hex file named on the command line is
+        // loaded, so it loads the image itself.
+        std::ofstream cmds(run.dir / "cmds");
+        cmds << "file \"" << ihx.string() << "\"\n";
+        if (o.paper_out) cmds << "set memory port_3_cfg 1 0xbf\n";  // P3.6, the paper sensor, low
+        cmds << "set hw vcd[0] output \"" << vcd.string() << "\"\n"
+             << "set hw vcd[0] add port_1_cfg 2\n"
+             << "set hw vcd[0] add iram 0x" << std::hex << sheet_at << "\n"
+             << "set hw vcd[0] add iram 0x" << sheet_at + 1 << std::dec << "\n"
+             << "set hw vcd[0] start\n"
+             << "run\n";
+    }
+    run.s51 = spawn({"s51", "-t", "C52", "-X", "11.0592M", "-S", "in=h2t,out=t2h", "-e", "uart0_check_often=1",
+                     "-b", "-C", "cmds"},
+                    run.dir, run.dir / "s51.log");
+    // The pty a host opens; its slave is held open so the pty outlives a
+    // client that closes it. Raw: every byte value passes.
+    run.master = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (run.master < 0 || grantpt(run.master) != 0 || unlockpt(run.master) != 0)
+        throw CommandFailed(exit_device, "sim --firmware: cannot make a pseudo-terminal");
+    const std::string pts = ptsname(run.master);
+    run.slave_keep = open(pts.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+    termios t{};
+    if (run.slave_keep < 0 || tcgetattr(run.slave_keep, &t) != 0)
+        throw CommandFailed(exit_device, "sim --firmware: cannot open " + pts);
+    cfmakeraw(&t);
+    tcsetattr(run.slave_keep, TCSANOW, &t);
+    Bridge line(run.master, run.fifo_in, run.fifo_out, o.noise, o.seed);
+    std::cout << pts << std::endl;
+
+    controller::FirmwareTrace trace(o.carriage_steps_per_mm, o.feed_steps_per_mm);
+    std::ifstream pins;
+    std::size_t fired = 0;
+    std::vector<controller::LoggedStrike> strikes;
+    auto drain = [&] {
+        if (!pins.is_open()) pins.open(vcd, std::ios::binary);
+        if (!pins.is_open()) return;
+        std::string chunk(1 << 16, '\0');
+        for (;;) {
+            pins.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+            const auto n = static_cast<std::size_t>(pins.gcount());
+            if (n == 0) break;
+            strikes.clear();
+            if (auto r = trace.push(std::string_view(chunk).substr(0, n), strikes); !r) fail_with(r.error());
+            for (const auto& s : strikes) on_strike(s);
+            fired += strikes.size();
+        }
+        pins.clear();  // at the end for now: the emulator appends more
+    };
+    bool ended = false;
+    auto last_drain = std::chrono::steady_clock::now();
+    while (!stop.load() && !ended) {
+        line.pump(20);
+        if (std::chrono::steady_clock::now() - last_drain < std::chrono::milliseconds(50)) continue;
+        last_drain = std::chrono::steady_clock::now();
+        drain();
+        int status = 0;
+        if (waitpid(run.s51, &status, WNOHANG) == run.s51) {
+            run.s51 = -1;
+            ended = true;
+        }
+    }
+    stop_child(run.s51);
+    run.s51 = -1;
+    drain();  // what s51 wrote as it stopped
+    std::cerr << "sim: " << fired << " strikes fired by the firmware (read from its pins), " << line.corrupted()
+              << " bytes dropped, flipped or duplicated on the line"
+              << (ended ? "; the emulator ended by itself" : "") << "\n";
+}
+
+}  // namespace tactus::cli

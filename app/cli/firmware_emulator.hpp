@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// `tactus-cli sim --firmware FILE.ihx --pty`: the reference firmware in the
+// s51 emulator (an 8052 at 11.0592 MHz, `-t C52`), its UART bridged to a
+// pseudo-terminal, and its port pins traced, so the strikes it fires come
+// back as the strike log the C++ simulated controller writes. The recipe is
+// firmware/tools/run-s51.sh's (../shared/design/emulator-notes.md): two FIFOs
+// for the emulator's serial port (s51's TCP and tty options are not
+// binary-clean), bridged to a raw pty; here this process is the bridge (where
+// run-s51.sh uses socat), so it can also put noise on the line.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "controller/sim_controller.hpp"
+
+namespace tactus::cli {
+
+struct FirmwareEmulatorOptions {
+    std::string ihx;           // the emulator build (make -C firmware emu): build-emu/tactus-fw.ihx
+    bool paper_out = false;    // hold the paper sensor (P3.6) low
+    double carriage_steps_per_mm = 80;  // for the log's millimetres
+    double feed_steps_per_mm = 40;
+    double noise = 0;          // per byte either way: dropped, flipped, duplicated, each at this rate
+    std::uint64_t seed = 1;
+};
+
+// Starts s51 (niced), prints the pty path on stdout's first line,
+// and runs until `stop` is set or the emulator ends; each strike read from the
+// pin trace goes to `on_strike` as it is fired. Throws CommandFailed with what
+// is missing (the image, its .map, s51) and the exit code.
+void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<bool>& stop,
+                           const std::function<void(const controller::LoggedStrike&)>& on_strike);
+
+}  // namespace tactus::cli

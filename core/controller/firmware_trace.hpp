@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The strikes the reference firmware fired, read back from the emulated chip:
+// s51 writes its port 1 (firmware/README.md, "Pin map": carriage and feed
+// STEP/DIR, the two hammers) and the firmware's sheet number as a
+// value-change dump, and this turns the dump into the strike log the C++
+// simulated controller writes. Positions are counted from the STEP and DIR
+// pins, backlash steps included, exactly as the firmware counts them; the feed
+// counter restarts where the sheet number becomes non-zero (SHEET_BEGIN).
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.hpp"
+#include "controller/sim_controller.hpp"
+
+namespace tactus::controller {
+
+class FirmwareTrace {
+public:
+    // steps/mm map positions to millimetres for the log (x_mm, y_mm).
+    FirmwareTrace(double carriage_steps_per_mm, double feed_steps_per_mm)
+        : carriage_spm_(carriage_steps_per_mm), feed_spm_(feed_steps_per_mm) {}
+
+    // VCD text in any pieces (a growing file read as it grows); appends the
+    // strikes whose hammer edge it completes. Fails on a dump without port 1.
+    Result<void> push(std::string_view text, std::vector<LoggedStrike>& out);
+
+    [[nodiscard]] std::int32_t carriage_step() const { return carriage_; }
+    [[nodiscard]] std::int32_t feed_step() const { return feed_; }
+
+private:
+    void line(std::string_view l, std::vector<LoggedStrike>& out);
+    void change(const std::string& id, std::uint32_t value, std::vector<LoggedStrike>& out);
+
+    double carriage_spm_, feed_spm_;
+    std::string pending_;  // an unfinished line
+    double tick_s_ = 1e-12;
+    double now_s_ = 0;
+    std::string port_id_, sheet_lo_id_, sheet_hi_id_;
+    std::uint32_t port_ = 0xFF;
+    std::uint16_t sheet_ = 0;
+    std::int32_t carriage_ = 0, feed_ = 0;
+    bool in_header_ = true;
+};
+
+}  // namespace tactus::controller

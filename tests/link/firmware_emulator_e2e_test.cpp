@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// End to end against the real firmware: `tactus-cli sim --firmware` runs the
+// reference firmware (firmware/, the emulator build) in s51 behind a pty,
+// `tactus-cli emboss --device pty:...?baud=9600` embosses a document through
+// it (protocol 3, found from HELLO_REPLY), and the strikes read back from the
+// chip's port pins must be the host's plan, dot for dot. Needs sdcc, s51 and
+// socat (tools/install-deps.sh); ctest label "emulator". One emulator at a
+// time (RUN_SERIAL): s51 takes a whole core.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "controller/sim_controller.hpp"
+#include "pipeline/pipeline.hpp"
+#include "plan/planner.hpp"
+#include "profile/firmware_tables.hpp"
+#include "profile/profile.hpp"
+#include "../common/process.hpp"
+#include "../common/strike_log.hpp"
+
+namespace tactus {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Process;
+
+// The bundled short sample the README's main job embosses on the firmware.
+const std::string kNote = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+
+struct EmulatorRun {
+    int exit_code = -1;
+    std::string output;
+    std::vector<controller::LoggedStrike> log;
+    std::vector<double> times;
+};
+
+class FirmwareEndToEnd : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("tactus-fw-e2e-" + std::to_string(getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // The plan the CLI makes for the firmware: the same library calls.
+    plan::JobPlan planned() {
+        const auto prof = profile::default_profile();
+        pipeline::PipelineOptions o;
+        o.layout.geometry.interpoint = prof.geometry.interpoint;
+        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+        auto doc = pipeline::lay_out_file(kNote, o);
+        EXPECT_TRUE(doc) << doc.error().to_string();
+        plan::PlanOptions po;
+        auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_EMU_TABLES);
+        EXPECT_TRUE(tables) << tables.error().to_string();
+        po.firmware = *tables;
+        auto job = plan::plan_job(*doc, prof, po);
+        EXPECT_TRUE(job) << job.error().to_string();
+        return job ? *job : plan::JobPlan{};
+    }
+
+    EmulatorRun emboss(const std::string& tables, std::vector<std::string> sim_extra = {}) {
+        std::vector<std::string> sim{TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty",
+                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
+        sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
+        Process server(sim, (dir_ / "sim.err").string());
+        const std::string pty = server.read_line(std::chrono::seconds(30));
+        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+        Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600",
+                        "--firmware-tables", tables},
+                       Process::Options{{}, true, {}});
+        EmulatorRun r;
+        r.output = client.read_all();
+        r.exit_code = client.wait();
+        server.signal(SIGTERM);
+        server.wait();
+        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
+        for (const auto& k : r.log) r.times.push_back(k.time_s);
+        return r;
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(FirmwareEndToEnd, StrikesReadFromThePinsAreThePlan) {
+    const auto job = planned();
+    const auto want = controller::planned_strikes(job);
+    ASSERT_FALSE(want.empty());
+    const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("embossed " + std::to_string(job.sheets[0].passes.size()) + " passes"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.log, want);
+    // Figures for the report (not asserted: the emulator's clock is the
+    // chip's, but the host's pauses on a loaded machine can starve it).
+    if (r.log.size() == want.size() && want.size() > 1) {
+        const double emulated = r.times.back() - r.times.front();
+        const double plan_span = want.back().time_s - want.front().time_s;
+        std::printf("first to last strike: emulated %.4f s, planned %.4f s (%+.2f %%)\n", emulated, plan_span,
+                    100 * (emulated / plan_span - 1));
+    }
+    const auto sent = r.output.find(" bytes sent");
+    if (sent != std::string::npos) {
+        const auto start = r.output.rfind(' ', sent - 1) + 1;
+        const double bytes = std::stod(r.output.substr(start, sent - start));
+        std::printf("line bytes (host to controller) per strike: %.2f (%zu strikes)\n",
+                    bytes / static_cast<double>(want.size()), want.size());
+    }
+}
+
+TEST_F(FirmwareEndToEnd, TablesOfAnotherBuildAreRefusedWithTheReason) {
+    // The same tables under another id: what a firmware built from another profile reports.
+    auto j = nlohmann::json::parse(std::ifstream(TACTUS_FIRMWARE_EMU_TABLES));
+    j["table_id"] = "1c0ffee5";
+    std::ofstream(dir_ / "other.json") << j.dump();
+    const auto r = emboss((dir_ / "other.json").string());
+    EXPECT_EQ(r.exit_code, 4) << r.output;  // exit_device
+    EXPECT_NE(r.output.find("the firmware was built for ramp table"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("1c0ffee5"), std::string::npos) << r.output;
+    EXPECT_TRUE(r.log.empty());
+}
+
+// Paper out, from the firmware's paper sensor (P3.6 held low): SHEET_BEGIN
+// faults, the host reports it and waits for paper; cancelled, nothing struck.
+TEST_F(FirmwareEndToEnd, PaperOutIsReportedAndNothingIsStruck) {
+    Process server({TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty", "--paper-out-at", "1",
+                    "--strike-log", (dir_ / "strikes.jsonl").string()});
+    const std::string pty = server.read_line(std::chrono::seconds(30));
+    ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+    Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600", "--firmware-tables",
+                    TACTUS_FIRMWARE_EMU_TABLES},
+                   Process::Options{{}, true, {}});
+    std::string seen;
+    for (int i = 0; i < 20 && seen.find("paper out") == std::string::npos; ++i) {
+        const auto line = client.read_line(std::chrono::seconds(15));
+        if (line.empty()) break;
+        seen += line + "\n";
+    }
+    EXPECT_NE(seen.find("paper out at sheet 1"), std::string::npos) << seen;
+    client.signal(SIGINT);
+    const auto rest = client.read_all();
+    EXPECT_EQ(client.wait(), 1) << seen << rest;
+    EXPECT_NE(rest.find("cancelled after 0 passes"), std::string::npos) << rest;
+    server.signal(SIGTERM);
+    server.wait();
+    EXPECT_TRUE(test::read_strike_log((dir_ / "strikes.jsonl").string()).empty()) << "struck with no paper";
+}
+
+// A noisy line between the host and the chip (bytes dropped, flipped and
+// duplicated, each at the rate, both ways): every strike still exactly the plan.
+TEST_F(FirmwareEndToEnd, NoisyLineStrikesExactly) {
+    const auto want = controller::planned_strikes(planned());
+    for (const auto& [rate, seed] : {std::pair{"0.001", "7"}, std::pair{"0.01", "3"}}) {
+        const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES, {"--noise", rate, "--seed", seed});
+        EXPECT_EQ(r.exit_code, 0) << rate << ": " << r.output;
+        EXPECT_EQ(r.log, want) << rate;
+        std::ifstream err(dir_ / "sim.err");
+        std::string text, last;
+        while (std::getline(err, text)) last = text;  // this run's summary (the file is appended to)
+        std::printf("noise %s: %s\n", rate, last.c_str());
+        std::printf("host: %s", r.output.substr(r.output.rfind("embossed")).c_str());
+    }
+}
+
+}  // namespace
+}  // namespace tactus
