@@ -226,7 +226,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     std::size_t j = k;
     for (; j < entries_.size(); ++j) {
         auto& e = entries_[j];
-        if (j >= unchanged_from && same_state(e)) {
+        if (j >= unchanged_from && pag.settled() && same_state(e)) {
             stats.converged = true;
             break;
         }
