@@ -41,6 +41,12 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
     if (utf8.empty()) return;
     if (!open_) begin(document::BlockKind::paragraph, 0, 0);
     auto& spans = current_.spans;
+    if (in_note_ && !spans.empty() && spans.back().text.ends_with(' ')) {
+        // A note's paragraphs run on a space apart: one space at each join.
+        const auto text = utf8.find_first_not_of(' ');
+        if (text == std::string_view::npos) return;
+        utf8.remove_prefix(text);
+    }
     if (!spans.empty() && spans.back().emphasis == emphasis && !spans.back().note_reference)
         spans.back().text.append(utf8);
     else
