@@ -289,8 +289,11 @@ std::string render_editor_line(const document::Block& b) {
             return out + "- " + render_spans(spans);
         }
         case document::BlockKind::quote:
-            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '>') + " " +
-                   render_spans(b.spans);
+        {
+            std::string out;
+            for (int i = 0; i < std::clamp(b.level, 1, 6); ++i) out += "> ";
+            return out + render_spans(b.spans);
+        }
         case document::BlockKind::note: {
             if (b.spans.empty() || !b.spans.front().note_reference) break;
             auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());

@@ -108,7 +108,7 @@ PreparedMarkdown prepare_footnotes(std::string_view md) {
             const auto close = l.find(']', open + 2);
             if (close == std::string_view::npos) break;
             const auto it = by_id.find(l.substr(open + 2, close - open - 2));
-            if (it == by_id.end()) {
+            if (it == by_id.end() || (open > 0 && l[open - 1] == '\\')) {  // undefined, or escaped "\[^1]"
                 out.text.append(l.substr(pos, open + 2 - pos));
                 pos = open + 2;
                 continue;

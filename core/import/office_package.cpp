@@ -55,17 +55,31 @@ void OfficeText::end_paragraph() {
     label_.clear();
     if (note_depth_ > 0 || table_depth_ > 0) return;
     builder_.end();
+    flush_page_break();
 }
 
+// A break inside a table cell or a note waits for the end of the table or of
+// the paragraph holding the note: the print page is counted, the structure
+// stays whole.
 void OfficeText::page_break() {
-    if (note_depth_ > 0 || table_depth_ > 0) return;  // a break inside a cell or note is not kept
+    if (note_depth_ > 0 || table_depth_ > 0) {
+        ++pending_breaks_;
+        return;
+    }
     builder_.print_page_break(0);
 }
 
 void OfficeText::page_break_inside() {
-    if (note_depth_ > 0 || table_depth_ > 0) return;
+    if (note_depth_ > 0 || table_depth_ > 0) {
+        ++pending_breaks_;
+        return;
+    }
     builder_.print_page_break(0);
     builder_.begin(kind_, level_, 0);
+}
+
+void OfficeText::flush_page_break() {
+    for (; pending_breaks_ > 0; --pending_breaks_) builder_.print_page_break(0);
 }
 
 void OfficeText::begin_table() {
@@ -98,6 +112,7 @@ void OfficeText::end_table() {
     if (note_depth_ > 0 || table_depth_ == 0) return;
     if (--table_depth_ > 0) return;
     builder_.end_table();
+    flush_page_break();
 }
 
 void OfficeText::begin_note(int source_line) {

@@ -46,7 +46,7 @@ private:
 // waits for its first text (an empty item leaves no label behind); paragraphs
 // inside a table cell run on into the cell, a space apart; a table inside a
 // cell is read as the cell's text; notes are numbered 1, 2, 3 in the order of
-// their references.
+// their references; a page break inside a table or a note comes after it.
 class OfficeText {
 public:
     void begin_paragraph(document::BlockKind kind, int level, std::string label);
@@ -71,6 +71,8 @@ public:
     Result<document::Document> finish() { return builder_.finish(); }
 
 private:
+    void flush_page_break();
+
     DocumentBuilder builder_;
     document::BlockKind kind_ = document::BlockKind::paragraph;
     int level_ = 0;
@@ -80,6 +82,7 @@ private:
     bool cell_has_text_ = false;
     int notes_ = 0;
     int note_depth_ = 0;
+    int pending_breaks_ = 0;  // page breaks met inside a table or a note
 };
 
 }  // namespace tactus::import::detail

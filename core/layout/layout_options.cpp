@@ -64,6 +64,15 @@ BlockIndents block_indents(const LayoutOptions& o, document::BlockKind kind, int
     }
 }
 
+bool blank_line_before(const LayoutOptions& o, std::optional<document::BlockKind> previous,
+                       document::BlockKind kind) {
+    if (kind == document::BlockKind::heading) return o.blank_line_before_heading;
+    const bool quote = kind == document::BlockKind::quote;
+    const bool after_quote = previous == document::BlockKind::quote;
+    if (quote != after_quote) return true;
+    return kind == document::BlockKind::paragraph && o.blank_line_between_paragraphs;
+}
+
 std::size_t word_room(const LayoutOptions& o, document::BlockKind kind, int level) {
     const int width = o.geometry.cells_per_line - o.left_margin - o.right_margin;
     const auto in = block_indents(o, kind, level);

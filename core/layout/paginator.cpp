@@ -151,7 +151,7 @@ void Paginator::add_wrapped(const translate::TranslatedBlock& b, const BlockInde
     }
 }
 
-bool Paginator::settled() const { return table_.empty() && !in_quote_; }
+bool Paginator::settled() const { return table_.empty() && last_kind_ != document::BlockKind::quote; }
 
 void Paginator::add_table_block(const translate::TranslatedBlock& b) {
     if (b.kind == document::BlockKind::table_row) {
@@ -251,18 +251,16 @@ void Paginator::add(const translate::TranslatedBlock& b) {
         add_table_block(b);
         return;
     }
-    flush_table();
-    // A block quote has a blank line before and after it (docs/formats.md).
-    const bool page_break = b.kind == document::BlockKind::print_page_break ||
-                            b.kind == document::BlockKind::braille_page_break;
-    if (!page_break) {
-        const bool quote = b.kind == document::BlockKind::quote;
-        if (quote != in_quote_) add_blank_line();
-        in_quote_ = quote;
+    if (!table_.empty()) {
+        flush_table();
+        last_kind_ = document::BlockKind::table_row;
+    }
+    if (document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille) {
+        if (blank_line_before(o_, last_kind_, b.kind)) add_blank_line();
+        last_kind_ = b.kind;
     }
     switch (b.kind) {
         case document::BlockKind::heading: {
-            if (o_.blank_line_before_heading) add_blank_line();
             // Keep a heading off the last body line of a page: it would head nothing.
             if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
             add_wrapped(b, block_indents(o_, b.kind, b.level));
@@ -270,9 +268,6 @@ void Paginator::add(const translate::TranslatedBlock& b) {
             break;
         }
         case document::BlockKind::paragraph:
-            if (o_.blank_line_between_paragraphs) add_blank_line();
-            add_wrapped(b, block_indents(o_, b.kind, b.level));
-            break;
         case document::BlockKind::list_item:
         case document::BlockKind::quote:
         case document::BlockKind::note:

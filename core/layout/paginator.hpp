@@ -3,6 +3,7 @@
 // Lays translated blocks out into braille pages, one block at a time, so the
 // pipeline can feed it while translation of later blocks is still running.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "layout/layout_options.hpp"
@@ -70,7 +71,7 @@ private:
     std::string print_page_;         // print page label in effect (UTF-8 of the label cells)
     std::string page_top_print_page_;
     std::vector<TableRow> table_;  // the table being read, laid out at its end
-    bool in_quote_ = false;        // the last text block was a block quote's
+    std::optional<document::BlockKind> last_kind_;  // of the last block, page breaks aside
 };
 
 }  // namespace tactus::layout

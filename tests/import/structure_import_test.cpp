@@ -95,3 +95,10 @@ TEST(StructureImport, MarkdownQuotesAndEmptyCells) {
     const auto d = md("> one\n>\n> > two\n\n| a | |\n|---|---|\n| | b |\n");
     EXPECT_EQ(texts(d), "6:1:one|6:2:two|8:1:|9:0:a|9:1:|8:0:|9:0:|9:1:b|");
 }
+
+TEST(StructureImport, PageBreakInATableCellComesAfterTheTable) {
+    const auto d = import_structure("table_break.docx");
+    EXPECT_EQ(texts(d), "8:0:|9:0:one|9:1:two|8:0:|9:0:three four|3:0:|1:0:after|");
+    ASSERT_EQ(d.blocks.size(), 7u);
+    EXPECT_EQ(d.blocks[5].label, "2");
+}

@@ -187,3 +187,12 @@ odt = [
      '</office:master-styles></office:document-styles>'),
 ]
 write("structure.odt", odt)
+
+# A print page break inside a table cell: it must come after the table
+# (tests/import/structure_import_test.cpp).
+break_body = ("<w:tbl>" + row(["one", "two"]) + "<w:tr><w:tc>" + p(r("three ") + '<w:r><w:br w:type="page"/></w:r>' +
+                                                       r("four")) + "</w:tc></w:tr></w:tbl>" + p(r("after")))
+write("table_break.docx", [docx[0], docx[1],
+                           ("word/document.xml",
+                            f'<?xml version="1.0" encoding="UTF-8"?><w:document {W} {R}><w:body>{break_body}'
+                            '</w:body></w:document>')])
