@@ -271,9 +271,13 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
 
 std::string render_editor_line(const document::Block& b) {
     switch (b.kind) {
-        case document::BlockKind::heading:
-            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " +
-                   render_spans(b.spans);
+        case document::BlockKind::heading: {
+            auto text = render_spans(b.spans);
+            // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
+            if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
+                text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
+            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " + text;
+        }
         case document::BlockKind::list_item: {
             std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
             auto spans = b.spans;
@@ -283,16 +287,17 @@ std::string render_editor_line(const document::Block& b) {
                 spans.front().text[ordinal] == ' ') {
                 out += spans.front().text.substr(0, ordinal + 1);
                 spans.front().text.erase(0, ordinal + 1);
-                return out + render_spans(spans);
+                return out + guard_line_start(render_spans(spans));
             }
             if (!spans.empty() && spans.front().text.starts_with(kBullet)) spans.front().text.erase(0, kBullet.size());
-            return out + "- " + render_spans(spans);
+            // The item's own text must not start another list or block.
+            return out + "- " + guard_line_start(render_spans(spans));
         }
         case document::BlockKind::quote:
         {
             std::string out;
             for (int i = 0; i < std::clamp(b.level, 1, 6); ++i) out += "> ";
-            return out + render_spans(b.spans);
+            return out + guard_line_start(render_spans(b.spans));
         }
         case document::BlockKind::note: {
             if (b.spans.empty() || !b.spans.front().note_reference) break;
