@@ -65,38 +65,28 @@ document::Document structured_blocks(std::size_t n) {
     return d;
 }
 
+// Forked workers give byte-identical pages to the in-process translator.
+void expect_workers_match(const document::Document& doc, unsigned workers, std::size_t min_pages) {
+    pipeline::PipelineOptions single;
+    single.translation_workers = 1;
+    pipeline::PipelineOptions parallel;
+    parallel.translation_workers = workers;
+    const auto a = pipeline::lay_out(doc, single);
+    const auto b = pipeline::lay_out(doc, parallel);
+    ASSERT_TRUE(a) << a.error().to_string();
+    ASSERT_TRUE(b) << b.error().to_string();
+    EXPECT_GT(a->pages.size(), min_pages);
+    EXPECT_EQ(exporter::to_brf(*a).value(), exporter::to_brf(*b).value());
+}
+
 }  // namespace
 
 // Structure blocks (notes, quotes, tables) through forked workers: the same
 // pages as in process.
-TEST(Pipeline, WorkersCarryStructureBlocks) {
-    const auto doc = structured_blocks(400);
-    pipeline::PipelineOptions single;
-    single.translation_workers = 1;
-    pipeline::PipelineOptions parallel;
-    parallel.translation_workers = 2;
-    const auto a = pipeline::lay_out(doc, single);
-    const auto b = pipeline::lay_out(doc, parallel);
-    ASSERT_TRUE(a) << a.error().to_string();
-    ASSERT_TRUE(b) << b.error().to_string();
-    EXPECT_GT(a->pages.size(), 10u);
-    EXPECT_EQ(exporter::to_brf(*a).value(), exporter::to_brf(*b).value());
-}
+TEST(Pipeline, WorkersCarryStructureBlocks) { expect_workers_match(structured_blocks(400), 2, 10); }
 
 // Forked workers must give byte-identical pages to the in-process translator.
-TEST(Pipeline, WorkerProcessesMatchInProcessTranslation) {
-    const auto doc = many_blocks(1500);
-    pipeline::PipelineOptions single;
-    single.translation_workers = 1;
-    pipeline::PipelineOptions parallel;
-    parallel.translation_workers = 3;
-    const auto a = pipeline::lay_out(doc, single);
-    const auto b = pipeline::lay_out(doc, parallel);
-    ASSERT_TRUE(a) << a.error().to_string();
-    ASSERT_TRUE(b) << b.error().to_string();
-    EXPECT_GT(a->pages.size(), 50u);
-    EXPECT_EQ(exporter::to_brf(*a).value(), exporter::to_brf(*b).value());
-}
+TEST(Pipeline, WorkerProcessesMatchInProcessTranslation) { expect_workers_match(many_blocks(1500), 3, 50); }
 
 TEST(Pipeline, WorkerErrorNamesTheBlockLine) {
     auto doc = many_blocks(600);
