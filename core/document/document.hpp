@@ -23,6 +23,9 @@ enum Emphasis : std::uint8_t {
 struct Span {
     std::string text;  // UTF-8
     std::uint8_t emphasis = emphasis_none;
+    // The text is a note's reference ("1"): the translator writes it with the
+    // note reference indicator in front (docs/formats.md, "Notes").
+    bool note_reference = false;
     bool operator==(const Span&) const = default;
 };
 
@@ -33,12 +36,27 @@ enum class BlockKind : std::uint8_t {
     print_page_break, // source page break; `label` is the print page that starts here
     braille_page_break,  // force a new braille page (BRF form feed, PEF page end)
     braille,          // verbatim braille lines (BRF, PEF); not translated
+    quote,            // a paragraph of a block quote; level = quote depth, 1-based
+    note,             // a footnote's text, placed after the block that refers to it;
+                      // its first span is the note's reference (note_reference)
+    table_row,        // starts a row of a table; level 1 = a header row. Its cells
+                      // follow as table_cell blocks; the table ends at the next
+                      // block of another kind
+    table_cell,       // one cell's text (may be empty); level = column, 0-based
 };
+
+// Blocks whose spans are print text to translate.
+constexpr bool is_text_kind(BlockKind k) {
+    return k == BlockKind::heading || k == BlockKind::paragraph || k == BlockKind::list_item ||
+           k == BlockKind::quote || k == BlockKind::note || k == BlockKind::table_cell;
+}
+// Blocks that make up a table.
+constexpr bool is_table_kind(BlockKind k) { return k == BlockKind::table_row || k == BlockKind::table_cell; }
 
 struct Block {
     BlockKind kind = BlockKind::paragraph;
     int level = 0;
-    std::vector<Span> spans;                 // heading, paragraph, list_item
+    std::vector<Span> spans;                 // text kinds (is_text_kind)
     std::vector<BrailleLine> braille_lines;  // kind == braille
     std::string label;                       // print_page_break: page number as printed
     int source_line = 0;                     // 1-based line in the source, 0 if unknown

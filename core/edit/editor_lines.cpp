@@ -11,6 +11,7 @@ namespace tactus::edit {
 namespace {
 
 constexpr std::string_view kInlineSpecials = "\\*_[]<>`&~";
+constexpr std::string_view kBullet = "\u2022 ";  // the bullet sign, as core's importers write it
 
 bool is_space(char c) { return c == ' ' || c == '\t'; }
 
@@ -54,9 +55,54 @@ std::optional<std::string> comment_argument(std::string_view s, std::string_view
     return std::string(rest);
 }
 
-// Inline Markdown (emphasis, escapes) through core's importer; plain text takes
-// the fast path, which is nearly every line of a real book.
+std::vector<document::Span> parse_inline_markdown(std::string_view content);
+
+// The length of "[^label]" at the start of `s`, 0 if there is none.
+std::size_t note_reference_length(std::string_view s) {
+    if (!s.starts_with("[^")) return 0;
+    const auto close = s.find(']');
+    if (close == std::string_view::npos || close == 2 ||
+        s.substr(2, close - 2).find_first_of(" \t[") != std::string_view::npos)
+        return 0;
+    return close + 1;
+}
+
+// Inline Markdown (emphasis, escapes) and note references "[^label]" (an
+// escaped "\[^1]" is text). The text between references is read on its own.
 std::vector<document::Span> parse_inline(std::string_view content) {
+    std::vector<document::Span> out;
+    // A piece between references keeps the spaces at its ends (Markdown would trim them).
+    const auto piece = [&out](std::string_view text) {
+        const auto lead = text.find_first_not_of(' ');
+        if (lead == std::string_view::npos) {
+            if (!text.empty()) out.push_back(document::Span{std::string(text)});
+            return;
+        }
+        const auto tail = text.size() - 1 - text.find_last_not_of(' ');
+        if (lead > 0) out.push_back(document::Span{std::string(lead, ' ')});
+        for (auto& span : parse_inline_markdown(text.substr(lead, text.size() - lead - tail)))
+            out.push_back(std::move(span));
+        if (tail > 0) out.push_back(document::Span{std::string(tail, ' ')});
+    };
+    std::size_t from = 0;
+    for (std::size_t i = content.find("[^"); i != std::string_view::npos; i = content.find("[^", i + 1)) {
+        const auto n = note_reference_length(content.substr(i));
+        if (n == 0 || (i > 0 && content[i - 1] == '\\')) continue;
+        piece(content.substr(from, i - from));
+        document::Span reference{std::string(content.substr(i + 2, n - 3))};
+        reference.note_reference = true;
+        out.push_back(std::move(reference));
+        from = i + n;
+        i = from - 1;
+    }
+    if (from == 0) return parse_inline_markdown(content);
+    piece(content.substr(from));
+    return out;
+}
+
+// Emphasis and escapes through core's importer; plain text takes the fast
+// path, which is nearly every line of a real book.
+std::vector<document::Span> parse_inline_markdown(std::string_view content) {
     if (content.find_first_of(kInlineSpecials) == std::string_view::npos)
         return content.empty() ? std::vector<document::Span>{} : std::vector<document::Span>{document::Span{std::string(content)}};
     import::ImportOptions options;
@@ -97,6 +143,10 @@ std::string guard_line_start(std::string s) {
 std::string render_spans(const std::vector<document::Span>& spans) {
     std::string out;
     for (const auto& span : spans) {
+        if (span.note_reference) {
+            out += "[^" + span.text + "]";
+            continue;
+        }
         std::string_view t = span.text;
         const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
                               ? std::string_view("***")
@@ -162,6 +212,31 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
         b.spans = parse_inline(trim(t.substr(hashes)));
         return b;
     }
+    if (t.starts_with('>')) {
+        // "> text", "> > text": a block quote, as deep as its marks.
+        b.kind = document::BlockKind::quote;
+        auto rest = t;
+        while (rest.starts_with('>')) {
+            ++b.level;
+            rest = trim(rest.substr(1));
+        }
+        b.spans = parse_inline(rest);
+        return b;
+    }
+    if (t.starts_with("[^")) {
+        // "[^label]: text": a note, with its reference first.
+        const auto close = t.find("]:");
+        if (close != std::string_view::npos && close > 2 &&
+            t.substr(2, close - 2).find_first_of(" \t[]") == std::string_view::npos) {
+            b.kind = document::BlockKind::note;
+            document::Span reference{std::string(t.substr(2, close - 2))};
+            reference.note_reference = true;
+            b.spans.push_back(std::move(reference));
+            b.spans.push_back(document::Span{" "});
+            for (auto& s : parse_inline(trim(t.substr(close + 2)))) b.spans.push_back(std::move(s));
+            return b;
+        }
+    }
     std::size_t indent = 0;
     while (indent < line.size() && line[indent] == ' ') ++indent;
     const auto rest = line.substr(indent);
@@ -172,7 +247,12 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
         b.kind = document::BlockKind::list_item;
         b.level = static_cast<int>(indent / 2) + 1;
         if (bullet) {
+            // Bullets are kept as the bullet sign, as core's Markdown import does.
             b.spans = parse_inline(trim(rest.substr(2)));
+            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none && !b.spans.front().note_reference)
+                b.spans.front().text.insert(0, kBullet);
+            else
+                b.spans.insert(b.spans.begin(), document::Span{std::string(kBullet)});
         } else {
             // Numbered items keep their number as text, as core's Markdown import does.
             b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
@@ -191,9 +271,13 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
 
 std::string render_editor_line(const document::Block& b) {
     switch (b.kind) {
-        case document::BlockKind::heading:
-            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " +
-                   render_spans(b.spans);
+        case document::BlockKind::heading: {
+            auto text = render_spans(b.spans);
+            // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
+            if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
+                text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
+            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " + text;
+        }
         case document::BlockKind::list_item: {
             std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
             auto spans = b.spans;
@@ -203,10 +287,28 @@ std::string render_editor_line(const document::Block& b) {
                 spans.front().text[ordinal] == ' ') {
                 out += spans.front().text.substr(0, ordinal + 1);
                 spans.front().text.erase(0, ordinal + 1);
-                return out + render_spans(spans);
+                return out + guard_line_start(render_spans(spans));
             }
-            return out + "- " + render_spans(spans);
+            if (!spans.empty() && spans.front().text.starts_with(kBullet)) spans.front().text.erase(0, kBullet.size());
+            // The item's own text must not start another list or block.
+            return out + "- " + guard_line_start(render_spans(spans));
         }
+        case document::BlockKind::quote:
+        {
+            std::string out;
+            for (int i = 0; i < std::clamp(b.level, 1, 6); ++i) out += "> ";
+            return out + guard_line_start(render_spans(b.spans));
+        }
+        case document::BlockKind::note: {
+            if (b.spans.empty() || !b.spans.front().note_reference) break;
+            auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());
+            if (!rest.empty() && rest.front().text.starts_with(' ')) rest.front().text.erase(0, 1);
+            return "[^" + b.spans.front().text + "]: " + render_spans(rest);
+        }
+        case document::BlockKind::table_row:
+            return {};
+        case document::BlockKind::table_cell:
+            break;
         case document::BlockKind::print_page_break:
             return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
         case document::BlockKind::braille_page_break:
@@ -236,7 +338,10 @@ std::vector<std::string> render_editor_lines(const document::Document& document)
             continue;
         }
         auto line = render_editor_line(b);
-        if (b.kind == document::BlockKind::paragraph && trim(line).empty()) continue;
+        if ((b.kind == document::BlockKind::paragraph || b.kind == document::BlockKind::table_cell ||
+             b.kind == document::BlockKind::table_row) &&
+            trim(line).empty())
+            continue;
         lines.push_back(std::move(line));
     }
     return lines;

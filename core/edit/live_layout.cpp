@@ -226,7 +226,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     std::size_t j = k;
     for (; j < entries_.size(); ++j) {
         auto& e = entries_[j];
-        if (j >= unchanged_from && same_state(e)) {
+        if (j >= unchanged_from && pag.settled() && same_state(e)) {
             stats.converged = true;
             break;
         }
@@ -288,13 +288,22 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
     int column = 0;
     const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;
     const auto& tb = e.translated;
-    if (e.block && !e.error &&
-        (tb.kind == document::BlockKind::paragraph || tb.kind == document::BlockKind::heading || tb.kind == document::BlockKind::list_item)) {
+    if (e.block && !e.error && document::is_text_kind(tb.kind) && tb.kind != document::BlockKind::table_cell) {
         // The paginator's own indents (one rule, in core/layout).
         const auto indents = layout::block_indents(options_, tb.kind, tb.level);
         const int first = indents.first, runover = indents.runover;
         const bool centre = indents.centred;
-        if (tb.kind == document::BlockKind::heading && options_.blank_line_before_heading && line > 0) ++line;
+        // The paginator's blank line before this block (one rule, in core/layout).
+        std::optional<document::BlockKind> previous;
+        for (std::size_t j = i; j-- > 0;) {
+            const auto& p = entries_[j];
+            if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
+                p.block->kind == document::BlockKind::braille_page_break)
+                continue;
+            previous = p.block->kind;
+            break;
+        }
+        if (layout::blank_line_before(options_, previous, tb.kind) && line > 0) ++line;
         // Count the written cells before the target; blanks at line ends vanish when wrapping.
         cell = std::min(cell, tb.cells.size());
         std::size_t target = 0;

@@ -20,6 +20,11 @@ bool visible(std::string_view text) {
 }  // namespace
 
 void DocumentBuilder::begin(document::BlockKind kind, int level, int source_line) {
+    if (in_note_) {
+        // A note is one block: its paragraphs run on, a space apart.
+        add_text(" ");
+        return;
+    }
     end();
     current_ = document::Block{};
     current_.kind = kind;
@@ -36,19 +41,94 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
     if (utf8.empty()) return;
     if (!open_) begin(document::BlockKind::paragraph, 0, 0);
     auto& spans = current_.spans;
-    if (!spans.empty() && spans.back().emphasis == emphasis)
+    if (in_note_ && !spans.empty() && spans.back().text.ends_with(' ')) {
+        // A note's paragraphs run on a space apart: one space at each join.
+        const auto text = utf8.find_first_not_of(' ');
+        if (text == std::string_view::npos) return;
+        utf8.remove_prefix(text);
+    }
+    if (!spans.empty() && spans.back().emphasis == emphasis && !spans.back().note_reference)
         spans.back().text.append(utf8);
     else
         spans.push_back(document::Span{std::string(utf8), emphasis});
 }
 
 void DocumentBuilder::end() {
-    if (!open_) return;
+    if (!open_ || in_note_) return;  // end_note() ends a note
     open_ = false;
-    const bool keep = std::any_of(current_.spans.begin(), current_.spans.end(),
+    const bool keep = current_.kind == document::BlockKind::table_cell ||
+                      std::any_of(current_.spans.begin(), current_.spans.end(),
                                   [](const document::Span& s) { return visible(s.text); });
     if (keep) push(std::move(current_));
     current_ = document::Block{};
+    if (!in_table_) flush_notes();
+}
+
+void DocumentBuilder::note_reference(std::string label) {
+    if (!open_) begin(document::BlockKind::paragraph, 0, 0);
+    document::Span span;
+    span.text = std::move(label);
+    span.note_reference = true;
+    current_.spans.push_back(std::move(span));
+}
+
+void DocumentBuilder::begin_note(std::string label, int source_line) {
+    if (in_note_) end_note();  // notes do not nest: a note in a note follows it
+    set_aside_ = std::move(current_);
+    set_aside_open_ = open_;
+    current_ = document::Block{};
+    current_.kind = document::BlockKind::note;
+    current_.source_line = source_line;
+    document::Span reference;
+    reference.text = std::move(label);
+    reference.note_reference = true;
+    current_.spans.push_back(std::move(reference));
+    current_.spans.push_back(document::Span{" "});
+    open_ = true;
+    in_note_ = true;
+}
+
+void DocumentBuilder::end_note() {
+    if (!in_note_) return;
+    // Spaces at the end (a paragraph break inside the note) say nothing.
+    while (!current_.spans.empty() && !current_.spans.back().note_reference) {
+        auto& t = current_.spans.back().text;
+        while (!t.empty() && (t.back() == ' ' || t.back() == '\n')) t.pop_back();
+        if (!t.empty()) break;
+        current_.spans.pop_back();
+    }
+    notes_.push_back(std::move(current_));
+    in_note_ = false;
+    current_ = std::move(set_aside_);
+    open_ = set_aside_open_;
+    set_aside_ = document::Block{};
+    set_aside_open_ = false;
+    if (!open_ && !in_table_) flush_notes();
+}
+
+void DocumentBuilder::table_row(bool header, int source_line) {
+    end();
+    in_table_ = true;
+    document::Block b;
+    b.kind = document::BlockKind::table_row;
+    b.level = header ? 1 : 0;
+    b.source_line = source_line;
+    push(std::move(b));
+}
+
+void DocumentBuilder::begin_cell(int column, int source_line) {
+    begin(document::BlockKind::table_cell, column, source_line);
+}
+
+void DocumentBuilder::end_table() {
+    end();
+    in_table_ = false;
+    flush_notes();
+}
+
+void DocumentBuilder::flush_notes() {
+    for (auto& n : notes_) push(std::move(n));
+    notes_.clear();
 }
 
 void DocumentBuilder::print_page_break(int source_line, std::string label) {
@@ -92,7 +172,8 @@ void DocumentBuilder::push(document::Block block) {
 }
 
 Result<document::Document> DocumentBuilder::finish() {
-    end();
+    end_note();
+    end_table();
     if (full())
         return fail("more than " + std::to_string(max_import_blocks) +
                         " blocks (paragraphs, pages); split the document",

@@ -22,7 +22,7 @@ inline constexpr std::size_t max_import_blocks = 2'000'000;
 
 class DocumentBuilder {
 public:
-    // Starts a text block (heading, paragraph, list_item); an open one is ended first.
+    // Starts a text block (document::is_text_kind); an open one is ended first.
     void begin(document::BlockKind kind, int level, int source_line);
     [[nodiscard]] bool is_open() const { return open_; }
     [[nodiscard]] document::BlockKind open_kind() const { return current_.kind; }
@@ -33,6 +33,20 @@ public:
     void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none);
     // Ends the open block; it is kept only if it contains visible text.
     void end();
+
+    // Notes (docs/formats.md): a reference in the open block's text, and the
+    // note's own text between begin_note and end_note (the open block is set
+    // aside meanwhile and goes on after). The note is placed after the block
+    // that refers to it, or after the table when the reference is in a table.
+    void note_reference(std::string label);
+    void begin_note(std::string label, int source_line);
+    void end_note();
+
+    // Tables: a row marker, then begin_cell(column) and text for each cell; an
+    // empty cell is kept (it holds its column). end_table() after the last row.
+    void table_row(bool header, int source_line);
+    void begin_cell(int column, int source_line);
+    void end_table();
 
     // `label` empty = the next print page number (the first page is "1").
     void print_page_break(int source_line, std::string label = {});
@@ -47,6 +61,7 @@ public:
 
 private:
     void push(document::Block block);
+    void flush_notes();
 
     std::vector<document::Block> blocks_;
     document::Block current_;
@@ -54,6 +69,11 @@ private:
     bool has_content_ = false;  // a non-break block has been kept
     int print_page_ = 1;
     int overflow_line_ = -1;
+    std::vector<document::Block> notes_;  // notes waiting for their block's end
+    document::Block set_aside_;           // the block a note interrupted
+    bool set_aside_open_ = false;
+    bool in_note_ = false;
+    bool in_table_ = false;
 };
 
 }  // namespace tactus::import::detail

@@ -1,19 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // DOCX (WordprocessingML in a ZIP package): paragraphs of the main document part,
 // headings from styles (name "heading N"/"Title" or outline level), list items
-// from numbering (label kept as text, bullets dropped), bold/italic/underline
-// from direct formatting and styles, page breaks from <w:br w:type="page"/>,
-// pageBreakBefore and section breaks. <w:lastRenderedPageBreak/> only records
-// where the last layout happened to break, so it is not a break.
-// Not imported: headers/footers, footnotes, comments, text boxes and images.
+// from numbering (label kept as text, a bullet as "•"), block quotes from the
+// "Quote" styles, tables (rows, cells, <w:tblHeader/> header rows), footnotes
+// and endnotes (placed after the paragraph that refers to them),
+// bold/italic/underline from direct formatting and styles, page breaks from
+// <w:br w:type="page"/>, pageBreakBefore and section breaks.
+// <w:lastRenderedPageBreak/> only records where the last layout happened to
+// break, so it is not a break.
+// Not imported, deliberately: headers and footers (braille pages carry their
+// own numbers, and a running head repeated on every print page is not text),
+// comments, text boxes and images.
 #include <pugixml.hpp>
 
+#include <unordered_map>
+
 #include "import/docx_styles.hpp"
-#include "import/document_builder.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_package.hpp"
 #include "import/xml_util.hpp"
-#include "import/zip_archive.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -44,66 +50,71 @@ std::string rels_of(std::string_view part) {
     return std::string(dir) + "_rels/" + std::string(file) + ".rels";
 }
 
-class Package {
-public:
-    explicit Package(ZipArchive zip) : zip_(std::move(zip)) {}
-
-    // Reads and parses a part; a missing optional part leaves `doc` empty.
-    Result<bool> load(const std::string& part, pugi::xml_document& doc, std::string& storage,
-                      bool required) {
-        if (!zip_.contains(part)) {
-            if (required) return fail("not a Word document: missing part " + part, part);
-            return false;
-        }
-        auto bytes = zip_.read(part, max_import_bytes);
-        if (!bytes) return std::unexpected(bytes.error());
-        storage = std::move(*bytes);
-        if (auto ok = parse_xml(doc, storage, part); !ok) return std::unexpected(ok.error());
-        return true;
+// The relationships of a part: the target of the first one of a kind.
+Result<std::string> related(const XmlPackage& package, std::string_view source, std::string_view kind) {
+    XmlPart rels;
+    auto found = package.load(rels_of(source), rels, false);
+    if (!found) return std::unexpected(found.error());
+    if (!*found) return std::string{};
+    for (const auto& r : rels.root().children()) {
+        if (local_name(r) != "Relationship") continue;
+        if (attribute(r, "TargetMode") == "External") continue;
+        const auto type = attribute(r, "Type");
+        if (type.size() > kind.size() && type.ends_with(kind) && type[type.size() - kind.size() - 1] == '/')
+            return resolve_target(folder_of(source), attribute(r, "Target"));
     }
+    return std::string{};
+}
 
-    // Target of the first relationship of `source` whose type ends with `/kind`.
-    Result<std::string> related(std::string_view source, std::string_view kind) {
-        pugi::xml_document rels;
-        std::string storage;
-        auto found = load(rels_of(source), rels, storage, false);
-        if (!found) return std::unexpected(found.error());
-        if (!*found) return std::string{};
-        for (const auto& r : rels.document_element().children()) {
-            if (local_name(r) != "Relationship") continue;
-            if (attribute(r, "TargetMode") == "External") continue;
-            const auto type = attribute(r, "Type");
-            if (type.size() > kind.size() && type.ends_with(kind) &&
-                type[type.size() - kind.size() - 1] == '/')
-                return resolve_target(folder_of(source), attribute(r, "Target"));
-        }
-        return std::string{};
-    }
-
-private:
-    ZipArchive zip_;
-};
+// Footnotes or endnotes by id (<w:footnote w:id="2">).
+std::unordered_map<std::string, pugi::xml_node> notes_by_id(const pugi::xml_node& root) {
+    std::unordered_map<std::string, pugi::xml_node> out;
+    for (const auto& n : root.children())
+        if (const auto name = local_name(n); name == "footnote" || name == "endnote")
+            out.emplace(std::string(attribute(n, "id")), n);
+    return out;
+}
 
 class BodyReader {
 public:
-    BodyReader(const DocxStyles& styles, DocxNumbering& numbering)
-        : styles_(styles), numbering_(numbering) {}
+    BodyReader(const DocxStyles& styles, DocxNumbering& numbering, const pugi::xml_node& footnotes,
+               const pugi::xml_node& endnotes)
+        : styles_(styles), numbering_(numbering), footnotes_(notes_by_id(footnotes)),
+          endnotes_(notes_by_id(endnotes)) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
-            if (builder_.full()) return;
+            if (out_.full()) return;
             const auto name = local_name(c);
             if (name == "p")
                 paragraph(c);
-            else if (name == "tbl" || name == "tr" || name == "tc" || name == "sdt" ||
-                     name == "sdtContent" || name == "customXml")
-                container(c);  // table cells and content controls hold paragraphs
+            else if (name == "tbl")
+                table(c);
+            else if (name == "sdt" || name == "sdtContent" || name == "customXml")
+                container(c);  // content controls hold paragraphs
         }
     }
 
-    Result<document::Document> finish() { return builder_.finish(); }
+    Result<document::Document> finish() { return out_.finish(); }
 
 private:
+    // Rows and cells; a row with <w:tblHeader/> is a header row. Merged and
+    // spanned cells are read as the cells the file has.
+    void table(const pugi::xml_node& tbl) {
+        out_.begin_table();
+        for (const auto& row : tbl.children()) {
+            if (local_name(row) != "tr") continue;
+            out_.begin_row(read_toggle(child(child(row, "trPr"), "tblHeader")).value_or(false));
+            for (const auto& cell : row.children()) {
+                if (local_name(cell) != "tc") continue;
+                out_.begin_cell();
+                container(cell);
+                out_.end_cell();
+            }
+        }
+        out_.end_table();
+    }
+
     void paragraph(const pugi::xml_node& p) {
         const auto pPr = child(p, "pPr");
         const auto style = styles_.paragraph(attribute(child(pPr, "pStyle"), "val"));
@@ -117,25 +128,21 @@ private:
         if (numbering && numbering->num_id == "0") numbering.reset();
         const auto break_before = read_toggle(child(pPr, "pageBreakBefore"));
 
-        if (break_before.value_or(style.page_break_before)) builder_.print_page_break(0);
-        kind_ = heading > 0 ? document::BlockKind::heading
-                : numbering ? document::BlockKind::list_item
-                            : document::BlockKind::paragraph;
-        level_ = heading > 0 ? heading : numbering ? numbering->ilvl + 1 : 0;
-        label_.clear();
-        if (numbering) {
-            label_ = numbering_.next_label(*numbering);
-            if (!label_.empty()) label_ += ' ';
-        }
-        builder_.begin(kind_, level_, 0);
+        if (break_before.value_or(style.page_break_before)) out_.page_break();
+        const auto kind = heading > 0  ? document::BlockKind::heading
+                          : numbering  ? document::BlockKind::list_item
+                          : style.quote ? document::BlockKind::quote
+                                       : document::BlockKind::paragraph;
+        const int level = heading > 0 ? heading : numbering ? numbering->ilvl + 1 : style.quote ? 1 : 0;
+        out_.begin_paragraph(kind, level, numbering ? numbering_.next_label(*numbering) : std::string{});
         inline_content(p);
-        builder_.end();
+        out_.end_paragraph();
 
         // A section break in the paragraph properties ends the section here; all
         // kinds except "continuous" (and column breaks) start a new page.
         if (const auto sect = child(pPr, "sectPr")) {
             const auto type = attribute(child(sect, "type"), "val");
-            if (type != "continuous" && type != "nextColumn") builder_.print_page_break(0);
+            if (type != "continuous" && type != "nextColumn") out_.page_break();
         }
     }
 
@@ -166,81 +173,78 @@ private:
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
             if (name == "t")
-                text(c.child_value(), emphasis);
+                out_.text(c.child_value(), emphasis);
             else if (name == "tab")
-                text("\t", emphasis);
+                out_.text("\t", emphasis);
             else if (name == "cr")
-                text("\n", emphasis);
+                out_.text("\n", emphasis);
             else if (name == "noBreakHyphen")
-                text("\xE2\x80\x91", emphasis);  // U+2011 non-breaking hyphen
+                out_.text("\xE2\x80\x91", emphasis);  // U+2011 non-breaking hyphen
+            else if (name == "footnoteReference")
+                note(footnotes_, attribute(c, "id"));
+            else if (name == "endnoteReference")
+                note(endnotes_, attribute(c, "id"));
             else if (name == "br") {
                 const auto type = attribute(c, "type");
                 if (type == "page")
-                    page_break_inside();
+                    out_.page_break_inside();
                 else if (type != "column")
-                    text("\n", emphasis);
+                    out_.text("\n", emphasis);
             }
         }
     }
 
-    void text(std::string_view s, std::uint8_t emphasis) {
-        if (s.empty()) return;
-        if (!builder_.is_open()) builder_.begin(kind_, level_, 0);
-        if (!label_.empty()) {
-            builder_.add_text(label_);
-            label_.clear();
-        }
-        builder_.add_text(s, emphasis);
-    }
-
-    // The paragraph goes on after the break as a block of the same kind.
-    void page_break_inside() {
-        builder_.print_page_break(0);
-        builder_.begin(kind_, level_, 0);
+    // A footnote or endnote: its paragraphs as the note's text. Word's own
+    // reference mark at the start of the note (<w:footnoteRef/>) is ours to
+    // write, so it is not text; an id the part lacks leaves the reference out.
+    void note(const std::unordered_map<std::string, pugi::xml_node>& notes, std::string_view id) {
+        const auto it = notes.find(std::string(id));
+        if (it == notes.end()) return;
+        out_.begin_note();
+        for (const auto& p : it->second.children())
+            if (local_name(p) == "p") {
+                out_.begin_paragraph(document::BlockKind::paragraph, 0, {});
+                inline_content(p);
+                out_.end_paragraph();
+            }
+        out_.end_note();
     }
 
     const DocxStyles& styles_;
     DocxNumbering& numbering_;
-    DocumentBuilder builder_;
-    document::BlockKind kind_ = document::BlockKind::paragraph;
-    int level_ = 0;
-    std::string label_;  // list label not yet written (waits for the first text)
+    std::unordered_map<std::string, pugi::xml_node> footnotes_, endnotes_;
+    OfficeText out_;
 };
 
 }  // namespace
 
 Result<document::Document> import_docx(std::string_view bytes) {
-    auto zip = ZipArchive::open(bytes);
-    if (!zip) return std::unexpected(zip.error());
-    Package package(std::move(*zip));
+    auto package = XmlPackage::open(bytes, "a Word document");
+    if (!package) return std::unexpected(package.error());
 
-    auto main_part = package.related("", "officeDocument");
+    auto main_part = related(*package, "", "officeDocument");
     if (!main_part) return std::unexpected(main_part.error());
     if (main_part->empty()) *main_part = default_main_part;
 
-    pugi::xml_document styles_xml, numbering_xml, document_xml;
-    std::string styles_bytes, numbering_bytes, document_bytes;
-    auto styles_part = package.related(*main_part, "styles");
-    if (!styles_part) return std::unexpected(styles_part.error());
-    if (!styles_part->empty()) {
-        if (auto ok = package.load(*styles_part, styles_xml, styles_bytes, false); !ok)
-            return std::unexpected(ok.error());
+    // The main part's optional companions, each found through its relationship.
+    XmlPart styles_xml, numbering_xml, footnotes_xml, endnotes_xml, document_xml;
+    for (const auto& [kind, part] : {std::pair<std::string_view, XmlPart*>{"styles", &styles_xml},
+                                     {"numbering", &numbering_xml},
+                                     {"footnotes", &footnotes_xml},
+                                     {"endnotes", &endnotes_xml}}) {
+        auto name = related(*package, *main_part, kind);
+        if (!name) return std::unexpected(name.error());
+        if (name->empty()) continue;
+        if (auto ok = package->load(*name, *part, false); !ok) return std::unexpected(ok.error());
     }
-    auto numbering_part = package.related(*main_part, "numbering");
-    if (!numbering_part) return std::unexpected(numbering_part.error());
-    if (!numbering_part->empty()) {
-        if (auto ok = package.load(*numbering_part, numbering_xml, numbering_bytes, false); !ok)
-            return std::unexpected(ok.error());
-    }
-    if (auto ok = package.load(*main_part, document_xml, document_bytes, true); !ok)
-        return std::unexpected(ok.error());
+    if (auto ok = package->load(*main_part, document_xml, true); !ok) return std::unexpected(ok.error());
 
-    const DocxStyles styles(styles_xml.document_element());
-    DocxNumbering numbering(numbering_xml.document_element());
-    const auto body = child(document_xml.document_element(), "body");
-    if (local_name(document_xml.document_element()) != "document" || !body)
+    const DocxStyles styles(styles_xml.root());
+    DocxNumbering numbering(numbering_xml.root());
+    const auto body = child(document_xml.root(), "body");
+    if (local_name(document_xml.root()) != "document" || !body)
         return fail("not a Word document: no <w:document>/<w:body>", *main_part);
-    BodyReader reader(styles, numbering);
+    BodyReader reader(styles, numbering, footnotes_xml.root(), endnotes_xml.root());
     reader.container(body);
     return reader.finish();
 }

@@ -32,6 +32,15 @@ int heading_from_name(std::string_view name) {
     return 0;
 }
 
+}  // namespace
+
+bool is_quote_style_name(std::string_view name) {
+    const auto n = lower(name);
+    return n == "quote" || n == "intense quote" || n == "quotations" || n == "block text";
+}
+
+namespace {
+
 std::string roman(int n, bool upper) {
     static constexpr std::pair<int, std::string_view> table[] = {
         {1000, "m"}, {900, "cm"}, {500, "d"}, {400, "cd"}, {100, "c"}, {90, "xc"}, {50, "l"},
@@ -144,6 +153,7 @@ ParagraphStyle DocxStyles::paragraph(std::string_view style_id) const {
                 out.heading_level = std::min(6, *st->outline_level + 1);
         }
         if (!out.numbering && st->numbering) out.numbering = st->numbering;
+        out.quote = out.quote || is_quote_style_name(st->name);
         if (!page_break && st->page_break_before) page_break = st->page_break_before;
     }
     out.page_break_before = page_break.value_or(false);
@@ -189,7 +199,10 @@ std::string DocxNumbering::next_label(const NumberingRef& ref) {
     const Levels& levels = l->second;
     const auto ilvl = static_cast<std::size_t>(ref.ilvl);
     const auto& level = levels[ilvl];
-    if (level.format == "bullet" || level.format == "none") return {};
+    // Word draws its bullets from symbol fonts (U+F0B7 in Symbol): whatever the
+    // glyph, a bullet is the UEB bullet sign (U+2022).
+    if (level.format == "bullet") return "\u2022";
+    if (level.format == "none") return {};
 
     constexpr int unset = -1;  // level not used since its parent last advanced
     auto [it, fresh] = counters_.try_emplace(a->second);

@@ -36,7 +36,12 @@ struct ParagraphStyle {
     int heading_level = 0;  // 1..6, 0 = not a heading
     std::optional<NumberingRef> numbering;
     bool page_break_before = false;
+    bool quote = false;  // a block quote style ("Quote", "Intense Quote", "Quotations")
 };
+
+// Word's "Quote" and "Intense Quote" and LibreOffice's "Quotations": the style
+// names of a block quote (compared without case).
+bool is_quote_style_name(std::string_view name);
 
 class DocxStyles {
 public:
@@ -65,7 +70,7 @@ public:
     DocxNumbering() = default;
     explicit DocxNumbering(const pugi::xml_node& numbering_root);
     // The label of the next item of this list at this level ("3.", "b)", "1.2.");
-    // empty for bullets. Deeper levels restart, as in a word processor.
+    // "•" for bullets. Deeper levels restart, as in a word processor.
     std::string next_label(const NumberingRef& ref);
 
 private:

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Markdown (CommonMark, md4c). Conventions, see docs/import.md:
-//  - ordered list items keep their number as text ("3. "), bullets are dropped
-//    (braille shows list structure by indentation, not by a print bullet);
+//  - ordered list items keep their number as text ("3. "), bullet items start
+//    with the bullet "• " (U+2022, the UEB bullet sign);
+//  - tables (GitHub style, md4c's MD_FLAG_TABLES) become table rows and cells,
+//    the head row a header row; block quotes become quote blocks;
+//  - footnotes: `[^id]` and `[^id]: text` (markdown_footnotes.hpp), numbered
+//    1, 2, 3 in the order of their first reference;
 //  - print page break: a form feed, a thematic break (---, ***), or an HTML
 //    comment <!-- pagebreak --> (<!-- pagebreak 12 --> sets the printed label);
 //    <!-- braillepage --> forces a new braille page;
@@ -16,6 +20,7 @@
 #include "common/utf8.hpp"
 #include "import/document_builder.hpp"
 #include "import/importers.hpp"
+#include "import/markdown_footnotes.hpp"
 #include "import/text_position.hpp"
 
 namespace tactus::import::detail {
@@ -79,13 +84,14 @@ std::string strip_tags(std::string_view html) {
 
 class MarkdownReader {
 public:
-    MarkdownReader(std::string_view all, const LineIndex& lines) : all_(all), lines_(lines) {}
+    MarkdownReader(std::string_view all, const LineIndex& lines, const std::vector<MarkdownFootnote>& notes)
+        : all_(all), lines_(lines), notes_(notes), note_numbers_(notes.size(), 0) {}
 
     // One form-feed-free piece of the input, a substring of `all`.
     Result<void> parse(std::string_view segment) {
         MD_PARSER parser{};
         parser.abi_version = 0;
-        parser.flags = MD_FLAG_STRIKETHROUGH;
+        parser.flags = MD_FLAG_STRIKETHROUGH | MD_FLAG_TABLES;
         parser.enter_block = [](MD_BLOCKTYPE t, void* d, void* self) {
             return static_cast<MarkdownReader*>(self)->enter_block(t, d);
         };
@@ -124,6 +130,21 @@ private:
                 builder_.end();
                 lists_.push_back(List{});
                 break;
+            case MD_BLOCK_QUOTE:
+                builder_.end();
+                ++quote_depth_;
+                break;
+            case MD_BLOCK_THEAD:
+                in_head_ = true;
+                break;
+            case MD_BLOCK_TR:
+                builder_.table_row(in_head_, 0);
+                column_ = 0;
+                break;
+            case MD_BLOCK_TH:
+            case MD_BLOCK_TD:
+                builder_.begin_cell(column_++, 0);
+                break;
             case MD_BLOCK_OL: {
                 builder_.end();
                 const auto* d = static_cast<MD_BLOCK_OL_DETAIL*>(detail);
@@ -135,6 +156,8 @@ private:
                 item_prefix_.clear();
                 if (!lists_.empty() && lists_.back().ordered)
                     item_prefix_ = std::to_string(lists_.back().next++) + lists_.back().delimiter + " ";
+                else
+                    item_prefix_ = kBullet;
                 item_pending_ = true;
                 break;
             case MD_BLOCK_H:
@@ -172,6 +195,20 @@ private:
             case MD_BLOCK_LI:
                 builder_.end();
                 item_pending_ = false;
+                break;
+            case MD_BLOCK_QUOTE:
+                builder_.end();
+                --quote_depth_;
+                break;
+            case MD_BLOCK_THEAD:
+                in_head_ = false;
+                break;
+            case MD_BLOCK_TH:
+            case MD_BLOCK_TD:
+                builder_.end();
+                break;
+            case MD_BLOCK_TABLE:
+                builder_.end_table();
                 break;
             case MD_BLOCK_CODE:
                 builder_.end();
@@ -233,11 +270,50 @@ private:
     void open_text_block() {
         if (!lists_.empty())
             builder_.begin(document::BlockKind::list_item, static_cast<int>(lists_.size()), 0);
+        else if (quote_depth_ > 0)
+            builder_.begin(document::BlockKind::quote, quote_depth_, 0);
         else
             builder_.begin(document::BlockKind::paragraph, 0, 0);
     }
 
+    // Text with footnote markers in it: each marker is a reference, and the
+    // first reference to a note brings its text.
     void add(std::string_view s, std::string_view where) {
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            const auto marker = read_footnote_marker(s.substr(i));
+            if (!marker || marker->first >= notes_.size()) continue;
+            add_text(s.substr(0, i), where);
+            reference(marker->first);
+            s.remove_prefix(i + marker->second);
+            i = static_cast<std::size_t>(-1);
+        }
+        add_text(s, where);
+    }
+
+    void reference(std::size_t index) {
+        if (!builder_.is_open()) open_text_block();
+        int& number = note_numbers_[index];
+        const bool first = number == 0;
+        if (first) number = ++notes_referenced_;
+        const auto label = std::to_string(number);
+        builder_.note_reference(label);
+        if (!first) return;
+        const auto& note = notes_[index];
+        builder_.begin_note(label, note.line);
+        // The note's own Markdown (emphasis, links), read as a document of its own.
+        const LineIndex lines(note.text);
+        static const std::vector<MarkdownFootnote> none;
+        MarkdownReader inner(note.text, lines, none);
+        if (inner.parse(note.text)) {
+            auto doc = inner.builder().finish();
+            if (doc)
+                for (const auto& b : doc->blocks)
+                    for (const auto& span : b.spans) builder_.add_text(span.text, span.emphasis);
+        }
+        builder_.end_note();
+    }
+
+    void add_text(std::string_view s, std::string_view where) {
         if (s.empty()) return;
         if (!builder_.is_open()) open_text_block();
         builder_.note_line(line_of(where.data()));
@@ -279,8 +355,16 @@ private:
         return lines_.line_at(static_cast<std::size_t>(p - all_.data()));
     }
 
+    static constexpr std::string_view kBullet = "\u2022 ";  // the UEB bullet sign ⠸⠲
+
     std::string_view all_;
     const LineIndex& lines_;
+    const std::vector<MarkdownFootnote>& notes_;
+    std::vector<int> note_numbers_;  // per note: its number, 0 until referenced
+    int notes_referenced_ = 0;
+    int quote_depth_ = 0;
+    bool in_head_ = false;
+    int column_ = 0;
     DocumentBuilder builder_;
     std::vector<List> lists_;
     std::string item_prefix_;
@@ -295,9 +379,11 @@ private:
 
 }  // namespace
 
-Result<document::Document> import_markdown(std::string_view utf8) {
+Result<document::Document> import_markdown(std::string_view source) {
+    const auto prepared = prepare_footnotes(source);
+    const std::string_view utf8 = prepared.text;
     const LineIndex lines(utf8);
-    MarkdownReader reader(utf8, lines);
+    MarkdownReader reader(utf8, lines, prepared.notes);
     // CommonMark treats a form feed as blank space; as the print page break of
     // plain text it splits the input, and each piece is parsed on its own.
     std::size_t start = 0;

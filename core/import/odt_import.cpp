@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // ODT (OpenDocument text, ISO/IEC 26300: content.xml in a ZIP package): the
 // paragraphs of <office:text>, headings from <text:h text:outline-level>, list
-// items from <text:list> (numbered levels get their label as text, bullets are
-// dropped, as for DOCX), bold/italic/underline from the automatic and common
-// text styles, and page breaks from paragraph styles with fo:break-before or
-// fo:break-after="page". <text:soft-page-break/> only records where the last
-// layout happened to break, so it is not a break (like DOCX's
-// lastRenderedPageBreak). Tables and sections are read cell by cell.
-// Not imported: notes, annotations, frames (text boxes, images), change-tracked
-// deletions.
+// items from <text:list> (numbered levels get their label as text, bullets the
+// bullet "•", as for DOCX), block quotes from the "Quotations" paragraph style,
+// tables (rows, cells, header rows), notes (<text:note>, placed after the
+// paragraph that refers to them), bold/italic/underline from the automatic and
+// common text styles, and page breaks from paragraph styles with
+// fo:break-before or fo:break-after="page". <text:soft-page-break/> only records
+// where the last layout happened to break, so it is not a break (like DOCX's
+// lastRenderedPageBreak). Sections are read paragraph by paragraph. The
+// package and the paragraph walk are shared with DOCX (office_package.hpp).
+// Not imported: headers and footers (in styles.xml, as for DOCX), annotations,
+// frames (text boxes, images), change-tracked deletions.
 #include <pugixml.hpp>
 
 #include <algorithm>
@@ -17,11 +20,11 @@
 #include <string>
 #include <vector>
 
-#include "import/document_builder.hpp"
+#include "import/docx_styles.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_package.hpp"
 #include "import/xml_util.hpp"
-#include "import/zip_archive.hpp"
 
 namespace tactus::import::detail {
 
@@ -56,6 +59,7 @@ struct OdtStyle {
     std::uint8_t cleared = emphasis_none;   // bits the style turns off
     bool break_before = false;
     bool break_after = false;
+    bool quote = false;  // "Quotations" (by name or display name)
 };
 
 // Paragraph and text styles by name (automatic styles in content.xml, common
@@ -82,6 +86,7 @@ public:
             const auto para = child(s, "paragraph-properties");
             style.break_before = attribute(para, "break-before") == "page";
             style.break_after = attribute(para, "break-after") == "page";
+            style.quote = is_quote_style_name(attribute(s, "name")) || is_quote_style_name(attribute(s, "display-name"));
             styles_[std::string(attribute(s, "name"))] = std::move(style);
         }
     }
@@ -100,6 +105,13 @@ public:
     [[nodiscard]] bool break_before(std::string_view name) const {
         const auto* s = find(name);
         return s && s->break_before;
+    }
+    // A paragraph style that is, or is based on, a quotation style.
+    [[nodiscard]] bool quote(std::string_view name) const {
+        int depth = 0;
+        for (auto s = find(name); s && depth < 16; s = find(s->parent), ++depth)
+            if (s->quote) return true;
+        return false;
     }
     [[nodiscard]] bool break_after(std::string_view name) const {
         const auto* s = find(name);
@@ -123,23 +135,34 @@ public:
             if (local_name(s) != "list-style") continue;
             auto& levels = lists_[std::string(attribute(s, "name"))];
             for (const auto& l : s.children()) {
-                if (local_name(l) != "list-level-style-number") continue;
+                const auto name = local_name(l);
                 const auto level = std::atoi(std::string(attribute(l, "level")).c_str());
-                if (level >= 1 && level <= 10)
-                    levels[level] = {std::string(attribute(l, "num-prefix")), std::string(attribute(l, "num-suffix"))};
+                if (level < 1 || level > 10) continue;
+                if (name == "list-level-style-number")
+                    levels[level] = {std::string(attribute(l, "num-prefix")), std::string(attribute(l, "num-suffix")), false};
+                else if (name == "list-level-style-bullet")
+                    levels[level] = {{}, {}, true};
             }
         }
     }
-    // Prefix and suffix around the number, or nullptr for a bullet level.
-    [[nodiscard]] const std::pair<std::string, std::string>* numbered(std::string_view style, int level) const {
+    // The label of item `number` at this level: prefix, number and suffix
+    // ("3."), the UEB bullet sign "•" for a bullet level (whatever glyph the
+    // style draws), or nothing for a level the style leaves unnumbered.
+    [[nodiscard]] std::string label(std::string_view style, int level, int number) const {
         const auto it = lists_.find(std::string(style));
-        if (it == lists_.end()) return nullptr;
+        if (it == lists_.end()) return {};
         const auto l = it->second.find(level);
-        return l == it->second.end() ? nullptr : &l->second;
+        if (l == it->second.end()) return {};
+        if (l->second.bullet) return "\u2022";
+        return l->second.prefix + std::to_string(number) + l->second.suffix;
     }
 
 private:
-    std::map<std::string, std::map<int, std::pair<std::string, std::string>>> lists_;
+    struct Level {
+        std::string prefix, suffix;
+        bool bullet = false;
+    };
+    std::map<std::string, std::map<int, Level>> lists_;
 };
 
 class OdtReader {
@@ -148,22 +171,50 @@ public:
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
-            if (builder_.full()) return;
+            if (out_.full()) return;
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
             if (name == "p" || name == "h")
-                paragraph(c, name == "h");
+                paragraph(c, name == "h", 0, {});
             else if (name == "list")
                 list(c, 1, std::string(attribute(c, "style-name")));
-            else if (name == "table" || name == "table-row" || name == "table-cell" || name == "table-header-rows" ||
-                     name == "table-rows" || name == "section" || name == "index-body")
+            else if (name == "table")
+                table(c);
+            else if (name == "section" || name == "index-body")
                 container(c);
         }
     }
 
-    Result<document::Document> finish() { return builder_.finish(); }
+    Result<document::Document> finish() { return out_.finish(); }
 
 private:
+    // Rows in <table:table-header-rows> are header rows; covered cells (the
+    // places a spanned cell covers) hold nothing of their own.
+    void table(const pugi::xml_node& t) {
+        out_.begin_table();
+        rows(t, false);
+        out_.end_table();
+    }
+
+    void rows(const pugi::xml_node& node, bool header) {
+        for (const auto& r : node.children()) {
+            const auto name = local_name(r);
+            if (name == "table-header-rows")
+                rows(r, true);
+            else if (name == "table-rows" || name == "table-row-group")
+                rows(r, header);
+            else if (name == "table-row") {
+                out_.begin_row(header);
+                for (const auto& cell : r.children()) {
+                    if (local_name(cell) != "table-cell") continue;
+                    out_.begin_cell();
+                    container(cell);
+                    out_.end_cell();
+                }
+            }
+        }
+    }
+
     void list(const pugi::xml_node& l, int level, std::string style) {
         if (const auto own = attribute(l, "style-name"); !own.empty()) style = own;
         int number = 0;
@@ -174,47 +225,44 @@ private:
             ++number;
             bool first = true;
             for (const auto& c : item.children()) {
-                if (builder_.full()) return;
+                if (out_.full()) return;
                 const auto cname = local_name(c);
                 if (cname == "list") {
                     list(c, level + 1, style);
                 } else if (cname == "p" || cname == "h") {
-                    label_.clear();
-                    if (first && name == "list-item")
-                        if (const auto* fix = lists_.numbered(style, level))
-                            label_ = fix->first + std::to_string(number) + fix->second + " ";
-                    list_level_ = level;
-                    paragraph(c, cname == "h");
-                    list_level_ = 0;
+                    const bool labelled = first && name == "list-item";
+                    paragraph(c, cname == "h", level, labelled ? lists_.label(style, level, number) : std::string{});
                     first = false;
                 }
             }
         }
     }
 
-    void paragraph(const pugi::xml_node& p, bool heading) {
+    void paragraph(const pugi::xml_node& p, bool heading, int list_level, std::string label) {
         const auto style = attribute(p, "style-name");
-        if (styles_.break_before(style)) builder_.print_page_break(0);
+        if (styles_.break_before(style)) out_.page_break();
         int level = 0;
         if (heading) {
             level = std::atoi(std::string(attribute(p, "outline-level")).c_str());
             level = std::clamp(level == 0 ? 1 : level, 1, 6);
         }
-        kind_ = heading ? BlockKind::heading : list_level_ ? BlockKind::list_item : BlockKind::paragraph;
-        level_ = heading ? level : list_level_;
-        builder_.begin(kind_, level_, 0);
+        const bool quote = !heading && list_level == 0 && styles_.quote(style);
+        const auto kind = heading ? BlockKind::heading
+                          : list_level ? BlockKind::list_item
+                          : quote      ? BlockKind::quote
+                                       : BlockKind::paragraph;
+        out_.begin_paragraph(kind, heading ? level : list_level ? list_level : quote ? 1 : 0, std::move(label));
         // Only text (span) styles are emphasis: a paragraph style's bold is the
         // paragraph's typeface (a heading, a quote), as for DOCX.
         inline_content(p, emphasis_none);
-        builder_.end();
-        label_.clear();
-        if (styles_.break_after(style)) builder_.print_page_break(0);
+        out_.end_paragraph();
+        if (styles_.break_after(style)) out_.page_break();
     }
 
     void inline_content(const pugi::xml_node& node, std::uint8_t emphasis) {
         for (const auto& c : node.children()) {
             if (c.type() == pugi::node_pcdata) {
-                text(collapse_white_space(c.value()), emphasis);
+                out_.text(collapse_white_space(c.value()), emphasis);
                 continue;
             }
             if (c.type() != pugi::node_element) continue;
@@ -225,12 +273,14 @@ private:
             } else if (name == "s") {
                 const auto n = attribute(c, "c");
                 const int count = n.empty() ? 1 : std::clamp(std::atoi(std::string(n).c_str()), 1, 1000);
-                text(std::string(static_cast<std::size_t>(count), ' '), emphasis);
+                out_.text(std::string(static_cast<std::size_t>(count), ' '), emphasis);
             } else if (name == "tab") {
-                text("\t", emphasis);
+                out_.text("\t", emphasis);
             } else if (name == "line-break") {
-                text("\n", emphasis);
-            } else if (name == "note" || name == "annotation" || name == "frame" || name == "tracked-changes" ||
+                out_.text("\n", emphasis);
+            } else if (name == "note") {
+                note(c);
+            } else if (name == "annotation" || name == "frame" || name == "tracked-changes" ||
                        name == "soft-page-break" || name == "bookmark" || name == "bookmark-start" ||
                        name == "bookmark-end" || name == "reference-mark") {
                 continue;
@@ -240,63 +290,50 @@ private:
         }
     }
 
-    void text(std::string_view s, std::uint8_t emphasis) {
-        if (s.empty()) return;
-        if (!builder_.is_open()) builder_.begin(kind_, level_, 0);
-        if (!label_.empty()) {
-            builder_.add_text(label_);
-            label_.clear();
+    // <text:note>: the citation is print's mark (ours is numbered by OfficeText);
+    // the body's paragraphs are the note's text.
+    void note(const pugi::xml_node& n) {
+        out_.begin_note();
+        for (const auto& p : child(n, "note-body").children()) {
+            const auto name = local_name(p);
+            if (name == "p" || name == "h") {
+                out_.begin_paragraph(BlockKind::paragraph, 0, {});
+                inline_content(p, emphasis_none);
+                out_.end_paragraph();
+            }
         }
-        builder_.add_text(s, emphasis);
+        out_.end_note();
     }
 
     const OdtStyles& styles_;
     const OdtListStyles& lists_;
-    DocumentBuilder builder_;
-    BlockKind kind_ = BlockKind::paragraph;
-    int level_ = 0;
-    int list_level_ = 0;
-    std::string label_;
+    OfficeText out_;
 };
-
-Result<bool> load(ZipArchive& zip, const std::string& part, pugi::xml_document& doc, std::string& storage,
-                  bool required) {
-    if (!zip.contains(part)) {
-        if (required) return fail("not an OpenDocument text: missing part " + part, part);
-        return false;
-    }
-    auto bytes = zip.read(part, max_import_bytes);
-    if (!bytes) return std::unexpected(bytes.error());
-    storage = std::move(*bytes);
-    if (auto ok = parse_xml(doc, storage, part); !ok) return std::unexpected(ok.error());
-    return true;
-}
 
 }  // namespace
 
 Result<document::Document> import_odt(std::string_view bytes) {
-    auto zip = ZipArchive::open(bytes);
-    if (!zip) return std::unexpected(zip.error());
-    if (zip->contains("mimetype")) {
-        auto type = zip->read("mimetype", 256);
+    auto package = XmlPackage::open(bytes, "an OpenDocument text");
+    if (!package) return std::unexpected(package.error());
+    if (package->contains("mimetype")) {
+        auto type = package->read("mimetype", 256);
         if (type && *type != "application/vnd.oasis.opendocument.text")
             return fail("not an OpenDocument text but " + *type + " (only text documents are read)", "mimetype");
     }
-    pugi::xml_document styles_xml, content_xml;
-    std::string styles_bytes, content_bytes;
-    if (auto ok = load(*zip, "styles.xml", styles_xml, styles_bytes, false); !ok) return std::unexpected(ok.error());
-    if (auto ok = load(*zip, "content.xml", content_xml, content_bytes, true); !ok) return std::unexpected(ok.error());
+    XmlPart styles_xml, content_xml;
+    if (auto ok = package->load("styles.xml", styles_xml, false); !ok) return std::unexpected(ok.error());
+    if (auto ok = package->load("content.xml", content_xml, true); !ok) return std::unexpected(ok.error());
 
     OdtStyles styles;
     OdtListStyles lists;
-    for (const auto* root : {&styles_xml, &content_xml}) {
-        const auto top = root->document_element();
-        for (const char* part : {"styles", "automatic-styles"}) {
-            styles.read(child(top, part));
-            lists.read(child(top, part));
+    for (const auto* part : {&styles_xml, &content_xml}) {
+        const auto top = part->root();
+        for (const char* name : {"styles", "automatic-styles"}) {
+            styles.read(child(top, name));
+            lists.read(child(top, name));
         }
     }
-    const auto top = content_xml.document_element();
+    const auto top = content_xml.root();
     const auto text = child(child(top, "body"), "text");
     if (local_name(top) != "document-content" || !text)
         return fail("not an OpenDocument text: no <office:body>/<office:text>", "content.xml");

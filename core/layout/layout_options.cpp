@@ -46,12 +46,31 @@ BlockIndents block_indents(const LayoutOptions& o, document::BlockKind kind, int
             if (o.centre_headings && level <= 1) return {0, 0, true};
             return level <= 2 ? BlockIndents{4, 4, false} : BlockIndents{6, 6, false};
         case document::BlockKind::list_item: {
+            // BANA Braille Formats §8 (lists): an item at cell 1, its runover
+            // lines at cell 3; each nested level two cells deeper.
             const int indent = std::min(2 * std::max(level - 1, 0), width / 2);
             return {indent, indent + o.list_runover, false};
         }
+        case document::BlockKind::note:
+            // BANA Braille Formats §16 (notes): 7-5, the note starts in cell 7
+            // with its reference, runover lines in cell 5.
+            return {std::min(6, width / 2), std::min(4, width / 2), false};
+        case document::BlockKind::table_cell:
+            // A listed table (BANA §11): the first entry of a row in cell 1, the
+            // others in cell 3, every runover line in cell 5. `level` is the column.
+            return {level == 0 ? 0 : std::min(2, width / 2), std::min(4, width / 2), false};
         default:
             return {o.paragraph_indent, 0, false};
     }
+}
+
+bool blank_line_before(const LayoutOptions& o, std::optional<document::BlockKind> previous,
+                       document::BlockKind kind) {
+    if (kind == document::BlockKind::heading) return o.blank_line_before_heading;
+    const bool quote = kind == document::BlockKind::quote;
+    const bool after_quote = previous == document::BlockKind::quote;
+    if (quote != after_quote) return true;
+    return kind == document::BlockKind::paragraph && o.blank_line_between_paragraphs;
 }
 
 std::size_t word_room(const LayoutOptions& o, document::BlockKind kind, int level) {

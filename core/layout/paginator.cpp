@@ -2,6 +2,7 @@
 #include "layout/paginator.hpp"
 
 #include <algorithm>
+#include <span>
 
 #include "layout/line_breaker.hpp"
 
@@ -9,11 +10,22 @@ namespace tactus::layout {
 namespace {
 
 constexpr document::Cell kGuideDots{0x24};  // dots 3-6: the print-page separator line
+constexpr document::Cell kTableGuideDot{0x10};   // dot 5: guide dots between table columns
+constexpr document::Cell kSeparationLine{0x12};  // dots 2-5: the line under column headings
+constexpr int kColumnGap = 2;                    // blank cells between two columns, at least
 
 bool is_blank(const document::BrailleLine& l) { return std::ranges::all_of(l, &document::Cell::blank); }
 
 void trim_right(document::BrailleLine& l) {
     while (!l.empty() && l.back().blank()) l.pop_back();
+}
+
+// A table cell's cells without blanks around them.
+std::span<const document::Cell> entry(const translate::TranslatedBlock& b) {
+    std::size_t first = 0, last = b.cells.size();
+    while (first < last && b.cells[first].blank()) ++first;
+    while (last > first && b.cells[last - 1].blank()) --last;
+    return std::span(b.cells).subspan(first, last - first);
 }
 
 }  // namespace
@@ -139,10 +151,116 @@ void Paginator::add_wrapped(const translate::TranslatedBlock& b, const BlockInde
     }
 }
 
+bool Paginator::settled() const { return table_.empty() && last_kind_ != document::BlockKind::quote; }
+
+void Paginator::add_table_block(const translate::TranslatedBlock& b) {
+    if (b.kind == document::BlockKind::table_row) {
+        table_.push_back(TableRow{b.level == 1, {}});
+        return;
+    }
+    if (table_.empty()) table_.emplace_back();  // cells before any row marker: a first row
+    auto& cells = table_.back().cells;
+    // `level` is the column: a missing cell before it is an empty one.
+    while (static_cast<int>(cells.size()) < b.level) {
+        cells.emplace_back();
+        cells.back().kind = document::BlockKind::table_cell;
+        cells.back().level = static_cast<int>(cells.size()) - 1;
+    }
+    cells.push_back(b);
+}
+
+// BANA Braille Formats §11: a table is preceded and followed by a blank line;
+// as columns when every row fits the line, else in listed format.
+void Paginator::flush_table() {
+    if (table_.empty()) return;
+    add_blank_line();
+    if (!lay_out_simple_table()) lay_out_listed_table();
+    add_blank_line();
+    table_.clear();
+}
+
+// Columns side by side, each as wide as its widest entry, two cells apart at
+// least; in body rows guide dots (dot 5, a blank cell on each side) lead from a
+// short entry to the next column. Under a header row, a separation line of
+// dots 2-5 as wide as each column. Returns false, having laid out nothing, when
+// the table does not fit the line or an entry had to be divided.
+bool Paginator::lay_out_simple_table() {
+    std::vector<std::size_t> widths;
+    for (const auto& row : table_) {
+        if (row.cells.size() > widths.size()) widths.resize(row.cells.size(), 0);
+        for (std::size_t c = 0; c < row.cells.size(); ++c) {
+            if (std::ranges::find(row.cells[c].breaks, translate::BreakBefore::forced) != row.cells[c].breaks.end())
+                return false;
+            widths[c] = std::max(widths[c], entry(row.cells[c]).size());
+        }
+    }
+    if (widths.empty()) return true;
+    std::size_t total = kColumnGap * (widths.size() - 1);
+    for (const auto w : widths) total += w;
+    if (total > static_cast<std::size_t>(width())) return false;
+
+    const int source_line = table_.front().cells.empty() ? 0 : table_.front().cells.front().source_line;
+    // The column headings, their separation line and the first row stay
+    // together, as a heading stays with what it heads.
+    std::size_t head = 0;
+    while (head < table_.size() && table_[head].header) ++head;
+    const auto together = static_cast<int>(head == 0 ? 1 : std::min(head + 2, table_.size() + 1));
+    if (!body_.empty() && static_cast<int>(body_.size()) + together > body_capacity()) close_page();
+    for (std::size_t r = 0; r < table_.size(); ++r) {
+        const auto& row = table_[r];
+        document::BrailleLine line;
+        for (std::size_t c = 0; c < widths.size(); ++c) {
+            const auto e = c < row.cells.size() ? entry(row.cells[c]) : std::span<const document::Cell>{};
+            line.insert(line.end(), e.begin(), e.end());
+            if (c + 1 == widths.size()) break;
+            const std::size_t gap = widths[c] - e.size() + kColumnGap;
+            if (!row.header && gap >= 4) {
+                line.emplace_back();
+                line.insert(line.end(), gap - 2, kTableGuideDot);
+                line.emplace_back();
+            } else {
+                line.insert(line.end(), gap, document::Cell{});
+            }
+        }
+        add_line(std::move(line), source_line);
+        const bool last_header = row.header && (r + 1 == table_.size() || !table_[r + 1].header);
+        if (last_header) {
+            document::BrailleLine sep;
+            for (std::size_t c = 0; c < widths.size(); ++c) {
+                sep.insert(sep.end(), widths[c], kSeparationLine);
+                if (c + 1 < widths.size()) sep.insert(sep.end(), kColumnGap, document::Cell{});
+            }
+            add_line(std::move(sep), source_line);
+        }
+    }
+    return true;
+}
+
+// Listed format: each row's entries in column order, one after the other, the
+// first in cell 1 and the others in cell 3, runover lines in cell 5
+// (block_indents of table_cell). A header row is listed first like any row, so
+// the reader learns the order of the columns. Empty entries are left out.
+void Paginator::lay_out_listed_table() {
+    for (const auto& row : table_)
+        for (const auto& cell : row.cells)
+            if (!entry(cell).empty()) add_wrapped(cell, block_indents(o_, document::BlockKind::table_cell, cell.level));
+}
+
 void Paginator::add(const translate::TranslatedBlock& b) {
+    if (document::is_table_kind(b.kind)) {
+        add_table_block(b);
+        return;
+    }
+    if (!table_.empty()) {
+        flush_table();
+        last_kind_ = document::BlockKind::table_row;
+    }
+    if (document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille) {
+        if (blank_line_before(o_, last_kind_, b.kind)) add_blank_line();
+        last_kind_ = b.kind;
+    }
     switch (b.kind) {
         case document::BlockKind::heading: {
-            if (o_.blank_line_before_heading) add_blank_line();
             // Keep a heading off the last body line of a page: it would head nothing.
             if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
             add_wrapped(b, block_indents(o_, b.kind, b.level));
@@ -150,12 +268,14 @@ void Paginator::add(const translate::TranslatedBlock& b) {
             break;
         }
         case document::BlockKind::paragraph:
-            if (o_.blank_line_between_paragraphs) add_blank_line();
-            add_wrapped(b, block_indents(o_, b.kind, b.level));
-            break;
         case document::BlockKind::list_item:
+        case document::BlockKind::quote:
+        case document::BlockKind::note:
             add_wrapped(b, block_indents(o_, b.kind, b.level));
             break;
+        case document::BlockKind::table_row:
+        case document::BlockKind::table_cell:
+            break;  // handled above
         case document::BlockKind::print_page_break: {
             print_page_ = document::to_unicode_text(b.label);
             if (!o_.print_page_indicators || body_.empty()) break;
@@ -195,6 +315,7 @@ void Paginator::add(const translate::TranslatedBlock& b) {
 }
 
 PagedDocument Paginator::finish() && {
+    flush_table();
     if (!body_.empty() || doc_.pages.empty()) close_page();
     return std::move(doc_);
 }

@@ -3,6 +3,7 @@
 // Lays translated blocks out into braille pages, one block at a time, so the
 // pipeline can feed it while translation of later blocks is still running.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "layout/layout_options.hpp"
@@ -39,6 +40,10 @@ public:
     [[nodiscard]] const std::vector<document::BrailleLine>& body() const { return body_; }
     // The pages closed so far (finish() would also close the one being filled).
     [[nodiscard]] const PagedDocument& closed() const { return doc_; }
+    // False while a structure is open whose lines depend on blocks still to
+    // come: a table (laid out whole at its end) or a block quote (a blank line
+    // follows it). The editor's live layout does not stop early then.
+    [[nodiscard]] bool settled() const;
 
 private:
     [[nodiscard]] bool numbered(std::size_t page_index) const;
@@ -49,6 +54,15 @@ private:
     void break_page();
     void close_page();
     void add_wrapped(const translate::TranslatedBlock& block, const BlockIndents& indents);
+    void add_table_block(const translate::TranslatedBlock& block);
+    void flush_table();
+    bool lay_out_simple_table();
+    void lay_out_listed_table();
+
+    struct TableRow {
+        bool header = false;
+        std::vector<translate::TranslatedBlock> cells;
+    };
 
     LayoutOptions o_;
     std::function<document::BrailleLine(int)> number_cells_;
@@ -56,6 +70,8 @@ private:
     std::vector<document::BrailleLine> body_;  // body lines of the page being filled
     std::string print_page_;         // print page label in effect (UTF-8 of the label cells)
     std::string page_top_print_page_;
+    std::vector<TableRow> table_;  // the table being read, laid out at its end
+    std::optional<document::BlockKind> last_kind_;  // of the last block, page breaks aside
 };
 
 }  // namespace tactus::layout

@@ -172,9 +172,7 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
         return fail("translation worker ended in the middle of a block");
     const document::Block& b = blocks[i];
     translate::LineBreaks breaks;
-    const bool text = b.kind == document::BlockKind::heading || b.kind == document::BlockKind::paragraph ||
-                      b.kind == document::BlockKind::list_item;
-    if (text) {
+    if (document::is_text_kind(b.kind)) {
         breaks.resize(cells.size());
         if (read_all(fd, breaks.data(), breaks.size()) != 1)
             return fail("translation worker ended in the middle of a block");

@@ -2,6 +2,7 @@
 #include "translate/translated_document.hpp"
 
 #include <algorithm>
+#include <span>
 
 #include "common/utf8.hpp"
 #include "translate/word_division.hpp"
@@ -11,10 +12,14 @@ namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
+// BANA Braille Formats 2016 §16.2: a note reference is dots 2356, 2356 followed
+// unspaced by the reference (a number with its numeric indicator).
+constexpr document::Cell kNoteReferenceIndicator{0x36};
+
 // Joins spans into one string with an emphasis mark per code point. Line breaks
 // and tabs inside a block become spaces: layout decides where braille lines end.
-Result<void> flatten(const document::Block& block, std::u32string& text, std::vector<std::uint8_t>& emph) {
-    for (const auto& span : block.spans) {
+Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph) {
+    for (const auto& span : spans) {
         auto u = utf8_to_utf32(span.text);
         if (!u) return std::unexpected(u.error());
         for (char32_t c : *u) {
@@ -94,7 +99,7 @@ private:
 
 Result<void> translate_text(const Translator& tr, std::u32string_view text,
                             std::span<const std::uint8_t> emph, std::size_t room, TranslatedBlock& out,
-                            const std::function<void(std::size_t)>& progress) {
+                            const std::function<void(std::size_t)>& progress, BreakBefore join) {
     const bool any_emphasis =
         std::ranges::any_of(emph, [](std::uint8_t e) { return e != document::emphasis_none; });
     const auto emph_of = [&](std::size_t from, std::size_t n) {
@@ -102,7 +107,6 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
     };
     BlockWriter writer(tr, room, out);
     std::size_t start = 0;
-    BreakBefore join = BreakBefore::never;  // the block's first cell
     while (start < text.size()) {
         std::size_t end = std::min(text.size(), start + kChunk);
         if (end < text.size()) {
@@ -145,6 +149,48 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
     return {};
 }
 
+// A note reference: the indicator and the reference, attached to the word
+// before it (never a line break in front of it or inside it).
+Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out) {
+    auto u = utf8_to_utf32(span.text);
+    if (!u) return std::unexpected(u.error());
+    auto cells = tr.translate(*u);
+    if (!cells) return std::unexpected(cells.error());
+    out.cells.insert(out.cells.end(), 2, kNoteReferenceIndicator);
+    out.cells.insert(out.cells.end(), cells->begin(), cells->end());
+    out.breaks.resize(out.cells.size(), BreakBefore::never);
+    return {};
+}
+
+// The spans of a text block: runs of print text translated as one text each,
+// note references between them written by their own rule.
+Result<void> translate_spans(const Translator& tr, std::span<const document::Span> spans, std::size_t room,
+                             TranslatedBlock& out, const std::function<void(std::size_t)>& progress) {
+    std::size_t done = 0;
+    for (std::size_t i = 0; i < spans.size();) {
+        if (spans[i].note_reference) {
+            if (auto ok = translate_note_reference(tr, spans[i], out); !ok) return ok;
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j < spans.size() && !spans[j].note_reference) ++j;
+        std::u32string text;
+        std::vector<std::uint8_t> emph;
+        if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
+        // The first cell of a run never starts a line by itself: the block's
+        // first cell, or text going on unspaced after a note reference (a space
+        // after it gives a blank break anyway).
+        constexpr auto join = BreakBefore::never;
+        const std::function<void(std::size_t)> shifted = [&](std::size_t n) { progress(done + n); };
+        if (auto ok = translate_text(tr, text, emph, room, out, progress ? shifted : progress, join); !ok)
+            return ok;
+        done += text.size();
+        i = j;
+    }
+    return {};
+}
+
 }  // namespace
 
 Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator,
@@ -171,17 +217,17 @@ Result<TranslatedBlock> translate_block(const document::Block& block, const Tran
                 tb.label = std::move(*cells);
             }
             break;
+        case document::BlockKind::table_row:
+            break;
         case document::BlockKind::heading:
         case document::BlockKind::paragraph:
-        case document::BlockKind::list_item: {
-            std::u32string text;
-            std::vector<std::uint8_t> emph;
-            if (auto ok = flatten(block, text, emph); !ok)
-                return std::unexpected(located(ok.error(), where));
-            if (auto ok = translate_text(translator, text, emph, word_room, tb, progress); !ok)
+        case document::BlockKind::list_item:
+        case document::BlockKind::quote:
+        case document::BlockKind::note:
+        case document::BlockKind::table_cell:
+            if (auto ok = translate_spans(translator, block.spans, word_room, tb, progress); !ok)
                 return std::unexpected(located(ok.error(), where));
             break;
-        }
     }
     return tb;
 }

@@ -16,7 +16,7 @@ namespace tactus::translate {
 struct TranslatedBlock {
     document::BlockKind kind = document::BlockKind::paragraph;
     int level = 0;
-    document::BrailleLine cells;               // heading, paragraph, list_item; words separated by blank cells
+    document::BrailleLine cells;               // text kinds; words separated by blank cells
     LineBreaks breaks;               // one per cell of `cells`: where a line may end
     std::vector<document::BrailleLine> lines;  // braille: verbatim lines
     document::BrailleLine label;               // print_page_break: the page number in braille

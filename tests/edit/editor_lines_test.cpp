@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "../common/edit_fixtures.hpp"
+#include "edit/markdown_writer.hpp"
+#include "import/import.hpp"
 
 using namespace tactus;
 
@@ -74,4 +76,30 @@ TEST(EditorLines, PrintThatLooksLikeMarkdownIsEscaped) {
         ASSERT_EQ(int(back->kind), int(document::BlockKind::paragraph));
         ASSERT_EQ(std::string(back->text()), std::string(text));
     }
+}
+
+// Issue 13: block quotes, notes, note references and bullets are lines of the
+// dialect, and survive parse -> render and save -> reopen.
+TEST(EditorLines, QuotesNotesAndBulletsRoundTrip) {
+    const std::vector<std::string> lines{"Our trip[^1] was long.", "[^1]: It took an *hour*.", "> Quoted *words*.",
+                                         "> > Deeper.", "- A bullet", "  - nested", "\\[^2\\] is text"};
+    for (const auto& l : lines) {
+        const auto b = edit::parse_editor_line(l);
+        ASSERT_TRUE(b) << l;
+        EXPECT_EQ(edit::render_editor_line(*b), l);
+    }
+    const auto ref = edit::parse_editor_line(lines[0]);
+    ASSERT_GE(ref->spans.size(), 3u);
+    EXPECT_TRUE(ref->spans[1].note_reference);
+    EXPECT_EQ(ref->text(), "Our trip1 was long.");  // the space after the reference is kept
+    const auto note = edit::parse_editor_line(lines[1]);
+    EXPECT_EQ(note->kind, document::BlockKind::note);
+    EXPECT_TRUE(note->spans.front().note_reference);
+    EXPECT_EQ(edit::parse_editor_line(lines[3])->level, 2);
+    EXPECT_EQ(edit::parse_editor_line(lines[4])->text(), "\u2022 A bullet");  // as core's importers give it
+    EXPECT_FALSE(edit::parse_editor_line(lines[6])->spans.front().note_reference);
+
+    const auto reopened = import::import_bytes(edit::to_markdown(lines), "saved.md");
+    ASSERT_TRUE(reopened.has_value()) << reopened.error().to_string();
+    EXPECT_EQ(edit::render_editor_lines(*reopened), lines);
 }

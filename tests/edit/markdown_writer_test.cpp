@@ -3,6 +3,8 @@
 // same lines: the writer and the importer agree on the dialect.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "../common/edit_fixtures.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/markdown_writer.hpp"
@@ -28,4 +30,67 @@ TEST(MarkdownWriter, SavedSamplesReopenToTheSameLines) {
 TEST(MarkdownWriter, BlankLinesMakeNoBlocksAndBlocksAreParagraphsApart) {
     const std::vector<std::string> lines{"# Title", "", "first", "   ", "second"};
     EXPECT_EQ(edit::to_markdown(lines), "# Title\n\nfirst\n\nsecond\n");
+}
+
+// Property: random documents in the editor's dialect (headings, paragraphs,
+// bullets at three levels, quotes, labelled page breaks, text full
+// of characters Markdown treats specially, emphasis) come back line for line
+// after saving as Markdown and opening again.
+TEST(MarkdownWriter, RandomDocumentsSurviveSaveAndReopen) {
+    std::mt19937 rng(4);
+    const std::vector<std::string> words{"word", "*", "_x_", "#", "&", "<b>", "[a]", "\\", "`c`", "1.", "-",
+                                         "~~", "42", "\u4eca\u5929", "a*b", "+", ">", "|", "!", "&amp;"};
+    const auto text = [&] {
+        std::vector<document::Span> spans;
+        const auto n = 1 + rng() % 5;
+        for (std::size_t i = 0; i < n; ++i) {
+            std::string t = (i ? " " : "") + words[rng() % words.size()];
+            const std::uint8_t e = rng() % 4 == 0 ? document::emphasis_bold : document::emphasis_none;
+            if (!spans.empty() && spans.back().emphasis == e) spans.back().text += t;
+            else spans.push_back(document::Span{t, e});
+        }
+        return spans;
+    };
+    for (int round = 0; round < 200; ++round) {
+        std::vector<std::string> lines;
+        int page = 1;
+        int list_level = 0;  // of the previous block when it is a list item
+        const auto blocks = 1 + rng() % 12;
+        for (std::size_t i = 0; i < blocks; ++i) {
+            document::Block b;
+            switch (rng() % 6) {
+                case 0: b.kind = document::BlockKind::heading; b.level = 1 + static_cast<int>(rng() % 6); break;
+                case 1:
+                    // Markdown nests a list only inside an item one level up.
+                    b.kind = document::BlockKind::list_item;
+                    b.level = 1 + static_cast<int>(rng() % static_cast<unsigned>(list_level + 1));
+                    break;
+                case 2: b.kind = document::BlockKind::quote; b.level = 1 + static_cast<int>(rng() % 2); break;
+                case 3:
+                    if (!lines.empty()) {
+                        b.kind = document::BlockKind::print_page_break;
+                        b.label = std::to_string(++page);
+                        break;
+                    }
+                    [[fallthrough]];
+                default: b.kind = document::BlockKind::paragraph; break;
+            }
+            if (b.kind != document::BlockKind::print_page_break) b.spans = text();
+            if (b.kind == document::BlockKind::list_item) {
+                // Bullets only: numbered items are not yet one dialect (Markdown
+                // counts on from a list's first number, and nests under "6." at
+                // three spaces, not two); issue 13 item 4 is open for them.
+                b.spans.insert(b.spans.begin(), document::Span{"\u2022 "});
+            }
+            list_level = b.kind == document::BlockKind::list_item ? std::min(b.level, 3) : 0;
+            lines.push_back(edit::render_editor_line(b));
+        }
+        // A page break as the last block would only add an empty page: the importer drops it.
+        while (!lines.empty() && lines.back().starts_with("<!-- pagebreak")) lines.pop_back();
+        if (lines.empty()) continue;
+        const auto md = edit::to_markdown(lines);
+        const auto reopened = import::import_bytes(md, "saved.md");
+        ASSERT_TRUE(reopened.has_value()) << reopened.error().to_string();
+        ASSERT_EQ(edit::render_editor_lines(*reopened), lines) << md;
+    }
 }

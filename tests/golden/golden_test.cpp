@@ -18,10 +18,14 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path kSamples = fs::path(TACTUS_RESOURCES_DIR) / "samples";
+// One document as Markdown, DOCX and ODT (make_office.py writes the last two):
+// headings, a note, bullets and numbers, a nested list, a block quote, a table
+// that fits the line and one that does not.
+const fs::path kStructure = fs::path(TACTUS_GOLDEN_DIR) / ".." / "structure";
 
 struct GoldenCase {
     std::string name;     // expected file name
-    std::string input;    // under resources/samples
+    std::string input;    // under resources/samples, or tests/golden/structure for structure*
     std::string tables;
     bool interpoint;
     exporter::ExportFormat format;
@@ -31,7 +35,7 @@ std::string render(const GoldenCase& c) {
     pipeline::PipelineOptions o;
     o.tables = c.tables;
     o.layout.geometry.interpoint = c.interpoint;
-    auto doc = pipeline::lay_out_file(kSamples / c.input, o);
+    auto doc = pipeline::lay_out_file((c.input.starts_with("structure") ? kStructure : kSamples) / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};
     exporter::PefMetadata meta;
@@ -71,7 +75,11 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"welcome-interpoint.brf", "welcome.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"welcome-g1.pef", "welcome.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
         GoldenCase{"chinese-tw.brf", "chinese-tw.txt", "zh-tw.ctb", true, exporter::ExportFormat::brf},
-        GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, exporter::ExportFormat::unicode}),
+        GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, exporter::ExportFormat::unicode},
+        GoldenCase{"structure-md.brf", "structure.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
+        GoldenCase{"structure-docx.brf", "structure.docx", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
+        GoldenCase{"structure-odt.brf", "structure.odt", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
+        GoldenCase{"structure-md.pef", "structure.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;
         for (auto& ch : n)

@@ -7,6 +7,7 @@ namespace {
 const auto H = document::BlockKind::heading;
 const auto P = document::BlockKind::paragraph;
 const auto LI = document::BlockKind::list_item;
+const auto C = document::BlockKind::table_cell;
 constexpr std::uint8_t I = document::emphasis_italic;
 constexpr std::uint8_t B = document::emphasis_bold;
 constexpr std::uint8_t U = document::emphasis_underline;
@@ -20,9 +21,9 @@ TEST(DocxImport, DocumentWrittenByLibreOffice) {
                    {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I},
                     {", and the "}, {"water cycle", U}, {"."}}),
         text_block(H, 2, {{"Kinds of clouds"}}),
-        text_block(LI, 1, {{"Cumulus "}}),
-        text_block(LI, 1, {{"Stratus "}}),
-        text_block(LI, 2, {{"Nimbostratus"}}),
+        text_block(LI, 1, {{"\u2022 Cumulus "}}),  // Word's bullet glyph becomes the bullet sign
+        text_block(LI, 1, {{"\u2022 Stratus "}}),
+        text_block(LI, 2, {{"\u2022 Nimbostratus"}}),
         text_block(LI, 1, {{"1. Look at the sky. "}}),
         text_block(LI, 1, {{"2. Write what you see. "}}),
         page_break("2"),
@@ -31,8 +32,9 @@ TEST(DocxImport, DocumentWrittenByLibreOffice) {
         text_block(P, 0,
                    {{"Plain "}, {"bold italic", B | I}, {" end. A "}, {"strong", B},
                     {" and an "}, {"emphasised", I}, {" word."}}),
-        text_block(P, 0, {{"Cloud"}}),
-        text_block(P, 0, {{"雲"}}),
+        table_row(false),
+        text_block(C, 0, {{"Cloud"}}),
+        text_block(C, 1, {{"雲"}}),
     };
     EXPECT_EQ(doc.blocks, expected);
     EXPECT_EQ(doc.encoding, "");

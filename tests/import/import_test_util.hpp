@@ -11,15 +11,16 @@
 #include "common/file_io.hpp"
 #include "import/import.hpp"
 
-namespace tactus {
-// Readable failure output for block comparisons.
+namespace tactus::document {
+// Readable failure output for block comparisons (found by ADL).
 inline void PrintTo(const document::Block& b, std::ostream* os) {
     *os << "Block{kind=" << static_cast<int>(b.kind) << " level=" << b.level << " line="
         << b.source_line << " label='" << b.label << "' spans=[";
-    for (const auto& s : b.spans) *os << "('" << s.text << "'," << int{s.emphasis} << ")";
+    for (const auto& s : b.spans)
+        *os << "('" << s.text << "'," << int{s.emphasis} << (s.note_reference ? ",ref" : "") << ")";
     *os << "] braille_lines=" << b.braille_lines.size() << "}";
 }
-}  // namespace tactus
+}  // namespace tactus::document
 
 namespace tactus::test {
 
@@ -46,6 +47,19 @@ inline Error import_data_file_error(const std::string& name, const std::string& 
     auto doc = import::import_file(import_data(name), {format, encoding});
     EXPECT_FALSE(doc.has_value()) << name << " imported although it should not";
     return doc ? Error{} : doc.error();
+}
+
+inline document::Span reference(const std::string& label) {
+    document::Span s{label};
+    s.note_reference = true;
+    return s;
+}
+
+inline document::Block table_row(bool header) {
+    document::Block b;
+    b.kind = document::BlockKind::table_row;
+    b.level = header ? 1 : 0;
+    return b;
 }
 
 inline std::vector<document::BlockKind> kinds(const document::Document& doc) {

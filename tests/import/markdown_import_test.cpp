@@ -25,9 +25,10 @@ TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
                     {", and the water cycle & more."}},
                    3),
         text_block(H, 2, {{"Kinds of clouds"}}, 6),
-        text_block(LI, 1, {{"Cumulus"}}, 8),
-        text_block(LI, 1, {{"Stratus"}}, 9),
-        text_block(LI, 2, {{"Nimbostratus"}}, 10),
+        // Bullets are kept as the bullet sign (issue 13: BANA keeps print's bullets).
+        text_block(LI, 1, {{"\u2022 Cumulus"}}, 8),
+        text_block(LI, 1, {{"\u2022 Stratus"}}, 9),
+        text_block(LI, 2, {{"\u2022 Nimbostratus"}}, 10),
         text_block(LI, 3, {{"1. Low"}}, 11),
         text_block(LI, 3, {{"2. Grey"}}, 12),
         text_block(LI, 1, {{"3. Look at the sky."}}, 14),

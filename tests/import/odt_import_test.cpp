@@ -7,6 +7,8 @@ namespace {
 const auto H = document::BlockKind::heading;
 const auto P = document::BlockKind::paragraph;
 const auto LI = document::BlockKind::list_item;
+const auto N = document::BlockKind::note;
+const auto C = document::BlockKind::table_cell;
 constexpr std::uint8_t I = document::emphasis_italic;
 constexpr std::uint8_t B = document::emphasis_bold;
 constexpr std::uint8_t U = document::emphasis_underline;
@@ -22,17 +24,20 @@ TEST(OdtImport, TheSameLessonAsTheDocx) {
                    {{"Today we learn about "}, {"clouds", B}, {" and "}, {"rain", I}, {", and the "},
                     {"water cycle", U}, {"."}}),
         text_block(H, 2, {{"Kinds of clouds"}}),  // heading style bold is not emphasis
-        text_block(LI, 1, {{"Cumulus"}}),
-        text_block(LI, 1, {{"Stratus"}}),
-        text_block(LI, 2, {{"Nimbostratus"}}),
+        text_block(LI, 1, {{"\u2022 Cumulus"}}),  // a bullet level: the bullet sign
+        text_block(LI, 1, {{"\u2022 Stratus"}}),
+        text_block(LI, 2, {{"\u2022 Nimbostratus"}}),
         text_block(LI, 1, {{"1. Look at the sky."}}),  // numbered: the label is text
         text_block(LI, 1, {{"2. Write what you see."}}),
         page_break("2"),  // fo:break-before="page"; the soft page break is none
         text_block(P, 0, {{"今天的天气很好，我们一起去公园散步吧。"}}),
-        // A text style inherits its parent's bold; the note is not imported.
-        text_block(P, 0, {{"Plain "}, {"bold italic", B | I}, {" end.\tTab\nand   spaces."}}),
-        text_block(P, 0, {{"Cloud"}}),
-        text_block(P, 0, {{"雲"}}),
+        // A text style inherits its parent's bold; the note's reference is in
+        // the text and the note follows the paragraph.
+        text_block(P, 0, {{"Plain "}, {"bold italic", B | I}, {" end.\tTab\nand   spaces"}, reference("1"), {"."}}),
+        text_block(N, 0, {reference("1"), {" A note"}}),
+        table_row(false),
+        text_block(C, 0, {{"Cloud"}}),
+        text_block(C, 1, {{"雲"}}),
     };
     EXPECT_EQ(doc.blocks, expected);
 }

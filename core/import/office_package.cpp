@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "import/office_package.hpp"
+
+#include "import/import.hpp"
+#include "import/xml_util.hpp"
+
+namespace tactus::import::detail {
+
+Result<XmlPackage> XmlPackage::open(std::string_view bytes, std::string kind) {
+    auto zip = ZipArchive::open(bytes);
+    if (!zip) return std::unexpected(zip.error());
+    return XmlPackage(std::move(*zip), std::move(kind));
+}
+
+Result<bool> XmlPackage::load(const std::string& part, XmlPart& out, bool required) const {
+    if (!zip_.contains(part)) {
+        if (required) return fail("not " + kind_ + ": missing part " + part, part);
+        return false;
+    }
+    auto bytes = zip_.read(part, max_import_bytes);
+    if (!bytes) return std::unexpected(bytes.error());
+    out.bytes = std::move(*bytes);
+    if (auto ok = parse_xml(out.xml, out.bytes, part); !ok) return std::unexpected(ok.error());
+    return true;
+}
+
+void OfficeText::begin_paragraph(document::BlockKind kind, int level, std::string label) {
+    label_ = std::move(label);
+    if (!label_.empty()) label_ += ' ';
+    if (note_depth_ > 0) {
+        builder_.add_text(" ");  // a note's paragraphs run on
+        return;
+    }
+    if (table_depth_ > 0) {
+        if (cell_has_text_) builder_.add_text(" ");
+        return;
+    }
+    kind_ = kind;
+    level_ = level;
+    builder_.begin(kind_, level_, 0);
+}
+
+void OfficeText::text(std::string_view s, std::uint8_t emphasis) {
+    if (s.empty()) return;
+    if (!builder_.is_open() && note_depth_ == 0 && table_depth_ == 0) builder_.begin(kind_, level_, 0);
+    if (!label_.empty()) {
+        builder_.add_text(label_);
+        label_.clear();
+    }
+    builder_.add_text(s, emphasis);
+    cell_has_text_ = true;
+}
+
+void OfficeText::end_paragraph() {
+    label_.clear();
+    if (note_depth_ > 0 || table_depth_ > 0) return;
+    builder_.end();
+    flush_page_break();
+}
+
+// A break inside a table cell or a note waits for the end of the table or of
+// the paragraph holding the note: the print page is counted, the structure
+// stays whole.
+void OfficeText::page_break() {
+    if (note_depth_ > 0 || table_depth_ > 0) {
+        ++pending_breaks_;
+        return;
+    }
+    builder_.print_page_break(0);
+}
+
+void OfficeText::page_break_inside() {
+    if (note_depth_ > 0 || table_depth_ > 0) {
+        ++pending_breaks_;
+        return;
+    }
+    builder_.print_page_break(0);
+    builder_.begin(kind_, level_, 0);
+}
+
+void OfficeText::flush_page_break() {
+    for (; pending_breaks_ > 0; --pending_breaks_) builder_.print_page_break(0);
+}
+
+void OfficeText::begin_table() {
+    if (note_depth_ > 0) return;
+    if (table_depth_++ > 0) return;  // a table in a cell is the cell's text
+    builder_.end();
+}
+
+void OfficeText::begin_row(bool header) {
+    if (note_depth_ > 0 || table_depth_ != 1) return;
+    builder_.table_row(header, 0);
+    column_ = 0;
+}
+
+void OfficeText::begin_cell() {
+    if (note_depth_ > 0 || table_depth_ != 1) {
+        if (cell_has_text_) builder_.add_text(" ");
+        return;
+    }
+    builder_.begin_cell(column_++, 0);
+    cell_has_text_ = false;
+}
+
+void OfficeText::end_cell() {
+    if (note_depth_ > 0 || table_depth_ != 1) return;
+    builder_.end();
+}
+
+void OfficeText::end_table() {
+    if (note_depth_ > 0 || table_depth_ == 0) return;
+    if (--table_depth_ > 0) return;
+    builder_.end_table();
+    flush_page_break();
+}
+
+void OfficeText::begin_note(int source_line) {
+    if (note_depth_++ > 0) return;  // a note in a note: its text runs on
+    if (!builder_.is_open() && table_depth_ == 0) builder_.begin(kind_, level_, 0);
+    if (!label_.empty()) {
+        builder_.add_text(label_);
+        label_.clear();
+    }
+    const auto label = std::to_string(++notes_);
+    builder_.note_reference(label);
+    builder_.begin_note(label, source_line);
+}
+
+void OfficeText::end_note() {
+    if (note_depth_ == 0 || --note_depth_ > 0) return;
+    builder_.end_note();
+}
+
+}  // namespace tactus::import::detail
