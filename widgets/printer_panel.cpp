@@ -588,7 +588,7 @@ void PrinterPanel::finished(const spool::JobRecord& j, const Shown& s) {
         text = s.sheet ? tr("%1 cancelled; resume from sheet %2").arg(title).arg(s.sheet) : tr("%1 cancelled").arg(title);
     } else {
         text = tr("%1 stopped: %2. The job is kept; fix the problem, then resume it.").arg(title, qs(j.reason));
-        show_fault(text);
+        fault_->setText(text);  // announced once, below (show_fault would announce it a second time)
     }
     log(text);
     Q_EMIT message(text, j.state == spool::JobState::failed);

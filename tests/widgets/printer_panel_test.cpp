@@ -106,6 +106,31 @@ private Q_SLOTS:
         QVERIFY(panel.log_text().contains(QStringLiteral("completed: all")));
     }
 
+    // Issue 14 item 7: a job that stops is announced once (the fault label and
+    // the message each announced it, so Orca said it twice).
+    void a_stopped_job_is_announced_once() {
+        const auto file = (dir_.path() + QStringLiteral("/stop.txt")).toStdString();
+        std::ofstream(file) << "A job that stops.\n";
+        QCOMPARE(test::run({kCli, "queue", "printer", "add", "far", "--device", "pty:/dev/pts/424243", "--db", db_}).first, 0);
+        QCOMPARE(test::run({kCli, "emboss", "--queue", file, "--printer", "far", "--title", "stops", "--db", db_}).first, 0);
+        PrinterPanel panel;
+        QSignalSpy messages(&panel, &PrinterPanel::message);
+        QSignalSpy finished(&panel, &PrinterPanel::job_finished);
+        {
+            auto s = spool::Spool::open(db_, {.create = false});
+            QVERIFY(s.has_value());
+            const auto id = panel.jobs().front().id;
+            QVERIFY(s->set_state(id, spool::JobState::failed, "hammer fault", "failed", "hammer fault").has_value());
+        }
+        QVERIFY(finished.wait(10000));
+        QTest::qWait(500);  // any second announcement would follow at once
+        int stopped = 0;
+        for (const auto& m : messages)
+            if (m[0].toString().contains(QStringLiteral("stops stopped"))) ++stopped;
+        QCOMPARE(stopped, 1);
+        QVERIFY(panel.fault_text().contains(QStringLiteral("hammer fault")));
+    }
+
     void queue_list_and_the_panel_show_the_same_jobs() {
         // Two jobs from the CLI on a printer nobody serves, one from the panel.
         const auto file = (dir_.path() + QStringLiteral("/cli.txt")).toStdString();
