@@ -550,7 +550,7 @@ void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t
     }
     if (j.state == spool::JobState::paused && reason_changed && !j.reason.empty() &&
         j.reason != "paused by the operator")
-        show_fault(tr("%1 paused: %2").arg(title, qs(j.reason)));
+        announce_fault(j.id, tr("%1 paused: %2").arg(title, qs(j.reason)));
     if (j.state == spool::JobState::queued && reason_changed && !j.reason.empty())
         show_fault(tr("%1 waits: %2").arg(title, qs(j.reason)));
     if (j.state == spool::JobState::running && !w.steps)
@@ -677,11 +677,53 @@ std::optional<spool::JobRecord> PrinterPanel::embossing() const {
 void PrinterPanel::append_events() {
     auto events = spool_->events(std::nullopt, last_event_ ? 200 : 50);
     if (!events) return;
+    const bool news = last_event_ != 0;  // the first read is history, not news
+    // A fault and the job going on again often arrive in one read (the built-in
+    // simulator reloads paper at once): said as one message, since a second
+    // notification straight after the first cuts it off in Orca.
+    std::map<std::int64_t, QString> faults;
+    std::vector<std::int64_t> order;
+    const auto title_of = [&](std::int64_t id) {
+        const auto j = std::find_if(jobs_.begin(), jobs_.end(), [&](const auto& r) { return r.id == id; });
+        return j != jobs_.end() ? qs(j->title) : tr("job %1").arg(id);
+    };
     for (const auto& e : *events) {
         if (e.id <= last_event_) continue;
         last_event_ = e.id;
         log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + qs(e.kind) + QStringLiteral(": ") + qs(e.message));
+        if (!e.job || !news) continue;
+        if (e.kind == "fault") {
+            if (!faults.count(*e.job)) order.push_back(*e.job);
+            faults[*e.job] = tr("%1 paused: %2").arg(title_of(*e.job), qs(e.message));
+        } else if (e.kind == "resumed") {
+            if (const auto f = faults.find(*e.job); f != faults.end()) {
+                announced_fault_.erase(*e.job);  // over already: a later paused state is news again
+                Q_EMIT message(tr("%1 The printer is running again.").arg(f->second), false);
+                faults.erase(f);
+            } else {
+                announce_going_on(*e.job);
+            }
+        }
     }
+    for (const auto id : order)
+        if (const auto f = faults.find(id); f != faults.end()) announce_fault(id, f->second);
+}
+
+void PrinterPanel::announce_fault(std::int64_t job, const QString& text) {
+    auto& last = announced_fault_[job];
+    if (last == text) return;
+    last = text;
+    show_fault(text);
+}
+
+void PrinterPanel::announce_going_on(std::int64_t job) {
+    const auto it = announced_fault_.find(job);
+    if (it == announced_fault_.end()) return;  // a resume the user asked for is announced by its button
+    announced_fault_.erase(it);
+    show_fault({});
+    const auto j = std::find_if(jobs_.begin(), jobs_.end(), [&](const auto& r) { return r.id == job; });
+    Q_EMIT message(tr("%1 goes on: the printer is running again").arg(j != jobs_.end() ? qs(j->title) : tr("job %1").arg(job)),
+                   false);
 }
 
 void PrinterPanel::update_status() {

@@ -153,6 +153,12 @@ private:
     std::map<spool::JobId, Watch> watch_;
     std::int64_t data_version_ = -1;
     std::int64_t last_event_ = 0;
+    // The fault last announced per job: a fault the runner rides through in a
+    // blink (the built-in simulator reloads paper at once) is seen only in the
+    // event log, a longer one also as a paused job; it is said once either way.
+    std::map<std::int64_t, QString> announced_fault_;
+    void announce_fault(std::int64_t job, const QString& text);
+    void announce_going_on(std::int64_t job);
     QString status_;
 
     QComboBox* devices_;

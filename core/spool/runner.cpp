@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "encode/messages.hpp"
+#include "link/fault_words.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner_token.hpp"
@@ -321,7 +322,11 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
             std::lock_guard lock(state_mutex);
             if (!fault_paused) {
                 fault_paused = true;
-                (void)s.set_state(job.id, JobState::paused, p.note, "fault", p.note, true);
+                // The reason in words with what to do ("Paper out: put paper in
+                // the feeder..."): the link's first note is only "controller fault".
+                auto why = link::explain_faults(p.status.ack.faults & kOperatorFaults);
+                if (why.empty()) why = p.note;
+                (void)s.set_state(job.id, JobState::paused, why, "fault", why, true);
             }
         }
     };

@@ -1170,7 +1170,7 @@
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="128" />
-        <location filename="../../widgets/printer_panel.cpp" line="690" />
+        <location filename="../../widgets/printer_panel.cpp" line="732" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1380,67 +1380,83 @@
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="683" />
+        <location filename="../../widgets/printer_panel.cpp" line="688" />
+        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <source>job %1</source>
+        <translation>工作 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="693" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="694" />
+        <location filename="../../widgets/printer_panel.cpp" line="701" />
+        <source>%1 The printer is running again.</source>
+        <translation>%1 印表機已恢復運作。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <source>%1 goes on: the printer is running again</source>
+        <translation>%1 繼續進行：印表機已恢復運作</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="736" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="697" />
+        <location filename="../../widgets/printer_panel.cpp" line="739" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="698" />
+        <location filename="../../widgets/printer_panel.cpp" line="740" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="703" />
+        <location filename="../../widgets/printer_panel.cpp" line="745" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="706" />
+        <location filename="../../widgets/printer_panel.cpp" line="748" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="747" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="778" />
+        <location filename="../../widgets/printer_panel.cpp" line="820" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="782" />
+        <location filename="../../widgets/printer_panel.cpp" line="824" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="788" />
+        <location filename="../../widgets/printer_panel.cpp" line="830" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="792" />
+        <location filename="../../widgets/printer_panel.cpp" line="834" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="796" />
+        <location filename="../../widgets/printer_panel.cpp" line="838" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="800" />
+        <location filename="../../widgets/printer_panel.cpp" line="842" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
@@ -1501,6 +1517,7 @@
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="553" />
+        <location filename="../../widgets/printer_panel.cpp" line="697" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
@@ -1556,12 +1573,12 @@
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="752" />
+        <location filename="../../widgets/printer_panel.cpp" line="794" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="762" />
+        <location filename="../../widgets/printer_panel.cpp" line="804" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>

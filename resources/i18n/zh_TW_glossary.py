@@ -213,6 +213,8 @@ T = {
     "Cannot read the print queue: %1": "無法讀取列印佇列：%1", "Embossing %1 (job %2) on %3": "正在以 %3 列印 %1（工作 %2）",
     "%1 paused: %2": "%1 已暫停：%2", "%1 waits: %2": "%1 等待中：%2", "%1 cancelled": "%1 已取消",
     "%1 stopped: %2. The job is kept; fix the problem, then resume it.": "%1 已停止：%2。工作已保留；排除問題後請繼續。",
+    "job %1": "工作 %1", "%1 The printer is running again.": "%1 印表機已恢復運作。",
+    "%1 goes on: the printer is running again": "%1 繼續進行：印表機已恢復運作",
 }
 
 

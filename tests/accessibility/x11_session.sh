@@ -19,6 +19,8 @@ pids=()
 cleanup() {
   for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done
   for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  # TACTUS_KEEP_WORK=DIR keeps the session's logs (Orca's, the app's, its spool) for a look afterwards.
+  if [ -n "${TACTUS_KEEP_WORK:-}" ]; then mkdir -p "$TACTUS_KEEP_WORK" && cp -r "$work"/. "$TACTUS_KEEP_WORK"/ 2>/dev/null || true; fi
   rm -rf "$work"
 }
 trap cleanup EXIT INT TERM
