@@ -6,18 +6,18 @@
 #include <csignal>
 #include <iostream>
 
+#include <optional>
+
 #include "command.hpp"
 #include "conflict_warnings.hpp"
 #include "emboss_queue.hpp"
-#include "profile/controller_config.hpp"
 #include "encode/frame.hpp"
-#include "plan/plan_file.hpp"
 #include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "link/link.hpp"
-
-#include "plan/planner.hpp"
+#include "plan/plan_file.hpp"
 #include "profile_arg.hpp"
+#include "spool/print_job.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -37,24 +37,20 @@ struct EmbossArgs {
     EmbossQueueArgs queue;
 };
 
-struct Prepared {
-    plan::JobPlan plan;
-    machine::ControllerConfig config;
-};
-
-Prepared prepare(const EmbossArgs& a) {
-    Prepared out;
+// The print job, from a saved plan or from the document; the controller is
+// configured from the profile the plan was made with, either way.
+spool::PrintJob prepare(const EmbossArgs& a) {
     if (a.plan_file) {
-        out.plan = require(plan::load_plan(a.layout.file));
-        return out;
+        auto file = require(plan::load_plan(a.layout.file));
+        std::optional<profile::PrinterProfile> printer;
+        if (!a.profile.empty()) printer = load_profile_arg(a.profile);
+        return require(spool::make_print_job(std::move(file), a.device, printer ? &*printer : nullptr));
     }
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, profile);
-    out.plan = require(plan::plan_job(doc, profile));
-    out.config = profile::controller_config(profile);
-    return out;
+    return require(spool::make_print_job(doc, profile, a.device));
 }
 
 void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
@@ -68,12 +64,15 @@ void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e)
 
 void run_emboss(const EmbossArgs& a) {
     if (a.queue.enabled) {
+        if (a.plan_file)
+            throw CommandFailed(exit_usage, "emboss: --queue stores the document, laid out again with the queue "
+                                            "printer's profile; a saved plan cannot be queued (leave out --plan)");
         EmbossQueueArgs q = a.queue;
         q.device = a.device;  // --device with --queue: the queue printer on that device
         return enqueue_emboss(a.layout, q);
     }
-    const auto prepared = prepare(a);
-    const auto& plan = prepared.plan;
+    const auto job = prepare(a);
+    const auto& plan = job.plan;
     if (a.dry_run) {
         std::size_t first = 0;
         for (const auto& s : plan.sheets) {
@@ -92,9 +91,8 @@ void run_emboss(const EmbossArgs& a) {
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
     // The error's kind tells a malformed device string (usage) from a device
     // that is not there (device).
-    auto link = require(link::Link::open(a.device));
+    auto link = require(link::Link::open(job.device));
     require(link.hello());
-    require(link.configure(prepared.config));
 
     const bool tty = isatty(STDERR_FILENO) != 0;
     link::CancelToken cancel;
@@ -102,8 +100,8 @@ void run_emboss(const EmbossArgs& a) {
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     bool bar_drawn = false;
-    auto out = link.send_job(
-        plan, a.start_sheet,
+    auto out = spool::send_print_job(
+        link, job, a.start_sheet,
         [&](const link::Progress& p) {
             if (p.executed) {
                 if (tty) {

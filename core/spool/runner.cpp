@@ -8,6 +8,7 @@
 
 #include "encode/messages.hpp"
 #include "profile/profile_json.hpp"
+#include "spool/print_job.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner_token.hpp"
 #include "spool/settlement.hpp"
@@ -102,9 +103,8 @@ Result<void> Runner::connect() {
     auto link = connect_(printer_);
     if (!link) return std::unexpected(link.error());
     if (auto h = link->hello(); !h) return std::unexpected(h.error());
-    auto profile = profile::parse_profile(printer_.profile_json);
-    if (!profile) return std::unexpected(located(profile.error(), "printer " + printer_.name));
-    if (auto c = link->configure(profile::controller_config(*profile)); !c) return c;
+    // No CONFIGURE here: each job sends its own, from the profile it was
+    // planned with (run_job), after the open runs are settled.
     link_.emplace(std::move(*link));
     (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
     if (auto r = settle_open_runs(); !r) {
@@ -178,9 +178,10 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    auto plan = plan_copies(*doc, *profile, job.copies);
-    if (!plan && plan.error().where == kPassesWhere) {
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, plan.error().message, "failed", plan.error().message));
+    auto print = make_print_job(*doc, *profile, printer.device, job.copies);
+    auto* plan = print ? &print->plan : nullptr;
+    if (!print && print.error().where == kPassesWhere) {
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
         return RunEnd::failed;
     }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
@@ -188,7 +189,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                          "''s current profile: " +
                          (plan ? "it plans to " + std::to_string(plan->sheets.size()) +
                                      " sheets, the job has " + std::to_string(job.total_sheets())
-                               : plan.error().to_string()) +
+                               : print.error().to_string()) +
                          "; the job is kept (restore the profile or lay the document out again)";
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
@@ -205,6 +206,9 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     if (!link_) {
         if (auto c = connect(); !c) return transient_failure(job, c.error().to_string());
     }
+    // The controller gets the configuration of the profile this job was just
+    // planned with (the printer's profile may have changed since the link opened).
+    if (auto c = link_->configure(print->config); !c) return transient_failure(job, c.error().to_string());
     SPOOL_TRY(s.set_sheet_passes(job.id, passes));
 
     // --- where to start: the first unfinished sheet, or the operator's choice
@@ -326,7 +330,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         }
     };
 
-    auto outcome = link.send_job(*plan, start, on_progress, cancel, link_job);
+    auto outcome = link.send_job(print->plan, start, on_progress, cancel, link_job);
     watching = false;
     watcher.join();
     if (db_error) {

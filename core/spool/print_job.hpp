@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One print job as the embosser gets it: the plan and the controller
+// configuration, both derived from the same printer profile, for one printer
+// (device string), with what identifies them (the profile and the link
+// protocol version). Every road to the embosser builds one here -- a direct
+// `tactus-cli emboss`, `emboss --plan`, `emboss --queue` (checked before it is
+// stored), the spool's runner and the app -- and sends `config` in CONFIGURE
+// before `plan`'s frames, so the controller and the planner never get
+// different profiles.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "common/result.hpp"
+#include "layout/page.hpp"
+#include "link/link.hpp"
+#include "machine/controller_config.hpp"
+#include "plan/plan.hpp"
+#include "plan/plan_file.hpp"
+#include "profile/profile.hpp"
+
+namespace tactus::spool {
+
+struct PrintJob {
+    plan::JobPlan plan;
+    machine::ControllerConfig config;  // what CONFIGURE sends: profile::controller_config(profile)
+    profile::PrinterProfile profile;   // what plan and config were derived from
+    int protocol = 0;                  // the link protocol version the plan is for
+    std::string device;                // the printer; empty for a dry run
+};
+
+// The one function that makes a print job from a document: plans `copies`
+// copies with `profile` (plan_copies: the spool's sheet numbering, the
+// 65,535-pass limit) and derives the configuration from the same profile.
+Result<PrintJob> make_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
+                                std::string_view device, std::size_t copies = 1);
+
+// A saved plan as a print job for `device`. Refused (ErrorKind::input, with
+// the reason) when the plan was made for another link protocol version, or,
+// when `printer_profile` is given, with a profile other than the printer's.
+// The controller is configured with the plan's own profile.
+Result<PrintJob> make_print_job(plan::PlanFile file, std::string_view device,
+                                const profile::PrinterProfile* printer_profile = nullptr);
+
+// The job as a plan file (`plan --json` writes the same format a sheet at a time).
+plan::PlanFile to_plan_file(const PrintJob& job);
+
+// Sends the job on an open link with a session (after hello()): CONFIGURE
+// from the job's profile, then the plan from `start_sheet` (1-based).
+// `job_id` as in link::Link::send_job.
+Result<link::JobOutcome> send_print_job(link::Link& link, const PrintJob& job, std::size_t start_sheet,
+                                        const link::ProgressFn& progress, const link::CancelToken& cancel,
+                                        std::uint16_t job_id = 0);
+
+}  // namespace tactus::spool
