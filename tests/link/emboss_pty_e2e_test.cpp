@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "controller/sim_controller.hpp"
+#include "encode/messages.hpp"
+#include "profile/profile.hpp"
 #include "plan/plan_file.hpp"
 #include "../common/process.hpp"
 #include "../common/test_plans.hpp"
@@ -46,7 +48,8 @@ protected:
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
         plan_ = test::make_plan(2, 6, 14, 11);
-        std::ofstream(dir_ / "plan.json") << plan::plan_to_json(plan_).dump();
+        std::ofstream(dir_ / "plan.json")
+            << plan::plan_to_json({plan_, profile::default_profile(), encode::kProtocolVersion}).dump();
     }
     void TearDown() override { fs::remove_all(dir_); }
 
