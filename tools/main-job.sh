@@ -13,4 +13,4 @@ mkdir -p out
 "$cli" layout --interpoint --summary resources/samples/welcome.md
 # Emboss it on the built-in simulated controller (exit 0 only when the controller
 # has confirmed executing every pass); the last lines are the summary.
-"$cli" emboss --device sim resources/samples/welcome.md | tail -n 2
+"$cli" emboss --device "sim?speed=max" resources/samples/welcome.md | tail -n 2

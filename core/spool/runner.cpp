@@ -159,6 +159,19 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
     return RunEnd::requeued;
 }
 
+Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string& why) {
+    link_.reset();
+    const auto backoff = std::min<double>(
+        static_cast<double>(options_.max_backoff.count()),
+        static_cast<double>(options_.retry_backoff.count()) * std::pow(2.0, std::min(unreachable_, 30)));
+    ++unreachable_;
+    SPOOL_TRY(spool_->requeue(job.id,
+                              "waiting for printer '" + printer_.name + "': " + why + " (trying again in " +
+                                  std::to_string(static_cast<int>(backoff / 1000)) + " s)",
+                              now_seconds() + backoff / 1000.0, false));
+    return RunEnd::requeued;
+}
+
 Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     Spool& s = *spool_;
     // --- what to emboss: the stored document, planned with the printer's profile now
@@ -204,7 +217,8 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     // --- the printer: connect, which settles whatever an earlier run left
     // behind with the controller's count, before the plan shape is replaced
     if (!link_) {
-        if (auto c = connect(); !c) return transient_failure(job, c.error().to_string());
+        if (auto c = connect(); !c) return wait_for_printer(job, c.error().to_string());
+        unreachable_ = 0;
     }
     // The controller gets the configuration of the profile this job was just
     // planned with (the printer's profile may have changed since the link opened).

@@ -149,7 +149,7 @@ TEST_F(PtyEndToEnd, DryRunPrintsTheByteCount) {
 }
 
 TEST_F(PtyEndToEnd, EmbossOnTheInProcessSimulator) {
-    Process p({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim"});
+    Process p({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim?speed=max"});
     const auto out = p.read_all();
     EXPECT_EQ(p.wait(), 0) << out;
     EXPECT_NE(out.find("embossed 12 passes"), std::string::npos) << out;

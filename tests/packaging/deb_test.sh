@@ -74,7 +74,7 @@ fi
 # The main job from the unpacked programs.
 cli="$root/usr/bin/tactus-cli"
 check "$cli" --version
-check bash -c "'$cli' emboss --device sim '$root/usr/share/doc/tactus/examples/welcome.md' | tail -n 1 | grep -q '^embossed '"
+check bash -c "'$cli' emboss --device 'sim?speed=max' '$root/usr/share/doc/tactus/examples/welcome.md' | tail -n 1 | grep -q '^embossed '"
 check bash -c "'$root/usr/lib/cups/backend/tactus' >/dev/null"   # discovery runs (any cables listed)
 
 echo "$failures failure(s)"
