@@ -44,6 +44,12 @@ Result<void> spoil_interrupted(Spool& s, JobId id, std::size_t sheet, const std:
                              ": discard it (it may be blank); it is embossed again in full");
 }
 
+// The wait before the nth attempt (1-based): --retry-ms, doubling, capped.
+double backoff_ms(const RunnerOptions& o, int attempt) {
+    return std::min<double>(static_cast<double>(o.max_backoff.count()),
+                            static_cast<double>(o.retry_backoff.count()) * std::pow(2.0, std::min(attempt, 40) - 1));
+}
+
 }  // namespace
 
 const char* to_string(RunEnd e) {
@@ -148,9 +154,7 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
                                     "fault", why));
         return RunEnd::paused;
     }
-    const auto backoff = std::min<double>(
-        static_cast<double>(options_.max_backoff.count()),
-        static_cast<double>(options_.retry_backoff.count()) * std::pow(2.0, attempt - 1));
+    const auto backoff = backoff_ms(options_, attempt);
     SPOOL_TRY(spool_->requeue(job.id,
                               "retry " + std::to_string(attempt) + " of " +
                                   std::to_string(options_.max_retries) + " in " +
@@ -161,10 +165,7 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
 
 Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string& why) {
     link_.reset();
-    const auto backoff = std::min<double>(
-        static_cast<double>(options_.max_backoff.count()),
-        static_cast<double>(options_.retry_backoff.count()) * std::pow(2.0, std::min(unreachable_, 30)));
-    ++unreachable_;
+    const auto backoff = backoff_ms(options_, ++unreachable_);
     SPOOL_TRY(spool_->requeue(job.id,
                               "waiting for printer '" + printer_.name + "': " + why + " (trying again in " +
                                   std::to_string(static_cast<int>(backoff / 1000)) + " s)",
