@@ -20,7 +20,12 @@ namespace tactus::plan {
 struct PlanOptions {
     // Check the layout against the profile (lines and cells per page, interpoint).
     bool check_layout = true;
+    // plan_job stops, failing with where == kTooManyPassesWhere, as soon as
+    // the plan has more passes than this (0: no limit), so a job that cannot
+    // be sent costs the memory of this many passes, not of the whole book.
+    std::size_t max_passes = 0;
 };
+inline constexpr const char* kTooManyPassesWhere = "passes";
 
 class Planner {
 public:

@@ -105,6 +105,20 @@ TEST(PrintJob, ASavedPlanConfiguresWithItsOwnProfileAndRefusesAnother) {
         << refused.error().message;
 }
 
+// A job the controller cannot count (over 65,535 passes) is refused as soon as
+// that is known, not after the whole book is planned (issue 16, item 7: a
+// dry run of 100,000 pages took gigabytes before failing).
+TEST(PrintJob, AJobTooLongForTheControllerIsRefusedBeforeItIsAllPlanned) {
+    const auto doc = test::make_document(40, true);
+    ASSERT_EQ(doc.sheet_count(), 20U);
+    // 10,000 copies: the first sheet alone is over the limit per copy.
+    auto job = make_print_job(doc, profile::default_profile(), "sim", 10000);
+    ASSERT_FALSE(job);
+    EXPECT_EQ(job.error().where, kPassesWhere);
+    EXPECT_NE(job.error().message.find("65,535"), std::string::npos) << job.error().message;
+    EXPECT_NE(job.error().message.find("in the first 1 of 20 sheets"), std::string::npos) << job.error().message;
+}
+
 // The runner keeps its link open between jobs. When the printer's profile is
 // changed in between, the next job is planned with the new profile, and the
 // controller must be configured with it too (it used to keep the CONFIGURE of
@@ -220,6 +234,15 @@ TEST(PrintJobCli, APlanFromAnotherProfileOrProtocolIsRefusedWithExitThree) {
     EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
     EXPECT_NE(r.err.find("protocol version " + std::to_string(encode::kProtocolVersion + 1)), std::string::npos)
         << r.err;
+
+    // A job the printer could not be sent is refused when it is queued, not
+    // when it runs (the queue makes the same PrintJob first).
+    r = run_captured(cli({"emboss", "--queue", "--copies", "10000", "--db", (f.dir / "q.db").string(), "--device",
+                          "sim", f.doc.string()}));
+    EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+    EXPECT_NE(r.err.find("65,535"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("queued job"), std::string::npos) << r.out;
+    fs::remove(f.dir / "q.db");
 
     // A saved plan cannot be queued: the queue lays the document out again.
     r = run_captured(cli({"emboss", "--plan", f.plan.string(), "--queue", "--db", (f.dir / "q.db").string(),
