@@ -53,6 +53,31 @@ spool::PrintJob prepare(const EmbossArgs& a) {
     return require(spool::make_print_job(doc, profile, a.device));
 }
 
+// What the job would put on the line. A document is measured a sheet at a
+// time (a book in constant memory); a saved plan is already whole.
+spool::StreamSize dry_run(const EmbossArgs& a) {
+    if (!a.plan_file) {
+        const auto profile = load_profile_arg(a.profile);
+        const auto options = a.layout.pipeline_options(profile);
+        const auto doc = lay_out_for_cli(a.layout, options);
+        warn_about_conflicts(doc, profile);
+        return require(spool::measure_print_job(doc, profile, a.start_sheet));
+    }
+    const auto job = prepare(a);
+    std::size_t first = 0;
+    for (const auto& s : job.plan.sheets) {
+        if (s.index >= a.start_sheet) break;
+        first += s.passes.size();
+    }
+    const auto stream = require(encode::encode_job(job.plan, 1, {first, 0, false}));
+    spool::StreamSize m{.stream_bytes = stream.bytes.size(), .sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
+    for (const auto& [b, e] : encode::chunk_stream(stream, encode::kMaxPayload)) {
+        ++m.frames;
+        m.line_bytes += e - b + encode::kFrameOverhead;
+    }
+    return m;
+}
+
 void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
     const int width = 30;
     const auto filled = total ? static_cast<int>(width * done / total) : width;
@@ -71,23 +96,13 @@ void run_emboss(const EmbossArgs& a) {
         q.device = a.device;  // --device with --queue: the queue printer on that device
         return enqueue_emboss(a.layout, q);
     }
-    const auto job = prepare(a);
-    const auto& plan = job.plan;
     if (a.dry_run) {
-        std::size_t first = 0;
-        for (const auto& s : plan.sheets) {
-            if (s.index >= a.start_sheet) break;
-            first += s.passes.size();
-        }
-        const auto stream = require(encode::encode_job(plan, 1, {first, 0, false}));
-        const auto chunks = encode::chunk_stream(stream, encode::kMaxPayload);
-        std::size_t line = 0;
-        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead;
-        std::cout << stream.bytes.size() << " bytes of job stream in " << chunks.size()
-                  << " frames (" << line << " bytes on the line) for " << plan.sheets.size()
-                  << " sheets, " << plan.strikes << " strikes\n";
+        const auto m = dry_run(a);
+        std::cout << m.stream_bytes << " bytes of job stream in " << m.frames << " frames (" << m.line_bytes
+                  << " bytes on the line) for " << m.sheets << " sheets, " << m.strikes << " strikes\n";
         return;
     }
+    const auto job = prepare(a);
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
     // The error's kind tells a malformed device string (usage) from a device
     // that is not there (device).

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "spool/print_job.hpp"
 
+#include <algorithm>
+#include <optional>
+#include <span>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "encode/frame.hpp"
 #include "encode/messages.hpp"
+#include "encode/stream.hpp"
+#include "plan/planner.hpp"
 #include "profile/controller_config.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/printing.hpp"
@@ -73,6 +79,112 @@ Result<link::JobOutcome> send_print_job(link::Link& link, const PrintJob& job, s
                                         std::uint16_t job_id) {
     if (auto c = link.configure(job.config); !c) return std::unexpected(c.error());
     return link.send_job(job.plan, start_sheet, progress, cancel, job_id);
+}
+
+namespace {
+
+// Ops on their way into DATA frames: chunk_stream packs them greedily, so a
+// frame it closes never changes when more ops follow; only the last, open one
+// is kept for the next sheet's ops.
+class FrameCounter {
+public:
+    explicit FrameCounter(StreamSize& out) : out_(out) {}
+    // Ops [from, to) of `s`.
+    void add(const encode::JobStream& s, std::size_t from, std::size_t to) {
+        const std::size_t begin = from == 0 ? 0 : s.op_ends[from - 1];
+        const std::size_t end = to == 0 ? 0 : s.op_ends[to - 1];
+        const std::size_t base = pending_.bytes.size();
+        pending_.bytes.insert(pending_.bytes.end(), s.bytes.begin() + static_cast<std::ptrdiff_t>(begin),
+                              s.bytes.begin() + static_cast<std::ptrdiff_t>(end));
+        for (std::size_t i = from; i < to; ++i) pending_.op_ends.push_back(base + s.op_ends[i] - begin);
+        out_.stream_bytes += end - begin;
+    }
+    void close(bool last) {
+        const auto chunks = encode::chunk_stream(pending_, encode::kMaxPayload);
+        const std::size_t closed = last || chunks.empty() ? chunks.size() : chunks.size() - 1;
+        for (std::size_t k = 0; k < closed; ++k)
+            out_.line_bytes += chunks[k].second - chunks[k].first + encode::kFrameOverhead;
+        out_.frames += closed;
+        if (last || chunks.empty()) return;
+        const std::size_t cut = chunks.back().first;
+        pending_.bytes.erase(pending_.bytes.begin(), pending_.bytes.begin() + static_cast<std::ptrdiff_t>(cut));
+        std::erase_if(pending_.op_ends, [cut](std::size_t e) { return e <= cut; });
+        for (auto& e : pending_.op_ends) e -= cut;
+    }
+
+private:
+    StreamSize& out_;
+    encode::JobStream pending_;
+};
+
+// Index of the op that starts the `nth` (1-based) SHEET_BEGIN of `s`.
+std::size_t nth_sheet_begin(const encode::JobStream& s, int nth) {
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < s.op_ends.size(); ++i) {
+        const auto op = encode::decode_op(std::span(s.bytes).subspan(begin, s.op_ends[i] - begin));
+        if (op && op->first.code == encode::OpCode::sheet_begin && --nth == 0) return i;
+        begin = s.op_ends[i];
+    }
+    return s.op_ends.size();
+}
+
+}  // namespace
+
+Result<StreamSize> measure_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
+                                     std::size_t start_sheet) {
+    auto planner = plan::Planner::create(profile);
+    if (!planner) return std::unexpected(planner.error());
+    StreamSize out;
+    FrameCounter frames(out);
+    // The encoder carries one thing from sheet to sheet: the carriage position,
+    // where the last sheet with strikes left it. Each sheet is encoded after
+    // that sheet, and only its own ops are counted.
+    std::optional<plan::SheetPlan> before;
+    std::size_t passes = 0;
+    bool started = false;
+    const std::size_t sheets = document.sheet_count();
+    for (std::size_t s = 1; s <= sheets; ++s) {
+        auto sheet = planner->plan_sheet(document, s);
+        if (!sheet) return std::unexpected(sheet.error());
+        passes += sheet->passes.size();
+        if (passes > encode::kMaxJobPasses)
+            return fail("more than 65,535 passes in one job (" + std::to_string(passes) + " in the first " +
+                            std::to_string(s) + " of " + std::to_string(sheets) +
+                            " sheets); the controller counts at most 65,535",
+                        "plan");
+        ++out.sheets;
+        for (const auto& p : sheet->passes) out.strikes += p.strikes.size();
+        if (s >= start_sheet) {
+            plan::JobPlan window;
+            if (started && before) window.sheets.push_back(*before);
+            window.sheets.push_back(*sheet);
+            auto stream = encode::encode_job(window, 1, {});
+            if (!stream) return std::unexpected(stream.error());
+            const std::size_t from = started ? nth_sheet_begin(*stream, before ? 2 : 1) : 0;
+            frames.add(*stream, from, stream->op_ends.size() - 1);  // all but JOB_END
+            frames.close(false);
+            started = true;
+        }
+        bool strikes = false;
+        for (const auto& p : sheet->passes) strikes = strikes || !p.strikes.empty();
+        if (strikes) before = std::move(*sheet);
+    }
+    if (!started) {
+        // Nothing from start_sheet on: JOB_BEGIN, HOME and JOB_END alone.
+        plan::JobPlan empty;
+        auto stream = encode::encode_job(empty, 1, {});
+        if (!stream) return std::unexpected(stream.error());
+        frames.add(*stream, 0, stream->op_ends.size());
+    } else {
+        encode::JobStream end;
+        encode::Op job_end;
+        job_end.code = encode::OpCode::job_end;
+        encode::append_op(end.bytes, job_end);
+        end.op_ends.push_back(end.bytes.size());
+        frames.add(end, 0, 1);
+    }
+    frames.close(true);
+    return out;
 }
 
 }  // namespace tactus::spool

@@ -53,4 +53,19 @@ Result<link::JobOutcome> send_print_job(link::Link& link, const PrintJob& job, s
                                         const link::ProgressFn& progress, const link::CancelToken& cancel,
                                         std::uint16_t job_id = 0);
 
+// What sending a document from `start_sheet` would put on the line: the
+// figures encode_job and chunk_stream give for the whole job (`emboss
+// --dry-run`), made a sheet at a time, so a book costs the memory of two
+// sheets' plans, not of its whole plan and stream. Fails as encode_job does,
+// and as soon as the job passes the controller's 65,535 passes.
+struct StreamSize {
+    std::size_t stream_bytes = 0;  // job-stream bytes (DATA payloads)
+    std::size_t frames = 0;        // DATA frames of at most encode::kMaxPayload bytes
+    std::size_t line_bytes = 0;    // those frames on the line, headers and CRCs included
+    std::size_t sheets = 0;        // of the whole job
+    std::size_t strikes = 0;
+};
+Result<StreamSize> measure_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
+                                     std::size_t start_sheet = 1);
+
 }  // namespace tactus::spool

@@ -15,8 +15,11 @@
 
 #include "common/file_io.hpp"
 #include "controller/sim_controller.hpp"
+#include "encode/frame.hpp"
 #include "encode/messages.hpp"
+#include "encode/stream.hpp"
 #include "plan/plan_file.hpp"
+#include "plan/planner.hpp"
 #include "profile/controller_config.hpp"
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
@@ -117,6 +120,35 @@ TEST(PrintJob, AJobTooLongForTheControllerIsRefusedBeforeItIsAllPlanned) {
     EXPECT_EQ(job.error().where, kPassesWhere);
     EXPECT_NE(job.error().message.find("65,535"), std::string::npos) << job.error().message;
     EXPECT_NE(job.error().message.find("in the first 1 of 20 sheets"), std::string::npos) << job.error().message;
+}
+
+// `emboss --dry-run` measures the job a sheet at a time; its figures are the
+// whole job's, encoded and cut into frames at once, from every start sheet.
+TEST(PrintJob, MeasuringASheetAtATimeGivesTheWholeJobsFigures) {
+    for (const std::size_t pages : {1U, 2U, 7U, 12U}) {
+        const auto doc = test::make_document(pages, true);
+        const auto prof = profile::default_profile();
+        auto whole = plan::plan_job(doc, prof);
+        ASSERT_TRUE(whole) << whole.error().to_string();
+        for (std::size_t start = 1; start <= doc.sheet_count() + 1; ++start) {
+            SCOPED_TRACE(std::to_string(pages) + " pages from sheet " + std::to_string(start));
+            std::size_t first = 0;
+            for (const auto& sh : whole->sheets)
+                if (sh.index < start) first += sh.passes.size();
+            const auto stream = encode::encode_job(*whole, 1, {first, 0, false});
+            ASSERT_TRUE(stream);
+            const auto chunks = encode::chunk_stream(*stream, encode::kMaxPayload);
+            std::size_t line = 0;
+            for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead;
+            const auto m = measure_print_job(doc, prof, start);
+            ASSERT_TRUE(m) << m.error().to_string();
+            EXPECT_EQ(m->stream_bytes, stream->bytes.size());
+            EXPECT_EQ(m->frames, chunks.size());
+            EXPECT_EQ(m->line_bytes, line);
+            EXPECT_EQ(m->sheets, whole->sheets.size());
+            EXPECT_EQ(m->strikes, whole->strikes);
+        }
+    }
 }
 
 // The runner keeps its link open between jobs. When the printer's profile is
