@@ -7,6 +7,7 @@ build=${BUILD:-build/default}
 data=${BENCH_DATA:-$build/bench-data}
 mkdir -p "$data"
 [ -s "$data/kjv.txt" ] || bible -f gen1:1-rev22:21 > "$data/kjv.txt"
+[ -s "$data/genesis.txt" ] || bible -f gen1:1-gen50:26 > "$data/genesis.txt"
 run() { echo "== $1"; shift; "$@"; }
 run "layout: KJV, Tactus pipeline vs lou_translate" "$build/bench/layout/bench_layout" "$data/kjv.txt"
 run "plan + estimate: KJV" "$build/bench/plan/bench_plan" "$data/kjv.txt"
@@ -14,6 +15,7 @@ run "single-line text: 1, 4, 16 MB" "$build/bench/single_line/bench_single_line"
 run "import: 100 MiB text" "$build/bench/import/bench_import"
 run "link: efficiency on the pty simulator" "$build/bench/link/bench_link"
 run "spool: 10,000 jobs" "$build/bench/spool/bench_spool"
+run "emboss --dry-run: peak memory against pages (Genesis, 1x and 5x)" bench/dry_run/dry_run_memory.sh "$data/genesis.txt" 1 5
 if [ -x "$build/bench/gui/bench_gui" ]; then
   QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages" "$build/bench/gui/bench_gui" "$data/kjv.txt"
 fi

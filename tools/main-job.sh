@@ -13,7 +13,7 @@ mkdir -p out
 "$cli" layout --interpoint --summary resources/samples/welcome.md
 # Emboss it on the built-in simulated controller (exit 0 only when the controller
 # has confirmed executing every pass); the last lines are the summary.
-"$cli" emboss --device sim resources/samples/welcome.md | tail -n 2
+"$cli" emboss --device "sim?speed=max" resources/samples/welcome.md | tail -n 2
 
 # The same host on the real controller code: the reference firmware (firmware/,
 # its emulator build) in the s51 emulator behind a pty. The host finds protocol 3

@@ -6,22 +6,22 @@
 #include <csignal>
 #include <iostream>
 
+#include <optional>
+
 #include "command.hpp"
 #include "conflict_warnings.hpp"
 #include "emboss_queue.hpp"
 #include "emboss_remote.hpp"
-#include "ipp/queue_uri.hpp"
-#include "profile/controller_config.hpp"
 #include "encode/frame.hpp"
-#include "plan/plan_file.hpp"
 #include "encode/stream.hpp"
+#include "encode/stream_v3.hpp"
+#include "ipp/queue_uri.hpp"
 #include "layout_args.hpp"
 #include "link/link.hpp"
-
-#include "plan/planner.hpp"
-#include "encode/stream_v3.hpp"
+#include "plan/plan_file.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
+#include "spool/print_job.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -46,43 +46,74 @@ struct EmbossArgs {
     EmbossQueueArgs queue;
 };
 
-struct Prepared {
-    plan::JobPlan plan;
-    machine::ControllerConfig config;
-    std::optional<machine::FirmwareTables> tables;
-    machine::StrikeTiming timing;
-};
+machine::FirmwareTables firmware_tables(const EmbossArgs& a) {
+    if (a.firmware_tables.empty())
+        throw CommandFailed(exit_usage,
+                            "emboss: the controller is the reference firmware (protocol 3): give the ramp "
+                            "tables it was built with, --firmware-tables firmware/build/ramp.json");
+    return require(profile::load_firmware_tables(a.firmware_tables));
+}
 
-// Plans for the controller: with the firmware's ramp tables when it is the
-// reference firmware (protocol v3), so the plan's moves are the ones it makes.
-Prepared prepare(const EmbossArgs& a, bool for_firmware) {
-    Prepared out;
-    if (a.plan_file && !for_firmware) {
-        out.plan = require(plan::load_plan(a.layout.file));
-        return out;
+// The print job, from a saved plan or from the document; the controller is
+// configured from the profile the plan was made with, either way.
+spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false) {
+    if (a.plan_file && for_firmware)
+        throw CommandFailed(exit_usage, "emboss: a saved plan is for protocol 2; the reference firmware (protocol 3) "
+                                        "is planned for with its own tables: give the document, not --plan");
+    if (a.plan_file) {
+        auto file = require(plan::load_plan(a.layout.file));
+        std::optional<profile::PrinterProfile> printer;
+        if (!a.profile.empty()) printer = load_profile_arg(a.profile);
+        return require(spool::make_print_job(std::move(file), a.device, printer ? &*printer : nullptr));
     }
     const auto profile = load_profile_arg(a.profile);
-    if (for_firmware) {
-        if (a.firmware_tables.empty())
-            throw CommandFailed(exit_usage,
-                                "emboss: the controller is the reference firmware (protocol 3): give the ramp "
-                                "tables it was built with, --firmware-tables firmware/build/ramp.json");
-        out.tables = require(profile::load_firmware_tables(a.firmware_tables));
-        out.timing = profile::strike_timing(profile);
-        out.config = profile::controller_config(profile);
-    }
-    if (a.plan_file) {
-        out.plan = require(plan::load_plan(a.layout.file));
-        return out;
-    }
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, profile);
-    plan::PlanOptions po;
-    po.firmware = out.tables;
-    out.plan = require(plan::plan_job(doc, profile, po));
-    out.config = profile::controller_config(profile);
-    return out;
+    if (for_firmware) return require(spool::make_firmware_print_job(doc, profile, firmware_tables(a), a.device));
+    return require(spool::make_print_job(doc, profile, a.device));
+}
+
+// What the job would put on the line. A document is measured a sheet at a
+// time (a book in constant memory); a saved plan is already whole.
+spool::StreamSize dry_run(const EmbossArgs& a) {
+    if (!a.firmware_tables.empty()) {
+        // The v3 stream for the reference firmware (its payload: 31 bytes of
+        // ops and the 2-byte check).
+        const auto job = prepare(a, true);
+        std::size_t first = 0;
+        for (const auto& s : job.plan.sheets) {
+            if (s.index >= a.start_sheet) break;
+            first += s.passes.size();
+        }
+        const auto stream = require(encode::encode_job_v3(job.plan, *job.firmware, job.timing, 1, {first, 0, false}));
+        spool::StreamSize m{.stream_bytes = stream.bytes.size(), .sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
+        for (const auto& [b, e] : encode::chunk_stream_v3(stream, kFirmwareMaxOps)) {
+            ++m.frames;
+            m.line_bytes += e - b + encode::kFrameOverhead + 2;
+        }
+        return m;
+    }
+    if (!a.plan_file) {
+        const auto profile = load_profile_arg(a.profile);
+        const auto options = a.layout.pipeline_options(profile);
+        const auto doc = lay_out_for_cli(a.layout, options);
+        warn_about_conflicts(doc, profile);
+        return require(spool::measure_print_job(doc, profile, a.start_sheet));
+    }
+    const auto job = prepare(a);
+    std::size_t first = 0;
+    for (const auto& s : job.plan.sheets) {
+        if (s.index >= a.start_sheet) break;
+        first += s.passes.size();
+    }
+    const auto stream = require(encode::encode_job(job.plan, 1, {first, 0, false}));
+    spool::StreamSize m{.stream_bytes = stream.bytes.size(), .sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
+    for (const auto& [b, e] : encode::chunk_stream(stream, encode::kMaxPayload)) {
+        ++m.frames;
+        m.line_bytes += e - b + encode::kFrameOverhead;
+    }
+    return m;
 }
 
 void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e) {
@@ -98,31 +129,17 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     if (ipp::is_queue_uri(a.device))
         return emboss_remote(a.layout, a.device, cmd, a.queue.copies, a.queue.title);
     if (a.queue.enabled) {
+        if (a.plan_file)
+            throw CommandFailed(exit_usage, "emboss: --queue stores the document, laid out again with the queue "
+                                            "printer's profile; a saved plan cannot be queued (leave out --plan)");
         EmbossQueueArgs q = a.queue;
         q.device = a.device;  // --device with --queue: the queue printer on that device
         return enqueue_emboss(a.layout, q);
     }
     if (a.dry_run) {
-        // With --firmware-tables: the v3 stream for the reference firmware
-        // (its payload: 31 bytes of ops and the 2-byte check).
-        const bool v3 = !a.firmware_tables.empty();
-        const auto prepared = prepare(a, v3);
-        const auto& plan = prepared.plan;
-        std::size_t first = 0;
-        for (const auto& s : plan.sheets) {
-            if (s.index >= a.start_sheet) break;
-            first += s.passes.size();
-        }
-        const auto stream = v3 ? require(encode::encode_job_v3(plan, *prepared.tables, prepared.timing, 1,
-                                                               {first, 0, false}))
-                               : require(encode::encode_job(plan, 1, {first, 0, false}));
-        const auto chunks = v3 ? encode::chunk_stream_v3(stream, kFirmwareMaxOps)
-                               : encode::chunk_stream(stream, encode::kMaxPayload);
-        std::size_t line = 0;
-        for (const auto& [b, e] : chunks) line += e - b + encode::kFrameOverhead + (v3 ? 2 : 0);
-        std::cout << stream.bytes.size() << " bytes of job stream in " << chunks.size()
-                  << " frames (" << line << " bytes on the line) for " << plan.sheets.size()
-                  << " sheets, " << plan.strikes << " strikes\n";
+        const auto m = dry_run(a);
+        std::cout << m.stream_bytes << " bytes of job stream in " << m.frames << " frames (" << m.line_bytes
+                  << " bytes on the line) for " << m.sheets << " sheets, " << m.strikes << " strikes\n";
         return;
     }
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
@@ -132,11 +149,7 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     // HELLO_REPLY says which controller answered: the reference firmware
     // (protocol 3) is planned for with its own tables.
     require(link.hello());
-    const bool firmware = link.protocol() == encode::kProtocolV3;
-    const auto prepared = prepare(a, firmware);
-    const auto& plan = prepared.plan;
-    if (firmware) require(link.use_firmware_tables(*prepared.tables, prepared.timing));
-    require(link.configure(prepared.config));
+    const auto job = prepare(a, link.protocol() == encode::kProtocolV3);
 
     const bool tty = isatty(STDERR_FILENO) != 0;
     link::CancelToken cancel;
@@ -144,8 +157,8 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     bool bar_drawn = false;
-    auto out = link.send_job(
-        plan, a.start_sheet,
+    auto out = spool::send_print_job(
+        link, job, a.start_sheet,
         [&](const link::Progress& p) {
             if (p.executed) {
                 if (tty) {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli plan: where the hammers stop, how long the job takes, and how much
 // the head still rings when it strikes. Sheets are planned and printed one at a
-// time, so a whole book needs no more memory than one sheet.
+// time, so a whole book needs no more memory than one sheet. `--json` prints a
+// plan file (plan/plan_file.hpp) that `emboss --plan` accepts, with the
+// analysis added to each pass and sheet and at the end.
 #include <cstdio>
 #include <iostream>
 
@@ -9,9 +11,11 @@
 
 #include "command.hpp"
 #include "conflict_warnings.hpp"
+#include "encode/messages.hpp"
 #include "encode/stream.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
+#include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
 #include "profile_arg.hpp"
 
@@ -31,18 +35,15 @@ struct PlanArgs {
     bool json = false;
 };
 
-nlohmann::json pass_json(const plan::Pass& p, std::size_t bytes) {
+// What `plan --json` adds to a pass of the plan file.
+nlohmann::json pass_analysis(const plan::Pass& p, std::size_t bytes) {
     nlohmann::json strikes = nlohmann::json::array();
     double worst = 0;
     for (const auto& s : p.strikes) {
         strikes.push_back(s.paper_x_mm);
         worst = std::max(worst, s.worst_residual_um);
     }
-    return {{"side", p.side == plan::Side::front ? "front" : "back"},
-            {"y_mm", p.y_mm},
-            {"direction", p.direction > 0 ? "+" : "-"},
-            {"strikes_mm", strikes},
-            {"duration_s", p.duration_s},
+    return {{"strikes_mm", strikes},
             {"lower_bound_s", p.lower_bound_s},
             {"feed_steps", p.feed.steps},
             {"segments", p.segments},
@@ -75,31 +76,32 @@ void run_plan(const PlanArgs& a) {
     warn_about_conflicts(doc, prof);
     auto planner = require(plan::Planner::create(prof));
     auto& out = std::cout;
-    if (a.json) out << "{\"profile\":" << nlohmann::json(prof.name).dump() << ",\"sheets\":[";
+    if (a.json) {
+        // The plan file's head, then its sheets one at a time.
+        auto head = plan::plan_file_head(prof, encode::kProtocolVersion).dump();
+        head.pop_back();  // the closing brace: the sheets follow
+        out << head << ",\"sheets\":[";
+    }
     std::size_t passes = 0;
     std::size_t total_bytes = 0;
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
         auto sheet = planner.plan_sheet(doc, s);
         if (!sheet) fail_with(exit_bad_input, located(sheet.error(), a.layout.file));
         passes += sheet->passes.size();
-        nlohmann::json pj = nlohmann::json::array();
-        for (const auto& p : sheet->passes) {
-            const std::size_t bytes = schedule_bytes(p);
+        nlohmann::json sj = a.json ? plan::sheet_to_json(*sheet) : nlohmann::json{};
+        for (std::size_t i = 0; i < sheet->passes.size(); ++i) {
+            const std::size_t bytes = schedule_bytes(sheet->passes[i]);
             total_bytes += bytes;
-            if (a.json) pj.push_back(pass_json(p, bytes));
+            if (a.json) sj["passes"][i].update(pass_analysis(sheet->passes[i], bytes));
         }
         if (!a.json) continue;
-        out << (s > 1 ? "," : "")
-            << nlohmann::json{{"index", sheet->index},
-                              {"duration_s", sheet->duration_s},
-                              {"lower_bound_s", sheet->lower_bound_s},
-                              {"passes", pj}}
-                   .dump();
+        sj["lower_bound_s"] = sheet->lower_bound_s;
+        out << (s > 1 ? "," : "") << sj.dump();
     }
     const auto& t = planner.totals();
     const double ratio = t.lower_bound_s > 0 ? t.duration_s / t.lower_bound_s : 1.0;
     if (a.json) {
-        out << "],\"totals\":"
+        out << "],\"duration_s\":" << nlohmann::json(t.duration_s).dump() << ",\"totals\":"
             << nlohmann::json{{"duration_s", t.duration_s},
                               {"lower_bound_s", t.lower_bound_s},
                               {"plan_over_lower_bound", ratio},

@@ -132,6 +132,21 @@ void run_sim(const SimArgs& a) {
         if (a.mute_after_pass > 0) watch(c);
     });
     if (!r) fail_with(r.error());
+    // What the host configured, so a test (or a technician) can check the
+    // controller got the profile the job was planned with.
+    if (ctl.configured()) {
+        const auto& c = ctl.config();
+        std::cerr << "sim: configured " << nlohmann::json{{"carriage_steps_per_m", c.carriage_steps_per_m},
+                                                          {"feed_steps_per_m", c.feed_steps_per_m},
+                                                          {"carriage_travel_steps", c.carriage_travel_steps},
+                                                          {"home_interval_ticks", c.home_interval_ticks},
+                                                          {"hammer_ticks", c.hammer_ticks},
+                                                          {"keepalive_ms", c.keepalive_ms}}
+                                                .dump()
+                  << '\n';
+    } else {
+        std::cerr << "sim: never configured\n";
+    }
     std::cerr << "sim: " << ctl.strike_log().size() << " strikes, " << ctl.frames_accepted()
               << " frames accepted, " << ctl.duplicates() << " duplicates ignored, "
               << ctl.crc_errors() << " corrupt frames dropped\n";

@@ -12,6 +12,7 @@
 #include "pipeline/pipeline.hpp"
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
+#include "spool/print_job.hpp"
 #include "spool/snapshot.hpp"
 #include "spool_args.hpp"
 
@@ -122,6 +123,10 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     const auto options = layout.pipeline_options(*profile);
     const auto doc = lay_out_for_cli(layout, options);
     const auto part = require(spool::select_pages(doc, first, last));
+    // The print job the runner will make, made once now: a job the printer
+    // cannot be sent (more passes than the controller counts, a page the
+    // profile cannot plan) is refused here, not when it runs.
+    (void)require(spool::make_print_job(part, *profile, record.device, a.copies));
     spool::JobSubmission job;
     job.printer = printer;
     job.title = a.title.empty() ? std::filesystem::path(layout.file).filename().string() : a.title;

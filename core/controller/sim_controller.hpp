@@ -107,6 +107,8 @@ public:
     [[nodiscard]] const std::vector<Wait>& waits() const { return waits_; }
     [[nodiscard]] std::size_t resets() const { return resets_; }
     [[nodiscard]] const machine::ControllerConfig& config() const { return config_; }
+    // A CONFIGURE has been received since the last reset.
+    [[nodiscard]] bool configured() const { return configured_; }
 
 private:
     void on_frame(const encode::Frame& f, double now);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <thread>
 
 namespace tactus::controller {
 
@@ -102,7 +103,10 @@ Result<std::size_t> SimTransport::read(std::span<std::uint8_t> buffer,
             buffer[n++] = to_host_.front().byte;
             to_host_.pop_front();
         }
-        if (n > 0) return n;
+        if (n > 0) {
+            pace();
+            return n;
+        }
         const double inf = std::numeric_limits<double>::infinity();
         double next = to_host_.empty() ? inf : to_host_.front().at;
         if (!to_controller_.empty()) next = std::min(next, to_controller_.front().at);
@@ -113,6 +117,7 @@ Result<std::size_t> SimTransport::read(std::span<std::uint8_t> buffer,
             run_until(deadline);
             now_ = deadline;
             if (!to_host_.empty() && to_host_.front().at <= now_) continue;
+            pace();
             return std::size_t{0};
         }
         next = std::max(next, now_);
@@ -131,6 +136,13 @@ Result<void> SimTransport::reopen() {
 void SimTransport::sleep(std::chrono::microseconds duration) {
     now_ += std::chrono::duration<double>(duration).count();
     run_until(now_);
+    pace();
+}
+
+void SimTransport::pace() const {
+    if (options_.speed <= 0) return;
+    std::this_thread::sleep_until(wall_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                    std::chrono::duration<double>(now_ / options_.speed)));
 }
 
 }  // namespace tactus::controller

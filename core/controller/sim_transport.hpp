@@ -5,6 +5,7 @@
 // so a whole job runs in milliseconds of wall time yet every byte, timeout and
 // step happens at the moment it would on the real machine. Line faults (lost,
 // flipped and duplicated bytes, a pulled cable) are injected here.
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -28,6 +29,11 @@ struct SimLineOptions {
     double baud = 115200;
     int bits_per_byte = 10;  // 8N1
     LineNoise noise;
+    // How fast simulated time may run against the wall clock: 0 (the default
+    // for test rigs) as fast as the host can go; N > 0 at most N times real
+    // time, so a technician sees the job take as long as on the machine (the
+    // `sim` device's default is 1: docs/transports.md).
+    double speed = 0;
 };
 
 class SimTransport final : public transport::ByteStream {
@@ -62,6 +68,9 @@ private:
         std::uint8_t byte;
     };
     void run_until(double t);
+    // Waits (wall time) until the simulated clock is no longer ahead of the
+    // wall clock times `speed`.
+    void pace() const;
     void send_line(std::deque<Timed>& line, double& line_free, double from,
                    std::span<const std::uint8_t> bytes);
     void collect_output(double at);
@@ -73,6 +82,7 @@ private:
     SimLineOptions options_;
     std::mt19937_64 rng_;
     double now_ = 0;
+    std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
     double tx_free_ = 0, rx_free_ = 0;
     std::deque<Timed> to_controller_, to_host_;
     std::pair<double, double> unplugged_{-1, -1}, silent_{-1, -1};

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/file_io.hpp"
+#include "profile/profile_json.hpp"
 
 namespace tactus::plan {
 namespace {
@@ -15,7 +16,7 @@ using nlohmann::json;
 json move_json(const motion::StepMove& m) {
     json segs = json::array();
     for (const auto& s : m.segments) segs.push_back({s.interval_q16, s.count, s.add_q16});
-    return {{"steps", m.steps}, {"segments", segs}, {"duration_s", m.duration_s}};
+    return {{"steps", m.steps}, {"segments", segs}, {"duration_s", m.duration_s}, {"settle_ticks", m.settle_ticks}};
 }
 
 // Typed reads with the JSON path in the error.
@@ -56,6 +57,13 @@ Result<motion::StepMove> move_from(const json& j, const std::string& where) {
     if (!steps) return std::unexpected(steps.error());
     m.steps = *steps;
     if (auto d = get<double>(j, "duration_s", where)) m.duration_s = *d;
+    // The encoder sends it as the wait before the strike: absent is 0, a
+    // wrong type is an error, never a silent 0.
+    if (j.contains("settle_ticks")) {
+        auto settle = get<std::uint32_t>(j, "settle_ticks", where);
+        if (!settle) return std::unexpected(settle.error());
+        m.settle_ticks = *settle;
+    }
     if (!j.contains("segments") || !j["segments"].is_array())
         return fail("missing segment list", where + ".segments");
     for (std::size_t i = 0; i < j["segments"].size(); ++i) {
@@ -75,40 +83,65 @@ Result<motion::StepMove> move_from(const json& j, const std::string& where) {
 
 }  // namespace
 
-json plan_to_json(const plan::JobPlan& plan) {
-    json sheets = json::array();
-    for (const auto& sh : plan.sheets) {
-        json passes = json::array();
-        for (const auto& p : sh.passes) {
-            json strikes = json::array();
-            for (std::size_t i = 0; i < p.strikes.size(); ++i) {
-                const auto& s = p.strikes[i];
-                strikes.push_back({{"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
-                                   {"side", s.side == plan::Side::front ? "front" : "back"},
-                                   {"x_mm", s.x_mm},
-                                   {"y_mm", s.y_mm},
-                                   {"carriage_step", s.carriage_step},
-                                   {"time_s", s.time_s},
-                                   {"move", move_json(p.moves[i])}});
-            }
-            passes.push_back({{"side", p.side == plan::Side::front ? "front" : "back"},
-                              {"y_mm", p.y_mm},
-                              {"feed_step", p.feed_step},
-                              {"direction", p.direction},
-                              {"feed", move_json(p.feed)},
-                              {"strikes", strikes},
-                              {"duration_s", p.duration_s}});
-        }
-        sheets.push_back({{"index", sh.index}, {"passes", passes}, {"duration_s", sh.duration_s}});
-    }
-    return {{"tactus_plan", 1}, {"duration_s", plan.duration_s}, {"sheets", sheets}};
+json plan_file_head(const profile::PrinterProfile& profile, int protocol) {
+    return {{"tactus_plan", kPlanFileFormat}, {"protocol", protocol}, {"profile", profile::to_json(profile)}};
 }
 
-Result<plan::JobPlan> plan_from_json(const json& j) {
+json sheet_to_json(const SheetPlan& sh) {
+    json passes = json::array();
+    for (const auto& p : sh.passes) {
+        json strikes = json::array();
+        for (std::size_t i = 0; i < p.strikes.size(); ++i) {
+            const auto& s = p.strikes[i];
+            strikes.push_back({{"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
+                               {"side", s.side == plan::Side::front ? "front" : "back"},
+                               {"x_mm", s.x_mm},
+                               {"y_mm", s.y_mm},
+                               {"carriage_step", s.carriage_step},
+                               {"time_s", s.time_s},
+                               {"move", move_json(p.moves[i])}});
+        }
+        passes.push_back({{"side", p.side == plan::Side::front ? "front" : "back"},
+                          {"y_mm", p.y_mm},
+                          {"feed_step", p.feed_step},
+                          {"direction", p.direction},
+                          {"feed", move_json(p.feed)},
+                          {"strikes", strikes},
+                          {"duration_s", p.duration_s}});
+    }
+    return {{"index", sh.index}, {"passes", passes}, {"duration_s", sh.duration_s}};
+}
+
+json plan_to_json(const PlanFile& file) {
+    json out = plan_file_head(file.profile, file.protocol);
+    json sheets = json::array();
+    for (const auto& sh : file.plan.sheets) sheets.push_back(sheet_to_json(sh));
+    out["duration_s"] = file.plan.duration_s;
+    out["sheets"] = std::move(sheets);
+    return out;
+}
+
+Result<PlanFile> plan_from_json(const json& j) {
     if (!j.is_object() || !j.contains("tactus_plan"))
-        return fail("not a Tactus plan (no \"tactus_plan\" field)", "plan");
-    if (j["tactus_plan"] != 1) return fail("unsupported plan version", "plan.tactus_plan");
-    plan::JobPlan out;
+        return fail("not a Tactus plan (no \"tactus_plan\" field; make one with `tactus-cli plan --json`)",
+                    "plan");
+    if (j["tactus_plan"] == 1)
+        return fail("plan file format 1 records neither the profile nor the protocol it was made for (nor "
+                    "the settles before strikes); make it again with `tactus-cli plan --json`",
+                    "plan.tactus_plan");
+    if (j["tactus_plan"] != kPlanFileFormat)
+        return fail("unsupported plan file format " + j["tactus_plan"].dump() + " (this Tactus reads " +
+                        std::to_string(kPlanFileFormat) + ")",
+                    "plan.tactus_plan");
+    PlanFile file;
+    auto protocol = get<std::uint8_t>(j, "protocol", "plan");
+    if (!protocol) return std::unexpected(protocol.error());
+    file.protocol = *protocol;
+    if (!j.contains("profile")) return fail("missing field", "plan.profile");
+    auto prof = profile::from_json(j["profile"]);
+    if (!prof) return std::unexpected(located(prof.error(), "plan.profile"));
+    file.profile = std::move(*prof);
+    plan::JobPlan& out = file.plan;
     if (auto d = get<double>(j, "duration_s", "plan")) out.duration_s = *d;
     if (!j.contains("sheets") || !j["sheets"].is_array()) return fail("missing sheets", "plan.sheets");
     for (std::size_t si = 0; si < j["sheets"].size(); ++si) {
@@ -168,10 +201,10 @@ Result<plan::JobPlan> plan_from_json(const json& j) {
         }
         out.sheets.push_back(std::move(sheet));
     }
-    return out;
+    return file;
 }
 
-Result<plan::JobPlan> load_plan(const std::filesystem::path& path) {
+Result<PlanFile> load_plan(const std::filesystem::path& path) {
     auto text = read_file(path);
     if (!text) return std::unexpected(text.error());
     const auto j = json::parse(*text, nullptr, false);
@@ -179,6 +212,16 @@ Result<plan::JobPlan> load_plan(const std::filesystem::path& path) {
     auto p = plan_from_json(j);
     if (!p) return std::unexpected(located(p.error(), path.string()));
     return p;
+}
+
+}  // namespace tactus::plan
+
+namespace tactus::plan {
+
+Result<void> save_plan(const PlanFile& file, const std::filesystem::path& path) {
+    auto r = write_file_atomic(path, plan_to_json(file).dump() + "\n");
+    if (!r) return std::unexpected(r.error());
+    return {};
 }
 
 }  // namespace tactus::plan

@@ -276,9 +276,16 @@ Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::Printe
     auto planner = Planner::create(p, o);
     if (!planner) return std::unexpected(planner.error());
     std::vector<SheetPlan> sheets;
+    std::size_t passes = 0;
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
         auto sheet = planner->plan_sheet(doc, s);
         if (!sheet) return std::unexpected(sheet.error());
+        passes += sheet->passes.size();
+        if (o.max_passes && passes > o.max_passes)
+            return fail(std::to_string(passes) + " passes in the first " + std::to_string(s) + " of " +
+                            std::to_string(doc.sheet_count()) + " sheets, over the limit of " +
+                            std::to_string(o.max_passes),
+                        kTooManyPassesWhere);
         sheets.push_back(std::move(*sheet));
     }
     JobPlan job = planner->totals();

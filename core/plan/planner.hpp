@@ -29,7 +29,12 @@ struct PlanOptions {
     // plan's step times are then the firmware's. Residuals are not estimated
     // for table moves (they stay 0).
     std::optional<machine::FirmwareTables> firmware;
+    // plan_job stops, failing with where == kTooManyPassesWhere, as soon as
+    // the plan has more passes than this (0: no limit), so a job that cannot
+    // be sent costs the memory of this many passes, not of the whole book.
+    std::size_t max_passes = 0;
 };
+inline constexpr const char* kTooManyPassesWhere = "passes";
 
 class Planner {
 public:

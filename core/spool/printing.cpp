@@ -39,18 +39,20 @@ Result<std::size_t> sheet_of_page(const layout::PagedDocument& doc, std::size_t 
 
 Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
                                   std::size_t copies) {
-    auto one = plan::plan_job(doc, profile);
-    if (!one) return std::unexpected(one.error());
-    // Refused before the copies are made: a job the controller cannot count
-    // would otherwise cost the memory of all of them first.
-    std::size_t passes = 0;
-    for (const auto& sheet : one->sheets) passes += sheet.passes.size();
-    if (passes * std::max<std::size_t>(copies, 1) > encode::kMaxJobPasses)
-        return fail("the job has " + std::to_string(passes * std::max<std::size_t>(copies, 1)) +
-                        " passes; the controller counts at most 65,535 in one job. Queue it in parts "
+    copies = std::max<std::size_t>(copies, 1);
+    // Refused as soon as the plan is known to be too long, before the copies
+    // are made: planning all of a 100,000-page book first took gigabytes.
+    plan::PlanOptions options;
+    options.max_passes = encode::kMaxJobPasses / copies;
+    auto one = plan::plan_job(doc, profile, options);
+    if (!one && one.error().where == plan::kTooManyPassesWhere)
+        return fail("the job has more than 65,535 passes (" + one.error().message +
+                        (copies > 1 ? " of one copy, " + std::to_string(copies) + " copies" : std::string{}) +
+                        "); the controller counts at most 65,535 in one job. Queue it in parts "
                         "(--pages, or fewer copies at a time)",
                     kPassesWhere);
-    if (copies <= 1) return std::move(*one);
+    if (!one) return std::unexpected(one.error());
+    if (copies == 1) return std::move(*one);
     return repeat_plan(*one, copies);
 }
 

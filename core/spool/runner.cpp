@@ -9,6 +9,7 @@
 #include "encode/messages.hpp"
 #include "link/fault_words.hpp"
 #include "profile/profile_json.hpp"
+#include "spool/print_job.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner_token.hpp"
 #include "spool/settlement.hpp"
@@ -42,6 +43,12 @@ Result<void> spoil_interrupted(Spool& s, JobId id, std::size_t sheet, const std:
     return s.spoil_sheet(id, sheet,
                          sheet_word(sheet) + " was in the printer when " + why +
                              ": discard it (it may be blank); it is embossed again in full");
+}
+
+// The wait before the nth attempt (1-based): --retry-ms, doubling, capped.
+double backoff_ms(const RunnerOptions& o, int attempt) {
+    return std::min<double>(static_cast<double>(o.max_backoff.count()),
+                            static_cast<double>(o.retry_backoff.count()) * std::pow(2.0, std::min(attempt, 40) - 1));
 }
 
 }  // namespace
@@ -103,9 +110,8 @@ Result<void> Runner::connect() {
     auto link = connect_(printer_);
     if (!link) return std::unexpected(link.error());
     if (auto h = link->hello(); !h) return std::unexpected(h.error());
-    auto profile = profile::parse_profile(printer_.profile_json);
-    if (!profile) return std::unexpected(located(profile.error(), "printer " + printer_.name));
-    if (auto c = link->configure(profile::controller_config(*profile)); !c) return c;
+    // No CONFIGURE here: each job sends its own, from the profile it was
+    // planned with (run_job), after the open runs are settled.
     link_.emplace(std::move(*link));
     (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
     if (auto r = settle_open_runs(); !r) {
@@ -149,14 +155,22 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
                                     "fault", why));
         return RunEnd::paused;
     }
-    const auto backoff = std::min<double>(
-        static_cast<double>(options_.max_backoff.count()),
-        static_cast<double>(options_.retry_backoff.count()) * std::pow(2.0, attempt - 1));
+    const auto backoff = backoff_ms(options_, attempt);
     SPOOL_TRY(spool_->requeue(job.id,
                               "retry " + std::to_string(attempt) + " of " +
                                   std::to_string(options_.max_retries) + " in " +
                                   std::to_string(static_cast<int>(backoff / 1000)) + " s: " + why,
                               now_seconds() + backoff / 1000.0, true));
+    return RunEnd::requeued;
+}
+
+Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string& why) {
+    link_.reset();
+    const auto backoff = backoff_ms(options_, ++unreachable_);
+    SPOOL_TRY(spool_->requeue(job.id,
+                              "waiting for printer '" + printer_.name + "': " + why + " (trying again in " +
+                                  std::to_string(static_cast<int>(backoff / 1000)) + " s)",
+                              now_seconds() + backoff / 1000.0, false));
     return RunEnd::requeued;
 }
 
@@ -179,9 +193,10 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    auto plan = plan_copies(*doc, *profile, job.copies);
-    if (!plan && plan.error().where == kPassesWhere) {
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, plan.error().message, "failed", plan.error().message));
+    auto print = make_print_job(*doc, *profile, printer.device, job.copies);
+    auto* plan = print ? &print->plan : nullptr;
+    if (!print && print.error().where == kPassesWhere) {
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
         return RunEnd::failed;
     }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
@@ -189,7 +204,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                          "''s current profile: " +
                          (plan ? "it plans to " + std::to_string(plan->sheets.size()) +
                                      " sheets, the job has " + std::to_string(job.total_sheets())
-                               : plan.error().to_string()) +
+                               : print.error().to_string()) +
                          "; the job is kept (restore the profile or lay the document out again)";
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
@@ -204,8 +219,12 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     // --- the printer: connect, which settles whatever an earlier run left
     // behind with the controller's count, before the plan shape is replaced
     if (!link_) {
-        if (auto c = connect(); !c) return transient_failure(job, c.error().to_string());
+        if (auto c = connect(); !c) return wait_for_printer(job, c.error().to_string());
+        unreachable_ = 0;
     }
+    // The controller gets the configuration of the profile this job was just
+    // planned with (the printer's profile may have changed since the link opened).
+    if (auto c = link_->configure(print->config); !c) return transient_failure(job, c.error().to_string());
     SPOOL_TRY(s.set_sheet_passes(job.id, passes));
 
     // --- where to start: the first unfinished sheet, or the operator's choice
@@ -331,7 +350,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         }
     };
 
-    auto outcome = link.send_job(*plan, start, on_progress, cancel, link_job);
+    auto outcome = link.send_job(print->plan, start, on_progress, cancel, link_job);
     watching = false;
     watcher.join();
     if (db_error) {

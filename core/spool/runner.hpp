@@ -25,6 +25,8 @@ namespace tactus::spool {
 struct RunnerOptions {
     // Transient failures (device gone, link errors) before the job is paused
     // for the operator instead of retried.
+    // (A printer that cannot be reached at all is not a job failure: its
+    // jobs wait in the queue, however long, with the same back-off.)
     int max_retries = 5;
     std::chrono::milliseconds retry_backoff{2000};  // doubles per retry
     std::chrono::milliseconds max_backoff{60000};
@@ -69,6 +71,10 @@ private:
     Result<void> connect();
     Result<void> settle_open_runs();
     Result<RunEnd> transient_failure(const JobRecord& job, const std::string& why);
+    // The printer cannot be reached (not there, busy, switched off): the job
+    // waits in the queue as it would for a busy printer, however long that
+    // takes, trying again with back-off; it is not a fault of the job.
+    Result<RunEnd> wait_for_printer(const JobRecord& job, const std::string& why);
 
     std::filesystem::path db_path_;
     std::string printer_name_;
@@ -79,6 +85,7 @@ private:
     PrinterRecord printer_;
     std::optional<link::Link> link_;
     std::uint16_t controller_job_ = 0;  // the job id the controller last reported
+    int unreachable_ = 0;               // connection attempts failed in a row
 };
 
 }  // namespace tactus::spool

@@ -19,6 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto p = plan::plan_from_json(j);
     if (!p) return 0;
     auto again = plan::plan_from_json(plan::plan_to_json(*p));
-    if (!again || again->sheets.size() != p->sheets.size() || again->strikes != p->strikes) std::abort();
+    if (!again || again->plan.sheets.size() != p->plan.sheets.size() || again->plan.strikes != p->plan.strikes ||
+        again->protocol != p->protocol)
+        std::abort();
     return 0;
 }

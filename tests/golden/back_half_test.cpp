@@ -14,6 +14,7 @@
 
 #include "common/file_io.hpp"
 #include "encode/frame.hpp"
+#include "encode/messages.hpp"
 #include "plan/plan_file.hpp"
 #include "encode/stream.hpp"
 #include "encode/stream_v3.hpp"
@@ -92,7 +93,7 @@ TEST_P(BackHalf, PlanAndFramesMatchExpected) {
     const auto& c = GetParam();
     const auto plan = plan_sample(c);
     ASSERT_FALSE(plan.sheets.empty());
-    expect_golden(plan::plan_to_json(plan).dump(1) + "\n", c.name + ".plan.json");
+    expect_golden(plan::plan_to_json({plan, profile::default_profile(), encode::kProtocolVersion}).dump(1) + "\n", c.name + ".plan.json");
     expect_golden(frames_hex(plan), c.name + ".frames.hex");
 }
 

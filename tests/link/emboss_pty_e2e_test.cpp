@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "controller/sim_controller.hpp"
+#include "encode/messages.hpp"
+#include "profile/profile.hpp"
 #include "plan/plan_file.hpp"
 #include "../common/process.hpp"
 #include "../common/strike_log.hpp"
@@ -47,7 +49,8 @@ protected:
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
         plan_ = test::make_plan(2, 6, 14, 11);
-        std::ofstream(dir_ / "plan.json") << plan::plan_to_json(plan_).dump();
+        std::ofstream(dir_ / "plan.json")
+            << plan::plan_to_json({plan_, profile::default_profile(), encode::kProtocolVersion}).dump();
     }
     void TearDown() override { fs::remove_all(dir_); }
 
@@ -136,7 +139,7 @@ TEST_F(PtyEndToEnd, DryRunPrintsTheByteCount) {
 }
 
 TEST_F(PtyEndToEnd, EmbossOnTheInProcessSimulator) {
-    Process p({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim"});
+    Process p({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device", "sim?speed=max"});
     const auto out = p.read_all();
     EXPECT_EQ(p.wait(), 0) << out;
     EXPECT_NE(out.find("embossed 12 passes"), std::string::npos) << out;

@@ -64,7 +64,7 @@ TEST(PlanCli, PlanJsonForASmallDocument) {
     double sum = 0;
     for (const auto& p : passes) {
         EXPECT_TRUE(p["side"] == "front" || p["side"] == "back");
-        EXPECT_TRUE(p["direction"] == "+" || p["direction"] == "-");
+        EXPECT_TRUE(p["direction"] == 1 || p["direction"] == -1);
         strikes += p["strikes_mm"].size();
         sum += p["duration_s"].get<double>();
     }

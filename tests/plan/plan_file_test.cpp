@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "plan/plan_file.hpp"
+#include "profile/profile_json.hpp"
 
 namespace tactus::plan {
 namespace {
@@ -18,7 +19,9 @@ using nlohmann::json;
 
 json one_strike_plan() {
     const json move = {{"steps", 8}, {"segments", json::array({json::array({65536 * 300, 8, 0})})}, {"duration_s", 0.01}};
-    return {{"tactus_plan", 1},
+    return {{"tactus_plan", 2},
+            {"protocol", 2},
+            {"profile", profile::to_json(profile::default_profile())},
             {"duration_s", 1.0},
             {"sheets",
              json::array({{{"index", 1},

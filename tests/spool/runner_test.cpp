@@ -198,15 +198,21 @@ TEST(Runner, AnUnpluggedCableIsRetriedAndNothingIsLostOrRepeated) {
     EXPECT_EQ(job.state, JobState::queued);
     EXPECT_EQ(job.retries, 1);
     EXPECT_NE(job.reason.find("retry 1 of 5"), std::string::npos) << job.reason;
-    // Still unplugged: the next try fails to connect and backs off again.
+    // Still unplugged: the next try cannot connect, so the job waits for the
+    // printer (not counted as a retry of the job).
     EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
-    EXPECT_EQ(b.spool.job(id)->retries, 2);
+    EXPECT_EQ(b.spool.job(id)->retries, 1);
+    EXPECT_NE(b.spool.job(id)->reason.find("waiting for printer 'lab'"), std::string::npos)
+        << b.spool.job(id)->reason;
     *printer.cut = false;  // plugged back in
     EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
     EXPECT_EQ(b.audit(id, printer), "");
 }
 
-TEST(Runner, ADeviceThatNeverComesBackPausesTheJobAfterTheRetryLimit) {
+// Issue 16, item 5: a job for an embosser that cannot be reached waits in the
+// queue as it would for a busy one, however many attempts that takes; it is
+// not paused as if the job were at fault (it used to be, after the retry limit).
+TEST(Runner, AJobForAnUnreachablePrinterWaitsInTheQueueUntilItIsBack) {
     Bench b;
     SimPrinter printer;
     *printer.cut = true;
@@ -215,18 +221,20 @@ TEST(Runner, ADeviceThatNeverComesBackPausesTheJobAfterTheRetryLimit) {
     options.max_retries = 2;
     Runner r(b.db, "lab", printer.connect(), options);
     ASSERT_TRUE(r.start());
-    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
-    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
-    EXPECT_EQ(run_next(r, b.stop), RunEnd::paused);
-    const auto job = *b.spool.job(id);
-    EXPECT_EQ(job.state, JobState::paused);
-    EXPECT_NE(job.reason.find("no such device"), std::string::npos) << job.reason;
-    EXPECT_NE(job.reason.find("gave up after 2 retries"), std::string::npos) << job.reason;
+    for (int attempt = 1; attempt <= 5; ++attempt) {
+        SCOPED_TRACE("attempt " + std::to_string(attempt));
+        EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
+        const auto job = *b.spool.job(id);
+        EXPECT_EQ(job.state, JobState::queued);
+        EXPECT_EQ(job.retries, 0);
+        EXPECT_NE(job.reason.find("waiting for printer 'lab'"), std::string::npos) << job.reason;
+        EXPECT_NE(job.reason.find("no such device"), std::string::npos) << job.reason;
+    }
     EXPECT_TRUE(printer.controller->strike_log().empty());
-    // The operator plugs it in and resumes: the retry count starts afresh.
+    // Plugged in: the job runs without anyone resuming it.
     *printer.cut = false;
-    ASSERT_TRUE(b.spool.act(id, Action::resume));
     EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
 }
 
 TEST(Runner, ADocumentThatNoLongerFitsTheProfileFailsClearlyAndIsKept) {

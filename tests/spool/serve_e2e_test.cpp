@@ -31,6 +31,46 @@ TEST(ServeE2E, QueuedJobIsEmbossedExactlyOnceAndServeStopsCleanly) {
     EXPECT_NE(shown.find("state:      completed"), std::string::npos) << shown;
 }
 
+// Issue 16, item 5: a job for an embosser that is not there is queued and
+// waits, as it would for a busy one; once the printer is reachable (here: its
+// device set to a running simulator) it is embossed, exactly once, without
+// anyone resuming it.
+TEST(ServeE2E, AJobForAnEmbosserThatIsNotThereWaitsInTheQueue) {
+    E2E e;
+    const std::string missing = "pty:/dev/pts/" + std::to_string(100000 + getpid() % 100000);
+    const JobId id = e.queue_text(test::kText, {"--device", missing});
+    ASSERT_NE(id, 0);
+    auto serve = e.serve({"--max-retries", "1"});
+    // More attempts than the retry limit, and the job is still waiting.
+    JobRecord job;
+    ASSERT_TRUE(e.wait_for(
+        [&](const JobRecord& j) {
+            int waits = 0;
+            if (auto events = e.spool().events(id, 1000))
+                for (const auto& ev : *events) waits += ev.message.find("waiting for printer") != std::string::npos;
+            job = j;
+            // Between attempts it is back in the queue (a runner holds it
+            // only for the moment of an attempt).
+            return waits >= 4 && j.state == JobState::queued;
+        },
+        id))
+        << e.history(id);
+    EXPECT_EQ(job.retries, 0);
+    EXPECT_NE(job.reason.find(missing.substr(4)), std::string::npos) << job.reason;
+    const auto [code, listed] = e.cli({"queue", "list"});
+    EXPECT_EQ(code, 0);
+    EXPECT_NE(listed.find("queued"), std::string::npos) << listed;
+
+    PtySim sim(e.dir.path(), "sim");
+    ASSERT_FALSE(sim.path().empty());
+    const auto printer = e.spool().printer(job.printer_id)->name;
+    ASSERT_EQ(e.cli({"queue", "printer", "set", printer, "--device", sim.device()}).first, 0);
+    ASSERT_TRUE(e.wait_state(id, JobState::completed)) << e.history(id);
+    serve->signal(SIGTERM);
+    EXPECT_EQ(serve->wait(), 0);
+    EXPECT_EQ(e.audit(id, sim).problems, "");
+}
+
 TEST(ServeE2E, PaperOutWaitsForPaperThenCarriesOn) {
     E2E e;
     PtySim sim(e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "2000"});
