@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "emboss_queue.hpp"
 
-#include <pwd.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -13,17 +12,13 @@
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/print_job.hpp"
+#include "spool/printer_setup.hpp"
+#include "spool/runner_token.hpp"
 #include "spool/snapshot.hpp"
 #include "spool_args.hpp"
 
 namespace tactus::cli {
 namespace {
-
-std::string user_name() {
-    if (const char* u = std::getenv("USER"); u && *u) return u;
-    if (const passwd* pw = getpwuid(getuid())) return pw->pw_name;
-    return "uid " + std::to_string(getuid());
-}
 
 std::pair<std::size_t, std::size_t> parse_range(const std::string& r) {
     if (r.empty()) return {0, 0};
@@ -57,22 +52,6 @@ void add_emboss_queue_options(CLI::App& cmd, EmbossQueueArgs& a) {
 
 namespace {
 
-// A printer name from a device string: "serial:/dev/ttyUSB0?baud=9600" ->
-// "ttyUSB0", "pty:/dev/pts/3" -> "pts-3", "hid:10c4:ea80" -> "hid-10c4-ea80",
-// "sim" -> "sim".
-std::string name_for_device(const std::string& device) {
-    const std::string head = device.substr(0, device.find('?'));
-    const auto colon = head.find(':');
-    const std::string scheme = head.substr(0, colon);
-    std::string path = colon == std::string::npos ? "" : head.substr(colon + 1);
-    if (path.rfind("/dev/", 0) == 0) path.erase(0, 5);
-    while (!path.empty() && path.front() == '/') path.erase(0, 1);
-    std::string name = path.empty() ? scheme : (scheme == "hid" ? "hid-" + path : path);
-    for (char& c : name)
-        if (c == ':' || c == '/' || c == ' ') c = '-';
-    return name;
-}
-
 // The queue printer for this job: --printer; else the one on --device (set up
 // on first use, so `emboss --queue --device X` works on a fresh machine);
 // else the only one there is.
@@ -86,11 +65,11 @@ std::string choose_printer(spool::Spool& s, const EmbossQueueArgs& a) {
         return a.printer;
     }
     if (!a.device.empty()) {
-        for (const auto& p : all)
-            if (p.device == a.device) return p.name;
-        std::string name = name_for_device(a.device);
-        for (int n = 2; s.printer(name); ++n) name = name_for_device(a.device) + "-" + std::to_string(n);
-        require(s.add_printer(name, a.device, profile::to_json(profile::default_profile()).dump()));
+        bool created = false;
+        const auto printer = require(
+            spool::printer_for_device(s, a.device, profile::to_json(profile::default_profile()).dump(), &created));
+        const auto& name = printer.name;
+        if (!created) return name;
         std::cerr << "set up queue printer '" << name << "' on " << a.device
                   << " with the default profile (change it with `tactus-cli queue printer set " << name
                   << " --profile FILE`)\n";
@@ -136,7 +115,7 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     job.first_page = first;
     job.last_page = first ? (last ? last : doc.pages.size()) : 0;
     job.priority = a.priority;
-    job.user = user_name();
+    job.user = spool::this_user_name();
     const auto id = require(s.submit(job), exit_failure);
     std::cout << "queued job " << id << ": " << job.title << ", " << job.sheets_per_copy << " sheet(s) x "
               << job.copies << " on " << printer << '\n';
