@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Fails when the zh_TW interface is incomplete (issue 14 item 3).
+"""Fails when the zh_TW interface is incomplete or uses a wrong term (issue 14 item 3).
 
 Runs Qt's lupdate over the same sources the app build translates (widgets/ and
 app/gui/main.cpp) into a scratch copy of resources/i18n/tactus_zh_TW.ts, so a
@@ -19,6 +19,10 @@ import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TS = os.path.join(ROOT, "resources", "i18n", "tactus_zh_TW.ts")
+
+# Words that read naturally but name the wrong thing on this machine. 筆架 is a
+# pen rest; the embosser's moving head is a carriage, 字車 as on a typewriter.
+WRONG_TERMS = {"筆架": "字車 (carriage)"}
 
 
 def main():
@@ -49,13 +53,22 @@ def main():
                 loc = message.find("location")
                 where = f"{loc.get('filename')}:{loc.get('line')}" if loc is not None else "?"
                 missing.append(f"{name}: \"{message.findtext('source')}\" ({os.path.basename(where)})")
-    print(f"zh_TW: {total} strings, {len(missing)} untranslated")
+    wrong = []
+    for context in root.iter("context"):
+        for message in context.iter("message"):
+            text = "".join(message.find("translation").itertext()) if message.find("translation") is not None else ""
+            for bad, good in WRONG_TERMS.items():
+                if bad in text:
+                    wrong.append(f"\"{message.findtext('source')}\" -> \"{text}\": {bad} should be {good}")
+    print(f"zh_TW: {total} strings, {len(missing)} untranslated, {len(wrong)} with a wrong term")
+    for w in wrong:
+        print("  wrong term: " + w)
     for m in missing:
         print("  untranslated: " + m)
     if missing:
         print("Add them to resources/i18n/zh_TW_glossary.py, run lupdate and the glossary "
               "(see resources/i18n/README or the glossary's docstring).")
-    return 1 if missing else 0
+    return 1 if missing or wrong else 0
 
 
 if __name__ == "__main__":

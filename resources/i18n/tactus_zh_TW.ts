@@ -911,7 +911,7 @@
     <message>
         <location filename="../../widgets/motion_view.cpp" line="85" />
         <source>Carriage motion chart</source>
-        <translation>筆架運動圖</translation>
+        <translation>字車運動圖</translation>
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="92" />
@@ -952,7 +952,7 @@
     <message>
         <location filename="../../widgets/motion_view.cpp" line="106" />
         <source>Carriage (mm)</source>
-        <translation>筆架 (mm)</translation>
+        <translation>字車 (mm)</translation>
     </message>
     <message>
         <location filename="../../widgets/motion_view.cpp" line="106" />
@@ -1658,7 +1658,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="41" />
         <source>Head and carriage</source>
-        <translation>打點頭與筆架</translation>
+        <translation>打點頭與字車</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="42" />
@@ -1678,7 +1678,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="44" />
         <source>Carriage steps</source>
-        <translation>筆架步數</translation>
+        <translation>字車步數</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="44" />
@@ -1688,7 +1688,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="45" />
         <source>Carriage top speed</source>
-        <translation>筆架最高速度</translation>
+        <translation>字車最高速度</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="45" />
@@ -1698,7 +1698,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="46" />
         <source>Carriage acceleration</source>
-        <translation>筆架加速度</translation>
+        <translation>字車加速度</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="46" />
@@ -1708,7 +1708,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="47" />
         <source>Carriage jerk</source>
-        <translation>筆架加加速度</translation>
+        <translation>字車加加速度</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="47" />
@@ -1718,7 +1718,7 @@
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="48" />
         <source>Carriage backlash</source>
-        <translation>筆架背隙</translation>
+        <translation>字車背隙</translation>
     </message>
     <message>
         <location filename="../../widgets/profile_editor.cpp" line="49" />
