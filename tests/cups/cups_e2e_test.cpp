@@ -175,7 +175,10 @@ TEST(CupsE2E, AnUnknownTableFailsTheJobWithAClearErrorAndEmbossesNothing) {
     const int cups_id = rig.lp(doc, {"-o", "braille-table=no-such-table"}, out);
     ASSERT_GT(cups_id, 0) << out;
     std::string status;
-    for (int i = 0; i < 400; ++i) {
+    // A deadline, not a count of polls: under load each lpstat takes longer,
+    // and cupsd may start the filter late (it failed once beside the ASan run).
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(90);
+    while (std::chrono::steady_clock::now() < deadline) {
         status = rig.client({"lpstat", "-l", "-W", "all", "-o", "Embosser"}).second + rig.printer_status();
         if (status.find("no-such-table") != std::string::npos) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
