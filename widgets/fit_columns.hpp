@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Table columns that never cut their headings. Stretched columns share the
-// table's width evenly, so "Versus lower bound" or a longer translation was
-// cut off in a narrow dock (issue 14 item 4). Columns take at least their
-// heading's width, the last one takes what is left, and the table asks its
-// layout for the room the headings need.
+// Table columns that never cut their headings or their cells. Stretched
+// columns share the table's width evenly, so "Versus lower bound" or a longer
+// translation was cut off in a narrow dock (issue 14 item 4). Columns take at
+// least the width of their heading and their widest cell, the last one takes
+// what is left, and the table asks its layout for the room that needs. The
+// room is measured again whenever the table's rows change: a cell such as
+// "Jerk-limited (7 segments)" arrives only once a plan exists.
 class QTableView;
 
 namespace tactus::gui {

@@ -87,6 +87,9 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     chart_view_->setRenderHint(QPainter::Antialiasing);
     chart_view_->setMinimumHeight(220);
     chart_view_->viewport()->setAccessibleName(chart_view_->accessibleName());
+    // Beside the plot the legend has a line per series; below it, the four
+    // names shared one line and "Jerk-limited (7 segments)" was elided.
+    chart_view_->chart()->legend()->setAlignment(Qt::AlignRight);
     times_ = new QLabel(this);
     times_->setObjectName(QStringLiteral("motionTimes"));
     expose_status(times_, tr("Time estimates"));
@@ -108,7 +111,9 @@ MotionView::MotionView(QWidget* parent) : QWidget(parent) {
     strikes_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     fit_columns_to_headings(strikes_);
 
-    auto* tables = new QSplitter(Qt::Horizontal, this);
+    // One above the other: side by side, a dock of 1280 px could not give
+    // both tables the width their headings and cells need.
+    auto* tables = new QSplitter(Qt::Vertical, this);
     tables->addWidget(shapes_);
     tables->addWidget(strikes_);
     auto* layout = new QVBoxLayout(this);

@@ -30,8 +30,6 @@ VibrationView::VibrationView(QWidget* parent) : QWidget(parent) {
     metrics_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     metrics_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     fit_columns_to_headings(metrics_);
-    metrics_->setMinimumHeight(130);
-    metrics_->setMaximumHeight(150);
     metrics_->verticalHeader()->setVisible(false);
     modes_ = new QLabel(this);
     expose_status(modes_, tr("Natural frequencies"));
@@ -87,6 +85,11 @@ void VibrationView::set_profile(const profile::PrinterProfile& p) {
     row(tr("Settling time (2 %)"),
         s.settling_time_s ? tr("%1 ms").arg(*s.settling_time_s * 1000, 0, 'f', 2) : tr("never settles"),
         tr("< %1 ms").arg(t.settling_time_s * 1000), report_.settling_ok);
+    // Exactly as tall as its rows: a fixed guess left half a row's blank or
+    // pushed the charts down until their axis labels were elided.
+    int height = metrics_->horizontalHeader()->sizeHint().height() + 2 * metrics_->frameWidth();
+    for (int r = 0; r < metrics_->rowCount(); ++r) height += metrics_->rowHeight(r);
+    metrics_->setFixedHeight(height);
     QStringList hz;
     for (double f : report_.natural_hz) hz << QString::number(f, 'f', 1);
     modes_->setText(tr("%1 model; natural frequencies %2 Hz; \u221a(k/m) = %3 rad/s; damping ratio %4.")

@@ -4,7 +4,12 @@
 // button, tab and header is checked against the room it was given, and a
 // screenshot of each view is saved for CI's artefacts
 // (TACTUS_SCREENSHOT_DIR, default: screenshots/ in the working directory).
+#include <QAbstractAxis>
 #include <QAbstractButton>
+#include <QChart>
+#include <QChartView>
+#include <QGraphicsSimpleTextItem>
+#include <QGraphicsTextItem>
 #include <QDir>
 #include <QDockWidget>
 #include <QGroupBox>
@@ -53,12 +58,31 @@ bool drawn(QWidget* root, QWidget* w) {
     return true;
 }
 
+// A chart draws its titles, legend and axis labels as scene text items, and
+// elides them with "..." when there is no room; an axis says so itself.
+void clipped_in_chart(QChartView* view, QStringList& out) {
+    const auto name = QStringLiteral("QChartView '%1'").arg(view->objectName());
+    for (auto* item : view->scene()->items()) {
+        if (!item->isVisible()) continue;
+        QString text;
+        if (auto* simple = dynamic_cast<QGraphicsSimpleTextItem*>(item)) text = simple->text();
+        else if (auto* rich = dynamic_cast<QGraphicsTextItem*>(item)) text = rich->toPlainText();
+        if (text.contains(QStringLiteral("...")) || text.contains(QChar(0x2026)))
+            out << QStringLiteral("%1 draws \"%2\"").arg(name, text);
+    }
+    for (auto* axis : view->chart()->axes())
+        if (axis->isVisible() && axis->labelsTruncated())
+            out << QStringLiteral("%1: axis '%2' truncates its labels").arg(name, axis->titleText());
+}
+
 // What is drawn narrower than its text, in the visible part of the window.
 QStringList clipped(QWidget* root) {
     QStringList out;
     for (auto* w : root->findChildren<QWidget*>()) {
         if (!w->isVisible() || w->width() <= 1 || !drawn(root, w)) continue;
-        if (auto* l = qobject_cast<QLabel*>(w)) {
+        if (auto* chart = qobject_cast<QChartView*>(w)) {
+            clipped_in_chart(chart, out);
+        } else if (auto* l = qobject_cast<QLabel*>(w)) {
             if (l->wordWrap() || l->text().isEmpty()) continue;
             const int need = l->minimumSizeHint().width();
             if (need > l->width()) out << describe(l, plain(l->text()), need, l->width());
@@ -136,6 +160,10 @@ private Q_SLOTS:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        // The motion and vibration views show their tables and charts only
+        // for a plan: check them full, as a technician sees them.
+        const auto plan = w.plan_now();
+        QVERIFY(plan && !plan->error);
         QStringList problems;
         for (const auto* panel : {"preview", "motion", "vibration", "profile", "printer"}) {
             w.show_panel(QString::fromLatin1(panel));
