@@ -145,6 +145,9 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     queue_->setTabKeyNavigation(false);  // Tab leaves the table; arrows move between cells
     queue_->setSelectionBehavior(QAbstractItemView::SelectRows);
     queue_->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Each column as wide as its widest text, so a state such as "done: all
+    // 1453 strikes checked" is read whole; the document's title takes the rest.
+    queue_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     queue_->horizontalHeader()->setSectionResizeMode(col_document, QHeaderView::Stretch);
     pause_ = new QPushButton(tr("&Pause"), this);
     resume_ = new QPushButton(tr("Res&ume"), this);

@@ -106,6 +106,42 @@ private Q_SLOTS:
         QVERIFY(panel.log_text().contains(QStringLiteral("completed: all")));
     }
 
+    // Issue 14: the State column read "done: all 1453 strikes check…". Every
+    // cell but the stretched title is as wide as its text.
+    void the_job_queue_shows_each_state_whole() {
+        const auto file = (dir_.path() + QStringLiteral("/whole.txt")).toStdString();
+        std::ofstream(file) << "A job that stops with a long reason.\n";
+        QCOMPARE(test::run({kCli, "queue", "printer", "add", "far", "--device", "pty:/dev/pts/424244", "--db", db_}).first, 0);
+        QCOMPARE(test::run({kCli, "emboss", "--queue", file, "--printer", "far", "--title", "whole", "--db", db_}).first, 0);
+        PrinterPanel panel;
+        panel.resize(900, 600);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QSignalSpy finished(&panel, &PrinterPanel::job_finished);
+        {
+            auto s = spool::Spool::open(db_, {.create = false});
+            QVERIFY(s.has_value());
+            QVERIFY(s->set_state(panel.jobs().front().id, spool::JobState::failed,
+                                 link::explain_faults(encode::fault::hammer), "failed", "hammer fault")
+                        .has_value());
+        }
+        QVERIFY(finished.wait(10000));
+        QTest::qWait(50);  // the view lays out its new texts
+        auto* table = panel.findChild<QTableWidget*>(QStringLiteral("jobQueue"));
+        const QAbstractItemView* view = table;  // QTableView hides sizeHintForColumn
+        QCOMPARE(table->rowCount(), 1);
+        QVERIFY2(table->item(0, 3)->text().contains(QStringLiteral("hammer")), qPrintable(table->item(0, 3)->text()));
+        for (int col = 0; col < table->columnCount(); ++col) {
+            if (col == 1 || !table->item(0, col)) continue;  // the title stretches; the progress is a bar
+            QVERIFY2(view->sizeHintForColumn(col) <= table->columnWidth(col),
+                     qPrintable(QStringLiteral("column %1 \"%2\" needs %3 px, has %4")
+                                    .arg(col)
+                                    .arg(table->item(0, col)->text())
+                                    .arg(view->sizeHintForColumn(col))
+                                    .arg(table->columnWidth(col))));
+        }
+    }
+
     // Issue 14 item 7: a job that stops is announced once (the fault label and
     // the message each announced it, so Orca said it twice).
     void a_stopped_job_is_announced_once() {
