@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.hpp"
+#include "menu_bar_keys.hpp"
+#include "message_label.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -137,6 +139,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("positionLabel"));
     expose_status(status_, tr("Position"));
+    message_ = new MessageLabel(this);
+    statusBar()->addWidget(message_, 1);
     statusBar()->addPermanentWidget(status_);
     statusBar()->setSizeGripEnabled(false);  // a grip has no accessible role; the window manager resizes
     statusBar()->setAccessibleName(tr("Status"));
@@ -267,6 +271,7 @@ void MainWindow::build_actions() {
 }
 
 void MainWindow::build_menus() {
+    keep_lone_alt_out_of_menus(menuBar());
     auto* file = menuBar()->addMenu(tr("&File"));
     file->addActions({new_, open_});
     recent_menu_ = file->addMenu(tr("Open &Recent"));
@@ -484,7 +489,7 @@ void MainWindow::update_title() {
 }
 
 void MainWindow::report(const QString& message, bool error) {
-    statusBar()->showMessage(message, 10000);
+    message_->show_message(message, 10000);
     announcer_->announce(message);
     if (error && interactive_ && isVisible()) {
         FocusReturn back(this, editor_->print_pane());
@@ -738,7 +743,7 @@ void MainWindow::show_plan(const DocumentPlanPtr& plan) {
     motion_->set_plan(plan);
     vibration_->set_plan(plan);
     if (plan->error)
-        statusBar()->showMessage(tr("Cannot plan the job: %1").arg(QString::fromStdString(plan->error->to_string())), 10000);
+        message_->show_message(tr("Cannot plan the job: %1").arg(QString::fromStdString(plan->error->to_string())), 10000);
     Q_EMIT planned(plan);
 }
 
@@ -750,7 +755,7 @@ bool MainWindow::autosave_now() {
         autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
     QString error;
     if (!write_atomically(autosave_path_, editor_->text().toUtf8(), &error)) {
-        statusBar()->showMessage(error, 10000);
+        message_->show_message(error, 10000);
         return false;
     }
     QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(::getpid())},

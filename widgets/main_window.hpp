@@ -23,6 +23,7 @@ namespace tactus::gui {
 class Announcer;
 class EditorWidget;
 class FocusReturn;
+class MessageLabel;
 class MotionView;
 class PrinterPanel;
 class ProfileEditor;
@@ -132,6 +133,7 @@ private:
     Announcer* announcer_ = nullptr;
     FindReplaceDialog* find_ = nullptr;
     QLabel* status_ = nullptr;
+    MessageLabel* message_ = nullptr;
     QMenu* recent_menu_ = nullptr;
     QString path_;         // where Save writes (Markdown only); empty: ask
     QString source_name_;  // the file the document came from, for the title

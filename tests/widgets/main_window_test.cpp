@@ -6,6 +6,8 @@
 #include <QJsonDocument>
 #include <QStandardPaths>
 #include <QJsonObject>
+#include <QLabel>
+#include <QStatusBar>
 #include <QTextBlock>
 #include <QtTest>
 #include <unistd.h>
@@ -74,6 +76,33 @@ private Q_SLOTS:
         const auto pos = w.editor()->current_position();
         QCOMPARE(w.preview_panel()->preview()->cursor_page(), pos.page);
         QCOMPARE(w.preview_panel()->preview()->cursor_line(), pos.line);
+    }
+
+    // Issue 14: a long message ran into the position indicator and was cut
+    // (QStatusBar paints one line under its permanent widgets). The message
+    // is now a label beside the position that wraps and is as tall as it needs.
+    void a_long_message_is_shown_whole_beside_the_position() {
+        MainWindow w;
+        w.set_interactive(false);
+        w.resize(900, 600);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));
+        QVERIFY(w.open_file_now(test::sample("chinese-tw.txt")));  // Chinese under English: the table warning
+        QTest::qWait(50);
+        auto* message = w.statusBar()->findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY2(message, "the status bar has no message label");
+        QVERIFY2(message->text().contains(QStringLiteral("does not suit")), qPrintable(message->text()));
+        QVERIFY(message->isVisible());
+        auto* position = w.statusBar()->findChild<QLabel*>(QStringLiteral("positionLabel"));
+        QVERIFY(position && position->isVisible());
+        const QRect m(message->mapTo(&w, QPoint(0, 0)), message->size());
+        const QRect p(position->mapTo(&w, QPoint(0, 0)), position->size());
+        QVERIFY2(!m.intersects(p), "the message runs into the position");
+        // Whole: wider than a line of the bar, so it wraps, and every line has room.
+        QVERIFY(message->fontMetrics().horizontalAdvance(message->text()) > message->width());
+        QVERIFY2(message->height() >= message->heightForWidth(message->width()),
+                 qPrintable(QStringLiteral("needs %1 px of height, has %2").arg(message->heightForWidth(message->width())).arg(message->height())));
     }
 
     void exports_match_the_cli_pipeline() {
