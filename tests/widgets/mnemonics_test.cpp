@@ -6,6 +6,7 @@
 // its items. A clash makes Alt+P press "Pause" or tick "Compare profile shapes"
 // depending on which Qt finds first, and a screen reader announces both as Alt+P.
 #include <QAbstractButton>
+#include <QApplication>
 #include <QDialog>
 #include <QGroupBox>
 #include <QLabel>
@@ -87,6 +88,28 @@ class MnemonicsTest : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // Off Windows a lone Alt leaves the focus where it is: the menu bar took
+    // the Alt of Alt+P, Orca said "File." and the next key opened a menu.
+    void a_lone_alt_leaves_the_focus_where_it_is() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QApplication::setActiveWindow(&w);
+        auto* focus = QApplication::focusWidget();
+        QVERIFY(focus);
+        // Through the window system, as a real key arrives: the menu bar
+        // watches the window's key events, not the focus widget's.
+        QTest::keyPress(w.windowHandle(), Qt::Key_Alt, Qt::AltModifier);
+        QTest::keyRelease(w.windowHandle(), Qt::Key_Alt, Qt::NoModifier);
+        QTest::qWait(20);
+        const auto* active = w.menuBar()->activeAction();
+        QVERIFY2(!active, qPrintable(active ? active->text() : QString()));
+        QCOMPARE(QApplication::focusWidget(), focus);
+        // The menus are still one key away.
+        QTest::keyClick(w.windowHandle(), Qt::Key_F10);
+        QVERIFY(w.menuBar()->activeAction());
+    }
 
     void the_parser_reads_mnemonics() {
         QCOMPARE(mnemonic(QStringLiteral("Ca&ncel")), QChar(u'n'));
