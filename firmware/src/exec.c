@@ -298,26 +298,18 @@ void exec_poll(void) {
                 fault(F_LIMIT);
                 return;
             }
+            /* The hammer comes down at the settle's end, from the timer. */
             xs = X_SETTLE;
-            if (cfg_settle) {
-                wait_ticks(cfg_settle);
-                return;
-            }
-            /* fall through */
+            hammer_down_after(fw_skip ? 0 : (ham_ccv ? PIN_CCV : PIN_CVX), cfg_settle);
+            return;
         case X_SETTLE:
+            /* Down (or, made before a reset, passed over at the same pace). */
             xs = X_DWELL;
-            if (fw_skip) {
-                --fw_skip; /* made before the reset: pass over it */
-                return;
-            }
-            if (ham_ccv) HAM_CCV = 1;
-            else HAM_CVX = 1;
-            wait_ticks(cfg_hammer);
-            ++fw_strikes_in_pass;
+            if (fw_skip) --fw_skip;
+            else ++fw_strikes_in_pass;
+            hammer_up_after(cfg_hammer);
             return;
         case X_DWELL:
-            HAM_CVX = 0;
-            HAM_CCV = 0;
             /* Both hammers must be back before the head moves on. */
             if (!HAM_SENSE) {
                 fault(F_HAMMER);
