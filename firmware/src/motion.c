@@ -3,6 +3,7 @@
 
 #include <8052.h>
 
+#include "link.h"
 #include "ramp.h"
 
 /* The phase program step.asm walks (see the kinds there). */
@@ -150,26 +151,26 @@ static void one_phase(uint8_t kind, uint16_t n) {
     rec(K_END, 1, 0);
 }
 
-void move_constant(uint8_t pin, uint16_t n, uint16_t interval) {
+void move_constant(uint8_t pin, uint16_t n) {
     s_pin = pin;
     one_phase(K_SCOUNT, n);
-    start(START_GAP + interval, (uint16_t)(0 - interval));
+    start(START_GAP + cfg_home_iv, (uint16_t)(0 - cfg_home_iv));
 }
 
-void move_home(uint16_t n, uint16_t interval) {
+void move_home(uint16_t n) {
     s_pin = PIN_CSTEP;
     one_phase(K_HOME, n);
-    start(START_GAP + interval, (uint16_t)(0 - interval));
+    start(START_GAP + cfg_home_iv, (uint16_t)(0 - cfg_home_iv));
 }
 
-void hammer_down_after(uint8_t pins, uint16_t ticks) {
+void hammer_down_after_settle(uint8_t pins) {
     s_pin = pins;
     one_phase(K_SCOUNT, 1);
-    start(ticks, 0);
+    start(cfg_settle, 0);
 }
 
-void hammer_up_after(uint16_t ticks) {
+void hammer_up_after_pulse(void) {
     s_pin = 0;
     one_phase(K_HOFF, 1);
-    start(ticks, 0);
+    start(cfg_hammer, 0);
 }
