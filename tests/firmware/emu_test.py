@@ -231,10 +231,11 @@ def run_job(tmp, noise=0.0, settle=7650, hammer=3686):
     # The timer reloads in hardware and every phase change inside a move is
     # made within one step's interval, so each edge comes the same number of
     # cycles after its timer event; the only jitter is the instruction the
-    # interrupt waits for (0-3 cycles on an 8051; 0-1 measured).
-    check(abs(total) <= 3, f"no drift over the move ({total:+.1f} cycles)")
-    check(worst <= 3, f"every step interval within 3 cycles of the table (worst {worst:.1f})")
-    check(schedule_spread(passes, settle, hammer, got_edges(vcd)) <= 3,
+    # interrupt waits for (on an 8051 at most 3 cycles, or one instruction more
+    # after a RETI or a write to IE: 6 at most; 0-1 measured mostly).
+    check(abs(total) <= 6, f"no drift over the move ({total:+.1f} cycles)")
+    check(worst <= 6, f"every step interval within 6 cycles of the table (worst {worst:.1f})")
+    check(schedule_spread(passes, settle, hammer, got_edges(vcd)) <= 6,
           "every step and hammer edge of the job on the firmware's schedule")
     return got
 
