@@ -4,7 +4,7 @@
 (never run by the unit tests: about two minutes of the chip's time, more on
 the wall clock).
 
-    make -C firmware emu && ninja -C build/default app/cli/tactus-cli
+    make -C firmware emu && ninja -C build/default app/tactus-cli
     python3 bench/firmware/bench_sheet.py [--doc resources/samples/welcome.md] [--sheet 1]
 
 `tactus-cli plan --json --firmware-tables` plans the document for the
@@ -87,7 +87,7 @@ def pin_edges(vcd):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--cli", default=str(ROOT / "build" / "default" / "app" / "cli" / "tactus-cli"))
+    ap.add_argument("--cli", default=str(ROOT / "build" / "default" / "app" / "tactus-cli"))
     ap.add_argument("--doc", default=str(ROOT / "resources" / "samples" / "welcome.md"))
     ap.add_argument("--sheet", type=int, default=1)
     ap.add_argument("--baud", type=int, default=9600)
