@@ -17,6 +17,7 @@
 #include "pipeline/pipeline.hpp"
 #include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 
 namespace tactus::cli {
@@ -33,6 +34,7 @@ struct PlanArgs {
     LayoutArgs layout;
     std::string profile;
     bool json = false;
+    std::string firmware_tables;  // the reference firmware's build/ramp.json: plan its table moves (protocol 3)
 };
 
 // What `plan --json` adds to a pass of the plan file.
@@ -74,11 +76,16 @@ void run_plan(const PlanArgs& a) {
     const auto options = a.layout.pipeline_options(prof);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, prof);
-    auto planner = require(plan::Planner::create(prof));
+    // With the firmware's tables, the plan `emboss --firmware-tables` makes
+    // (spool::make_firmware_print_job): its table moves, timed as it runs them.
+    plan::PlanOptions options_plan;
+    if (!a.firmware_tables.empty()) options_plan.firmware = require(profile::load_firmware_tables(a.firmware_tables));
+    const bool firmware = options_plan.firmware.has_value();
+    auto planner = require(plan::Planner::create(prof, options_plan));
     auto& out = std::cout;
     if (a.json) {
         // The plan file's head, then its sheets one at a time.
-        auto head = plan::plan_file_head(prof, encode::kProtocolVersion).dump();
+        auto head = plan::plan_file_head(prof, firmware ? encode::kProtocolV3 : encode::kProtocolVersion).dump();
         head.pop_back();  // the closing brace: the sheets follow
         out << head << ",\"sheets\":[";
     }
@@ -93,6 +100,9 @@ void run_plan(const PlanArgs& a) {
             const std::size_t bytes = schedule_bytes(sheet->passes[i]);
             total_bytes += bytes;
             if (a.json) sj["passes"][i].update(pass_analysis(sheet->passes[i], bytes));
+            // Protocol 2's MOVE bytes mean nothing to the firmware: its passes
+            // are pass records (bench/firmware/bytes_per_strike.py counts them).
+            if (a.json && firmware) sj["passes"][i].erase("schedule_bytes");
         }
         if (!a.json) continue;
         sj["lower_bound_s"] = sheet->lower_bound_s;
@@ -113,7 +123,7 @@ void run_plan(const PlanArgs& a) {
                               {"tolerance_um", prof.vibration.tolerance_um},
                               {"strikes_over_tolerance", t.strikes_over_tolerance},
                               {"segments", t.segments},
-                              {"schedule_bytes", total_bytes}}
+                              {"schedule_bytes", firmware ? nlohmann::json() : nlohmann::json(total_bytes)}}
                    .dump()
             << ",\"tuning\":" << tuning_json(planner.tuner()).dump() << "}\n";
         return;
@@ -134,6 +144,11 @@ void run_plan(const PlanArgs& a) {
     if (t.strikes_over_tolerance)
         std::printf("WARNING:          %zu strikes over tolerance (profile and shaper fixed by the profile)\n",
                     t.strikes_over_tolerance);
+    if (firmware) {
+        std::printf("firmware tables:  %08x (every move a table move; %u cycles before each move)\n",
+                    options_plan.firmware->table_id, options_plan.firmware->start_gap_ticks);
+        return;
+    }
     std::printf("step schedule:    %zu segments, %zu bytes\n", t.segments, total_bytes);
     std::printf("moves chosen (carriage steps: profile/shaper, speed, settle, duration, worst residual):\n");
     for (const auto& [steps, m] : planner.tuner().decisions()) {
@@ -152,6 +167,10 @@ void add_plan_command(CLI::App& app) {
     a.layout.add_to(*cmd, /*with_interpoint=*/false);
     cmd->add_option("--profile,-p", a.profile, "Printer profile JSON (default: the bundled one)");
     cmd->add_flag("--json", a.json, "Print the plan as JSON");
+    cmd->add_option("--firmware-tables", a.firmware_tables,
+                    "Plan for the reference firmware (protocol 3) with the ramp tables it was built with "
+                    "(firmware/build/ramp.json): the plan emboss --firmware-tables sends")
+        ->check(CLI::ExistingFile);
     cmd->callback([] { run_plan(a); });
 }
 

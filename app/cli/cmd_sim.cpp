@@ -32,6 +32,7 @@ struct SimArgs {
     int mute_after_pass = 0;
     std::string firmware;  // an .ihx: the reference firmware in s51 instead of the C++ model
     std::string profile;   // --firmware: steps/mm for the log's millimetres
+    std::string pin_trace; // --firmware: keep the pin trace (VCD) here
 };
 
 // One strike as a JSON line, flushed: a reader sees every strike at once. The
@@ -78,6 +79,7 @@ void run_firmware_sim(const SimArgs& a) {
     o.feed_steps_per_mm = profile.feed.steps_per_mm;
     o.noise = a.server.noise;
     o.seed = a.server.seed;
+    o.pin_trace = a.pin_trace;
     auto log = open_log(a.strike_log);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
@@ -191,6 +193,9 @@ void add_sim_command(CLI::App& app) {
                     "emulator instead of the C++ model; strikes are read from its pins")
         ->check(CLI::ExistingFile);
     cmd->add_option("--profile,-p", args->profile, "With --firmware: the profile whose steps/mm the log's mm use");
+    cmd->add_option("--pin-trace", args->pin_trace,
+                    "With --firmware: keep the emulator's trace of port 1 (steps, directions, hammers) in FILE "
+                    "(VCD, the emulator's clock)");
     cmd->callback([args] { run_sim(*args); });
 }
 

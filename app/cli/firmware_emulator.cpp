@@ -168,7 +168,8 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     std::string tmpl = (fs::temp_directory_path() / "tactus-s51.XXXXXX").string();
     if (!mkdtemp(tmpl.data())) throw CommandFailed(exit_failure, "sim --firmware: cannot make a temporary folder");
     run.dir = tmpl;
-    const auto h2t = run.dir / "h2t", t2h = run.dir / "t2h", vcd = run.dir / "pins.vcd";
+    const auto h2t = run.dir / "h2t", t2h = run.dir / "t2h";
+    const auto vcd = o.pin_trace.empty() ? run.dir / "pins.vcd" : fs::absolute(o.pin_trace);
     if (mkfifo(h2t.c_str(), 0600) != 0 || mkfifo(t2h.c_str(), 0600) != 0)
         throw CommandFailed(exit_failure, "sim --firmware: cannot make the emulator's FIFOs in " + run.dir.string());
     // Held open on both ends here (this process is the bridge), so s51's opens never wait.

@@ -24,6 +24,7 @@ struct FirmwareEmulatorOptions {
     double feed_steps_per_mm = 40;
     double noise = 0;          // per byte either way: dropped, flipped, duplicated, each at this rate
     std::uint64_t seed = 1;
+    std::string pin_trace;     // keep the port-1 trace (VCD) here; a temporary file when empty
 };
 
 // Starts s51 (niced), prints the pty path on stdout's first line,

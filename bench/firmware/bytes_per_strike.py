@@ -3,7 +3,8 @@
 """Line bytes per strike of protocol v3 on a real plan, and the lowest baud at
 which the firmware never waits for data.
 
-    tactus-cli plan --json resources/samples/welcome.md > plan.json
+    tactus-cli plan --json --firmware-tables firmware/build-emu/ramp.json \
+        resources/samples/welcome.md > plan.json
     python3 bench/firmware/bytes_per_strike.py plan.json [--sheet N]
 
 Encodes every pass of the plan as v3 pass records (tools/fwhost.py, the same
@@ -12,7 +13,9 @@ in one record each), cuts the stream into DATA frames of the firmware's
 largest payload, and counts the line bytes. Then it runs the firmware's timing
 (table moves from build-emu/ramp.json, settle, hammer) against a link at a
 given baud: a pass's feed starts once its header is in the ring, each strike
-once its entry is, and bytes free as they are executed. The controller
+once its entry is, and bytes free as they are executed. The firmware's
+schedule (PROTOCOL-v3.md, "Timing"): each move START_GAP cycles after the
+event before it, the settle (the plan's) and the hammer pulse. The controller
 "waits" whenever it is ready for the next header or entry and it has not
 arrived. The host sends a frame when the ring has room for a full one.
 """
@@ -33,8 +36,9 @@ RING = 47          # HELLO_REPLY of the default build (BUF_CAP 64)
 MAX_PAYLOAD = 33   # ops + the 2-byte DATA check
 MAX_DATA = MAX_PAYLOAD - 2
 MAX_ENTRIES = 255
-SETTLE = 7373      # 8 ms, the auto-tuner's usual settle on the default machine (docs/motion.md)
+SETTLE = 7650      # profile::strike_timing of the default profile; the plan's when it has one
 HAMMER = 3686      # 4 ms dwell
+GAP = RAMP["start_gap_ticks"]
 OVERHEAD = 8       # frame bytes besides the ops: SYNC LEN SEQ TYPE, CRC, DATA check
 
 
@@ -90,12 +94,12 @@ def encode(plan, sheet_filter=None):
                         n += RAMP["carriage"]["backlash_steps"]
                     if n:
                         c_neg = neg
-                    times.append((move_cycles(ctab, n) if n else 0) + SETTLE + HAMMER)
+                    times.append((GAP + move_cycles(ctab, n) if n else 0) + SETTLE + HAMMER)
                     prev = t
                 pos = chunk[-1]
                 fsteps = abs(feed_units) * f_grid if c == 0 else 0
                 header = len(rec) - sum(sizes) - 2
-                records.append((len(rec), header, sizes, times, move_cycles(ftab, fsteps) if fsteps else 0))
+                records.append((len(rec), header, sizes, times, GAP + move_cycles(ftab, fsteps) if fsteps else 0))
                 strikes += len(chunk)
     return records, other, strikes
 
@@ -165,6 +169,10 @@ def main():
     ap.add_argument("--sheet", type=int)
     a = ap.parse_args()
     plan = json.loads(Path(a.plan).read_text())
+    global SETTLE
+    settles = {k["move"]["settle_ticks"] for sh in plan["sheets"] for p in sh["passes"] for k in p["strikes"]}
+    if plan.get("protocol") == 3 and len(settles) == 1:
+        SETTLE = settles.pop()  # planned for the firmware: its CONFIGURE settle
     records, other, strikes = encode(plan, a.sheet)
     stream = sum(r[0] for r in records) + other
     frames = math.ceil(stream / MAX_DATA)

@@ -91,6 +91,15 @@ void FirmwareTrace::change(const std::string& id, std::uint32_t v, std::vector<L
     const std::uint32_t rise = v & ~port_;
     if (rise & kCarriageStep) carriage_ += (v & kCarriageDir) ? 1 : -1;
     if (rise & kFeedStep) feed_ += (v & kFeedDir) ? 1 : -1;
+    if (keep_edges_) {
+        using K = PinEdge::Kind;
+        const std::uint32_t fall = port_ & ~v & (kConvex | kConcave);
+        if (rise & kCarriageStep) edges_.push_back({K::carriage_step, now_s_});
+        if (rise & kFeedStep) edges_.push_back({K::feed_step, now_s_});
+        if (rise & (kConvex | kConcave)) edges_.push_back({K::hammer_down, now_s_});
+        // Not the pins' first value (0xFF before the firmware sets them up).
+        if (fall && port_ != 0xFF) edges_.push_back({K::hammer_up, now_s_});
+    }
     for (const auto& [bit, hammer] : {std::pair{kConvex, plan::Hammer::convex}, std::pair{kConcave, plan::Hammer::concave}}) {
         if (!(rise & bit)) continue;
         LoggedStrike s;

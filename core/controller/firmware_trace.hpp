@@ -17,6 +17,14 @@
 
 namespace tactus::controller {
 
+// One edge on the step and hammer pins, at the emulator's clock.
+struct PinEdge {
+    enum class Kind { carriage_step, feed_step, hammer_down, hammer_up };
+    Kind kind;
+    double time_s;
+    bool operator==(const PinEdge&) const = default;
+};
+
 class FirmwareTrace {
 public:
     // steps/mm map positions to millimetres for the log (x_mm, y_mm).
@@ -26,6 +34,11 @@ public:
     // VCD text in any pieces (a growing file read as it grows); appends the
     // strikes whose hammer edge it completes. Fails on a dump without port 1.
     Result<void> push(std::string_view text, std::vector<LoggedStrike>& out);
+
+    // Also keep every rising STEP edge and every hammer edge (edges()), to
+    // check the firmware's step times against a plan's.
+    void keep_edges(bool keep) { keep_edges_ = keep; }
+    [[nodiscard]] const std::vector<PinEdge>& edges() const { return edges_; }
 
     [[nodiscard]] std::int32_t carriage_step() const { return carriage_; }
     [[nodiscard]] std::int32_t feed_step() const { return feed_; }
@@ -43,6 +56,8 @@ private:
     std::uint16_t sheet_ = 0;
     std::int32_t carriage_ = 0, feed_ = 0;
     bool in_header_ = true;
+    bool keep_edges_ = false;
+    std::vector<PinEdge> edges_;
 };
 
 }  // namespace tactus::controller

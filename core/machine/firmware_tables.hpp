@@ -31,6 +31,13 @@ struct FirmwareTables {
     std::uint32_t table_id = 0;  // CRC-32 of the tables, as HELLO_REPLY reports it
     RampTable carriage;
     RampTable feed;
+    // Machine cycles from the last timer event of one phase (a hammer going
+    // up, the feed's last step) to the start of the next move: its first step
+    // comes start_gap_ticks + T[0] after that event. The firmware schedules
+    // every phase from its timer (firmware/PROTOCOL-v3.md, "Timing"): the
+    // settle ends settle_ticks after a move's last step, the hammer goes up
+    // hammer_ticks after it came down, exactly.
+    std::uint32_t start_gap_ticks = 0;
     bool operator==(const FirmwareTables&) const = default;
 };
 
@@ -41,19 +48,5 @@ struct StrikeTiming {
     std::uint16_t hammer_ticks = 0;
     bool operator==(const StrikeTiming&) const = default;
 };
-
-// The reference firmware's executor runs in its main loop, between the timed
-// phases the step interrupt runs: these are the machine cycles it adds, as
-// measured in s51 (tests/link/firmware_emulator_e2e_test.cpp, from the pin
-// trace, mean of 38 to 44 strikes at 9600 baud). They are not exact: the main
-// loop also decodes frames, so each varies by about +-300 cycles. The planner
-// adds them so a plan's sheet time is the emulated one; the step times inside
-// a move are the table's exactly.
-struct FirmwareLatency {
-    std::uint16_t move_start_ticks = 1840;   // from the previous phase's end to a move's start (building its phases)
-    std::uint16_t settle_start_ticks = 550;  // from a move's last step to the settle's start
-    std::uint16_t hammer_end_ticks = 385;    // the hammer stays on this much longer than CONFIGURE's pulse
-};
-inline constexpr FirmwareLatency kFirmwareLatency{};
 
 }  // namespace tactus::machine

@@ -8,6 +8,7 @@
 #include "plan/geometry.hpp"
 #include "motion/motion.hpp"
 #include "motion/table_move.hpp"
+#include "estimate/step_train.hpp"
 #include "machine/limits.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
@@ -128,6 +129,26 @@ Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const moti
     return it->second;
 }
 
+const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, const motion::StepMove& m) {
+    auto it = table_choice_.find(steps);
+    if (it != table_choice_.end()) return it->second;
+    // The head model runs on the step train the firmware fires (its table's
+    // step times, the settle at rest after them), not on an ideal S-curve.
+    estimate::TuneChoice c;
+    c.steps = steps;
+    c.distance_mm = steps / p_.carriage.steps_per_mm;
+    c.duration_s = m.duration_s;
+    c.settle_s = static_cast<double>(m.settle_ticks) / machine::kTickHz;
+    if (steps > 0) {
+        const auto train = estimate::step_train_shape(m.segments, p_.carriage.steps_per_mm, m.duration_s);
+        c.residual_um = tuner_->nominal_residual_um(train);
+        c.worst_residual_um = tuner_->worst_residual_um(train);
+    }
+    c.within_tolerance = c.worst_residual_um <= p_.vibration.tolerance_um;
+    c.why = "the firmware's table move (its ramp table, no choice)";
+    return table_choice_.emplace(steps, std::move(c)).first->second;
+}
+
 Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::feed_move(std::uint32_t steps) {
     auto it = feed_cache_.find(steps);
     if (it == feed_cache_.end() && o_.firmware) {
@@ -158,10 +179,12 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     sheet.index = sheet_number;
     const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
     const motion::Limits carriage_lim = limits(p_.carriage), feed_lim = limits(p_.feed);
-    constexpr auto lat = machine::kFirmwareLatency;
     const auto ticks = [](double n) { return n / machine::kTickHz; };
-    const double dwell =
-        o_.firmware ? ticks(strike_.hammer_ticks + lat.hammer_end_ticks) : p_.head.dwell_s;
+    // v3: the firmware starts each move START_GAP cycles after the last timer
+    // event before it, and times settle and hammer from the timer too
+    // (firmware/PROTOCOL-v3.md, "Timing"), so these sums are its clock.
+    const double gap = o_.firmware ? ticks(o_.firmware->start_gap_ticks) : 0.0;
+    const double dwell = o_.firmware ? ticks(strike_.hammer_ticks) : p_.head.dwell_s;
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     const auto& h = *hits;
     for (std::size_t first = 0; first < h.size();) {
@@ -181,8 +204,7 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         pass.feed = *fm->first;
         pass.segments += pass.feed.segments.size();
         feed_pos = pass.feed_step;
-        const double feed_time =
-            fm->second->duration + (o_.firmware && feed_steps > 0 ? ticks(lat.move_start_ticks) : 0.0);
+        const double feed_time = fm->second->duration + (feed_steps > 0 ? gap : 0.0);
         const double feed_bound = motion::jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
 
         const double t0 = clock_s_;
@@ -204,17 +226,18 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                 head_cur_ = target;
             }
             motor_step_ += n;
-            // Table moves (v3) are not tuned: no shape to choose, no residual estimated.
+            // Table moves (v3) are not tuned (no shape to choose); their
+            // residual is estimated on the table's step train.
             estimate::TuneChoice choice;
             choice.within_tolerance = true;
             Result<motion::StepMove> sm;
             double move_time = 0;
             if (o_.firmware) {
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), {});
-                // The firmware's main loop between phases (machine::kFirmwareLatency).
-                if (sm)
-                    move_time = sm->duration_s + ticks(lat.settle_start_ticks) +
-                                (n != 0 ? ticks(lat.move_start_ticks) : 0.0);
+                if (sm) {
+                    move_time = sm->duration_s + (n != 0 ? gap : 0.0);
+                    choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
+                }
             } else {
                 auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
                 if (!tuned) return std::unexpected(tuned.error());

@@ -25,9 +25,10 @@ struct PlanOptions {
     // Plan for the reference firmware (protocol v3): every move a table move
     // of its ramp tables, the feed before the carriage (never overlapped),
     // the strike timing of profile::strike_timing, the backlash rule the
-    // firmware applies (after HOME the carriage last moved toward home). The
-    // plan's step times are then the firmware's. Residuals are not estimated
-    // for table moves (they stay 0).
+    // firmware applies (after HOME the carriage last moved toward home), and
+    // its start gap before each move (FirmwareTables::start_gap_ticks). The
+    // plan's step times are then the firmware's, to the machine cycle, and
+    // the residuals are estimated on those step trains.
     std::optional<machine::FirmwareTables> firmware;
     // plan_job stops, failing with where == kTooManyPassesWhere, as soon as
     // the plan has more passes than this (0: no limit), so a job that cannot
@@ -51,6 +52,7 @@ private:
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
     Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
     Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> feed_move(std::uint32_t steps);
+    const estimate::TuneChoice& table_move_choice(std::uint32_t steps, const motion::StepMove& m);
 
     profile::PrinterProfile p_;
     PlanOptions o_;
@@ -58,6 +60,7 @@ private:
     motion::StepAxis carriage_axis_, feed_axis_;
     std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
     std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
+    std::unordered_map<std::uint32_t, estimate::TuneChoice> table_choice_;  // v3: residuals of table moves
     JobPlan totals_;
     // Machine state carried across passes and sheets.
     double clock_s_ = 0;

@@ -61,6 +61,12 @@ Result<machine::FirmwareTables> parse_firmware_tables(std::string_view text) {
     if (!f) return std::unexpected(f.error());
     t.carriage = std::move(*c);
     t.feed = std::move(*f);
+    const auto gap = j.find("start_gap_ticks");
+    if (gap == j.end() || !gap->is_number_unsigned() || gap->get<std::uint64_t>() == 0 ||
+        gap->get<std::uint64_t>() > 0xFFFF)
+        return fail("must be 1..65535 machine cycles (a ramp.json from this firmware's gen-ramp.py has it)",
+                    "field start_gap_ticks");
+    t.start_gap_ticks = static_cast<std::uint32_t>(gap->get<std::uint64_t>());
     return t;
 }
 

@@ -2,9 +2,37 @@
 #include "decoder.h"
 
 #include "crc16.h"
+#include "link.h"
 
 static uint8_t rx_fill; /* bytes stored from LEN on, at fw_buf[fw_ops_end] */
 static uint8_t rx_sync; /* a SYNC was seen: collecting a candidate frame */
+/* The frame CRC over LEN..PAYLOAD and a DATA payload's check over its ops,
+ * kept up to date byte by byte as the bytes arrive: computed whole when the
+ * frame ends, they took about 10,000 machine cycles of one main-loop pass,
+ * long enough to make the executor late for a phase (the schedule is the
+ * timer's only if the main loop starts each phase within a few thousand
+ * cycles; PROTOCOL-v3.md, "Timing"). */
+static uint16_t rx_crc, rx_chk;
+
+/* Folds the stored byte at index i (0 = LEN) into the running checks. */
+static void fold(uint8_t i, uint8_t b) {
+    const FW_IDATA uint8_t *r = fw_buf + fw_ops_end;
+    if (i == 0) {
+        rx_crc = 0xFFFF;
+        rx_chk = 0xFFFF;
+    }
+    if (i < (uint8_t)(r[0] + 3)) rx_crc = crc16_update(rx_crc, b);
+    /* Ops: payload bytes 3.. up to the 2-byte check at the payload's end. */
+    if (i >= 3 && r[2] == T_DATA && i < (uint8_t)(r[0] + 1)) rx_chk = pass_crc_update(rx_chk, b);
+}
+
+/* After the stored bytes changed under the candidate (a rescan). */
+static void refold(void) {
+    uint8_t i;
+    for (i = 0; i < rx_fill; ++i) fold(i, fw_buf[fw_ops_end + i]);
+}
+
+uint16_t fw_rx_data_check(void) { return rx_chk; }
 
 void fw_rx_reset(void) {
     rx_fill = 0;
@@ -35,6 +63,7 @@ static void resync(uint8_t skip) {
     move_down(r, r + i, (uint8_t)(rx_fill - i));
     rx_fill = (uint8_t)(rx_fill - i);
     rx_sync = 1;
+    refold();
 }
 
 /* Evaluates the stored bytes until a frame needs more of them. */
@@ -55,8 +84,7 @@ static inline void scan(void) {
             continue;
         }
         if (rx_fill < total) return;
-        if (crc16_block(r, (uint8_t)(total - 2), 0xFFFF) !=
-            (uint16_t)(((uint16_t)r[total - 2] << 8) | r[total - 1])) {
+        if (rx_crc != (uint16_t)(((uint16_t)r[total - 2] << 8) | r[total - 1])) {
             resync(0); /* from the LEN byte: it may itself be a SYNC */
             continue;
         }
@@ -89,6 +117,7 @@ void fw_rx_byte(uint8_t b) {
     }
     /* scan() rejects a LEN whose frame would not fit, so this never overflows. */
     fw_buf[fw_ops_end + rx_fill] = b;
+    fold(rx_fill, b);
     ++rx_fill;
     scan();
 }

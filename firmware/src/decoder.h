@@ -27,6 +27,9 @@ void fw_rx_reset(void);
 uint8_t fw_rx_busy(void);
 /* Bytes currently stored in the receive area. */
 uint8_t fw_rx_fill(void);
+/* The DATA check over the ops of the frame fw_frame() is handed (a DATA
+ * frame's payload less its last two bytes), computed as its bytes arrived. */
+uint16_t fw_rx_data_check(void);
 
 
 #endif

@@ -215,11 +215,11 @@ static void fetch(void) {
              * closes it at step 0, which the emulated carriage reaches after
              * exactly fw_carriage steps (it loses none). Same rate, same pin. */
             if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
-                move_constant(PIN_CSTEP, (uint16_t)fw_carriage, cfg_home_iv);
+                move_constant(PIN_CSTEP, (uint16_t)fw_carriage);
             }
             mv_limit = 1;
 #else
-            move_home(cfg_travel + 2 * C_GRID, cfg_home_iv);
+            move_home(cfg_travel + 2 * C_GRID);
 #endif
             break;
         case OP_SEEK_CARRIAGE:
@@ -243,7 +243,7 @@ static void fetch(void) {
                 c_neg = d < 0;
                 fw_carriage = target;
             }
-            move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d), cfg_home_iv);
+            move_constant(feed ? PIN_FSTEP : PIN_CSTEP, (uint16_t)(d < 0 ? -d : d));
             xs = X_SEEK;
             break;
         }
@@ -298,26 +298,18 @@ void exec_poll(void) {
                 fault(F_LIMIT);
                 return;
             }
+            /* The hammer comes down at the settle's end, from the timer. */
             xs = X_SETTLE;
-            if (cfg_settle) {
-                wait_ticks(cfg_settle);
-                return;
-            }
-            /* fall through */
+            hammer_down_after_settle(fw_skip ? 0 : (ham_ccv ? PIN_CCV : PIN_CVX));
+            return;
         case X_SETTLE:
+            /* Down (or, made before a reset, passed over at the same pace). */
             xs = X_DWELL;
-            if (fw_skip) {
-                --fw_skip; /* made before the reset: pass over it */
-                return;
-            }
-            if (ham_ccv) HAM_CCV = 1;
-            else HAM_CVX = 1;
-            wait_ticks(cfg_hammer);
-            ++fw_strikes_in_pass;
+            if (fw_skip) --fw_skip;
+            else ++fw_strikes_in_pass;
+            hammer_up_after_pulse();
             return;
         case X_DWELL:
-            HAM_CVX = 0;
-            HAM_CCV = 0;
             /* Both hammers must be back before the head moves on. */
             if (!HAM_SENSE) {
                 fault(F_HAMMER);

@@ -353,14 +353,14 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
 
 static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
     uint8_t i;
-    uint16_t c = 0xFFFF;
+    uint16_t c;
     FW_IDATA uint8_t *p = frame + 3;
     if (len < 3 || len > FW_MAX_DATA) {
         nak(NAK_BAD_PAYLOAD);
         return;
     }
     len = (uint8_t)(len - 2); /* the ops; the check follows them */
-    for (i = 0; i < len; ++i) c = pass_crc_update(c, p[i]);
+    c = fw_rx_data_check(); /* folded in as the bytes arrived (decoder.c) */
     if (c != (uint16_t)(((uint16_t)p[len] << 8) | p[len + 1])) {
         /* The frame CRC passed but the DATA check did not: an error the frame
          * CRC missed. Dropped like a bad frame (its SEQ cannot be trusted);

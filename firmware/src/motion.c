@@ -3,6 +3,7 @@
 
 #include <8052.h>
 
+#include "link.h"
 #include "ramp.h"
 
 /* The phase program step.asm walks (see the kinds there). */
@@ -14,16 +15,19 @@
 #define K_SLOW_DN 5
 #define K_SCOUNT 6
 #define K_HOME 7
+#define K_HOFF 8
+#define K_LAST 9
 
 /* Read by step.asm. */
 __data uint8_t c_cl, c_ch, c_ui, c_di, s_pl, s_ph, s_pin, s_kind, mv_p;
-volatile __bit m_slow, m_cr, m_fu, m_upcr, mv_done, mv_limit;
+volatile __bit m_slow, m_cr, m_fu, m_upcr, m_updn, mv_done, mv_limit;
 /* Seven phases at most: slow up, fast up, cruise, fast down, slow down, the
  * last two steps, and the end (one byte). */
 static __idata uint8_t prog[6 * 5 + 1];
 static __idata uint8_t *wp;
 
 void nextph(void);
+void timer_go(uint16_t x);
 
 static void rec(uint8_t kind, uint16_t count, uint16_t ptr) {
     wp[0] = kind;
@@ -37,20 +41,20 @@ static void rec(uint8_t kind, uint16_t count, uint16_t ptr) {
 
 static uint16_t rd16(FW_CODE uint8_t *p) { return (uint16_t)(((uint16_t)p[0] << 8) | p[1]); }
 
-/* Starts the timer with the first two intervals (as reload values) loaded:
- * from here on the interrupt writes each interval two steps ahead. */
-static void start(uint16_t first, uint16_t second) {
-    TR2 = 0;
+/* Starts the program in prog: its first event `x` cycles after the last
+ * event of the program before (step.asm, timer_go), the second `second` (a
+ * reload value) after that; from there on the interrupt writes each interval
+ * two steps ahead. */
+static void start(uint16_t x, uint16_t second) {
+    ET2 = 0;
     mv_done = 0;
     mv_limit = 0;
     mv_p = (uint8_t)prog;
     nextph();
-    TL2 = (uint8_t)first;
-    TH2 = (uint8_t)(first >> 8);
     RCAP2L = (uint8_t)second;
     RCAP2H = (uint8_t)(second >> 8);
-    TF2 = 0;
-    if (!mv_done) TR2 = 1;
+    timer_go(x < 64 ? 64 : x);
+    ET2 = 1;
 }
 
 void motion_init(void) {
@@ -118,9 +122,10 @@ static void table_move(uint16_t n) {
             if (hi) emit_dn(hi);
         }
     }
-    rec(t_k <= t_r ? K_COUNT : K_SCOUNT, n < 2 ? n : 2, 0);
+    rec(K_LAST, n < 2 ? n : 2, 0);
     rec(K_END, 1, 0);
-    start(rd16(t_slow), n >= 2 ? rd16(t_slow + 2) : 0xFFFF);
+    /* Step 1 comes START_GAP + T[0] after the last event before the move. */
+    start((uint16_t)(START_GAP - rd16(t_slow)), n >= 2 ? rd16(t_slow + 2) : 0);
 }
 
 void move_carriage(uint16_t n) {
@@ -139,25 +144,33 @@ void move_feed(uint16_t n) {
     table_move(n);
 }
 
-/* One phase of `kind` and the end; the timer reloads a constant interval. */
-static void one_phase(uint8_t kind, uint16_t n, uint16_t interval) {
+/* One phase of `kind` and the end. */
+static void one_phase(uint8_t kind, uint16_t n) {
     wp = prog;
     rec(kind, n, 0);
     rec(K_END, 1, 0);
-    start((uint16_t)(0 - interval), (uint16_t)(0 - interval));
 }
 
-void move_constant(uint8_t pin, uint16_t n, uint16_t interval) {
+void move_constant(uint8_t pin, uint16_t n) {
     s_pin = pin;
-    one_phase(K_SCOUNT, n, interval);
+    one_phase(K_SCOUNT, n);
+    start(START_GAP + cfg_home_iv, (uint16_t)(0 - cfg_home_iv));
 }
 
-void move_home(uint16_t n, uint16_t interval) {
+void move_home(uint16_t n) {
     s_pin = PIN_CSTEP;
-    one_phase(K_HOME, n, interval);
+    one_phase(K_HOME, n);
+    start(START_GAP + cfg_home_iv, (uint16_t)(0 - cfg_home_iv));
 }
 
-void wait_ticks(uint16_t ticks) {
+void hammer_down_after_settle(uint8_t pins) {
+    s_pin = pins;
+    one_phase(K_SCOUNT, 1);
+    start(cfg_settle, 0);
+}
+
+void hammer_up_after_pulse(void) {
     s_pin = 0;
-    one_phase(K_SCOUNT, 1, ticks);
+    one_phase(K_HOFF, 1);
+    start(cfg_hammer, 0);
 }

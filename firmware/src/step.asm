@@ -23,10 +23,23 @@
 ;   kind 5 SLOW_DN  the same, pointer falling
 ;   kind 6 SCOUNT   step on s_pin (none if 0), nothing written: feed cruise, delays
 ;   kind 7 HOME     step on s_pin until the limit switch (P3.3, active low)
+;   kind 8 HOFF     both hammers off (no step): the end of the hammer pulse
+;   kind 9 LAST     step on s_pin, RCAP2 := 0: a move's last two steps
+;
+; Every phase is scheduled from the timer, never from when the main loop
+; gets to it: a program's last event reloads the counter from 0 (LAST, or a
+; one-event phase started with RCAP2 = 0), and the timer keeps running after
+; END, so the counter says how many cycles ago that event was. timer_go then
+; starts the next program at an exact offset from it (the main loop only has
+; to get there before that offset runs out). After 65,536 idle cycles the
+; interrupt stops the timer: the next program starts from when it is given.
+; A hammer comes down at a timer event too (a one-event SCOUNT phase whose
+; s_pin is the hammer), and goes up at the next (HOFF).
         .module step
         .globl  _t2_isr
         .globl  _nextph
-        .globl  _m_slow, _m_cr, _m_fu, _m_upcr, _mv_done, _mv_limit
+        .globl  _timer_go
+        .globl  _m_slow, _m_cr, _m_fu, _m_upcr, _m_updn, _mv_done, _mv_limit
         .globl  _c_cl, _c_ch, _c_ui, _c_di, _s_pl, _s_ph, _s_pin, _s_kind, _mv_p
 
 ACC     = 0xE0
@@ -38,22 +51,40 @@ RCAP2L  = 0xCA
 RCAP2H  = 0xCB
 TF2     = 0xCF          ; bit T2CON.7
 TR2     = 0xCA          ; bit T2CON.2
+TL2     = 0xCC
+TH2     = 0xCD
+EA      = 0xAF          ; bit IE.7
 CSTEP   = 0x90          ; bit P1.0: carriage STEP
 LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
+        .include "ramp_eq.inc"  ; RAMP_DN_CL, RAMP_DN_CH, RAMP_DN_TOP (gen-ramp.py)
 
         .area CSEG (CODE)
 
+; Every edge (carriage and feed steps, a hammer coming down) is made the same
+; number of cycles after its timer event on every path, so the pins keep the
+; timer's schedule exactly (up to the instruction the interrupt waits for).
 _t2_isr:
-        jnb     _m_slow, 1$             ; 2  (the slow path is beyond a relative jump)
-        ljmp    slow
-1$:        setb    CSTEP                   ; 1  step edge: the driver steps on the rise
+        jb      _m_slow, 2$             ; 2
+        nop                             ; 1  the edge on the same cycle as the slow path's
+        setb    CSTEP                   ; 1  step edge: the driver steps on the rise
         clr     TF2                     ; 1
         jnb     _m_cr, 10$              ; 2
         djnz    _c_cl, 99$              ; 2  cruise: RCAP2 already holds T[R]
         djnz    _c_ch, 99$
-        lcall   _nextph
+        ; The cruise ends at full speed: loading the descent through _nextph
+        ; (about 50 cycles) would hold the next edges back. A cruise is only
+        ; in a whole ramp, so the descent is always the whole fast table
+        ; (ramp_eq.inc), and the switch to cruise left mv_p past its record.
+        clr     _m_cr
+        mov     _c_cl, #RAMP_DN_CL
+        mov     _c_ch, #RAMP_DN_CH
+        mov     _c_di, #RAMP_DN_TOP
 99$:    clr     CSTEP                   ; 1
         reti                            ; 2
+2$:     xch     a, _s_pin               ; 1  step edge or hammer down (none for a
+        orl     P1, a                   ; 1  delay); A and PSW are kept
+        xch     a, _s_pin               ; 1
+        ljmp    slow                    ; 2  (beyond a relative jump)
 
 10$:    jb      _m_fu, 13$              ; 2
         ljmp    fastdn                  ; 2
@@ -72,14 +103,26 @@ _t2_isr:
         ; cruise through _nextph (about 55 cycles) here would let the next two
         ; timer events fall inside this interrupt and one would be lost.
         ; _nextph prepared the cruise when it loaded this phase: switch inline.
-        jnb     _m_upcr, 14$
-        clr     _m_upcr
+        jnb     _m_upcr, 15$
         clr     _m_fu
         setb    _m_cr
         mov     _c_cl, _s_pl
         mov     _c_ch, _s_ph
         mov     _mv_p, _s_kind
         sjmp    12$
+        ; A short move turns at its middle, also near full speed: the
+        ; descent _nextph prepared, inline.
+        ; (m_upcr and m_updn need no clearing: _nextph sets both whenever
+        ; it loads a fast ascent, the only phase that reads them.) The turn
+        ; comes at 46-47 cycles a step: this path takes 45.
+15$:    jnb     _m_updn, 14$
+        clr     _m_fu
+        mov     _c_cl, _s_pl
+        inc     _c_ch                   ; 0 -> 1: a fast descent is at most 256 steps
+        mov     _c_di, _s_ph
+        mov     _mv_p, _s_kind
+        clr     CSTEP
+        reti
 14$:    lcall   _nextph
 12$:    clr     CSTEP                   ; 1
         reti                            ; 2
@@ -99,15 +142,14 @@ fastdn: push    ACC
         reti
 
 ; Everything that is not a fast carriage step: 16-bit tables, the feed,
-; homing, delays. Intervals here are at least 120 ticks.
+; homing, delays, hammers. Intervals here are at least 120 ticks.
 slow:   push    PSW
         push    ACC
         push    DPL
         push    DPH
         clr     TF2
-        mov     a, _s_pin
-        orl     P1, a                   ; step edge (no pin for a delay)
         mov     a, _s_kind
+        jz      70$                     ; idle after END (s_pin is 0)
         cjne    a, #4, 30$
         lcall   rd16                    ; SLOW_UP
         inc     dptr
@@ -124,23 +166,72 @@ slow:   push    PSW
         subb    a, #0
         mov     _s_ph, a
         sjmp    50$
-40$:    cjne    a, #7, 50$
+40$:    cjne    a, #7, 45$
         jb      LIMIT, 50$              ; HOME: switch not reached yet
         clr     TR2                     ; reached: stop here
         setb    _mv_limit
         setb    _mv_done
         sjmp    60$
+45$:    cjne    a, #8, 46$
+        anl     P1, #0xCF               ; HOFF: both hammers up
+        sjmp    50$
+46$:    cjne    a, #9, 50$
+        clr     a                       ; LAST: the counter restarts from 0
+        mov     RCAP2L, a               ; at the move's last step
+        mov     RCAP2H, a
 50$:    djnz    _c_cl, 60$
         djnz    _c_ch, 60$
         lcall   _nextph
-60$:    mov     a, _s_pin
-        cpl     a
-        anl     P1, a
+60$:    anl     P1, #0xFA               ; step pins low (the hammers stay)
         pop     DPH
         pop     DPL
         pop     ACC
         pop     PSW
         reti
+70$:    clr     TR2                     ; 65,536 cycles idle: no reference now
+        sjmp    60$
+
+; void timer_go(uint16_t x): runs the program nextph loaded, its first event
+; x machine cycles after the last event of the one before (DPTR = x). The
+; counter is stopped for exactly FROZEN cycles while it is moved forward, so
+; the offset holds to the cycle. Called with the timer interrupt disabled.
+; Late (the main loop came after x) or no reference: the first event comes x
+; cycles from now.
+FROZEN  = 9
+_timer_go:
+        clr     c
+        mov     a, #FROZEN
+        subb    a, DPL
+        mov     r2, a                   ; adj = FROZEN - x (mod 65536)
+        clr     a
+        subb    a, DPH
+        mov     r3, a
+        clr     EA
+        jnb     TR2, 80$                ; stopped: no reference
+        jb      TF2, 80$                ; the idle overflow came first
+        clr     TR2                     ; frozen from here ...
+        mov     a, TL2
+        add     a, r2
+        mov     TL2, a
+        mov     a, TH2
+        addc    a, r3
+        mov     TH2, a
+        jc      80$                     ; late: it would wrap
+        setb    TR2                     ; ... to here
+        setb    EA
+        ret
+80$:    clr     TR2
+        clr     c                       ; counter := -x
+        clr     a
+        subb    a, DPL
+        mov     TL2, a
+        clr     a
+        subb    a, DPH
+        mov     TH2, a
+        clr     TF2
+        setb    TR2
+        setb    EA
+        ret
 
 ; RCAP2 := the big-endian reload at s_ph:s_pl; DPTR is left at its low byte.
 rd16:   mov     DPL, _s_pl
@@ -179,7 +270,7 @@ _nextph:
         clr     _m_fu
         setb    _m_slow
         jnz     1$
-        clr     TR2                     ; END
+        mov     _s_pin, #0              ; END: the timer runs on (timer_go)
         setb    _mv_done
         sjmp    9$
 1$:     cjne    a, #1, 2$
@@ -188,17 +279,31 @@ _nextph:
         setb    _m_fu
         ; A cruise next: keep its counts and the record after it in s_pl,
         ; s_ph, s_kind (unused on the fast paths) for the inline switch.
+        ; A fast descent next (a short move's turn): its count low byte,
+        ; its index and the record after it, the same way.
         clr     _m_upcr
+        clr     _m_updn
         mov     a, @r0
-        cjne    a, #2, 9$
+        cjne    a, #2, 8$
         inc     r0
         mov     _s_pl, @r0
         inc     r0
         mov     _s_ph, @r0
         mov     a, _mv_p
-        add     a, #5
+        add     a, #10                  ; past the cruise and the descent after it
         mov     _s_kind, a
         setb    _m_upcr
+        sjmp    9$
+8$:     cjne    a, #3, 9$
+        inc     r0
+        mov     _s_pl, @r0              ; count low
+        inc     r0
+        inc     r0
+        mov     _s_ph, @r0              ; index + RAMP_FAST_BIAS
+        mov     a, _mv_p
+        add     a, #5
+        mov     _s_kind, a
+        setb    _m_updn
         sjmp    9$
 2$:     cjne    a, #2, 3$
         clr     _m_slow                 ; COUNT (carriage)

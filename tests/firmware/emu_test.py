@@ -8,8 +8,9 @@ its port pins (VCD) must be the ones the job asks for.
 
 Checks: every hammer edge at the carriage and feed step the job implies
 (counted from the step and direction pins, backlash included); every
-carriage step interval equal to the ramp table's (firmware/PROTOCOL-v3.md,
-"Moves"), within the interrupt-latency jitter; the controller's counts
+step and hammer edge on the firmware's schedule (firmware/PROTOCOL-v3.md,
+"Timing": table moves, the start gap, settle and hammer from the timer), to
+within the instruction the interrupt waits for; the controller's counts
 (executed passes, state) as ACKs report them; paper out reported as a fault;
 the same job with bit flips at 1e-2 per byte both ways (the host re-sends on
 silence): every strike still exact; the stack never full.
@@ -115,7 +116,62 @@ def table_interval(k, n):
     return tab[min(k, n + 2 - k, r + 1) - 1]
 
 
-def run_job(tmp, noise=0.0):
+def schedule(passes, settle, hammer):
+    """The timer events of the job on the firmware's schedule
+    (firmware/PROTOCOL-v3.md, "Timing"): ("C"/"F" step, "H" hammer down),
+    in machine cycles from the event before the first pass."""
+    c, f, gap = RAMP["carriage"], RAMP["feed"], RAMP["start_gap_ticks"]
+    ev, t = [], 0
+    c_neg, f_neg = True, False
+
+    def move(kind, tab, n, t):
+        t += gap
+        for k in range(1, n + 1):
+            t += tab[min(k, n + 2 - k, len(tab)) - 1]
+            ev.append((kind, t))
+        return t
+    for p in passes:
+        if p["feed"]:
+            neg = p["feed"] < 0
+            n = abs(p["feed"]) * f["grid_steps"] + (f["backlash_steps"] if neg != f_neg else 0)
+            f_neg = neg
+            t = move("F", f["intervals"], n, t)
+        for i, (_, d) in enumerate(p["entries"]):
+            units, neg = (p["first"], p["first_neg"]) if i == 0 else (d, p["sweep_neg"])
+            if units:
+                n = units * c["grid_steps"] + (c["backlash_steps"] if neg != c_neg else 0)
+                c_neg = neg
+                t = move("C", c["intervals"], n, t)
+            t += settle
+            ev.append(("H", t))
+            t += hammer
+    return ev
+
+
+def got_edges(vcd):
+    """Step and hammer-down edges from the pin trace, from the first step."""
+    out, prev = [], 0xFF
+    for t, v in pins(vcd):
+        rise = v & ~prev
+        for bit, kind in ((0x01, "C"), (0x04, "F"), (0x30, "H")):
+            if rise & bit and (out or kind != "H"):
+                out.append((kind, t / CYCLE))
+        prev = v
+    return out
+
+
+def schedule_spread(passes, settle, hammer, got):
+    want = schedule(passes, settle, hammer)
+    if [k for k, _ in want] != [k for k, _ in got]:
+        print("edges", len(got), "!= the schedule's", len(want))
+        return float("inf")
+    d = [round(g - w) for (_, w), (_, g) in zip(want, got)]
+    spread = max(d) - min(d)
+    print(f"{len(d)} step and hammer edges vs the firmware's schedule: the same to within {spread} cycles")
+    return spread
+
+
+def run_job(tmp, noise=0.0, settle=7650, hammer=3686):
     vcd = tmp / "pins.vcd"
     emu = Emulator(tmp, vcd=vcd, noise=noise)
     try:
@@ -123,7 +179,7 @@ def run_job(tmp, noise=0.0):
         check(hr.payload[0] == 3, "HELLO_REPLY reports protocol 3")
         check(hr.payload[7:11].hex() == RAMP["table_id"], "HELLO_REPLY reports the ramp table's identity")
         max_data = hr.payload[5]
-        emu.link.configure(travel=17760, home_iv=288, hammer=3686, settle=920)
+        emu.link.configure(travel=17760, home_iv=288, hammer=hammer, settle=settle)
         passes = [
             dict(feed=2, first=100, first_neg=False, sweep_neg=False,
                  entries=[(False, 0), (False, 10), (True, 14), (False, 10), (False, 200)]),
@@ -172,14 +228,15 @@ def run_job(tmp, noise=0.0):
     close = sum(1 for d in dev if abs(d) <= 4)
     print(f"first move: {n} steps; step intervals vs the table: {close} of {len(dev)} within 4 cycles, "
           f"worst {worst:.1f}; first to last step {total:+.1f} cycles from the table's sum")
-    # The timer reloads in hardware, so the schedule never drifts: the span of
-    # the whole move equals the table's sum but for the two edges' latency.
-    # Each edge comes 7 (fast path) or 19 (slow path) cycles after its timer
-    # event, plus up to 3 for the instruction the interrupt waits for; a phase
-    # change at full speed can hold one edge back further (firmware/PROTOCOL-v3.md, "Timing").
-    check(abs(total) <= 16, f"no drift over the move ({total:+.1f} cycles)")
-    check(close >= 0.98 * len(dev), f"98 % of step intervals within 4 cycles ({close} of {len(dev)})")
-    check(worst <= 48, f"every step interval within 48 cycles of the table (worst {worst:.1f})")
+    # The timer reloads in hardware and every phase change inside a move is
+    # made within one step's interval, so each edge comes the same number of
+    # cycles after its timer event; the only jitter is the instruction the
+    # interrupt waits for (on an 8051 at most 3 cycles, or one instruction more
+    # after a RETI or a write to IE: 6 at most; 0-1 measured mostly).
+    check(abs(total) <= 6, f"no drift over the move ({total:+.1f} cycles)")
+    check(worst <= 6, f"every step interval within 6 cycles of the table (worst {worst:.1f})")
+    check(schedule_spread(passes, settle, hammer, got_edges(vcd)) <= 6,
+          "every step and hammer edge of the job on the firmware's schedule")
     return got
 
 

@@ -12,11 +12,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/file_io.hpp"
+#include "controller/firmware_trace.hpp"
 #include "controller/sim_controller.hpp"
+#include "machine/limits.hpp"
+#include "motion/steps.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
@@ -32,6 +37,41 @@ using test::Process;
 
 // The bundled short sample the README's main job embosses on the firmware.
 const std::string kNote = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+
+using Kind = controller::PinEdge::Kind;
+
+// A step or hammer edge the plan implies, in machine cycles (timer ticks).
+struct PlannedEdge {
+    Kind kind;
+    long long tick;
+};
+
+// Every carriage and feed step and every hammer coming down, at the plan's
+// times: a carriage move's steps are its table intervals, ending its settle
+// before the strike; a pass's feed starts the firmware's start gap after the
+// event before the pass (firmware/PROTOCOL-v3.md, "Timing").
+std::vector<PlannedEdge> planned_edges(const plan::JobPlan& job, const machine::FirmwareTables& t) {
+    const auto tick = [](double s) { return std::llround(s * machine::kTickHz); };
+    std::vector<PlannedEdge> out;
+    double clock = 0;  // the planner's clock at the start of each pass
+    for (const auto& sheet : job.sheets)
+        for (const auto& pass : sheet.passes) {
+            const long long start = tick(clock);
+            if (pass.feed.steps != 0)
+                for (const auto s : motion::expand_steps(pass.feed.segments))
+                    out.push_back({Kind::feed_step, start + static_cast<long long>(t.start_gap_ticks) + s});
+            for (std::size_t k = 0; k < pass.strikes.size(); ++k) {
+                const auto& m = pass.moves[k];
+                const long long strike = tick(pass.strikes[k].time_s);
+                const auto steps = motion::expand_steps(m.segments);
+                const long long last = strike - static_cast<long long>(m.settle_ticks);
+                for (const auto s : steps) out.push_back({Kind::carriage_step, last - steps.back() + s});
+                out.push_back({Kind::hammer_down, strike});
+            }
+            clock += pass.duration_s;
+        }
+    return out;
+}
 
 struct EmulatorRun {
     int exit_code = -1;
@@ -90,11 +130,19 @@ protected:
     fs::path dir_;
 };
 
-TEST_F(FirmwareEndToEnd, StrikesReadFromThePinsAreThePlan) {
+// The strikes the pins show are the plan's, and every step and hammer edge
+// comes at the plan's time, to the machine cycle: all edges the same number of
+// cycles after the plan's time (the interrupt's own latency), but for the
+// instruction the interrupt waits for (on an 8051 at most 3 cycles, or one
+// instruction more after a RETI or a write to IE: 6 at most). On the firmware
+// that started each phase when its main loop got there, edges drifted by
+// thousands of cycles from phase to phase.
+TEST_F(FirmwareEndToEnd, StrikesAndStepEdgesReadFromThePinsAreThePlan) {
     const auto job = planned();
     const auto want = controller::planned_strikes(job);
     ASSERT_FALSE(want.empty());
-    const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES);
+    const auto vcd = dir_ / "pins.vcd";
+    const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES, {"--pin-trace", vcd.string()});
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("embossed " + std::to_string(job.sheets[0].passes.size()) + " passes"),
               std::string::npos)
@@ -108,6 +156,40 @@ TEST_F(FirmwareEndToEnd, StrikesReadFromThePinsAreThePlan) {
         std::printf("first to last strike: emulated %.4f s, planned %.4f s (%+.2f %%)\n", emulated, plan_span,
                     100 * (emulated / plan_span - 1));
     }
+    // The step and hammer edges against the plan's times.
+    const auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_EMU_TABLES);
+    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto plan_edges = planned_edges(job, *tables);
+    controller::FirmwareTrace trace(80, 40);
+    trace.keep_edges(true);
+    std::vector<controller::LoggedStrike> ignored;
+    const auto text = read_file(vcd, std::size_t{1} << 30);
+    ASSERT_TRUE(text) << text.error().to_string();
+    ASSERT_TRUE(trace.push(*text, ignored));
+    std::vector<controller::PinEdge> got;
+    for (const auto& e : trace.edges())
+        if (e.kind != Kind::hammer_up) got.push_back(e);
+    ASSERT_EQ(got.size(), plan_edges.size());
+    std::map<long long, std::size_t> offsets;  // emulated minus planned, cycles -> edges
+    std::size_t kinds_differ = 0, hammers = 0;
+    std::string first_off;  // where the emulated edges first leave the plan's
+    const long long first_offset = std::llround(got[0].time_s * machine::kTickHz) - plan_edges[0].tick;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        if (got[i].kind != plan_edges[i].kind) ++kinds_differ;
+        const long long d = std::llround(got[i].time_s * machine::kTickHz) - plan_edges[i].tick;
+        ++offsets[d];
+        if (first_off.empty() && std::abs(d - first_offset) > 8)
+            first_off = "edge " + std::to_string(i) + " (after strike " + std::to_string(hammers) + ") is " +
+                        std::to_string(d - first_offset) + " cycles off";
+        if (plan_edges[i].kind == Kind::hammer_down) ++hammers;
+    }
+    EXPECT_EQ(kinds_differ, 0U);
+    const long long spread = offsets.rbegin()->first - offsets.begin()->first;
+    std::printf("%zu step and hammer edges, emulated minus planned (cycles: edges):", got.size());
+    for (const auto& [d, n] : offsets) std::printf(" %lld: %zu", d - offsets.begin()->first, n);
+    std::printf("\n");
+    EXPECT_LE(spread, 6) << "step and hammer edges off the plan's times by up to " << spread << " cycles; "
+                         << first_off;
     const auto sent = r.output.find(" bytes sent");
     if (sent != std::string::npos) {
         const auto start = r.output.rfind(' ', sent - 1) + 1;

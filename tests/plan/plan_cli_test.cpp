@@ -126,3 +126,41 @@ TEST(PlanCli, WarnsAboutFrontAndBackDotsThatCrushEachOther) {
     EXPECT_NE(loud.out.find("front and back dots closer than 1.25 mm"), std::string::npos) << loud.out;
     std::filesystem::remove(path);
 }
+
+// `plan --firmware-tables`: the plan emboss --firmware-tables sends (the
+// firmware's table moves and timing), as JSON and in words.
+TEST(PlanCli, FirmwareTablesPlanTheFirmwaresMoves) {
+    const auto file = temp("fw-doc.txt");
+    ASSERT_TRUE(tactus::write_file_atomic(file, "abc def\nghi\n").has_value());
+    const auto v2 = run("plan --json " + file.string());
+    const auto v3 = run("plan --json --firmware-tables " + std::string(TACTUS_FIRMWARE_TABLES) + " " + file.string());
+    ASSERT_EQ(v2.code, 0) << v2.out;
+    ASSERT_EQ(v3.code, 0) << v3.out;
+    const auto j2 = nlohmann::json::parse(v2.out), j3 = nlohmann::json::parse(v3.out);
+    EXPECT_EQ(j3.at("protocol"), 3);
+    EXPECT_EQ(j3["totals"]["strikes"], j2["totals"]["strikes"]);
+    EXPECT_NE(j3["totals"]["duration_s"], j2["totals"]["duration_s"]);
+    EXPECT_GT(j3["totals"]["max_worst_residual_um"].get<double>(), 0.0);  // on the table moves' step trains
+    // Every carriage move is the table move of its length (a table move's
+    // intervals are the table's: its first step is T[0] after its start).
+    const auto tables = nlohmann::json::parse(tactus::read_file(TACTUS_FIRMWARE_TABLES, 1 << 20).value());
+    const auto t0 = tables["carriage"]["intervals"][0].get<std::uint64_t>();
+    std::size_t moves = 0;
+    for (const auto& pass : j3["sheets"][0]["passes"])
+        for (const auto& strike : pass["strikes"])
+            if (const auto& m = strike["move"]; m["steps"] != 0) {
+                ++moves;
+                EXPECT_EQ(m["segments"][0][0].get<std::uint64_t>() >> 16, t0) << m.dump();
+            }
+    EXPECT_GT(moves, 3u);
+    const auto words = run("plan --firmware-tables " + std::string(TACTUS_FIRMWARE_TABLES) + " " + file.string());
+    ASSERT_EQ(words.code, 0) << words.out;
+    EXPECT_NE(words.out.find("firmware tables:  " + tables["table_id"].get<std::string>()), std::string::npos)
+        << words.out;
+    // Tables that are not a ramp.json: refused, naming the field.
+    const auto bad = temp("bad-ramp.json");
+    ASSERT_TRUE(tactus::write_file_atomic(bad, "{\"table_id\": \"474cac88\"}").has_value());
+    const auto r = run("plan --firmware-tables " + bad.string() + " " + file.string());
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.out.find("carriage"), std::string::npos) << r.out;
+}

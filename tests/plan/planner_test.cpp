@@ -3,8 +3,13 @@
 
 #include <cmath>
 
+#include "estimate/step_train.hpp"
 #include "hand_pages.hpp"
+#include "machine/limits.hpp"
+#include "motion/steps.hpp"
+#include "motion/table_move.hpp"
 #include "plan/planner.hpp"
+#include "profile/firmware_tables.hpp"
 
 using namespace tactus;
 using namespace tactus::plan;
@@ -174,4 +179,56 @@ TEST(Planner, ToleranceUnreachableWhenTheHeadCannotFollow) {
     ASSERT_FALSE(r.has_value());
     EXPECT_EQ(r.error().where, "field vibration.tolerance_um");
     EXPECT_NE(r.error().message.find("unreachable at any speed"), std::string::npos);
+}
+
+// Protocol v3: the plan is the firmware's timer schedule (firmware/PROTOCOL-v3.md,
+// "Timing"), and the head model runs on the table moves' real step trains.
+TEST(Planner, FirmwareModeTimesTheFirmwaresScheduleAndEstimatesItsStepTrains) {
+    const auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
+    ASSERT_TRUE(tables) << tables.error().to_string();
+    ASSERT_GT(tables->start_gap_ticks, 0u);
+    const auto prof = profile::default_profile();
+    const auto timing = profile::strike_timing(prof);
+    PlanOptions o;
+    o.firmware = *tables;
+    const auto doc = doc_of({page_of({U"⠉⠀⠁⠿", U"⠂⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠁"}), page_of({U"⠁⠃"})});
+    auto job = plan_job(doc, prof, o);
+    ASSERT_TRUE(job) << job.error().to_string();
+    estimate::MoveTuner tuner(prof);
+    const auto tick = [](double s) { return std::llround(s * machine::kTickHz); };
+    const auto gap = static_cast<long long>(tables->start_gap_ticks);
+    const auto ticks = [](std::uint64_t n) { return static_cast<long long>(n); };
+    long long clock = 0;  // the last timer event before the pass: the previous hammer going up
+    std::size_t moved = 0;
+    for (const auto& pass : job->sheets[0].passes) {
+        ASSERT_TRUE(motion::is_table_move(tables->feed, pass.feed));
+        if (pass.feed.steps != 0)
+            clock += gap + ticks(tables->feed.move_ticks(static_cast<std::uint32_t>(std::abs(pass.feed.steps))));
+        for (std::size_t k = 0; k < pass.strikes.size(); ++k) {
+            const auto& m = pass.moves[k];
+            const auto n = static_cast<std::uint32_t>(std::abs(m.steps));
+            ASSERT_TRUE(motion::is_table_move(tables->carriage, m));
+            // Each move starts the start gap after the event before it; the
+            // hammer comes down the settle after its last step and goes up
+            // the hammer pulse later: the strike time to the machine cycle.
+            if (n != 0) clock += gap + ticks(tables->carriage.move_ticks(n));
+            clock += timing.settle_ticks;
+            EXPECT_EQ(tick(pass.strikes[k].time_s), clock) << "strike " << k;
+            clock += timing.hammer_ticks;
+            // The residual is the head model's on this move's step train.
+            const auto& s = pass.strikes[k];
+            if (n == 0) {
+                EXPECT_EQ(s.residual_um, 0.0);
+                continue;
+            }
+            ++moved;
+            const auto train = estimate::step_train_shape(m.segments, prof.carriage.steps_per_mm, m.duration_s);
+            EXPECT_DOUBLE_EQ(s.residual_um, tuner.nominal_residual_um(train));
+            EXPECT_DOUBLE_EQ(s.worst_residual_um, tuner.worst_residual_um(train));
+            EXPECT_GT(s.worst_residual_um, 0.0);
+        }
+    }
+    EXPECT_GT(moved, 5u);
+    EXPECT_EQ(tick(job->duration_s), clock);
+    EXPECT_GT(job->max_residual_um, 0.0);
 }
