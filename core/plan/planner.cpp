@@ -221,9 +221,14 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                     move_time = sm->duration_s + ticks(lat.settle_start_ticks) +
                                 (n != 0 ? ticks(lat.move_start_ticks) : 0.0);
             } else {
-                auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
-                if (!tuned) return std::unexpected(tuned.error());
-                const estimate::TunedMove& tm = **tuned;
+                const auto steps = static_cast<std::uint32_t>(std::abs(n));
+                if (steps >= tuned_.size()) tuned_.resize(steps + 1, nullptr);
+                if (!tuned_[steps]) {
+                    auto tuned = tuner_->carriage(steps);
+                    if (!tuned) return std::unexpected(tuned.error());
+                    tuned_[steps] = *tuned;
+                }
+                const estimate::TunedMove& tm = *tuned_[steps];
                 choice = tm.choice;
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), tm.shape);
                 if (!sm) return std::unexpected(sm.error());
