@@ -98,6 +98,12 @@ double MoveSimulator::residual_mm(const motion::MoveShape& move, double dwell_s,
     return worst;
 }
 
+std::vector<double> MoveSimulator::end_state(const motion::MoveShape& move) {
+    auto& s = *impl_;
+    const Eigen::VectorXd z = s.run(move, Eigen::VectorXd::Zero(s.n + 6));
+    return {z.data(), z.data() + s.n};
+}
+
 std::vector<double> MoveSimulator::head_positions(const motion::MoveShape& move,
                                                   std::span<const double> times) {
     auto& s = *impl_;

@@ -26,6 +26,9 @@ public:
     // down: from the end of the move through `dwell_s`, sampled at `samples`+1
     // instants. The head starts at rest. Millimetres.
     double residual_mm(const motion::MoveShape& move, double dwell_s, int samples = 32);
+    // The model's state (positions and velocities, StateSpace order) at the
+    // end of `move`, the head at rest at 0 before it.
+    std::vector<double> end_state(const motion::MoveShape& move);
     // Head position at each of `times` (ascending, s from the move start).
     std::vector<double> head_positions(const motion::MoveShape& move, std::span<const double> times);
 

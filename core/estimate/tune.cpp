@@ -6,12 +6,15 @@
 #include <cstdio>
 
 #include "estimate/dynamics.hpp"
+#include "machine/limits.hpp"
 
 namespace tactus::estimate {
 namespace {
 
 using profile::ProfileShape;
 using profile::ShaperKind;
+
+constexpr std::int64_t kMaxSettleTicks = static_cast<std::int64_t>(0.5 * machine::kTickHz);  // half a second
 
 // Fixed-point with `digits` decimals (snprintf needs a literal format under -Wformat=2).
 std::string fmt(int digits, double v) {
@@ -31,7 +34,10 @@ struct Candidate {
     ShaperKind shaper;
     double scale;
     double settle;
-    motion::MoveShape move;
+    motion::MoveShape move;  // with its settle
+    std::uint32_t settle_ticks = 0;
+    double base_duration = 0;
+    std::shared_ptr<const Ringing::Move> effect;  // the move without its settle, once prepared
 };
 
 // The move followed by `settle` seconds at rest on the target before the strike.
@@ -44,12 +50,7 @@ motion::MoveShape with_settle(motion::MoveShape m, double settle) {
 
 }  // namespace
 
-MoveTuner::MoveTuner(const profile::PrinterProfile& p)
-    : p_(p), nominal_(build_model(p.dynamics)) {
-    const double db = p.vibration.damping_band, fb = p.vibration.frequency_band;
-    for (double ds : {1 - db, 1.0, 1 + db})
-        for (double fs : {1 - fb, 1 - fb / 2, 1.0, 1 + fb / 2, 1 + fb})
-            band_.emplace_back(build_model(p.dynamics, ModelVariant{ds, fs}));
+MoveTuner::MoveTuner(const profile::PrinterProfile& p) : p_(p), ringing_(p) {
     const double f = dominant_frequency_hz(p.dynamics);
     for (auto k : {ShaperKind::none, ShaperKind::zv, ShaperKind::mzv, ShaperKind::zvd, ShaperKind::ei})
         shapers_.push_back(motion::design_shaper(k, f, p.dynamics.damping_ratio));
@@ -61,13 +62,11 @@ const motion::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
 }
 
 double MoveTuner::nominal_residual_um(const motion::MoveShape& m) {
-    return 1000.0 * nominal_.residual_mm(m, p_.head.dwell_s);
+    return ringing_.from_rest(*ringing_.prepare(m)).nominal_um;
 }
 
 double MoveTuner::worst_residual_um(const motion::MoveShape& m) {
-    double worst = 0;
-    for (auto& sim : band_) worst = std::max(worst, sim.residual_mm(m, p_.head.dwell_s));
-    return 1000.0 * worst;
+    return ringing_.from_rest(*ringing_.prepare(m)).worst_um;
 }
 
 Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
@@ -87,28 +86,38 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                                      ? std::vector{1.0, 0.8, 0.64, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05}
                                      : std::vector{1.0};
     std::vector<Candidate> cands;
+    const bool tuned = auto_shape || auto_shaper;
     for (double s : scales) {
         const motion::Limits lim{p_.carriage.v_max_mm_s * s, p_.carriage.a_max_mm_s2 * s * s,
                                p_.carriage.j_max_mm_s3 * s * s * s};
         for (auto shape : shapes) {
             const auto base = motion::make_move(shape, distance, lim);
-            for (auto k : kinds)
-                cands.push_back({shape, k, s, 0.0, motion::shape_move(base, design_shaper(k))});
+            for (auto k : kinds) {
+                Candidate c{shape, k, s, 0.0, motion::shape_move(base, design_shaper(k)), 0, 0.0, nullptr};
+                c.base_duration = c.move.duration;
+                // At full speed, each unshaped move also with the shortest rest before the
+                // strike (to the tick) that brings the band's worst case within
+                // target: a head whose damping may be far above nominal creeps onto
+                // the target after the command stops, and a rest can be cheaper
+                // than a shaper or a slower move.
+                if (tuned && s == 1.0 && steps > 0 && k == ShaperKind::none) {
+                    Candidate r = c;
+                    r.effect = ringing_.prepare(r.move);
+                    const auto ticks = ringing_.settle_after(*r.effect, target_um(), kMaxSettleTicks);
+                    if (ticks > 0) {
+                        r.settle_ticks = static_cast<std::uint32_t>(ticks);
+                        r.settle = static_cast<double>(ticks) / machine::kTickHz;
+                        r.move = with_settle(r.move, r.settle);
+                        cands.push_back(std::move(r));
+                    }
+                }
+                cands.push_back(std::move(c));
+            }
         }
-    }
-    // A machine whose damping may be far above nominal creeps onto the target
-    // after the command stops; a short rest before the strike can be cheaper
-    // than a shaper or a slower move.
-    if (auto_shape || auto_shaper) {
-        const motion::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
-        const auto base = motion::make_move(shapes.front(), distance, lim);
-        for (double ms : {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0, 30.0})
-            cands.push_back({shapes.front(), ShaperKind::none, 1.0, ms / 1000, with_settle(base, ms / 1000)});
     }
     std::stable_sort(cands.begin(), cands.end(), [](const Candidate& a, const Candidate& b) {
         return a.move.duration < b.move.duration;
     });
-
     const double tol = p_.vibration.tolerance_um;
     std::string rejected;
     int n_rejected = 0;
@@ -116,10 +125,15 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
     std::string best_name;
     for (std::size_t i = 0; i < cands.size(); ++i) {
         auto& c = cands[i];
-        const double worst = steps == 0 ? 0.0 : worst_residual_um(c.move);
+        if (!c.effect) c.effect = ringing_.prepare(c.move);  // no settle: the move is the base
+        Ringing::Residual res;
+        if (steps > 0) {
+            res = c.settle_ticks > 0 ? ringing_.from_rest(*c.effect, c.settle) : ringing_.from_rest(*c.effect);
+        }
+        const double worst = res.worst_um;
         const bool last = i + 1 == cands.size();
         const bool fixed = !(auto_shape || auto_shaper);
-        if (worst <= tol || fixed) {
+        if (worst <= target_um() || fixed) {
             TunedMove t;
             t.choice.steps = steps;
             t.choice.distance_mm = distance;
@@ -127,8 +141,9 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
             t.choice.shaper = c.shaper;
             t.choice.speed_scale = c.scale;
             t.choice.settle_s = c.settle;
+            t.choice.settle_ticks = c.settle_ticks;
             t.choice.duration_s = c.move.duration;
-            t.choice.residual_um = steps == 0 ? 0.0 : nominal_residual_um(c.move);
+            t.choice.residual_um = res.nominal_um;
             t.choice.worst_residual_um = worst;
             t.choice.within_tolerance = worst <= tol;
             if (fixed) {
@@ -142,6 +157,9 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                     t.choice.why += "; " + std::to_string(n_rejected) + " faster rejected: " + rejected;
             }
             t.shape = std::move(c.move);
+            t.base_duration_s = c.base_duration;
+            t.effect = std::move(c.effect);
+            t.settled = c.settle_ticks > 0 ? ringing_.then_rest(*t.effect, c.settle_ticks) : t.effect;
             return &cache_.emplace(steps, std::move(t)).first->second;
         }
         if (worst < best_worst) best_worst = worst, best_name = describe(c.shape, c.shaper, c.scale, c.settle);

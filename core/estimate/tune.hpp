@@ -7,10 +7,12 @@
 // so each length is tuned once and cached.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/result.hpp"
+#include "estimate/ringing.hpp"
 #include "estimate/simulate.hpp"
 #include "motion/motion.hpp"
 #include "motion/shaper.hpp"
@@ -25,6 +27,7 @@ struct TuneChoice {
     profile::ShaperKind shaper = profile::ShaperKind::none;
     double speed_scale = 1.0;  // v, a, j scaled by s, s^2, s^3 (the same move, slowed in time)
     double settle_s = 0;       // rest before the strike, included in duration_s
+    std::uint32_t settle_ticks = 0;  // the same in controller timer ticks (settle_s = ticks / kTickHz)
     double duration_s = 0;
     double residual_um = 0;        // nominal machine
     double worst_residual_um = 0;  // over the damping/frequency band
@@ -33,8 +36,12 @@ struct TuneChoice {
 };
 
 struct TunedMove {
-    motion::MoveShape shape;
+    motion::MoveShape shape;  // the move and its settle
     TuneChoice choice;
+    double base_duration_s = 0;  // the move alone, without the settle
+    // The move alone (no settle), and the move and its settle, on every head
+    // model, for carrying the ringing.
+    std::shared_ptr<const Ringing::Move> effect, settled;
 };
 
 class MoveTuner {
@@ -46,14 +53,18 @@ public:
     [[nodiscard]] const std::map<std::uint32_t, TunedMove>& decisions() const { return cache_; }
     [[nodiscard]] const motion::Shaper& design_shaper(profile::ShaperKind k) const;
 
-    // Residual of an arbitrary move on the nominal machine and its band worst case, um.
+    // Residual of an arbitrary move on the nominal machine and its band worst
+    // case (band_variants), um, the head at rest before the move.
     double nominal_residual_um(const motion::MoveShape& m);
     double worst_residual_um(const motion::MoveShape& m);
+    // What auto-tune aims the band's worst case at: the tolerance less 0.1 um.
+    [[nodiscard]] double target_um() const { return p_.vibration.tolerance_um - kMarginUm; }
+    static constexpr double kMarginUm = 0.1;
+    [[nodiscard]] const Ringing& ringing() const { return ringing_; }
 
 private:
     profile::PrinterProfile p_;
-    MoveSimulator nominal_;
-    std::vector<MoveSimulator> band_;
+    Ringing ringing_;
     std::vector<motion::Shaper> shapers_;  // indexed by ShaperKind
     std::map<std::uint32_t, TunedMove> cache_;
 };

@@ -15,11 +15,13 @@ std::int32_t StepAxis::steps_for(double mm) const {
 std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps,
                                      double steps_per_mm) {
     // Step targets ascend, and so does time: walk the pieces once, and inside a
-    // piece bisect only to a small fraction of a tick.
+    // piece solve to a small fraction of a tick.
     std::vector<double> t;
     t.reserve(steps);
     const auto& pcs = shape.pieces;
     std::size_t i = 0;
+    std::size_t last_piece = pcs.size();
+    double last_tau = 0;
     for (std::uint32_t k = 1; k <= steps; ++k) {
         const double p = (k - 0.5) / steps_per_mm;
         while (i + 1 < pcs.size() && pcs[i + 1].d[0] < p) ++i;
@@ -28,16 +30,37 @@ std::vector<double> step_times_ticks(const MoveShape& shape, std::uint32_t steps
             continue;
         }
         const Piece& pc = pcs[i];
-        double lo = 0, hi = pc.dt;
-        while (hi - lo > 1e-4 / machine::kTickHz) {
-            const double mid = 0.5 * (lo + hi);
-            // Past 2^19 s a double cannot resolve 1e-4 tick: stop when the
-            // halves no longer move instead of looping for ever.
-            if (mid <= lo || mid >= hi) break;
-            if (advance_derivs(pc.d, mid)[0] < p) lo = mid;
-            else hi = mid;
+        // Newton on the piece's polynomial (position and velocity by Horner),
+        // safeguarded by a bracket that halves when a step would leave it; it
+        // starts from the previous step's time in the same piece.
+        const auto& d = pc.d;
+        const auto pos = [&](double x) {
+            return d[0] + x * (d[1] + x * (d[2] / 2 + x * (d[3] / 6 + x * (d[4] / 24 + x * d[5] / 120))));
+        };
+        const auto vel = [&](double x) { return d[1] + x * (d[2] + x * (d[3] / 2 + x * (d[4] / 6 + x * d[5] / 24))); };
+        constexpr double eps = 1e-4 / machine::kTickHz;
+        double lo = i == last_piece ? last_tau : 0.0, hi = pc.dt;
+        double x = lo;
+        for (int it = 0; it < 200; ++it) {
+            const double f = pos(x) - p;
+            if (f < 0) lo = x;
+            else hi = x;
+            if (hi - lo <= eps) {
+                x = hi;
+                break;
+            }
+            const double v = vel(x);
+            double next = v > 0 ? x - f / v : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (std::fabs(next - x) <= 1e-3 * eps) {
+                x = next;
+                break;
+            }
+            x = next;
         }
-        t.push_back((pc.t0 + hi) * machine::kTickHz);
+        last_piece = i;
+        last_tau = std::min(x, lo);
+        t.push_back((pc.t0 + x) * machine::kTickHz);
     }
     return t;
 }

@@ -82,6 +82,8 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
     return hits;
 }
 
+constexpr std::uint64_t kMaxSettleTicks = static_cast<std::uint64_t>(0.5 * machine::kTickHz);  // half a second
+
 motion::Limits limits(const profile::Axis& a) { return {a.v_max_mm_s, a.a_max_mm_s2, a.j_max_mm_s3}; }
 
 profile::ProfileShape feed_shape(const profile::PrinterProfile& p) {
@@ -96,6 +98,7 @@ Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
     : p_(p),
       o_(o),
       tuner_(std::make_unique<estimate::MoveTuner>(p)),
+      ringing_(std::make_unique<estimate::Ringing>(p)),
       carriage_axis_(p.carriage.steps_per_mm),
       feed_axis_(p.feed.steps_per_mm) {
     if (o_.firmware) {
@@ -186,6 +189,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     const double gap = o_.firmware ? ticks(o_.firmware->start_gap_ticks) : 0.0;
     const double dwell = o_.firmware ? ticks(strike_.hammer_ticks) : p_.head.dwell_s;
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
+    // Loading a sheet takes seconds: the head starts each sheet at rest.
+    ringing_->reset();
     const auto& h = *hits;
     for (std::size_t first = 0; first < h.size();) {
         std::size_t end = first;
@@ -239,11 +244,62 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                     choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
                 }
             } else {
-                auto tuned = tuner_->carriage(static_cast<std::uint32_t>(std::abs(n)));
-                if (!tuned) return std::unexpected(tuned.error());
-                choice = (*tuned)->choice;
-                sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), (*tuned)->shape);
-                move_time = (*tuned)->shape.duration;
+                const auto steps = static_cast<std::uint32_t>(std::abs(n));
+                if (steps >= tuned_.size()) tuned_.resize(steps + 1, nullptr);
+                if (!tuned_[steps]) {
+                    auto tuned = tuner_->carriage(steps);
+                    if (!tuned) return std::unexpected(tuned.error());
+                    tuned_[steps] = *tuned;
+                }
+                const estimate::TunedMove& tm = *tuned_[steps];
+                choice = tm.choice;
+                sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), tm.shape);
+                if (!sm) return std::unexpected(sm.error());
+                // Carry the ringing through the move and the tuned settle (found
+                // with the head at rest before the move); when the head as it
+                // really is needs more, the shortest rest that is enough follows.
+                const double aim = tuner_->target_um();
+                std::int64_t settle = tm.choice.settle_ticks;
+                if (n != 0) ringing_->move(*tm.settled, n > 0 ? 1 : -1);
+                else ringing_->rest_ticks(static_cast<std::uint64_t>(settle));
+                auto res = ringing_->residual();
+                if (res.worst_um > aim) {
+                    const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                    if (more < 0)
+                        return fail("the head does not settle within " + std::to_string(p_.vibration.tolerance_um) +
+                                        " um before strike " + std::to_string(k + 1) + " of the pass at " +
+                                        std::to_string(pass.y_mm) + " mm",
+                                    "field vibration.tolerance_um");
+                    ringing_->rest_ticks(static_cast<std::uint64_t>(more));
+                    settle += more;
+                    res = ringing_->residual();
+                }
+                move_time = tm.base_duration_s + static_cast<double>(settle) / machine::kTickHz;
+                if (k == 0 && feed_time > move_time) {
+                    // The carriage waits for the paper at rest: that wait settles it too.
+                    ringing_->rest(feed_time - move_time);
+                    res = ringing_->residual();
+                    if (res.worst_um > p_.vibration.tolerance_um) {
+                        // Seldom: the ringing after the longer wait is not within tolerance.
+                        const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                        if (more < 0)
+                            return fail("the head does not settle before the first strike of the pass at " +
+                                            std::to_string(pass.y_mm) + " mm",
+                                        "field vibration.tolerance_um");
+                        ringing_->rest_ticks(static_cast<std::uint64_t>(more));
+                        res = ringing_->residual();
+                        move_time = feed_time + static_cast<double>(more) / machine::kTickHz;
+                        settle = static_cast<std::int64_t>(
+                            std::ceil((move_time - tm.base_duration_s) * machine::kTickHz));
+                    }
+                }
+                choice.residual_um = res.nominal_um;
+                choice.worst_residual_um = res.worst_um;
+                choice.within_tolerance = res.worst_um <= p_.vibration.tolerance_um;
+                ringing_->dwell();
+                // The controller waits `settle` ticks at rest after the move's last step.
+                sm->settle_ticks = sm->settle_ticks - tm.choice.settle_ticks + static_cast<std::uint32_t>(settle);
+                sm->duration_s = tm.base_duration_s + static_cast<double>(settle) / machine::kTickHz;
             }
             if (!sm) return std::unexpected(sm.error());
             sm->steps = n;

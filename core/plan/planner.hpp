@@ -57,6 +57,10 @@ private:
     profile::PrinterProfile p_;
     PlanOptions o_;
     std::unique_ptr<estimate::MoveTuner> tuner_;
+    // The head's ringing on every model of the band, carried from strike to
+    // strike (not for table moves, whose residuals are not estimated).
+    std::unique_ptr<estimate::Ringing> ringing_;
+    std::vector<const estimate::TunedMove*> tuned_;  // by carriage steps: the tuner's choices, looked up once
     motion::StepAxis carriage_axis_, feed_axis_;
     std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
     std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;

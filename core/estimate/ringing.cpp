@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "estimate/ringing.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "estimate/simulate.hpp"
+#include "machine/limits.hpp"
+
+namespace tactus::estimate {
+namespace {
+
+constexpr int kSamples = 32;  // the dwell is sampled at kSamples + 1 instants, as MoveSimulator::residual_mm
+constexpr int kBits = 32;     // exp(A 2^k ticks), k < kBits: rests up to 4660 s
+using Mat4 = Eigen::Matrix4d;
+using Vec4 = Eigen::Vector4d;
+using Rows = Eigen::Matrix<double, kSamples + 1, 4>;
+
+// Every model padded to four states: the unused ones have no dynamics and stay 0.
+struct Model {
+    Mat4 a = Mat4::Zero();
+    Eigen::RowVector4d c = Eigen::RowVector4d::Zero();
+    Vec4 eq = Vec4::Zero();  // the resting state under a unit command
+    Rows rows;               // c exp(A s_i), s_i = i dwell / kSamples: head error at each dwell instant
+    Vec4 colmax;             // max_i |rows(i, j)|: |rows z| <= colmax . |z|
+    Mat4 dwell;              // exp(A dwell)
+    std::array<Mat4, kBits> pow2;
+    int n = 0;
+    StateSpace space;
+};
+
+Mat4 expm(const Mat4& a, double t) { return (a * t).exp(); }
+
+Model make_model(const StateSpace& s, double dwell_s) {
+    Model m;
+    m.n = s.n;
+    m.space = s;
+    Eigen::MatrixXd a(s.n, s.n);
+    Eigen::VectorXd b(s.n);
+    for (int i = 0; i < s.n; ++i) {
+        b(i) = s.b[static_cast<std::size_t>(i)];
+        m.c(i) = s.c[static_cast<std::size_t>(i)];
+        for (int j = 0; j < s.n; ++j) a(i, j) = s.a[static_cast<std::size_t>(i * s.n + j)];
+    }
+    m.a.topLeftCorner(s.n, s.n) = a;
+    // At rest under a constant command u: A x + B u = 0.
+    m.eq.head(s.n) = -a.partialPivLu().solve(b);
+    for (int i = 0; i <= kSamples; ++i) m.rows.row(i) = m.c * expm(m.a, dwell_s * i / kSamples);
+    m.colmax = m.rows.cwiseAbs().colwise().maxCoeff().transpose();
+    m.dwell = expm(m.a, dwell_s);
+    for (int k = 0; k < kBits; ++k) m.pow2[static_cast<std::size_t>(k)] = expm(m.a, std::ldexp(1.0, k) / machine::kTickHz);
+    return m;
+}
+
+double error_um(const Model& m, const Vec4& z) {
+    const double* c = m.rows.data();  // column-major, kSamples + 1 rows
+    constexpr int n = kSamples + 1;
+    double worst = 0;
+    for (int r = 0; r < n; ++r)
+        worst = std::max(worst, std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3]));
+    return 1000.0 * worst;
+}
+
+Vec4 after_ticks(const Model& m, Vec4 z, std::uint64_t ticks) {
+    for (int k = 0; ticks != 0; ++k, ticks >>= 1)
+        if (ticks & 1U) z = m.pow2[static_cast<std::size_t>(k)] * z;
+    return z;
+}
+
+}  // namespace
+
+std::vector<ModelVariant> band_variants(const profile::Vibration& v) {
+    std::vector<ModelVariant> out;
+    constexpr int nd = 5, nf = 9;
+    for (int i = 0; i < nd; ++i)
+        for (int j = 0; j < nf; ++j)
+            out.push_back({1 - v.damping_band + 2 * v.damping_band * i / (nd - 1),
+                           1 - v.frequency_band + 2 * v.frequency_band * j / (nf - 1)});
+    return out;
+}
+
+struct Ringing::Move {
+    std::vector<Mat4> phi;    // per model: exp(A T)
+    std::vector<Mat4> phi_d;  // the same after a dwell: exp(A T) exp(A dwell)
+    std::vector<Vec4> w;
+};
+
+struct Ringing::Impl {
+    std::vector<Model> models;  // [0] nominal, then the band
+    mutable std::vector<MoveSimulator> sims;  // one per model: their matrix exponentials are cached
+    std::vector<Vec4> z;
+    bool dwell_pending = false;  // the last dwell not yet applied (folded into the next move)
+    std::unordered_map<std::uint64_t, std::vector<Mat4>> rests;
+    mutable std::size_t first = 1;  // the band model that failed (or was worst) last: tried first
+    mutable std::size_t worst_model = 1;
+
+    [[nodiscard]] bool within(const std::vector<Vec4>& zs, std::uint64_t ticks, double target_um) const {
+        const std::size_t nb = models.size() - 1;
+        const double target_mm = target_um / 1000.0;
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::size_t i = 1 + (first - 1 + k) % nb;
+            const Model& m = models[i];
+            const Vec4 zz = after_ticks(m, zs[i], ticks);
+            if (m.colmax.dot(zz.cwiseAbs()) <= target_mm) continue;  // cannot exceed: no need to sample
+            if (error_um(m, zz) > target_um) {
+                first = i;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // Every band model of `zs` within target_um (the states as they are).
+    [[nodiscard]] bool passes(const std::vector<Vec4>& zs, double target_um) const {
+        const std::size_t nb = models.size() - 1;
+        const double target_mm = target_um / 1000.0;
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::size_t i = 1 + (first - 1 + k) % nb;
+            const Model& m = models[i];
+            if (m.colmax.dot(zs[i].cwiseAbs()) <= target_mm) continue;
+            if (error_um(m, zs[i]) > target_um) {
+                first = i;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    [[nodiscard]] std::vector<Vec4> advanced(const std::vector<Vec4>& zs, int k) const {
+        std::vector<Vec4> out(zs.size());
+        for (std::size_t i = 0; i < zs.size(); ++i) out[i] = models[i].pow2[static_cast<std::size_t>(k)] * zs[i];
+        return out;
+    }
+
+    [[nodiscard]] std::int64_t settle(const std::vector<Vec4>& zs, double target_um, std::uint64_t from,
+                                      std::uint64_t max_ticks) const {
+        std::vector<Vec4> lo_z = zs;
+        if (from > 0)
+            for (std::size_t i = 0; i < lo_z.size(); ++i) lo_z[i] = after_ticks(models[i], zs[i], from);
+        if (passes(lo_z, target_um)) return static_cast<std::int64_t>(from);
+        // Rests grow by powers of two from the last that failed until one
+        // passes; then the bits below it, from the highest, each kept when the
+        // rest with it still fails: the first tick that passes after the last
+        // that failed. One product per machine per trial.
+        std::uint64_t lo = from;
+        int k = 4;
+        for (;; ++k) {
+            if (k >= kBits || lo + (std::uint64_t{1} << k) > max_ticks) return -1;
+            auto hi_z = advanced(lo_z, k);
+            if (passes(hi_z, target_um)) break;
+            lo += std::uint64_t{1} << k;
+            lo_z = std::move(hi_z);
+        }
+        for (--k; k >= 0; --k) {
+            auto try_z = advanced(lo_z, k);
+            if (passes(try_z, target_um)) continue;
+            lo += std::uint64_t{1} << k;
+            lo_z = std::move(try_z);
+        }
+        return static_cast<std::int64_t>(lo + 1);
+    }
+
+    void apply_dwell() {
+        if (!dwell_pending) return;
+        for (std::size_t i = 0; i < z.size(); ++i) z[i] = models[i].dwell * z[i];
+        dwell_pending = false;
+    }
+
+    [[nodiscard]] Residual residual(const std::vector<Vec4>& zs) const {
+        Residual r;
+        r.nominal_um = error_um(models[0], zs[0]);
+        const std::size_t nb = models.size() - 1;
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::size_t i = 1 + (first - 1 + k) % nb;  // the one that was worst last, first
+            const Model& m = models[i];
+            if (1000.0 * m.colmax.dot(zs[i].cwiseAbs()) <= r.worst_um) continue;  // cannot be the worst
+            const double e = error_um(m, zs[i]);
+            if (e > r.worst_um) r.worst_um = e, worst_model = i;
+        }
+        first = worst_model;
+        return r;
+    }
+};
+
+Ringing::Ringing(const profile::PrinterProfile& p) : impl_(std::make_unique<Impl>()) {
+    impl_->models.push_back(make_model(build_model(p.dynamics), p.head.dwell_s));
+    for (const auto& v : band_variants(p.vibration))
+        impl_->models.push_back(make_model(build_model(p.dynamics, v), p.head.dwell_s));
+    for (const auto& m : impl_->models) impl_->sims.emplace_back(m.space);
+    reset();
+}
+Ringing::~Ringing() = default;
+Ringing::Ringing(Ringing&&) noexcept = default;
+Ringing& Ringing::operator=(Ringing&&) noexcept = default;
+
+std::size_t Ringing::models() const { return impl_->models.size(); }
+
+std::shared_ptr<const Ringing::Move> Ringing::prepare(const motion::MoveShape& shape) const {
+    auto mv = std::make_shared<Move>();
+    for (std::size_t k = 0; k < impl_->models.size(); ++k) {
+        const Model& m = impl_->models[k];
+        const auto end = impl_->sims[k].end_state(shape);
+        Vec4 w = -m.eq * shape.distance;
+        for (int i = 0; i < m.n; ++i) w(i) += end[static_cast<std::size_t>(i)];
+        mv->w.push_back(w);
+        mv->phi.push_back(expm(m.a, shape.duration));
+        mv->phi_d.push_back(mv->phi.back() * m.dwell);
+    }
+    return mv;
+}
+
+std::shared_ptr<const Ringing::Move> Ringing::then_rest(const Move& mv, std::uint64_t ticks) const {
+    auto out = std::make_shared<Move>(mv);
+    for (std::size_t i = 0; i < impl_->models.size(); ++i) {
+        Mat4 e = Mat4::Identity();
+        for (std::uint64_t t = ticks, k = 0; t != 0; ++k, t >>= 1)
+            if (t & 1U) e = impl_->models[i].pow2[k] * e;
+        out->phi[i] = e * mv.phi[i];
+        out->phi_d[i] = e * mv.phi_d[i];
+        out->w[i] = e * mv.w[i];
+    }
+    return out;
+}
+
+void Ringing::reset() {
+    impl_->z.assign(impl_->models.size(), Vec4::Zero());
+    impl_->dwell_pending = false;
+}
+
+void Ringing::move(const Move& mv, int dir) {
+    auto& s = *impl_;
+    const auto& phi = s.dwell_pending ? mv.phi_d : mv.phi;
+    const double sign = dir;
+    // The hot loop of planning: written out so that it compiles to plain
+    // multiply-adds over the columns (Eigen's product was 3x slower here).
+    for (std::size_t i = 0; i < s.z.size(); ++i) {
+        const double* m = phi[i].data();  // column-major
+        const double z0 = s.z[i][0], z1 = s.z[i][1], z2 = s.z[i][2], z3 = s.z[i][3];
+        const double* w = mv.w[i].data();
+        double* out = s.z[i].data();
+        for (int r = 0; r < 4; ++r)
+            out[r] = m[r] * z0 + m[4 + r] * z1 + m[8 + r] * z2 + m[12 + r] * z3 + sign * w[r];
+    }
+    s.dwell_pending = false;
+}
+
+void Ringing::rest(double seconds) {
+    if (seconds <= 0) return;
+    auto& s = *impl_;
+    s.apply_dwell();
+    const auto key = std::bit_cast<std::uint64_t>(seconds);
+    auto it = s.rests.find(key);
+    if (it == s.rests.end()) {
+        if (s.rests.size() > 4096) s.rests.clear();  // bounded: rests repeat a lot
+        std::vector<Mat4> e;
+        for (const auto& m : s.models) e.push_back(expm(m.a, seconds));
+        it = s.rests.emplace(key, std::move(e)).first;
+    }
+    for (std::size_t i = 0; i < s.z.size(); ++i) s.z[i] = it->second[i] * s.z[i];
+}
+
+void Ringing::rest_ticks(std::uint64_t ticks) {
+    auto& s = *impl_;
+    s.apply_dwell();
+    for (std::size_t i = 0; i < s.z.size(); ++i) s.z[i] = after_ticks(s.models[i], s.z[i], ticks);
+}
+
+void Ringing::dwell() {
+    impl_->apply_dwell();
+    impl_->dwell_pending = true;  // applied by the next move (one product) or whatever comes first
+}
+
+Ringing::Residual Ringing::residual() {
+    impl_->apply_dwell();
+    return impl_->residual(impl_->z);
+}
+
+bool Ringing::within_after(std::uint64_t ticks, double target_um) {
+    impl_->apply_dwell();
+    return impl_->within(impl_->z, ticks, target_um);
+}
+
+std::int64_t Ringing::settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks) {
+    impl_->apply_dwell();
+    return impl_->settle(impl_->z, target_um, from, max_ticks);
+}
+
+std::int64_t Ringing::settle_after(const Move& mv, double target_um, std::uint64_t max_ticks) const {
+    return impl_->settle(mv.w, target_um, 0, max_ticks);
+}
+
+Ringing::Residual Ringing::from_rest(const Move& mv, double rest_s) const {
+    const auto& s = *impl_;
+    std::vector<Vec4> z(mv.w.begin(), mv.w.end());
+    if (rest_s > 0)
+        for (std::size_t i = 0; i < z.size(); ++i) z[i] = expm(s.models[i].a, rest_s) * z[i];
+    return s.residual(z);
+}
+
+}  // namespace tactus::estimate
