@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
-#include <fstream>
 #include <regex>
 
 #include "cups_rig.hpp"
@@ -30,17 +29,12 @@ class CupsIppE2E : public ::testing::Test {
     void SetUp() override {
         if (!test::have_cupsd()) GTEST_SKIP() << "cupsd, lpadmin, lp, lpstat not installed";
         ASSERT_TRUE(rig_->started()) << rig_->error_log();
-        before_ = last_spool_job();
+        before_ = rig().last_spool_job();
     }
     static CupsRig& rig() { return *rig_; }
 
     std::filesystem::path lesson_file(const std::string& name, int paragraphs) {
-        const auto doc = rig().e.dir / name;
-        std::ofstream(doc) << test::lesson(paragraphs);
-        std::filesystem::permissions(
-            doc, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
-                     std::filesystem::perms::group_read | std::filesystem::perms::others_read);
-        return doc;
+        return rig().lesson_file(name, paragraphs);
     }
     // tactus-cli emboss to queue `name`, as the teacher.
     std::vector<std::string> emboss(const std::string& queue, const std::filesystem::path& doc,
@@ -51,15 +45,6 @@ class CupsIppE2E : public ::testing::Test {
         args.push_back(doc.string());
         return rig().command(args, as_teacher);
     }
-    spool::JobId last_spool_job() {
-        spool::JobId last = 0;
-        if (std::filesystem::exists(rig().e.db))
-            if (auto s = spool::Spool::open(rig().e.db, {.create = false}))
-                if (auto jobs = s->jobs(true); jobs)
-                    for (const auto& j : *jobs) last = std::max(last, j.id);
-        return last;
-    }
-
     spool::JobId before_ = 0;  // the newest spool job before this test
     static inline std::unique_ptr<CupsRig> rig_;
 };
