@@ -100,8 +100,9 @@ protected:
     }
     static CupsRig& rig() { return *rig_; }
 
-    // The app with `doc` open, the queue `name` chosen in the picker, and
-    // Ctrl+P pressed; what its printer panel says is heard from before.
+    // The queue `name` on `sim`, the app with a lesson of `paragraphs`
+    // paragraphs open as `file`, the queue chosen in the picker and Ctrl+P
+    // pressed; what its printer panel says is heard from before.
     struct App {
         std::unique_ptr<gui::MainWindow> window = std::make_unique<gui::MainWindow>();
         gui::PrinterPanel* panel = window->printer_panel();
@@ -109,7 +110,10 @@ protected:
         Heard heard{panel};
         bool sent = false;
     };
-    std::unique_ptr<App> emboss_on(const std::string& name, const std::filesystem::path& doc) {
+    std::unique_ptr<App> emboss_on(const PtySim& sim, const std::string& name, const std::string& file,
+                                   int paragraphs) {
+        EXPECT_TRUE(rig().add_queue(sim, name)) << rig().error_log();
+        const auto doc = rig().lesson_file(file, paragraphs);
         auto app = std::make_unique<App>();
         app->window->set_interactive(false);
         EXPECT_TRUE(app->window->open_file_now(qs(doc.string())));
@@ -158,11 +162,10 @@ TEST_F(CupsAppE2E, ThePickerListsTheServersTactusQueueAsANetworkQueueAndNoOtherQ
 
 TEST_F(CupsAppE2E, CtrlPToANetworkQueueEmbossesOnTheServerAsPlannedAndTheJobViewFollowsIt) {
     PtySim sim(rig().e.dir.path(), "sim-app");
-    ASSERT_TRUE(rig().add_queue(sim, "EmbosserApp")) << rig().error_log();
-    const auto app = emboss_on("EmbosserApp", rig().lesson_file("app-lesson.md", 3));
-    auto* panel = app->panel;
-    auto* view = app->view;
-    auto& heard = app->heard;
+    const auto app = emboss_on(sim, "EmbosserApp", "app-lesson.md", 3);
+    const auto* panel = app->panel;
+    const auto* view = app->view;
+    const auto& heard = app->heard;
     ASSERT_TRUE(app->sent) << panel->fault_text().toStdString();
     ASSERT_TRUE(pump_until([&] { return !heard.finished.empty(); })) << panel->log_text().toStdString() << rig().error_log();
     EXPECT_TRUE(heard.finished.front().first) << heard.finished.front().second.toStdString();
@@ -195,11 +198,10 @@ TEST_F(CupsAppE2E, CtrlPToANetworkQueueEmbossesOnTheServerAsPlannedAndTheJobView
 
 TEST_F(CupsAppE2E, AJobCancelledInTheAppIsCancelledOnTheServerAndShownCancelled) {
     PtySim sim(rig().e.dir.path(), "sim-app-cancel", {}, 100);  // slow: still embossing when cancelled
-    ASSERT_TRUE(rig().add_queue(sim, "EmbosserAppC")) << rig().error_log();
-    const auto app = emboss_on("EmbosserAppC", rig().lesson_file("app-cancel.md", 12));
-    auto* panel = app->panel;
-    auto* view = app->view;
-    auto& heard = app->heard;
+    const auto app = emboss_on(sim, "EmbosserAppC", "app-cancel.md", 12);
+    const auto* panel = app->panel;
+    const auto* view = app->view;
+    const auto& heard = app->heard;
     ASSERT_TRUE(app->sent) << panel->fault_text().toStdString();
     ASSERT_TRUE(pump_until([&] { return sim.strikes().size() > 20; })) << panel->log_text().toStdString() << rig().error_log();
     const auto id = rig().newest_spool_job(before_);
@@ -226,11 +228,10 @@ TEST_F(CupsAppE2E, AJobCancelledInTheAppIsCancelledOnTheServerAndShownCancelled)
 
 TEST_F(CupsAppE2E, AJobCancelledOnTheServerShowsCancelledInTheApp) {
     PtySim sim(rig().e.dir.path(), "sim-app-server-cancel", {}, 100);
-    ASSERT_TRUE(rig().add_queue(sim, "EmbosserAppS")) << rig().error_log();
-    const auto app = emboss_on("EmbosserAppS", rig().lesson_file("server-cancel.md", 12));
-    auto* panel = app->panel;
-    auto* view = app->view;
-    auto& heard = app->heard;
+    const auto app = emboss_on(sim, "EmbosserAppS", "server-cancel.md", 12);
+    const auto* panel = app->panel;
+    const auto* view = app->view;
+    const auto& heard = app->heard;
     ASSERT_TRUE(app->sent) << panel->fault_text().toStdString();
     ASSERT_TRUE(pump_until([&] { return sim.strikes().size() > 20; })) << panel->log_text().toStdString();
     int row = -1;
