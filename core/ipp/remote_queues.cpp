@@ -142,7 +142,7 @@ Result<std::vector<RemoteQueue>> visible_tactus_queues(std::chrono::milliseconds
         int port;
         std::vector<cups_dest_t*> dests;
     } found{host, port, {}};
-    const int finished = cupsEnumDests(
+    cupsEnumDests(
         CUPS_DEST_FLAGS_NONE, static_cast<int>(browse.count()), nullptr, 0, 0,
         [](void* data, unsigned flags, cups_dest_t* dest) -> int {
             auto* f = static_cast<Found*>(data);
@@ -158,10 +158,12 @@ Result<std::vector<RemoteQueue>> visible_tactus_queues(std::chrono::milliseconds
         if (auto q = from_dest(d, host, port)) out.push_back(std::move(*q));
         cupsFreeDests(1, d);
     }
-    // cupsEnumDests also says 0 when DNS-SD is not available, after the
-    // server's queues: no queue and an IPP error mean no server answered.
-    if (!finished && out.empty() && found.dests.empty() &&
-        cupsLastError() > IPP_STATUS_OK_EVENTS_COMPLETE)
+    // cupsEnumDests's own answer says little (0 when DNS-SD is not there,
+    // 1 when no server is): no destination and an IPP error mean no server
+    // answered (a server without printers answers not-found).
+    const auto status = cupsLastError();
+    if (out.empty() && found.dests.empty() && status > IPP_STATUS_OK_EVENTS_COMPLETE &&
+        status != IPP_STATUS_ERROR_NOT_FOUND)
         return fail(ErrorKind::device,
                     std::string("cannot list the CUPS queues: ") + cupsLastErrorString(),
                     server_of(host, port));

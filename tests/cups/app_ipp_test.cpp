@@ -21,6 +21,7 @@
 #include <regex>
 
 #include "cups_rig.hpp"
+#include "ipp/remote_queues.hpp"
 #include "main_window.hpp"
 #include "printer_panel.hpp"
 
@@ -126,6 +127,14 @@ protected:
     spool::JobId before_ = 0;
     static inline std::unique_ptr<CupsRig> rig_;
 };
+
+// First in the suite (and alone under ctest): the private server has no queue yet.
+TEST_F(CupsAppE2E, AServerWithoutQueuesListsNoneAndIsNoError) {
+    Result<std::vector<ipp::RemoteQueue>> q = std::vector<ipp::RemoteQueue>{};
+    std::thread([&] { q = ipp::visible_tactus_queues(std::chrono::milliseconds(0)); }).join();
+    ASSERT_TRUE(q) << q.error().to_string();
+    EXPECT_TRUE(q->empty());
+}
 
 TEST_F(CupsAppE2E, ThePickerListsTheServersTactusQueueAsANetworkQueueAndNoOtherQueue) {
     PtySim sim(rig().e.dir.path(), "sim-picker");
