@@ -510,13 +510,16 @@ bool MainWindow::save_as() {
     return save_to(path);
 }
 
-bool MainWindow::save_to(const QString& path) {
+QByteArray MainWindow::markdown() const {
     // The editor's lines as Markdown: core's writer, which the importer reads back.
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
-    const auto markdown = edit::to_markdown(lines);
+    return QByteArray::fromStdString(edit::to_markdown(lines));
+}
+
+bool MainWindow::save_to(const QString& path) {
     QString error;
-    if (!write_atomically(path, QByteArray::fromStdString(markdown), &error)) {
+    if (!write_atomically(path, markdown(), &error)) {
         report(error, true);
         return false;
     }
@@ -685,8 +688,15 @@ void MainWindow::show_panel(const QString& name) {
 
 bool MainWindow::emboss() {
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
-    // Into the spool: the job outlives this window, and waits if the embosser is unreachable.
-    if (!printer_->submit(name, editor_->layout().paged(), profile_->profile())) {
+    // To a CUPS queue: the source document as the editor holds it (Markdown),
+    // laid out by the server with its embosser's profile, in the chosen table.
+    // Else into the spool: the job outlives this window, and waits if the
+    // embosser is unreachable.
+    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const bool sent = printer_->selected_is_queue()
+                          ? printer_->send_to_queue(name, base + QStringLiteral(".md"), markdown(), tables_->table())
+                          : printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+    if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.
         show_panel(QStringLiteral("printer"));
         if (auto* picker = printer_->findChild<QWidget*>(QStringLiteral("devicePicker")))

@@ -50,6 +50,8 @@ public:
     // Opens synchronously (tests, the benchmark); returns false with a message on failure.
     bool open_file_now(const QString& path);
     bool save_to(const QString& path);
+    // The document as the editor holds it, in Markdown (what Save writes).
+    [[nodiscard]] QByteArray markdown() const;
     bool export_to(const QString& path);  // .brf, .pef (by extension)
     bool print_pdf_to(const QString& path);
     void set_table(const QString& table);
@@ -63,7 +65,8 @@ public:
     [[nodiscard]] ProfileEditor* profile_editor() const { return profile_; }
     // Null when this build has no link stage.
     [[nodiscard]] PrinterPanel* printer_panel() const { return printer_; }
-    // Queues the document in the spool on the chosen embosser's printer (printer panel).
+    // Queues the document in the spool on the chosen embosser's printer, or
+    // sends it to the chosen CUPS queue (printer panel).
     bool emboss();
     // Plans the document now (tests); normally planning follows edits after a pause.
     DocumentPlanPtr plan_now();

@@ -3,6 +3,7 @@
 
 #include <QComboBox>
 #include <QDateTime>
+#include <QFile>
 #include <QFutureWatcher>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -14,6 +15,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
@@ -24,6 +26,10 @@
 
 #include "controller/builtin_sim.hpp"
 #include "controller/device_choices.hpp"
+#include "ipp/queue_options.hpp"
+#include "ipp/queue_uri.hpp"
+#include "ipp/remote_job.hpp"
+#include "ipp/remote_queues.hpp"
 #include "link/fault_words.hpp"
 #include "link/link.hpp"
 #include "profile/controller_config.hpp"
@@ -46,6 +52,30 @@ constexpr std::size_t kFinishedShown = 100;
 enum Column { col_job, col_document, col_printer, col_state, col_progress, col_sheet, col_count };
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+// Item data of the device picker: a CUPS queue rather than a cable.
+constexpr int kNetworkRole = Qt::UserRole + 1;
+
+// What discovery of the CUPS queues brings back to the GUI thread.
+struct Discovered {
+    std::vector<ipp::RemoteQueue> queues;
+    std::string error;
+};
+
+// A job on a CUPS queue in the words of the job view (the local ones where
+// they mean the same).
+QString remote_state_text(ipp::RemoteJobState s) {
+    switch (s) {
+        case ipp::RemoteJobState::pending: return QObject::tr("waiting");
+        case ipp::RemoteJobState::held: return QObject::tr("held");
+        case ipp::RemoteJobState::processing: return QObject::tr("embossing");
+        case ipp::RemoteJobState::stopped: return QObject::tr("stopped");
+        case ipp::RemoteJobState::cancelled: return QObject::tr("cancelled");
+        case ipp::RemoteJobState::aborted: return QObject::tr("aborted");
+        case ipp::RemoteJobState::completed: return QObject::tr("done");
+    }
+    return {};
+}
 
 QString state_text(spool::JobState s) {
     switch (s) {
@@ -110,6 +140,34 @@ struct PrinterPanel::AppRunner {
     }
 };
 
+// A job sent to a CUPS queue: ipp::send_and_follow on a thread of its own,
+// which only records what it sees here; the GUI thread reads it on its poll.
+struct PrinterPanel::QueueJob {
+    QString title;
+    QString queue;  // "Embosser at 127.0.0.1", for messages and the view
+    QString name;   // the queue's name: the job is "Embosser-12" on the server
+    std::unique_ptr<QTemporaryDir> dir;  // the document, until the server has it
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> stop{false};  // stop following: the window closes, the job goes on
+    std::thread thread;
+    std::mutex mutex;
+    int sent_id = 0;                                  // written by the thread
+    std::vector<ipp::RemoteJobStatus> changes;        // written by the thread, taken by the GUI
+    std::optional<Result<ipp::RemoteJobStatus>> end;  // written by the thread
+    // The GUI thread's own.
+    int id = 0;
+    std::optional<ipp::RemoteJobStatus> status;
+    QString error;
+    bool ended = false;
+    bool cancelling = false;
+    std::optional<ProgressSteps::Clock::time_point> spoken_at;
+
+    ~QueueJob() {
+        stop = true;
+        if (thread.joinable()) thread.join();
+    }
+};
+
 PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("printerPanel"));
     if (auto p = spool::spool_path(); p) db_ = *p;
@@ -119,8 +177,10 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     devices_->setInsertPolicy(QComboBox::NoInsert);
     devices_->setAccessibleName(tr("Embosser"));
     devices_->setAccessibleDescription(
-        tr("The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; "
-           "or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600"));
+        tr("The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, "
+           "and the Tactus queues of the CUPS servers this computer sees, marked network queue; "
+           "or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or "
+           "ipp://server/printers/Embosser"));
     devices_->lineEdit()->setAccessibleName(tr("Embosser device"));
     auto* refresh_button = new QPushButton(tr("&Refresh"), this);
     connect_ = new QPushButton(tr("&Connect"), this);
@@ -152,6 +212,9 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     pause_ = new QPushButton(tr("&Pause"), this);
     resume_ = new QPushButton(tr("Res&ume"), this);
     cancel_ = new QPushButton(tr("Ca&ncel job"), this);
+    pause_->setObjectName(QStringLiteral("pauseJob"));
+    resume_->setObjectName(QStringLiteral("resumeJob"));
+    cancel_->setObjectName(QStringLiteral("cancelJob"));
     page_ = new QSpinBox(this);
     page_->setRange(1, 100000);
     page_->setAccessibleName(tr("Braille page to resume from"));
@@ -251,11 +314,60 @@ void PrinterPanel::refresh_devices() {
     std::vector<std::string> problems;
     const auto found = controller::list_devices(&problems);
     devices_->clear();
-    for (const auto& d : found)
+    for (const auto& d : found) {
         devices_->addItem(QStringLiteral("%1 [%2]").arg(qs(d.description), qs(d.device)), qs(d.device));
+        devices_->setItemData(devices_->count() - 1,
+                              d.device == kSim ? tr("The built-in simulated embosser, on this computer")
+                                               : tr("An embosser on a cable to this computer"),
+                              Qt::AccessibleDescriptionRole);
+    }
     for (const auto& p : problems) log(tr("Listing devices: %1").arg(qs(p)));
     select_device(current);
+    discover_queues();
 }
+
+// The CUPS queues come from the server (and DNS-SD), which may take seconds
+// or not answer: asked off the GUI thread, and listed after the cables.
+void PrinterPanel::discover_queues() {
+    if (discovering_) return;
+    discovering_ = true;
+    auto* watcher = new QFutureWatcher<Discovered>(this);
+    connect(watcher, &QFutureWatcher<Discovered>::finished, this, [this, watcher] {
+        watcher->deleteLater();
+        discovering_ = false;
+        const auto found = watcher->result();
+        if (!found.error.empty()) log(tr("Listing CUPS queues: %1").arg(qs(found.error)));
+        const auto current = selected_device();
+        for (int i = devices_->count() - 1; i >= 0; --i)
+            if (devices_->itemData(i, kNetworkRole).toBool()) devices_->removeItem(i);
+        for (const auto& q : found.queues) {
+            const auto name = qs(q.name), server = qs(q.server);
+            auto text = tr("Network queue %1 on %2").arg(name, server);
+            if (!q.info.empty() && q.info != q.name) text += QStringLiteral(" - ") + qs(q.info);
+            devices_->addItem(QStringLiteral("%1 [%2]").arg(text, qs(q.uri)), qs(q.uri));
+            const int i = devices_->count() - 1;
+            devices_->setItemData(i, true, kNetworkRole);
+            devices_->setItemData(i, tr("Network queue %1 on the CUPS server %2").arg(name, server),
+                                  Qt::AccessibleTextRole);
+            devices_->setItemData(i,
+                                  tr("A Tactus queue on another computer: the document is sent there over "
+                                     "the network and laid out with that embosser's profile"),
+                                  Qt::AccessibleDescriptionRole);
+            devices_->setItemData(i, qs(q.uri), Qt::ToolTipRole);
+        }
+        if (!current.isEmpty()) select_device(current);
+        if (found.error.empty())
+            log(tr("%n Tactus queue(s) found on CUPS servers", nullptr, static_cast<int>(found.queues.size())));
+    });
+    watcher->setFuture(QtConcurrent::run([] {
+        Discovered d;
+        if (auto q = ipp::visible_tactus_queues()) d.queues = std::move(*q);
+        else d.error = q.error().to_string();
+        return d;
+    }));
+}
+
+bool PrinterPanel::selected_is_queue() const { return ipp::is_queue_uri(selected_device().toStdString()); }
 
 QString PrinterPanel::selected_device() const {
     // A listed device shows as "description [device]"; anything else typed is
@@ -384,6 +496,11 @@ void PrinterPanel::stop_runner() {
 }
 
 bool PrinterPanel::connect_device(const QString& device, const profile::PrinterProfile& p) {
+    if (ipp::is_queue_uri(device.toStdString())) {
+        show_fault(tr("%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.")
+                       .arg(device));
+        return false;
+    }
     const auto printer = setup_printer(device, p);
     if (printer.empty()) return false;
     auto record = spool_->printer(printer);
@@ -453,7 +570,161 @@ spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocum
     return *id;
 }
 
+bool PrinterPanel::send_to_queue(const QString& title, const QString& file_name, const QByteArray& document,
+                                 const QString& table) {
+    const auto device = selected_device();
+    auto queue = ipp::parse_queue_uri(device.toStdString());
+    if (!queue) {
+        show_fault(tr("“%1” is not a CUPS queue: %2").arg(device, qs(queue.error().to_string())));
+        return false;
+    }
+    auto job = std::make_unique<QueueJob>();
+    job->title = title;
+    job->name = qs(queue->resource.substr(queue->resource.rfind('/') + 1));
+    job->queue = tr("%1 at %2").arg(job->name, qs(queue->host));
+    job->dir = std::make_unique<QTemporaryDir>();
+    const auto path = job->dir->filePath(file_name);
+    QFile file(path);
+    if (!job->dir->isValid() || !file.open(QIODevice::WriteOnly) || file.write(document) != document.size() ||
+        !file.flush()) {
+        show_fault(tr("Cannot send %1: cannot write a copy to send (%2)").arg(title, file.errorString()));
+        return false;
+    }
+    file.close();
+    ipp::RemoteJobRequest request;
+    request.file = path.toStdString();
+    request.title = title.toStdString();
+    if (!table.isEmpty()) request.options.emplace_back(std::string(ipp::option::braille_table), table.toStdString());
+    auto* raw = job.get();
+    raw->thread = std::thread([raw, queue = *queue, request] {
+        ipp::FollowOptions options;
+        options.stop = &raw->stop;
+        auto end = ipp::send_and_follow(
+            queue, request,
+            [raw](int id) {
+                std::lock_guard lock(raw->mutex);
+                raw->sent_id = id;
+            },
+            [raw](const ipp::RemoteJobStatus& s) {
+                std::lock_guard lock(raw->mutex);
+                raw->changes.push_back(s);
+            },
+            raw->cancel, options);
+        std::lock_guard lock(raw->mutex);
+        raw->end = std::move(end);
+    });
+    QSettings().setValue(QStringLiteral("printer/last"), device);
+    log(tr("Sending %1 to %2 (%3)").arg(title, raw->queue, device));
+    Q_EMIT message(tr("Sending %1 to %2").arg(title, raw->queue), false);
+    queue_jobs_.push_back(std::move(job));
+    show_jobs();
+    queue_->selectRow(queue_->rowCount() - 1);
+    update_buttons();
+    return true;
+}
+
+// The jobs on CUPS queues: what their threads saw since the last poll, told
+// as the local jobs are (its start, sheets now and then, a wait, its end once).
+void PrinterPanel::follow_queue_jobs() {
+    bool changed = false;
+    for (auto& owned : queue_jobs_) {
+        auto& j = *owned;
+        if (j.ended) continue;
+        int sent = 0;
+        std::vector<ipp::RemoteJobStatus> changes;
+        std::optional<Result<ipp::RemoteJobStatus>> end;
+        {
+            std::lock_guard lock(j.mutex);
+            sent = j.sent_id;
+            changes.swap(j.changes);
+            end = j.end;
+        }
+        if (sent && !j.id) {
+            j.id = sent;
+            j.dir.reset();  // the server has the document
+            log(tr("Sent %1 to %2 as job %3").arg(j.title, j.queue).arg(sent));
+            changed = true;
+        }
+        for (const auto& s : changes) {
+            const bool new_state = !j.status || j.status->state != s.state;
+            const auto message_text = qs(s.message.empty() ? s.reasons : s.message);
+            if (new_state && s.state == ipp::RemoteJobState::processing) {
+                Q_EMIT message(tr("Embossing %1 on %2").arg(j.title, j.queue), false);
+                j.spoken_at = ProgressSteps::Clock::now();
+            } else if (new_state && (s.state == ipp::RemoteJobState::held || s.state == ipp::RemoteJobState::stopped)) {
+                show_fault(tr("%1 waits on %2: %3").arg(j.title, j.queue, message_text));
+            } else if (!new_state && s.state == ipp::RemoteJobState::processing && s.sheets_completed > 0 &&
+                       s.sheets_completed != j.status->sheets_completed) {
+                // A step at most every few seconds, as for local jobs (issue 14).
+                const auto now = ProgressSteps::Clock::now();
+                if (!j.spoken_at || now - *j.spoken_at >= std::chrono::seconds(3)) {
+                    Q_EMIT message(tr("%1: %n sheet(s) embossed", nullptr, s.sheets_completed).arg(j.title), false);
+                    j.spoken_at = now;
+                }
+            }
+            if (s.state != ipp::RemoteJobState::processing || s.message != (j.status ? j.status->message : ""))
+                log(tr("Job %1 on %2: %3").arg(j.id).arg(j.queue, remote_state_text(s.state) +
+                                                                 (message_text.isEmpty() ? QString()
+                                                                                         : QStringLiteral(": ") + message_text)) +
+                    (s.reasons.empty() ? QString() : QStringLiteral(" (%1)").arg(qs(s.reasons))));
+            j.status = s;
+            changed = true;
+        }
+        if (!end) continue;
+        j.ended = true;
+        j.dir.reset();
+        changed = true;
+        if (!*end) {
+            j.error = qs(end->error().to_string());
+            const auto text = j.id ? tr("%1: the job on %2 can no longer be followed: %3").arg(j.title, j.queue, j.error)
+                                   : tr("%1 was not sent to %2: %3").arg(j.title, j.queue, j.error);
+            fault_->setText(text);  // announced once, below
+            log(text);
+            Q_EMIT message(text, true);
+            Q_EMIT job_finished(j.id, false, text);
+            continue;
+        }
+        const auto& last = **end;
+        j.status = last;
+        if (!last.ended()) continue;  // following stopped: the window closes
+        const auto why = qs(last.why_ended());
+        QString text;
+        if (last.state == ipp::RemoteJobState::completed) {
+            text = tr("Embossed %1 on %2").arg(j.title, j.queue);
+        } else if (last.state == ipp::RemoteJobState::cancelled) {
+            text = why.isEmpty() ? tr("%1 cancelled on %2").arg(j.title, j.queue)
+                                 : tr("%1 cancelled on %2: %3").arg(j.title, j.queue, why);
+        } else {
+            text = tr("%1 stopped on %2: %3").arg(j.title, j.queue, why);
+            fault_->setText(text);  // announced once, below
+        }
+        log(text);
+        Q_EMIT message(text, last.state == ipp::RemoteJobState::aborted);
+        Q_EMIT job_finished(j.id, last.state == ipp::RemoteJobState::completed, text);
+    }
+    if (changed) {
+        show_jobs();
+        update_buttons();
+    }
+}
+
+std::vector<PrinterPanel::QueueJobRow> PrinterPanel::queue_jobs() const {
+    std::vector<QueueJobRow> out;
+    const int first = static_cast<int>(jobs_.size());
+    for (std::size_t i = 0; i < queue_jobs_.size(); ++i) {
+        const auto& j = *queue_jobs_[i];
+        const int row = first + static_cast<int>(i);
+        const auto cell = [&](int col) {
+            const auto* item = queue_->item(row, col);
+            return item ? item->text() : QString();
+        };
+        out.push_back({j.title, cell(col_job), j.queue, cell(col_state), j.ended});
+    }
+    return out;
+}
+
 void PrinterPanel::poll() {
+    follow_queue_jobs();
     if (runner_) {
         std::optional<Error> error;
         {
@@ -623,14 +894,26 @@ void PrinterPanel::check_strikes(const spool::JobRecord& j) {
 
 void PrinterPanel::show_jobs() {
     const auto selected = selected_job();
+    const auto* selected_queue = selected_queue_job();
     const auto set_text = [this](int row, int col, const QString& text) {
         auto* item = queue_->item(row, col);
         if (!item) queue_->setItem(row, col, new QTableWidgetItem(text));
         else if (item->text() != text) item->setText(text);  // an unchanged text sends no event
     };
-    const int rows = static_cast<int>(jobs_.size());
+    const int local_rows = static_cast<int>(jobs_.size());
+    const int rows = local_rows + static_cast<int>(queue_jobs_.size());
     if (queue_->rowCount() != rows) queue_->setRowCount(rows);
-    for (int row = 0; row < rows; ++row) {
+    const auto bar_at = [this](int row, const QString& name, int pct) {
+        auto* bar = static_cast<QProgressBar*>(queue_->cellWidget(row, col_progress));
+        if (!bar) {
+            bar = new QProgressBar(queue_);
+            bar->setRange(0, 100);
+            queue_->setCellWidget(row, col_progress, bar);
+        }
+        if (bar->accessibleName() != name) bar->setAccessibleName(name);
+        if (bar->value() != pct) bar->setValue(pct);
+    };
+    for (int row = 0; row < local_rows; ++row) {
         const auto& j = jobs_[static_cast<std::size_t>(row)];
         const auto& s = shown_[j.id];
         set_text(row, col_job, QString::number(j.id));
@@ -638,25 +921,55 @@ void PrinterPanel::show_jobs() {
         set_text(row, col_printer, qs(j.printer));
         set_text(row, col_state, state_text(j.state) + (j.reason.empty() ? QString() : QStringLiteral(": ") + qs(j.reason)));
         set_text(row, col_sheet, s.sheet ? QString::number(s.sheet) : QString());
-        auto* bar = static_cast<QProgressBar*>(queue_->cellWidget(row, col_progress));
-        if (!bar) {
-            bar = new QProgressBar(queue_);
-            bar->setRange(0, 100);
-            queue_->setCellWidget(row, col_progress, bar);
-        }
-        const auto name = tr("Progress of %1").arg(qs(j.title));
-        if (bar->accessibleName() != name) bar->setAccessibleName(name);
         // The bar moves in tenths (issue 14: its value is what a screen reader reads).
-        const int pct = s.percent == 100 ? 100 : s.percent / 10 * 10;
-        if (bar->value() != pct) bar->setValue(pct);
+        bar_at(row, tr("Progress of %1").arg(qs(j.title)), s.percent == 100 ? 100 : s.percent / 10 * 10);
     }
-    if (selected) select_job(*selected);
+    // Jobs on CUPS queues: the server's state, its printer's message, the
+    // sheets it counted and how far the sheet in hand is (it knows no total).
+    for (int row = local_rows; row < rows; ++row) {
+        const auto& j = *queue_jobs_[static_cast<std::size_t>(row - local_rows)];
+        const auto& st = j.status;
+        set_text(row, col_job, j.id ? QStringLiteral("%1-%2").arg(j.name).arg(j.id) : tr("sending"));
+        set_text(row, col_document, j.title);
+        set_text(row, col_printer, j.queue);
+        QString state = st ? remote_state_text(st->state) : (j.error.isEmpty() ? tr("sending") : tr("not sent"));
+        if (j.cancelling && st && !st->ended()) state = tr("cancelling");
+        const auto said = st ? (st->ended() ? st->why_ended() : st->message) : std::string();
+        const auto why = !said.empty() ? qs(said) : j.error;
+        set_text(row, col_state, why.isEmpty() ? state : state + QStringLiteral(": ") + why);
+        const bool processing = st && st->state == ipp::RemoteJobState::processing;
+        set_text(row, col_sheet, processing ? QString::number(std::max(st->sheets_completed, 0) + 1) : QString());
+        const int pct = st && st->state == ipp::RemoteJobState::completed ? 100
+                        : processing && st->media_progress > 0   ? st->media_progress / 10 * 10
+                                                                 : 0;
+        bar_at(row, tr("Progress of the sheet in hand of %1").arg(j.title), pct);
+    }
+    shown_local_rows_ = local_rows;
+    if (selected_queue) {
+        for (std::size_t i = 0; i < queue_jobs_.size(); ++i)
+            if (queue_jobs_[i].get() == selected_queue && queue_->currentRow() != local_rows + static_cast<int>(i))
+                queue_->selectRow(local_rows + static_cast<int>(i));
+    } else if (selected) {
+        select_job(*selected);
+    }
+}
+
+int PrinterPanel::selected_row() const {
+    const int row = queue_->currentRow();
+    return row >= 0 && row < queue_->rowCount() && queue_->selectionModel()->isRowSelected(row, {}) ? row : -1;
+}
+
+PrinterPanel::QueueJob* PrinterPanel::selected_queue_job() const {
+    const int row = selected_row() - shown_local_rows_;
+    return row >= 0 && row < static_cast<int>(queue_jobs_.size()) ? queue_jobs_[static_cast<std::size_t>(row)].get()
+                                                                   : nullptr;
 }
 
 std::optional<spool::JobId> PrinterPanel::selected_job() const {
-    const int row = queue_->currentRow();
-    if (row >= 0 && row < static_cast<int>(jobs_.size()) && queue_->selectionModel()->isRowSelected(row, {}))
+    const int row = selected_row();
+    if (row >= 0 && row < shown_local_rows_ && row < static_cast<int>(jobs_.size()))
         return jobs_[static_cast<std::size_t>(row)].id;
+    if (row >= shown_local_rows_) return std::nullopt;  // a job on a CUPS queue
     if (auto e = embossing()) return e->id;
     return std::nullopt;
 }
@@ -755,6 +1068,16 @@ void PrinterPanel::update_status() {
 }
 
 void PrinterPanel::update_buttons() {
+    connect_->setEnabled(connected() || !selected_is_queue());
+    if (const auto* q = selected_queue_job()) {
+        // The server runs it: it can be cancelled there, not paused from here.
+        const bool cancellable = !q->ended && !q->cancelling;
+        if (cancellable) cancel_->setEnabled(true);
+        for (QWidget* w : {pause_, resume_, from_page_}) w->setEnabled(false);
+        if (!cancellable) cancel_->setEnabled(false);
+        faults_box_->setEnabled(selected_device() == QLatin1String(kSim));
+        return;
+    }
     std::optional<spool::JobRecord> job;
     if (const auto id = selected_job())
         for (const auto& j : jobs_)
@@ -808,7 +1131,20 @@ void PrinterPanel::resume_job() {
     act(static_cast<int>(stopped ? spool::Action::retry : spool::Action::resume));
 }
 
-void PrinterPanel::cancel_job() { act(static_cast<int>(spool::Action::cancel)); }
+void PrinterPanel::cancel_job() {
+    if (auto* q = selected_queue_job()) {
+        if (q->ended || q->cancelling) return;
+        // The job's thread sends Cancel-Job and follows the job to its end.
+        q->cancelling = true;
+        q->cancel = true;
+        log(tr("%1: cancel sent to %2").arg(q->title, q->queue));
+        Q_EMIT message(tr("Cancelling %1 on %2").arg(q->title, q->queue), false);
+        show_jobs();
+        update_buttons();
+        return;
+    }
+    act(static_cast<int>(spool::Action::cancel));
+}
 
 void PrinterPanel::resume_from_page(int page) {
     const auto id = selected_job();

@@ -10,6 +10,12 @@
 // resume, cancel and resume-from-page are spool actions, carried out by
 // whichever runner holds the job.
 //
+// Remote CUPS queues that run the Tactus backend (docs/cups.md) are listed
+// beside the cables, found off the GUI thread. Ctrl+P to such a queue sends
+// the document over IPP (core/ipp, as `tactus-cli emboss --device ipp://...`)
+// and the job view follows the job on the server; it is not in the local
+// spool, and quitting the app leaves it to the server.
+//
 // For technicians: a device picker that takes any device string, Connect
 // (HELLO, CONFIGURE with the profile being edited, STATUS), faults injected
 // into the built-in simulator, and the spool's event log.
@@ -72,6 +78,23 @@ public:
     [[nodiscard]] QString selected_device() const;
     // Chooses a listed device, or types the device string into the picker.
     void select_device(const QString& device);
+    // The chosen device is a CUPS queue (ipp://host/printers/NAME).
+    [[nodiscard]] bool selected_is_queue() const;
+
+    // Ctrl+P to a CUPS queue: sends `document` (the source document, named
+    // `file_name` so the server types it) to the chosen queue over IPP with
+    // braille table `table`, off the GUI thread, and follows the job on the
+    // server in the job view. False, with the fault shown, when the address
+    // names no queue; a server that refuses the job is reported when it does.
+    bool send_to_queue(const QString& title, const QString& file_name, const QByteArray& document,
+                       const QString& table);
+    // Rows of the job view for jobs sent to CUPS queues from this window: the
+    // state words the view shows, the job's CUPS name once sent ("Embosser-12").
+    struct QueueJobRow {
+        QString title, job, queue, state;
+        bool ended = false;
+    };
+    [[nodiscard]] std::vector<QueueJobRow> queue_jobs() const;
 
     // Ctrl+P: stores `pages` as a job on the chosen device's spool printer (set
     // up with `p` if needed, as `emboss --queue --device` does) and makes sure a
@@ -111,10 +134,13 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void message(const QString& text, bool error);
+    // A job ended: `id` is the spool's job id, or the server's for a job sent
+    // to a CUPS queue.
     void job_finished(qint64 id, bool completed, const QString& text);
 
 private:
     struct AppRunner;
+    struct QueueJob;
     struct Watch {
         spool::JobState state = spool::JobState::queued;
         std::string reason;
@@ -141,6 +167,10 @@ private:
     void log(const QString& line);
     void show_fault(const QString& text);
     void act(int action, std::optional<std::size_t> sheet = {});
+    void discover_queues();
+    void follow_queue_jobs();
+    [[nodiscard]] QueueJob* selected_queue_job() const;
+    [[nodiscard]] int selected_row() const;
 
     std::filesystem::path db_;
     std::unique_ptr<spool::Spool> spool_;
@@ -171,6 +201,9 @@ private:
     QGroupBox* faults_box_;
     QPlainTextEdit* log_;
     QTimer poll_timer_;
+    std::vector<std::unique_ptr<QueueJob>> queue_jobs_;
+    bool discovering_ = false;
+    int shown_local_rows_ = 0;  // rows of the job view above the jobs on CUPS queues
 };
 
 }  // namespace tactus::gui

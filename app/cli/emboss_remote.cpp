@@ -4,7 +4,6 @@
 #include <atomic>
 #include <csignal>
 #include <iostream>
-#include <optional>
 
 #include "command.hpp"
 #include "ipp/queue_options.hpp"
@@ -67,27 +66,19 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
     request.title = title;
     request.copies = static_cast<int>(copies);
     request.options = queue_options(layout, cmd);
-    const int id = require(ipp::submit_job(queue, request));
-    std::cout << "sent " << layout.file << " to " << uri << " as job " << id << std::endl;
-
     // Ctrl-C cancels the job on the server (as it stops a local job), and the
-    // command still waits to see it end.
+    // command still waits to see it end. One line per status worth telling.
     g_cancel.store(false);
-    std::signal(SIGINT, on_interrupt_remote);
-    std::signal(SIGTERM, on_interrupt_remote);
-    // One line per change of state, sheet count or message, and per tenth of
-    // a sheet: the server reports progress by the percent.
-    std::optional<ipp::RemoteJobStatus> shown;
-    const auto show = [&](const ipp::RemoteJobStatus& s) {
-        const bool same = shown && shown->state == s.state &&
-                          shown->sheets_completed == s.sheets_completed &&
-                          shown->message == s.message && shown->reasons == s.reasons &&
-                          shown->media_progress / 10 == s.media_progress / 10;
-        if (same) return;
-        std::cout << describe(s) << std::endl;
-        shown = s;
-    };
-    const auto end = ipp::follow_job(queue, id, show, g_cancel);
+    int id = 0;
+    const auto end = ipp::send_and_follow(
+        queue, request,
+        [&](int sent) {
+            id = sent;
+            std::cout << "sent " << layout.file << " to " << uri << " as job " << id << std::endl;
+            std::signal(SIGINT, on_interrupt_remote);
+            std::signal(SIGTERM, on_interrupt_remote);
+        },
+        [](const ipp::RemoteJobStatus& s) { std::cout << describe(s) << std::endl; }, g_cancel);
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     const auto last = require(end);
@@ -100,11 +91,11 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
             // printer's message then says why.
             throw CommandFailed(exit_failure,
                                 "job " + std::to_string(id) + " was cancelled on " + uri +
-                                    (last.message.empty() ? "" : ": " + last.message));
+                                    (last.why_ended().empty() ? "" : ": " + last.why_ended()));
         default:
             throw CommandFailed(exit_failure,
                                 "job " + std::to_string(id) + " was aborted on " + uri +
-                                    (last.message.empty() ? "" : ": " + last.message));
+                                    (last.why_ended().empty() ? "" : ": " + last.why_ended()));
     }
 }
 

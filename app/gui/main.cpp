@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption no_recovery(QStringLiteral("no-recovery"),
                                          QApplication::translate("main", "Do not offer to recover autosaved work."));
     const QCommandLineOption device_option(QStringLiteral("device"),
-                                           QApplication::translate("main", "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3."),
+                                           QApplication::translate("main", "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser."),
                                            QStringLiteral("device"));
     cli.addOptions({table, side, sheet, language, screenshot, panel_name, emboss_option, no_recovery, device_option});
     cli.process(app);

@@ -87,6 +87,12 @@ const char* to_string(RemoteJobState s) {
     return "unknown";
 }
 
+std::string RemoteJobStatus::why_ended() const {
+    if (state == RemoteJobState::cancelled && reasons.find("job-canceled-by-user") != std::string::npos)
+        return {};
+    return message;
+}
+
 Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.file, ec))
@@ -137,8 +143,16 @@ Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
     detail::Http http;
     bool cancel_sent = false;
     std::optional<RemoteJobStatus> last;
+    std::optional<clock::time_point> first_ended;
+    constexpr auto kStopping = std::chrono::seconds(3);
     auto answered = clock::now();
     for (;;) {
+        if (options.stop && options.stop->load()) {
+            if (last) return *last;
+            RemoteJobStatus unknown;
+            unknown.id = job_id;
+            return unknown;
+        }
         Result<RemoteJobStatus> s = fail(ErrorKind::device, "not connected");
         bool transient = true;  // a failed connect is worth another try
         if (!http) {
@@ -155,11 +169,21 @@ Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
         }
         if (s) {
             answered = clock::now();
-            if (!last || *last != *s) {
-                on_change(*s);
-                last = *s;
+            // An ended job whose backend is still stopping says only
+            // processing-to-stop-point; the reason it ended for
+            // (job-canceled-by-user, ...) follows a moment later.
+            const bool stopping = s->ended() &&
+                                  s->reasons.find("processing-to-stop-point") != std::string::npos &&
+                                  clock::now() - first_ended.value_or(clock::now()) < kStopping;
+            if (stopping) {
+                if (!first_ended) first_ended = clock::now();
+            } else {
+                if (!last || *last != *s) {
+                    on_change(*s);
+                    last = *s;
+                }
+                if (s->ended()) return *s;
             }
-            if (s->ended()) return *s;
         } else {
             // A job the server no longer knows, or a server that is gone for
             // longer than a restart takes: the end of following.
@@ -169,6 +193,30 @@ Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
         }
         std::this_thread::sleep_for(options.poll);
     }
+}
+
+bool worth_telling(const std::optional<RemoteJobStatus>& shown, const RemoteJobStatus& now) {
+    return !shown || shown->state != now.state ||
+           shown->sheets_completed != now.sheets_completed || shown->message != now.message ||
+           shown->reasons != now.reasons || shown->media_progress / 10 != now.media_progress / 10;
+}
+
+Result<RemoteJobStatus> send_and_follow(const QueueUri& queue, const RemoteJobRequest& request,
+                                        const std::function<void(int)>& on_sent,
+                                        const std::function<void(const RemoteJobStatus&)>& on_change,
+                                        const std::atomic<bool>& cancel, FollowOptions options) {
+    const auto id = submit_job(queue, request);
+    if (!id) return std::unexpected(id.error());
+    on_sent(*id);
+    std::optional<RemoteJobStatus> shown;
+    return follow_job(
+        queue, *id,
+        [&](const RemoteJobStatus& s) {
+            if (!worth_telling(shown, s)) return;
+            on_change(s);
+            shown = s;
+        },
+        cancel, options);
 }
 
 }  // namespace tactus::ipp

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +33,11 @@ struct RemoteJobStatus {
     int media_progress = -1;  // job-media-progress, percent of the current sheet; -1 unknown
 
     [[nodiscard]] bool ended() const { return state >= RemoteJobState::cancelled; }
+    // Why an ended job ended, in the printer's words: its last message (the
+    // filter's or backend's ERROR: line), but nothing for a job a user
+    // cancelled (job-canceled-by-user), whose last message is only the
+    // progress it had reached.
+    [[nodiscard]] std::string why_ended() const;
     friend bool operator==(const RemoteJobStatus&, const RemoteJobStatus&) = default;
 };
 
@@ -48,16 +54,37 @@ Result<RemoteJobStatus> job_status(const QueueUri& queue, int job_id);
 Result<void> cancel_job(const QueueUri& queue, int job_id);
 
 // Polls the job every `poll` until it ends, calling `on_change` with each
-// status that differs from the last one, and returns the final status. When
+// status that differs from the last one, and returns the final status (once
+// the backend has stopped, so its reasons say why it ended, within 3 s). When
 // `cancel` becomes true, Cancel-Job is sent once and the job is followed to
 // its end. A server that stops answering (cupsd restarting) is asked again
-// for `patience` before it is an error.
+// for `patience` before it is an error. When `stop` (if given) becomes true,
+// following ends with the last status seen: the job goes on on the server
+// (the app quits; its job is not cancelled by that).
 struct FollowOptions {
     std::chrono::milliseconds poll{250};
     std::chrono::seconds patience{60};
+    const std::atomic<bool>* stop = nullptr;
 };
 Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
                                    const std::function<void(const RemoteJobStatus&)>& on_change,
                                    const std::atomic<bool>& cancel, FollowOptions options = {});
+
+// Whether `now` is news after `shown` (the last status told to the user):
+// another state, sheet count, printer message or reasons, or another tenth of
+// the sheet in hand (the server reports progress by the percent). The CLI
+// prints a line and the app updates its job view on exactly these.
+[[nodiscard]] bool worth_telling(const std::optional<RemoteJobStatus>& shown,
+                                 const RemoteJobStatus& now);
+
+// One job to a Tactus queue, as `tactus-cli emboss --device ipp://...` and
+// the app's Ctrl+P send it: Print-Job (then `on_sent` with the job id), then
+// the job followed to its end, `on_change` called with each status worth
+// telling. An error before the job is sent (no server, no queue, a document
+// refused) comes back without `on_sent` being called.
+Result<RemoteJobStatus> send_and_follow(const QueueUri& queue, const RemoteJobRequest& request,
+                                        const std::function<void(int)>& on_sent,
+                                        const std::function<void(const RemoteJobStatus&)>& on_change,
+                                        const std::atomic<bool>& cancel, FollowOptions options = {});
 
 }  // namespace tactus::ipp

@@ -4,6 +4,7 @@
 // local cables: CUPS-Get-Printers, kept when the queue runs the Tactus
 // backend (device-uri tactus:...) or was made from the Tactus PPD
 // (printer-make-and-model, for servers that hide device-uri from clients).
+#include <chrono>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,7 @@ struct RemoteQueue {
     std::string make_and_model;  // printer-make-and-model
     std::string state;           // idle, processing or stopped, with printer-state-message
     bool accepting = true;       // printer-is-accepting-jobs
+    std::string server;          // host:port of the CUPS server that offers it (for labels)
 };
 
 // "tactus:..." device or the PPD's model name: the one test of "a Tactus queue".
@@ -28,5 +30,13 @@ struct RemoteQueue {
 // The Tactus queues of the server at host:port, by name. A server that is not
 // there is a device error.
 Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port = 631);
+
+// The Tactus queues this machine sees through libcups's destinations
+// (cupsEnumDests): the queues of its CUPS server (the local cupsd, or the one
+// CUPS_SERVER or client.conf names), and shared queues found on the network
+// by DNS-SD within `browse`. Blocks for up to `browse` and the server's
+// answer: call it off the GUI thread. No server at all is a device error.
+Result<std::vector<RemoteQueue>> visible_tactus_queues(
+    std::chrono::milliseconds browse = std::chrono::milliseconds(1500));
 
 }  // namespace tactus::ipp

@@ -73,47 +73,62 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="52" />
+        <location filename="../../widgets/printer_panel.cpp" line="69" />
+        <location filename="../../widgets/printer_panel.cpp" line="82" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="53" />
+        <location filename="../../widgets/printer_panel.cpp" line="71" />
+        <location filename="../../widgets/printer_panel.cpp" line="83" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="54" />
+        <location filename="../../widgets/printer_panel.cpp" line="84" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="55" />
+        <location filename="../../widgets/printer_panel.cpp" line="75" />
+        <location filename="../../widgets/printer_panel.cpp" line="85" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="56" />
+        <location filename="../../widgets/printer_panel.cpp" line="70" />
+        <source>held</source>
+        <translation>保留中</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="72" />
+        <location filename="../../widgets/printer_panel.cpp" line="86" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="57" />
+        <location filename="../../widgets/printer_panel.cpp" line="73" />
+        <location filename="../../widgets/printer_panel.cpp" line="87" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="74" />
+        <source>aborted</source>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="118" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <location filename="../../widgets/printer_panel.cpp" line="120" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="92" />
+        <location filename="../../widgets/printer_panel.cpp" line="122" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -172,8 +187,8 @@
     </message>
     <message>
         <location filename="../../app/gui/main.cpp" line="87" />
-        <source>Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3.</source>
-        <translation>Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0 或 pty:/dev/pts/3。</translation>
+        <source>Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser.</source>
+        <translation>Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0、pty:/dev/pts/3 或 CUPS 佇列 ipp://server/printers/Embosser。</translation>
     </message>
 </context>
 <context>
@@ -280,8 +295,8 @@
     <message>
         <location filename="../../widgets/main_window.cpp" line="85" />
         <location filename="../../widgets/main_window.cpp" line="491" />
-        <location filename="../../widgets/main_window.cpp" line="616" />
-        <location filename="../../widgets/main_window.cpp" line="627" />
+        <location filename="../../widgets/main_window.cpp" line="619" />
+        <location filename="../../widgets/main_window.cpp" line="630" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -382,7 +397,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="212" />
-        <location filename="../../widgets/main_window.cpp" line="633" />
+        <location filename="../../widgets/main_window.cpp" line="636" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -639,8 +654,8 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="481" />
-        <location filename="../../widgets/main_window.cpp" line="617" />
-        <location filename="../../widgets/main_window.cpp" line="682" />
+        <location filename="../../widgets/main_window.cpp" line="620" />
+        <location filename="../../widgets/main_window.cpp" line="685" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -655,198 +670,199 @@
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="524" />
+        <location filename="../../widgets/main_window.cpp" line="527" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
-        <location filename="../../widgets/main_window.cpp" line="567" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
+        <location filename="../../widgets/main_window.cpp" line="570" />
+        <location filename="../../widgets/main_window.cpp" line="690" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="530" />
+        <location filename="../../widgets/main_window.cpp" line="533" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="530" />
+        <location filename="../../widgets/main_window.cpp" line="533" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="532" />
+        <location filename="../../widgets/main_window.cpp" line="535" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="553" />
+        <location filename="../../widgets/main_window.cpp" line="556" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="562" />
+        <location filename="../../widgets/main_window.cpp" line="565" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="569" />
+        <location filename="../../widgets/main_window.cpp" line="572" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="570" />
+        <location filename="../../widgets/main_window.cpp" line="573" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="581" />
+        <location filename="../../widgets/main_window.cpp" line="584" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="619" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="628" />
+        <location filename="../../widgets/main_window.cpp" line="631" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="630" />
+        <location filename="../../widgets/main_window.cpp" line="633" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="637" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="741" />
+        <location filename="../../widgets/main_window.cpp" line="751" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="794" />
+        <location filename="../../widgets/main_window.cpp" line="804" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="809" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="815" />
+        <location filename="../../widgets/main_window.cpp" line="825" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="821" />
+        <location filename="../../widgets/main_window.cpp" line="831" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="823" />
+        <location filename="../../widgets/main_window.cpp" line="833" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="824" />
+        <location filename="../../widgets/main_window.cpp" line="834" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="843" />
+        <location filename="../../widgets/main_window.cpp" line="853" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="847" />
+        <location filename="../../widgets/main_window.cpp" line="857" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="859" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="859" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878" />
+        <location filename="../../widgets/main_window.cpp" line="888" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878" />
+        <location filename="../../widgets/main_window.cpp" line="888" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="880" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="880" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="891" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="891" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="892" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="892" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="889" />
+        <location filename="../../widgets/main_window.cpp" line="899" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="890" />
+        <location filename="../../widgets/main_window.cpp" line="900" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1152,433 +1168,584 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="120" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="125" />
+        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser</source>
+        <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="185" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="126" />
-        <location filename="../../widgets/printer_panel.cpp" line="424" />
-        <location filename="../../widgets/printer_panel.cpp" line="463" />
+        <location filename="../../widgets/printer_panel.cpp" line="186" />
+        <location filename="../../widgets/printer_panel.cpp" line="541" />
+        <location filename="../../widgets/printer_panel.cpp" line="734" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="128" />
-        <location filename="../../widgets/printer_panel.cpp" line="732" />
+        <location filename="../../widgets/printer_panel.cpp" line="188" />
+        <location filename="../../widgets/printer_panel.cpp" line="1045" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="130" />
+        <location filename="../../widgets/printer_panel.cpp" line="190" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="135" />
+        <location filename="../../widgets/printer_panel.cpp" line="195" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="140" />
+        <location filename="../../widgets/printer_panel.cpp" line="200" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="141" />
+        <location filename="../../widgets/printer_panel.cpp" line="201" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="202" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="149" />
+        <location filename="../../widgets/printer_panel.cpp" line="209" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="150" />
+        <location filename="../../widgets/printer_panel.cpp" line="210" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="151" />
+        <location filename="../../widgets/printer_panel.cpp" line="211" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="154" />
+        <location filename="../../widgets/printer_panel.cpp" line="217" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="155" />
+        <location filename="../../widgets/printer_panel.cpp" line="218" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="159" />
+        <location filename="../../widgets/printer_panel.cpp" line="222" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="164" />
+        <location filename="../../widgets/printer_panel.cpp" line="227" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="174" />
+        <location filename="../../widgets/printer_panel.cpp" line="237" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="175" />
+        <location filename="../../widgets/printer_panel.cpp" line="238" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="177" />
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="178" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="179" />
+        <location filename="../../widgets/printer_panel.cpp" line="242" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="243" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="182" />
+        <location filename="../../widgets/printer_panel.cpp" line="245" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="183" />
+        <location filename="../../widgets/printer_panel.cpp" line="246" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="188" />
+        <location filename="../../widgets/printer_panel.cpp" line="251" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="208" />
+        <location filename="../../widgets/printer_panel.cpp" line="271" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="253" />
+        <location filename="../../widgets/printer_panel.cpp" line="317" />
+        <source>The built-in simulated embosser, on this computer</source>
+        <translation>內建的模擬點字印表機，在本電腦上</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="318" />
+        <source>An embosser on a cable to this computer</source>
+        <translation>以纜線連接本電腦的點字印表機</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="321" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="290" />
+        <location filename="../../widgets/printer_panel.cpp" line="336" />
+        <source>Listing CUPS queues: %1</source>
+        <translation>列出 CUPS 佇列：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="342" />
+        <source>Network queue %1 on %2</source>
+        <translation>網路佇列 %1（位於 %2）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="347" />
+        <source>Network queue %1 on the CUPS server %2</source>
+        <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="350" />
+        <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
+        <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/printer_panel.cpp" line="357" />
+        <source>%n Tactus queue(s) found on CUPS servers</source>
+        <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="402" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="295" />
+        <location filename="../../widgets/printer_panel.cpp" line="407" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="305" />
+        <location filename="../../widgets/printer_panel.cpp" line="417" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="316" />
+        <location filename="../../widgets/printer_panel.cpp" line="428" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="320" />
+        <location filename="../../widgets/printer_panel.cpp" line="432" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="327" />
+        <location filename="../../widgets/printer_panel.cpp" line="439" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="331" />
+        <location filename="../../widgets/printer_panel.cpp" line="443" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="347" />
+        <location filename="../../widgets/printer_panel.cpp" line="459" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="358" />
+        <location filename="../../widgets/printer_panel.cpp" line="470" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="370" />
+        <location filename="../../widgets/printer_panel.cpp" line="482" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="380" />
+        <location filename="../../widgets/printer_panel.cpp" line="492" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="393" />
+        <location filename="../../widgets/printer_panel.cpp" line="497" />
+        <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
+        <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="510" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="405" />
+        <location filename="../../widgets/printer_panel.cpp" line="522" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="688" />
-        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <location filename="../../widgets/printer_panel.cpp" line="575" />
+        <source>“%1” is not a CUPS queue: %2</source>
+        <translation>「%1」不是 CUPS 佇列：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="587" />
+        <source>Cannot send %1: cannot write a copy to send (%2)</source>
+        <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="614" />
+        <source>Sending %1 to %2 (%3)</source>
+        <translation>正在將 %1 送到 %2（%3）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="615" />
+        <source>Sending %1 to %2</source>
+        <translation>正在將 %1 送到 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="642" />
+        <source>Sent %1 to %2 as job %3</source>
+        <translation>已將 %1 送到 %2，工作 %3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="649" />
+        <source>Embossing %1 on %2</source>
+        <translation>正在以 %2 列印 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="652" />
+        <source>%1 waits on %2: %3</source>
+        <translation>%1 在 %2 等待中：%3</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/printer_panel.cpp" line="658" />
+        <source>%1: %n sheet(s) embossed</source>
+        <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="663" />
+        <source>Job %1 on %2: %3</source>
+        <translation>%2 的工作 %1：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="676" />
+        <source>%1: the job on %2 can no longer be followed: %3</source>
+        <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="677" />
+        <source>%1 was not sent to %2: %3</source>
+        <translation>%1 未送到 %2：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="690" />
+        <source>Embossed %1 on %2</source>
+        <translation>已以 %2 列印 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="692" />
+        <source>%1 cancelled on %2</source>
+        <translation>%1 已在 %2 取消</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="693" />
+        <source>%1 cancelled on %2: %3</source>
+        <translation>%1 已在 %2 取消：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="695" />
+        <source>%1 stopped on %2: %3</source>
+        <translation>%1 已在 %2 停止：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="929" />
+        <location filename="../../widgets/printer_panel.cpp" line="932" />
+        <source>sending</source>
+        <translation>傳送中</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="932" />
+        <source>not sent</source>
+        <translation>未送出</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="933" />
+        <source>cancelling</source>
+        <translation>取消中</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="942" />
+        <source>Progress of the sheet in hand of %1</source>
+        <translation>%1 目前這張的進度</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="1001" />
+        <location filename="../../widgets/printer_panel.cpp" line="1038" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="693" />
+        <location filename="../../widgets/printer_panel.cpp" line="1006" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="701" />
+        <location filename="../../widgets/printer_panel.cpp" line="1014" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <location filename="../../widgets/printer_panel.cpp" line="1038" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="736" />
+        <location filename="../../widgets/printer_panel.cpp" line="1049" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="739" />
+        <location filename="../../widgets/printer_panel.cpp" line="1052" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="740" />
+        <location filename="../../widgets/printer_panel.cpp" line="1053" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="745" />
+        <location filename="../../widgets/printer_panel.cpp" line="1058" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="748" />
+        <location filename="../../widgets/printer_panel.cpp" line="1061" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel.cpp" line="1112" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="820" />
+        <location filename="../../widgets/printer_panel.cpp" line="1137" />
+        <source>%1: cancel sent to %2</source>
+        <translation>%1：已向 %2 送出取消</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="1138" />
+        <source>Cancelling %1 on %2</source>
+        <translation>正在取消 %2 上的 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="1156" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="824" />
+        <location filename="../../widgets/printer_panel.cpp" line="1160" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="830" />
+        <location filename="../../widgets/printer_panel.cpp" line="1166" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="834" />
+        <location filename="../../widgets/printer_panel.cpp" line="1170" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="838" />
+        <location filename="../../widgets/printer_panel.cpp" line="1174" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="842" />
+        <location filename="../../widgets/printer_panel.cpp" line="1178" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="371" />
+        <location filename="../../widgets/printer_panel.cpp" line="483" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="122" />
-        <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600</source>
-        <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠；也可以輸入裝置字串，例如 pty:/dev/pts/3 或 serial:/dev/ttyUSB0?baud=57600</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="124" />
+        <location filename="../../widgets/printer_panel.cpp" line="184" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="414" />
+        <location filename="../../widgets/printer_panel.cpp" line="531" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="409" />
+        <location filename="../../widgets/printer_panel.cpp" line="526" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="421" />
+        <location filename="../../widgets/printer_panel.cpp" line="538" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="441" />
+        <location filename="../../widgets/printer_panel.cpp" line="558" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="445" />
+        <location filename="../../widgets/printer_panel.cpp" line="562" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="464" />
+        <location filename="../../widgets/printer_panel.cpp" line="581" />
+        <source>%1 at %2</source>
+        <translation>%2 的 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="735" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="493" />
+        <location filename="../../widgets/printer_panel.cpp" line="764" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="546" />
+        <location filename="../../widgets/printer_panel.cpp" line="817" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="553" />
-        <location filename="../../widgets/printer_panel.cpp" line="697" />
+        <location filename="../../widgets/printer_panel.cpp" line="824" />
+        <location filename="../../widgets/printer_panel.cpp" line="1010" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="555" />
+        <location filename="../../widgets/printer_panel.cpp" line="826" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="588" />
+        <location filename="../../widgets/printer_panel.cpp" line="859" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="590" />
+        <location filename="../../widgets/printer_panel.cpp" line="861" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="644" />
+        <location filename="../../widgets/printer_panel.cpp" line="922" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="446" />
+        <location filename="../../widgets/printer_panel.cpp" line="563" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="563" />
+        <location filename="../../widgets/printer_panel.cpp" line="834" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="564" />
+        <location filename="../../widgets/printer_panel.cpp" line="835" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="547" />
+        <location filename="../../widgets/printer_panel.cpp" line="818" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="580" />
-        <location filename="../../widgets/printer_panel.cpp" line="610" />
+        <location filename="../../widgets/printer_panel.cpp" line="851" />
+        <location filename="../../widgets/printer_panel.cpp" line="881" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="588" />
+        <location filename="../../widgets/printer_panel.cpp" line="859" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="794" />
+        <location filename="../../widgets/printer_panel.cpp" line="1117" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="804" />
+        <location filename="../../widgets/printer_panel.cpp" line="1127" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>

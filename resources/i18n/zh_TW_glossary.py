@@ -172,8 +172,6 @@ T = {
     "contracted": "縮寫", "grade %1": "第 %1 級", ", ": "，",
     # The printer panel as a spool client (session 2, appspool).
     "all %1 strikes of sheets %2 to %3 checked against the plan": "第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對",
-    "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0 or pty:/dev/pts/3.":
-        "Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0 或 pty:/dev/pts/3。",
     "%1 is being embossed. Quit anyway?": "%1 正在列印。仍要結束嗎？",
     "The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.":
         "工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。",
@@ -204,8 +202,8 @@ T = {
     "%1: %2": "%1：%2", "%1 is embossed again from sheet %2": "%1 從第 %2 張重新列印",
     "Simulator: the paper runs out": "模擬器：紙張用完", "Simulator: the cable is pulled for 5 seconds": "模擬器：纜線拔除 5 秒",
     "Simulator: line noise for 2 seconds": "模擬器：線路雜訊 2 秒", "Simulator: the controller resets": "模擬器：控制器重設",
-    "The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600":
-        "內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠；也可以輸入裝置字串，例如 pty:/dev/pts/3 或 serial:/dev/ttyUSB0?baud=57600",
+    "The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser":
+        "內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser",
     "Embosser device": "點字印表機裝置", "Disconnected from printer %1": "已與印表機 %1 中斷連線",
     "Cannot queue %1: %2": "無法將 %1 排入佇列：%2", "Queued %1 as job %2 on printer %3": "已將 %1 排入印表機 %3，工作 %2",
     "The print queue cannot be written (%1): this window stopped running printer %2":
@@ -215,6 +213,33 @@ T = {
     "%1 stopped: %2. The job is kept; fix the problem, then resume it.": "%1 已停止：%2。工作已保留；排除問題後請繼續。",
     "job %1": "工作 %1", "%1 The printer is running again.": "%1 印表機已恢復運作。",
     "%1 goes on: the printer is running again": "%1 繼續進行：印表機已恢復運作",
+    # Printing to a CUPS queue (issue 15 item 3): 網路佇列 network queue, 伺服器 server.
+    "held": "保留中", "aborted": "已中止", "sending": "傳送中", "not sent": "未送出", "cancelling": "取消中",
+    "The built-in simulated embosser, on this computer": "內建的模擬點字印表機，在本電腦上",
+    "An embosser on a cable to this computer": "以纜線連接本電腦的點字印表機",
+    "Listing CUPS queues: %1": "列出 CUPS 佇列：%1",
+    "Network queue %1 on %2": "網路佇列 %1（位於 %2）",
+    "Network queue %1 on the CUPS server %2": "網路佇列 %1，位於 CUPS 伺服器 %2",
+    "A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile":
+        "另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版",
+    "%n Tactus queue(s) found on CUPS servers": "在 CUPS 伺服器上找到 %n 個 Tactus 佇列",
+    "%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.":
+        "%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。",
+    "\u201c%1\u201d is not a CUPS queue: %2": "「%1」不是 CUPS 佇列：%2",
+    "%1 at %2": "%2 的 %1",
+    "Cannot send %1: cannot write a copy to send (%2)": "無法送出 %1：無法寫入要送出的副本（%2）",
+    "Sending %1 to %2 (%3)": "正在將 %1 送到 %2（%3）", "Sending %1 to %2": "正在將 %1 送到 %2",
+    "Sent %1 to %2 as job %3": "已將 %1 送到 %2，工作 %3",
+    "Embossing %1 on %2": "正在以 %2 列印 %1", "%1 waits on %2: %3": "%1 在 %2 等待中：%3",
+    "%1: %n sheet(s) embossed": "%1：已列印 %n 張", "Job %1 on %2: %3": "%2 的工作 %1：%3",
+    "%1: the job on %2 can no longer be followed: %3": "%1：無法再追蹤 %2 上的工作：%3",
+    "%1 was not sent to %2: %3": "%1 未送到 %2：%3", "Embossed %1 on %2": "已以 %2 列印 %1",
+    "%1 cancelled on %2": "%1 已在 %2 取消", "%1 cancelled on %2: %3": "%1 已在 %2 取消：%3",
+    "%1 stopped on %2: %3": "%1 已在 %2 停止：%3",
+    "Progress of the sheet in hand of %1": "%1 目前這張的進度",
+    "%1: cancel sent to %2": "%1：已向 %2 送出取消", "Cancelling %1 on %2": "正在取消 %2 上的 %1",
+    "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser.":
+        "Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0、pty:/dev/pts/3 或 CUPS 佇列 ipp://server/printers/Embosser。",
 }
 
 

@@ -6,7 +6,6 @@
 // with the exactly-once audit of the simulator's strike log against the plan.
 #include <gtest/gtest.h>
 
-#include <fstream>
 
 #include "cups_rig.hpp"
 
@@ -23,13 +22,25 @@ using test::lesson;
     if (!test::have_cupsd()) GTEST_SKIP() << "cupsd, lpadmin, lp, lpstat not installed"; \
     ASSERT_TRUE((rig).started()) << (rig).error_log()
 
+// Three copies of a lesson sent with lp to a slow simulator, embossing: the
+// CUPS job and the spool job once 100 strikes are in (the kill tests' start).
+void start_mid_job(CupsRig& rig, PtySim& sim, int& cups_id, spool::JobId& id) {
+    ASSERT_TRUE(rig.add_queue(sim));
+    const auto doc = rig.lesson_file("lesson.md", 4);
+    std::string out;
+    cups_id = rig.lp(doc, {"-n", "3"}, out);
+    ASSERT_GT(cups_id, 0) << out;
+    id = rig.spool_job();
+    ASSERT_NE(id, 0) << rig.error_log();
+    ASSERT_TRUE(rig.e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 100; }, id));
+}
+
 TEST(CupsE2E, AnotherUsersJobIsEmbossedExactlyAsPlanned) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim");
     ASSERT_TRUE(rig.add_queue(sim)) << rig.error_log();
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(3);
+    const auto doc = rig.lesson_file("lesson.md", 3);
     std::string out;
     const int cups_id = rig.lp(doc, {"-o", "braille-table=en-ueb-g1", "-o", "interpoint=true", "-n", "2"}, out);
     ASSERT_GT(cups_id, 0) << out;
@@ -59,8 +70,7 @@ TEST(CupsE2E, CancelInCupsAbortsOnTheController) {
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim", {}, 100);  // slow motion: the job is still running when cancelled
     ASSERT_TRUE(rig.add_queue(sim));
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(6);
+    const auto doc = rig.lesson_file("lesson.md", 6);
     std::string out;
     const int cups_id = rig.lp(doc, {"-n", "5"}, out);
     ASSERT_GT(cups_id, 0) << out;
@@ -86,8 +96,7 @@ TEST(CupsE2E, PaperOutShowsInLpstatThenTheJobCarriesOn) {
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim", {"--paper-out-at", "2", "--paper-reload", "4000"});
     ASSERT_TRUE(rig.add_queue(sim));
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(3);
+    const auto doc = rig.lesson_file("lesson.md", 3);
     std::string out;
     const int cups_id = rig.lp(doc, {"-n", "2"}, out);
     ASSERT_GT(cups_id, 0) << out;
@@ -111,15 +120,9 @@ TEST(CupsE2E, CupsdKilledMidJobLosesNoSheetAndDoublesNone) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim", {}, 300);
-    ASSERT_TRUE(rig.add_queue(sim));
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(4);
-    std::string out;
-    const int cups_id = rig.lp(doc, {"-n", "3"}, out);
-    ASSERT_GT(cups_id, 0) << out;
-    const auto id = rig.spool_job();
-    ASSERT_NE(id, 0) << rig.error_log();
-    ASSERT_TRUE(rig.e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 100; }, id));
+    int cups_id = 0;
+    spool::JobId id = 0;
+    ASSERT_NO_FATAL_FAILURE(start_mid_job(rig, sim, cups_id, id));
     rig.kill_cupsd();
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     ASSERT_TRUE(rig.restart_cupsd()) << rig.error_log();
@@ -136,15 +139,9 @@ TEST(CupsE2E, BackendKilledMidJobResumesWithoutLossOrDoubles) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim", {}, 300);
-    ASSERT_TRUE(rig.add_queue(sim));
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(4);
-    std::string out;
-    const int cups_id = rig.lp(doc, {"-n", "3"}, out);
-    ASSERT_GT(cups_id, 0) << out;
-    const auto id = rig.spool_job();
-    ASSERT_NE(id, 0) << rig.error_log();
-    ASSERT_TRUE(rig.e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 100; }, id));
+    int cups_id = 0;
+    spool::JobId id = 0;
+    ASSERT_NO_FATAL_FAILURE(start_mid_job(rig, sim, cups_id, id));
     // The runner token names the backend's pid: kill exactly that process.
     const auto runner = rig.e.spool().job(id)->runner;
     ASSERT_NE(runner.find(':'), std::string::npos) << runner;
@@ -169,8 +166,7 @@ TEST(CupsE2E, AnUnknownTableFailsTheJobWithAClearErrorAndEmbossesNothing) {
     REQUIRE_CUPS(rig);
     PtySim sim(rig.e.dir.path(), "sim");
     ASSERT_TRUE(rig.add_queue(sim));
-    const auto doc = rig.e.dir / "lesson.md";
-    std::ofstream(doc) << lesson(1);
+    const auto doc = rig.lesson_file("lesson.md", 1);
     std::string out;
     const int cups_id = rig.lp(doc, {"-o", "braille-table=no-such-table"}, out);
     ASSERT_GT(cups_id, 0) << out;

@@ -14,7 +14,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <vector>
@@ -90,6 +93,36 @@ public:
         return {};
     }
     [[nodiscard]] std::string queue_uri(const std::string& name) const { return "ipp://" + server() + "/printers/" + name; }
+
+    // Points this process's libcups at the private server (CUPS_SERVER and
+    // friends), for a client that runs in the test itself (the app).
+    void use_in_this_process() const {
+        for (const auto& kv : env_) {
+            const auto eq = kv.find('=');
+            ::setenv(kv.substr(0, eq).c_str(), kv.substr(eq + 1).c_str(), 1);
+        }
+    }
+
+    // A lesson of `paragraphs` paragraphs in the test folder, readable by
+    // every user (the teacher sends it).
+    std::filesystem::path lesson_file(const std::string& name, int paragraphs) {
+        const auto doc = e.dir / name;
+        std::ofstream(doc) << lesson(paragraphs);
+        std::filesystem::permissions(
+            doc, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                     std::filesystem::perms::group_read | std::filesystem::perms::others_read);
+        return doc;
+    }
+
+    // The newest spool job so far (0: none), so a test finds the one its job makes.
+    spool::JobId last_spool_job() {
+        spool::JobId last = 0;
+        if (std::filesystem::exists(e.db))
+            if (auto s = spool::Spool::open(e.db, {.create = false}))
+                if (auto jobs = s->jobs(true); jobs)
+                    for (const auto& j : *jobs) last = std::max(last, j.id);
+        return last;
+    }
 
     // A CUPS client command with the private server's environment; as the
     // teacher when `as_teacher` and we are root.

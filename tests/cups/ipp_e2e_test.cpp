@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
-#include <fstream>
 #include <regex>
 
 #include "cups_rig.hpp"
@@ -21,6 +20,11 @@ using spool::JobState;
 using test::CupsRig;
 using test::PtySim;
 
+int cups_job_id(const std::string& out) {
+    std::smatch m;
+    return std::regex_search(out, m, std::regex("as job ([0-9]+)")) ? std::stoi(m[1]) : 0;
+}
+
 class CupsIppE2E : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
@@ -30,17 +34,12 @@ class CupsIppE2E : public ::testing::Test {
     void SetUp() override {
         if (!test::have_cupsd()) GTEST_SKIP() << "cupsd, lpadmin, lp, lpstat not installed";
         ASSERT_TRUE(rig_->started()) << rig_->error_log();
-        before_ = last_spool_job();
+        before_ = rig().last_spool_job();
     }
     static CupsRig& rig() { return *rig_; }
 
     std::filesystem::path lesson_file(const std::string& name, int paragraphs) {
-        const auto doc = rig().e.dir / name;
-        std::ofstream(doc) << test::lesson(paragraphs);
-        std::filesystem::permissions(
-            doc, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
-                     std::filesystem::perms::group_read | std::filesystem::perms::others_read);
-        return doc;
+        return rig().lesson_file(name, paragraphs);
     }
     // tactus-cli emboss to queue `name`, as the teacher.
     std::vector<std::string> emboss(const std::string& queue, const std::filesystem::path& doc,
@@ -51,23 +50,27 @@ class CupsIppE2E : public ::testing::Test {
         args.push_back(doc.string());
         return rig().command(args, as_teacher);
     }
-    spool::JobId last_spool_job() {
-        spool::JobId last = 0;
-        if (std::filesystem::exists(rig().e.db))
-            if (auto s = spool::Spool::open(rig().e.db, {.create = false}))
-                if (auto jobs = s->jobs(true); jobs)
-                    for (const auto& j : *jobs) last = std::max(last, j.id);
-        return last;
+    // The CLI's job on the server, once the simulator has struck more than
+    // `strikes` dots: its CUPS id (from the CLI's "as job N" line) and the
+    // spool job the backend made for it.
+    void wait_embossing(spool::test::Process& cli, const PtySim& sim, std::size_t strikes, int& cups_id,
+                        spool::JobId& id) {
+        const auto sent = cli.read_line(std::chrono::seconds(30));
+        cups_id = cups_job_id(sent);
+        ASSERT_GT(cups_id, 0) << sent;
+        id = rig().newest_spool_job(before_);
+        ASSERT_NE(id, 0) << rig().error_log();
+        ASSERT_TRUE(rig().e.wait_for(
+            [&](const spool::JobRecord&) { return sim.strikes().size() > strikes; }, id));
     }
+    // The CLI's output and errors in one stream.
+    static inline const spool::test::Process::Options merged{
+        .stderr_file = {}, .merge_stderr = true, .stdin_text = {}};
 
     spool::JobId before_ = 0;  // the newest spool job before this test
     static inline std::unique_ptr<CupsRig> rig_;
 };
 
-int cups_job_id(const std::string& out) {
-    std::smatch m;
-    return std::regex_search(out, m, std::regex("as job ([0-9]+)")) ? std::stoi(m[1]) : 0;
-}
 
 TEST_F(CupsIppE2E, TheCliSendsTheDocumentAndFollowsTheJobToCompletion) {
     PtySim sim(rig().e.dir.path(), "sim-complete");
@@ -113,16 +116,10 @@ TEST_F(CupsIppE2E, ACancelOnTheServerEndsTheCliWithExit1) {
     PtySim sim(rig().e.dir.path(), "sim-cancel", {}, 100);  // slow: still running when cancelled
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserB"));
     const auto doc = lesson_file("cancel.md", 6);
-    spool::test::Process cli(
-        emboss("EmbosserB", doc, {"--copies", "5"}),
-        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
-    const auto sent = cli.read_line(std::chrono::seconds(30));
-    const int cups_id = cups_job_id(sent);
-    ASSERT_GT(cups_id, 0) << sent;
-    const auto id = rig().newest_spool_job(before_);
-    ASSERT_NE(id, 0) << rig().error_log();
-    ASSERT_TRUE(
-        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
+    spool::test::Process cli(emboss("EmbosserB", doc, {"--copies", "5"}), merged);
+    int cups_id = 0;
+    spool::JobId id = 0;
+    ASSERT_NO_FATAL_FAILURE(wait_embossing(cli, sim, 20, cups_id, id));
     const auto [code, msg] = rig().client({"cancel", "EmbosserB-" + std::to_string(cups_id)});
     ASSERT_EQ(code, 0) << msg;
     const auto rest = cli.read_all();
@@ -140,15 +137,11 @@ TEST_F(CupsIppE2E, CtrlCInTheCliCancelsTheJobOnTheServer) {
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserC"));
     const auto doc = lesson_file("interrupt.md", 6);
     // Not through runuser: the signal goes to tactus-cli itself.
-    spool::test::Process cli(
-        emboss("EmbosserC", doc, {"--copies", "5"}, /*as_teacher=*/false),
-        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
-    const int cups_id = cups_job_id(cli.read_line(std::chrono::seconds(30)));
-    ASSERT_GT(cups_id, 0);
-    const auto id = rig().newest_spool_job(before_);
-    ASSERT_NE(id, 0) << rig().error_log();
-    ASSERT_TRUE(
-        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 20; }, id));
+    spool::test::Process cli(emboss("EmbosserC", doc, {"--copies", "5"}, /*as_teacher=*/false),
+                             merged);
+    int cups_id = 0;
+    spool::JobId id = 0;
+    ASSERT_NO_FATAL_FAILURE(wait_embossing(cli, sim, 20, cups_id, id));
     cli.signal(SIGINT);
     const auto rest = cli.read_all();
     EXPECT_EQ(cli.wait(), 1) << rest;
@@ -161,15 +154,10 @@ TEST_F(CupsIppE2E, TheCliWaitsThroughACupsdRestartAndSeesTheJobComplete) {
     PtySim sim(rig().e.dir.path(), "sim-restart", {}, 300);
     ASSERT_TRUE(rig().add_queue(sim, "EmbosserR"));
     const auto doc = lesson_file("restart.md", 4);
-    spool::test::Process cli(
-        emboss("EmbosserR", doc, {"--copies", "3"}),
-        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
-    const int cups_id = cups_job_id(cli.read_line(std::chrono::seconds(30)));
-    ASSERT_GT(cups_id, 0);
-    const auto id = rig().newest_spool_job(before_);
-    ASSERT_NE(id, 0) << rig().error_log();
-    ASSERT_TRUE(
-        rig().e.wait_for([&](const spool::JobRecord&) { return sim.strikes().size() > 100; }, id));
+    spool::test::Process cli(emboss("EmbosserR", doc, {"--copies", "3"}), merged);
+    int cups_id = 0;
+    spool::JobId id = 0;
+    ASSERT_NO_FATAL_FAILURE(wait_embossing(cli, sim, 100, cups_id, id));
     rig().kill_cupsd();
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     ASSERT_TRUE(rig().restart_cupsd()) << rig().error_log();
@@ -187,7 +175,7 @@ TEST_F(CupsIppE2E, AnUnknownTableEndsTheCliWithTheFiltersErrorAndEmbossesNothing
     const auto doc = lesson_file("badtable.md", 1);
     spool::test::Process cli(
         emboss("EmbosserD", doc, {"-t", "no-such-table"}),
-        spool::test::Process::Options{.stderr_file = {}, .merge_stderr = true, .stdin_text = {}});
+        merged);
     const auto out = cli.read_all();
     EXPECT_EQ(cli.wait(), 1) << out;
     // CUPS ends a job its filter refused as cancelled, with the filter's ERROR: line.

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -48,6 +49,19 @@ inline Error import_data_file_error(const std::string& name, const std::string& 
     EXPECT_FALSE(doc.has_value()) << name << " imported although it should not";
     return doc ? Error{} : doc.error();
 }
+
+// Short names for the expected blocks of the importer tests:
+// `using namespace shorthand;` where they are written out.
+namespace shorthand {
+inline constexpr auto H = document::BlockKind::heading;
+inline constexpr auto P = document::BlockKind::paragraph;
+inline constexpr auto LI = document::BlockKind::list_item;
+inline constexpr auto N = document::BlockKind::note;
+inline constexpr auto C = document::BlockKind::table_cell;
+inline constexpr std::uint8_t I = document::emphasis_italic;
+inline constexpr std::uint8_t B = document::emphasis_bold;
+inline constexpr std::uint8_t U = document::emphasis_underline;
+}  // namespace shorthand
 
 inline document::Span reference(const std::string& label) {
     document::Span s{label};

@@ -4,11 +4,7 @@
 namespace tactus::test {
 namespace {
 
-const auto H = document::BlockKind::heading;
-const auto P = document::BlockKind::paragraph;
-const auto LI = document::BlockKind::list_item;
-constexpr std::uint8_t I = document::emphasis_italic;
-constexpr std::uint8_t B = document::emphasis_bold;
+using namespace shorthand;
 
 document::Document md(std::string_view text) {
     auto doc = import::import_bytes(text, "t.md");

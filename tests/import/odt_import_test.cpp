@@ -4,14 +4,7 @@
 namespace tactus::test {
 namespace {
 
-const auto H = document::BlockKind::heading;
-const auto P = document::BlockKind::paragraph;
-const auto LI = document::BlockKind::list_item;
-const auto N = document::BlockKind::note;
-const auto C = document::BlockKind::table_cell;
-constexpr std::uint8_t I = document::emphasis_italic;
-constexpr std::uint8_t B = document::emphasis_bold;
-constexpr std::uint8_t U = document::emphasis_underline;
+using namespace shorthand;
 
 // lesson.odt is hand-made (tests/data/import/README.md) with the structure
 // LibreOffice writes: automatic text styles, list styles, a page break from a

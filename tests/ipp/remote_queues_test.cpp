@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <thread>
+
 namespace tactus::ipp {
 namespace {
 
@@ -20,6 +23,17 @@ TEST(RemoteQueues, ATactusQueueRunsTheBackendOrWasMadeFromThePpd) {
 TEST(RemoteQueues, AServerThatIsNotThereIsADeviceError) {
     // Port 1 on loopback: nothing listens there.
     const auto q = tactus_queues("127.0.0.1", 1);
+    ASSERT_FALSE(q);
+    EXPECT_EQ(q.error().kind, ErrorKind::device);
+    EXPECT_EQ(q.error().where, "127.0.0.1:1");
+}
+
+TEST(RemoteQueues, WithNoCupsServerThePickersListIsADeviceErrorNamingIt) {
+    // libcups reads CUPS_SERVER once per thread: a thread of its own sees this one.
+    ::setenv("CUPS_SERVER", "127.0.0.1:1", 1);
+    Result<std::vector<RemoteQueue>> q = std::vector<RemoteQueue>{};
+    std::thread([&] { q = visible_tactus_queues(std::chrono::milliseconds(0)); }).join();
+    ::unsetenv("CUPS_SERVER");
     ASSERT_FALSE(q);
     EXPECT_EQ(q.error().kind, ErrorKind::device);
     EXPECT_EQ(q.error().where, "127.0.0.1:1");

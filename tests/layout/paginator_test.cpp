@@ -31,6 +31,14 @@ translate::TranslatedBlock heading(std::string_view text, int level = 1) {
     return b;
 }
 
+// A print page break labelled `label` (BRF).
+translate::TranslatedBlock print_page(std::string_view label) {
+    translate::TranslatedBlock b;
+    b.kind = document::BlockKind::print_page_break;
+    b.label = brf(label);
+    return b;
+}
+
 layout::LayoutOptions small(int cells, int lines, bool interpoint) {
     layout::LayoutOptions o;
     o.geometry = {cells, lines, interpoint, false};
@@ -108,10 +116,7 @@ TEST(Paginator, NoBlankLineAtTheTopOfAPage) {
 TEST(Paginator, PrintPageIndicatorLine) {
     layout::Paginator p(small(10, 5, false), number);
     p.add(para("A"));
-    translate::TranslatedBlock pb;
-    pb.kind = document::BlockKind::print_page_break;
-    pb.label = brf("#B");
-    p.add(pb);
+    p.add(print_page("#B"));
     p.add(para("B"));
     auto doc = std::move(p).finish();
     EXPECT_EQ(rows(doc.pages[0])[1], "--------#B");
@@ -122,10 +127,7 @@ TEST(Paginator, PrintPageAtTopOfPageNeedsNoSeparator) {
     layout::Paginator p(small(10, 3, false), number);
     p.add(para("A"));
     p.add(para("B"));
-    translate::TranslatedBlock pb;
-    pb.kind = document::BlockKind::print_page_break;
-    pb.label = brf("#C");
-    p.add(pb);
+    p.add(print_page("#C"));
     p.add(para("C"));
     auto doc = std::move(p).finish();
     ASSERT_EQ(doc.pages.size(), 2u);

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "../common/layout_options.hpp"
 #include "cells.hpp"
 #include "pipeline/pipeline.hpp"
 
@@ -41,13 +42,7 @@ Block row(bool header) {
 std::vector<std::string> lay_out_lines(const std::vector<Block>& blocks, int width, const std::string& table = "en-ueb-g1.ctb") {
     Document doc;
     doc.blocks = blocks;
-    PipelineOptions o;
-    o.tables = table;
-    o.translation_workers = 1;
-    o.layout.geometry = {width, 200, false, false};
-    o.layout.page_numbers = PageNumberPosition::none;
-    o.layout.print_page_indicators = false;
-    auto paged = lay_out(doc, o);
+    auto paged = lay_out(doc, test::body_lines_options(table, width));
     EXPECT_TRUE(paged) << paged.error().to_string();
     std::vector<std::string> lines;
     if (!paged) return lines;

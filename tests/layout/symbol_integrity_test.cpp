@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "../common/layout_options.hpp"
 #include "cells.hpp"
 #include "common/utf8.hpp"
 #include "louis_oracle.hpp"
@@ -30,12 +31,7 @@ std::vector<BrailleLine> lay_out_paragraph(const std::string& table, const std::
     b.kind = BlockKind::paragraph;
     b.spans.push_back(Span{text, emphasis_none});
     doc.blocks.push_back(b);
-    PipelineOptions o;
-    o.tables = table;
-    o.translation_workers = 1;
-    o.layout.geometry = {width, 200, false, false};
-    o.layout.page_numbers = PageNumberPosition::none;
-    o.layout.print_page_indicators = false;
+    auto o = test::body_lines_options(table, width);
     o.layout.paragraph_indent = indent;
     auto paged = lay_out(doc, o);
     EXPECT_TRUE(paged) << paged.error().to_string();

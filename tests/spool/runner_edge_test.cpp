@@ -31,41 +31,6 @@ struct Cut {
     bool happened = false;
 };
 
-// The in-process line, cut (reads, writes and reopening fail) from the moment
-// the controller has gone quiet until the test restores it.
-class LineCutWhenMuted final : public transport::ByteStream {
-public:
-    LineCutWhenMuted(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<Cut> cut)
-        : line_(std::move(line)), cut_(std::move(cut)) {}
-    Result<void> write(std::span<const std::uint8_t> b) override {
-        if (is_cut()) return fail("device gone", "sim");
-        return line_->write(b);
-    }
-    Result<std::size_t> read(std::span<std::uint8_t> b, std::chrono::microseconds t) override {
-        if (is_cut()) {
-            line_->sleep(t);
-            return fail("device gone", "sim");
-        }
-        return line_->read(b, t);
-    }
-    Result<void> reopen() override {
-        if (is_cut()) return fail("no such device", "sim");
-        return line_->reopen();
-    }
-    [[nodiscard]] double now() const override { return line_->now(); }
-    void sleep(std::chrono::microseconds d) override { line_->sleep(d); }
-    [[nodiscard]] double bytes_per_second() const override { return line_->bytes_per_second(); }
-    [[nodiscard]] std::string describe() const override { return "sim"; }
-
-private:
-    bool is_cut() {
-        if (!cut_->happened && line_->controller().muted()) cut_->cut = cut_->happened = true;
-        return cut_->cut;
-    }
-    std::shared_ptr<controller::SimTransport> line_;
-    std::shared_ptr<Cut> cut_;
-};
-
 struct Edge {
     TempDir dir;
     std::filesystem::path db = dir / "spool.db";
@@ -81,7 +46,12 @@ struct Edge {
     ConnectFn connect() {
         return [this](const PrinterRecord&) -> Result<link::Link> {
             if (cut->cut) return fail("no such device: sim (unplugged)", "sim");
-            return link::Link::over(std::make_unique<LineCutWhenMuted>(line, cut));
+            // The in-process line, cut from the moment the controller has
+            // gone quiet until the test restores it.
+            return link::Link::over(std::make_unique<test::SharedLine>(line, [l = line, c = cut] {
+                if (!c->happened && l->controller().muted()) c->cut = c->happened = true;
+                return c->cut;
+            }));
         };
     }
     static RunnerOptions options() {

@@ -5,6 +5,7 @@
 // can be cut (every read and write fails and reopening fails) to stand for a
 // pulled plug or a device that vanished.
 #include <atomic>
+#include <functional>
 #include <memory>
 
 #include "controller/sim_controller.hpp"
@@ -16,23 +17,26 @@ namespace tactus::spool::test {
 
 // Forwards to one shared SimTransport, so the controller and the virtual clock
 // live on across reconnections.
+// While `is_cut` says so, reads, writes and reopening fail.
 class SharedLine final : public transport::ByteStream {
 public:
+    SharedLine(std::shared_ptr<controller::SimTransport> line, std::function<bool()> is_cut)
+        : line_(std::move(line)), is_cut_(std::move(is_cut)) {}
     SharedLine(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<std::atomic<bool>> cut)
-        : line_(std::move(line)), cut_(std::move(cut)) {}
+        : SharedLine(std::move(line), [cut = std::move(cut)] { return cut->load(); }) {}
     Result<void> write(std::span<const std::uint8_t> b) override {
-        if (*cut_) return fail("device gone (cable cut)", "sim");
+        if (is_cut_()) return fail("device gone (cable cut)", "sim");
         return line_->write(b);
     }
     Result<std::size_t> read(std::span<std::uint8_t> b, std::chrono::microseconds t) override {
-        if (*cut_) {
+        if (is_cut_()) {
             line_->sleep(t);
             return fail("device gone (cable cut)", "sim");
         }
         return line_->read(b, t);
     }
     Result<void> reopen() override {
-        if (*cut_) return fail("no such device", "sim");
+        if (is_cut_()) return fail("no such device", "sim");
         return line_->reopen();
     }
     [[nodiscard]] double now() const override { return line_->now(); }
@@ -42,7 +46,7 @@ public:
 
 private:
     std::shared_ptr<controller::SimTransport> line_;
-    std::shared_ptr<std::atomic<bool>> cut_;
+    std::function<bool()> is_cut_;
 };
 
 struct SimPrinter {
