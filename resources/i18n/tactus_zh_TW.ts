@@ -192,7 +192,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="333" />
+        <location filename="../../widgets/editor_widget.cpp" line="342" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -279,9 +279,9 @@
     <name>tactus::gui::MainWindow</name>
     <message>
         <location filename="../../widgets/main_window.cpp" line="85" />
-        <location filename="../../widgets/main_window.cpp" line="491" />
-        <location filename="../../widgets/main_window.cpp" line="616" />
-        <location filename="../../widgets/main_window.cpp" line="627" />
+        <location filename="../../widgets/main_window.cpp" line="496" />
+        <location filename="../../widgets/main_window.cpp" line="626" />
+        <location filename="../../widgets/main_window.cpp" line="637" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -382,7 +382,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="212" />
-        <location filename="../../widgets/main_window.cpp" line="633" />
+        <location filename="../../widgets/main_window.cpp" line="643" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -557,296 +557,301 @@
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="339" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
-        <location filename="../../widgets/main_window.cpp" line="454" />
+        <location filename="../../widgets/main_window.cpp" line="343" />
+        <location filename="../../widgets/main_window.cpp" line="459" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="348" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="363" />
+        <location filename="../../widgets/main_window.cpp" line="365" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="364" />
+        <location filename="../../widgets/main_window.cpp" line="366" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="370" />
+        <location filename="../../widgets/main_window.cpp" line="372" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="385" />
+        <location filename="../../widgets/main_window.cpp" line="387" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="393" />
+        <location filename="../../widgets/main_window.cpp" line="395" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="420" />
+        <location filename="../../widgets/main_window.cpp" line="422" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="425" />
+        <location filename="../../widgets/main_window.cpp" line="427" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="426" />
+        <location filename="../../widgets/main_window.cpp" line="428" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="443" />
+        <location filename="../../widgets/main_window.cpp" line="448" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="448" />
+        <location filename="../../widgets/main_window.cpp" line="453" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="467" />
+        <location filename="../../widgets/main_window.cpp" line="472" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="475" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="475" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="481" />
-        <location filename="../../widgets/main_window.cpp" line="617" />
-        <location filename="../../widgets/main_window.cpp" line="682" />
+        <location filename="../../widgets/main_window.cpp" line="486" />
+        <location filename="../../widgets/main_window.cpp" line="627" />
+        <location filename="../../widgets/main_window.cpp" line="692" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="502" />
-        <source>Save as Markdown</source>
-        <translation>另存為 Markdown</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="502" />
+        <location filename="../../widgets/main_window.cpp" line="507" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="524" />
+        <location filename="../../widgets/main_window.cpp" line="508" />
+        <source>Plain text (*.txt)</source>
+        <translation>純文字 (*.txt)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="510" />
+        <source>Save as</source>
+        <translation>另存新檔</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="534" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
-        <location filename="../../widgets/main_window.cpp" line="567" />
+        <location filename="../../widgets/main_window.cpp" line="539" />
+        <location filename="../../widgets/main_window.cpp" line="577" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="530" />
+        <location filename="../../widgets/main_window.cpp" line="540" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="530" />
+        <location filename="../../widgets/main_window.cpp" line="540" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="532" />
+        <location filename="../../widgets/main_window.cpp" line="542" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="553" />
+        <location filename="../../widgets/main_window.cpp" line="563" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="562" />
+        <location filename="../../widgets/main_window.cpp" line="572" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="569" />
+        <location filename="../../widgets/main_window.cpp" line="579" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="570" />
+        <location filename="../../widgets/main_window.cpp" line="580" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="581" />
+        <location filename="../../widgets/main_window.cpp" line="591" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="626" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="628" />
+        <location filename="../../widgets/main_window.cpp" line="638" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="630" />
+        <location filename="../../widgets/main_window.cpp" line="640" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="644" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="741" />
+        <location filename="../../widgets/main_window.cpp" line="751" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="794" />
+        <location filename="../../widgets/main_window.cpp" line="804" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="809" />
+        <location filename="../../widgets/main_window.cpp" line="820" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="815" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="821" />
+        <location filename="../../widgets/main_window.cpp" line="832" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="823" />
+        <location filename="../../widgets/main_window.cpp" line="834" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="824" />
+        <location filename="../../widgets/main_window.cpp" line="835" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="843" />
+        <location filename="../../widgets/main_window.cpp" line="854" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="847" />
+        <location filename="../../widgets/main_window.cpp" line="858" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="860" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="860" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="880" />
+        <location filename="../../widgets/main_window.cpp" line="891" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="880" />
+        <location filename="../../widgets/main_window.cpp" line="891" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="892" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="892" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="894" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="894" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="889" />
+        <location filename="../../widgets/main_window.cpp" line="900" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="890" />
+        <location filename="../../widgets/main_window.cpp" line="901" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
