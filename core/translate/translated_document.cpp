@@ -152,12 +152,13 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
 // A note reference, attached to the word before it (never a line break in
 // front of it or inside it). In UEB the note reference indicator and the
 // number; other codes (Chinese, EBAE, ...) have no such indicator that Tactus
-// knows, and the number goes in square brackets as the code writes them, the
+// knows, and the number goes in parentheses as the code writes them (every
+// table Tactus lists knows them; square brackets are unknown to zh-tw), the
 // way print without superscripts marks a note (docs/layout.md, "Notes").
 Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out) {
     auto u = utf8_to_utf32(span.text);
     if (!u) return std::unexpected(u.error());
-    if (!tr.is_ueb()) *u = U"[" + *u + U"]";
+    if (!tr.is_ueb()) *u = U"(" + *u + U")";
     auto cells = tr.translate(*u);
     if (!cells) return std::unexpected(cells.error());
     if (tr.is_ueb()) out.cells.insert(out.cells.end(), 2, kNoteReferenceIndicator);

@@ -244,7 +244,7 @@ TEST(StructureLayout, ATableContinuedOnANewPageRepeatsItsHeadings) {
 }
 
 // The note reference indicator ⠶⠶ is UEB's: other codes write the number in
-// square brackets as their table writes them.
+// parentheses as their table writes them (no 8-dot escapes).
 TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
     const std::vector<Block> blocks{
         text_block(BlockKind::paragraph, 0, {Span{"\u4eca\u5929"}, reference("1")}),
@@ -257,8 +257,9 @@ TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
     const auto one = tr->translate(U"1");
     ASSERT_TRUE(one);
     for (const auto& l : zh) EXPECT_EQ(l.find("77" + brf(*one)), std::string::npos) << l;
-    const auto bracketed = tr->translate(U"[1]");
+    const auto bracketed = tr->translate(U"(1)");
     ASSERT_TRUE(bracketed);
+    for (const auto c : *bracketed) EXPECT_EQ(c.dots & 0xC0, 0);  // the table knows the marks
     EXPECT_NE(zh[0].find(brf(*bracketed)), std::string::npos) << zh[0] << " / " << brf(*bracketed);
     auto ueb = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(ueb);
