@@ -287,16 +287,28 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         document::Block text;
         text.spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
         if (!visible(text)) return std::nullopt;  // an empty item
+        // The item's text starts at its first word, as in Markdown (a tag
+        // dropped in front of it leaves no space).
+        const auto item_text = [&] {
+            auto spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
+            while (!spans.empty() && !spans.front().note_reference) {
+                auto& first = spans.front().text;
+                first.erase(0, std::min(first.size(), first.find_first_not_of(" \t")));
+                if (!first.empty()) break;
+                spans.erase(spans.begin());
+            }
+            return spans;
+        };
         if (bullet) {
             // Bullets are kept as the bullet sign, as core's Markdown import does.
-            b.spans = parse_inline(trim(rest.substr(2)));
+            b.spans = item_text();
             if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none && !b.spans.front().note_reference)
                 b.spans.front().text.insert(0, kBullet);
             else
                 b.spans.insert(b.spans.begin(), document::Span{std::string(kBullet)});
         } else {
             // Numbered items keep their number as text, as core's Markdown import does.
-            b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
+            b.spans = item_text();
             const auto number = std::string(rest.substr(0, ordinal)) + " ";
             if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none)
                 b.spans.front().text.insert(0, number);

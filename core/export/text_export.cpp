@@ -212,13 +212,22 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
                                       std::vector<document::Block>{});
                 if (blocks[i].kind == document::BlockKind::table_cell) rows.back().second.push_back(blocks[i]);
             }
-            std::size_t width = 1;
-            for (const auto& r : rows) width = std::max(width, r.second.size());
-            std::vector<std::string> table;
-            for (const auto& r : rows) table.push_back(join_row(split_row(markdown_table_row(r.second)), width));
-            if (!rows.front().first) table.insert(table.begin(), join_row({}, width));
-            table.insert(table.begin() + 1, delimiter_row(width));
-            for (auto& l : table) lines.push_back(std::move(l));
+            // A header row after body rows starts a table of its own (a blank
+            // line apart: one Markdown table has one header row, at its top).
+            for (std::size_t from = 0; from < rows.size();) {
+                std::size_t to = from + 1;
+                while (to < rows.size() && !(rows[to].first && !rows[to - 1].first)) ++to;
+                std::size_t width = 1;
+                for (std::size_t r = from; r < to; ++r) width = std::max(width, rows[r].second.size());
+                std::vector<std::string> table;
+                for (std::size_t r = from; r < to; ++r)
+                    table.push_back(join_row(split_row(markdown_table_row(rows[r].second)), width));
+                if (!rows[from].first) table.insert(table.begin(), join_row({}, width));
+                table.insert(table.begin() + 1, delimiter_row(width));
+                if (from > 0) lines.emplace_back();
+                for (auto& l : table) lines.push_back(std::move(l));
+                from = to;
+            }
             continue;
         }
         if (b.kind == document::BlockKind::braille) {
@@ -318,10 +327,16 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
         // A run of table lines is one table: made whole (header, delimiter, width).
         std::size_t end = i;
         while (end < lines.size() && is_table_line(lines[end])) ++end;
-        const bool header = end - i >= 2 && is_markdown_table_delimiter(lines[i + 1]);
+        // The header row is the run's first line when the delimiter row follows it.
+        const bool header = end - i >= 2 && !is_markdown_table_delimiter(lines[i]) &&
+                            is_markdown_table_delimiter(lines[i + 1]);
         std::vector<std::vector<std::string>> rows;
         for (std::size_t j = i; j < end; ++j)
             if (!is_markdown_table_delimiter(lines[j])) rows.push_back(split_row(lines[j]));
+        if (rows.empty()) {  // delimiter rows alone: no table
+            i = end;
+            continue;
+        }
         std::size_t width = 1;
         for (const auto& r : rows) width = std::max(width, r.size());
         std::string table;

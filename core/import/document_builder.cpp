@@ -135,7 +135,10 @@ void DocumentBuilder::drop_empty_row() {
     if (row == 0 || blocks_[row - 1].kind != document::BlockKind::table_row) return;
     const bool empty = std::all_of(blocks_.begin() + static_cast<std::ptrdiff_t>(row), blocks_.end(),
                                    [](const document::Block& cell) { return !visible(cell.text()); });
-    if (empty) blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(row - 1), blocks_.end());
+    if (!empty) return;
+    blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(row - 1), blocks_.end());
+    // The row may have been all there was: then nothing is printed yet.
+    has_content_ = std::any_of(blocks_.rbegin(), blocks_.rend(), [](const document::Block& b) { return !is_page_break(b); });
 }
 
 void DocumentBuilder::flush_notes() {

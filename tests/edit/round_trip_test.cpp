@@ -74,7 +74,33 @@ std::string without_lines(const std::vector<document::Block>& blocks) {
             if (!t.empty()) break;
             spans.pop_back();
         }
-        for (const auto& s : spans)
+        // Spaces at the edge of an emphasised run count as plain: Markdown's
+        // marks must touch the words, so a writer cannot say otherwise.
+        std::vector<document::Span> plain_edges;
+        for (const auto& s : spans) {
+            if (s.note_reference || s.emphasis == document::emphasis_none) {
+                plain_edges.push_back(s);
+                continue;
+            }
+            const auto first = s.text.find_first_not_of(' ');
+            if (first == std::string::npos) {
+                plain_edges.push_back(document::Span{s.text});
+                continue;
+            }
+            const auto last = s.text.find_last_not_of(' ');
+            if (first > 0) plain_edges.push_back(document::Span{s.text.substr(0, first)});
+            plain_edges.push_back(document::Span{s.text.substr(first, last + 1 - first), s.emphasis});
+            if (last + 1 < s.text.size()) plain_edges.push_back(document::Span{s.text.substr(last + 1)});
+        }
+        std::vector<document::Span> merged;
+        for (auto& s : plain_edges) {
+            if (!merged.empty() && !s.note_reference && !merged.back().note_reference &&
+                merged.back().emphasis == s.emphasis)
+                merged.back().text += s.text;
+            else
+                merged.push_back(std::move(s));
+        }
+        for (const auto& s : merged)
             out += " [" + std::string(s.note_reference ? "^" : "") + std::to_string(s.emphasis) + ":" + s.text + "]";
         for (const auto& l : b.braille_lines) out += " " + document::to_unicode_text(l);
         out += "\n";
