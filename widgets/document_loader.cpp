@@ -13,13 +13,14 @@ namespace {
 constexpr int kImportShare = 10;  // percent of the progress bar for reading the file
 
 LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const layout::LayoutOptions& options,
-                    const std::function<bool(int)>& progress) {
+                    edit::Dialect dialect, const std::function<bool(int)>& progress) {
     auto result = std::make_shared<LoadResult>();
     auto layout = edit::LiveLayout::create(tables, options);
     if (!layout) {
         result->error = layout.error();
         return result;
     }
+    layout->set_dialect(dialect);
     const bool done = layout->reset(std::move(lines), [&](std::size_t i, std::size_t n) {
         const int pct = kImportShare + static_cast<int>((100 - kImportShare) * (n ? static_cast<double>(i) / static_cast<double>(n) : 1.0));
         return progress ? progress(pct) : false;
@@ -46,7 +47,9 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
         r->cancelled = true;
         return r;
     }
-    auto r = build(edit::render_editor_lines(*doc), tables, options, progress);
+    // A text file is shown as its text; anything else in the Markdown dialect.
+    const auto dialect = edit::dialect_for(path.toStdString());
+    auto r = build(edit::render_editor_lines(*doc, dialect), tables, options, dialect, progress);
     r->path = path;
     return r;
 }
@@ -68,9 +71,9 @@ QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables,
 }
 
 QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
-                                     const layout::LayoutOptions& options) {
-    return QtConcurrent::run([lines = std::move(lines), tables, options](QPromise<LoadResultPtr>& promise) mutable {
-        promise.addResult(build(std::move(lines), tables, options, reporter(promise)));
+                                     const layout::LayoutOptions& options, edit::Dialect dialect) {
+    return QtConcurrent::run([lines = std::move(lines), tables, options, dialect](QPromise<LoadResultPtr>& promise) mutable {
+        promise.addResult(build(std::move(lines), tables, options, dialect, reporter(promise)));
     });
 }
 

@@ -25,7 +25,7 @@ using LoadResultPtr = std::shared_ptr<LoadResult>;
 QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const layout::LayoutOptions& options);
 // Lays out lines already in the editor (a new table on a big book).
 QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
-                                     const layout::LayoutOptions& options);
+                                     const layout::LayoutOptions& options, edit::Dialect dialect);
 
 // The same work, on the calling thread (tests, the benchmark and the CLI-style paths).
 LoadResultPtr load_file_now(const QString& path, const std::string& tables, const layout::LayoutOptions& options);

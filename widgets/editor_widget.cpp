@@ -36,22 +36,31 @@ int prefix_length(const QString& line) {
     return m.hasMatch() ? static_cast<int>(m.capturedLength()) : 0;
 }
 
+// A text line's content is the line without its leading spaces (the text importer trims).
+int leading_space(const QString& line) {
+    int i = 0;
+    while (i < line.size() && (line[i] == QLatin1Char(' ') || line[i] == QLatin1Char('\t'))) ++i;
+    return i;
+}
+
 bool is_mark(QChar c) { return c == QLatin1Char('*') || c == QLatin1Char('_') || c == QLatin1Char('\\'); }
 
 }  // namespace
 
-int content_column(const QString& line, int column) {
-    const int start = prefix_length(line);
+int content_column(const QString& line, int column, edit::Dialect dialect) {
+    const bool markdown = dialect == edit::Dialect::markdown;
+    const int start = markdown ? prefix_length(line) : leading_space(line);
     int out = 0;
     for (int i = start; i < std::min(column, static_cast<int>(line.size())); ++i)
-        if (!is_mark(line[i])) ++out;
+        if (!markdown || !is_mark(line[i])) ++out;
     return out;
 }
 
-int line_column(const QString& line, int content) {
-    int i = prefix_length(line);
+int line_column(const QString& line, int content, edit::Dialect dialect) {
+    const bool markdown = dialect == edit::Dialect::markdown;
+    int i = markdown ? prefix_length(line) : leading_space(line);
     for (int seen = 0; i < line.size(); ++i) {
-        if (is_mark(line[i])) continue;
+        if (markdown && is_mark(line[i])) continue;
         if (seen++ == content) return i;
     }
     return static_cast<int>(line.size());
@@ -230,8 +239,8 @@ std::size_t EditorWidget::current_cell() const {
     const auto cells = layout_->braille_of(i);
     if (edit::is_braille_line(line.toStdString()))
         return std::min(static_cast<std::size_t>(c.positionInBlock()), cells.size());
-    const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
-    return edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock())), cells);
+    const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
+    return edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock(), layout_->dialect())), cells);
 }
 
 edit::PagePosition EditorWidget::current_position() const {
@@ -252,8 +261,8 @@ void EditorWidget::sync_from_print() {
         if (edit::is_braille_line(line.toStdString())) {
             cell = std::min(static_cast<std::size_t>(pos - block.position()), cells.size());
         } else {
-            const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
-            cell = edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position())), cells);
+            const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
+            cell = edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position(), layout_->dialect())), cells);
         }
         const auto bb = braille_->document()->findBlockByNumber(block.blockNumber());
         return bb.isValid() ? bb.position() + std::min(static_cast<int>(cell), bb.length() - 1) : 0;
@@ -280,9 +289,9 @@ void EditorWidget::sync_from_braille() {
         const auto cell = static_cast<std::size_t>(pos - bblock.position());
         if (edit::is_braille_line(line.toStdString()))
             return pblock.position() + std::min(static_cast<int>(cell), pblock.length() - 1);
-        const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString())).toStdU32String();
+        const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
         const auto col = edit::braille_to_print(layout_->braille_of(i), cell, content);
-        return pblock.position() + std::min(line_column(line, static_cast<int>(col)), pblock.length() - 1);
+        return pblock.position() + std::min(line_column(line, static_cast<int>(col), layout_->dialect()), pblock.length() - 1);
     };
     QTextCursor pc(print_->document());
     pc.setPosition(map_pos(bc.anchor()));

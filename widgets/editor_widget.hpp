@@ -33,7 +33,7 @@ public:
     Result<void> set_tables(const std::string& tables);
     Result<void> set_layout_options(const layout::LayoutOptions& options);
 
-    [[nodiscard]] QString text() const;  // the document as Markdown, one block per line
+    [[nodiscard]] QString text() const;  // the editor's lines, one block each (layout().dialect())
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
@@ -78,7 +78,7 @@ private:
 };
 
 // Column in the editor line <-> column in its content (without Markdown marks).
-int content_column(const QString& line, int column);
-int line_column(const QString& line, int content_column);
+int content_column(const QString& line, int column, edit::Dialect dialect = edit::Dialect::markdown);
+int line_column(const QString& line, int content_column, edit::Dialect dialect = edit::Dialect::markdown);
 
 }  // namespace tactus::gui

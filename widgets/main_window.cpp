@@ -38,7 +38,7 @@
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
-#include "edit/markdown_writer.hpp"
+#include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "find_replace.hpp"
@@ -335,7 +335,9 @@ void MainWindow::set_table(const QString& table) {
         std::vector<std::string> lines;
         for (std::size_t i = 0; i < editor_->layout().line_count(); ++i) lines.push_back(editor_->layout().line(i));
         start_busy(tr("Translating with %1").arg(tables_->currentText()),
-                   lay_out_lines(std::move(lines), table.toStdString(), editor_->layout().options()), false);
+                   lay_out_lines(std::move(lines), table.toStdString(), editor_->layout().options(),
+                                 editor_->layout().dialect()),
+                   false);
         return;
     }
     if (auto ok = editor_->set_tables(table.toStdString()); !ok) {
@@ -438,8 +440,11 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         remove_autosave();
         editor_->adopt(std::move(*r->layout));
         const QFileInfo info(r->path);
-        const bool markdown = info.suffix().compare(QStringLiteral("md"), Qt::CaseInsensitive) == 0;
-        path_ = markdown ? info.absoluteFilePath() : QString();
+        // Saved in place when Tactus writes the format (Markdown, text), else "Save as".
+        const auto suffix = info.suffix().toLower();
+        const bool writable = suffix == QLatin1String("md") || suffix == QLatin1String("markdown") ||
+                              suffix == QLatin1String("txt") || suffix == QLatin1String("text");
+        path_ = writable ? info.absoluteFilePath() : QString();
         source_name_ = info.fileName();
         add_recent(info.absoluteFilePath());
         update_title();
@@ -504,22 +509,27 @@ bool MainWindow::save_as() {
     if (suggested.isEmpty() && !source_name_.isEmpty())
         suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
     FocusReturn back(this, editor_->print_pane());
-    auto path = QFileDialog::getSaveFileName(this, tr("Save as Markdown"), suggested, tr("Markdown (*.md)"));
+    const auto markdown = tr("Markdown (*.md)");
+    const auto text = tr("Plain text (*.txt)");
+    QString filter = edit::dialect_for(suggested.toStdString()) == edit::Dialect::text ? text : markdown;
+    auto path = QFileDialog::getSaveFileName(this, tr("Save as"), suggested, markdown + QStringLiteral(";;") + text,
+                                             &filter);
     if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".md");
+    if (QFileInfo(path).suffix().isEmpty()) path += filter == text ? QStringLiteral(".txt") : QStringLiteral(".md");
     return save_to(path);
 }
 
-QByteArray MainWindow::markdown() const {
-    // The editor's lines as Markdown: core's writer, which the importer reads back.
+QByteArray MainWindow::file_bytes(const QString& file_name) const {
+    // Markdown or plain text by the file's extension: core's writers, which the importers read back.
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
-    return QByteArray::fromStdString(edit::to_markdown(lines));
+    const auto& layout = editor_->layout();
+    return QByteArray::fromStdString(edit::file_text(lines, layout.dialect(), layout.document(), file_name.toStdString()));
 }
 
 bool MainWindow::save_to(const QString& path) {
     QString error;
-    if (!write_atomically(path, markdown(), &error)) {
+    if (!write_atomically(path, file_bytes(path), &error)) {
         report(error, true);
         return false;
     }
@@ -694,7 +704,7 @@ bool MainWindow::emboss() {
     // embosser is unreachable.
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
     const bool sent = printer_->selected_is_queue()
-                          ? printer_->send_to_queue(name, base + QStringLiteral(".md"), markdown(), tables_->table())
+                          ? printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")), tables_->table())
                           : printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
     if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.
@@ -817,6 +827,7 @@ bool MainWindow::recover(const Recovery& r) {
         report(QString::fromStdString(layout.error().to_string()), true);
         return false;
     }
+    layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
     layout->reset(std::move(lines));
     editor_->adopt(std::move(*layout));
     tables_->set_table(QString::fromStdString(table));

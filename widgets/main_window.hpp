@@ -50,8 +50,10 @@ public:
     // Opens synchronously (tests, the benchmark); returns false with a message on failure.
     bool open_file_now(const QString& path);
     bool save_to(const QString& path);
-    // The document as the editor holds it, in Markdown (what Save writes).
-    [[nodiscard]] QByteArray markdown() const;
+    // The document as the editor holds it, as the file `file_name` would hold
+    // it (plain text for .txt, else Markdown): what Save writes, and what is
+    // sent to a network queue.
+    [[nodiscard]] QByteArray file_bytes(const QString& file_name) const;
     bool export_to(const QString& path);  // .brf, .pef (by extension)
     bool print_pdf_to(const QString& path);
     void set_table(const QString& table);

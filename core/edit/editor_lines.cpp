@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "common/utf8.hpp"
+#include "export/text_export.hpp"
 #include "import/import.hpp"
 
 namespace tactus::edit {
@@ -108,7 +109,11 @@ std::vector<document::Span> parse_inline_markdown(std::string_view content) {
     import::ImportOptions options;
     options.format = import::SourceFormat::markdown;
     options.encoding = "UTF-8";
-    auto doc = import::import_bytes(content, "line.md", options);
+    // Read as the text of a paragraph: a no-break space in front keeps "- *x*"
+    // or "# *x*" from starting a list or a heading (it is Unicode whitespace, so
+    // emphasis opens after it as at a line start), and is taken off again.
+    constexpr std::string_view kGuard = "\u00a0";
+    auto doc = import::import_bytes(std::string(kGuard) + std::string(content), "line.md", options);
     if (!doc) return {document::Span{std::string(content)}};
     std::vector<document::Span> spans;
     for (const auto& b : doc->blocks)
@@ -116,57 +121,11 @@ std::vector<document::Span> parse_inline_markdown(std::string_view content) {
             if (!spans.empty() && spans.back().emphasis == s.emphasis) spans.back().text += s.text;
             else spans.push_back(s);
         }
+    if (!spans.empty() && spans.front().text.starts_with(kGuard)) {
+        spans.front().text.erase(0, kGuard.size());
+        if (spans.front().text.empty()) spans.erase(spans.begin());
+    }
     return spans;
-}
-
-std::string escape_inline(std::string_view text) {
-    std::string out;
-    out.reserve(text.size() + 8);
-    for (char c : text) {
-        if (kInlineSpecials.find(c) != std::string_view::npos) out.push_back('\\');
-        out.push_back(c);
-    }
-    return out;
-}
-
-// Keeps a paragraph's first characters from reading as a heading, list or break.
-std::string guard_line_start(std::string s) {
-    if (s.empty()) return s;
-    if (const auto n = ordinal_length(s); n > 0 && n < s.size() + 1) {
-        s.insert(n - 1, 1, '\\');
-        return s;
-    }
-    if (std::string_view("#-+=>|").find(s[0]) != std::string_view::npos) s.insert(0, 1, '\\');
-    return s;
-}
-
-std::string render_spans(const std::vector<document::Span>& spans) {
-    std::string out;
-    for (const auto& span : spans) {
-        if (span.note_reference) {
-            out += "[^" + span.text + "]";
-            continue;
-        }
-        std::string_view t = span.text;
-        const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
-                              ? std::string_view("***")
-                          : (span.emphasis & document::emphasis_bold)   ? std::string_view("**")
-                          : (span.emphasis & document::emphasis_italic) ? std::string_view("*")
-                                                              : std::string_view();
-        const auto core = trim(t);
-        if (mark.empty() || core.empty()) {
-            out += escape_inline(t);
-            continue;
-        }
-        // Emphasis marks must touch the words: keep surrounding spaces outside.
-        const auto lead = static_cast<std::size_t>(core.data() - t.data());
-        out += std::string(t.substr(0, lead));
-        out += mark;
-        out += escape_inline(core);
-        out += mark;
-        out += std::string(t.substr(lead + core.size()));
-    }
-    return out;
 }
 
 }  // namespace
@@ -178,7 +137,62 @@ bool is_braille_line(std::string_view utf8) {
     return std::ranges::all_of(*text, [](char32_t c) { return document::Cell::is_unicode_braille(c); });
 }
 
-std::optional<document::Block> parse_editor_line(std::string_view line) {
+Dialect dialect_for(std::string_view name) {
+    const auto dot = name.rfind('.');
+    if (dot == std::string_view::npos) return Dialect::markdown;
+    std::string ext(name.substr(dot + 1));
+    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == "txt" || ext == "text" ? Dialect::text : Dialect::markdown;
+}
+
+bool is_table_delimiter(std::string_view line) { return exporter::is_markdown_table_delimiter(line); }
+
+std::vector<document::Block> parse_table_cells(std::string_view line) {
+    auto t = trim(line);
+    if (t.starts_with('|')) t.remove_prefix(1);
+    std::vector<document::Block> cells;
+    std::size_t from = 0;
+    const auto cell = [&](std::size_t end) {
+        document::Block c;
+        c.kind = document::BlockKind::table_cell;
+        c.level = static_cast<int>(cells.size());
+        c.spans = parse_inline(trim(t.substr(from, end - from)));
+        cells.push_back(std::move(c));
+    };
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] == '\\') {
+            ++i;
+        } else if (t[i] == '|') {
+            cell(i);
+            from = i + 1;
+        }
+    }
+    if (!trim(t.substr(from)).empty()) cell(t.size());
+    return cells;
+}
+
+namespace {
+
+bool visible(const document::Block& b) {
+    return std::ranges::any_of(b.spans, [](const document::Span& s) {
+        return s.note_reference || s.text.find_first_not_of(" \t\n\r\f\v") != std::string::npos;
+    });
+}
+
+std::optional<document::Block> parse_line(std::string_view line, Dialect dialect);
+
+}  // namespace
+
+std::optional<document::Block> parse_editor_line(std::string_view line, Dialect dialect) {
+    auto b = parse_line(line, dialect);
+    // A block without visible text is no block, as the importers drop it.
+    if (b && document::is_text_kind(b->kind) && !visible(*b)) return std::nullopt;
+    return b;
+}
+
+namespace {
+
+std::optional<document::Block> parse_line(std::string_view line, Dialect dialect) {
     while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.remove_suffix(1);
     const auto t = trim(line);
     if (t.empty()) return std::nullopt;
@@ -189,6 +203,22 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
         const auto text = utf8_to_utf32(t);
         for (char32_t c : *text) cells.push_back(document::Cell::from_unicode(c));
         b.braille_lines.push_back(std::move(cells));
+        return b;
+    }
+    // A form feed is a print page break, as both importers read it.
+    if (t.find_first_not_of("\f \t") == std::string_view::npos) {
+        b.kind = document::BlockKind::print_page_break;
+        return b;
+    }
+    if (dialect == Dialect::text) {
+        // The text as written.
+        b.spans.push_back(document::Span{std::string(t)});
+        return b;
+    }
+    if (t.starts_with('|')) {
+        if (is_table_delimiter(t)) return std::nullopt;
+        // A table row; the live layout knows from the next line whether it is the header.
+        b.kind = document::BlockKind::table_row;
         return b;
     }
     if (is_thematic_break(t)) {
@@ -209,7 +239,13 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
     if (hashes >= 1 && hashes <= 6 && (hashes == t.size() || is_space(t[hashes]))) {
         b.kind = document::BlockKind::heading;
         b.level = static_cast<int>(hashes);
-        b.spans = parse_inline(trim(t.substr(hashes)));
+        // A closing run of "#" after a space is not text, as in Markdown.
+        auto content = trim(t.substr(hashes));
+        if (const auto run = content.find_last_not_of('#'); content.ends_with('#')) {
+            if (run == std::string_view::npos) content = {};
+            else if (is_space(content[run])) content = trim(content.substr(0, run));
+        }
+        b.spans = parse_inline(content);
         return b;
     }
     if (t.starts_with('>')) {
@@ -237,6 +273,8 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
             return b;
         }
     }
+    // A bare list mark is an empty list item in Markdown: no block.
+    if (t == "-" || t == "*" || t == "+" || (ordinal_length(t) == t.size())) return std::nullopt;
     std::size_t indent = 0;
     while (indent < line.size() && line[indent] == ' ') ++indent;
     const auto rest = line.substr(indent);
@@ -246,16 +284,31 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
     if (bullet || (ordinal > 0 && ordinal < rest.size() && is_space(rest[ordinal]))) {
         b.kind = document::BlockKind::list_item;
         b.level = static_cast<int>(indent / 2) + 1;
+        document::Block text;
+        text.spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
+        if (!visible(text)) return std::nullopt;  // an empty item
+        // The item's text starts at its first word, as in Markdown (a tag
+        // dropped in front of it leaves no space).
+        const auto item_text = [&] {
+            auto spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
+            while (!spans.empty() && !spans.front().note_reference) {
+                auto& first = spans.front().text;
+                first.erase(0, std::min(first.size(), first.find_first_not_of(" \t")));
+                if (!first.empty()) break;
+                spans.erase(spans.begin());
+            }
+            return spans;
+        };
         if (bullet) {
             // Bullets are kept as the bullet sign, as core's Markdown import does.
-            b.spans = parse_inline(trim(rest.substr(2)));
+            b.spans = item_text();
             if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none && !b.spans.front().note_reference)
                 b.spans.front().text.insert(0, kBullet);
             else
                 b.spans.insert(b.spans.begin(), document::Span{std::string(kBullet)});
         } else {
             // Numbered items keep their number as text, as core's Markdown import does.
-            b.spans = parse_inline(trim(rest.substr(ordinal + 1)));
+            b.spans = item_text();
             const auto number = std::string(rest.substr(0, ordinal)) + " ";
             if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none)
                 b.spans.front().text.insert(0, number);
@@ -269,90 +322,86 @@ std::optional<document::Block> parse_editor_line(std::string_view line) {
     return b;
 }
 
-std::string render_editor_line(const document::Block& b) {
-    switch (b.kind) {
-        case document::BlockKind::heading: {
-            auto text = render_spans(b.spans);
-            // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
-            if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
-                text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
-            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " + text;
-        }
-        case document::BlockKind::list_item: {
-            std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
-            auto spans = b.spans;
-            const auto ordinal =
-                spans.empty() ? 0 : ordinal_length(spans.front().text);
-            if (ordinal > 0 && ordinal < spans.front().text.size() &&
-                spans.front().text[ordinal] == ' ') {
-                out += spans.front().text.substr(0, ordinal + 1);
-                spans.front().text.erase(0, ordinal + 1);
-                return out + guard_line_start(render_spans(spans));
-            }
-            if (!spans.empty() && spans.front().text.starts_with(kBullet)) spans.front().text.erase(0, kBullet.size());
-            // The item's own text must not start another list or block.
-            return out + "- " + guard_line_start(render_spans(spans));
-        }
-        case document::BlockKind::quote:
-        {
-            std::string out;
-            for (int i = 0; i < std::clamp(b.level, 1, 6); ++i) out += "> ";
-            return out + guard_line_start(render_spans(b.spans));
-        }
-        case document::BlockKind::note: {
-            if (b.spans.empty() || !b.spans.front().note_reference) break;
-            auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());
-            if (!rest.empty() && rest.front().text.starts_with(' ')) rest.front().text.erase(0, 1);
-            return "[^" + b.spans.front().text + "]: " + render_spans(rest);
-        }
-        case document::BlockKind::table_row:
-            return {};
-        case document::BlockKind::table_cell:
-            break;
-        case document::BlockKind::print_page_break:
-            return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
-        case document::BlockKind::braille_page_break:
-            return "<!-- braillepage -->";
-        case document::BlockKind::braille: {
-            std::string out;
-            for (std::size_t i = 0; i < b.braille_lines.size(); ++i) {
-                if (i) out += '\n';
-                out += b.braille_lines[i].empty() ? document::to_unicode_text({document::Cell{}})
-                                                  : document::to_unicode_text(b.braille_lines[i]);
-            }
-            return out;
-        }
-        case document::BlockKind::paragraph:
-            break;
-    }
-    return guard_line_start(render_spans(b.spans));
+}  // namespace
+
+std::string render_editor_line(const document::Block& b, Dialect dialect) {
+    return dialect == Dialect::text ? exporter::text_line(b) : exporter::markdown_line(b);
 }
 
-std::vector<std::string> render_editor_lines(const document::Document& document) {
+std::vector<std::string> render_editor_lines(const document::Document& document, Dialect dialect) {
+    if (dialect == Dialect::markdown) return exporter::markdown_lines(document);
     std::vector<std::string> lines;
-    lines.reserve(document.blocks.size());
-    for (const auto& b : document.blocks) {
-        if (b.kind == document::BlockKind::braille) {
-            for (const auto& l : b.braille_lines)
-                lines.push_back(l.empty() ? document::to_unicode_text({document::Cell{}}) : document::to_unicode_text(l));
-            continue;
+    for (auto& l : exporter::text_lines(document)) {
+        // A braille block is several lines.
+        for (std::size_t from = 0;;) {
+            const auto nl = l.find('\n', from);
+            lines.push_back(l.substr(from, nl == std::string::npos ? nl : nl - from));
+            if (nl == std::string::npos) break;
+            from = nl + 1;
         }
-        auto line = render_editor_line(b);
-        if ((b.kind == document::BlockKind::paragraph || b.kind == document::BlockKind::table_cell ||
-             b.kind == document::BlockKind::table_row) &&
-            trim(line).empty())
-            continue;
-        lines.push_back(std::move(line));
     }
     return lines;
 }
 
-std::string editor_line_content(std::string_view line) {
-    const auto block = parse_editor_line(line);
+namespace {
+
+// True when the text of a paragraph, list item or quote line starts with a
+// character Markdown could read as the start of another block.
+bool risky_start(std::string_view line, document::BlockKind kind) {
+    auto t = trim(line);
+    switch (kind) {
+        case document::BlockKind::paragraph:
+            return !t.empty() && std::string_view("<`~[").find(t.front()) != std::string_view::npos;
+        case document::BlockKind::list_item: {
+            const auto n = t.starts_with('-') || t.starts_with('*') || t.starts_with('+') ? 1 : ordinal_length(t);
+            t = trim(t.substr(std::min(n, t.size())));
+            break;
+        }
+        case document::BlockKind::quote:
+            while (t.starts_with('>')) t = trim(t.substr(1));
+            break;
+        default:
+            return false;
+    }
+    return !t.empty() && std::string_view("#-+*_=>|<`~[0123456789").find(t.front()) != std::string_view::npos;
+}
+
+}  // namespace
+
+std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
+                      std::string_view file_name) {
+    if (dialect_for(file_name) == Dialect::text) return exporter::to_text(blocks);
+    if (dialect == Dialect::markdown) {
+        // A line that stands for no block is not written: in a file it could
+        // mean something (an unclosed "<!--" would swallow the rest).
+        std::vector<std::string> kept;
+        kept.reserve(lines.size());
+        for (const auto& l : lines) {
+            const auto block = parse_editor_line(l, dialect);
+            if (block && risky_start(l, block->kind))
+                // In a file this text could open a block of its own (an HTML
+                // block, a code fence, a list inside an item): the writer's
+                // escaped form, which reads back as the same block.
+                kept.push_back(exporter::markdown_line(*block));
+            else
+                kept.push_back(block || is_table_delimiter(l) ? l : std::string());
+        }
+        return exporter::join_markdown_lines(kept);
+    }
+    return exporter::to_markdown(blocks);
+}
+
+std::string editor_line_content(std::string_view line, Dialect dialect) {
+    const auto block = parse_editor_line(line, dialect);
     if (!block) return {};
     if (block->kind == document::BlockKind::braille || block->kind == document::BlockKind::print_page_break ||
         block->kind == document::BlockKind::braille_page_break)
         return {};
+    if (block->kind == document::BlockKind::table_row) {
+        std::string out;
+        for (const auto& cell : parse_table_cells(line)) out += (out.empty() ? "" : "  ") + cell.text();
+        return out;
+    }
     return block->text();
 }
 

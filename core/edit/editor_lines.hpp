@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The editor shows a document as lines of light Markdown, one block per line:
-// "# Heading", "  - nested item", "3. numbered item", "<!-- pagebreak 12 -->",
-// a paragraph with *italic* and **bold**, or a line of Unicode braille cells kept
-// verbatim. One line is one block, so an edit touches exactly the blocks of the
-// lines it changed; the file on disk is ordinary Markdown that core imports again.
+// The editor shows a document in one of two line dialects, one block per line,
+// so an edit touches exactly the blocks of the lines it changed:
+// - Markdown (a .md, .docx, ...): "# Heading", "  - nested item", "3. numbered
+//   item", "<!-- pagebreak 12 -->" or "---", "| a | b |" (a table row; the
+//   delimiter row "|---|---|" under it makes it the header row), a paragraph
+//   with *italic* and **bold**; the lines are core's Markdown writer's
+//   (export/text_export.hpp), which core's importer reads again.
+// - Text (a .txt): each line is a paragraph, its text as the author wrote it,
+//   with no escapes and no marks; a line holding a form feed is a print page break.
+// In both, a line of Unicode braille cells is braille kept verbatim.
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,17 +20,40 @@
 
 namespace tactus::edit {
 
-// The block a line stands for; empty for a blank line. A page break without a
-// label gets an empty label (the caller numbers it from the previous one).
-std::optional<document::Block> parse_editor_line(std::string_view utf8);
+enum class Dialect { markdown, text };
 
-// One editor line per block, escaped so that parse_editor_line gives the block back.
-std::vector<std::string> render_editor_lines(const document::Document& document);
-std::string render_editor_line(const document::Block& block);
+// The dialect a file is shown in: text for .txt and .text, else Markdown.
+Dialect dialect_for(std::string_view file_name);
+
+// The block a line stands for; empty for a blank line (and for a table's
+// delimiter row). A page break without a label gets an empty label (the caller
+// numbers it: document/print_page.hpp). A table row gives its table_row block;
+// its cells are parse_table_cells's.
+std::optional<document::Block> parse_editor_line(std::string_view utf8, Dialect dialect = Dialect::markdown);
+
+// The cells of a table row line ("| a | *b* |"), one table_cell block each.
+std::vector<document::Block> parse_table_cells(std::string_view utf8);
+// True for a Markdown table's delimiter row ("|---|---|").
+bool is_table_delimiter(std::string_view utf8);
+
+// The editor's lines for a document, so that parse_editor_line gives its blocks
+// back: Markdown through core's Markdown writer, text through its text writer.
+std::vector<std::string> render_editor_lines(const document::Document& document,
+                                             Dialect dialect = Dialect::markdown);
+std::string render_editor_line(const document::Block& block, Dialect dialect = Dialect::markdown);
+
+// The editor's lines as the file they are saved as, in the file's format (by
+// its name's extension: .txt and .text are plain text, anything else Markdown).
+// `blocks` are the lines' blocks with their print pages numbered
+// (LiveLayout::document()); when the lines are in the file's own dialect they
+// are written as they are (made whole, for a Markdown table), else the blocks
+// are written by core's writer for that format.
+std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
+                      std::string_view file_name);
 
 // The text a reader sees: without the heading marks, bullet and emphasis marks.
 // Used to map the cursor between print and braille word by word.
-std::string editor_line_content(std::string_view utf8);
+std::string editor_line_content(std::string_view utf8, Dialect dialect = Dialect::markdown);
 
 // True when the line is nothing but Unicode braille cells (U+2800..U+28FF).
 bool is_braille_line(std::string_view utf8);

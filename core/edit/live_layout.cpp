@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "common/utf8.hpp"
+#include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/paginator.hpp"
@@ -19,11 +20,10 @@ document::BrailleLine cells_of_unicode(const std::string& utf8) {
     return cells;
 }
 
-// "12" -> "13"; "iv" or "" -> "" (the reader sees no number rather than a wrong one).
-std::string next_label(const std::string& label) {
-    if (label.empty() || !std::ranges::all_of(label, [](char c) { return c >= '0' && c <= '9'; }))
-        return {};
-    return std::to_string(std::stol(label) + 1);
+// A line of a Markdown table (a row or the delimiter row).
+bool starts_table_line(std::string_view line) {
+    const auto t = line.find_first_not_of(" \t");
+    return t != std::string_view::npos && line[t] == '|';
 }
 
 }  // namespace
@@ -46,21 +46,59 @@ document::BrailleLine LiveLayout::number_cells(int n) {
 
 void LiveLayout::translate_entry(std::size_t i) {
     auto& e = entries_[i];
-    e.block = parse_editor_line(e.line);
+    e.block = parse_editor_line(e.line, dialect_);
     e.error.reset();
     e.translated = translate::TranslatedBlock{};
+    e.cells.clear();
+    e.translated_cells.clear();
     if (!e.block) return;
+    if (e.block->kind == document::BlockKind::table_row) {
+        // The header row is a table's first row with the delimiter row under it;
+        // an empty one stands for no header (as the Markdown importer reads it).
+        const bool first_row = i == 0 || !starts_table_line(entries_[i - 1].line);
+        const bool header = first_row && i + 1 < entries_.size() && is_table_delimiter(entries_[i + 1].line);
+        e.cells = parse_table_cells(e.line);
+        if (header && std::ranges::all_of(e.cells, [](const document::Block& c) {
+                return c.text().find_first_not_of(" \t") == std::string::npos;
+            })) {
+            e.block.reset();
+            e.cells.clear();
+            return;
+        }
+        e.block->level = header ? 1 : 0;
+        for (const auto& cell : e.cells) {
+            auto tc = translate::translate_block(cell, translator_,
+                                                 layout::word_room(options_, cell.kind, cell.level));
+            if (!tc) {
+                e.error = located(tc.error(), "line " + std::to_string(i + 1));
+                e.translated_cells.clear();
+                return;
+            }
+            e.translated_cells.push_back(std::move(*tc));
+        }
+    }
     if (e.block->kind == document::BlockKind::print_page_break && e.block->label.empty()) {
-        // "---" continues the numbering of the page break above it; the first is page 2.
-        std::string label = "2";
+        // "---" continues from the print page in effect above it, by the rule
+        // the importers follow (document/print_page.hpp): the first is page 2.
+        // Before any text (and any labelled break) it starts no page: the
+        // importer drops it, and so it is no block here either.
+        std::string current(document::first_print_page);
+        bool started = false;
         for (std::size_t j = i; j-- > 0;) {
             const auto& b = entries_[j].block;
-            if (b && b->kind == document::BlockKind::print_page_break) {
-                label = next_label(b->label);
+            if (!b) continue;
+            if (b->kind == document::BlockKind::print_page_break) {
+                current = b->label;
+                started = true;
                 break;
             }
+            if (b->kind != document::BlockKind::braille_page_break) started = true;
         }
-        e.block->label = label;
+        if (!started) {
+            e.block.reset();
+            return;
+        }
+        e.block->label = document::next_print_page(current);
     }
     auto tb = translate::translate_block(*e.block, translator_,
                               layout::word_room(options_, e.block->kind, e.block->level));
@@ -107,26 +145,90 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     RelayoutStats stats;
     // Page breaks change the print page of every page after them: no early stop then.
     bool breaks_touched = removed_breaks;
-    for (std::size_t i = first; i < first + fresh.size(); ++i) {
+    // A table row is the header when the delimiter row follows it: the line
+    // above the edit may have become one, or stopped being one.
+    std::size_t count = fresh.size();
+    if (first > 0 && starts_table_line(entries_[first - 1].line)) {
+        --first;
+        ++count;
+    }
+    if (first + count < entries_.size() && starts_table_line(entries_[first + count].line)) ++count;
+    for (std::size_t i = first; i < first + count; ++i) {
         translate_entry(i);
         ++stats.lines_translated;
         const auto& b = entries_[i].block;
         breaks_touched = breaks_touched || (b && b->kind == document::BlockKind::print_page_break);
     }
     // A changed page break renumbers the unlabelled breaks after it, up to the next labelled one.
-    for (std::size_t i = first + fresh.size(); i < entries_.size(); ++i) {
+    for (std::size_t i = first + count; i < entries_.size(); ++i) {
         const auto& b = entries_[i].block;
-        if (!b || b->kind != document::BlockKind::print_page_break) continue;
-        if (parse_editor_line(entries_[i].line)->label.empty()) {
+        if (b && b->kind != document::BlockKind::print_page_break) continue;
+        // A line without a block is blank, or a break before any text (it may start a page now).
+        if (!b && entries_[i].line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        const auto own = parse_editor_line(entries_[i].line, dialect_);
+        if (!own || own->kind != document::BlockKind::print_page_break) continue;
+        if (own->label.empty()) {
+            const auto before = b ? std::optional<std::string>(b->label) : std::nullopt;
             translate_entry(i);
             ++stats.lines_translated;
+            const auto& now = entries_[i].block;
+            breaks_touched = breaks_touched || (now ? std::optional<std::string>(now->label) : std::nullopt) != before;
             continue;
         }
         break;
     }
-    auto layout = relayout_from(first, breaks_touched ? npos : first + fresh.size());
+    auto layout = relayout_from(first, breaks_touched ? npos : first + count);
     layout.lines_translated = stats.lines_translated;
     return layout;
+}
+
+void LiveLayout::set_dialect(Dialect dialect) {
+    if (dialect == dialect_) return;
+    dialect_ = dialect;
+    for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
+    paged_ = {};
+    relayout_from(0);
+}
+
+document::Document LiveLayout::document() const {
+    // As the importer reads the saved file: a break after all text is dropped
+    // (DocumentBuilder::finish); one before any text is no block here already.
+    // A table (a run of table lines) has as many columns as its widest row, as
+    // a Markdown table as many as its header: shorter rows get empty entries at
+    // the end, which lay out as the missing ones did.
+    document::Document doc;
+    for (std::size_t i = 0; i < entries_.size();) {
+        std::size_t end = i + 1;
+        std::size_t width = 0;
+        if (starts_table_line(entries_[i].line)) {
+            end = i;
+            for (; end < entries_.size() && starts_table_line(entries_[end].line); ++end)
+                width = std::max(width, entries_[end].cells.size());
+        }
+        for (; i < end; ++i) {
+            const auto& e = entries_[i];
+            if (!e.block) continue;
+            const int line = static_cast<int>(i + 1);
+            doc.blocks.push_back(*e.block);
+            doc.blocks.back().source_line = line;
+            if (e.block->kind != document::BlockKind::table_row) continue;
+            for (const auto& cell : e.cells) {
+                doc.blocks.push_back(cell);
+                doc.blocks.back().source_line = line;
+            }
+            for (auto c = e.cells.size(); c < width; ++c) {
+                document::Block empty;
+                empty.kind = document::BlockKind::table_cell;
+                empty.level = static_cast<int>(c);
+                empty.source_line = line;
+                doc.blocks.push_back(std::move(empty));
+            }
+        }
+    }
+    while (!doc.blocks.empty() && (doc.blocks.back().kind == document::BlockKind::print_page_break ||
+                                   doc.blocks.back().kind == document::BlockKind::braille_page_break))
+        doc.blocks.pop_back();
+    return doc;
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
@@ -195,6 +297,17 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
             }
             pag.add(body);
         }
+        // What came before the restart decides the blank line before it.
+        std::optional<document::BlockKind> previous;
+        for (std::size_t j = k; j-- > 0;) {
+            const auto& p = entries_[j];
+            if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
+                p.block->kind == document::BlockKind::braille_page_break)
+                continue;
+            previous = p.block->kind;
+            break;
+        }
+        pag.set_previous_kind(previous);
     }
     std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();
@@ -204,7 +317,8 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     // Same page, same lines on it, same content: everything after is what it was.
     const auto same_state = [&](const Entry& e) {
         const auto page = base + pag.pages_closed();
-        if (page != e.pages_before || pag.body_lines() != e.lines_before || page >= old.size())
+        // The old layout was settled here too: a table it had open then is not in its lines.
+        if (!e.settled_before || page != e.pages_before || pag.body_lines() != e.lines_before || page >= old.size())
             return false;
         const auto& rows = old[page].lines;
         const auto row0 = static_cast<std::size_t>(body_top(page));
@@ -232,7 +346,11 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         }
         e.pages_before = base + pag.pages_closed();
         e.lines_before = pag.body_lines();
-        if (e.block && !e.error) pag.add(e.translated);
+        e.settled_before = pag.settled();
+        if (e.block && !e.error) {
+            pag.add(e.translated);
+            for (const auto& cell : e.translated_cells) pag.add(cell);
+        }
     }
     if (stats.converged) {
         const auto resume = base + pag.pages_closed();
@@ -269,6 +387,15 @@ document::BrailleLine LiveLayout::braille_of(std::size_t i) const {
             return e.translated.label;
         case document::BlockKind::braille_page_break:
             return {};
+        case document::BlockKind::table_row: {
+            // The row's entries, two blank cells apart (editor_line_content spaces them so).
+            document::BrailleLine all;
+            for (const auto& cell : e.translated_cells) {
+                if (!all.empty()) all.insert(all.end(), 2, document::Cell{});
+                all.insert(all.end(), cell.cells.begin(), cell.cells.end());
+            }
+            return all;
+        }
         default:
             return e.translated.cells;
     }
@@ -303,7 +430,12 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
             previous = p.block->kind;
             break;
         }
-        if (layout::blank_line_before(options_, previous, tb.kind) && line > 0) ++line;
+        // As the paginator adds it: never at a page top, and on a page's last
+        // body line (or a full page) the page closes instead.
+        if (layout::blank_line_before(options_, previous, tb.kind) && line > 0) {
+            const int capacity = body_capacity(pos.page);
+            line = line + 1 >= capacity ? std::max(line, capacity) : line + 1;
+        }
         // Count the written cells before the target; blanks at line ends vanish when wrapping.
         cell = std::min(cell, tb.cells.size());
         std::size_t target = 0;
@@ -366,7 +498,7 @@ std::string LiveLayout::print_page_of(std::size_t page) const {
             (entries_[i].pages_before < page || (entries_[i].pages_before == page && entries_[i].lines_before == 0)))
             return b->label;
     }
-    return "1";
+    return std::string(document::first_print_page);
 }
 
 std::string LiveLayout::print_page_at(std::size_t line) const {
@@ -374,7 +506,7 @@ std::string LiveLayout::print_page_at(std::size_t line) const {
         const auto& b = entries_[i].block;
         if (b && b->kind == document::BlockKind::print_page_break) return b->label;
     }
-    return "1";
+    return std::string(document::first_print_page);
 }
 
 std::string LiveLayout::back_translate(const document::BrailleLine& cells) const {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/result.hpp"
+#include "edit/editor_lines.hpp"
 #include "layout/layout_options.hpp"
 #include "layout/page.hpp"
 #include "translate/translated_document.hpp"
@@ -41,6 +42,15 @@ public:
     using Progress = std::function<bool(std::size_t, std::size_t)>;
 
     static Result<LiveLayout> create(const std::string& tables, layout::LayoutOptions options);
+
+    // The line dialect (editor_lines.hpp); a change translates every line again.
+    void set_dialect(Dialect dialect);
+    [[nodiscard]] Dialect dialect() const { return dialect_; }
+
+    // The document the lines stand for: their blocks in order, page breaks with
+    // the print page they start, a table row followed by its cells, and each
+    // block's source_line its 1-based editor line. What is saved.
+    [[nodiscard]] document::Document document() const;
 
     // Replaces everything; translates every line. Returns false when cancelled.
     bool reset(std::vector<std::string> lines, const Progress& progress = {});
@@ -78,9 +88,12 @@ private:
         std::string line;
         std::optional<document::Block> block;
         translate::TranslatedBlock translated;
+        std::vector<document::Block> cells;  // a table row's cells
+        std::vector<translate::TranslatedBlock> translated_cells;
         std::optional<Error> error;
         std::size_t pages_before = 0;  // paginator state before this entry
         std::size_t lines_before = 0;
+        bool settled_before = false;  // no table or list was open before this entry
     };
 
     LiveLayout(translate::Translator translator, layout::LayoutOptions options)
@@ -98,6 +111,7 @@ private:
 
     translate::Translator translator_;
     layout::LayoutOptions options_;
+    Dialect dialect_ = Dialect::markdown;
     std::vector<Entry> entries_;
     layout::PagedDocument paged_;
     std::unordered_map<int, document::BrailleLine> numbers_;

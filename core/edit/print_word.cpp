@@ -36,7 +36,7 @@ std::u32string print_word_at(const LiveLayout& layout, const PagePosition& where
         }
     }
     if (k == cells.size() || cells[k].blank()) return {};
-    auto decoded = utf8_to_utf32(editor_line_content(layout.line(i)));
+    auto decoded = utf8_to_utf32(editor_line_content(layout.line(i), layout.dialect()));
     if (!decoded || decoded->empty()) return {};
     const std::u32string content = std::move(*decoded);
     // Contractions never cross a space, so the n-th braille word is the n-th

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "document/print_page.hpp"
+
 namespace tactus::import::detail {
 namespace {
 
@@ -126,6 +128,19 @@ void DocumentBuilder::end_table() {
     flush_notes();
 }
 
+void DocumentBuilder::drop_empty_row() {
+    end();
+    auto row = blocks_.size();
+    while (row > 0 && blocks_[row - 1].kind == document::BlockKind::table_cell) --row;
+    if (row == 0 || blocks_[row - 1].kind != document::BlockKind::table_row) return;
+    const bool empty = std::all_of(blocks_.begin() + static_cast<std::ptrdiff_t>(row), blocks_.end(),
+                                   [](const document::Block& cell) { return !visible(cell.text()); });
+    if (!empty) return;
+    blocks_.erase(blocks_.begin() + static_cast<std::ptrdiff_t>(row - 1), blocks_.end());
+    // The row may have been all there was: then nothing is printed yet.
+    has_content_ = std::any_of(blocks_.rbegin(), blocks_.rend(), [](const document::Block& b) { return !is_page_break(b); });
+}
+
 void DocumentBuilder::flush_notes() {
     for (auto& n : notes_) push(std::move(n));
     notes_.clear();
@@ -133,11 +148,14 @@ void DocumentBuilder::flush_notes() {
 
 void DocumentBuilder::print_page_break(int source_line, std::string label) {
     end();
-    if (!has_content_) return;  // nothing printed yet: page 1 has not even started
-    ++print_page_;
+    // Nothing printed yet: an unlabelled break would only add an empty page,
+    // while a label says where the print pages start (it is kept).
+    if (!has_content_ && blocks_.empty() && label.empty()) return;
+    // One numbering rule for importers, the editor and its layout (document/print_page.hpp).
+    print_page_ = document::print_page_label(label, print_page_);
     document::Block b;
     b.kind = document::BlockKind::print_page_break;
-    b.label = label.empty() ? std::to_string(print_page_) : std::move(label);
+    b.label = print_page_;
     b.source_line = source_line;
     push(std::move(b));
 }

@@ -13,6 +13,7 @@
 
 #include "common/result.hpp"
 #include "document/document.hpp"
+#include "document/print_page.hpp"
 
 namespace tactus::import::detail {
 
@@ -47,8 +48,11 @@ public:
     void table_row(bool header, int source_line);
     void begin_cell(int column, int source_line);
     void end_table();
+    // Drops the last row when all its cells are empty: a Markdown table without
+    // a header row is written with an empty one (as Pandoc does).
+    void drop_empty_row();
 
-    // `label` empty = the next print page number (the first page is "1").
+    // `label` empty = the next print page (document::next_print_page; the first page is "1").
     void print_page_break(int source_line, std::string label = {});
     void braille_page_break(int source_line);
     void braille_block(std::vector<document::BrailleLine> lines, int source_line);
@@ -67,7 +71,7 @@ private:
     document::Block current_;
     bool open_ = false;
     bool has_content_ = false;  // a non-break block has been kept
-    int print_page_ = 1;
+    std::string print_page_{document::first_print_page};  // the print page in effect
     int overflow_line_ = -1;
     std::vector<document::Block> notes_;  // notes waiting for their block's end
     document::Block set_aside_;           // the block a note interrupted

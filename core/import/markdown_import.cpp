@@ -202,6 +202,7 @@ private:
                 break;
             case MD_BLOCK_THEAD:
                 in_head_ = false;
+                builder_.drop_empty_row();  // an empty header row: a table without one
                 break;
             case MD_BLOCK_TH:
             case MD_BLOCK_TD:

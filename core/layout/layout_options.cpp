@@ -70,6 +70,14 @@ bool blank_line_before(const LayoutOptions& o, std::optional<document::BlockKind
     const bool quote = kind == document::BlockKind::quote;
     const bool after_quote = previous == document::BlockKind::quote;
     if (quote != after_quote) return true;
+    // BANA Braille Formats §8 (lists): a blank line before and after a list,
+    // except right under a heading (the heading's own rule: none after it). A
+    // note placed after an item stays inside the list.
+    const bool list = kind == document::BlockKind::list_item;
+    const bool after_list = previous == document::BlockKind::list_item;
+    if (previous && previous != document::BlockKind::heading && list != after_list &&
+        kind != document::BlockKind::note && previous != document::BlockKind::note)
+        return true;
     return kind == document::BlockKind::paragraph && o.blank_line_between_paragraphs;
 }
 

@@ -56,8 +56,8 @@ BlockIndents block_indents(const LayoutOptions& options, document::BlockKind kin
 
 // Whether a blank line goes before a text block of `kind` that follows one of
 // `previous` (none at the start; page breaks do not count): before a heading
-// (BANA §4), at the start and after the end of a block quote (docs/layout.md),
-// between paragraphs when asked. Tables add their own (the paginator). The
+// (BANA §4), at the start and after the end of a block quote (docs/layout.md)
+// and of a list (BANA §8), between paragraphs when asked. Tables add their own (the paginator). The
 // paginator and the editor's cursor map both ask here.
 bool blank_line_before(const LayoutOptions& options, std::optional<document::BlockKind> previous,
                        document::BlockKind kind);

@@ -151,7 +151,10 @@ void Paginator::add_wrapped(const translate::TranslatedBlock& b, const BlockInde
     }
 }
 
-bool Paginator::settled() const { return table_.empty() && last_kind_ != document::BlockKind::quote; }
+bool Paginator::settled() const {
+    // After a quote or a list item the next block's blank line depends on it.
+    return table_.empty() && last_kind_ != document::BlockKind::quote && last_kind_ != document::BlockKind::list_item;
+}
 
 void Paginator::add_table_block(const translate::TranslatedBlock& b) {
     if (b.kind == document::BlockKind::table_row) {
@@ -206,8 +209,17 @@ bool Paginator::lay_out_simple_table() {
     while (head < table_.size() && table_[head].header) ++head;
     const auto together = static_cast<int>(head == 0 ? 1 : std::min(head + 2, table_.size() + 1));
     if (!body_.empty() && static_cast<int>(body_.size()) + together > body_capacity()) close_page();
+    // The column headings and their separation line, repeated at the top of a
+    // page the table runs on to (BANA Braille Formats §11: a table continued on
+    // a new page repeats its column headings).
+    std::vector<document::BrailleLine> headings;
     for (std::size_t r = 0; r < table_.size(); ++r) {
         const auto& row = table_[r];
+        if (!row.header && r >= head && !headings.empty() && static_cast<int>(body_.size()) >= body_capacity() &&
+            static_cast<int>(headings.size()) + 1 < body_capacity()) {
+            close_page();
+            for (const auto& h : headings) add_line(h, source_line);
+        }
         document::BrailleLine line;
         for (std::size_t c = 0; c < widths.size(); ++c) {
             const auto e = c < row.cells.size() ? entry(row.cells[c]) : std::span<const document::Cell>{};
@@ -222,6 +234,7 @@ bool Paginator::lay_out_simple_table() {
                 line.insert(line.end(), gap, document::Cell{});
             }
         }
+        if (r < head) headings.push_back(line);
         add_line(std::move(line), source_line);
         const bool last_header = row.header && (r + 1 == table_.size() || !table_[r + 1].header);
         if (last_header) {
@@ -230,6 +243,7 @@ bool Paginator::lay_out_simple_table() {
                 sep.insert(sep.end(), widths[c], kSeparationLine);
                 if (c + 1 < widths.size()) sep.insert(sep.end(), kColumnGap, document::Cell{});
             }
+            if (r < head) headings.push_back(sep);
             add_line(std::move(sep), source_line);
         }
     }

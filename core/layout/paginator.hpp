@@ -41,9 +41,13 @@ public:
     // The pages closed so far (finish() would also close the one being filled).
     [[nodiscard]] const PagedDocument& closed() const { return doc_; }
     // False while a structure is open whose lines depend on blocks still to
-    // come: a table (laid out whole at its end) or a block quote (a blank line
-    // follows it). The editor's live layout does not stop early then.
+    // come: a table (laid out whole at its end), a block quote or a list (a
+    // blank line follows them). The editor's live layout does not stop early then.
     [[nodiscard]] bool settled() const;
+    // The kind of the block before the next one, for a paginator primed with a
+    // page's lines (the editor's restart): the blank line before the next block
+    // depends on it (blank_line_before).
+    void set_previous_kind(std::optional<document::BlockKind> kind) { last_kind_ = kind; }
 
 private:
     [[nodiscard]] bool numbered(std::size_t page_index) const;

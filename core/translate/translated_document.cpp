@@ -12,8 +12,8 @@ namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
-// BANA Braille Formats 2016 §16.2: a note reference is dots 2356, 2356 followed
-// unspaced by the reference (a number with its numeric indicator).
+// BANA Braille Formats 2016 §16.2 (for UEB): a note reference is dots 2356,
+// 2356 followed unspaced by the reference (a number with its numeric indicator).
 constexpr document::Cell kNoteReferenceIndicator{0x36};
 
 // Joins spans into one string with an emphasis mark per code point. Line breaks
@@ -149,14 +149,19 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
     return {};
 }
 
-// A note reference: the indicator and the reference, attached to the word
-// before it (never a line break in front of it or inside it).
+// A note reference, attached to the word before it (never a line break in
+// front of it or inside it). In UEB the note reference indicator and the
+// number; other codes (Chinese, EBAE, ...) have no such indicator that Tactus
+// knows, and the number goes in parentheses as the code writes them (every
+// table Tactus lists knows them; square brackets are unknown to zh-tw), the
+// way print without superscripts marks a note (docs/layout.md, "Notes").
 Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out) {
     auto u = utf8_to_utf32(span.text);
     if (!u) return std::unexpected(u.error());
+    if (!tr.is_ueb()) *u = U"(" + *u + U")";
     auto cells = tr.translate(*u);
     if (!cells) return std::unexpected(cells.error());
-    out.cells.insert(out.cells.end(), 2, kNoteReferenceIndicator);
+    if (tr.is_ueb()) out.cells.insert(out.cells.end(), 2, kNoteReferenceIndicator);
     out.cells.insert(out.cells.end(), cells->begin(), cells->end());
     out.breaks.resize(out.cells.size(), BreakBefore::never);
     return {};

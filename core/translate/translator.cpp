@@ -142,7 +142,8 @@ Result<Translator> Translator::open(std::string tables) {
     {
         std::lock_guard guard(louis::lock());
         t.hyphenation_ = find_hyphenation(first, table_info(first, "language"));
-        if (table_info(first, "system") == "ueb") t.division_.number_continuation = document::Cell{0x10};  // dot 5
+        t.ueb_ = table_info(first, "system") == "ueb";
+        if (t.ueb_) t.division_.number_continuation = document::Cell{0x10};  // dot 5
         louis::take_log();
     }
     if (t.division_.number_continuation) {

@@ -52,6 +52,10 @@ public:
                                            std::span<const std::uint8_t> emphasis = {}) const;
 
     [[nodiscard]] const DivisionRules& division_rules() const { return division_; }
+    // True for a table of Unified English Braille (liblouis `#+system:ueb`):
+    // the rules that are UEB's (number division, the note reference indicator)
+    // apply only then.
+    [[nodiscard]] bool is_ueb() const { return ueb_; }
 
     // Where `word` may be hyphenated (true before character i), from the
     // hyphenation dictionary liblouis has for the table's language
@@ -71,6 +75,7 @@ private:
     std::string tables_;
     std::string hyphenation_;  // e.g. "hyph_en_US.dic"; empty: none for this language
     DivisionRules division_;
+    bool ueb_ = false;
 };
 
 }  // namespace tactus::translate

@@ -8,12 +8,12 @@
         <translation>輸入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="69" />
+        <location filename="../../widgets/main_window.cpp" line="71" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="73" />
+        <location filename="../../widgets/main_window.cpp" line="75" />
         <source>Saving %1 failed: %2</source>
         <translation>儲存 %1 失敗：%2</translation>
     </message>
@@ -207,7 +207,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="333" />
+        <location filename="../../widgets/editor_widget.cpp" line="342" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -293,576 +293,581 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="85" />
-        <location filename="../../widgets/main_window.cpp" line="491" />
-        <location filename="../../widgets/main_window.cpp" line="619" />
-        <location filename="../../widgets/main_window.cpp" line="630" />
+        <location filename="../../widgets/main_window.cpp" line="87" />
+        <location filename="../../widgets/main_window.cpp" line="501" />
+        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="645" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="95" />
+        <location filename="../../widgets/main_window.cpp" line="97" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="102" />
+        <location filename="../../widgets/main_window.cpp" line="104" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="103" />
+        <location filename="../../widgets/main_window.cpp" line="105" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="104" />
+        <location filename="../../widgets/main_window.cpp" line="106" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="109" />
+        <location filename="../../widgets/main_window.cpp" line="111" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="129" />
+        <location filename="../../widgets/main_window.cpp" line="131" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="131" />
+        <location filename="../../widgets/main_window.cpp" line="133" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="132" />
+        <location filename="../../widgets/main_window.cpp" line="134" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="139" />
+        <location filename="../../widgets/main_window.cpp" line="141" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="142" />
+        <location filename="../../widgets/main_window.cpp" line="146" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="202" />
+        <location filename="../../widgets/main_window.cpp" line="206" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="205" />
+        <location filename="../../widgets/main_window.cpp" line="209" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="206" />
+        <location filename="../../widgets/main_window.cpp" line="210" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="207" />
+        <location filename="../../widgets/main_window.cpp" line="211" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="207" />
+        <location filename="../../widgets/main_window.cpp" line="211" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="208" />
+        <location filename="../../widgets/main_window.cpp" line="212" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="208" />
+        <location filename="../../widgets/main_window.cpp" line="212" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="210" />
+        <location filename="../../widgets/main_window.cpp" line="214" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="210" />
+        <location filename="../../widgets/main_window.cpp" line="214" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="212" />
-        <location filename="../../widgets/main_window.cpp" line="636" />
+        <location filename="../../widgets/main_window.cpp" line="216" />
+        <location filename="../../widgets/main_window.cpp" line="651" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="212" />
+        <location filename="../../widgets/main_window.cpp" line="216" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="213" />
+        <location filename="../../widgets/main_window.cpp" line="217" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="216" />
+        <location filename="../../widgets/main_window.cpp" line="220" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="220" />
+        <location filename="../../widgets/main_window.cpp" line="224" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="226" />
+        <location filename="../../widgets/main_window.cpp" line="230" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
+        <location filename="../../widgets/main_window.cpp" line="257" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
+        <location filename="../../widgets/main_window.cpp" line="257" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258" />
+        <location filename="../../widgets/main_window.cpp" line="262" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258" />
+        <location filename="../../widgets/main_window.cpp" line="262" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="259" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="259" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="265" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="265" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="264" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="270" />
+        <location filename="../../widgets/main_window.cpp" line="275" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
+        <location filename="../../widgets/main_window.cpp" line="277" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="279" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="291" />
+        <location filename="../../widgets/main_window.cpp" line="296" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="332" />
+        <location filename="../../widgets/main_window.cpp" line="337" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="344" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
-        <location filename="../../widgets/main_window.cpp" line="454" />
+        <location filename="../../widgets/main_window.cpp" line="348" />
+        <location filename="../../widgets/main_window.cpp" line="464" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="353" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="363" />
+        <location filename="../../widgets/main_window.cpp" line="370" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="364" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="370" />
+        <location filename="../../widgets/main_window.cpp" line="377" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="385" />
+        <location filename="../../widgets/main_window.cpp" line="392" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="393" />
+        <location filename="../../widgets/main_window.cpp" line="400" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="420" />
+        <location filename="../../widgets/main_window.cpp" line="427" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="425" />
+        <location filename="../../widgets/main_window.cpp" line="432" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="426" />
+        <location filename="../../widgets/main_window.cpp" line="433" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="443" />
+        <location filename="../../widgets/main_window.cpp" line="453" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="448" />
+        <location filename="../../widgets/main_window.cpp" line="458" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="467" />
+        <location filename="../../widgets/main_window.cpp" line="477" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="480" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="480" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="481" />
-        <location filename="../../widgets/main_window.cpp" line="620" />
-        <location filename="../../widgets/main_window.cpp" line="685" />
+        <location filename="../../widgets/main_window.cpp" line="491" />
+        <location filename="../../widgets/main_window.cpp" line="635" />
+        <location filename="../../widgets/main_window.cpp" line="700" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="502" />
-        <source>Save as Markdown</source>
-        <translation>另存為 Markdown</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="502" />
+        <location filename="../../widgets/main_window.cpp" line="512" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="527" />
+        <location filename="../../widgets/main_window.cpp" line="513" />
+        <source>Plain text (*.txt)</source>
+        <translation>純文字 (*.txt)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="515" />
+        <source>Save as</source>
+        <translation>另存新檔</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="542" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="532" />
-        <location filename="../../widgets/main_window.cpp" line="570" />
-        <location filename="../../widgets/main_window.cpp" line="690" />
+        <location filename="../../widgets/main_window.cpp" line="547" />
+        <location filename="../../widgets/main_window.cpp" line="585" />
+        <location filename="../../widgets/main_window.cpp" line="705" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="533" />
+        <location filename="../../widgets/main_window.cpp" line="548" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="533" />
+        <location filename="../../widgets/main_window.cpp" line="548" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="535" />
+        <location filename="../../widgets/main_window.cpp" line="550" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="556" />
+        <location filename="../../widgets/main_window.cpp" line="571" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="565" />
+        <location filename="../../widgets/main_window.cpp" line="580" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="572" />
+        <location filename="../../widgets/main_window.cpp" line="587" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="573" />
+        <location filename="../../widgets/main_window.cpp" line="588" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="584" />
+        <location filename="../../widgets/main_window.cpp" line="599" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="619" />
+        <location filename="../../widgets/main_window.cpp" line="634" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="631" />
+        <location filename="../../widgets/main_window.cpp" line="646" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="633" />
+        <location filename="../../widgets/main_window.cpp" line="648" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="637" />
+        <location filename="../../widgets/main_window.cpp" line="652" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="751" />
+        <location filename="../../widgets/main_window.cpp" line="766" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="804" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="835" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="841" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="831" />
+        <location filename="../../widgets/main_window.cpp" line="847" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="833" />
+        <location filename="../../widgets/main_window.cpp" line="849" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="834" />
+        <location filename="../../widgets/main_window.cpp" line="850" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="853" />
+        <location filename="../../widgets/main_window.cpp" line="869" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="857" />
+        <location filename="../../widgets/main_window.cpp" line="873" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="859" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="859" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="888" />
+        <location filename="../../widgets/main_window.cpp" line="904" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="888" />
+        <location filename="../../widgets/main_window.cpp" line="904" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="889" />
+        <location filename="../../widgets/main_window.cpp" line="905" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="889" />
+        <location filename="../../widgets/main_window.cpp" line="905" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="890" />
+        <location filename="../../widgets/main_window.cpp" line="906" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="890" />
+        <location filename="../../widgets/main_window.cpp" line="906" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891" />
+        <location filename="../../widgets/main_window.cpp" line="907" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891" />
+        <location filename="../../widgets/main_window.cpp" line="907" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="892" />
+        <location filename="../../widgets/main_window.cpp" line="908" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="892" />
+        <location filename="../../widgets/main_window.cpp" line="908" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="893" />
+        <location filename="../../widgets/main_window.cpp" line="909" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="893" />
+        <location filename="../../widgets/main_window.cpp" line="909" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="899" />
+        <location filename="../../widgets/main_window.cpp" line="915" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="900" />
+        <location filename="../../widgets/main_window.cpp" line="916" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -930,121 +935,121 @@
         <translation>字車運動圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="92" />
+        <location filename="../../widgets/motion_view.cpp" line="95" />
         <source>Time estimates</source>
         <translation>時間估計</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="98" />
+        <location filename="../../widgets/motion_view.cpp" line="101" />
         <source>Profile shapes on this pass</source>
         <translation>此行程的各種運動曲線</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="99" />
+        <location filename="../../widgets/motion_view.cpp" line="102" />
         <source>Profile shape</source>
         <translation>運動曲線</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="99" />
+        <location filename="../../widgets/motion_view.cpp" line="102" />
         <source>Pass time</source>
         <translation>行程時間</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="99" />
+        <location filename="../../widgets/motion_view.cpp" line="102" />
         <source>Versus lower bound</source>
         <translation>相對於下限</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="105" />
+        <location filename="../../widgets/motion_view.cpp" line="108" />
         <source>Strikes of this pass</source>
         <translation>此行程的擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="106" />
-        <location filename="../../widgets/motion_view.cpp" line="216" />
+        <location filename="../../widgets/motion_view.cpp" line="109" />
+        <location filename="../../widgets/motion_view.cpp" line="221" />
         <source>Time (ms)</source>
         <translation>時間 (ms)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="106" />
+        <location filename="../../widgets/motion_view.cpp" line="109" />
         <source>Carriage (mm)</source>
         <translation>字車 (mm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="106" />
+        <location filename="../../widgets/motion_view.cpp" line="109" />
         <source>Side</source>
         <translation>面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="106" />
+        <location filename="../../widgets/motion_view.cpp" line="109" />
         <source>Residual (µm)</source>
         <translation>殘留振動 (µm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="149" />
+        <location filename="../../widgets/motion_view.cpp" line="154" />
         <source>No plan yet</source>
         <translation>尚未規劃</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="157" />
+        <location filename="../../widgets/motion_view.cpp" line="162" />
         <source>Sheet %1: %2 (lower bound %3, %4). Document, %5 sheets: %6 (lower bound %7, %8).</source>
         <translation>第 %1 張：%2（下限 %3，%4）。整份文件 %5 張：%6（下限 %7，%8）。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="165" />
+        <location filename="../../widgets/motion_view.cpp" line="170" />
         <source>This sheet is blank.</source>
         <translation>這張是空白的。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="169" />
+        <location filename="../../widgets/motion_view.cpp" line="174" />
         <source>Pass %1 (%2, %3 strikes): %4, lower bound %5.</source>
         <translation>行程 %1（%2，%3 個擊點）：%4，下限 %5。</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="171" />
-        <location filename="../../widgets/motion_view.cpp" line="225" />
+        <location filename="../../widgets/motion_view.cpp" line="176" />
+        <location filename="../../widgets/motion_view.cpp" line="230" />
         <source>front</source>
         <translation>正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="171" />
-        <location filename="../../widgets/motion_view.cpp" line="225" />
+        <location filename="../../widgets/motion_view.cpp" line="176" />
+        <location filename="../../widgets/motion_view.cpp" line="230" />
         <source>back</source>
         <translation>背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="178" />
-        <location filename="../../widgets/motion_view.cpp" line="205" />
+        <location filename="../../widgets/motion_view.cpp" line="183" />
+        <location filename="../../widgets/motion_view.cpp" line="210" />
         <source>Planned (auto-tuned)</source>
         <translation>規劃（自動調校）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="182" />
+        <location filename="../../widgets/motion_view.cpp" line="187" />
         <source>Strikes</source>
         <translation>擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="195" />
+        <location filename="../../widgets/motion_view.cpp" line="200" />
         <source>Trapezoid</source>
         <translation>梯形</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="196" />
+        <location filename="../../widgets/motion_view.cpp" line="201" />
         <source>S-curve (smoothstep)</source>
         <translation>S 曲線（smoothstep）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="197" />
+        <location filename="../../widgets/motion_view.cpp" line="202" />
         <source>Jerk-limited (7 segments)</source>
         <translation>限制加加速度（7 段）</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="218" />
+        <location filename="../../widgets/motion_view.cpp" line="223" />
         <source>Sheet %1, pass %2</source>
         <translation>第 %1 張，行程 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/motion_view.cpp" line="230" />
+        <location filename="../../widgets/motion_view.cpp" line="235" />
         <source>%1 against time for sheet %2, pass %3: %4 strikes over %5; from %6 to %7. The strike table lists the same data.</source>
         <translation>第 %2 張行程 %3 的%1對時間：%4 個擊點，歷時 %5；範圍 %6 到 %7。擊點表列出相同資料。</translation>
     </message>
@@ -1184,14 +1189,14 @@
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="186" />
-        <location filename="../../widgets/printer_panel.cpp" line="541" />
-        <location filename="../../widgets/printer_panel.cpp" line="734" />
+        <location filename="../../widgets/printer_panel.cpp" line="544" />
+        <location filename="../../widgets/printer_panel.cpp" line="737" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="188" />
-        <location filename="../../widgets/printer_panel.cpp" line="1045" />
+        <location filename="../../widgets/printer_panel.cpp" line="1048" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1246,389 +1251,389 @@
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="209" />
+        <location filename="../../widgets/printer_panel.cpp" line="212" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="210" />
+        <location filename="../../widgets/printer_panel.cpp" line="213" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="211" />
+        <location filename="../../widgets/printer_panel.cpp" line="214" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="217" />
+        <location filename="../../widgets/printer_panel.cpp" line="220" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="218" />
+        <location filename="../../widgets/printer_panel.cpp" line="221" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="222" />
+        <location filename="../../widgets/printer_panel.cpp" line="225" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="227" />
+        <location filename="../../widgets/printer_panel.cpp" line="230" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="237" />
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="238" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="240" />
+        <location filename="../../widgets/printer_panel.cpp" line="243" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="244" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="242" />
+        <location filename="../../widgets/printer_panel.cpp" line="245" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="243" />
+        <location filename="../../widgets/printer_panel.cpp" line="246" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="245" />
+        <location filename="../../widgets/printer_panel.cpp" line="248" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="246" />
+        <location filename="../../widgets/printer_panel.cpp" line="249" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="251" />
+        <location filename="../../widgets/printer_panel.cpp" line="254" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="271" />
+        <location filename="../../widgets/printer_panel.cpp" line="274" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="317" />
+        <location filename="../../widgets/printer_panel.cpp" line="320" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="318" />
+        <location filename="../../widgets/printer_panel.cpp" line="321" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="321" />
+        <location filename="../../widgets/printer_panel.cpp" line="324" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="336" />
+        <location filename="../../widgets/printer_panel.cpp" line="339" />
         <source>Listing CUPS queues: %1</source>
         <translation>列出 CUPS 佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="342" />
+        <location filename="../../widgets/printer_panel.cpp" line="345" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="347" />
+        <location filename="../../widgets/printer_panel.cpp" line="350" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="350" />
+        <location filename="../../widgets/printer_panel.cpp" line="353" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="357" />
+        <location filename="../../widgets/printer_panel.cpp" line="360" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="402" />
+        <location filename="../../widgets/printer_panel.cpp" line="405" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="407" />
+        <location filename="../../widgets/printer_panel.cpp" line="410" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="417" />
+        <location filename="../../widgets/printer_panel.cpp" line="420" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="428" />
+        <location filename="../../widgets/printer_panel.cpp" line="431" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="432" />
+        <location filename="../../widgets/printer_panel.cpp" line="435" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="439" />
+        <location filename="../../widgets/printer_panel.cpp" line="442" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="443" />
+        <location filename="../../widgets/printer_panel.cpp" line="446" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="459" />
+        <location filename="../../widgets/printer_panel.cpp" line="462" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="470" />
+        <location filename="../../widgets/printer_panel.cpp" line="473" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="482" />
+        <location filename="../../widgets/printer_panel.cpp" line="485" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="492" />
+        <location filename="../../widgets/printer_panel.cpp" line="495" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="497" />
+        <location filename="../../widgets/printer_panel.cpp" line="500" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="510" />
+        <location filename="../../widgets/printer_panel.cpp" line="513" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="522" />
+        <location filename="../../widgets/printer_panel.cpp" line="525" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="575" />
+        <location filename="../../widgets/printer_panel.cpp" line="578" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="587" />
+        <location filename="../../widgets/printer_panel.cpp" line="590" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="614" />
+        <location filename="../../widgets/printer_panel.cpp" line="617" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="615" />
+        <location filename="../../widgets/printer_panel.cpp" line="618" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="642" />
+        <location filename="../../widgets/printer_panel.cpp" line="645" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="649" />
+        <location filename="../../widgets/printer_panel.cpp" line="652" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="652" />
+        <location filename="../../widgets/printer_panel.cpp" line="655" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="658" />
+        <location filename="../../widgets/printer_panel.cpp" line="661" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="663" />
+        <location filename="../../widgets/printer_panel.cpp" line="666" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="676" />
+        <location filename="../../widgets/printer_panel.cpp" line="679" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="677" />
+        <location filename="../../widgets/printer_panel.cpp" line="680" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="690" />
+        <location filename="../../widgets/printer_panel.cpp" line="693" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="692" />
+        <location filename="../../widgets/printer_panel.cpp" line="695" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="693" />
+        <location filename="../../widgets/printer_panel.cpp" line="696" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="695" />
+        <location filename="../../widgets/printer_panel.cpp" line="698" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="929" />
         <location filename="../../widgets/printer_panel.cpp" line="932" />
+        <location filename="../../widgets/printer_panel.cpp" line="935" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="932" />
+        <location filename="../../widgets/printer_panel.cpp" line="935" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="933" />
+        <location filename="../../widgets/printer_panel.cpp" line="936" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="942" />
+        <location filename="../../widgets/printer_panel.cpp" line="945" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1001" />
-        <location filename="../../widgets/printer_panel.cpp" line="1038" />
+        <location filename="../../widgets/printer_panel.cpp" line="1004" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1006" />
+        <location filename="../../widgets/printer_panel.cpp" line="1009" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1014" />
+        <location filename="../../widgets/printer_panel.cpp" line="1017" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1038" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1049" />
+        <location filename="../../widgets/printer_panel.cpp" line="1052" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1052" />
+        <location filename="../../widgets/printer_panel.cpp" line="1055" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1053" />
+        <location filename="../../widgets/printer_panel.cpp" line="1056" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1058" />
+        <location filename="../../widgets/printer_panel.cpp" line="1061" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1061" />
+        <location filename="../../widgets/printer_panel.cpp" line="1064" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1112" />
+        <location filename="../../widgets/printer_panel.cpp" line="1115" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1137" />
+        <location filename="../../widgets/printer_panel.cpp" line="1140" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1138" />
+        <location filename="../../widgets/printer_panel.cpp" line="1141" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1156" />
+        <location filename="../../widgets/printer_panel.cpp" line="1159" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1160" />
+        <location filename="../../widgets/printer_panel.cpp" line="1163" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1166" />
+        <location filename="../../widgets/printer_panel.cpp" line="1169" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1170" />
+        <location filename="../../widgets/printer_panel.cpp" line="1173" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1174" />
+        <location filename="../../widgets/printer_panel.cpp" line="1177" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1178" />
+        <location filename="../../widgets/printer_panel.cpp" line="1181" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="483" />
+        <location filename="../../widgets/printer_panel.cpp" line="486" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
@@ -1638,114 +1643,114 @@
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="531" />
+        <location filename="../../widgets/printer_panel.cpp" line="534" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="526" />
+        <location filename="../../widgets/printer_panel.cpp" line="529" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="538" />
+        <location filename="../../widgets/printer_panel.cpp" line="541" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="558" />
+        <location filename="../../widgets/printer_panel.cpp" line="561" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="562" />
+        <location filename="../../widgets/printer_panel.cpp" line="565" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="581" />
+        <location filename="../../widgets/printer_panel.cpp" line="584" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="735" />
+        <location filename="../../widgets/printer_panel.cpp" line="738" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="764" />
+        <location filename="../../widgets/printer_panel.cpp" line="767" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="817" />
+        <location filename="../../widgets/printer_panel.cpp" line="820" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="824" />
-        <location filename="../../widgets/printer_panel.cpp" line="1010" />
+        <location filename="../../widgets/printer_panel.cpp" line="827" />
+        <location filename="../../widgets/printer_panel.cpp" line="1013" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="826" />
+        <location filename="../../widgets/printer_panel.cpp" line="829" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="859" />
+        <location filename="../../widgets/printer_panel.cpp" line="862" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="861" />
+        <location filename="../../widgets/printer_panel.cpp" line="864" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="922" />
+        <location filename="../../widgets/printer_panel.cpp" line="925" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="563" />
+        <location filename="../../widgets/printer_panel.cpp" line="566" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="834" />
+        <location filename="../../widgets/printer_panel.cpp" line="837" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="835" />
+        <location filename="../../widgets/printer_panel.cpp" line="838" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="818" />
+        <location filename="../../widgets/printer_panel.cpp" line="821" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="851" />
-        <location filename="../../widgets/printer_panel.cpp" line="881" />
+        <location filename="../../widgets/printer_panel.cpp" line="854" />
+        <location filename="../../widgets/printer_panel.cpp" line="884" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="859" />
+        <location filename="../../widgets/printer_panel.cpp" line="862" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1117" />
+        <location filename="../../widgets/printer_panel.cpp" line="1120" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1127" />
+        <location filename="../../widgets/printer_panel.cpp" line="1130" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
@@ -2181,184 +2186,184 @@
         <translation>結果</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="37" />
+        <location filename="../../widgets/vibration_view.cpp" line="35" />
         <source>Natural frequencies</source>
         <translation>自然頻率</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="41" />
+        <location filename="../../widgets/vibration_view.cpp" line="39" />
         <source>Residual vibration at the strikes</source>
         <translation>擊點時的殘留振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="45" />
+        <location filename="../../widgets/vibration_view.cpp" line="43" />
         <source>Residual vibration histogram</source>
         <translation>殘留振動直方圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="50" />
+        <location filename="../../widgets/vibration_view.cpp" line="48" />
         <source>Frequency response chart</source>
         <translation>頻率響應圖</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="79" />
+        <location filename="../../widgets/vibration_view.cpp" line="77" />
         <source>pass</source>
         <translation>通過</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="79" />
+        <location filename="../../widgets/vibration_view.cpp" line="77" />
         <source>FAIL</source>
         <translation>未通過</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="83" />
+        <location filename="../../widgets/vibration_view.cpp" line="81" />
         <source>Overshoot</source>
         <translation>超越量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="83" />
+        <location filename="../../widgets/vibration_view.cpp" line="81" />
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="83" />
+        <location filename="../../widgets/vibration_view.cpp" line="81" />
         <source>&lt; %1 %</source>
         <translation>&lt; %1 %</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="85" />
+        <location filename="../../widgets/vibration_view.cpp" line="83" />
         <source>Rise time (10-90 %)</source>
         <translation>上升時間（10-90 %）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="85" />
-        <location filename="../../widgets/vibration_view.cpp" line="88" />
+        <location filename="../../widgets/vibration_view.cpp" line="83" />
+        <location filename="../../widgets/vibration_view.cpp" line="86" />
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="86" />
-        <location filename="../../widgets/vibration_view.cpp" line="89" />
+        <location filename="../../widgets/vibration_view.cpp" line="84" />
+        <location filename="../../widgets/vibration_view.cpp" line="87" />
         <source>&lt; %1 ms</source>
         <translation>&lt; %1 ms</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="87" />
+        <location filename="../../widgets/vibration_view.cpp" line="85" />
         <source>Settling time (2 %)</source>
         <translation>安定時間（2 %）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="88" />
+        <location filename="../../widgets/vibration_view.cpp" line="86" />
         <source>never settles</source>
         <translation>無法安定</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="92" />
+        <location filename="../../widgets/vibration_view.cpp" line="95" />
         <source>%1 model; natural frequencies %2 Hz; √(k/m) = %3 rad/s; damping ratio %4.</source>
         <translation>%1模型；自然頻率 %2 Hz；√(k/m) = %3 rad/s；阻尼比 %4。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="93" />
+        <location filename="../../widgets/vibration_view.cpp" line="96" />
         <source>Two-inertia</source>
         <translation>雙慣量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="93" />
+        <location filename="../../widgets/vibration_view.cpp" line="96" />
         <source>One-inertia</source>
         <translation>單慣量</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="101" />
+        <location filename="../../widgets/vibration_view.cpp" line="104" />
         <source>Magnitude (dB)</source>
         <translation>增益 (dB)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="103" />
+        <location filename="../../widgets/vibration_view.cpp" line="106" />
         <source>Phase (degrees)</source>
         <translation>相位（度）</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="118" />
+        <location filename="../../widgets/vibration_view.cpp" line="121" />
         <source>Frequency (Hz)</source>
         <translation>頻率 (Hz)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="121" />
+        <location filename="../../widgets/vibration_view.cpp" line="124" />
         <source>dB</source>
         <translation>dB</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="123" />
+        <location filename="../../widgets/vibration_view.cpp" line="126" />
         <source>degrees</source>
         <translation>度</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="131" />
+        <location filename="../../widgets/vibration_view.cpp" line="134" />
         <source>Head position versus command</source>
         <translation>打點頭位置對命令</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="132" />
+        <location filename="../../widgets/vibration_view.cpp" line="135" />
         <source>Peak %1 dB at %2 Hz; %3 points from %4 to %5 Hz.</source>
         <translation>峰值 %1 dB 於 %2 Hz；%3 個點，從 %4 到 %5 Hz。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="138" />
+        <location filename="../../widgets/vibration_view.cpp" line="141" />
         <source>All targets met</source>
         <translation>全部達到目標</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="138" />
+        <location filename="../../widgets/vibration_view.cpp" line="141" />
         <source>Some targets are not met</source>
         <translation>部分未達目標</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="148" />
+        <location filename="../../widgets/vibration_view.cpp" line="151" />
         <source>No plan yet</source>
         <translation>尚未規劃</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="161" />
+        <location filename="../../widgets/vibration_view.cpp" line="164" />
         <source>sheet %1, pass %2</source>
         <translation>第 %1 張行程 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="167" />
+        <location filename="../../widgets/vibration_view.cpp" line="170" />
         <source>Nominal machine</source>
         <translation>標稱機器</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="168" />
+        <location filename="../../widgets/vibration_view.cpp" line="171" />
         <source>Worst case over the band</source>
         <translation>參數範圍內最差情況</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="187" />
+        <location filename="../../widgets/vibration_view.cpp" line="190" />
         <source>Residual up to (µm)</source>
         <translation>殘留振動上限 (µm)</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="189" />
+        <location filename="../../widgets/vibration_view.cpp" line="192" />
         <source>Strikes</source>
         <translation>擊點</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="196" />
+        <location filename="../../widgets/vibration_view.cpp" line="199" />
         <source>Residual vibration per strike</source>
         <translation>每個擊點的殘留振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="198" />
+        <location filename="../../widgets/vibration_view.cpp" line="201" />
         <source>%1 strikes on %2 planned sheets: worst case %3 µm at %4 (tolerance %5 µm) — %6.</source>
         <translation>已規劃 %2 張共 %1 個擊點：最差 %3 µm，位於%4（容許 %5 µm）— %6。</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="204" />
+        <location filename="../../widgets/vibration_view.cpp" line="207" />
         <source>within tolerance</source>
         <translation>在容許範圍內</translation>
     </message>
     <message>
-        <location filename="../../widgets/vibration_view.cpp" line="204" />
+        <location filename="../../widgets/vibration_view.cpp" line="207" />
         <source>OVER TOLERANCE</source>
         <translation>超出容許範圍</translation>
     </message>

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
@@ -23,11 +24,11 @@ inline std::vector<std::string> sample_lines(const std::string& name) {
 // The document the editor lines stand for, as core sees it.
 inline document::Document document_of(const std::vector<std::string>& lines) {
     document::Document d;
-    std::string previous_label = "1";
+    std::string previous_label(document::first_print_page);
     for (const auto& l : lines) {
         if (auto b = edit::parse_editor_line(l)) {
             if (b->kind == document::BlockKind::print_page_break) {
-                if (b->label.empty()) b->label = std::to_string(std::stoi(previous_label) + 1);
+                b->label = document::print_page_label(b->label, previous_label);
                 previous_label = b->label;
             }
             d.blocks.push_back(std::move(*b));

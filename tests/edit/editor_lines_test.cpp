@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "../common/edit_fixtures.hpp"
-#include "edit/markdown_writer.hpp"
+#include "export/text_export.hpp"
 #include "import/import.hpp"
 
 using namespace tactus;
@@ -99,7 +99,7 @@ TEST(EditorLines, QuotesNotesAndBulletsRoundTrip) {
     EXPECT_EQ(edit::parse_editor_line(lines[4])->text(), "\u2022 A bullet");  // as core's importers give it
     EXPECT_FALSE(edit::parse_editor_line(lines[6])->spans.front().note_reference);
 
-    const auto reopened = import::import_bytes(edit::to_markdown(lines), "saved.md");
+    const auto reopened = import::import_bytes(exporter::join_markdown_lines(lines), "saved.md");
     ASSERT_TRUE(reopened.has_value()) << reopened.error().to_string();
     EXPECT_EQ(edit::render_editor_lines(*reopened), lines);
 }

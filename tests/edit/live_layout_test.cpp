@@ -137,7 +137,7 @@ TEST(LiveLayout, PositionsPointAtTheParagraphsCells) {
             ASSERT_TRUE(pos.line < static_cast<int>(page.lines.size()));
             const auto& row = page.lines[static_cast<std::size_t>(pos.line)];
             ASSERT_TRUE(pos.cell < static_cast<int>(row.size())) << "line " << i << " cell " << c;
-            ASSERT_EQ(row[static_cast<std::size_t>(pos.cell)], cells[c]);
+            ASSERT_EQ(row[static_cast<std::size_t>(pos.cell)], cells[c]) << "line " << i << " cell " << c;
             ++checked;
         }
         ASSERT_EQ(live.line_at(live.position_of(i).page, live.position_of(i).line) <= i, true);

@@ -7,7 +7,7 @@
 
 #include "../common/edit_fixtures.hpp"
 #include "edit/editor_lines.hpp"
-#include "edit/markdown_writer.hpp"
+#include "export/text_export.hpp"
 #include "import/import.hpp"
 
 using namespace tactus;
@@ -17,7 +17,7 @@ TEST(MarkdownWriter, SavedSamplesReopenToTheSameLines) {
         SCOPED_TRACE(file);
         const auto lines = test::sample_lines(file);
         ASSERT_FALSE(lines.empty());
-        const auto md = edit::to_markdown(lines);
+        const auto md = exporter::join_markdown_lines(lines);
         const auto reopened = import::import_bytes(md, "saved.md");
         ASSERT_TRUE(reopened.has_value()) << reopened.error().to_string();
         std::vector<std::string> nonblank;
@@ -29,7 +29,7 @@ TEST(MarkdownWriter, SavedSamplesReopenToTheSameLines) {
 
 TEST(MarkdownWriter, BlankLinesMakeNoBlocksAndBlocksAreParagraphsApart) {
     const std::vector<std::string> lines{"# Title", "", "first", "   ", "second"};
-    EXPECT_EQ(edit::to_markdown(lines), "# Title\n\nfirst\n\nsecond\n");
+    EXPECT_EQ(exporter::join_markdown_lines(lines), "# Title\n\nfirst\n\nsecond\n");
 }
 
 // Property: random documents in the editor's dialect (headings, paragraphs,
@@ -88,7 +88,7 @@ TEST(MarkdownWriter, RandomDocumentsSurviveSaveAndReopen) {
         // A page break as the last block would only add an empty page: the importer drops it.
         while (!lines.empty() && lines.back().starts_with("<!-- pagebreak")) lines.pop_back();
         if (lines.empty()) continue;
-        const auto md = edit::to_markdown(lines);
+        const auto md = exporter::join_markdown_lines(lines);
         const auto reopened = import::import_bytes(md, "saved.md");
         ASSERT_TRUE(reopened.has_value()) << reopened.error().to_string();
         ASSERT_EQ(edit::render_editor_lines(*reopened), lines) << md;

@@ -79,7 +79,10 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"structure-md.brf", "structure.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"structure-docx.brf", "structure.docx", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"structure-odt.brf", "structure.odt", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
-        GoldenCase{"structure-md.pef", "structure.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef}),
+        GoldenCase{"structure-md.pef", "structure.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
+        // A table over two pages: its headings repeated on the second (issue 13).
+        GoldenCase{"structure-long-table.brf", "structure-long-table.md", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;
         for (auto& ch : n)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_test_util.hpp"
 
+#include "document/print_page.hpp"
+
 namespace tactus::test {
 namespace {
 
@@ -45,6 +47,40 @@ TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
                                          text_block(P, 0, {{"two"}}, 5),
                                          text_block(P, 0, {{"three"}}, 9)};
     EXPECT_EQ(doc.blocks, expected);
+}
+
+// Issue 13 item 4: "---" after <!-- pagebreak 10 --> is page 11, as the editor
+// numbers it (one rule: document/print_page.hpp), not the importer's own count 3.
+TEST(MarkdownImport, AnUnlabelledBreakCountsOnFromTheLabelBeforeIt) {
+    const auto doc = md("one\n\n---\n\ntwo\n\n<!-- pagebreak 10 -->\n\nthree\n\n---\n\nfour\n\n"
+                        "<!-- pagebreak xii -->\n\nfive\n\n---\n\nsix\n\n<!-- pagebreak Preface -->\n\nseven\n\n---\n\neight\n");
+    std::vector<std::string> labels;
+    for (const auto& b : doc.blocks)
+        if (b.kind == document::BlockKind::print_page_break) labels.push_back(b.label);
+    EXPECT_EQ(labels, (std::vector<std::string>{"2", "10", "11", "xii", "xiii", "Preface", ""}));
+}
+
+// A labelled break before any text says where the print pages start: it is kept
+// (an unlabelled one would only add an empty page and is dropped).
+TEST(MarkdownImport, ALabelledBreakBeforeTheTextSetsTheFirstPrintPage) {
+    const auto doc = md("---\n\n<!-- pagebreak 10 -->\n\none\n\n---\n\ntwo\n");
+    ASSERT_EQ(doc.blocks.size(), 4u);
+    EXPECT_EQ(doc.blocks[0], page_break("10", 3));
+    EXPECT_EQ(doc.blocks[2].label, "11");
+}
+
+TEST(PrintPage, NextPageByTheOneRule) {
+    EXPECT_EQ(document::next_print_page("1"), "2");
+    EXPECT_EQ(document::next_print_page("9"), "10");
+    EXPECT_EQ(document::next_print_page("099"), "100");
+    EXPECT_EQ(document::next_print_page("A-9"), "A-10");
+    EXPECT_EQ(document::next_print_page("iv"), "v");
+    EXPECT_EQ(document::next_print_page("XIX"), "XX");
+    EXPECT_EQ(document::next_print_page("iiii"), "");
+    EXPECT_EQ(document::next_print_page("Preface"), "");
+    EXPECT_EQ(document::next_print_page(""), "");
+    EXPECT_EQ(document::print_page_label("7", "3"), "7");
+    EXPECT_EQ(document::print_page_label("", "3"), "4");
 }
 
 // The editor saves a forced braille page (e.g. a BRF form feed) as this comment.

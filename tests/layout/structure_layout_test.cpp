@@ -8,6 +8,7 @@
 #include "../common/layout_options.hpp"
 #include "cells.hpp"
 #include "pipeline/pipeline.hpp"
+#include "translate/translator.hpp"
 
 using namespace tactus;
 using namespace tactus::document;
@@ -195,4 +196,67 @@ TEST(StructureLayout, RandomTablesAreColumnsOrListsAndLoseNothing) {
     }
     EXPECT_GT(simple, 20);
     EXPECT_GT(listed, 20);
+}
+
+// BANA Braille Formats §8: a blank line before and after a list; none under a
+// heading (its own rule), none inside the list.
+TEST(StructureLayout, AListHasABlankLineBeforeAndAfter) {
+    const auto lines = lay_out_lines({text_block(BlockKind::paragraph, 0, "Before."),
+                                      text_block(BlockKind::list_item, 1, "\u2022 one"),
+                                      text_block(BlockKind::list_item, 2, "\u2022 two"),
+                                      text_block(BlockKind::paragraph, 0, "After."),
+                                      text_block(BlockKind::heading, 2, "Steps"),
+                                      text_block(BlockKind::list_item, 1, "1. first")},
+                                     27);
+    EXPECT_EQ(lines, (std::vector<std::string>{"  ,BEFORE4", "", "_4 ONE", "  _4 TWO", "", "  ,AFTER4", "",
+                                               "    ,STEPS", "#A4 FIRST"}));
+}
+
+// A table that runs on to a new page repeats its column headings and their
+// separation line at the top of it (BANA §11).
+TEST(StructureLayout, ATableContinuedOnANewPageRepeatsItsHeadings) {
+    std::vector<std::vector<std::string>> rows{{"Bird", "Seen"}};
+    for (int i = 1; i <= 8; ++i) rows.push_back({"Heron", std::to_string(i)});
+    Document doc;
+    doc.blocks = table_blocks(rows, true);
+    PipelineOptions o;
+    o.tables = "en-ueb-g1.ctb";
+    o.translation_workers = 1;
+    o.layout.geometry = {27, 6, false, false};
+    o.layout.page_numbers = PageNumberPosition::none;
+    const auto paged = lay_out(doc, o);
+    ASSERT_TRUE(paged) << paged.error().to_string();
+    ASSERT_GE(paged->pages.size(), 2u);
+    for (std::size_t p = 0; p < paged->pages.size(); ++p) {
+        SCOPED_TRACE(p);
+        EXPECT_EQ(brf(paged->pages[p].lines[0]), ",BIRD   ,SEEN");
+        EXPECT_EQ(brf(paged->pages[p].lines[1]), "333333  33333");
+    }
+    int herons = 0;
+    for (const auto& p : paged->pages)
+        for (const auto& l : p.lines) herons += brf(l).starts_with(",HERON");
+    EXPECT_EQ(herons, 8);
+}
+
+// The note reference indicator ⠶⠶ is UEB's: other codes write the number in
+// parentheses as their table writes them (no 8-dot escapes).
+TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
+    const std::vector<Block> blocks{
+        text_block(BlockKind::paragraph, 0, {Span{"\u4eca\u5929"}, reference("1")}),
+        text_block(BlockKind::note, 0, {reference("1"), Span{" \u8a3b"}})};
+    const auto zh = lay_out_lines(blocks, 27, "zh-tw.ctb");
+    ASSERT_FALSE(zh.empty());
+    auto tr = translate::Translator::open("zh-tw.ctb");
+    ASSERT_TRUE(tr);
+    EXPECT_FALSE(tr->is_ueb());
+    const auto one = tr->translate(U"1");
+    ASSERT_TRUE(one);
+    for (const auto& l : zh) EXPECT_EQ(l.find("77" + brf(*one)), std::string::npos) << l;
+    const auto bracketed = tr->translate(U"(1)");
+    ASSERT_TRUE(bracketed);
+    for (const auto c : *bracketed) EXPECT_EQ(c.dots & 0xC0, 0);  // the table knows the marks
+    EXPECT_NE(zh[0].find(brf(*bracketed)), std::string::npos) << zh[0] << " / " << brf(*bracketed);
+    auto ueb = translate::Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(ueb);
+    EXPECT_TRUE(ueb->is_ueb());
 }

@@ -145,6 +145,69 @@ private Q_SLOTS:
         QVERIFY(again.editor()->layout().paged().pages == pages);
     }
 
+    // Issue 13 item 4: a text file is its text in the editor (no Markdown
+    // escapes), is saved in place as text, and comes back unchanged.
+    void a_text_file_is_shown_and_saved_as_it_is() {
+        const QByteArray text = "Hello *world*.\n\n& and # and *\n\n- not a list\n";
+        const auto path = dir.filePath(QStringLiteral("english.txt"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text);
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        QCOMPARE(w.editor()->text(), QString::fromUtf8(text).chopped(1));
+        // Ctrl+S saves in place: Tactus writes text files.
+        const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
+        save();
+        QVERIFY(!w.isWindowModified());
+        QFile saved(path);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QCOMPARE(saved.readAll(), text);
+        saved.close();
+        // Typed text stays as typed.
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, "1. a_b_ <c>");
+        save();
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QCOMPARE(saved.readAll(), text + "\n1. a_b_ <c>\n");
+        saved.close();
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        QVERIFY(again.editor()->layout().paged().pages == w.editor()->layout().paged().pages);
+    }
+
+    // A Markdown table is a pipe table in the editor, and saved as one.
+    void a_table_is_edited_and_saved_as_a_table() {
+        const auto path = dir.filePath(QStringLiteral("plants.md"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("| Plant | Where |\n|---|---|\n| Willow | river |\n");
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        QCOMPARE(w.editor()->text(), QStringLiteral("| Plant | Where |\n| --- | --- |\n| Willow | river |"));
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, "| Fern | shade |");
+        w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger();
+        QVERIFY(!w.isWindowModified());
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        const auto doc = again.editor()->layout().document();
+        QCOMPARE(doc.blocks.size(), std::size_t{9});  // three rows of two entries
+        QCOMPARE(doc.blocks[0].level, 1);              // the header row
+        QVERIFY(again.editor()->layout().paged().pages == w.editor()->layout().paged().pages);
+    }
+
     void switching_tables_retranslates() {
         MainWindow w;
         QVERIFY(w.open_file_now(test::sample("welcome.md")));

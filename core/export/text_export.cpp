@@ -1,0 +1,420 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "export/text_export.hpp"
+
+#include <algorithm>
+#include <optional>
+
+namespace tactus::exporter {
+namespace {
+
+constexpr std::string_view kInlineSpecials = "\\*_[]<>`&~";
+constexpr std::string_view kBullet = "\u2022 ";  // the bullet sign, as core's importers write it
+
+bool is_space(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (is_space(s.front()) || s.front() == '\r')) s.remove_prefix(1);
+    while (!s.empty() && (is_space(s.back()) || s.back() == '\r' || s.back() == '\n')) s.remove_suffix(1);
+    return s;
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Length of "12." / "3)" at the start of s, 0 when there is none.
+std::size_t ordinal_length(std::string_view s) {
+    std::size_t i = 0;
+    while (i < s.size() && i < 9 && is_digit(s[i])) ++i;
+    if (i == 0 || i >= s.size() || (s[i] != '.' && s[i] != ')')) return 0;
+    return i + 1;
+}
+
+std::string escape_inline(std::string_view text, bool in_table) {
+    std::string out;
+    out.reserve(text.size() + 8);
+    for (char c : text) {
+        if (kInlineSpecials.find(c) != std::string_view::npos || (in_table && c == '|')) out.push_back('\\');
+        out.push_back(c);
+    }
+    return out;
+}
+
+// Keeps a paragraph's first characters from reading as a heading, list, break or table.
+std::string guard_line_start(std::string s) {
+    // Spaces at a block's start are not Markdown text: the mark must see the text.
+    s.erase(0, std::min(s.size(), s.find_first_not_of(' ')));
+    if (s.empty()) return s;
+    if (const auto n = ordinal_length(s); n > 0 && n < s.size() + 1) {
+        s.insert(n - 1, 1, '\\');
+        return s;
+    }
+    if (std::string_view("#-+=>|").find(s[0]) != std::string_view::npos) s.insert(0, 1, '\\');
+    return s;
+}
+
+std::string render_spans(const std::vector<document::Span>& spans, bool in_table = false) {
+    std::string out;
+    for (const auto& span : spans) {
+        if (span.note_reference) {
+            out += "[^" + span.text + "]";
+            continue;
+        }
+        std::string_view t = span.text;
+        const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
+                              ? std::string_view("***")
+                          : (span.emphasis & document::emphasis_bold)   ? std::string_view("**")
+                          : (span.emphasis & document::emphasis_italic) ? std::string_view("*")
+                                                                        : std::string_view();
+        const auto core = trim(t);
+        if (mark.empty() || core.empty()) {
+            out += escape_inline(t, in_table);
+            continue;
+        }
+        // Emphasis marks must touch the words: keep surrounding spaces outside.
+        const auto lead = static_cast<std::size_t>(core.data() - t.data());
+        out += std::string(t.substr(0, lead));
+        out += mark;
+        out += escape_inline(core, in_table);
+        out += mark;
+        out += std::string(t.substr(lead + core.size()));
+    }
+    return out;
+}
+
+std::string braille_lines_text(const document::Block& b, std::string_view separator) {
+    std::string out;
+    for (std::size_t i = 0; i < b.braille_lines.size(); ++i) {
+        if (i) out += separator;
+        out += b.braille_lines[i].empty() ? document::to_unicode_text({document::Cell{}})
+                                          : document::to_unicode_text(b.braille_lines[i]);
+    }
+    return out;
+}
+
+bool is_table_line(std::string_view line) { return trim(line).starts_with('|'); }
+
+// The cells of a pipe-table row, split at the pipes that are not escaped (their text as written).
+std::vector<std::string> split_row(std::string_view line) {
+    auto t = trim(line);
+    if (t.starts_with('|')) t.remove_prefix(1);
+    std::vector<std::string> cells;
+    std::string cell;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i] == '\\' && i + 1 < t.size()) {
+            cell += t.substr(i, 2);
+            ++i;
+        } else if (t[i] == '|') {
+            cells.emplace_back(trim(cell));
+            cell.clear();
+        } else {
+            cell += t[i];
+        }
+    }
+    if (!trim(cell).empty()) cells.emplace_back(trim(cell));
+    return cells;
+}
+
+std::string join_row(const std::vector<std::string>& cells, std::size_t width) {
+    std::string out = "|";
+    for (std::size_t c = 0; c < width; ++c) out += " " + (c < cells.size() ? cells[c] : std::string()) + " |";
+    return out;
+}
+
+std::string delimiter_row(std::size_t width) {
+    std::string out = "|";
+    for (std::size_t c = 0; c < width; ++c) out += " --- |";
+    return out;
+}
+
+bool is_text_line_kind(const document::Block& b) {
+    return document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille;
+}
+
+}  // namespace
+
+std::string markdown_line(const document::Block& b) {
+    switch (b.kind) {
+        case document::BlockKind::heading: {
+            auto text = render_spans(b.spans);
+            // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
+            if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
+                text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
+            return std::string(static_cast<std::size_t>(std::clamp(b.level, 1, 6)), '#') + " " + text;
+        }
+        case document::BlockKind::list_item: {
+            std::string out(2 * static_cast<std::size_t>(std::max(b.level - 1, 0)), ' ');
+            auto spans = b.spans;
+            const auto ordinal = spans.empty() ? 0 : ordinal_length(spans.front().text);
+            if (ordinal > 0 && ordinal < spans.front().text.size() && spans.front().text[ordinal] == ' ') {
+                out += spans.front().text.substr(0, ordinal + 1);
+                spans.front().text.erase(0, ordinal + 1);
+                return out + guard_line_start(render_spans(spans));
+            }
+            if (!spans.empty() && spans.front().text.starts_with(kBullet)) spans.front().text.erase(0, kBullet.size());
+            // The item's own text must not start another list or block.
+            return out + "- " + guard_line_start(render_spans(spans));
+        }
+        case document::BlockKind::quote: {
+            std::string out;
+            for (int i = 0; i < std::clamp(b.level, 1, 6); ++i) out += "> ";
+            return out + guard_line_start(render_spans(b.spans));
+        }
+        case document::BlockKind::note: {
+            if (b.spans.empty() || !b.spans.front().note_reference) break;
+            auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());
+            if (!rest.empty() && rest.front().text.starts_with(' ')) rest.front().text.erase(0, 1);
+            return "[^" + b.spans.front().text + "]: " + render_spans(rest);
+        }
+        case document::BlockKind::table_row:
+        case document::BlockKind::table_cell:
+            return {};
+        case document::BlockKind::print_page_break:
+            return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
+        case document::BlockKind::braille_page_break:
+            return "<!-- braillepage -->";
+        case document::BlockKind::braille:
+            return braille_lines_text(b, "\n");
+        case document::BlockKind::paragraph:
+            break;
+    }
+    return guard_line_start(render_spans(b.spans));
+}
+
+std::string markdown_table_row(std::span<const document::Block> cells) {
+    std::vector<std::string> texts;
+    for (const auto& c : cells) {
+        auto text = render_spans(c.spans, true);
+        // An entry of dashes alone would make the row read as the delimiter row.
+        if (!trim(text).empty() && trim(text).find_first_not_of("-: ") == std::string_view::npos)
+            text.insert(text.find_first_not_of(' '), 1, '\\');
+        texts.push_back(std::move(text));
+    }
+    return join_row(texts, texts.size());
+}
+
+bool is_markdown_table_delimiter(std::string_view line) {
+    const auto t = trim(line);
+    if (!t.starts_with('|') || t.find('-') == std::string_view::npos) return false;
+    return t.find_first_not_of("|-: \t") == std::string_view::npos;
+}
+
+std::vector<std::string> markdown_lines(const document::Document& document) {
+    std::vector<std::string> lines;
+    lines.reserve(document.blocks.size());
+    const auto& blocks = document.blocks;
+    for (std::size_t i = 0; i < blocks.size();) {
+        const auto& b = blocks[i];
+        if (document::is_table_kind(b.kind)) {
+            // One table: its rows, each with the cells after it.
+            std::vector<std::pair<bool, std::vector<document::Block>>> rows;
+            for (; i < blocks.size() && document::is_table_kind(blocks[i].kind); ++i) {
+                if (blocks[i].kind == document::BlockKind::table_row || rows.empty())
+                    rows.emplace_back(blocks[i].kind == document::BlockKind::table_row && blocks[i].level == 1,
+                                      std::vector<document::Block>{});
+                if (blocks[i].kind == document::BlockKind::table_cell) rows.back().second.push_back(blocks[i]);
+            }
+            // A header row after body rows starts a table of its own (a blank
+            // line apart: one Markdown table has one header row, at its top).
+            for (std::size_t from = 0; from < rows.size();) {
+                std::size_t to = from + 1;
+                while (to < rows.size() && !(rows[to].first && !rows[to - 1].first)) ++to;
+                std::size_t width = 1;
+                for (std::size_t r = from; r < to; ++r) width = std::max(width, rows[r].second.size());
+                std::vector<std::string> table;
+                for (std::size_t r = from; r < to; ++r)
+                    table.push_back(join_row(split_row(markdown_table_row(rows[r].second)), width));
+                if (!rows[from].first) table.insert(table.begin(), join_row({}, width));
+                table.insert(table.begin() + 1, delimiter_row(width));
+                if (from > 0) lines.emplace_back();
+                for (auto& l : table) lines.push_back(std::move(l));
+                from = to;
+            }
+            continue;
+        }
+        if (b.kind == document::BlockKind::braille) {
+            for (const auto& l : b.braille_lines)
+                lines.push_back(l.empty() ? document::to_unicode_text({document::Cell{}}) : document::to_unicode_text(l));
+        } else if (auto line = markdown_line(b); !trim(line).empty()) {
+            lines.push_back(std::move(line));
+        }
+        ++i;
+    }
+    return lines;
+}
+
+namespace {
+
+// A list item line as the editor writes it: two spaces a level, then "- " or "12. ".
+struct ItemLine {
+    std::size_t level = 0;  // 1-based
+    std::string_view marker;  // "- ", "12. "
+    std::string_view rest;
+    bool ordered = false;
+    long number = 0;
+    char delimiter = 0;
+};
+
+std::optional<ItemLine> item_line(std::string_view line) {
+    std::size_t indent = 0;
+    while (indent < line.size() && line[indent] == ' ') ++indent;
+    const auto rest = line.substr(indent);
+    ItemLine item;
+    item.level = indent / 2 + 1;
+    if (rest.size() >= 2 && (rest[0] == '-' || rest[0] == '*' || rest[0] == '+') && is_space(rest[1])) {
+        item.marker = rest.substr(0, 2);
+        item.rest = rest.substr(2);
+        return item;
+    }
+    const auto n = ordinal_length(rest);
+    if (n == 0 || n >= rest.size() || !is_space(rest[n])) return std::nullopt;
+    item.marker = rest.substr(0, n + 1);
+    item.rest = rest.substr(n + 1);
+    item.ordered = true;
+    item.number = std::stol(std::string(rest.substr(0, n - 1)));
+    item.delimiter = rest[n - 1];
+    return item;
+}
+
+}  // namespace
+
+std::string join_markdown_lines(std::span<const std::string> lines) {
+    std::string out;
+    const auto block = [&out](std::string_view text) {
+        if (!out.empty()) out += "\n\n";
+        out += text;
+    };
+    // The list items open at each level: where their content starts (a nested
+    // item is indented to it, as Markdown nests), and an ordered item's number.
+    struct Open {
+        std::size_t content = 0;
+        bool ordered = false;
+        long number = 0;
+        char delimiter = 0;
+    };
+    std::vector<Open> open;
+    for (std::size_t i = 0; i < lines.size();) {
+        if (trim(lines[i]).empty()) {  // blank: no block
+            ++i;
+            continue;
+        }
+        if (const auto item = item_line(lines[i]); item && !trim(item->rest).empty()) {
+            // An item deeper than the one above it gets empty parents: Markdown
+            // nests a list only inside an item (the importer drops empty items).
+            while (open.size() + 1 < item->level) {
+                const auto indent = open.empty() ? 0 : open.back().content;
+                block(std::string(indent, ' ') + "- <!-- -->");
+                open.push_back(Open{indent + 2});
+            }
+            const auto indent = item->level > 1 ? open[item->level - 2].content : 0;
+            // Markdown counts an ordered list on from its first number: an item
+            // whose number does not follow its sibling's starts a list of its own.
+            if (item->ordered && open.size() >= item->level) {
+                const auto& sibling = open[item->level - 1];
+                if (sibling.ordered && sibling.delimiter == item->delimiter && item->number != sibling.number + 1)
+                    block(std::string(indent, ' ') + "<!-- -->");
+            }
+            block(std::string(indent, ' ') + std::string(item->marker) + std::string(trim(item->rest)));
+            open.resize(item->level - 1);
+            open.push_back(Open{indent + item->marker.size(), item->ordered, item->number, item->delimiter});
+            ++i;
+            continue;
+        }
+        open.clear();
+        if (!is_table_line(lines[i])) {
+            block(trim(lines[i]));
+            ++i;
+            continue;
+        }
+        // A run of table lines is one table: made whole (header, delimiter, width).
+        std::size_t end = i;
+        while (end < lines.size() && is_table_line(lines[end])) ++end;
+        // The header row is the run's first line when the delimiter row follows it.
+        const bool header = end - i >= 2 && !is_markdown_table_delimiter(lines[i]) &&
+                            is_markdown_table_delimiter(lines[i + 1]);
+        std::vector<std::vector<std::string>> rows;
+        for (std::size_t j = i; j < end; ++j)
+            if (!is_markdown_table_delimiter(lines[j])) rows.push_back(split_row(lines[j]));
+        if (rows.empty()) {  // delimiter rows alone: no table
+            i = end;
+            continue;
+        }
+        std::size_t width = 1;
+        for (const auto& r : rows) width = std::max(width, r.size());
+        std::string table;
+        if (!header) table = join_row({}, width) + "\n" + delimiter_row(width);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            if (!table.empty()) table += "\n";
+            table += join_row(rows[r], width);
+            if (header && r == 0) table += "\n" + delimiter_row(width);
+        }
+        block(table);
+        i = end;
+    }
+    out += '\n';
+    return out;
+}
+
+std::string to_markdown(const document::Document& document) {
+    const auto lines = markdown_lines(document);
+    return join_markdown_lines(lines);
+}
+
+std::string text_line(const document::Block& b) {
+    switch (b.kind) {
+        case document::BlockKind::print_page_break:
+        case document::BlockKind::braille_page_break:
+            return "\f";
+        case document::BlockKind::braille:
+            return braille_lines_text(b, "\n");
+        case document::BlockKind::table_row:
+            return {};
+        default:
+            break;
+    }
+    std::string out;
+    for (const auto& s : b.spans) out += s.note_reference ? "[" + s.text + "]" : s.text;
+    return out;
+}
+
+std::vector<std::string> text_lines(const document::Document& document) {
+    struct Line {
+        std::string text;
+        int source_line;
+        bool text_block;
+    };
+    std::vector<Line> blocks;
+    for (const auto& b : document.blocks) {
+        if (b.kind == document::BlockKind::table_row) continue;
+        auto text = text_line(b);
+        if (is_text_line_kind(b) && trim(text).empty()) continue;
+        blocks.push_back(Line{std::move(text), b.source_line, is_text_line_kind(b)});
+    }
+    // Paragraphs apart by a blank line somewhere: the importer then joins lines,
+    // so every two paragraphs need one.
+    bool apart = false;
+    for (std::size_t i = 1; i < blocks.size(); ++i)
+        if (blocks[i - 1].text_block && blocks[i].text_block &&
+            (blocks[i].source_line == 0 || blocks[i].source_line != blocks[i - 1].source_line + 1))
+            apart = true;
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        if (i > 0 && apart) {
+            const auto& p = blocks[i - 1];
+            const auto& b = blocks[i];
+            const bool gap = b.source_line == 0 || p.source_line == 0 || b.source_line > p.source_line + 1;
+            if ((p.text_block && b.text_block) || gap) out.emplace_back();
+        }
+        out.push_back(std::move(blocks[i].text));
+    }
+    return out;
+}
+
+std::string to_text(const document::Document& document) {
+    std::string out;
+    for (const auto& l : text_lines(document)) {
+        out += l;
+        out += '\n';
+    }
+    return out;
+}
+
+}  // namespace tactus::exporter

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The document as print text files: Markdown and plain text, beside the braille
+// formats (export.hpp). Escaping is the Markdown writer's business only: the
+// plain text writer writes the text as it is. Both write what core's importers
+// read back to the same blocks (tests/export/text_export_test.cpp,
+// tests/edit/round_trip_test.cpp).
+#include <span>
+#include <string>
+#include <vector>
+
+#include "document/document.hpp"
+
+namespace tactus::exporter {
+
+// ---- Markdown ----
+
+// One block as one line of Markdown, escaped so that core's Markdown importer
+// (and the editor's line dialect) reads the block back: "## Heading", "  - item",
+// "3. item", "> quote", "[^1]: note", "<!-- pagebreak 12 -->", a paragraph with
+// *italic* and **bold**. Table blocks give "" (see markdown_lines).
+std::string markdown_line(const document::Block& block);
+
+// A table row and its cells as one GitHub pipe-table row: "| a | b \| c |".
+std::string markdown_table_row(std::span<const document::Block> cells);
+
+// True for a pipe table's delimiter row: "|---|:--:|".
+bool is_markdown_table_delimiter(std::string_view line);
+
+// The document as Markdown lines, one block a line: a table is its rows, one
+// line each, with the delimiter row after the header row (a table without a
+// header row gets an empty one, which the importer reads as none, as Pandoc
+// writes it); a braille block is its lines of Unicode braille.
+std::vector<std::string> markdown_lines(const document::Document& document);
+
+// Markdown lines, one block each, as a file: a blank line between blocks (none
+// between the rows of a table), lines without text dropped. A run of table rows
+// without a header row and delimiter gets an empty header, and every row of a
+// table as many cells as its widest row (GitHub tables take their width from
+// the header).
+std::string join_markdown_lines(std::span<const std::string> lines);
+
+std::string to_markdown(const document::Document& document);
+
+// ---- Plain text ----
+
+// One block as the line of plain text it is: its text as written (no escapes,
+// no marks; a note reference as "[1]"), a print or braille page break as a form
+// feed, braille as its Unicode cells.
+std::string text_line(const document::Block& block);
+
+// The document as plain text lines: the blocks one a line, with a blank line
+// between two blocks whose source lines are apart (or unknown), so a file opened
+// and saved keeps its own paragraph breaks; and between every two paragraphs
+// once the text has any blank line, because then the importer joins adjacent
+// lines into one paragraph. A table's cells are one line each.
+std::vector<std::string> text_lines(const document::Document& document);
+
+// text_lines as a file, each line ended by LF.
+std::string to_text(const document::Document& document);
+
+}  // namespace tactus::exporter

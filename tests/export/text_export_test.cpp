@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The print text writers (core/export/text_export): a plain text file is
+// written back as it was, with no Markdown escapes; Markdown keeps tables,
+// list numbers and page labels through a save and reopen.
+#include "export/text_export.hpp"
+
+#include <gtest/gtest.h>
+
+#include "import/import.hpp"
+
+using namespace tactus;
+
+namespace {
+
+document::Document import_as(const std::string& bytes, const std::string& name) {
+    auto doc = import::import_bytes(bytes, name);
+    if (!doc) throw std::runtime_error(doc.error().to_string());
+    return std::move(*doc);
+}
+
+std::vector<document::Block> without_lines(std::vector<document::Block> blocks) {
+    for (auto& b : blocks) b.source_line = 0;
+    return blocks;
+}
+
+document::Block text_block(document::BlockKind kind, int level, std::string text) {
+    document::Block b;
+    b.kind = kind;
+    b.level = level;
+    if (!text.empty()) b.spans.push_back(document::Span{std::move(text)});
+    return b;
+}
+
+}  // namespace
+
+// Issue 13 item 4: english.txt's "& and # and *" came back as "\& and # and \*".
+TEST(TextExport, ATextFileIsWrittenBackUnchanged) {
+    for (const std::string text : {
+             "Hello.\n\n& and # and *\n",                       // paragraphs a blank line apart
+             "one *star*\ntwo # hash\nthree <b> & [a]\n",        // a line a paragraph
+             "Page one.\n\f\nPage two & more.\n\nStill two.\n",  // a form feed between print pages
+             "a_b_c \\ `x` | y ~~z~~\n",
+         }) {
+        SCOPED_TRACE(text);
+        const auto doc = import_as(text, "english.txt");
+        EXPECT_EQ(exporter::to_text(doc), text);
+    }
+}
+
+TEST(TextExport, ParagraphsStayParagraphsWhenAnyBlankLineIsThere) {
+    // Lines 1 and 3 are a blank line apart and 3, 4 are adjacent: the importer
+    // would join 3 and 4, so the writer parts them.
+    document::Document doc;
+    for (const auto& [text, line] : {std::pair<std::string, int>{"a", 1}, {"b", 3}, {"c", 4}}) {
+        doc.blocks.push_back(text_block(document::BlockKind::paragraph, 0, text));
+        doc.blocks.back().source_line = line;
+    }
+    EXPECT_EQ(exporter::to_text(doc), "a\n\nb\n\nc\n");
+    EXPECT_EQ(without_lines(import_as(exporter::to_text(doc), "x.txt").blocks), without_lines(doc.blocks));
+}
+
+TEST(MarkdownExport, ATableIsWrittenAsAPipeTableAndReadBack) {
+    const auto doc = import_as("Plants:\n\n| Plant | Where *it* grows |\n|---|---|\n| Willow | by a \\| river |\n| Fern |  |\n",
+                               "t.md");
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_NE(md.find("| Plant | Where *it* grows |\n| --- | --- |\n| Willow | by a \\| river |\n| Fern |  |"),
+              std::string::npos)
+        << md;
+    EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
+}
+
+TEST(MarkdownExport, ATableWithoutHeaderRowGetsAnEmptyOneThatReadsAsNone) {
+    // A DOCX table without <w:tblHeader/>: no header row.
+    document::Document doc;
+    doc.blocks.push_back(text_block(document::BlockKind::paragraph, 0, "Before."));
+    for (const auto& row : {std::vector<std::string>{"a", "b"}, {"c", ""}}) {
+        doc.blocks.push_back(text_block(document::BlockKind::table_row, 0, ""));
+        for (std::size_t c = 0; c < row.size(); ++c)
+            doc.blocks.push_back(text_block(document::BlockKind::table_cell, static_cast<int>(c), row[c]));
+    }
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_EQ(md, "Before.\n\n|  |  |\n| --- | --- |\n| a | b |\n| c |  |\n");
+    EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), doc.blocks);
+}
+
+TEST(MarkdownExport, ListNumbersAndNestingAreKept) {
+    // Markdown counts an ordered list on from its first number and nests under
+    // "10." at four spaces: the writer keeps each number and each level.
+    document::Document doc;
+    for (const auto& [level, text] : {std::pair<int, std::string>{1, "3. three"},
+                                      {1, "7. seven"},
+                                      {2, "10. ten"},
+                                      {3, "\u2022 deep"},
+                                      {3, "1) one"},
+                                      {1, "8. eight"},
+                                      {3, "\u2022 orphan"}})
+        doc.blocks.push_back(text_block(document::BlockKind::list_item, level, text));
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), doc.blocks) << md;
+}
+
+TEST(MarkdownExport, PageLabelsAreKept) {
+    const auto doc = import_as("one\n\n<!-- pagebreak 10 -->\n\ntwo\n\n---\n\nthree\n\n<!-- pagebreak xii -->\n\nfour\n", "p.md");
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
+}
