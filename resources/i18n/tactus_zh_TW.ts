@@ -73,47 +73,47 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="52" />
+        <location filename="../../widgets/printer_panel.cpp" line="55" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="53" />
+        <location filename="../../widgets/printer_panel.cpp" line="56" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="54" />
+        <location filename="../../widgets/printer_panel.cpp" line="57" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="55" />
+        <location filename="../../widgets/printer_panel.cpp" line="58" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="56" />
+        <location filename="../../widgets/printer_panel.cpp" line="59" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="57" />
+        <location filename="../../widgets/printer_panel.cpp" line="60" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="125" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <location filename="../../widgets/printer_panel.cpp" line="127" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="92" />
+        <location filename="../../widgets/printer_panel.cpp" line="129" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -1152,433 +1152,473 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="120" />
+        <location filename="../../widgets/printer_panel.cpp" line="157" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="125" />
+        <location filename="../../widgets/printer_panel.cpp" line="162" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="126" />
-        <location filename="../../widgets/printer_panel.cpp" line="424" />
-        <location filename="../../widgets/printer_panel.cpp" line="463" />
+        <location filename="../../widgets/printer_panel.cpp" line="163" />
+        <location filename="../../widgets/printer_panel.cpp" line="502" />
+        <location filename="../../widgets/printer_panel.cpp" line="541" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="128" />
-        <location filename="../../widgets/printer_panel.cpp" line="732" />
+        <location filename="../../widgets/printer_panel.cpp" line="165" />
+        <location filename="../../widgets/printer_panel.cpp" line="810" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="130" />
+        <location filename="../../widgets/printer_panel.cpp" line="167" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="135" />
+        <location filename="../../widgets/printer_panel.cpp" line="172" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="140" />
+        <location filename="../../widgets/printer_panel.cpp" line="177" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="141" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="142" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="149" />
+        <location filename="../../widgets/printer_panel.cpp" line="186" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="150" />
+        <location filename="../../widgets/printer_panel.cpp" line="187" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="151" />
+        <location filename="../../widgets/printer_panel.cpp" line="188" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="154" />
+        <location filename="../../widgets/printer_panel.cpp" line="191" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="155" />
+        <location filename="../../widgets/printer_panel.cpp" line="192" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="159" />
+        <location filename="../../widgets/printer_panel.cpp" line="196" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="164" />
+        <location filename="../../widgets/printer_panel.cpp" line="201" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="174" />
+        <location filename="../../widgets/printer_panel.cpp" line="211" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="175" />
+        <location filename="../../widgets/printer_panel.cpp" line="212" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="177" />
+        <location filename="../../widgets/printer_panel.cpp" line="214" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="178" />
+        <location filename="../../widgets/printer_panel.cpp" line="215" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="179" />
+        <location filename="../../widgets/printer_panel.cpp" line="216" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="217" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="182" />
+        <location filename="../../widgets/printer_panel.cpp" line="219" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="183" />
+        <location filename="../../widgets/printer_panel.cpp" line="220" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="188" />
+        <location filename="../../widgets/printer_panel.cpp" line="226" />
+        <source>The plan's own speed</source>
+        <translation>依列印計畫的實際速度</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="227" />
+        <source>10 times faster</source>
+        <translation>快 10 倍</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="228" />
+        <source>As fast as the computer can</source>
+        <translation>以電腦能達到的最快速度</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="229" />
+        <source>Simulator speed</source>
+        <translation>模擬器速度</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="231" />
+        <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
+        <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="233" />
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="208" />
+        <location filename="../../widgets/printer_panel.cpp" line="260" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="253" />
+        <location filename="../../widgets/printer_panel.cpp" line="307" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="290" />
+        <location filename="../../widgets/printer_panel.cpp" line="333" />
+        <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
+        <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="345" />
+        <source>%1 times faster</source>
+        <translation>快 %1 倍</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="368" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="295" />
+        <location filename="../../widgets/printer_panel.cpp" line="373" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="305" />
+        <location filename="../../widgets/printer_panel.cpp" line="383" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="316" />
+        <location filename="../../widgets/printer_panel.cpp" line="394" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="320" />
+        <location filename="../../widgets/printer_panel.cpp" line="398" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="327" />
+        <location filename="../../widgets/printer_panel.cpp" line="405" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="331" />
+        <location filename="../../widgets/printer_panel.cpp" line="409" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="347" />
+        <location filename="../../widgets/printer_panel.cpp" line="425" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="358" />
+        <location filename="../../widgets/printer_panel.cpp" line="436" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="370" />
+        <location filename="../../widgets/printer_panel.cpp" line="448" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="380" />
+        <location filename="../../widgets/printer_panel.cpp" line="458" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="393" />
+        <location filename="../../widgets/printer_panel.cpp" line="471" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="405" />
+        <location filename="../../widgets/printer_panel.cpp" line="483" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="688" />
-        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <location filename="../../widgets/printer_panel.cpp" line="766" />
+        <location filename="../../widgets/printer_panel.cpp" line="803" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="693" />
+        <location filename="../../widgets/printer_panel.cpp" line="771" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="701" />
+        <location filename="../../widgets/printer_panel.cpp" line="779" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="725" />
+        <location filename="../../widgets/printer_panel.cpp" line="803" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="736" />
+        <location filename="../../widgets/printer_panel.cpp" line="814" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="739" />
+        <location filename="../../widgets/printer_panel.cpp" line="817" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="740" />
+        <location filename="../../widgets/printer_panel.cpp" line="818" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="745" />
+        <location filename="../../widgets/printer_panel.cpp" line="823" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="748" />
+        <location filename="../../widgets/printer_panel.cpp" line="826" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel.cpp" line="867" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="820" />
+        <location filename="../../widgets/printer_panel.cpp" line="898" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="824" />
+        <location filename="../../widgets/printer_panel.cpp" line="902" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="830" />
+        <location filename="../../widgets/printer_panel.cpp" line="908" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="834" />
+        <location filename="../../widgets/printer_panel.cpp" line="912" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="838" />
+        <location filename="../../widgets/printer_panel.cpp" line="916" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="842" />
+        <location filename="../../widgets/printer_panel.cpp" line="920" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="371" />
+        <location filename="../../widgets/printer_panel.cpp" line="449" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="122" />
+        <location filename="../../widgets/printer_panel.cpp" line="159" />
         <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports; or type a device string such as pty:/dev/pts/3 or serial:/dev/ttyUSB0?baud=57600</source>
         <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠；也可以輸入裝置字串，例如 pty:/dev/pts/3 或 serial:/dev/ttyUSB0?baud=57600</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="124" />
+        <location filename="../../widgets/printer_panel.cpp" line="161" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="414" />
+        <location filename="../../widgets/printer_panel.cpp" line="492" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="409" />
+        <location filename="../../widgets/printer_panel.cpp" line="487" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="421" />
+        <location filename="../../widgets/printer_panel.cpp" line="499" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="441" />
+        <location filename="../../widgets/printer_panel.cpp" line="519" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="445" />
+        <location filename="../../widgets/printer_panel.cpp" line="523" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="464" />
+        <location filename="../../widgets/printer_panel.cpp" line="542" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="493" />
+        <location filename="../../widgets/printer_panel.cpp" line="571" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="546" />
+        <location filename="../../widgets/printer_panel.cpp" line="624" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="553" />
-        <location filename="../../widgets/printer_panel.cpp" line="697" />
+        <location filename="../../widgets/printer_panel.cpp" line="631" />
+        <location filename="../../widgets/printer_panel.cpp" line="775" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="555" />
+        <location filename="../../widgets/printer_panel.cpp" line="633" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="588" />
+        <location filename="../../widgets/printer_panel.cpp" line="666" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="590" />
+        <location filename="../../widgets/printer_panel.cpp" line="668" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="644" />
+        <location filename="../../widgets/printer_panel.cpp" line="722" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="446" />
+        <location filename="../../widgets/printer_panel.cpp" line="524" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="563" />
+        <location filename="../../widgets/printer_panel.cpp" line="641" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="564" />
+        <location filename="../../widgets/printer_panel.cpp" line="642" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="547" />
+        <location filename="../../widgets/printer_panel.cpp" line="625" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="580" />
-        <location filename="../../widgets/printer_panel.cpp" line="610" />
+        <location filename="../../widgets/printer_panel.cpp" line="658" />
+        <location filename="../../widgets/printer_panel.cpp" line="688" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="588" />
+        <location filename="../../widgets/printer_panel.cpp" line="666" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="794" />
+        <location filename="../../widgets/printer_panel.cpp" line="872" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="804" />
+        <location filename="../../widgets/printer_panel.cpp" line="882" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>

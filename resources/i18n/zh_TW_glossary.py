@@ -215,6 +215,13 @@ T = {
     "%1 stopped: %2. The job is kept; fix the problem, then resume it.": "%1 已停止：%2。工作已保留；排除問題後請繼續。",
     "job %1": "工作 %1", "%1 The printer is running again.": "%1 印表機已恢復運作。",
     "%1 goes on: the printer is running again": "%1 繼續進行：印表機已恢復運作",
+    "The plan's own speed": "依列印計畫的實際速度", "10 times faster": "快 10 倍",
+    "As fast as the computer can": "以電腦能達到的最快速度", "Simulator speed": "模擬器速度", "Speed:": "速度：",
+    "How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10":
+        "內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10",
+    "The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job":
+        "內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效",
+    "%1 times faster": "快 %1 倍",
 }
 
 
