@@ -48,6 +48,9 @@ namespace tactus::gui {
 namespace {
 
 constexpr const char* kSim = "sim";
+// The choices of the simulator's speed: the value of its `speed` option ("": none, the plan's own speed).
+constexpr const char* kFaster = "10";
+constexpr const char* kMax = "max";
 constexpr std::size_t kFinishedShown = 100;
 enum Column { col_job, col_document, col_printer, col_state, col_progress, col_sheet, col_count };
 
@@ -89,11 +92,45 @@ QString state_text(spool::JobState s) {
     return {};
 }
 
-// Opens the printer's device: the app's one built-in simulator for "sim"
-// (so its controller keeps its count across connections), else the cable.
+// A `sim` device string (with or without options): the app's built-in simulator.
+bool is_sim(const std::string& device) {
+    const auto spec = transport::parse_device(device);
+    return spec && spec->scheme == kSim;
+}
+bool is_sim(const QString& device) { return is_sim(device.toStdString()); }
+
+// The simulator's speed option in a `sim` device string: "" (none: the plan's
+// own speed), a number, or "max".
+QString speed_option(const QString& device) {
+    const auto spec = transport::parse_device(device.toStdString());
+    if (!spec) return {};
+    const auto it = spec->options.find("speed");
+    return it == spec->options.end() ? QString() : qs(it->second);
+}
+
+// `device` with its speed option set to `speed` ("": removed).
+QString with_speed(const QString& device, const QString& speed) {
+    auto spec = transport::parse_device(device.toStdString());
+    if (!spec) return device;
+    if (speed.isEmpty()) spec->options.erase("speed");
+    else spec->options["speed"] = speed.toStdString();
+    QString out = qs(spec->scheme) + (spec->path.empty() ? QString() : QStringLiteral(":") + qs(spec->path));
+    QStringList options;
+    for (const auto& [k, v] : spec->options) options << qs(k) + QLatin1Char('=') + qs(v);
+    return options.isEmpty() ? out : out + QLatin1Char('?') + options.join(QLatin1Char('&'));
+}
+
+// Opens the printer's device: the app's one built-in simulator for any `sim`
+// device string, with that string's options (so its controller keeps its count
+// across connections), else the cable.
 spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, link::LinkOptions options) {
     return [sim = std::move(sim), options](const spool::PrinterRecord& p) -> Result<link::Link> {
-        if (p.device == kSim) return link::Link::over(sim->connect(), options);
+        if (is_sim(p.device)) {
+            auto spec = transport::parse_device(p.device);
+            auto settings = spec ? transport::sim_settings(*spec) : std::unexpected(spec.error());
+            if (!settings) return std::unexpected(settings.error());
+            return link::Link::over(sim->connect(*settings), options);
+        }
         return link::Link::open(p.device, options);
     };
 }
@@ -248,6 +285,21 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     fault_button(tr("Controller reset"), QStringLiteral("injectReset"),
                  tr("A watchdog reset: the controller keeps its place and the job continues"),
                  &PrinterPanel::inject_reset);
+    // How fast the simulated machine runs: the device string's speed option,
+    // chosen here or typed in the picker (docs/gui.md).
+    speed_ = new QComboBox(faults_box_);
+    speed_->setObjectName(QStringLiteral("simulatorSpeed"));
+    speed_->addItem(tr("The plan's own speed"), QString());
+    speed_->addItem(tr("10 times faster"), QString::fromLatin1(kFaster));
+    speed_->addItem(tr("As fast as the computer can"), QString::fromLatin1(kMax));
+    speed_->setAccessibleName(tr("Simulator speed"));
+    speed_->setAccessibleDescription(
+        tr("How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. "
+           "It sets the speed option of the device string, for example sim?speed=10"));
+    auto* speed_label = new QLabel(tr("Speed:"), faults_box_);
+    speed_label->setBuddy(speed_);
+    fault_row->addWidget(speed_label);
+    fault_row->addWidget(speed_);
     fault_row->addStretch();
 
     auto* device_row = new QHBoxLayout;
@@ -287,6 +339,8 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     connect(from_page_, &QPushButton::clicked, this, [this] { resume_from_page(page_->value()); });
     connect(queue_, &QTableWidget::itemSelectionChanged, this, &PrinterPanel::update_buttons);
     connect(devices_, &QComboBox::currentTextChanged, this, &PrinterPanel::update_buttons);
+    connect(devices_, &QComboBox::currentTextChanged, this, &PrinterPanel::show_speed);
+    connect(speed_, &QComboBox::activated, this, [this](int i) { set_simulator_speed(speed_->itemData(i).toString()); });
     // Another process's commit (a runner's progress, `tactus-cli queue`, CUPS)
     // shows as a new PRAGMA data_version: cheap to ask, so asked often.
     poll_timer_.setInterval(200);
@@ -385,6 +439,30 @@ void PrinterPanel::select_device(const QString& device) {
     else devices_->setEditText(device);
 }
 
+void PrinterPanel::set_simulator_speed(const QString& speed) {
+    const auto device = selected_device();
+    if (!is_sim(device)) return;
+    const auto changed = with_speed(device, speed);
+    if (changed == device) return;
+    select_device(changed);
+    log(tr("The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job")
+            .arg(changed, speed_->currentText()));
+}
+
+void PrinterPanel::show_speed() {
+    const auto device = selected_device();
+    if (!is_sim(device)) return;
+    auto speed = speed_option(device);
+    if (speed == QLatin1String("1")) speed.clear();
+    int i = speed_->findData(speed);
+    if (i < 0) {
+        // A speed typed in the picker: shown as one more choice.
+        speed_->addItem(tr("%1 times faster").arg(speed), speed);
+        i = speed_->count() - 1;
+    }
+    if (speed_->currentIndex() != i) speed_->setCurrentIndex(i);
+}
+
 void PrinterPanel::log(const QString& line) {
     log_->appendPlainText(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss.zzz")), line));
 }
@@ -465,7 +543,7 @@ void PrinterPanel::start_runner(const std::string& printer) {
     }
     spool::RunnerOptions options;
     options.poll = std::chrono::milliseconds(100);
-    if (record->device == kSim) simulator();
+    if (is_sim(record->device)) simulator();
     auto r = std::make_unique<AppRunner>();
     r->runner = std::make_unique<spool::Runner>(db_, printer, connector(sim_, options.link), options);
     if (auto started = r->runner->start(); !started) {
@@ -511,7 +589,7 @@ bool PrinterPanel::connect_device(const QString& device, const profile::PrinterP
         // Talk to the controller before the runner takes the device: it answers,
         // and it is configured from this profile.
         log(tr("Connecting to %1").arg(device));
-        if (record->device == kSim) simulator();
+        if (is_sim(record->device)) simulator();
         auto link = connector(sim_, {})(*record);
         Result<encode::Status> status = link ? Result<encode::Status>{} : std::unexpected(link.error());
         if (link) {
@@ -847,7 +925,7 @@ void PrinterPanel::finished(const spool::JobRecord& j, const Shown& s) {
     if (j.state == spool::JobState::completed) {
         // Only this window's simulator has the strikes (serve's "sim" is its own).
         const auto printer = spool_->printer(j.printer_id);
-        if (runner_ && sim_ && j.printer == printer_ && printer && printer->device == kSim) {
+        if (runner_ && sim_ && j.printer == printer_ && printer && is_sim(printer->device)) {
             check_strikes(j);
             return;
         }
@@ -1094,7 +1172,7 @@ void PrinterPanel::update_buttons() {
                                   state == spool::JobState::cancelled)},
         {cancel_, !cancelling && state && !spool::is_terminal(*state)},
         {from_page_, state && *state != spool::JobState::running},
-        {faults_box_, selected_device() == QLatin1String(kSim)},
+        {faults_box_, is_sim(selected_device())},
     };
     // Enable first, then disable: a pressed button that turns off hands the
     // focus to the next one in the row (Pause -> Resume), not out of the panel.

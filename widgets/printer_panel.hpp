@@ -18,7 +18,8 @@
 //
 // For technicians: a device picker that takes any device string, Connect
 // (HELLO, CONFIGURE with the profile being edited, STATUS), faults injected
-// into the built-in simulator, and the spool's event log.
+// into the built-in simulator, its speed (the plan's own by default), and the
+// spool's event log.
 #include <QPointer>
 #include <QTimer>
 #include <QWidget>
@@ -131,6 +132,9 @@ public Q_SLOTS:
     void inject_pulled_cable();
     void inject_noise();
     void inject_reset();
+    // The built-in simulator's speed: the `speed` option of the chosen `sim`
+    // device string ("": the plan's own speed, "10", "max").
+    void set_simulator_speed(const QString& speed);
 
 Q_SIGNALS:
     void message(const QString& text, bool error);
@@ -164,6 +168,7 @@ private:
     void append_events();
     void update_status();
     void update_buttons();
+    void show_speed();  // the speed choice follows the device string
     void log(const QString& line);
     void show_fault(const QString& text);
     void act(int action, std::optional<std::size_t> sheet = {});
@@ -199,6 +204,7 @@ private:
     QPushButton *pause_, *resume_, *cancel_, *from_page_;
     QSpinBox* page_;
     QGroupBox* faults_box_;
+    QComboBox* speed_;
     QPlainTextEdit* log_;
     QTimer poll_timer_;
     std::vector<std::unique_ptr<QueueJob>> queue_jobs_;

@@ -7,7 +7,11 @@
 // stream onto that line; only one is used at a time. A technician injects
 // faults from another thread (the GUI's) while a runner thread streams: every
 // call goes through one mutex, and a fault takes effect at the line's next
-// moment in simulated time.
+// moment in simulated time. Each connection brings the options of its device
+// string (`sim?speed=10`, transport::sim_settings, the same rule as
+// `tactus-cli`'s `sim`): by default the job takes the plan's own time, so a
+// technician can pause it mid-sheet. The wall clock is waited for outside the
+// mutex, so a fault button or a status read never waits for the machine.
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -17,6 +21,7 @@
 #include "controller/sim_controller.hpp"
 #include "controller/sim_transport.hpp"
 #include "transport/byte_stream.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::controller {
 
@@ -27,8 +32,10 @@ public:
     // A simulated operator loads paper 5 s after it runs out.
     static SimOptions default_options();
 
-    // A new connection to the same controller.
-    std::unique_ptr<transport::ByteStream> connect();
+    // A new connection to the same controller, with a `sim?...` device
+    // string's options (speed, baud, noise, paper-reload; the default
+    // SimSettings: the plan's own speed).
+    std::unique_ptr<transport::ByteStream> connect(const transport::SimSettings& settings);
 
     // Faults, at the simulated moment the line is next used:
     void paper_out();                      // the feeder runs empty (the operator reloads it)
@@ -40,6 +47,8 @@ public:
     // What the last CONFIGURE set (zeros before any).
     [[nodiscard]] machine::ControllerConfig config() const;
     [[nodiscard]] encode::Status status() const;
+    // The simulated clock (seconds since the simulator was made).
+    [[nodiscard]] double now() const;
 
 private:
     class Stream;
@@ -57,6 +66,8 @@ private:
     SimTransport line_;
     Pending pending_;
     double noise_until_ = -1;
+    LineNoise base_noise_;  // the device string's, back after an injected burst
+    double paper_reload_s_;  // the simulated operator's delay when the device string names none
 };
 
 }  // namespace tactus::controller

@@ -77,6 +77,8 @@ public:
     void inject_paper_out_at_sheet(std::uint16_t sheet);  // sheet N has no paper when loaded
     void load_paper();                                    // operator loads paper
     void remove_paper();  // the feeder runs empty now: the next sheet loaded finds none
+    // The simulated operator's delay from now on (SimOptions::reload_paper_after_s).
+    void set_paper_reload(double seconds) { options_.reload_paper_after_s = seconds; }
     void inject_limit_switch_at_strike(std::size_t nth);  // trips before the nth strike (1-based)
     void inject_hammer_fault_at_strike(std::size_t nth);
     void warm_reset(double now);   // watchdog/RST: registers reset, RAM (progress) kept

@@ -139,10 +139,39 @@ void SimTransport::sleep(std::chrono::microseconds duration) {
     pace();
 }
 
-void SimTransport::pace() const {
-    if (options_.speed <= 0) return;
-    std::this_thread::sleep_until(wall_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                    std::chrono::duration<double>(now_ / options_.speed)));
+void SimTransport::set_speed(double speed) {
+    options_.speed = speed;
+    anchor_wall_ = std::chrono::steady_clock::now();
+    anchor_sim_ = now_;
+}
+
+std::optional<std::chrono::steady_clock::time_point> SimTransport::due() {
+    if (options_.speed <= 0) return std::nullopt;
+    using namespace std::chrono;
+    const auto at = anchor_wall_ + duration_cast<steady_clock::duration>(
+                                       duration<double>((now_ - anchor_sim_) / options_.speed));
+    const auto wall = steady_clock::now();
+    if (wall - at > milliseconds(100)) {
+        // Behind: from here on, simulated time runs at the speed again.
+        anchor_wall_ = wall;
+        anchor_sim_ = now_;
+        return wall;
+    }
+    return at;
+}
+
+void SimTransport::pace() {
+    if (!self_paced_) return;
+    if (const auto at = due()) std::this_thread::sleep_until(*at);
+}
+
+SimLineOptions line_options(const transport::SimSettings& settings) {
+    SimLineOptions line;
+    line.baud = settings.baud;
+    line.noise.drop = line.noise.flip = line.noise.dup = settings.noise;
+    line.noise.seed = settings.seed;
+    line.speed = settings.speed;
+    return line;
 }
 
 }  // namespace tactus::controller

@@ -2,19 +2,22 @@
 #pragma once
 // The in-process simulator as a byte stream: a serial line of a given baud rate
 // in each direction, the simulated controller at the far end, and virtual time,
-// so a whole job runs in milliseconds of wall time yet every byte, timeout and
-// step happens at the moment it would on the real machine. Line faults (lost,
-// flipped and duplicated bytes, a pulled cable) are injected here.
+// in which every byte, timeout and step happens at the moment it would on the
+// real machine. The wall clock paces it (SimLineOptions::speed): the plan's own
+// speed for a technician, as fast as the host can go for tests. Line faults
+// (lost, flipped and duplicated bytes, a pulled cable) are injected here.
 #include <chrono>
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include "controller/sim_controller.hpp"
 #include "transport/byte_stream.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::controller {
 
@@ -35,6 +38,9 @@ struct SimLineOptions {
     // `sim` device's default is 1: docs/transports.md).
     double speed = 0;
 };
+
+// The line of a `sim?...` device string (transport::sim_settings).
+SimLineOptions line_options(const transport::SimSettings& settings);
 
 class SimTransport final : public transport::ByteStream {
 public:
@@ -57,6 +63,19 @@ public:
     void set_noise(const LineNoise& noise) { options_.noise = noise; }
     // A watchdog reset (RAM kept) or power loss of the controller at time t.
     void reset_controller_at(double t, bool keep_ram) { reset_ = {t, keep_ram}; }
+    // The pace from now on (0: as fast as possible); the wall clock is
+    // re-anchored here, so the time before does not count.
+    void set_speed(double speed);
+    void set_baud(double baud) { options_.baud = baud; }
+    // Reads, writes and sleeps wait for the wall clock themselves (the
+    // default), or leave it to the caller, who sleeps until due() (the app's
+    // simulator, which must not sleep holding its lock).
+    void set_self_paced(bool on) { self_paced_ = on; }
+    // The wall-clock moment the simulated clock's present is due at this
+    // speed; nullopt at full speed. When the wall clock is more than a tenth
+    // of a second past it (the line lay idle, or the host was slow), the
+    // simulated clock does not race to catch up: the clock is re-anchored.
+    [[nodiscard]] std::optional<std::chrono::steady_clock::time_point> due();
 
     [[nodiscard]] controller::SimController& controller() { return *controller_; }
     [[nodiscard]] std::size_t line_bytes_to_controller() const { return tx_count_; }
@@ -68,9 +87,8 @@ private:
         std::uint8_t byte;
     };
     void run_until(double t);
-    // Waits (wall time) until the simulated clock is no longer ahead of the
-    // wall clock times `speed`.
-    void pace() const;
+    // Waits (wall time) until due(), when self-paced.
+    void pace();
     void send_line(std::deque<Timed>& line, double& line_free, double from,
                    std::span<const std::uint8_t> bytes);
     void collect_output(double at);
@@ -82,7 +100,10 @@ private:
     SimLineOptions options_;
     std::mt19937_64 rng_;
     double now_ = 0;
-    std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
+    // Simulated time anchor_sim_ was (or is due) at wall time anchor_wall_.
+    std::chrono::steady_clock::time_point anchor_wall_ = std::chrono::steady_clock::now();
+    double anchor_sim_ = 0;
+    bool self_paced_ = true;
     double tx_free_ = 0, rx_free_ = 0;
     std::deque<Timed> to_controller_, to_host_;
     std::pair<double, double> unplugged_{-1, -1}, silent_{-1, -1};

@@ -52,15 +52,36 @@ Result<void> check_device(std::string_view device) {
     auto spec = parse_device(device);
     if (!spec) return std::unexpected(spec.error());
     if (spec->scheme == "sim") {
-        for (const auto& [k, v] : spec->options)
-            if (k != "baud" && k != "noise" && k != "seed" && k != "paper-reload")
-                return fail("unknown option (baud, noise, seed, paper-reload)", "sim option " + k);
+        if (auto s = sim_settings(*spec); !s) return std::unexpected(s.error());
         return {};
     }
     if (spec->scheme == "lpt") return {};
     auto uart = uart_settings(*spec);
     if (!uart) return std::unexpected(uart.error());
     return {};
+}
+
+Result<SimSettings> sim_settings(const DeviceSpec& spec) {
+    SimSettings s;
+    for (const auto& [k, v] : spec.options) {
+        const std::string where = "sim option " + k;
+        if (k == "speed" && v == "max") {
+            s.speed = 0;
+            continue;
+        }
+        const auto d = option_number(v);
+        if (!d || *d < 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a non-negative number", where);
+        if (k == "baud") s.baud = *d;
+        else if (k == "noise") s.noise = *d;
+        else if (k == "seed") s.seed = static_cast<std::uint64_t>(*d);
+        else if (k == "paper-reload") s.paper_reload_s = *d;
+        else if (k == "speed") {
+            if (*d <= 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a speed above 0 (or max)", where);
+            s.speed = *d;
+        } else return fail(ErrorKind::usage, "unknown option (baud, noise, seed, paper-reload, speed)", where);
+    }
+    if (s.baud < 300) return fail(ErrorKind::usage, "baud rate below 300", "sim option baud");
+    return s;
 }
 
 Result<UartSettings> uart_settings(const DeviceSpec& spec) {

@@ -5,7 +5,8 @@
 //   pty:/dev/pts/3?baud=115200
 //   hid:10c4:ea80[:serial]?baud=115200
 //   lpt:/dev/parport0
-//   sim?baud=115200&noise=1e-3&seed=7
+//   sim?baud=115200&noise=1e-3&seed=7&paper-reload=5&speed=10
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <memory>
@@ -42,6 +43,21 @@ struct UartSettings {
     }
 };
 Result<UartSettings> uart_settings(const DeviceSpec& spec);
+
+// The simulator's options (`sim?...`, docs/transports.md), read in one place
+// for `tactus-cli` (controller::open_device), the desktop app's built-in
+// simulator and the spool's check of a printer's device string.
+struct SimSettings {
+    double baud = 115200;
+    double noise = 0;             // per byte: lost, flipped, doubled
+    std::uint64_t seed = 1;       // of the noise
+    std::optional<double> paper_reload_s;  // the simulated operator reloads paper after this long
+    // How many times faster than the machine simulated time may run: 1 (the
+    // default) is the plan's own speed; 0 is `speed=max`, as fast as the
+    // computer can.
+    double speed = 1;
+};
+Result<SimSettings> sim_settings(const DeviceSpec& spec);
 
 // Checks a device string without opening anything: its type, its path and
 // its line options. A spool printer is refused at `queue printer add` rather

@@ -240,6 +240,13 @@ T = {
     "%1: cancel sent to %2": "%1：已向 %2 送出取消", "Cancelling %1 on %2": "正在取消 %2 上的 %1",
     "Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser.":
         "Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0、pty:/dev/pts/3 或 CUPS 佇列 ipp://server/printers/Embosser。",
+    "The plan's own speed": "依列印計畫的實際速度", "10 times faster": "快 10 倍",
+    "As fast as the computer can": "以電腦能達到的最快速度", "Simulator speed": "模擬器速度", "Speed:": "速度：",
+    "How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10":
+        "內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10",
+    "The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job":
+        "內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效",
+    "%1 times faster": "快 %1 倍",
 }
 
 

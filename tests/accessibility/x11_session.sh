@@ -40,6 +40,12 @@ sleep 0.5
 # A clean profile: no settings, recent files or autosaves from the user.
 export XDG_CONFIG_HOME="$work/config" XDG_DATA_HOME="$work/data" XDG_RUNTIME_DIR="$work/run"
 mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
+# One setting: the printer panel starts on the built-in simulator at full speed
+# (`sim?speed=max`). By default it takes the plan's own time, minutes for the
+# scenarios' books; at full speed a 70-sheet job still lasts long enough for
+# Alt+P to reach it, as before the simulator ran at the machine's speed.
+mkdir -p "$XDG_CONFIG_HOME/Tactus"
+printf '[printer]\nlast="sim?speed=max"\n' >"$XDG_CONFIG_HOME/Tactus/tactus.conf"
 export QT_QPA_PLATFORM=xcb QT_LINUX_ACCESSIBILITY_ALWAYS_ON=1 QT_ACCESSIBILITY=1 NO_AT_BRIDGE=0
 export TACTUS_WORK="$work"
 "$@"

@@ -34,8 +34,11 @@ Sent send(link::Link& l, const plan::JobPlan& plan, std::uint16_t job_id,
     return out;
 }
 
+// As `sim?speed=max` connects (the plan's own speed is the printer panel's test).
 link::Link connect(controller::BuiltInSimulator& sim) {
-    auto l = link::Link::over(sim.connect());
+    transport::SimSettings fastest;
+    fastest.speed = 0;
+    auto l = link::Link::over(sim.connect(fastest));
     EXPECT_TRUE(l.hello());
     EXPECT_TRUE(l.configure({}));
     return l;

@@ -5,6 +5,8 @@
 // and a document that no longer fits its printer is kept, not lost.
 #include <gtest/gtest.h>
 
+#include "encode/messages.hpp"
+#include "profile/controller_config.hpp"
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/printing.hpp"
@@ -279,6 +281,48 @@ TEST(Runner, OperatorCanRestartFromAChosenSheet) {
     EXPECT_EQ(test::audit_strikes(b.plan_of(id), log, progress, /*require_all=*/false).problems, "");
     const auto kinds = b.kinds(id);
     EXPECT_NE(std::find(kinds.begin(), kinds.end(), "resume-point"), kinds.end());
+}
+
+// Issue 16: the controller is configured from each job's own PrintJob. The
+// printer's profile changes while the runner stays connected (a technician's
+// new calibration): the next job's CONFIGURE carries it, without a reconnect.
+// (The runner used to configure only when it connected: the second job was
+// planned with the new profile but embossed with the old configuration.)
+TEST(Runner, AProfileChangedWhileConnectedReachesTheControllerWithTheNextJob) {
+    Bench b;
+    SimPrinter printer;
+    auto calibrated = profile::default_profile();
+    calibrated.head.dwell_s = 0.0123;
+    calibrated.carriage.steps_per_mm *= 2;
+    const auto first = encode::encode_config(profile::controller_config(profile::default_profile()));
+    const auto second = encode::encode_config(profile::controller_config(calibrated));
+    ASSERT_NE(first, second);
+
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    const JobId one = b.submit(2);
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(encode::encode_config(printer.controller->config()), first);
+
+    ASSERT_TRUE(b.spool.update_printer("lab", {}, profile_text(calibrated)));
+    const JobId two = b.submit(2);
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(printer.connects, 1) << "the runner reconnected: this test is about a link that stays open";
+    // What the simulated controller was sent in CONFIGURE, byte for byte.
+    EXPECT_EQ(encode::encode_config(printer.controller->config()), second);
+    // Both jobs embossed as planned, each with its own profile.
+    const auto audit = [&](JobId id, const profile::PrinterProfile& p) {
+        auto doc = from_snapshot(*b.spool.document_snapshot(id));
+        auto plan = plan_copies(*doc, p, 1);
+        EXPECT_TRUE(plan) << plan.error().to_string();
+        const auto job = *b.spool.job(id);
+        std::vector<controller::LoggedStrike> strikes;
+        for (const auto& s : printer.controller->strike_log())
+            if (job.link_job && s.job_id == *job.link_job) strikes.push_back(s);
+        return test::audit_strikes(*plan, strikes, *b.spool.progress(id)).problems;
+    };
+    EXPECT_EQ(audit(one, profile::default_profile()), "");
+    EXPECT_EQ(audit(two, calibrated), "");
 }
 
 }  // namespace

@@ -371,6 +371,29 @@ TEST(Device, BadStringsSayWhatIsWrong) {
     EXPECT_FALSE(open_device("sim?noise=-1"));
 }
 
+// The simulator's options are read once (sim_settings) for tactus-cli, the
+// app and the spool's check of a printer's device: `sim?speed=max` was
+// refused by the check ("unknown option") though tactus-cli ran it.
+TEST(Device, SimulatorOptionsAreCheckedAsTheyAreRead) {
+    for (const char* ok : {"sim", "sim?speed=max", "sim?speed=10", "sim?speed=0.5&noise=1e-3&seed=7&paper-reload=5"})
+        EXPECT_TRUE(check_device(ok)) << ok;
+    auto spec = parse_device("sim?speed=10&paper-reload=2");
+    ASSERT_TRUE(spec);
+    auto s = sim_settings(*spec);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->speed, 10.0);
+    EXPECT_EQ(s->paper_reload_s, 2.0);
+    spec = parse_device("sim");
+    EXPECT_EQ(sim_settings(*spec)->speed, 1.0);  // the plan's own speed
+    spec = parse_device("sim?speed=max");
+    EXPECT_EQ(sim_settings(*spec)->speed, 0.0);  // as fast as the computer can
+    for (const char* bad : {"sim?speed=0", "sim?speed=fast", "sim?volume=3", "sim?baud=100"}) {
+        auto c = check_device(bad);
+        ASSERT_FALSE(c) << bad;
+        EXPECT_EQ(c.error().kind, ErrorKind::usage) << bad;
+    }
+}
+
 TEST(Device, AbsentDevicesGiveTheDocumentedErrors) {
     for (const char* dev : {"serial:/dev/ttyTACTUS-NONE", "pty:/dev/pts/999999", "hid:10c4:ea80",
                             "hid:0403:6030:NOPE", "lpt:/dev/parport9"}) {

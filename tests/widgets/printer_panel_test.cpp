@@ -6,7 +6,9 @@
 // pause, resume, cancel and resume-from-page go through the spool; a printer
 // held by another runner is only watched; any device string can be typed and a
 // bad one is refused with the reason; faults injected into the simulator are
-// ridden through.
+// ridden through; the built-in simulator takes the plan's own time unless
+// its speed option says otherwise.
+#include <QComboBox>
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
@@ -27,6 +29,7 @@
 #include "link/fault_words.hpp"
 #include "printer_panel.hpp"
 #include "profile/profile_json.hpp"
+#include "spool/printing.hpp"
 #include "spool/spool.hpp"
 
 using namespace tactus;
@@ -36,6 +39,8 @@ using tactus::test::wait_until;
 namespace {
 
 const std::string kCli = TACTUS_CLI;
+// The built-in simulator as fast as it goes: the tests that emboss whole books.
+const QString kFastSim = QStringLiteral("sim?speed=max");
 
 layout::PagedDocument book(int paragraphs) {
     auto l = edit::LiveLayout::create("en-ueb-g2.ctb", {});
@@ -66,8 +71,11 @@ private Q_SLOTS:
         QSettings().clear();
     }
 
-    // Each test gets its own spool file.
-    void init() { db_ = test::fresh_spool(dir_.path()); }
+    // Each test gets its own spool file, and the picker starts on plain "sim".
+    void init() {
+        db_ = test::fresh_spool(dir_.path());
+        QSettings().remove(QStringLiteral("printer/last"));
+    }
 
     void simulator_is_always_listed_first() {
         const auto devices = controller::list_devices();
@@ -86,6 +94,7 @@ private Q_SLOTS:
 
     void a_queued_job_is_stored_in_the_spool_and_embossed_with_every_strike_checked() {
         PrinterPanel panel;
+        panel.select_device(kFastSim);
         QSignalSpy finished(&panel, &PrinterPanel::job_finished);
         const auto id = panel.submit(QStringLiteral("book"), book(40), profile::default_profile());
         QVERIFY(id > 0);
@@ -176,6 +185,7 @@ private Q_SLOTS:
             QCOMPARE(test::run({kCli, "emboss", "--queue", file, "--printer", "lab", "--title", title, "--db", db_}).first, 0);
         PrinterPanel panel;
         QCOMPARE(panel.jobs().size(), std::size_t{2});  // jobs there before the window opened
+        panel.select_device(kFastSim);
         QSignalSpy finished(&panel, &PrinterPanel::job_finished);
         const auto id = panel.submit(QStringLiteral("from the app"), book(5), profile::default_profile());
         QVERIFY(finished.wait(120000));
@@ -214,6 +224,7 @@ private Q_SLOTS:
 
     void pause_resume_cancel_and_resume_from_page_act_on_the_spool() {
         PrinterPanel panel;
+        panel.select_device(kFastSim);
         QSignalSpy finished(&panel, &PrinterPanel::job_finished);
         const auto pages = book(400);
         QVERIFY(pages.sheet_count() >= 10);
@@ -315,6 +326,7 @@ private Q_SLOTS:
 
     void faults_injected_into_the_simulator_are_ridden_through() {
         PrinterPanel panel;
+        panel.select_device(kFastSim);
         QSignalSpy finished(&panel, &PrinterPanel::job_finished);
         QSignalSpy messages(&panel, &PrinterPanel::message);
         const auto id = panel.submit(QStringLiteral("faults"), book(400), profile::default_profile());
@@ -350,6 +362,67 @@ private Q_SLOTS:
         QVERIFY2(finished[0][1].toBool(), qPrintable(finished[0][2].toString() + QString::fromStdString(history(id))));
         QVERIFY2(finished[0][2].toString().contains(QStringLiteral("strikes checked against the plan")),
                  qPrintable(finished[0][2].toString()));
+    }
+    // Issue 16 item 5: the app's simulator ran about 100 times faster than the
+    // plan, so Pause was barely reachable. By default a job now takes at least
+    // the plan's own time (a lower bound the pacing guarantees, not a timing);
+    // `sim?speed=max`, chosen in the panel, lets the simulated clock run ahead
+    // of the wall clock.
+    void the_simulator_takes_the_plans_own_time_unless_told_to_go_faster() {
+        const auto pages = book(1);
+        QCOMPARE(pages.sheet_count(), std::size_t{1});
+        const auto plan = spool::plan_copies(pages, profile::default_profile(), 1);
+        QVERIFY(plan);
+        QVERIFY(plan->duration_s > 1);
+        using Clock = std::chrono::steady_clock;
+        const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+
+        PrinterPanel panel;
+        QCOMPARE(panel.selected_device(), QStringLiteral("sim"));
+        QSignalSpy finished(&panel, &PrinterPanel::job_finished);
+        auto start = Clock::now();
+        const double sim_start = panel.simulator().now();
+        QVERIFY(panel.submit(QStringLiteral("real"), pages, profile::default_profile()) > 0);
+        QVERIFY(finished.wait(static_cast<int>(plan->duration_s * 1000) * 20 + 60000));
+        const double wall = seconds(Clock::now() - start), simulated = panel.simulator().now() - sim_start;
+        QVERIFY2(finished[0][1].toBool(), qPrintable(finished[0][2].toString()));
+        QVERIFY2(finished[0][2].toString().contains(QStringLiteral("strikes checked against the plan")),
+                 qPrintable(finished[0][2].toString()));
+        QVERIFY2(simulated >= plan->duration_s, qPrintable(QStringLiteral("simulated %1 s, plan %2 s").arg(simulated).arg(plan->duration_s)));
+        QVERIFY2(wall >= plan->duration_s, qPrintable(QStringLiteral("took %1 s, the plan %2 s").arg(wall).arg(plan->duration_s)));
+
+        // The speed choice writes the device string's option (and follows one typed in).
+        auto* speed = panel.findChild<QComboBox*>(QStringLiteral("simulatorSpeed"));
+        QVERIFY(speed && speed->isEnabled());
+        QVERIFY(!speed->accessibleName().isEmpty());
+        QCOMPARE(speed->currentData().toString(), QString());
+        const auto choose = [&](const char* value) {
+            const int i = speed->findData(QString::fromLatin1(value));
+            QVERIFY(i >= 0);
+            speed->setCurrentIndex(i);
+            Q_EMIT speed->activated(i);  // as the user's choice does
+        };
+        choose("10");
+        QCOMPARE(panel.selected_device(), QStringLiteral("sim?speed=10"));
+        panel.select_device(QStringLiteral("sim?noise=0&speed=3"));
+        QCOMPARE(speed->currentData().toString(), QStringLiteral("3"));
+        QVERIFY(speed->currentText().contains(QStringLiteral("3")));
+        choose("");
+        QCOMPARE(panel.selected_device(), QStringLiteral("sim?noise=0"));
+        choose("max");
+        QCOMPARE(panel.selected_device(), QStringLiteral("sim?noise=0&speed=max"));
+
+        start = Clock::now();
+        const double sim_again = panel.simulator().now();
+        QVERIFY(panel.submit(QStringLiteral("fast"), pages, profile::default_profile()) > 0);
+        QVERIFY(finished.wait(120000));
+        const double wall_fast = seconds(Clock::now() - start), simulated_fast = panel.simulator().now() - sim_again;
+        QVERIFY2(finished[1][1].toBool(), qPrintable(finished[1][2].toString()));
+        QVERIFY2(simulated_fast >= plan->duration_s, qPrintable(QString::number(simulated_fast)));
+        // At full speed the simulated machine runs ahead of the wall clock,
+        // which the plan's own speed never lets it do.
+        QVERIFY2(simulated_fast > wall_fast,
+                 qPrintable(QStringLiteral("%1 simulated s in %2 s").arg(simulated_fast).arg(wall_fast)));
     }
 };
 
