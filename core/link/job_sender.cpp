@@ -169,6 +169,10 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
     auto restart = [&]() -> Result<void> {
         ++stats.restarts;
         if (auto h = hello(); !h) return std::unexpected(h.error());
+        // A NAK *no session* that came before the HELLO_REPLY answered a
+        // frame sent to the restarted controller before this HELLO (it
+        // replies in order): it is about the session this one replaces.
+        session_lost = false;
         if (config) {
             auto payload = config_payload();
             if (!payload) return std::unexpected(payload.error());

@@ -359,10 +359,6 @@ struct Link::Impl {
         info = *last_hello;
         unacked.clear();
         session = true;
-        // A NAK *no session* that came before the HELLO_REPLY answered a
-        // frame sent before this HELLO (the controller replies in order):
-        // it is about the session this one replaces.
-        session_lost = false;
         last_rx = s->now();
         last_progress = s->now();
         return std::optional<HelloReply>{info};
