@@ -3,6 +3,7 @@
 // Exit 0 only when the controller has confirmed executing every pass.
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <iostream>
 
@@ -42,6 +43,7 @@ struct EmbossArgs {
     bool dry_run = false;
     bool plan_file = false;
     std::size_t start_sheet = 1;
+    double give_up_after_s = 30;  // LinkOptions::give_up_after
     std::string firmware_tables;  // the reference firmware's build/ramp.json (protocol v3)
     EmbossQueueArgs queue;
 };
@@ -145,7 +147,9 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
     // The error's kind tells a malformed device string (usage) from a device
     // that is not there (device).
-    auto link = require(link::Link::open(a.device));
+    link::LinkOptions options;
+    options.give_up_after = std::chrono::milliseconds(static_cast<std::int64_t>(a.give_up_after_s * 1000));
+    auto link = require(link::Link::open(a.device, options));
     // HELLO_REPLY says which controller answered: the reference firmware
     // (protocol 3) is planned for with its own tables.
     require(link.hello());
@@ -195,6 +199,10 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
         case link::JobEnd::failed:
             throw CommandFailed(exit_failure, out->error.to_string() + "; resume with --start-sheet " +
                                                   std::to_string(out->resume_sheet));
+        case link::JobEnd::not_answering:
+            // The embosser is gone, not the job at fault: the device exit code.
+            throw CommandFailed(exit_code(out->error.kind), out->error.to_string() + "; resume with --start-sheet " +
+                                                                std::to_string(out->resume_sheet));
     }
 }
 
@@ -218,6 +226,10 @@ void add_emboss_command(CLI::App& app) {
                     "is planned for with them, and refused when it was built with others")
         ->check(CLI::ExistingFile);
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--give-up-after", args->give_up_after_s,
+                    "Seconds without any acknowledged progress before the job stops with 'the embosser stopped "
+                    "answering' (exit 4) and the sheet to resume from (default 30)")
         ->check(CLI::PositiveNumber);
     add_emboss_queue_options(*cmd, args->queue);
     cmd->callback([args, cmd] { run_emboss(*args, *cmd); });

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli sim --pty: the simulated 89C52 behind a pseudo-terminal. Prints the
 // pty path on the first line of stdout and serves until killed.
+#include <algorithm>
 #include <csignal>
 #include <fstream>
 #include <iostream>
@@ -65,12 +66,13 @@ std::ofstream open_log(const std::string& path) {
 void run_firmware_sim(const SimArgs& a) {
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required");
     const PtyServerOptionsDefaults d;
-    if (a.reset_at_strike > 0 || a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
+    if (a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
         a.mute_after_pass > 0 || a.server.sim.instant_motion || a.server.disconnect_at_s >= 0 ||
         a.server.time_scale != d.time_scale || (a.paper_out_at > 1))
         throw CommandFailed(exit_usage,
                             "sim --firmware: the emulated chip runs in real time; of the fault options it takes "
-                            "--noise, --seed and --paper-out-at 1 (no paper from the start)");
+                            "--noise, --seed, --reset-at-strike N (a warm reset just after the Nth strike) and "
+                            "--paper-out-at 1 (no paper from the start)");
     const auto profile = load_profile_arg(a.profile);
     FirmwareEmulatorOptions o;
     o.ihx = a.firmware;
@@ -80,6 +82,7 @@ void run_firmware_sim(const SimArgs& a) {
     o.noise = a.server.noise;
     o.seed = a.server.seed;
     o.pin_trace = a.pin_trace;
+    o.reset_at_strike = static_cast<std::size_t>(std::max(0, a.reset_at_strike));
     auto log = open_log(a.strike_log);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
@@ -176,7 +179,8 @@ void add_sim_command(CLI::App& app) {
     cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,
                     "Seconds (simulated) until the operator loads paper after a paper-out");
     cmd->add_option("--reset-at-strike", args->reset_at_strike,
-                    "Watchdog reset right after strike N")->check(CLI::PositiveNumber);
+                    "Watchdog reset right after strike N (with --firmware: an s51 breakpoint resets the emulated "
+                    "chip, RAM kept)")->check(CLI::PositiveNumber);
     cmd->add_option("--power-loss-at-strike", args->power_loss_at_strike,
                     "Power loss right after strike N")->check(CLI::PositiveNumber);
     cmd->add_option("--limit-at-strike", args->limit_at_strike,

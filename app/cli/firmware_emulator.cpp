@@ -37,10 +37,11 @@ bool in_path(const std::string& tool) {
     return false;
 }
 
-// The firmware's sheet number in internal RAM, from the linker's map next to
-// the image: the pin trace says where the carriage and the paper are, the
-// sheet only the firmware knows.
-unsigned sheet_address(const fs::path& map) {
+// A symbol's address from the linker's map next to the image: the firmware's
+// sheet number in internal RAM (the pin trace says where the carriage and the
+// paper are, the sheet only the firmware knows), and the strike-fired label
+// the reset breakpoint goes on.
+unsigned map_symbol(const fs::path& map, const std::string& symbol) {
     std::ifstream in(map);
     if (!in)
         throw CommandFailed(exit_bad_input, map.string() + ": the linker map of the firmware image is missing "
@@ -48,9 +49,12 @@ unsigned sheet_address(const fs::path& map) {
     for (std::string line; std::getline(in, line);) {
         std::istringstream w(line);
         std::string addr, name;
-        if (w >> addr >> name && name == "_fw_sheet") return static_cast<unsigned>(std::stoul(addr, nullptr, 16));
+        if (w >> addr && addr.ends_with(':')) w >> addr;  // a code symbol's "C:" area mark
+        if (w >> name && name == symbol) return static_cast<unsigned>(std::stoul(addr, nullptr, 16));
     }
-    throw CommandFailed(exit_bad_input, map.string() + ": no _fw_sheet: not a Tactus firmware map");
+    throw CommandFailed(exit_bad_input, map.string() + ": no " + symbol + ": not a Tactus firmware map" +
+                                            (symbol == "_fw_strike_fired" ? " of the emulator build (make -C firmware emu)"
+                                                                          : ""));
 }
 
 // A child with stdin from /dev/null, stdout and stderr to `log`, in `dir`, niced:
@@ -161,7 +165,9 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     const fs::path ihx = fs::absolute(o.ihx);
     if (!fs::is_regular_file(ihx))
         throw CommandFailed(exit_bad_input, o.ihx + ": no such firmware image (build it with make -C firmware emu)");
-    const unsigned sheet_at = sheet_address(fs::path(ihx).replace_extension(".map"));
+    const auto map = fs::path(ihx).replace_extension(".map");
+    const unsigned sheet_at = map_symbol(map, "_fw_sheet");
+    const unsigned strike_fired = o.reset_at_strike > 0 ? map_symbol(map, "_fw_strike_fired") : 0;
     if (!in_path("s51"))
         throw CommandFailed(exit_device, "sim --firmware: s51 not found (apt-get install sdcc-ucsim)");
     Run run;
@@ -185,8 +191,14 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
              << "set hw vcd[0] add port_1_cfg 2\n"
              << "set hw vcd[0] add iram 0x" << std::hex << sheet_at << "\n"
              << "set hw vcd[0] add iram 0x" << sheet_at + 1 << std::dec << "\n"
-             << "set hw vcd[0] start\n"
-             << "run\n";
+             << "set hw vcd[0] start\n";
+        if (o.reset_at_strike > 0)
+            // A warm reset (RST: the SFRs cleared, RAM kept) just after the
+            // Nth strike fired: the breakpoint stops the chip on its Nth hit,
+            // removes itself, resets and runs on.
+            cmds << "break 0x" << std::hex << strike_fired << std::dec << " " << o.reset_at_strike << "\n"
+                 << "commands 1 delete 1 ; reset ; run\n";
+        cmds << "run\n";
     }
     run.s51 = spawn({"s51", "-t", "C52", "-X", "11.0592M", "-S", "in=h2t,out=t2h", "-e", "uart0_check_often=1",
                      "-b", "-C", "cmds"},
@@ -244,6 +256,16 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     std::cerr << "sim: " << fired << " strikes fired by the firmware (read from its pins), " << line.corrupted()
               << " bytes dropped, flipped or duplicated on the line"
               << (ended ? "; the emulator ended by itself" : "") << "\n";
+    if (ended) {
+        // Why: the end of s51's own output (its console and error messages).
+        std::ifstream log(run.dir / "s51.log");
+        std::vector<std::string> tail;
+        for (std::string l; std::getline(log, l);) {
+            tail.push_back(l);
+            if (tail.size() > 12) tail.erase(tail.begin());
+        }
+        for (const auto& l : tail) std::cerr << "sim: s51: " << l << "\n";
+    }
 }
 
 }  // namespace tactus::cli

@@ -9,6 +9,7 @@
 // binary-clean), bridged to a raw pty; here this process is the bridge (where
 // run-s51.sh uses socat), so it can also put noise on the line.
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -25,6 +26,9 @@ struct FirmwareEmulatorOptions {
     double noise = 0;          // per byte either way: dropped, flipped, duplicated, each at this rate
     std::uint64_t seed = 1;
     std::string pin_trace;     // keep the port-1 trace (VCD) here; a temporary file when empty
+    // A warm reset of the chip just after its Nth strike (1-based; 0: none),
+    // from an s51 breakpoint on the firmware's strike-fired label.
+    std::size_t reset_at_strike = 0;
 };
 
 // Starts s51 (niced), prints the pty path on stdout's first line,

@@ -8,7 +8,7 @@ namespace {
 
 // Port 1 bits (firmware/src/board.h).
 constexpr std::uint32_t kCarriageStep = 0x01, kCarriageDir = 0x02, kFeedStep = 0x04, kFeedDir = 0x08,
-                        kConvex = 0x10, kConcave = 0x20;
+                        kConvex = 0x10, kConcave = 0x20, kMotorEnable = 0x40;
 
 std::vector<std::string_view> words(std::string_view l) {
     std::vector<std::string_view> w;
@@ -89,18 +89,30 @@ void FirmwareTrace::change(const std::string& id, std::uint32_t v, std::vector<L
     }
     if (id != port_id_) return;
     const std::uint32_t rise = v & ~port_;
-    if (rise & kCarriageStep) carriage_ += (v & kCarriageDir) ? 1 : -1;
-    if (rise & kFeedStep) feed_ += (v & kFeedDir) ? 1 : -1;
+    const std::uint32_t fall = port_ & ~v;
+    // The stepper drivers step only while enabled (P1.6 low): a reset sets
+    // every port pin high, drivers disabled, and those edges move nothing.
+    const bool enabled = (v & kMotorEnable) == 0;
+    if (enabled && (rise & kCarriageStep)) carriage_ += (v & kCarriageDir) ? 1 : -1;
+    if (enabled && (rise & kFeedStep)) feed_ += (v & kFeedDir) ? 1 : -1;
     if (keep_edges_) {
         using K = PinEdge::Kind;
-        const std::uint32_t fall = port_ & ~v & (kConvex | kConcave);
-        if (rise & kCarriageStep) edges_.push_back({K::carriage_step, now_s_});
-        if (rise & kFeedStep) edges_.push_back({K::feed_step, now_s_});
+        if (enabled && (rise & kCarriageStep)) edges_.push_back({K::carriage_step, now_s_});
+        if (enabled && (rise & kFeedStep)) edges_.push_back({K::feed_step, now_s_});
         if (rise & (kConvex | kConcave)) edges_.push_back({K::hammer_down, now_s_});
         // Not the pins' first value (0xFF before the firmware sets them up).
-        if (fall && port_ != 0xFF) edges_.push_back({K::hammer_up, now_s_});
+        if ((fall & (kConvex | kConcave)) && port_ != 0xFF) edges_.push_back({K::hammer_up, now_s_});
     }
+    int k = 0;
     for (const auto& [bit, hammer] : {std::pair{kConvex, plan::Hammer::convex}, std::pair{kConcave, plan::Hammer::concave}}) {
+        auto& pending = hammer_on_[k++];
+        // A strike is a pulse long enough to move the hammer: the reset's
+        // glitch (every pin high for the microseconds before main sets
+        // port 1) drives the solenoids too briefly to emboss.
+        if ((fall & bit) && pending) {
+            if (now_s_ - pending->time_s >= kMinHammerPulseS) out.push_back(*pending);
+            pending.reset();
+        }
         if (!(rise & bit)) continue;
         LoggedStrike s;
         s.sheet = sheet_;
@@ -111,7 +123,7 @@ void FirmwareTrace::change(const std::string& id, std::uint32_t v, std::vector<L
         s.time_s = now_s_;
         s.x_mm = carriage_ / carriage_spm_;
         s.y_mm = feed_ / feed_spm_;
-        out.push_back(s);
+        pending = s;
     }
     port_ = v;
 }

@@ -8,6 +8,7 @@
 // pins, backlash steps included, exactly as the firmware counts them; the feed
 // counter restarts where the sheet number becomes non-zero (SHEET_BEGIN).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,7 +33,10 @@ public:
         : carriage_spm_(carriage_steps_per_mm), feed_spm_(feed_steps_per_mm) {}
 
     // VCD text in any pieces (a growing file read as it grows); appends the
-    // strikes whose hammer edge it completes. Fails on a dump without port 1.
+    // strikes whose hammer pulse it completes (a strike is logged when its
+    // hammer comes off, with the time and place it went on; a pulse under
+    // 0.5 ms moves no hammer and is no strike). Steps count only while the
+    // drivers are enabled (P1.6 low). Fails on a dump without port 1.
     Result<void> push(std::string_view text, std::vector<LoggedStrike>& out);
 
     // Also keep every rising STEP edge and every hammer edge (edges()), to
@@ -58,6 +62,10 @@ private:
     bool in_header_ = true;
     bool keep_edges_ = false;
     std::vector<PinEdge> edges_;
+    // A hammer that is on: its strike, logged when it comes off after at
+    // least kMinHammerPulseS (convex, concave).
+    std::optional<LoggedStrike> hammer_on_[2];
+    static constexpr double kMinHammerPulseS = 0.5e-3;
 };
 
 }  // namespace tactus::controller

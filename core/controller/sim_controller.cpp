@@ -185,6 +185,10 @@ void SimController::receive(std::span<const std::uint8_t> bytes, double now) {
 }
 
 void SimController::on_frame(const encode::Frame& f, double now) {
+    if (wedged_) {
+        nak(NakReason::out_of_order);
+        return;
+    }
     last_host_frame_ = now;
     if (f.type == static_cast<std::uint8_t>(FrameType::hello)) {
         const auto h = encode::decode_hello(f.payload);
@@ -584,6 +588,10 @@ void SimController::finish_op() {
             if (mute_after_ && executed_passes_ == *mute_after_) {
                 mute_after_.reset();
                 muted_ = true;
+            }
+            if (wedge_after_ && executed_passes_ == *wedge_after_) {
+                wedge_after_.reset();
+                wedged_ = true;
             }
             ack();  // the host counts a pass only when it is executed
             break;

@@ -90,6 +90,13 @@ public:
     // wire. The kill tests place SIGKILLs exactly at this edge.
     void mute_after_pass(std::uint16_t executed) { mute_after_ = executed; }
     [[nodiscard]] bool muted() const { return muted_; }
+    // From the moment the executed-pass count reaches `executed`, the
+    // controller takes no more frames, HELLO included: each is answered NAK
+    // *out of order* at the sequence number it expected then, as a receive
+    // path that has wedged while the rest still talks. The host's silence
+    // timeout never fires; only its bounded give-up ends the job. The
+    // executor runs on through what is in its ring.
+    void wedge_after_pass(std::uint16_t executed) { wedge_after_ = executed; }
 
     [[nodiscard]] const std::vector<LoggedStrike>& strike_log() const { return log_; }
     [[nodiscard]] encode::Status status() const;
@@ -185,6 +192,8 @@ private:
     bool reset_keeps_ram_ = true;
     std::optional<std::uint16_t> mute_after_;
     bool muted_ = false;
+    std::optional<std::uint16_t> wedge_after_;
+    bool wedged_ = false;
     std::vector<LoggedStrike> log_;
     std::size_t max_ring_used_ = 0;
     std::size_t frames_accepted_ = 0;

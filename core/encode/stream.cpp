@@ -401,11 +401,12 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
 }
 
 std::vector<std::pair<std::size_t, std::size_t>> chunk_stream(const JobStream& stream,
-                                                              std::size_t max_payload) {
+                                                              std::size_t max_payload, std::size_t from) {
     std::vector<std::pair<std::size_t, std::size_t>> chunks;
-    std::size_t begin = 0;
-    std::size_t end = 0;
+    std::size_t begin = from;
+    std::size_t end = from;
     for (const std::size_t op_end : stream.op_ends) {
+        if (op_end <= from) continue;
         // An op larger than max_payload (never above kMaxPayload) travels alone.
         if (op_end - begin > max_payload && end > begin) {
             chunks.emplace_back(begin, end);

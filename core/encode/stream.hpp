@@ -124,8 +124,10 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                              const StreamStart& start);
 
 // Cuts the stream into DATA payloads of whole ops, each at most `max_payload`
-// bytes: [begin, end) byte ranges.
+// bytes (an op larger than that travels alone): [begin, end) byte ranges,
+// from the op boundary `from` on (the link cuts what it has not sent yet
+// again when it changes its frame size).
 std::vector<std::pair<std::size_t, std::size_t>> chunk_stream(const JobStream& stream,
-                                                              std::size_t max_payload);
+                                                              std::size_t max_payload, std::size_t from = 0);
 
 }  // namespace tactus::encode

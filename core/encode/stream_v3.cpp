@@ -242,10 +242,11 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
     return s;
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> chunk_stream_v3(const JobStream& stream, std::size_t max_ops) {
+std::vector<std::pair<std::size_t, std::size_t>> chunk_stream_v3(const JobStream& stream, std::size_t max_ops,
+                                                                 std::size_t from) {
     std::vector<std::pair<std::size_t, std::size_t>> chunks;
     if (max_ops == 0) return chunks;
-    for (std::size_t b = 0; b < stream.bytes.size(); b += max_ops)
+    for (std::size_t b = from; b < stream.bytes.size(); b += max_ops)
         chunks.emplace_back(b, std::min(stream.bytes.size(), b + max_ops));
     return chunks;
 }

@@ -58,8 +58,9 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
                                 const StreamStart& start);
 
 // Cuts the stream into DATA payloads of at most `max_ops` op bytes (the check
-// is added per frame): [begin, end) byte ranges.
-std::vector<std::pair<std::size_t, std::size_t>> chunk_stream_v3(const JobStream& stream, std::size_t max_ops);
+// is added per frame): [begin, end) byte ranges, from byte `from` on.
+std::vector<std::pair<std::size_t, std::size_t>> chunk_stream_v3(const JobStream& stream, std::size_t max_ops,
+                                                                 std::size_t from = 0);
 
 // A DATA payload: the ops and their check.
 std::vector<std::uint8_t> data_payload_v3(std::span<const std::uint8_t> ops);

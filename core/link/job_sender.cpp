@@ -3,6 +3,7 @@
 // resend what the line lost, and recover from a paused, faulted, restarted or
 // unplugged controller without losing or repeating a dot.
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "link/link_impl.hpp"
@@ -23,6 +24,16 @@ struct JobState {
     std::size_t next_chunk = 0;
     std::size_t bytes_sent = 0;
     std::size_t bytes_total = 0;
+    // Op bytes per DATA frame: at most what the controller offers, halved at
+    // each retransmission timeout and doubled again after 8 frames got
+    // through, so a frame still crosses a noisy line (at 2e-2 per byte, drops,
+    // flips and duplicates each, an 86-byte frame arrives whole 0.5 % of the
+    // time, a 24-byte one 24 %). Only frames not yet sent are cut again: one
+    // sent keeps its bytes and its SEQ until it is acknowledged.
+    std::size_t payload_max = 0;
+    std::size_t payload_min = 0;
+    std::size_t payload_limit = 0;
+    std::size_t acked_mark = 0;
     bool user_paused = false;
     double fault_since = -1;
     double last_resume = -1;
@@ -34,6 +45,13 @@ struct JobState {
         return plan.sheets.empty() ? 0 : plan.sheets.back().index;
     }
 };
+
+// "30 s", "2.5 s".
+std::string seconds_text(std::chrono::milliseconds ms) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g s", static_cast<double>(ms.count()) / 1000.0);
+    return b;
+}
 
 }  // namespace
 
@@ -74,8 +92,18 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             std::min<std::size_t>(encode::kMaxPayload, std::max<std::uint8_t>(info.max_payload, 8));
         if (opt.max_payload > 0) max_payload = std::min(max_payload, std::max<std::size_t>(opt.max_payload, 8));
         // v3: ops may span frames; each payload ends with the 2-byte DATA check.
-        js.chunks = v3() ? encode::chunk_stream_v3(js.stream, max_payload - 2)
-                         : encode::chunk_stream(js.stream, max_payload);
+        js.payload_max = v3() ? max_payload - 2 : max_payload;
+        js.payload_min = std::min(js.payload_max, v3() ? std::size_t{8} : std::size_t{16});
+        if (js.payload_limit == 0) {
+            // A line that already lost frames while the session opened starts small.
+            js.payload_limit = js.payload_max;
+            js.acked_mark = data_acked;
+            for (std::size_t k = 0; k < std::min<std::size_t>(session_timeouts, 3); ++k)
+                js.payload_limit = std::max(js.payload_min, js.payload_limit / 2);
+        }
+        js.payload_limit = std::clamp(js.payload_limit, js.payload_min, js.payload_max);
+        js.chunks = v3() ? encode::chunk_stream_v3(js.stream, js.payload_limit)
+                         : encode::chunk_stream(js.stream, js.payload_limit);
         js.next_chunk = 0;
         js.bytes_total += js.stream.bytes.size();
         return {};
@@ -107,6 +135,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         while (js.reported < ack.executed_passes && js.reported < js.table.size()) {
             const auto& ref = js.table[js.reported];
             ++js.reported;
+            last_progress = s->now();
             if (!progress) continue;
             PassExecuted e{ref.sheet, ref.pass_in_sheet, js.reported - js.first, total};
             Progress p;
@@ -140,6 +169,10 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
     auto restart = [&]() -> Result<void> {
         ++stats.restarts;
         if (auto h = hello(); !h) return std::unexpected(h.error());
+        // A NAK *no session* that came before the HELLO_REPLY answered a
+        // frame sent to the restarted controller before this HELLO (it
+        // replies in order): it is about the session this one replaces.
+        session_lost = false;
         if (config) {
             auto payload = config_payload();
             if (!payload) return std::unexpected(payload.error());
@@ -162,6 +195,20 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         return build(start);
     };
 
+    // A new frame size for what has not been sent yet.
+    auto resize_frames = [&](std::size_t limit) {
+        limit = std::clamp(limit, js.payload_min, js.payload_max);
+        js.acked_mark = data_acked;
+        if (limit == js.payload_limit) return;
+        js.payload_limit = limit;
+        const std::size_t from =
+            js.next_chunk < js.chunks.size() ? js.chunks[js.next_chunk].first : js.stream.bytes.size();
+        js.chunks.resize(js.next_chunk);
+        const auto rest = v3() ? encode::chunk_stream_v3(js.stream, limit, from)
+                               : encode::chunk_stream(js.stream, limit, from);
+        js.chunks.insert(js.chunks.end(), rest.begin(), rest.end());
+    };
+
     // The device failed: reopen it, then resend whatever is unacknowledged.
     auto recover_device = [&](const Error& why) -> Result<void> {
         note("connection lost (" + why.message + "): reconnecting");
@@ -170,11 +217,24 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         return resend_all();
     };
 
+    last_progress = s->now();
     for (;;) {
         if (refused) return finish(JobEnd::failed, *refused);
         if (cancel.cancelled()) {
             (void)transact(FrameType::abort, {});
             return finish(JobEnd::cancelled, {});
+        }
+        // The bounded give-up: nothing taken and nothing executed for that
+        // long, whether the line is silent (reopened in vain) or the
+        // controller answers without ever taking a frame.
+        if (s->now() - last_progress > seconds(opt.give_up_after)) {
+            const auto sheet = std::to_string(js.sheet_of(js.reported));
+            return finish(JobEnd::not_answering,
+                          Error{"the embosser stopped answering: nothing acknowledged for " +
+                                    seconds_text(opt.give_up_after) + " at " + where() +
+                                    "; check that it is switched on and its cable is in, then resume from sheet " +
+                                    sheet,
+                                device, ErrorKind::device});
         }
         Result<void> step{};
         // A request made before the controller has begun this stream waits
@@ -244,6 +304,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             step = send(FrameType::resume, {});
         }
 
+        if (data_acked >= js.acked_mark + 8) resize_frames(js.payload_limit * 2);
         // Fill the window with whole chunks the controller has room for.
         while (step && js.next_chunk < js.chunks.size() && unacked.size() < window_frames()) {
             const auto [b, e] = js.chunks[js.next_chunk];
@@ -261,6 +322,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         const double now = s->now();
         if (step && !unacked.empty() && now >= unacked.front().sent_at + rto()) {
             ++stats.timeouts;
+            resize_frames(js.payload_limit / 2);
             step = resend_all();
         }
         if (step && now - last_rx > seconds(opt.silence_timeout)) {

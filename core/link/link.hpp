@@ -45,6 +45,13 @@ struct LinkOptions {
     // Paper out: wait this long for the operator to load paper before giving up.
     std::chrono::milliseconds fault_wait{120000};
     std::chrono::milliseconds keepalive_period{500};
+    // Bounded give-up: a job ends JobEnd::not_answering when the controller
+    // has acknowledged no frame and executed no pass for this long, however
+    // it fails (silent, reopened and silent again, or answering without ever
+    // taking a frame). A controller that is waiting for paper, paused, or
+    // printing acknowledges the keep-alive every 500 ms, so only a controller
+    // that is gone or wedged meets it.
+    std::chrono::milliseconds give_up_after{30000};
     std::uint16_t job_id = 1;
     // Limits below what the controller offers (0: its own). Window 1 with small
     // payloads is the stop-and-wait style of Marlin-like senders (benchmarks).
@@ -98,7 +105,10 @@ struct LinkStats {
     double data_seconds = 0;           // from the first DATA frame to the last ACK
 };
 
-enum class JobEnd { completed, cancelled, failed };
+// not_answering: the bounded give-up (LinkOptions::give_up_after); the error
+// is a device error naming the sheet to resume from, and the job is not at
+// fault (the spool waits for the printer instead of counting a retry).
+enum class JobEnd { completed, cancelled, failed, not_answering };
 
 struct JobOutcome {
     JobEnd end = JobEnd::failed;

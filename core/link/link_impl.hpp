@@ -57,6 +57,9 @@ struct Link::Impl {
     std::optional<Error> refused;  // bad_payload / unknown_type: a protocol mismatch
     double last_rx = 0;
     double last_tx = 0;
+    // When the controller last took a frame of ours (or executed a pass: the
+    // job's own bookkeeping), for the bounded give-up.
+    double last_progress = 0;
 
     // go-back-N send queue
     struct Outgoing {
@@ -67,6 +70,10 @@ struct Link::Impl {
     };
     std::deque<Outgoing> unacked;
     double last_goback = -1;
+    // DATA frames acknowledged, and retransmission timeouts, since the session
+    // opened: the job's frame size follows them (job_sender.cpp).
+    std::size_t data_acked = 0;
+    std::size_t session_timeouts = 0;
 
     Error device_error(const Error& e) const {
         return Error{e.message, device, e.kind};
@@ -176,9 +183,12 @@ struct Link::Impl {
             if (unacked.front().type == FrameType::hello) break;
             const auto d = static_cast<std::uint8_t>(expected - unacked.front().seq);
             if (d == 0 || d > 128) break;
-            if (unacked.front().type == FrameType::data)
+            if (unacked.front().type == FrameType::data) {
                 stats.payload_bytes += unacked.front().payload.size();
+                ++data_acked;
+            }
             unacked.pop_front();
+            last_progress = s->now();
         }
     }
 
@@ -273,13 +283,22 @@ struct Link::Impl {
         while (!unacked.empty()) {
             if (refused) return std::unexpected(*std::exchange(refused, std::nullopt));
             if (session_lost) return fail(ErrorKind::device, "the controller restarted; open a new session", device);
-            if (s->now() - start > seconds(opt.silence_timeout))
+            // Silent for the silence timeout: no answer. A controller that
+            // answers (a noisy line loses most frames) is given until the
+            // give-up to take this one.
+            if (s->now() - std::max(start, last_rx) > seconds(opt.silence_timeout))
                 return fail(ErrorKind::device, "no answer from the controller within " +
                                 std::to_string(opt.silence_timeout.count()) + " ms",
+                            device);
+            if (s->now() - start > seconds(opt.give_up_after))
+                return fail(ErrorKind::device, "the controller answers but took no frame in " +
+                                std::to_string(opt.give_up_after.count() / 1000) +
+                                " s: is the line very noisy, or the baud rate wrong?",
                             device);
             const double due = unacked.front().sent_at + rto();
             if (s->now() >= due) {
                 ++stats.timeouts;
+                ++session_timeouts;
                 if (auto r = resend_all(); !r) return r;
                 continue;
             }
@@ -293,6 +312,7 @@ struct Link::Impl {
     Result<std::optional<HelloReply>> hello_as(std::uint8_t version) {
         nonce = static_cast<std::uint16_t>(rng() & 0xFFFF);
         if (nonce == 0) nonce = 1;
+        session_timeouts = 0;
         unacked.clear();
         session = false;
         session_lost = false;
@@ -309,14 +329,16 @@ struct Link::Impl {
         const double start = s->now();
         if (auto r = transmit(unacked.back()); !r) return std::unexpected(r.error());
         while (!last_hello) {
-            const double waited = s->now() - start;
-            if (waited > seconds(opt.silence_timeout))
+            // As transact: silent for the silence timeout, or no session by the give-up.
+            if (s->now() - std::max(start, last_rx) > seconds(opt.silence_timeout) ||
+                s->now() - start > seconds(opt.give_up_after))
                 return fail(ErrorKind::device, "no answer to HELLO within " +
                                 std::to_string(opt.silence_timeout.count()) +
                                 " ms: is the embosser on, the cable in, and the baud rate right?",
                             device);
             if (s->now() >= unacked.front().sent_at + rto()) {
                 ++stats.timeouts;
+                ++session_timeouts;
                 unacked.front().sent_at = s->now();
                 ++stats.frames_resent;
                 if (auto r = transmit(unacked.front()); !r) return std::unexpected(r.error());
@@ -338,6 +360,7 @@ struct Link::Impl {
         unacked.clear();
         session = true;
         last_rx = s->now();
+        last_progress = s->now();
         return std::optional<HelloReply>{info};
     }
 

@@ -391,6 +391,12 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                             0, false));
         return RunEnd::stopped;
     }
+    case link::JobEnd::not_answering:
+        // The printer stopped answering (the link's bounded give-up): the job
+        // is not at fault. It waits in the queue for the printer, as a job
+        // for a printer that cannot be reached does; the run stays open, so
+        // the next connection settles it with the controller's own count.
+        return wait_for_printer(job, outcome->error.to_string());
     case link::JobEnd::failed: break;
     }
     const std::string why = outcome->error.to_string();

@@ -29,6 +29,15 @@ static __bit f_neg;
 static __bit ham_ccv;
 static __bit p_is_first; /* the next entry is the pass's first (its move is the header's) */
 
+#ifdef FW_EMU
+/* Called once a strike is made (fired, counted, its pulse over, the hammer
+ * back): `sim --firmware --reset-at-strike N` sets an s51 breakpoint on it
+ * (the map's _fw_strike_fired) and resets the chip at its Nth call, the head
+ * at rest. Emulator build only; the chip's image has no such call. */
+static __bit emu_fired;
+void fw_strike_fired(void) {}
+#endif
+
 uint8_t exec_busy(void) { return xs != X_FETCH || !mv_done; }
 
 void exec_abort(void) {
@@ -214,7 +223,9 @@ static void fetch(void) {
             /* s51 has no mechanics to close the switch: the emulator build
              * closes it at step 0, which the emulated carriage reaches after
              * exactly fw_carriage steps (it loses none). Same rate, same pin. */
-            if (fw_carriage > 0 && (fw_flags & FL_HOMED)) {
+            /* After a warm reset (not homed, the count kept in RAM) too: the
+             * emulated carriage lost no step, so it is fw_carriage from home. */
+            if (fw_carriage > 0) {
                 move_constant(PIN_CSTEP, (uint16_t)fw_carriage);
             }
             mv_limit = 1;
@@ -305,8 +316,14 @@ void exec_poll(void) {
         case X_SETTLE:
             /* Down (or, made before a reset, passed over at the same pace). */
             xs = X_DWELL;
-            if (fw_skip) --fw_skip;
-            else ++fw_strikes_in_pass;
+            if (fw_skip) {
+                --fw_skip; /* made before the reset: passed over at the same pace */
+            } else {
+                ++fw_strikes_in_pass;
+#ifdef FW_EMU
+                emu_fired = 1;
+#endif
+            }
             hammer_up_after_pulse();
             return;
         case X_DWELL:
@@ -315,6 +332,12 @@ void exec_poll(void) {
                 fault(F_HAMMER);
                 return;
             }
+#ifdef FW_EMU
+            if (emu_fired) {
+                emu_fired = 0;
+                fw_strike_fired();
+            }
+#endif
             fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
             if (--p_left == 0) {
                 pass_end();

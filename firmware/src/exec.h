@@ -10,6 +10,10 @@ void exec_abort(void);
 /* Whether the op at the head of the ring is under way (a pass record's bytes
  * are consumed as its strikes are made). */
 uint8_t exec_busy(void);
+#ifdef FW_EMU
+/* A strike was fired (the emulator's reset breakpoint goes on it). */
+void fw_strike_fired(void);
+#endif
 
 /* The job-stream ops (PROTOCOL-v3.md). */
 #define OP_JOB_BEGIN 0x10

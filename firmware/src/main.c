@@ -71,9 +71,13 @@ void main(void) {
     fw_pause_req = 0;
     if (warm) {
         /* Progress is exact; the position is not (the drivers lost power or
-         * steps): the host homes again and resumes at the strike it is told. */
+         * steps): the host homes again and resumes at the strike it is told.
+         * The pass stays active: strikes in pass counts what this pass has
+         * struck, and the host skips exactly those (clearing the flag here
+         * made it restart the pass from its first strike: a reset in the
+         * middle of a pass struck its first dots twice). */
         fw_faults |= F_WARM_RESET;
-        fw_flags &= (uint8_t)~(FL_HOMED | FL_PASS_ACTIVE);
+        fw_flags &= (uint8_t)~FL_HOMED;
         if (fw_flags & FL_JOB_ACTIVE) fw_state = ST_FAULT;
         else fw_state = ST_IDLE;
     } else {

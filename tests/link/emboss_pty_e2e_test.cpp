@@ -110,6 +110,35 @@ TEST_F(PtyEndToEnd, PowerLossFailsWithResumeHint) {
     EXPECT_TRUE(std::equal(r.log.begin(), r.log.begin() + 60, planned.begin()));
 }
 
+// Issue 12 item 8: the line goes dead mid-job and stays dead. The CLI gives
+// up after --give-up-after seconds without acknowledged progress, exits with
+// the device code (4) and says which sheet to resume from. (The old CLI had
+// no such option and, without it, never gave up.)
+TEST_F(PtyEndToEnd, AnEmbosserThatStopsAnsweringEndsWithTheDeviceCodeAndTheSheetToResume) {
+    Process server({TACTUS_CLI, "sim", "--pty", "--baud", "115200", "--time-scale", "40", "--disconnect-at", "0.25",
+                    "--disconnect-for", "100000", "--strike-log", (dir_ / "strikes.jsonl").string()});
+    const std::string pty = server.read_line(std::chrono::seconds(30));
+    ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+    Process client = cli_merged({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device",
+                                 "pty:" + pty + "?baud=115200", "--give-up-after", "4"});
+    const auto out = client.read_all();
+    EXPECT_EQ(client.wait(), 4) << out;  // exit_device
+    EXPECT_NE(out.find("the embosser stopped answering: nothing acknowledged for 4 s"), std::string::npos) << out;
+    const auto hint = out.find("resume with --start-sheet ");
+    ASSERT_NE(hint, std::string::npos) << out;
+    const int sheet = std::stoi(out.substr(hint + std::string("resume with --start-sheet ").size()));
+    EXPECT_GE(sheet, 1);
+    EXPECT_LE(sheet, 2);
+    server.signal(SIGTERM);
+    server.wait();
+    // What was struck is the plan's beginning, up to the sheet to resume from.
+    const auto log = test::read_strike_log((dir_ / "strikes.jsonl").string());
+    const auto planned = controller::planned_strikes(plan_);
+    ASSERT_LE(log.size(), planned.size());
+    EXPECT_TRUE(std::equal(log.begin(), log.end(), planned.begin()));
+    for (const auto& s : log) EXPECT_LE(s.sheet, sheet);
+}
+
 TEST_F(PtyEndToEnd, AbsentDeviceGivesTheDocumentedError) {
     for (const std::string dev : {"pty:/dev/pts/999999", "serial:/dev/ttyTACTUS-NONE", "lpt:/dev/parport9",
                                   "hid:10c4:ea80:NOPE"}) {

@@ -237,6 +237,37 @@ TEST_F(FirmwareEndToEnd, PaperOutIsReportedAndNothingIsStruck) {
     EXPECT_TRUE(test::read_strike_log((dir_ / "strikes.jsonl").string()).empty()) << "struck with no paper";
 }
 
+// A reset in the middle of a pass: s51 stops the chip at a breakpoint just
+// after its Nth strike and resets it (RST: the SFRs cleared, RAM kept), a
+// warm restart. The firmware keeps its place (executed passes, strikes in the
+// pass, the pass still active); the host opens a new session, homes, seeks
+// and sends the pass again skipping what was struck. The strikes read from
+// the pins are the plan: none twice, none missing. (Before the firmware kept
+// the pass active over a warm reset, the host restarted the pass from its
+// first strike and the first dots were struck twice.)
+TEST_F(FirmwareEndToEnd, AResetInTheMiddleOfAPassResumesAtTheExactStrike) {
+    const auto job = planned();
+    const auto want = controller::planned_strikes(job);
+    // The third strike of the second pass with at least five: mid-pass.
+    std::size_t before = 0, n = 0;
+    int seen = 0;
+    for (const auto& pass : job.sheets.at(0).passes) {
+        if (pass.strikes.size() >= 5 && ++seen == 2) {
+            n = before + 3;
+            break;
+        }
+        before += pass.strikes.size();
+    }
+    ASSERT_GT(n, 0U) << "the note has no two passes of five strikes";
+    const auto r = emboss(TACTUS_FIRMWARE_EMU_TABLES, {"--reset-at-strike", std::to_string(n)});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("restarted: resuming at sheet 1"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("after strike 3"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(", 1 restarts"), std::string::npos) << r.output;
+    EXPECT_EQ(r.log.size(), want.size());
+    EXPECT_EQ(r.log, want);
+}
+
 // A noisy line between the host and the chip (bytes dropped, flipped and
 // duplicated, each at the rate, both ways): every strike still exactly the plan.
 TEST_F(FirmwareEndToEnd, NoisyLineStrikesExactly) {

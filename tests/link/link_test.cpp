@@ -4,6 +4,9 @@
 // against the plan.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <thread>
+
 #include "controller/sim_controller.hpp"
 #include "link/link.hpp"
 #include "../common/test_plans.hpp"
@@ -297,6 +300,88 @@ TEST(Link, DeviceThatNeverAnswersGivesABoundedError) {
     ASSERT_FALSE(h);
     EXPECT_NE(h.error().message.find("no answer"), std::string::npos);
     EXPECT_LT(rig.line->now(), 10.0);  // bounded: the silence timeout, not forever
+}
+
+// Issue 12 item 8, the bounded give-up. On the old code these jobs never
+// ended (a 28 s job was still running after 2 million simulated seconds): the
+// watchdog cancels them after a few wall seconds, so the test fails there
+// (cancelled) instead of hanging.
+struct GiveUpRun {
+    link::JobOutcome out;
+    double now = 0;
+};
+GiveUpRun run_with_watchdog(Rig& rig, const plan::JobPlan& plan) {
+    EXPECT_TRUE(rig.link.hello());
+    EXPECT_TRUE(rig.link.configure({}));
+    link::CancelToken cancel;
+    std::atomic<bool> done{false};
+    std::thread watchdog([&] {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (!done && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        if (!done) cancel.cancel();
+    });
+    auto out = rig.link.send_job(plan, 1, {}, cancel);
+    done = true;
+    watchdog.join();
+    EXPECT_TRUE(out) << out.error().to_string();
+    return {out ? *out : link::JobOutcome{}, rig.line->now()};
+}
+
+void expect_prefix_of_plan(const Rig& rig, const plan::JobPlan& plan) {
+    const auto planned = controller::planned_strikes(plan);
+    const auto& log = rig.ctl->strike_log();
+    ASSERT_LE(log.size(), planned.size());
+    EXPECT_TRUE(std::equal(log.begin(), log.end(), planned.begin()));
+}
+
+TEST(LinkGiveUp, AControllerSilentForeverEndsTheJobNotAnswering) {
+    const auto plan = test::make_plan(3, 10, 20, 8);
+    auto rig = make_rig();
+    rig.line->silence_between(2.0, 1e12);  // mid-job, and never back
+    const auto r = run_with_watchdog(rig, plan);
+    EXPECT_EQ(r.out.end, link::JobEnd::not_answering) << r.out.error.to_string();
+    EXPECT_EQ(r.out.error.kind, ErrorKind::device);
+    EXPECT_NE(r.out.error.message.find("stopped answering"), std::string::npos) << r.out.error.message;
+    EXPECT_NE(r.out.error.message.find("resume from sheet " + std::to_string(r.out.resume_sheet)),
+              std::string::npos)
+        << r.out.error.message;
+    EXPECT_GE(r.out.resume_sheet, 1U);
+    // Bounded: 30 s after the last acknowledged frame (plus one silence timeout
+    // of slack), not forever. The line reopened in between.
+    EXPECT_LT(r.now, 2.0 + 30.0 + 3.5);
+    EXPECT_GT(r.now, 2.0 + 30.0 - 3.5);
+    EXPECT_GE(r.out.stats.reconnects, 1U);
+    expect_prefix_of_plan(rig, plan);
+}
+
+TEST(LinkGiveUp, AControllerThatStopsAcknowledgingMidJobEndsTheJobNotAnswering) {
+    const auto plan = test::make_plan(3, 10, 20, 9);
+    auto rig = make_rig();
+    rig.ctl->wedge_after_pass(12);  // answers every frame, takes none
+    const auto r = run_with_watchdog(rig, plan);
+    EXPECT_EQ(r.out.end, link::JobEnd::not_answering) << r.out.error.to_string();
+    EXPECT_NE(r.out.error.message.find("stopped answering"), std::string::npos) << r.out.error.message;
+    // The passes it executed are reported; the job resumes at the first it did not.
+    EXPECT_GE(r.out.passes_done, 12U);
+    EXPECT_EQ(r.out.resume_sheet, 1 + r.out.passes_done / 10);
+    EXPECT_EQ(r.out.stats.reconnects, 0U);  // never silent: only the give-up ends it
+    EXPECT_GT(r.out.stats.naks, 10U);
+    expect_prefix_of_plan(rig, plan);
+}
+
+TEST(LinkGiveUp, APausedJobOrAWaitForPaperIsNotGivenUp) {
+    // Paper out for 60 s (longer than the give-up): the controller answers
+    // the keep-alives all along, so the job waits and completes.
+    const auto plan = test::make_plan(2, 4, 10);
+    controller::SimOptions sim;
+    sim.reload_paper_after_s = 60.0;
+    auto rig = make_rig({}, sim);
+    rig.ctl->inject_paper_out_at_sheet(2);
+    const auto r = run_with_watchdog(rig, plan);
+    EXPECT_EQ(r.out.end, link::JobEnd::completed) << r.out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(plan));
+    EXPECT_GT(r.now, 60.0);
 }
 
 TEST(Link, StatusReportsThePosition) {

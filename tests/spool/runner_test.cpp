@@ -5,6 +5,10 @@
 // and a document that no longer fits its printer is kept, not lost.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include "encode/messages.hpp"
 #include "profile/controller_config.hpp"
 #include "profile/profile.hpp"
@@ -235,6 +239,48 @@ TEST(Runner, AJobForAnUnreachablePrinterWaitsInTheQueueUntilItIsBack) {
     EXPECT_TRUE(printer.controller->strike_log().empty());
     // Plugged in: the job runs without anyone resuming it.
     *printer.cut = false;
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(b.audit(id, printer), "");
+}
+
+// Issue 12 item 8: a printer that stops answering mid-job (the line goes
+// silent for good). The link gives up after 30 s without acknowledged
+// progress, and the job waits in the queue for the printer (not a retry of
+// the job, not a fault for the operator). On the old code the link never gave
+// up: the watchdog stops the runner after 20 wall seconds, so the test fails
+// ("stopped") instead of hanging.
+TEST(Runner, APrinterThatStopsAnsweringMidJobRequeuesTheJobAsWaitingForThePrinter) {
+    Bench b;
+    SimPrinter printer;
+    const JobId id = b.submit(6);
+    printer.line->silence_between(5.0, 1e12);  // virtual seconds: inside sheet 1
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    std::atomic<bool> stop{false}, done{false};
+    std::thread watchdog([&] {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (!done && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        if (!done) stop = true;
+    });
+    const auto first = run_next(r, stop);
+    done = true;
+    watchdog.join();
+    EXPECT_EQ(first, RunEnd::requeued);
+    auto job = *b.spool.job(id);
+    EXPECT_EQ(job.state, JobState::queued);
+    EXPECT_EQ(job.retries, 0);  // the job is not at fault
+    EXPECT_NE(job.reason.find("waiting for printer 'lab'"), std::string::npos) << job.reason;
+    EXPECT_NE(job.reason.find("stopped answering"), std::string::npos) << job.reason;
+    EXPECT_GT(printer.line->now(), 5.0 + 30.0 - 3.5);
+    EXPECT_LT(printer.line->now(), 5.0 + 30.0 + 3.5);
+    // Still silent: the next try cannot open a session; the job keeps waiting.
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::requeued);
+    EXPECT_EQ(b.spool.job(id)->retries, 0);
+    EXPECT_NE(b.spool.job(id)->reason.find("waiting for printer 'lab'"), std::string::npos)
+        << b.spool.job(id)->reason;
+    // Back: the job runs on by itself, every sheet exactly once.
+    printer.line->silence_between(-1, -1);
     EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
     EXPECT_EQ(b.audit(id, printer), "");
 }
