@@ -30,8 +30,15 @@ void MessageLabel::resizeEvent(QResizeEvent* event) {
 }
 
 void MessageLabel::fit_height() {
-    const int lines = text().isEmpty() ? fontMetrics().height() : heightForWidth(std::max(1, width()));
-    const int height = std::max(lines, fontMetrics().height()) + contentsMargins().top() + contentsMargins().bottom();
+    // Measured here, not with heightForWidth(): QLabel answers that from a
+    // size it cached at an earlier width, and the bar stayed five lines tall
+    // after a message first laid out while the window was still narrow.
+    const auto margins = contentsMargins();
+    const int width = std::max(1, this->width() - margins.left() - margins.right() - 2 * margin());
+    const int lines = text().isEmpty() ? fontMetrics().height()
+                                       : fontMetrics().boundingRect(QRect(0, 0, width, 1 << 20),
+                                                                    Qt::TextWordWrap | Qt::AlignLeft, text()).height();
+    const int height = std::max(lines, fontMetrics().height()) + margins.top() + margins.bottom() + 2 * margin();
     if (height != this->height() || minimumHeight() != height) setFixedHeight(height);
 }
 

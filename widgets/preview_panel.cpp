@@ -59,12 +59,18 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     connect(contrast_, &QAction::toggled, preview_, &SheetPreview::set_high_contrast);
     connect(pdf_, &QAction::triggered, this, &PreviewPanel::print_pdf_requested);
 
+    // Two rows: in one, a dock of 1280 px hid "Print preview to PDF" behind
+    // the toolbar's extension button, where a keyboard user never finds it.
     auto* bar = new QToolBar(tr("Preview"), this);
     bar->setObjectName(QStringLiteral("previewBar"));
     bar->setAccessibleName(tr("Preview controls"));
     bar->addActions({front_, back_, both_});
     bar->addSeparator();
-    bar->addActions({previous_, next_, zoom_out_, zoom_in_, contrast_, pdf_});
+    bar->addActions({previous_, next_});
+    auto* view_bar = new QToolBar(tr("View"), this);
+    view_bar->setObjectName(QStringLiteral("previewViewBar"));
+    view_bar->setAccessibleName(tr("Preview view controls"));
+    view_bar->addActions({zoom_out_, zoom_in_, contrast_, pdf_});
     label_ = new QLabel(this);
     label_->setObjectName(QStringLiteral("previewLabel"));
     expose_status(label_, tr("Preview status"));
@@ -72,6 +78,7 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(bar);
+    layout->addWidget(view_bar);
     layout->addWidget(label_);
     layout->addWidget(scroll_, 1);
 

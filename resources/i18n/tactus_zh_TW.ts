@@ -1142,17 +1142,27 @@
         <translation>Ctrl+Alt+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/preview_panel.cpp" line="62" />
+        <location filename="../../widgets/preview_panel.cpp" line="64" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/preview_panel.cpp" line="64" />
+        <location filename="../../widgets/preview_panel.cpp" line="66" />
         <source>Preview controls</source>
         <translation>預覽控制</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="70" />
+        <source>View</source>
+        <translation>檢視</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/preview_panel.cpp" line="72" />
+        <source>Preview view controls</source>
+        <translation>預覽顯示控制</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/preview_panel.cpp" line="76" />
         <source>Preview status</source>
         <translation>預覽狀態</translation>
     </message>

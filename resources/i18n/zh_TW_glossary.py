@@ -86,7 +86,7 @@ T = {
         "第 %2 張行程 %3 的%1對時間：%4 個擊點，歷時 %5；範圍 %6 到 %7。擊點表列出相同資料。",
     "Preview scroll area": "預覽捲動區", "&Front": "正面(&F)", "&Back": "背面(&B)", "Front &and back": "正面與背面(&A)",
     "&Previous sheet": "上一張(&P)", "&Next sheet": "下一張(&N)", "Zoom &in": "放大(&I)", "Zoom &out": "縮小(&O)",
-    "&High contrast": "高對比(&H)", "Print preview to P&DF...": "將預覽列印為 PDF(&D)...", "Preview controls": "預覽控制",
+    "&High contrast": "高對比(&H)", "Print preview to P&DF...": "將預覽列印為 PDF(&D)...", "Preview controls": "預覽控制", "Preview view controls": "預覽顯示控制", "View": "檢視",
     "Preview status": "預覽狀態", "Print text": "明眼字",
     "One paragraph per line: # for headings, - for list items, *italic*, **bold**": "每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**",
     "Paper": "紙張", "Width": "寬度", "mm": "mm", "Height": "高度", "Left margin": "左邊界", "Top margin": "上邊界",

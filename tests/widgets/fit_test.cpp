@@ -16,6 +16,8 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QTabBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTranslator>
 #include <QtTest>
 
@@ -82,6 +84,11 @@ QStringList clipped(QWidget* root) {
         if (!w->isVisible() || w->width() <= 1 || !drawn(root, w)) continue;
         if (auto* chart = qobject_cast<QChartView*>(w)) {
             clipped_in_chart(chart, out);
+        } else if (auto* bar = qobject_cast<QToolBar*>(w)) {
+            // Actions that do not fit go behind the extension button ("»").
+            const auto name = QStringLiteral("qt_toolbar_ext_button");
+            for (auto* more : bar->findChildren<QToolButton*>(name, Qt::FindDirectChildrenOnly))
+                if (more->isVisible()) out << QStringLiteral("QToolBar '%1' hides actions behind \u00bb").arg(bar->objectName());
         } else if (auto* l = qobject_cast<QLabel*>(w)) {
             if (l->wordWrap() || l->text().isEmpty()) continue;
             const int need = l->minimumSizeHint().width();

@@ -24,6 +24,20 @@
 using namespace tactus;
 using namespace tactus::gui;
 
+namespace {
+
+// The height a fresh word-wrapped label of the same font needs for this text
+// at this width (a fresh one: no size cached at another width).
+int needed_height(const QLabel* shown) {
+    QLabel probe;
+    probe.setWordWrap(true);
+    probe.setFont(shown->font());
+    probe.setText(shown->text());
+    return probe.heightForWidth(shown->width());
+}
+
+}  // namespace
+
 class MainWindowTest : public QObject {
     Q_OBJECT
     QTemporaryDir dir;
@@ -101,8 +115,30 @@ private Q_SLOTS:
         QVERIFY2(!m.intersects(p), "the message runs into the position");
         // Whole: wider than a line of the bar, so it wraps, and every line has room.
         QVERIFY(message->fontMetrics().horizontalAdvance(message->text()) > message->width());
-        QVERIFY2(message->height() >= message->heightForWidth(message->width()),
-                 qPrintable(QStringLiteral("needs %1 px of height, has %2").arg(message->heightForWidth(message->width())).arg(message->height())));
+        QVERIFY2(message->height() >= needed_height(message),
+                 qPrintable(QStringLiteral("needs %1 px of height, has %2").arg(needed_height(message)).arg(message->height())));
+    }
+
+    // A message laid out while the window was narrow left the bar five lines
+    // tall for every later one-line message (QLabel's cached height).
+    void a_short_message_after_a_narrow_start_takes_one_line() {
+        MainWindow w;
+        w.set_interactive(false);
+        // Before the window is shown, as when the app starts with a table
+        // option: the label is still at its first, narrow size.
+        w.set_table(QStringLiteral("en-ueb-g1.ctb"));
+        w.resize(1200, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(50);
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));  // "Opened welcome.md: 1 sheet(s)"
+        QTest::qWait(50);
+        auto* message = w.statusBar()->findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY(message);
+        QVERIFY2(message->text().startsWith(QStringLiteral("Opened")), qPrintable(message->text()));
+        QCOMPARE(message->height(), needed_height(message));
+        QVERIFY2(w.statusBar()->height() < 3 * message->fontMetrics().height(),
+                 qPrintable(QStringLiteral("the status bar is %1 px tall").arg(w.statusBar()->height())));
     }
 
     void exports_match_the_cli_pipeline() {
