@@ -264,7 +264,21 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
             tail.push_back(l);
             if (tail.size() > 12) tail.erase(tail.begin());
         }
-        for (const auto& l : tail) std::cerr << "sim: s51: " << l << "\n";
+        std::string why;
+        for (const auto& l : tail) {
+            std::cerr << "sim: s51: " << l << "\n";
+            // s51's own stop reasons: "Stack overflow, PC=...", an invalid
+            // instruction or address, an error.
+            if (why.empty() && (l.find("overflow") != std::string::npos || l.find("rror") != std::string::npos ||
+                                l.find("nvalid") != std::string::npos))
+                why = l;
+        }
+        // A chip that stops by itself crashed (the firmware never ends its
+        // own run): that is a failure, never a quiet end (issue 12: a stack
+        // overflow looked like a run that just ended).
+        throw CommandFailed(exit_failure, "sim --firmware: the emulated chip stopped by itself after " +
+                                              std::to_string(fired) + " strikes: " +
+                                              (why.empty() ? "s51 gave no reason" : why));
     }
 }
 

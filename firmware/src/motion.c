@@ -79,69 +79,71 @@ void motion_stop(void) {
 static uint8_t t_r, t_k; /* the feed has t_k > t_r: no fast entries */
 static FW_CODE uint8_t *t_slow;
 
-/* Steps with table indices lo..hi, rising. */
-static void emit_up(uint8_t lo, uint8_t hi) {
-    uint8_t top;
-    if (lo < t_k) {
-        top = hi < t_k ? hi : (uint8_t)(t_k - 1);
-        rec(K_SLOW_UP, (uint8_t)(top - lo + 1), (uint16_t)(t_slow + 2 * lo));
-        lo = (uint8_t)(top + 1);
-    }
-    if (lo <= hi && lo >= t_k) rec(K_FAST_UP, (uint8_t)(hi - lo + 1), (uint8_t)(RAMP_FAST_BIAS + lo - t_k));
-}
+/* Steps with table indices lo..hi, rising (lo is a variable: it moves). Macros,
+ * not functions, like emit_dn: a call level here costs 2 bytes of stack on
+ * the main loop's deepest chain (README, "Stack"). */
+#define EMIT_UP(lo, hi)                                                                         \
+    do {                                                                                        \
+        if ((lo) < t_k) {                                                                       \
+            top = (hi) < t_k ? (hi) : (uint8_t)(t_k - 1);                                       \
+            rec(K_SLOW_UP, (uint8_t)(top - (lo) + 1), (uint16_t)(t_slow + 2 * (lo)));           \
+            (lo) = (uint8_t)(top + 1);                                                          \
+        }                                                                                       \
+        if ((lo) <= (hi) && (lo) >= t_k)                                                        \
+            rec(K_FAST_UP, (uint8_t)((hi) - (lo) + 1), (uint8_t)(RAMP_FAST_BIAS + (lo) - t_k)); \
+    } while (0)
 
-/* Steps with table indices hi down to 1. */
-static void emit_dn(uint8_t hi) {
-    uint8_t cnt;
-    if (hi >= t_k) {
-        cnt = (uint8_t)(hi - t_k + 1);
-        rec(K_FAST_DN, cnt, (uint8_t)(RAMP_FAST_BIAS + hi - t_k));
-        hi = (uint8_t)(t_k - 1);
-    }
-    if (hi >= 1) rec(K_SLOW_DN, hi, (uint16_t)(t_slow + 2 * hi));
-}
+/* Steps with table indices hi down to 1 (hi is a variable: it moves). */
+#define EMIT_DN(hi)                                                               \
+    do {                                                                          \
+        if ((hi) >= t_k) {                                                        \
+            rec(K_FAST_DN, (uint8_t)((hi) - t_k + 1), (uint8_t)(RAMP_FAST_BIAS + (hi) - t_k)); \
+            (hi) = (uint8_t)(t_k - 1);                                            \
+        }                                                                         \
+        if ((hi) >= 1) rec(K_SLOW_DN, (hi), (uint16_t)(t_slow + 2 * (hi)));       \
+    } while (0)
 
-static void table_move(uint16_t n) {
-    uint8_t a, hi;
+/* move_carriage and move_feed (motion.h) come here directly, for the same
+ * reason. */
+void move_table(uint8_t feed, uint16_t n) {
+    uint8_t a, hi, lo, top;
+    if (feed) {
+        s_pin = PIN_FSTEP;
+        t_r = FEED_R;
+        t_k = (uint8_t)(FEED_R + 1);
+        t_slow = feed_table;
+    } else {
+        s_pin = PIN_CSTEP;
+        t_r = RAMP_R;
+        t_k = RAMP_K;
+        t_slow = ramp_slow;
+    }
     wp = prog;
     if (n >= 2 * (uint16_t)t_r) {
         /* The whole ramp: up, cruise (if any), down. */
         a = (uint8_t)(t_r + 1);
-        if (a >= 3) emit_up(2, t_r);
+        lo = 2;
+        if (a >= 3) EMIT_UP(lo, t_r);
         if (n > 2 * (uint16_t)t_r) rec(t_k <= t_r ? K_COUNT : K_SCOUNT, n - 2 * (uint16_t)t_r, 0);
         hi = (uint8_t)(t_r - 1);
         if (n - 2 < hi) hi = (uint8_t)(n - 2);
-        emit_dn(hi);
+        EMIT_DN(hi);
     } else {
         /* A truncated ramp: up to step a, then down (n < 2R, so 8 bits). */
         a = (uint8_t)((n + 2) / 2);
-        if (a >= 3) emit_up(2, (uint8_t)(a - 1));
+        lo = 2;
+        hi = (uint8_t)(a - 1);
+        if (a >= 3) EMIT_UP(lo, hi);
         if (n >= 3) {
             hi = (uint8_t)(n - a);
             if (hi > n - 2) hi = (uint8_t)(n - 2);
-            if (hi) emit_dn(hi);
+            if (hi) EMIT_DN(hi);
         }
     }
     rec(K_LAST, n < 2 ? n : 2, 0);
     rec(K_END, 1, 0);
     /* Step 1 comes START_GAP + T[0] after the last event before the move. */
     start((uint16_t)(START_GAP - rd16(t_slow)), n >= 2 ? rd16(t_slow + 2) : 0);
-}
-
-void move_carriage(uint16_t n) {
-    s_pin = PIN_CSTEP;
-    t_r = RAMP_R;
-    t_k = RAMP_K;
-    t_slow = ramp_slow;
-    table_move(n);
-}
-
-void move_feed(uint16_t n) {
-    s_pin = PIN_FSTEP;
-    t_r = FEED_R;
-    t_k = (uint8_t)(FEED_R + 1);
-    t_slow = feed_table;
-    table_move(n);
 }
 
 /* One phase of `kind` and the end. */

@@ -16,9 +16,11 @@ extern volatile __bit mv_done, mv_limit;
 
 void motion_init(void);
 /* A carriage table move of n steps (n >= 1) in the direction already set. */
-void move_carriage(uint16_t n);
+#define move_carriage(n) move_table(0, (n))
 /* A feed table move of n steps. */
-void move_feed(uint16_t n);
+#define move_feed(n) move_table(1, (n))
+/* Both, without a call level between (README, "Stack"). */
+void move_table(uint8_t feed, uint16_t n);
 /* n steps at the homing interval (CONFIGURE) on the pin mask (seek). */
 void move_constant(uint8_t pin, uint16_t n);
 /* Toward the limit switch at the homing interval, at most n steps. */

@@ -123,7 +123,8 @@ _t2_isr:
         mov     _mv_p, _s_kind
         clr     CSTEP
         reti
-14$:    lcall   _nextph
+14$:    clr     CSTEP
+        ljmp    nextph_isr              ; it returns from the interrupt
 12$:    clr     CSTEP                   ; 1
         reti                            ; 2
 
@@ -137,7 +138,8 @@ fastdn: push    ACC
         .include "ramp_dn.inc"
 21$:    djnz    _c_cl, 22$
         djnz    _c_ch, 22$
-        lcall   _nextph
+        clr     CSTEP
+        ljmp    nextph_isr
 22$:    clr     CSTEP
         reti
 
@@ -151,13 +153,29 @@ slow:   push    PSW
         mov     a, _s_kind
         jz      70$                     ; idle after END (s_pin is 0)
         cjne    a, #4, 30$
-        lcall   rd16                    ; SLOW_UP
+        mov     DPL, _s_pl              ; SLOW_UP: RCAP2 := the big-endian reload at
+        mov     DPH, _s_ph              ; s_ph:s_pl, DPTR left at its low byte
+        clr     a                       ; (inline: a call would cost the stack
+        movc    a, @a+dptr              ; 2 bytes, README "Stack")
+        mov     RCAP2H, a
+        inc     dptr
+        clr     a
+        movc    a, @a+dptr
+        mov     RCAP2L, a
         inc     dptr
         mov     _s_pl, DPL
         mov     _s_ph, DPH
         sjmp    50$
 30$:    cjne    a, #5, 40$
-        lcall   rd16                    ; SLOW_DN
+        mov     DPL, _s_pl              ; SLOW_DN: RCAP2 := the big-endian reload at
+        mov     DPH, _s_ph              ; s_ph:s_pl, DPTR left at its low byte
+        clr     a                       ; (inline: a call would cost the stack
+        movc    a, @a+dptr              ; 2 bytes, README "Stack")
+        mov     RCAP2H, a
+        inc     dptr
+        clr     a
+        movc    a, @a+dptr
+        mov     RCAP2L, a
         mov     a, _s_pl
         clr     c
         subb    a, #2
@@ -181,7 +199,17 @@ slow:   push    PSW
         mov     RCAP2H, a
 50$:    djnz    _c_cl, 60$
         djnz    _c_ch, 60$
-        lcall   _nextph
+        ; A phase change: lower the pins, restore everything, and jump to
+        ; nextph_isr, which saves what it touches and returns from the
+        ; interrupt. Its 3 bytes then sit where these 4 were, not on top of
+        ; them (README, "Stack"). The pins fall before the phase is loaded
+        ; instead of after: only the rising edges are timed.
+        anl     P1, #0xFA               ; step pins low (the hammers stay)
+        pop     DPH
+        pop     DPL
+        pop     ACC
+        pop     PSW
+        ljmp    nextph_isr
 60$:    anl     P1, #0xFA               ; step pins low (the hammers stay)
         pop     DPH
         pop     DPL
@@ -233,86 +261,30 @@ _timer_go:
         setb    EA
         ret
 
-; RCAP2 := the big-endian reload at s_ph:s_pl; DPTR is left at its low byte.
-rd16:   mov     DPL, _s_pl
-        mov     DPH, _s_ph
-        clr     a
-        movc    a, @a+dptr
-        mov     RCAP2H, a
-        inc     dptr
-        clr     a
-        movc    a, @a+dptr
-        mov     RCAP2L, a
-        ret
-
-; Loads the phase record at mv_p and advances mv_p. Called from the interrupt
-; when a phase's count runs out, and from motion.c (timer stopped) to load the
-; first phase. Saves everything it touches.
+; Loads the phase record at mv_p and advances mv_p (nextph.inc). Two entries:
+; _nextph for motion.c (timer stopped), which returns; nextph_isr, jumped to
+; by the interrupt once it has restored everything and lowered the step pins,
+; which returns from the interrupt itself. The interrupt's phase change then
+; holds 2 + 3 bytes of stack instead of 2 + 4 + 2 + 3 (README, "Stack").
+; Both save everything they touch.
 _nextph:
         push    PSW
         push    ACC
         mov     PSW, #0                 ; bank 0: R0 is address 0
         push    0
-        mov     r0, _mv_p
-        mov     a, @r0                  ; kind
-        mov     _s_kind, a
-        inc     r0
-        mov     _c_cl, @r0
-        inc     r0
-        mov     _c_ch, @r0
-        inc     r0
-        mov     _s_pl, @r0
-        inc     r0
-        mov     _s_ph, @r0
-        inc     r0
-        mov     _mv_p, r0
-        clr     _m_cr
-        clr     _m_fu
-        setb    _m_slow
-        jnz     1$
-        mov     _s_pin, #0              ; END: the timer runs on (timer_go)
-        setb    _mv_done
-        sjmp    9$
-1$:     cjne    a, #1, 2$
-        mov     _c_ui, _s_pl            ; FAST_UP
-        clr     _m_slow
-        setb    _m_fu
-        ; A cruise next: keep its counts and the record after it in s_pl,
-        ; s_ph, s_kind (unused on the fast paths) for the inline switch.
-        ; A fast descent next (a short move's turn): its count low byte,
-        ; its index and the record after it, the same way.
-        clr     _m_upcr
-        clr     _m_updn
-        mov     a, @r0
-        cjne    a, #2, 8$
-        inc     r0
-        mov     _s_pl, @r0
-        inc     r0
-        mov     _s_ph, @r0
-        mov     a, _mv_p
-        add     a, #10                  ; past the cruise and the descent after it
-        mov     _s_kind, a
-        setb    _m_upcr
-        sjmp    9$
-8$:     cjne    a, #3, 9$
-        inc     r0
-        mov     _s_pl, @r0              ; count low
-        inc     r0
-        inc     r0
-        mov     _s_ph, @r0              ; index + RAMP_FAST_BIAS
-        mov     a, _mv_p
-        add     a, #5
-        mov     _s_kind, a
-        setb    _m_updn
-        sjmp    9$
-2$:     cjne    a, #2, 3$
-        clr     _m_slow                 ; COUNT (carriage)
-        setb    _m_cr
-        sjmp    9$
-3$:     cjne    a, #3, 9$
-        mov     _c_di, _s_pl            ; FAST_DN
-        clr     _m_slow
+        .include "nextph.inc"
 9$:     pop     0
         pop     ACC
         pop     PSW
         ret
+
+nextph_isr:
+        push    PSW
+        push    ACC
+        mov     PSW, #0
+        push    0
+        .include "nextph.inc"
+9$:     pop     0
+        pop     ACC
+        pop     PSW
+        reti

@@ -268,6 +268,25 @@ TEST_F(FirmwareEndToEnd, AResetInTheMiddleOfAPassResumesAtTheExactStrike) {
     EXPECT_EQ(r.log, want);
 }
 
+// A chip that stops by itself crashed, and `sim --firmware` says so and
+// fails: s51 stops on a stack overflow (SP past the top of internal RAM), and
+// under line noise the firmware's deepest call chain with both interrupts
+// nested on it once did (issue 12; firmware/README.md, "Stack"). The run then
+// ended like a finished one: exit 0, the reason only in a log. Here a
+// three-instruction image overflows at once (mov SP,#0xF0; push ACC;
+// sjmp back to the push), beside a map naming the one symbol sim reads.
+TEST_F(FirmwareEndToEnd, AChipThatOverflowsItsStackFailsTheRunLoudly) {
+    const auto ihx = dir_ / "overflow.ihx";
+    std::ofstream(ihx) << ":070000007581F0C0E080FCF7\n:00000001FF\n";
+    std::ofstream(dir_ / "overflow.map") << "     00000030  _fw_sheet\n";
+    Process sim({TACTUS_CLI, "sim", "--firmware", ihx.string(), "--pty"}, Process::Options{{}, true, {}});
+    const auto out = sim.read_all();  // sim ends when s51 does
+    EXPECT_EQ(sim.wait(), 1) << out;  // exit_failure
+    EXPECT_NE(out.find("the emulated chip stopped by itself after 0 strikes: Stack overflow, PC=0x3"),
+              std::string::npos)
+        << out;
+}
+
 // A noisy line between the host and the chip (bytes dropped, flipped and
 // duplicated, each at the rate, both ways): every strike still exactly the plan.
 TEST_F(FirmwareEndToEnd, NoisyLineStrikesExactly) {
