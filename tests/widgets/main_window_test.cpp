@@ -125,8 +125,10 @@ private Q_SLOTS:
         MainWindow w;
         w.set_interactive(false);
         // Before the window is shown, as when the app starts with a table
-        // option: the label is still at its first, narrow size.
+        // option: the label is still at its first, narrow size. The table is
+        // a saved setting: the next tests expect the default back.
         w.set_table(QStringLiteral("en-ueb-g1.ctb"));
+        const auto restore = qScopeGuard([&] { w.set_table(QStringLiteral("en-ueb-g2.ctb")); });
         w.resize(1200, 700);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
