@@ -141,7 +141,10 @@ Result<plan::JobPlan> firmware_plan(const machine::FirmwareTables& t, unsigned s
 TEST(StreamV3, RandomDocumentsRoundTripThroughTheFirmwareRules) {
     const auto t = tables();
     const auto timing = profile::strike_timing(profile::default_profile());
-    for (unsigned seed = 1; seed <= 12; ++seed) {
+    // Four documents of 1 to 4 pages. Each plan tunes the firmware's table
+    // moves again (residuals on their step trains, about 2.5 s of CPU), so
+    // twelve took 34 s here and over 300 s under ASan.
+    for (unsigned seed = 1; seed <= 4; ++seed) {
         auto job = firmware_plan(t, seed, 1 + seed % 4);
         ASSERT_TRUE(job) << job.error().to_string();
         auto s = encode_job_v3(*job, t, timing, 3, {});
