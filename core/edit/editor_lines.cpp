@@ -12,12 +12,7 @@
 namespace tactus::edit {
 namespace {
 
-using exporter::markdown::is_digit;
-using exporter::markdown::is_space;
-using exporter::markdown::kBullet;
-using exporter::markdown::kInlineSpecials;
-using exporter::markdown::ordinal_length;
-using exporter::markdown::trim;
+using namespace exporter::markdown;  // the line syntax the writer and the editor share
 
 // Thematic break: three or more of one of - * _, nothing else but spaces.
 bool is_thematic_break(std::string_view s) {

@@ -8,12 +8,7 @@
 namespace tactus::exporter {
 namespace {
 
-using exporter::markdown::is_digit;
-using exporter::markdown::is_space;
-using exporter::markdown::kBullet;
-using exporter::markdown::kInlineSpecials;
-using exporter::markdown::ordinal_length;
-using exporter::markdown::trim;
+using namespace exporter::markdown;  // the line syntax the writer and the editor share
 
 std::string escape_inline(std::string_view text, bool in_table) {
     std::string out;
