@@ -5,33 +5,14 @@
 #include <cctype>
 
 #include "common/utf8.hpp"
+#include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
 
 namespace tactus::edit {
 namespace {
 
-constexpr std::string_view kInlineSpecials = "\\*_[]<>`&~";
-constexpr std::string_view kBullet = "\u2022 ";  // the bullet sign, as core's importers write it
-
-bool is_space(char c) { return c == ' ' || c == '\t'; }
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (is_space(s.front()) || s.front() == '\r')) s.remove_prefix(1);
-    while (!s.empty() && (is_space(s.back()) || s.back() == '\r' || s.back() == '\n'))
-        s.remove_suffix(1);
-    return s;
-}
-
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-// Length of "12." / "3)" at the start of s, 0 when there is none.
-std::size_t ordinal_length(std::string_view s) {
-    std::size_t i = 0;
-    while (i < s.size() && i < 9 && is_digit(s[i])) ++i;
-    if (i == 0 || i >= s.size() || (s[i] != '.' && s[i] != ')')) return 0;
-    return i + 1;
-}
+using namespace exporter::markdown;  // the line syntax the writer and the editor share
 
 // Thematic break: three or more of one of - * _, nothing else but spaces.
 bool is_thematic_break(std::string_view s) {

@@ -2,11 +2,13 @@
 #pragma once
 // Documents for the tests of the editor's core (core/edit) and of the widgets
 // over it: the bundled samples as editor lines, and a long synthetic book.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
+#include "edit/live_layout.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
 
@@ -19,6 +21,23 @@ inline std::string sample_path(const std::string& name) {
 inline std::vector<std::string> sample_lines(const std::string& name) {
     auto doc = import::import_file(sample_path(name));
     return doc ? edit::render_editor_lines(*doc) : std::vector<std::string>{};
+}
+
+// A live layout of `lines` (a test's setup: throws when the table is missing).
+inline edit::LiveLayout live_layout(const std::vector<std::string>& lines, const std::string& table = "en-ueb-g2.ctb",
+                                    layout::LayoutOptions options = {}, edit::Dialect dialect = edit::Dialect::markdown) {
+    auto l = edit::LiveLayout::create(table, options);
+    if (!l) throw std::runtime_error(l.error().to_string());
+    l->set_dialect(dialect);
+    l->reset(lines);
+    return std::move(*l);
+}
+
+// The layout's editor lines, in order.
+inline std::vector<std::string> lines_of(const edit::LiveLayout& l) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < l.line_count(); ++i) out.push_back(l.line(i));
+    return out;
 }
 
 // The document the editor lines stand for, as core sees it.

@@ -18,17 +18,10 @@ namespace {
 edit::LiveLayout make(const std::vector<std::string>& lines,
                       const std::string& table = "en-ueb-g2.ctb",
                       layout::LayoutOptions options = {}) {
-    auto l = edit::LiveLayout::create(table, options);
-    if (!l) throw std::runtime_error(l.error().to_string());
-    l->reset(lines);
-    return std::move(*l);
+    return test::live_layout(lines, table, options);
 }
 
-std::vector<std::string> lines_of(const edit::LiveLayout& l) {
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < l.line_count(); ++i) out.push_back(l.line(i));
-    return out;
-}
+using test::lines_of;
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "../common/edit_fixtures.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/live_layout.hpp"
 #include "export/text_export.hpp"
@@ -21,18 +22,10 @@ namespace {
 constexpr auto kTable = "en-ueb-g1.ctb";
 
 edit::LiveLayout make(const std::vector<std::string>& lines, edit::Dialect dialect) {
-    auto l = edit::LiveLayout::create(kTable, {});
-    if (!l) throw std::runtime_error(l.error().to_string());
-    l->set_dialect(dialect);
-    l->reset(lines);
-    return std::move(*l);
+    return test::live_layout(lines, kTable, {}, dialect);
 }
 
-std::vector<std::string> lines_of(const edit::LiveLayout& l) {
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < l.line_count(); ++i) out.push_back(l.line(i));
-    return out;
-}
+using test::lines_of;
 
 document::Document import_as(const std::string& bytes, const std::string& name) {
     auto doc = import::import_bytes(bytes, name);
