@@ -298,16 +298,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
             pag.add(body);
         }
         // What came before the restart decides the blank line before it.
-        std::optional<document::BlockKind> previous;
-        for (std::size_t j = k; j-- > 0;) {
-            const auto& p = entries_[j];
-            if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
-                p.block->kind == document::BlockKind::braille_page_break)
-                continue;
-            previous = p.block->kind;
-            break;
-        }
-        pag.set_previous_kind(previous);
+        pag.set_previous_kind(previous_kind(k));
     }
     std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();
@@ -421,15 +412,7 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
         const int first = indents.first, runover = indents.runover;
         const bool centre = indents.centred;
         // The paginator's blank line before this block (one rule, in core/layout).
-        std::optional<document::BlockKind> previous;
-        for (std::size_t j = i; j-- > 0;) {
-            const auto& p = entries_[j];
-            if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
-                p.block->kind == document::BlockKind::braille_page_break)
-                continue;
-            previous = p.block->kind;
-            break;
-        }
+        const auto previous = previous_kind(i);
         // As the paginator adds it: never at a page top, and on a page's last
         // body line (or a full page) the page closes instead.
         if (layout::blank_line_before(options_, previous, tb.kind) && line > 0) {
@@ -512,6 +495,17 @@ std::string LiveLayout::print_page_at(std::size_t line) const {
 std::string LiveLayout::back_translate(const document::BrailleLine& cells) const {
     auto text = translator_.back_translate(cells);
     return text ? utf32_to_utf8(*text) : std::string{};
+}
+
+std::optional<document::BlockKind> LiveLayout::previous_kind(std::size_t index) const {
+    for (std::size_t j = index; j-- > 0;) {
+        const auto& p = entries_[j];
+        if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
+            p.block->kind == document::BlockKind::braille_page_break)
+            continue;
+        return p.block->kind;
+    }
+    return std::nullopt;
 }
 
 }  // namespace tactus::edit

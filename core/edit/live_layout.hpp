@@ -113,6 +113,10 @@ private:
     layout::LayoutOptions options_;
     Dialect dialect_ = Dialect::markdown;
     std::vector<Entry> entries_;
+    // The kind of the last laid-out text block before entry `index` (page
+    // breaks and lines in error skipped): what decides the paginator's blank
+    // line before the next block.
+    [[nodiscard]] std::optional<document::BlockKind> previous_kind(std::size_t index) const;
     layout::PagedDocument paged_;
     std::unordered_map<int, document::BrailleLine> numbers_;
 };
