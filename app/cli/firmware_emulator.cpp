@@ -57,15 +57,14 @@ unsigned map_symbol(const fs::path& map, const std::string& symbol) {
                                                                           : ""));
 }
 
-// A child with stdin from /dev/null, stdout and stderr to `log`, in `dir`, niced:
+// A child with stdin from `in`, stdout and stderr to `log`, in `dir`, niced:
 // s51 is CPU-heavy and the machine is shared.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const fs::path& log) {
+pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const fs::path& log, int in) {
     const pid_t pid = fork();
     if (pid != 0) return pid;
     if (chdir(dir.c_str()) != 0) _exit(126);
-    const int null = open("/dev/null", O_RDONLY);
     const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (null >= 0) dup2(null, STDIN_FILENO);
+    if (in >= 0) dup2(in, STDIN_FILENO);
     if (out >= 0) {
         dup2(out, STDOUT_FILENO);
         dup2(out, STDERR_FILENO);
@@ -95,9 +94,10 @@ struct Run {
     pid_t s51 = -1;
     int fifo_in = -1, fifo_out = -1;
     int master = -1, slave_keep = -1;
+    int console[2] = {-1, -1};
     ~Run() {
         stop_child(s51);
-        for (int fd : {fifo_in, fifo_out, master, slave_keep})
+        for (int fd : {fifo_in, fifo_out, master, slave_keep, console[0], console[1]})
             if (fd >= 0) close(fd);
         std::error_code ec;
         if (!dir.empty() && !std::getenv("TACTUS_KEEP_EMULATOR_DIR")) fs::remove_all(dir, ec);
@@ -198,11 +198,21 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
             // removes itself, resets and runs on.
             cmds << "break 0x" << std::hex << strike_fired << std::dec << " " << o.reset_at_strike << "\n"
                  << "commands 1 delete 1 ; reset ; run\n";
-        cmds << "run\n";
+        // `run` returns when the chip stops by itself (a stack overflow, an
+        // invalid instruction); `kill` then ends s51, which the loop below
+        // sees as the chip's own end.
+        cmds << "run\nkill\n";
     }
+    // s51's console on stdin: a pipe held open and never written, so it
+    // reads no command and never sees an end of file. With /dev/null there,
+    // s51 at times (under load, in CI) went on to read its own log as
+    // commands once the chip stopped, and its real stop reason scrolled out
+    // of the log's tail behind the parser errors.
+    if (pipe2(run.console, O_CLOEXEC) != 0)
+        throw CommandFailed(exit_failure, "sim --firmware: cannot make a pipe for the emulator's console");
     run.s51 = spawn({"s51", "-t", "C52", "-X", "11.0592M", "-S", "in=h2t,out=t2h", "-e", "uart0_check_often=1",
                      "-b", "-C", "cmds"},
-                    run.dir, run.dir / "s51.log");
+                    run.dir, run.dir / "s51.log", run.console[0]);
     // The pty a host opens; its slave is held open so the pty outlives a
     // client that closes it. Raw: every byte value passes.
     run.master = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
@@ -257,22 +267,23 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
               << " bytes dropped, flipped or duplicated on the line"
               << (ended ? "; the emulator ended by itself" : "") << "\n";
     if (ended) {
-        // Why: the end of s51's own output (its console and error messages).
+        // Why: s51's first stop reason once the chip ran ("Stack overflow,
+        // PC=...", an invalid instruction or address, an error), looked for
+        // in the whole log; its end is shown as well.
         std::ifstream log(run.dir / "s51.log");
-        std::vector<std::string> tail;
-        for (std::string l; std::getline(log, l);) {
-            tail.push_back(l);
-            if (tail.size() > 12) tail.erase(tail.begin());
-        }
+        std::vector<std::string> lines;
+        for (std::string l; std::getline(log, l);) lines.push_back(l);
         std::string why;
-        for (const auto& l : tail) {
-            std::cerr << "sim: s51: " << l << "\n";
-            // s51's own stop reasons: "Stack overflow, PC=...", an invalid
-            // instruction or address, an error.
-            if (why.empty() && (l.find("overflow") != std::string::npos || l.find("rror") != std::string::npos ||
-                                l.find("nvalid") != std::string::npos))
+        bool running = false;
+        for (const auto& l : lines) {
+            if (l.starts_with("Simulation started")) running = true;
+            if (running && why.empty() &&
+                (l.find("overflow") != std::string::npos || l.find("rror") != std::string::npos ||
+                 l.find("nvalid") != std::string::npos))
                 why = l;
         }
+        for (std::size_t i = lines.size() > 12 ? lines.size() - 12 : 0; i < lines.size(); ++i)
+            std::cerr << "sim: s51: " << lines[i] << "\n";
         // A chip that stops by itself crashed (the firmware never ends its
         // own run): that is a failure, never a quiet end (issue 12: a stack
         // overflow looked like a run that just ended).

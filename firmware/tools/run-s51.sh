@@ -39,9 +39,14 @@ done
 [ -n "$dir" ] || dir=$(mktemp -d /tmp/tactus-s51.XXXXXX)
 mkdir -p "$dir"
 cd "$dir"
-rm -f h2t t2h ttyFW
-mkfifo h2t t2h
+rm -f h2t t2h con ttyFW
+mkfifo h2t t2h con
 exec 3<>h2t 4<>t2h            # hold both FIFOs open, or the opens deadlock
+# s51's stdin console: a FIFO held open here and never written. At an end of
+# file (/dev/null) s51 closes its stdin and stdout descriptors, and files it
+# opens later reuse them: its output then went astray, at times into what it
+# read back as commands.
+exec 5<>con
 {
   # A command file runs before a hex file named on the command line is loaded,
   # so the image is loaded here.
@@ -57,8 +62,10 @@ exec 3<>h2t 4<>t2h            # hold both FIFOs open, or the opens deadlock
   # only while it is not running a command file's run.
   [ -n "$console" ] || echo "run"
   # The emulator build stops the run at JOB_END through the simulator
-  # interface; then print the cycle counters (total, in interrupts) and quit.
-  if [ "$stop" = 1 ]; then echo "timer get"; echo "quit"; fi
+  # interface; then print the cycle counters (total, in interrupts) and end
+  # s51 ("kill": "quit" only leaves this command file, and the stdin console
+  # stays open).
+  if [ "$stop" = 1 ]; then echo "timer get"; echo "kill"; fi
 } > cmds
 pids=()
 cleanup() {
@@ -71,7 +78,7 @@ pids+=($!)
 extra=(-b)                    # batch: no interactive console ...
 [ -n "$console" ] && extra=(-Z "$console")   # ... unless one is asked for
 [ "$stop" = 1 ] && extra+=(-I 'if=xram[0xffff]')
-s51 -t C52 -X 11.0592M -S in=h2t,out=t2h -e 'uart0_check_often=1' "${extra[@]}" -C cmds </dev/null >s51.log 2>&1 &
+s51 -t C52 -X 11.0592M -S in=h2t,out=t2h -e 'uart0_check_often=1' "${extra[@]}" -C cmds <con >s51.log 2>&1 &
 pids+=($!)
 for _ in $(seq 100); do [ -e "$dir/ttyFW" ] && break; sleep 0.05; done
 [ -e "$dir/ttyFW" ] || { echo "run-s51.sh: socat made no pty" >&2; exit 1; }
