@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 
 #include "plan/geometry.hpp"
 #include "motion/motion.hpp"
@@ -94,6 +95,77 @@ profile::ProfileShape feed_shape(const profile::PrinterProfile& p) {
 
 }  // namespace
 
+struct TableEstimates::Entry {
+    std::mutex mutex;
+    std::unordered_map<std::uint32_t, estimate::TuneChoice> moves;
+};
+
+namespace {
+struct SharedTableEstimates {
+    std::mutex mutex;
+    std::vector<std::pair<TableEstimates::Key, std::shared_ptr<TableEstimates::Entry>>> entries;  // oldest first
+};
+SharedTableEstimates& shared_table_estimates() {
+    static SharedTableEstimates s;
+    return s;
+}
+}  // namespace
+
+TableEstimates::Key TableEstimates::key_for(const profile::PrinterProfile& p, const machine::FirmwareTables& t) {
+    Key k;
+    k.carriage = t.carriage;
+    k.settle_ticks = profile::strike_timing(p).settle_ticks;
+    k.steps_per_mm = p.carriage.steps_per_mm;
+    k.dynamics = p.dynamics;
+    k.vibration = p.vibration;
+    k.dwell_s = p.head.dwell_s;
+    return k;
+}
+
+std::shared_ptr<TableEstimates::Entry> TableEstimates::entry(const Key& key) {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    for (const auto& [k, e] : s.entries)
+        if (k == key) return e;
+    if (s.entries.size() >= kMaxKeys) s.entries.erase(s.entries.begin());
+    s.entries.emplace_back(key, std::make_shared<Entry>());
+    return s.entries.back().second;
+}
+
+std::optional<estimate::TuneChoice> TableEstimates::find(Entry& e, std::uint32_t steps) {
+    const std::lock_guard lock(e.mutex);
+    if (auto it = e.moves.find(steps); it != e.moves.end()) return it->second;
+    return std::nullopt;
+}
+
+void TableEstimates::store(Entry& e, const estimate::TuneChoice& c) {
+    const std::lock_guard lock(e.mutex);
+    e.moves.emplace(c.steps, c);
+}
+
+std::size_t TableEstimates::keys() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    return s.entries.size();
+}
+
+std::size_t TableEstimates::moves() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    std::size_t n = 0;
+    for (const auto& [k, e] : s.entries) {
+        const std::lock_guard l(e->mutex);
+        n += e->moves.size();
+    }
+    return n;
+}
+
+void TableEstimates::clear() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    s.entries.clear();
+}
+
 Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
     : p_(p),
       o_(o),
@@ -106,6 +178,7 @@ Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
         // the first move away from it takes up the backlash.
         head_prev_ = 1;
         strike_ = profile::strike_timing(p_);
+        if (o_.share_table_estimates) shared_choice_ = TableEstimates::entry(TableEstimates::key_for(p_, *o_.firmware));
     }
 }
 
@@ -135,6 +208,8 @@ Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const moti
 const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, const motion::StepMove& m) {
     auto it = table_choice_.find(steps);
     if (it != table_choice_.end()) return it->second;
+    if (shared_choice_)
+        if (auto c = TableEstimates::find(*shared_choice_, steps)) return table_choice_.emplace(steps, std::move(*c)).first->second;
     // The head model runs on the step train the firmware fires (its table's
     // step times, the settle at rest after them), not on an ideal S-curve.
     estimate::TuneChoice c;
@@ -144,11 +219,14 @@ const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, cons
     c.settle_s = static_cast<double>(m.settle_ticks) / machine::kTickHz;
     if (steps > 0) {
         const auto train = estimate::step_train_shape(m.segments, p_.carriage.steps_per_mm, m.duration_s);
-        c.residual_um = tuner_->nominal_residual_um(train);
-        c.worst_residual_um = tuner_->worst_residual_um(train);
+        const auto& ringing = tuner_->ringing();
+        const auto res = ringing.from_rest(*ringing.prepare(train));  // one simulation for both
+        c.residual_um = res.nominal_um;
+        c.worst_residual_um = res.worst_um;
     }
     c.within_tolerance = c.worst_residual_um <= p_.vibration.tolerance_um;
     c.why = "the firmware's table move (its ramp table, no choice)";
+    if (shared_choice_) TableEstimates::store(*shared_choice_, c);
     return table_choice_.emplace(steps, std::move(c)).first->second;
 }
 
