@@ -311,15 +311,18 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             motor_step_ += n;
             // Table moves (v3) are not tuned (no shape to choose); their
             // residual is estimated on the table's step train.
-            estimate::TuneChoice choice;
-            choice.within_tolerance = true;
+            double residual_um = 0, worst_residual_um = 0;
+            bool within_tolerance = true;
             Result<motion::StepMove> sm;
             double move_time = 0;
             if (o_.firmware) {
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), {});
                 if (sm) {
                     move_time = sm->duration_s + (n != 0 ? gap : 0.0);
-                    choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
+                    const auto& choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
+                    residual_um = choice.residual_um;
+                    worst_residual_um = choice.worst_residual_um;
+                    within_tolerance = choice.within_tolerance;
                 }
             } else {
                 const auto steps = static_cast<std::uint32_t>(std::abs(n));
@@ -330,7 +333,6 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                     tuned_[steps] = *tuned;
                 }
                 const estimate::TunedMove& tm = *tuned_[steps];
-                choice = tm.choice;
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), tm.shape);
                 if (!sm) return std::unexpected(sm.error());
                 // Carry the ringing through the move and the tuned settle (found
@@ -371,9 +373,9 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                             std::ceil((move_time - tm.base_duration_s) * machine::kTickHz));
                     }
                 }
-                choice.residual_um = res.nominal_um;
-                choice.worst_residual_um = res.worst_um;
-                choice.within_tolerance = res.worst_um <= p_.vibration.tolerance_um;
+                residual_um = res.nominal_um;
+                worst_residual_um = res.worst_um;
+                within_tolerance = res.worst_um <= p_.vibration.tolerance_um;
                 ringing_->dwell();
                 // The controller waits `settle` ticks at rest after the move's last step.
                 sm->settle_ticks = sm->settle_ticks - tm.choice.settle_ticks + static_cast<std::uint32_t>(settle);
@@ -405,11 +407,11 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             s.paper_y_mm = hit.place.paper_y_mm;
             s.carriage_step = motor_step_;
             s.time_s = t;
-            s.residual_um = choice.residual_um;
-            s.worst_residual_um = choice.worst_residual_um;
+            s.residual_um = residual_um;
+            s.worst_residual_um = worst_residual_um;
             totals_.max_residual_um = std::max(totals_.max_residual_um, s.residual_um);
             totals_.max_worst_residual_um = std::max(totals_.max_worst_residual_um, s.worst_residual_um);
-            if (!choice.within_tolerance) ++totals_.strikes_over_tolerance;
+            if (!within_tolerance) ++totals_.strikes_over_tolerance;
             pass.moves.push_back(std::move(*sm));
             pass.strikes.push_back(s);
             t += dwell;
