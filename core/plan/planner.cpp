@@ -218,9 +218,10 @@ const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, cons
     c.duration_s = m.duration_s;
     c.settle_s = static_cast<double>(m.settle_ticks) / machine::kTickHz;
     if (steps > 0) {
-        const auto train = estimate::step_train_shape(m.segments, p_.carriage.steps_per_mm, m.duration_s);
+        // The step train (estimate::step_train_shape) by runs of equal intervals.
         const auto& ringing = tuner_->ringing();
-        const auto res = ringing.from_rest(*ringing.prepare(train));  // one simulation for both
+        const auto res =
+            ringing.from_rest(*ringing.prepare_step_train(m.segments, p_.carriage.steps_per_mm, m.duration_s));
         c.residual_um = res.nominal_um;
         c.worst_residual_um = res.worst_um;
     }
