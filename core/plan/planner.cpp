@@ -15,15 +15,17 @@
 #include "profile/profile_json.hpp"
 
 namespace tactus::plan {
-namespace {
 
 // One dot to strike, with where the feed and the head must stand for it.
-struct Hit {
-    std::int32_t feed_step;
-    std::int32_t head_step;
-    Side side;
+struct Planner::Hit {
+    std::int32_t feed_step = 0;
+    std::int32_t head_step = 0;
+    Side side = Side::front;
     DotPlace place;
 };
+
+namespace {
+using Hit = Planner::Hit;
 
 Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& page, std::size_t index) {
     const auto& g = p.geometry;
@@ -49,10 +51,50 @@ Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& pa
     return {};
 }
 
+Hit make_hit(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed,
+             Side side, int line, int cell, int dot) {
+    const auto place = dot_place(p, side, line, cell, dot);
+    return {feed.steps_for(place.paper_y_mm),
+            carriage.steps_for(carriage_target_mm(p, hammer_for(side), place.paper_x_mm)), side, place};
+}
+
+}  // namespace
+
+// Every dot position of the profile's page on either side, computed once per
+// planner (the same make_hit, so the same numbers): a sheet's dots are then
+// looked up, not placed again.
+struct Planner::HitTable {
+    int lines = 0, cells = 0;
+    std::vector<Hit> hits[2];  // [side][(line * cells + cell) * 8 + dot - 1]
+    HitTable(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed)
+        : lines(std::max(0, p.geometry.lines_per_page)), cells(std::max(0, p.geometry.cells_per_line)) {
+        const int dots = p.geometry.eight_dot ? 8 : 6;
+        for (Side side : {Side::front, Side::back}) {
+            auto& v = hits[side == Side::front ? 0 : 1];
+            v.resize(static_cast<std::size_t>(lines) * static_cast<std::size_t>(cells) * 8);
+            for (int l = 0; l < lines; ++l)
+                for (int c = 0; c < cells; ++c)
+                    for (int d = 1; d <= dots; ++d)
+                        v[static_cast<std::size_t>((l * cells + c) * 8 + d - 1)] =
+                            make_hit(p, carriage, feed, side, l, c, d);
+        }
+    }
+    // The dot's hit; nullptr outside the profile's page (a layout not checked against it).
+    [[nodiscard]] const Hit* find(Side side, std::size_t line, std::size_t cell, int dot) const {
+        if (line >= static_cast<std::size_t>(lines) || cell >= static_cast<std::size_t>(cells) || dot < 1 || dot > 8)
+            return nullptr;
+        return &hits[side == Side::front ? 0 : 1][(line * static_cast<std::size_t>(cells) + cell) * 8 +
+                                                  static_cast<std::size_t>(dot - 1)];
+    }
+};
+
+namespace {
+
 // Every dot of one sheet, sorted by feed position then carriage position.
 Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
                                       std::size_t sheet_number, const motion::StepAxis& carriage,
-                                      const motion::StepAxis& feed, bool check) {
+                                      const motion::StepAxis& feed, bool check,
+                                      const Planner::HitTable* table = nullptr) {
     std::vector<Hit> hits;
     const layout::Sheet sheet = doc.sheet(sheet_number);
     const int dots = p.geometry.eight_dot ? 8 : 6;
@@ -61,7 +103,6 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
         const auto index = static_cast<std::size_t>(page - doc.pages.data());
         if (check)
             if (auto r = check_page(p, *page, index); !r) return std::unexpected(r.error());
-        const Hammer h = hammer_for(side);
         for (std::size_t l = 0; l < page->lines.size(); ++l) {
             const auto& line = page->lines[l];
             for (std::size_t c = 0; c < line.size(); ++c) {
@@ -69,10 +110,10 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
                 if (cell.blank()) continue;
                 for (int d = 1; d <= dots; ++d) {
                     if (!cell.has_dot(d)) continue;
-                    const auto place = dot_place(p, side, static_cast<int>(l), static_cast<int>(c), d);
-                    hits.push_back({feed.steps_for(place.paper_y_mm),
-                                    carriage.steps_for(carriage_target_mm(p, h, place.paper_x_mm)),
-                                    side, place});
+                    if (const Hit* known = table ? table->find(side, l, c, d) : nullptr)
+                        hits.push_back(*known);
+                    else
+                        hits.push_back(make_hit(p, carriage, feed, side, static_cast<int>(l), static_cast<int>(c), d));
                 }
             }
         }
@@ -255,7 +296,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
                     "field geometry.interpoint");
-    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout);
+    if (!hit_table_) hit_table_ = std::make_shared<const HitTable>(p_, carriage_axis_, feed_axis_);
+    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout, hit_table_.get());
     if (!hits) return std::unexpected(hits.error());
     SheetPlan sheet;
     sheet.index = sheet_number;

@@ -87,6 +87,10 @@ public:
     [[nodiscard]] estimate::MoveTuner& tuner() { return *tuner_; }
     [[nodiscard]] const profile::PrinterProfile& profile() const { return p_; }
 
+    // Internal to planner.cpp (declared here for its free functions).
+    struct Hit;
+    struct HitTable;
+
 private:
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
     Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
@@ -95,6 +99,7 @@ private:
 
     profile::PrinterProfile p_;
     PlanOptions o_;
+    std::shared_ptr<const HitTable> hit_table_;  // where each dot of a page is struck, computed once
     std::unique_ptr<estimate::MoveTuner> tuner_;
     // The head's ringing on every model of the band, carried from strike to
     // strike (not for table moves, whose residuals are not estimated).
