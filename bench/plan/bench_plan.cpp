@@ -22,6 +22,18 @@ namespace {
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+// CPU seconds of this process and of its children that have ended (the
+// layout translates in forked worker processes, reaped when it returns).
+double cpu_seconds() {
+    const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+    double total = 0;
+    for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+        rusage u{};
+        ::getrusage(who, &u);
+        total += s(u.ru_utime) + s(u.ru_stime);
+    }
+    return total;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -40,7 +52,7 @@ int main(int argc, char** argv) {
     // compared: on a shared machine a single run of either can be slowed by
     // other work, and alternating exposes both to the same conditions.
     constexpr int rounds = 3;
-    double layout_s = 1e300, plan_s = 1e300;
+    double layout_s = 1e300, plan_s = 1e300, layout_cpu = 1e300, plan_cpu = 1e300;
     std::optional<layout::PagedDocument> doc;
     std::optional<plan::Planner> planner;
     std::size_t passes = 0, max_pass_bytes = 0;
@@ -48,16 +60,19 @@ int main(int argc, char** argv) {
         doc.reset();  // one book in memory at a time
         planner.reset();
         auto t0 = Clock::now();
+        double c0 = cpu_seconds();
         auto laid = pipeline::lay_out_file(argv[1], options);
         if (!laid) {
             std::fprintf(stderr, "%s\n", laid.error().to_string().c_str());
             return 1;
         }
         layout_s = std::min(layout_s, seconds_since(t0));
+        layout_cpu = std::min(layout_cpu, cpu_seconds() - c0);
         doc.emplace(std::move(*laid));
 
         // The whole book, one sheet at a time (as the CLI and the spool do).
         t0 = Clock::now();
+        c0 = cpu_seconds();
         auto made = plan::Planner::create(prof);
         if (!made) return 1;
         passes = 0, max_pass_bytes = 0;
@@ -71,6 +86,7 @@ int main(int argc, char** argv) {
             for (const auto& p : sheet->passes) max_pass_bytes = std::max(max_pass_bytes, p.segments * 6);
         }
         plan_s = std::min(plan_s, seconds_since(t0));
+        plan_cpu = std::min(plan_cpu, cpu_seconds() - c0);
         planner.emplace(std::move(*made));
     }
     const plan::JobPlan t = planner->totals();  // a copy: the warm single-page runs below add to the totals
@@ -108,6 +124,10 @@ int main(int argc, char** argv) {
     std::printf("plan + estimate:      %.3f s = %.0f pages/s (best of %d)\n", plan_s,
                 static_cast<double>(doc->pages.size()) / plan_s, rounds);
     std::printf("ratio plan/layout:    %.3f (goal <= 1.0)\n", plan_s / layout_s);
+    // CPU time is steadier on a shared machine; the layout's includes its
+    // translation workers (processes, run in parallel: its wall time is less).
+    std::printf("cpu layout, plan:     %.3f s, %.3f s (best of %d): plan/layout %.3f\n", layout_cpu, plan_cpu, rounds,
+                plan_cpu / layout_cpu);
     std::printf("one page (cold):      %.2f ms = %.0f pages/s; embosses in %.1f s\n", page_s * 1e3,
                 1.0 / page_s, page_emboss);
     std::printf("one page (warm):      %.3f ms = %.0f pages/s\n", page_warm_s * 1e3, 1.0 / page_warm_s);

@@ -6,13 +6,20 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <tuple>
 #include <unordered_map>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "estimate/simulate.hpp"
 #include "machine/limits.hpp"
+#include "motion/steps.hpp"
 
 namespace tactus::estimate {
 namespace {
@@ -22,6 +29,11 @@ constexpr int kBits = 32;     // exp(A 2^k ticks), k < kBits: rests up to 4660 s
 using Mat4 = Eigen::Matrix4d;
 using Vec4 = Eigen::Vector4d;
 using Rows = Eigen::Matrix<double, kSamples + 1, 4>;
+// The plant and a straight-line command u = p + v t as one system: state
+// (x, u, u'), 4 + 2 padded states. exp of it over dt gives, in its top rows,
+// x(dt) = Phi x + G0 p + G1 v.
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 // Every model padded to four states: the unused ones have no dynamics and stay 0.
 struct Model {
@@ -59,11 +71,31 @@ Model make_model(const StateSpace& s, double dwell_s) {
     return m;
 }
 
+// The hot loops of planning (per strike, per machine) below are written out
+// so that every element is computed by the same operations in the same order
+// as the plain loop (one IEEE multiply or add at a time, no reassociation),
+// two elements per SSE2 instruction: the same bits, in half the instructions.
 double error_um(const Model& m, const Vec4& z) {
     const double* c = m.rows.data();  // column-major, kSamples + 1 rows
     constexpr int n = kSamples + 1;
     double worst = 0;
-    for (int r = 0; r < n; ++r)
+    int r = 0;
+#if defined(__SSE2__)
+    const __m128d z0 = _mm_set1_pd(z[0]), z1 = _mm_set1_pd(z[1]), z2 = _mm_set1_pd(z[2]), z3 = _mm_set1_pd(z[3]);
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d w = _mm_setzero_pd();
+    for (; r + 1 < n; r += 2) {
+        __m128d e = _mm_mul_pd(_mm_loadu_pd(c + r), z0);
+        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + n + r), z1));
+        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 2 * n + r), z2));
+        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 3 * n + r), z3));
+        w = _mm_max_pd(w, _mm_andnot_pd(sign, e));  // |e|
+    }
+    alignas(16) double lanes[2];
+    _mm_store_pd(lanes, w);
+    worst = std::max(lanes[0], lanes[1]);
+#endif
+    for (; r < n; ++r)
         worst = std::max(worst, std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3]));
     return 1000.0 * worst;
 }
@@ -98,6 +130,9 @@ struct Ringing::Impl {
     std::vector<Vec4> z;
     bool dwell_pending = false;  // the last dwell not yet applied (folded into the next move)
     std::unordered_map<std::uint64_t, std::vector<Mat4>> rests;
+    // prepare_step_train: per (kind of piece, interval in ticks, steps per mm),
+    // per model, the piece's affine map raised to 1, 2, 4, ... (grown on demand).
+    mutable std::map<std::tuple<int, std::int64_t, std::uint64_t>, std::vector<std::vector<Mat6>>> train_powers;
     mutable std::size_t first = 1;  // the band model that failed (or was worst) last: tried first
     mutable std::size_t worst_model = 1;
 
@@ -216,6 +251,115 @@ std::shared_ptr<const Ringing::Move> Ringing::prepare(const motion::MoveShape& s
     return mv;
 }
 
+namespace {
+
+Mat6 line_generator(const Model& m) {
+    Mat6 g = Mat6::Zero();
+    g.topLeftCorner<4, 4>() = m.a;
+    for (int i = 0; i < m.n; ++i) g(i, 4) = m.space.b[static_cast<std::size_t>(i)];
+    g(4, 5) = 1.0;
+    return g;
+}
+
+// The affine map of one straight piece lasting dt (s) at velocity v on
+// X = (x, p, 1): x <- Phi x + G0 p + G1 v, p <- p + v dt.
+Mat6 piece_map(const Mat6& e, double v, double dp) {
+    Mat6 mm = Mat6::Zero();
+    mm.topLeftCorner<4, 4>() = e.topLeftCorner<4, 4>();
+    mm.block<4, 1>(0, 4) = e.block<4, 1>(0, 4);
+    mm.block<4, 1>(0, 5) = e.block<4, 1>(0, 5) * v;
+    mm(4, 4) = 1.0;
+    mm(4, 5) = dp;
+    mm(5, 5) = 1.0;
+    return mm;
+}
+
+}  // namespace
+
+std::shared_ptr<const Ringing::Move> Ringing::prepare_step_train(std::span<const motion::StepSegment> segments,
+                                                                 double steps_per_mm, double duration_s) const {
+    const auto ticks = motion::expand_steps(segments);
+    const double f = machine::kTickHz;
+    const double step = 1.0 / steps_per_mm;
+    const double distance = static_cast<double>(ticks.size()) / steps_per_mm;
+    // The pieces of step_train_shape: from rest at 0 to the middle of the first
+    // step at its tick; between steps, one step in each interval (runs of equal
+    // intervals together); the last half step as long as half the interval
+    // before it; then at rest on the end until the duration.
+    struct Run {
+        double dt;       // s
+        double v;        // mm/s
+        double dp;       // mm per piece
+        std::size_t n;   // pieces
+        std::int64_t key;  // the interval in ticks (cached exponentials), or -1
+    };
+    std::vector<Run> runs;
+    double t = 0, p = 0;
+    if (!ticks.empty()) {
+        const double t0 = static_cast<double>(ticks[0]) / f;
+        if (t0 > t) runs.push_back({t0, (0.5 * step) / t0, 0.5 * step, 1, ticks[0]});
+        t = t0;
+        p = 0.5 * step;
+        for (std::size_t k = 1; k < ticks.size();) {
+            const std::int64_t iv = ticks[k] - ticks[k - 1];
+            std::size_t e = k + 1;
+            while (e < ticks.size() && ticks[e] - ticks[e - 1] == iv) ++e;
+            const double dt = static_cast<double>(iv) / f;
+            runs.push_back({dt, step / dt, step, e - k, iv});
+            t = static_cast<double>(ticks[e - 1]) / f;
+            p += step * static_cast<double>(e - k);
+            k = e;
+        }
+        const double last = ticks.size() > 1 ? static_cast<double>(ticks.back() - ticks[ticks.size() - 2]) / f : 1e-3;
+        const double dt = 0.5 * last;
+        runs.push_back({dt, (distance - p) / dt, distance - p, 1, -1});
+        t += dt;
+    }
+    const double duration = std::max(duration_s, t);
+    if (duration > t) runs.push_back({duration - t, 0.0, 0.0, 1, -1});
+
+    auto& s = *impl_;
+    if (s.train_powers.size() > 4096) s.train_powers.clear();  // bounded: a table has a few hundred intervals
+    // The powers of each run's map, per model: cached for the pieces between
+    // steps and the first (the same for every move of a table), computed for
+    // the last half step and the rest.
+    std::vector<std::vector<std::vector<Mat6>>*> powers(runs.size(), nullptr);
+    std::vector<std::vector<std::vector<Mat6>>> own(runs.size());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const auto& r = runs[i];
+        if (r.key >= 0) {
+            const std::tuple key{i == 0 ? 0 : 1, r.key, std::bit_cast<std::uint64_t>(steps_per_mm)};
+            powers[i] = &s.train_powers[key];
+        } else {
+            powers[i] = &own[i];
+        }
+        if (powers[i]->empty()) {
+            for (const auto& m : s.models)
+                powers[i]->push_back({piece_map(Mat6((line_generator(m) * r.dt).exp()), r.v, r.dp)});
+        }
+    }
+    auto mv = std::make_shared<Move>();
+    for (std::size_t k = 0; k < s.models.size(); ++k) {
+        const Model& m = s.models[k];
+        Vec6 x = Vec6::Zero();
+        x(5) = 1.0;  // X = (x, p, 1), p = 0 at the start
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+            auto& pw = (*powers[i])[k];
+            std::size_t j = 0;
+            for (std::size_t n = runs[i].n; n != 0; n >>= 1, ++j) {
+                if (pw.size() <= j) pw.push_back(pw.back() * pw.back());
+                if (n & 1U) x = pw[j] * x;
+            }
+        }
+        Vec4 w = -m.eq * distance;
+        w += x.head<4>();
+        mv->w.push_back(w);
+        mv->phi.push_back(expm(m.a, duration));
+        mv->phi_d.push_back(mv->phi.back() * m.dwell);
+    }
+    return mv;
+}
+
 std::shared_ptr<const Ringing::Move> Ringing::then_rest(const Move& mv, std::uint64_t ticks) const {
     auto out = std::make_shared<Move>(mv);
     for (std::size_t i = 0; i < impl_->models.size(); ++i) {
@@ -242,11 +386,24 @@ void Ringing::move(const Move& mv, int dir) {
     // multiply-adds over the columns (Eigen's product was 3x slower here).
     for (std::size_t i = 0; i < s.z.size(); ++i) {
         const double* m = phi[i].data();  // column-major
-        const double z0 = s.z[i][0], z1 = s.z[i][1], z2 = s.z[i][2], z3 = s.z[i][3];
         const double* w = mv.w[i].data();
         double* out = s.z[i].data();
+#if defined(__SSE2__)
+        const __m128d z0 = _mm_set1_pd(out[0]), z1 = _mm_set1_pd(out[1]), z2 = _mm_set1_pd(out[2]),
+                      z3 = _mm_set1_pd(out[3]), sg = _mm_set1_pd(sign);
+        for (int r = 0; r < 4; r += 2) {
+            __m128d e = _mm_mul_pd(_mm_loadu_pd(m + r), z0);
+            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 4 + r), z1));
+            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 8 + r), z2));
+            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 12 + r), z3));
+            e = _mm_add_pd(e, _mm_mul_pd(sg, _mm_loadu_pd(w + r)));
+            _mm_storeu_pd(out + r, e);
+        }
+#else
+        const double z0 = out[0], z1 = out[1], z2 = out[2], z3 = out[3];
         for (int r = 0; r < 4; ++r)
             out[r] = m[r] * z0 + m[4 + r] * z1 + m[8 + r] * z2 + m[12 + r] * z3 + sign * w[r];
+#endif
     }
     s.dwell_pending = false;
 }

@@ -42,13 +42,20 @@ struct MoveSimulator::Impl {
         c = to_vec(s.c).transpose();
     }
 
+    // The last duration looked up: a step train's cruise repeats one interval.
+    std::uint64_t last_key = 0;
+    const Eigen::MatrixXd* last_phi = nullptr;
+
     const Eigen::MatrixXd& phi(double dt) {
         const auto key = std::bit_cast<std::uint64_t>(dt);
+        if (last_phi && key == last_key) return *last_phi;
         auto it = phi_cache.find(key);
         if (it == phi_cache.end()) {
             if (phi_cache.size() > 4096) phi_cache.clear();  // bounded: durations repeat a lot
             it = phi_cache.emplace(key, (m * dt).exp()).first;
         }
+        last_key = key;
+        last_phi = &it->second;  // node-based map: stable until the next clear, which only a miss does
         return it->second;
     }
 
@@ -67,10 +74,14 @@ struct MoveSimulator::Impl {
                 out->push_back(c * zz.head(n));
             }
         };
+        // The product into a second vector, then a swap: `z = phi * z` would
+        // allocate a temporary per piece (a step train has one piece per step).
+        Eigen::VectorXd next(z.size());
         for (const auto& p : move.pieces) {
             seed(p.d);
             emit(p.t0, p.t0 + p.dt);
-            z = phi(p.dt) * z;
+            next.noalias() = phi(p.dt) * z;
+            z.swap(next);
         }
         seed(motion::Derivs{move.distance, 0, 0, 0, 0, 0});
         emit(move.duration, std::numeric_limits<double>::infinity());

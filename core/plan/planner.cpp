@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 
 #include "plan/geometry.hpp"
 #include "motion/motion.hpp"
@@ -14,15 +15,17 @@
 #include "profile/profile_json.hpp"
 
 namespace tactus::plan {
-namespace {
 
 // One dot to strike, with where the feed and the head must stand for it.
-struct Hit {
-    std::int32_t feed_step;
-    std::int32_t head_step;
-    Side side;
+struct Planner::Hit {
+    std::int32_t feed_step = 0;
+    std::int32_t head_step = 0;
+    Side side = Side::front;
     DotPlace place;
 };
+
+namespace {
+using Hit = Planner::Hit;
 
 Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& page, std::size_t index) {
     const auto& g = p.geometry;
@@ -48,10 +51,50 @@ Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& pa
     return {};
 }
 
+Hit make_hit(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed,
+             Side side, int line, int cell, int dot) {
+    const auto place = dot_place(p, side, line, cell, dot);
+    return {feed.steps_for(place.paper_y_mm),
+            carriage.steps_for(carriage_target_mm(p, hammer_for(side), place.paper_x_mm)), side, place};
+}
+
+}  // namespace
+
+// Every dot position of the profile's page on either side, computed once per
+// planner (the same make_hit, so the same numbers): a sheet's dots are then
+// looked up, not placed again.
+struct Planner::HitTable {
+    int lines = 0, cells = 0;
+    std::vector<Hit> hits[2];  // [side][(line * cells + cell) * 8 + dot - 1]
+    HitTable(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed)
+        : lines(std::max(0, p.geometry.lines_per_page)), cells(std::max(0, p.geometry.cells_per_line)) {
+        const int dots = p.geometry.eight_dot ? 8 : 6;
+        for (Side side : {Side::front, Side::back}) {
+            auto& v = hits[side == Side::front ? 0 : 1];
+            v.resize(static_cast<std::size_t>(lines) * static_cast<std::size_t>(cells) * 8);
+            for (int l = 0; l < lines; ++l)
+                for (int c = 0; c < cells; ++c)
+                    for (int d = 1; d <= dots; ++d)
+                        v[static_cast<std::size_t>((l * cells + c) * 8 + d - 1)] =
+                            make_hit(p, carriage, feed, side, l, c, d);
+        }
+    }
+    // The dot's hit; nullptr outside the profile's page (a layout not checked against it).
+    [[nodiscard]] const Hit* find(Side side, std::size_t line, std::size_t cell, int dot) const {
+        if (line >= static_cast<std::size_t>(lines) || cell >= static_cast<std::size_t>(cells) || dot < 1 || dot > 8)
+            return nullptr;
+        return &hits[side == Side::front ? 0 : 1][(line * static_cast<std::size_t>(cells) + cell) * 8 +
+                                                  static_cast<std::size_t>(dot - 1)];
+    }
+};
+
+namespace {
+
 // Every dot of one sheet, sorted by feed position then carriage position.
 Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
                                       std::size_t sheet_number, const motion::StepAxis& carriage,
-                                      const motion::StepAxis& feed, bool check) {
+                                      const motion::StepAxis& feed, bool check,
+                                      const Planner::HitTable* table = nullptr) {
     std::vector<Hit> hits;
     const layout::Sheet sheet = doc.sheet(sheet_number);
     const int dots = p.geometry.eight_dot ? 8 : 6;
@@ -60,7 +103,6 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
         const auto index = static_cast<std::size_t>(page - doc.pages.data());
         if (check)
             if (auto r = check_page(p, *page, index); !r) return std::unexpected(r.error());
-        const Hammer h = hammer_for(side);
         for (std::size_t l = 0; l < page->lines.size(); ++l) {
             const auto& line = page->lines[l];
             for (std::size_t c = 0; c < line.size(); ++c) {
@@ -68,10 +110,10 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
                 if (cell.blank()) continue;
                 for (int d = 1; d <= dots; ++d) {
                     if (!cell.has_dot(d)) continue;
-                    const auto place = dot_place(p, side, static_cast<int>(l), static_cast<int>(c), d);
-                    hits.push_back({feed.steps_for(place.paper_y_mm),
-                                    carriage.steps_for(carriage_target_mm(p, h, place.paper_x_mm)),
-                                    side, place});
+                    if (const Hit* known = table ? table->find(side, l, c, d) : nullptr)
+                        hits.push_back(*known);
+                    else
+                        hits.push_back(make_hit(p, carriage, feed, side, static_cast<int>(l), static_cast<int>(c), d));
                 }
             }
         }
@@ -94,6 +136,77 @@ profile::ProfileShape feed_shape(const profile::PrinterProfile& p) {
 
 }  // namespace
 
+struct TableEstimates::Entry {
+    std::mutex mutex;
+    std::unordered_map<std::uint32_t, estimate::TuneChoice> moves;
+};
+
+namespace {
+struct SharedTableEstimates {
+    std::mutex mutex;
+    std::vector<std::pair<TableEstimates::Key, std::shared_ptr<TableEstimates::Entry>>> entries;  // oldest first
+};
+SharedTableEstimates& shared_table_estimates() {
+    static SharedTableEstimates s;
+    return s;
+}
+}  // namespace
+
+TableEstimates::Key TableEstimates::key_for(const profile::PrinterProfile& p, const machine::FirmwareTables& t) {
+    Key k;
+    k.carriage = t.carriage;
+    k.settle_ticks = profile::strike_timing(p).settle_ticks;
+    k.steps_per_mm = p.carriage.steps_per_mm;
+    k.dynamics = p.dynamics;
+    k.vibration = p.vibration;
+    k.dwell_s = p.head.dwell_s;
+    return k;
+}
+
+std::shared_ptr<TableEstimates::Entry> TableEstimates::entry(const Key& key) {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    for (const auto& [k, e] : s.entries)
+        if (k == key) return e;
+    if (s.entries.size() >= kMaxKeys) s.entries.erase(s.entries.begin());
+    s.entries.emplace_back(key, std::make_shared<Entry>());
+    return s.entries.back().second;
+}
+
+std::optional<estimate::TuneChoice> TableEstimates::find(Entry& e, std::uint32_t steps) {
+    const std::lock_guard lock(e.mutex);
+    if (auto it = e.moves.find(steps); it != e.moves.end()) return it->second;
+    return std::nullopt;
+}
+
+void TableEstimates::store(Entry& e, const estimate::TuneChoice& c) {
+    const std::lock_guard lock(e.mutex);
+    e.moves.emplace(c.steps, c);
+}
+
+std::size_t TableEstimates::keys() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    return s.entries.size();
+}
+
+std::size_t TableEstimates::moves() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    std::size_t n = 0;
+    for (const auto& [k, e] : s.entries) {
+        const std::lock_guard l(e->mutex);
+        n += e->moves.size();
+    }
+    return n;
+}
+
+void TableEstimates::clear() {
+    auto& s = shared_table_estimates();
+    const std::lock_guard lock(s.mutex);
+    s.entries.clear();
+}
+
 Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
     : p_(p),
       o_(o),
@@ -106,6 +219,7 @@ Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
         // the first move away from it takes up the backlash.
         head_prev_ = 1;
         strike_ = profile::strike_timing(p_);
+        if (o_.share_table_estimates) shared_choice_ = TableEstimates::entry(TableEstimates::key_for(p_, *o_.firmware));
     }
 }
 
@@ -135,6 +249,8 @@ Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const moti
 const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, const motion::StepMove& m) {
     auto it = table_choice_.find(steps);
     if (it != table_choice_.end()) return it->second;
+    if (shared_choice_)
+        if (auto c = TableEstimates::find(*shared_choice_, steps)) return table_choice_.emplace(steps, std::move(*c)).first->second;
     // The head model runs on the step train the firmware fires (its table's
     // step times, the settle at rest after them), not on an ideal S-curve.
     estimate::TuneChoice c;
@@ -143,12 +259,16 @@ const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, cons
     c.duration_s = m.duration_s;
     c.settle_s = static_cast<double>(m.settle_ticks) / machine::kTickHz;
     if (steps > 0) {
-        const auto train = estimate::step_train_shape(m.segments, p_.carriage.steps_per_mm, m.duration_s);
-        c.residual_um = tuner_->nominal_residual_um(train);
-        c.worst_residual_um = tuner_->worst_residual_um(train);
+        // The step train (estimate::step_train_shape) by runs of equal intervals.
+        const auto& ringing = tuner_->ringing();
+        const auto res =
+            ringing.from_rest(*ringing.prepare_step_train(m.segments, p_.carriage.steps_per_mm, m.duration_s));
+        c.residual_um = res.nominal_um;
+        c.worst_residual_um = res.worst_um;
     }
     c.within_tolerance = c.worst_residual_um <= p_.vibration.tolerance_um;
     c.why = "the firmware's table move (its ramp table, no choice)";
+    if (shared_choice_) TableEstimates::store(*shared_choice_, c);
     return table_choice_.emplace(steps, std::move(c)).first->second;
 }
 
@@ -176,7 +296,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
                     "field geometry.interpoint");
-    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout);
+    if (!hit_table_) hit_table_ = std::make_shared<const HitTable>(p_, carriage_axis_, feed_axis_);
+    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout, hit_table_.get());
     if (!hits) return std::unexpected(hits.error());
     SheetPlan sheet;
     sheet.index = sheet_number;
@@ -233,15 +354,18 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             motor_step_ += n;
             // Table moves (v3) are not tuned (no shape to choose); their
             // residual is estimated on the table's step train.
-            estimate::TuneChoice choice;
-            choice.within_tolerance = true;
+            double residual_um = 0, worst_residual_um = 0;
+            bool within_tolerance = true;
             Result<motion::StepMove> sm;
             double move_time = 0;
             if (o_.firmware) {
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), {});
                 if (sm) {
                     move_time = sm->duration_s + (n != 0 ? gap : 0.0);
-                    choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
+                    const auto& choice = table_move_choice(static_cast<std::uint32_t>(std::abs(n)), *sm);
+                    residual_um = choice.residual_um;
+                    worst_residual_um = choice.worst_residual_um;
+                    within_tolerance = choice.within_tolerance;
                 }
             } else {
                 const auto steps = static_cast<std::uint32_t>(std::abs(n));
@@ -252,7 +376,6 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                     tuned_[steps] = *tuned;
                 }
                 const estimate::TunedMove& tm = *tuned_[steps];
-                choice = tm.choice;
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), tm.shape);
                 if (!sm) return std::unexpected(sm.error());
                 // Carry the ringing through the move and the tuned settle (found
@@ -293,9 +416,9 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                             std::ceil((move_time - tm.base_duration_s) * machine::kTickHz));
                     }
                 }
-                choice.residual_um = res.nominal_um;
-                choice.worst_residual_um = res.worst_um;
-                choice.within_tolerance = res.worst_um <= p_.vibration.tolerance_um;
+                residual_um = res.nominal_um;
+                worst_residual_um = res.worst_um;
+                within_tolerance = res.worst_um <= p_.vibration.tolerance_um;
                 ringing_->dwell();
                 // The controller waits `settle` ticks at rest after the move's last step.
                 sm->settle_ticks = sm->settle_ticks - tm.choice.settle_ticks + static_cast<std::uint32_t>(settle);
@@ -327,11 +450,11 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             s.paper_y_mm = hit.place.paper_y_mm;
             s.carriage_step = motor_step_;
             s.time_s = t;
-            s.residual_um = choice.residual_um;
-            s.worst_residual_um = choice.worst_residual_um;
+            s.residual_um = residual_um;
+            s.worst_residual_um = worst_residual_um;
             totals_.max_residual_um = std::max(totals_.max_residual_um, s.residual_um);
             totals_.max_worst_residual_um = std::max(totals_.max_worst_residual_um, s.worst_residual_um);
-            if (!choice.within_tolerance) ++totals_.strikes_over_tolerance;
+            if (!within_tolerance) ++totals_.strikes_over_tolerance;
             pass.moves.push_back(std::move(*sm));
             pass.strikes.push_back(s);
             t += dwell;

@@ -34,8 +34,47 @@ struct PlanOptions {
     // the plan has more passes than this (0: no limit), so a job that cannot
     // be sent costs the memory of this many passes, not of the whole book.
     std::size_t max_passes = 0;
+    // Firmware mode: share the residuals of table moves with every other
+    // Planner of the process that plans with the same carriage table, strike
+    // settle and head model (TableEstimates below). Off: this planner
+    // estimates each table move itself. The plan is the same either way.
+    bool share_table_estimates = true;
 };
 inline constexpr const char* kTooManyPassesWhere = "passes";
+
+// Firmware mode's residual estimates of table moves, shared across plans.
+// Estimating a table move runs every head model of the band over its step
+// train (one piece per step): seconds per document, and the same numbers
+// plan after plan. An entry is keyed by everything the estimate reads: the
+// carriage ramp table, the strike settle, steps per mm, the head dynamics,
+// the vibration band and tolerance, and the hammer dwell; a profile or a
+// table that differs in any of them gets its own entry, never another's.
+// The entries are shared by the planners that use them; the cache keeps the
+// last kMaxKeys keys. Thread-safe.
+class TableEstimates {
+public:
+    struct Key {
+        machine::RampTable carriage;
+        std::uint32_t settle_ticks = 0;
+        double steps_per_mm = 0;
+        profile::Dynamics dynamics;
+        profile::Vibration vibration;
+        double dwell_s = 0;
+        bool operator==(const Key&) const = default;
+    };
+    struct Entry;
+    static constexpr std::size_t kMaxKeys = 8;
+    static Key key_for(const profile::PrinterProfile& p, const machine::FirmwareTables& t);
+    // The entry for `key`, made empty when there is none.
+    static std::shared_ptr<Entry> entry(const Key& key);
+    // Looks up / stores the estimate of a `steps`-step table move in `e`.
+    static std::optional<estimate::TuneChoice> find(Entry& e, std::uint32_t steps);
+    static void store(Entry& e, const estimate::TuneChoice& c);
+    // How many keys the cache holds; how many moves their entries hold.
+    static std::size_t keys();
+    static std::size_t moves();
+    static void clear();
+};
 
 class Planner {
 public:
@@ -48,6 +87,10 @@ public:
     [[nodiscard]] estimate::MoveTuner& tuner() { return *tuner_; }
     [[nodiscard]] const profile::PrinterProfile& profile() const { return p_; }
 
+    // Internal to planner.cpp (declared here for its free functions).
+    struct Hit;
+    struct HitTable;
+
 private:
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
     Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
@@ -56,6 +99,7 @@ private:
 
     profile::PrinterProfile p_;
     PlanOptions o_;
+    std::shared_ptr<const HitTable> hit_table_;  // where each dot of a page is struck, computed once
     std::unique_ptr<estimate::MoveTuner> tuner_;
     // The head's ringing on every model of the band, carried from strike to
     // strike (not for table moves, whose residuals are not estimated).
@@ -65,6 +109,7 @@ private:
     std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
     std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
     std::unordered_map<std::uint32_t, estimate::TuneChoice> table_choice_;  // v3: residuals of table moves
+    std::shared_ptr<TableEstimates::Entry> shared_choice_;                  // v3: the same, shared across plans
     JobPlan totals_;
     // Machine state carried across passes and sheets.
     double clock_s_ = 0;

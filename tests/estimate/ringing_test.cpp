@@ -12,7 +12,9 @@
 #include "estimate/ringing.hpp"
 #include "estimate/simulate.hpp"
 #include "machine/limits.hpp"
+#include "estimate/step_train.hpp"
 #include "motion/motion.hpp"
+#include "motion/steps.hpp"
 
 using namespace tactus;
 using namespace tactus::estimate;
@@ -170,4 +172,55 @@ TEST(Ringing, BandIsAGridWithItsCornersAndTheNominalMachine) {
     EXPECT_TRUE(has(0.5, 1.2));
     EXPECT_TRUE(has(1.5, 1.2));
     EXPECT_TRUE(has(1.0, 1.0));
+}
+
+// prepare_step_train (runs of equal intervals raised by squaring) is the
+// piecewise simulation of step_train_shape (a piece per step), to rounding:
+// on table-like trains (a ramp of distinct intervals, a long cruise of one,
+// the mirror ramp), on the encoder's Q16.16 trains (fractional intervals,
+// carries), with and without a rest after the last step; from rest, and
+// carried through a sequence of moves on every machine of the band.
+TEST(Ringing, StepTrainByRunsIsThePiecewiseSimulation) {
+    auto p = profile::default_profile();
+    p.dynamics.damping_ratio = 0.1;  // lively: rounding or a wrong piece would show
+    Ringing r(p);
+    const double spm = p.carriage.steps_per_mm;
+    std::vector<motion::StepMove> moves;
+    for (std::uint16_t cruise : {std::uint16_t{1}, std::uint16_t{7}, std::uint16_t{2000}}) {
+        motion::StepMove m;
+        std::uint32_t n = 0;
+        for (std::uint32_t iv : {250u, 90u, 61u, 50u, 45u, 43u}) m.segments.push_back({iv << 16, 1, 0}), ++n;
+        m.segments.push_back({40u << 16, cruise, 0});
+        n += cruise;
+        for (std::uint32_t iv : {43u, 45u, 50u, 61u, 90u, 250u}) m.segments.push_back({iv << 16, 1, 0}), ++n;
+        m.steps = static_cast<std::int32_t>(n);
+        m.duration_s = 0.25;  // a rest after the last step
+        moves.push_back(m);
+    }
+    for (double mm : {0.0125, 2.5, 6.0, 60.0}) {
+        auto m = motion::encode_move(motion::jerk_move(mm, {250, 20000, 4e6}), static_cast<std::int32_t>(mm * spm), spm,
+                                     0.5);
+        ASSERT_TRUE(m) << m.error().to_string();
+        moves.push_back(*m);
+        m->duration_s = 0;  // no rest: the train ends at its last half step
+        moves.push_back(*m);
+    }
+    Ringing carried_runs(p), carried_pieces(p);
+    int dir = 1;
+    for (const auto& m : moves) {
+        const auto runs = r.prepare_step_train(m.segments, spm, m.duration_s);
+        const auto pieces = r.prepare(step_train_shape(m.segments, spm, m.duration_s));
+        const auto a = r.from_rest(*runs), b = r.from_rest(*pieces);
+        EXPECT_NEAR(a.nominal_um, b.nominal_um, 1e-6) << m.steps;
+        EXPECT_NEAR(a.worst_um, b.worst_um, 1e-6) << m.steps;
+        EXPECT_GT(b.worst_um, 0.0);
+        carried_runs.move(*runs, dir);
+        carried_pieces.move(*pieces, dir);
+        const auto c = carried_runs.residual(), d = carried_pieces.residual();
+        EXPECT_NEAR(c.nominal_um, d.nominal_um, 1e-6) << m.steps;
+        EXPECT_NEAR(c.worst_um, d.worst_um, 1e-6) << m.steps;
+        carried_runs.dwell();
+        carried_pieces.dwell();
+        dir = -dir;
+    }
 }
