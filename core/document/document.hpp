@@ -42,7 +42,9 @@ enum class BlockKind : std::uint8_t {
     table_row,        // starts a row of a table; level 1 = a header row. Its cells
                       // follow as table_cell blocks; the table ends at the next
                       // block of another kind
-    table_cell,       // one cell's text (may be empty); level = column, 0-based
+    table_cell,       // one cell's text (may be empty); level = column, 0-based;
+                      // `span` = the columns it covers (a merged cell: DOCX
+                      // w:gridSpan, ODT table:number-columns-spanned)
 };
 
 // Blocks whose spans are print text to translate.
@@ -60,6 +62,7 @@ struct Block {
     std::vector<BrailleLine> braille_lines;  // kind == braille
     std::string label;                       // print_page_break: page number as printed
     int source_line = 0;                     // 1-based line in the source, 0 if unknown
+    int span = 1;                            // table_cell: columns covered, from `level` on
     bool operator==(const Block&) const = default;
 
     // The plain text of all spans, for display and tests.

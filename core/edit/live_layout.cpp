@@ -191,8 +191,9 @@ void LiveLayout::set_dialect(Dialect dialect) {
 }
 
 document::Document LiveLayout::document() const {
-    // As the importer reads the saved file: a break after all text is dropped
-    // (DocumentBuilder::finish); one before any text is no block here already.
+    // As the importer reads the saved file: a braille page break after all text
+    // is dropped, a print page break kept (DocumentBuilder::finish); an
+    // unlabelled one before any text is no block here already.
     // A table (a run of table lines) has as many columns as its widest row, as
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
@@ -225,8 +226,7 @@ document::Document LiveLayout::document() const {
             }
         }
     }
-    while (!doc.blocks.empty() && (doc.blocks.back().kind == document::BlockKind::print_page_break ||
-                                   doc.blocks.back().kind == document::BlockKind::braille_page_break))
+    while (!doc.blocks.empty() && doc.blocks.back().kind == document::BlockKind::braille_page_break)
         doc.blocks.pop_back();
     return doc;
 }

@@ -164,6 +164,9 @@ std::string markdown_line(const document::Block& b) {
 std::string markdown_table_row(std::span<const document::Block> cells) {
     std::vector<std::string> texts;
     for (const auto& c : cells) {
+        // A cell keeps its column (`level`): the columns a merged cell covers
+        // before it are empty entries, as Markdown has no merged cells.
+        while (static_cast<int>(texts.size()) < c.level) texts.emplace_back();
         auto text = render_spans(c.spans, true);
         // An entry of dashes alone would make the row read as the delimiter row.
         if (!trim(text).empty() && trim(text).find_first_not_of("-: ") == std::string_view::npos)

@@ -22,6 +22,8 @@ namespace tactus::exporter {
 std::string markdown_line(const document::Block& block);
 
 // A table row and its cells as one GitHub pipe-table row: "| a | b \| c |".
+// Each cell in its column (Block::level); a merged cell's other columns are
+// empty entries (Markdown has no merged cells).
 std::string markdown_table_row(std::span<const document::Block> cells);
 
 // True for a pipe table's delimiter row: "|---|:--:|".

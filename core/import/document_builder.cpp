@@ -118,8 +118,9 @@ void DocumentBuilder::table_row(bool header, int source_line) {
     push(std::move(b));
 }
 
-void DocumentBuilder::begin_cell(int column, int source_line) {
+void DocumentBuilder::begin_cell(int column, int source_line, int span) {
     begin(document::BlockKind::table_cell, column, source_line);
+    if (open_ && current_.kind == document::BlockKind::table_cell) current_.span = std::max(1, span);
 }
 
 void DocumentBuilder::end_table() {
@@ -196,8 +197,11 @@ Result<document::Document> DocumentBuilder::finish() {
         return fail("more than " + std::to_string(max_import_blocks) +
                         " blocks (paragraphs, pages); split the document",
                     overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
-    // A break with nothing after it would only add an empty page.
-    while (!blocks_.empty() && is_page_break(blocks_.back())) blocks_.pop_back();
+    // A print page break after all text is kept: saving and opening again must
+    // not lose it (issue 13), and it adds nothing to the braille (the paginator
+    // draws no separator line for it). A braille page break after all text
+    // breaks nothing (every BRF page ends with one) and is dropped.
+    while (!blocks_.empty() && blocks_.back().kind == document::BlockKind::braille_page_break) blocks_.pop_back();
     document::Document doc;
     doc.blocks = std::move(blocks_);
     blocks_ = {};

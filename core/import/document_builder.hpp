@@ -2,8 +2,9 @@
 #pragma once
 // Shared by every importer: assembles blocks so that all formats follow the same
 // rules (docs/import.md): blocks without visible text are dropped, adjacent runs
-// with the same emphasis are merged, print pages are numbered, page breaks before
-// any content or after all of it are ignored, and the block count is capped so a
+// with the same emphasis are merged, print pages are numbered, an unlabelled page
+// break before any content and a braille page break after all of it are ignored
+// (a print page break after all of it is kept), and the block count is capped so a
 // pathological input fails clearly instead of exhausting memory.
 #include <cstddef>
 #include <cstdint>
@@ -46,7 +47,8 @@ public:
     // Tables: a row marker, then begin_cell(column) and text for each cell; an
     // empty cell is kept (it holds its column). end_table() after the last row.
     void table_row(bool header, int source_line);
-    void begin_cell(int column, int source_line);
+    // `span`: the columns a merged cell covers, from `column` on.
+    void begin_cell(int column, int source_line, int span = 1);
     void end_table();
     // Drops the last row when all its cells are empty: a Markdown table without
     // a header row is written with an empty one (as Pandoc does).

@@ -98,16 +98,21 @@ public:
     Result<document::Document> finish() { return out_.finish(); }
 
 private:
-    // Rows and cells; a row with <w:tblHeader/> is a header row. Merged and
-    // spanned cells are read as the cells the file has.
+    // Rows and cells; a row with <w:tblHeader/> is a header row. A cell merged
+    // across columns (<w:gridSpan w:val="n"/>) covers n columns, and a row's
+    // <w:gridBefore> columns hold no cell, so every cell keeps its column. A
+    // cell merged down (<w:vMerge/>) is the cells the file has: the first holds
+    // the text, the ones under it are empty.
     void table(const pugi::xml_node& tbl) {
         out_.begin_table();
         for (const auto& row : tbl.children()) {
             if (local_name(row) != "tr") continue;
-            out_.begin_row(read_toggle(child(child(row, "trPr"), "tblHeader")).value_or(false));
+            const auto trPr = child(row, "trPr");
+            out_.begin_row(read_toggle(child(trPr, "tblHeader")).value_or(false));
+            out_.skip_columns(whole_number(attribute(child(trPr, "gridBefore"), "val"), 0));
             for (const auto& cell : row.children()) {
                 if (local_name(cell) != "tc") continue;
-                out_.begin_cell();
+                out_.begin_cell(whole_number(attribute(child(child(cell, "tcPr"), "gridSpan"), "val"), 1));
                 container(cell);
                 out_.end_cell();
             }

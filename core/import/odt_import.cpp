@@ -206,13 +206,32 @@ private:
             else if (name == "table-row") {
                 out_.begin_row(header);
                 for (const auto& cell : r.children()) {
-                    if (local_name(cell) != "table-cell") continue;
-                    out_.begin_cell();
-                    container(cell);
-                    out_.end_cell();
+                    // A cell merged across columns has table:number-columns-spanned;
+                    // the columns it (or a cell merged down from the row above)
+                    // covers are <table:covered-table-cell>s, which hold no cell
+                    // of their own: the next cell keeps its column.
+                    const auto kind = local_name(cell);
+                    if (kind == "covered-table-cell") {
+                        out_.skip_columns(repeated(cell));
+                        continue;
+                    }
+                    if (kind != "table-cell") continue;
+                    // table:number-columns-repeated: the same cell in as many
+                    // columns (LibreOffice writes a run of empty cells so).
+                    for (int n = repeated(cell); n > 0; --n) {
+                        out_.begin_cell(whole_number(attribute(cell, "number-columns-spanned"), 1));
+                        container(cell);
+                        out_.end_cell();
+                    }
                 }
             }
         }
+    }
+
+    // How many columns a cell stands for (table:number-columns-repeated), at
+    // most as many as a table may have.
+    static int repeated(const pugi::xml_node& cell) {
+        return std::clamp(whole_number(attribute(cell, "number-columns-repeated"), 1), 1, 1024);
     }
 
     void list(const pugi::xml_node& l, int level, std::string style) {

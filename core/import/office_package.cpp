@@ -1,10 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/office_package.hpp"
 
+#include <algorithm>
+
 #include "import/import.hpp"
 #include "import/xml_util.hpp"
 
 namespace tactus::import::detail {
+namespace {
+
+// Columns a table may have (LibreOffice's limit; Word's is 63): a span or
+// skip in a hostile file cannot make the layout fill millions of empty cells.
+constexpr int kMaxColumns = 1024;
+
+}  // namespace
 
 Result<XmlPackage> XmlPackage::open(std::string_view bytes, std::string kind) {
     auto zip = ZipArchive::open(bytes);
@@ -94,13 +103,21 @@ void OfficeText::begin_row(bool header) {
     column_ = 0;
 }
 
-void OfficeText::begin_cell() {
+void OfficeText::begin_cell(int span) {
     if (note_depth_ > 0 || table_depth_ != 1) {
         if (cell_has_text_) builder_.add_text(" ");
         return;
     }
-    builder_.begin_cell(column_++, 0);
+    column_ = std::min(column_, kMaxColumns - 1);
+    span = std::clamp(span, 1, kMaxColumns - column_);
+    builder_.begin_cell(column_, 0, span);
+    column_ += span;
     cell_has_text_ = false;
+}
+
+void OfficeText::skip_columns(int count) {
+    if (note_depth_ > 0 || table_depth_ != 1) return;
+    column_ = std::min(column_ + std::clamp(count, 0, kMaxColumns), kMaxColumns);
 }
 
 void OfficeText::end_cell() {

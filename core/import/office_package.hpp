@@ -59,7 +59,11 @@ public:
 
     void begin_table();
     void begin_row(bool header);
-    void begin_cell();
+    // A cell covering `span` columns (a merged cell), or `skip` columns no
+    // cell starts in (DOCX w:gridBefore, ODT's covered cells): the next cell
+    // keeps its column, as the paginator lays columns out by their index.
+    void begin_cell(int span = 1);
+    void skip_columns(int count);
     void end_cell();
     void end_table();
 

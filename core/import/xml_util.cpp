@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/xml_util.hpp"
 
+#include <charconv>
 #include <string>
 
 #include "import/text_position.hpp"
@@ -50,6 +51,14 @@ pugi::xml_node child(const pugi::xml_node& node, std::string_view local) {
     for (const auto& c : node.children())
         if (c.type() == pugi::node_element && local_name(c) == local) return c;
     return {};
+}
+
+int whole_number(std::string_view value, int fallback) {
+    while (!value.empty() && (value.front() == ' ' || value.front() == '+')) value.remove_prefix(1);
+    while (!value.empty() && value.back() == ' ') value.remove_suffix(1);
+    int n = 0;
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+    return ec == std::errc{} && end == value.data() + value.size() && !value.empty() ? n : fallback;
 }
 
 }  // namespace tactus::import::detail

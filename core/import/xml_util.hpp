@@ -22,5 +22,8 @@ std::string_view namespace_uri(const pugi::xml_node& node);
 std::string_view attribute(const pugi::xml_node& node, std::string_view local);
 // The first child element with this local name.
 pugi::xml_node child(const pugi::xml_node& node, std::string_view local);
+// An attribute's value as a whole number ("3"), `fallback` when it is absent
+// or not one ("", "x", "2.5", out of int's range).
+int whole_number(std::string_view value, int fallback);
 
 }  // namespace tactus::import::detail

@@ -172,6 +172,21 @@ void Paginator::add_table_block(const translate::TranslatedBlock& b) {
     cells.push_back(b);
 }
 
+std::vector<Paginator::Merged> Paginator::merged_entries(const TableRow& row) {
+    // A cell's span reaches over the empty cells that stand for the columns it
+    // covers (add_table_block fills them in); a cell with text ends it.
+    std::vector<Merged> out;
+    for (std::size_t c = 0; c < row.cells.size();) {
+        std::size_t span = 1;
+        const auto wanted = static_cast<std::size_t>(std::max(1, row.cells[c].span));
+        while (span < wanted && c + span < row.cells.size() && entry(row.cells[c + span]).empty()) ++span;
+        if (c + span == row.cells.size()) span = wanted;  // the row's last cell covers what it says
+        out.push_back(Merged{&row.cells[c], c, span});
+        c += span;
+    }
+    return out;
+}
+
 // BANA Braille Formats §11: a table is preceded and followed by a blank line;
 // as columns when every row fits the line, else in listed format.
 void Paginator::flush_table() {
@@ -188,15 +203,30 @@ void Paginator::flush_table() {
 // dots 2-5 as wide as each column. Returns false, having laid out nothing, when
 // the table does not fit the line or an entry had to be divided.
 bool Paginator::lay_out_simple_table() {
-    std::vector<std::size_t> widths;
+    // Each row as its entries and the columns each covers (a merged cell more
+    // than one: it is as wide as those columns and the gaps between them).
+    std::vector<std::vector<Merged>> rows;
+    std::size_t columns = 0;
     for (const auto& row : table_) {
-        if (row.cells.size() > widths.size()) widths.resize(row.cells.size(), 0);
-        for (std::size_t c = 0; c < row.cells.size(); ++c) {
-            if (std::ranges::find(row.cells[c].breaks, translate::BreakBefore::forced) != row.cells[c].breaks.end())
-                return false;
-            widths[c] = std::max(widths[c], entry(row.cells[c]).size());
-        }
+        rows.push_back(merged_entries(row));
+        if (!rows.back().empty()) columns = std::max(columns, rows.back().back().column + rows.back().back().span);
     }
+    std::vector<std::size_t> widths(columns, 0);
+    const auto group_width = [&widths](const Merged& m) {
+        std::size_t w = kColumnGap * (m.span - 1);
+        for (std::size_t c = m.column; c < m.column + m.span; ++c) w += widths[c];
+        return w;
+    };
+    // Single columns first, then a merged entry wider than its columns widens the last of them.
+    for (int pass = 0; pass < 2; ++pass)
+        for (const auto& row : rows)
+            for (const auto& m : row) {
+                if (std::ranges::find(m.cell->breaks, translate::BreakBefore::forced) != m.cell->breaks.end())
+                    return false;
+                const auto need = entry(*m.cell).size();
+                if (pass == 0 && m.span == 1) widths[m.column] = std::max(widths[m.column], need);
+                if (pass == 1 && m.span > 1 && need > group_width(m)) widths[m.column + m.span - 1] += need - group_width(m);
+            }
     if (widths.empty()) return true;
     std::size_t total = kColumnGap * (widths.size() - 1);
     for (const auto w : widths) total += w;
@@ -221,11 +251,15 @@ bool Paginator::lay_out_simple_table() {
             for (const auto& h : headings) add_line(h, source_line);
         }
         document::BrailleLine line;
-        for (std::size_t c = 0; c < widths.size(); ++c) {
-            const auto e = c < row.cells.size() ? entry(row.cells[c]) : std::span<const document::Cell>{};
+        // The row's entries and the columns after its last one, empty.
+        auto groups = rows[r];
+        for (auto c = groups.empty() ? 0 : groups.back().column + groups.back().span; c < widths.size(); ++c)
+            groups.push_back(Merged{nullptr, c, 1});
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const auto e = groups[g].cell ? entry(*groups[g].cell) : std::span<const document::Cell>{};
             line.insert(line.end(), e.begin(), e.end());
-            if (c + 1 == widths.size()) break;
-            const std::size_t gap = widths[c] - e.size() + kColumnGap;
+            if (g + 1 == groups.size()) break;
+            const std::size_t gap = group_width(groups[g]) - e.size() + kColumnGap;
             if (!row.header && gap >= 4) {
                 line.emplace_back();
                 line.insert(line.end(), gap - 2, kTableGuideDot);
@@ -238,10 +272,11 @@ bool Paginator::lay_out_simple_table() {
         add_line(std::move(line), source_line);
         const bool last_header = row.header && (r + 1 == table_.size() || !table_[r + 1].header);
         if (last_header) {
+            // Under each heading, as wide as the columns it heads.
             document::BrailleLine sep;
-            for (std::size_t c = 0; c < widths.size(); ++c) {
-                sep.insert(sep.end(), widths[c], kSeparationLine);
-                if (c + 1 < widths.size()) sep.insert(sep.end(), kColumnGap, document::Cell{});
+            for (std::size_t g = 0; g < groups.size(); ++g) {
+                sep.insert(sep.end(), group_width(groups[g]), kSeparationLine);
+                if (g + 1 < groups.size()) sep.insert(sep.end(), kColumnGap, document::Cell{});
             }
             if (r < head) headings.push_back(sep);
             add_line(std::move(sep), source_line);
@@ -253,14 +288,22 @@ bool Paginator::lay_out_simple_table() {
 // Listed format: each row's entries in column order, one after the other, the
 // first in cell 1 and the others in cell 3, runover lines in cell 5
 // (block_indents of table_cell). A header row is listed first like any row, so
-// the reader learns the order of the columns. Empty entries are left out.
+// the reader learns the order of the columns. Empty entries are left out; a
+// row whose first column is empty (or merged away) starts in cell 1 with its
+// first entry, so each row still starts at the margin.
 void Paginator::lay_out_listed_table() {
-    for (const auto& row : table_)
-        for (const auto& cell : row.cells)
-            if (!entry(cell).empty()) add_wrapped(cell, block_indents(o_, document::BlockKind::table_cell, cell.level));
+    for (const auto& row : table_) {
+        bool first = true;
+        for (const auto& cell : row.cells) {
+            if (entry(cell).empty()) continue;
+            add_wrapped(cell, block_indents(o_, document::BlockKind::table_cell, first ? 0 : std::max(cell.level, 1)));
+            first = false;
+        }
+    }
 }
 
 void Paginator::add(const translate::TranslatedBlock& b) {
+    if (b.kind != document::BlockKind::print_page_break) trailing_separators_ = 0;
     if (document::is_table_kind(b.kind)) {
         add_table_block(b);
         return;
@@ -305,6 +348,7 @@ void Paginator::add(const translate::TranslatedBlock& b) {
                 break;
             }
             add_line(std::move(l), b.source_line);
+            ++trailing_separators_;
             break;
         }
         case document::BlockKind::braille_page_break:
@@ -330,6 +374,9 @@ void Paginator::add(const translate::TranslatedBlock& b) {
 
 PagedDocument Paginator::finish() && {
     flush_table();
+    // Print page breaks after all text start no print page: their separator
+    // lines would separate nothing.
+    for (; trailing_separators_ > 0 && !body_.empty(); --trailing_separators_) body_.pop_back();
     if (!body_.empty() || doc_.pages.empty()) close_page();
     return std::move(doc_);
 }

@@ -67,6 +67,13 @@ private:
         bool header = false;
         std::vector<translate::TranslatedBlock> cells;
     };
+    // An entry of a row and the columns it covers.
+    struct Merged {
+        const translate::TranslatedBlock* cell = nullptr;  // null: an empty column
+        std::size_t column = 0;
+        std::size_t span = 1;
+    };
+    static std::vector<Merged> merged_entries(const TableRow& row);
 
     LayoutOptions o_;
     std::function<document::BrailleLine(int)> number_cells_;
@@ -76,6 +83,7 @@ private:
     std::string page_top_print_page_;
     std::vector<TableRow> table_;  // the table being read, laid out at its end
     std::optional<document::BlockKind> last_kind_;  // of the last block, page breaks aside
+    int trailing_separators_ = 0;  // separator lines at the body's end with only print page breaks after the text
 };
 
 }  // namespace tactus::layout

@@ -205,6 +205,7 @@ Result<TranslatedBlock> translate_block(const document::Block& block, const Tran
     tb.kind = block.kind;
     tb.level = block.level;
     tb.source_line = block.source_line;
+    tb.span = std::max(1, block.span);
     const auto where = block.source_line > 0 ? "line " + std::to_string(block.source_line)
                                              : std::string{};
     switch (block.kind) {

@@ -21,6 +21,7 @@ struct TranslatedBlock {
     std::vector<document::BrailleLine> lines;  // braille: verbatim lines
     document::BrailleLine label;               // print_page_break: the page number in braille
     int source_line = 0;
+    int span = 1;  // table_cell: the columns it covers (document::Block::span)
 };
 
 // Translates one block. Long paragraphs are cut at spaces into pieces liblouis

@@ -5,6 +5,7 @@
 // any edits: the same blocks, the same print pages, the same braille pages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 
@@ -137,16 +138,29 @@ void expect_round_trip(const edit::LiveLayout& live, const std::string& name) {
     const auto again = make(edit::render_editor_lines(reopened, dialect), dialect);
     ASSERT_EQ(without_lines(again.document().blocks), without_lines(before.blocks)) << bytes;
     if (before.blocks.empty()) return;
+    // Every print page break the lines hold is in the file, a last one too
+    // (counted from the lines themselves: an unlabelled break before any text
+    // starts no page, in the editor and the importer alike).
+    std::size_t breaks = 0;
+    bool text_seen = false;
+    for (const auto& l : lines) {
+        const auto b = edit::parse_editor_line(l, live.dialect());
+        if (!b) continue;
+        if (b->kind == document::BlockKind::print_page_break) {
+            if (text_seen || !b->label.empty()) ++breaks;
+        } else if (b->kind != document::BlockKind::braille_page_break) {
+            text_seen = true;
+        }
+    }
+    ASSERT_EQ(static_cast<std::size_t>(std::ranges::count_if(reopened.blocks, [](const document::Block& b) {
+                  return b.kind == document::BlockKind::print_page_break;
+              })),
+              breaks)
+        << bytes;
+    // The editor's own pages are the importer's, a break at the end or not.
     const auto pages = pages_of(reopened);
     ASSERT_EQ(text_of(again.paged().pages), text_of(pages)) << bytes;
-    // The editor's own pages are the importer's, unless a break ends the
-    // editor's text (the importer drops it: it would only add an empty page).
-    std::size_t last = lines.size();
-    while (last > 0 && !edit::parse_editor_line(lines[last - 1], live.dialect())) --last;
-    const auto tail = last > 0 ? edit::parse_editor_line(lines[last - 1], live.dialect()) : std::nullopt;
-    if (tail && tail->kind != document::BlockKind::print_page_break) {
-        ASSERT_EQ(text_of(live.paged().pages), text_of(pages)) << bytes;
-    }
+    ASSERT_EQ(text_of(live.paged().pages), text_of(pages)) << bytes;
     // Saving what was opened writes the same file.
     const auto again_bytes = edit::file_text(lines_of(again), again.dialect(), again.document(), name);
     if (edit::dialect_for(name) == live.dialect()) {
@@ -213,6 +227,31 @@ TEST(RoundTrip, TheEditorAndTheImporterNumberPrintPagesAlike) {
         if (b.kind == document::BlockKind::print_page_break) labels.push_back(b.label);
     EXPECT_EQ(labels, (std::vector<std::string>{"10", "11", "12"}));
     expect_round_trip(live, "book.md");
+}
+
+// Issue 13: a page break with nothing after it was dropped on saving and
+// reopening (the importer dropped it as an empty page). It is kept, in the
+// file and the document, and adds no line to the braille.
+TEST(RoundTrip, APageBreakAtTheEndIsKept) {
+    const auto text = make({"one", "\f"}, edit::Dialect::text);
+    ASSERT_EQ(text.document().blocks.size(), 2u);
+    EXPECT_EQ(text.document().blocks[1].kind, document::BlockKind::print_page_break);
+    const auto bytes = edit::file_text(lines_of(text), text.dialect(), text.document(), "doc.txt");
+    EXPECT_EQ(bytes, "one\n\f\n");
+    EXPECT_EQ(import_as(bytes, "doc.txt").blocks.size(), 2u);
+    expect_round_trip(text, "doc.txt");
+    for (const auto& last : {"---", "<!-- pagebreak 7 -->"}) {
+        const auto md = make({"one", "<!-- pagebreak 5 -->", "two", last}, edit::Dialect::markdown);
+        const auto saved = edit::file_text(lines_of(md), md.dialect(), md.document(), "doc.md");
+        const auto reopened = import_as(saved, "doc.md");
+        ASSERT_EQ(reopened.blocks.size(), 4u) << saved;
+        EXPECT_EQ(reopened.blocks[3].label, std::string(last) == "---" ? "6" : "7") << saved;
+        expect_round_trip(md, "doc.md");
+        // The braille is that of the text without the break: no separator line
+        // after the last text, and no empty page.
+        EXPECT_EQ(text_of(md.paged().pages),
+                  text_of(make({"one", "<!-- pagebreak 5 -->", "two"}, edit::Dialect::markdown).paged().pages));
+    }
 }
 
 namespace {
@@ -297,13 +336,33 @@ struct Editor {
 
     std::string line() { return dialect == edit::Dialect::text ? text_line() : markdown_line(); }
 
+    // A page break line of the dialect, with or without a print page number.
+    std::string page_break() {
+        if (dialect == edit::Dialect::text) return "\f";
+        switch (pick(3)) {
+            case 0: return "---";
+            case 1: return "<!-- pagebreak -->";
+            default: return "<!-- pagebreak " + std::to_string(1 + pick(30)) + " -->";
+        }
+    }
+
+    // A document's lines; one in three ends in a page break (issue 13: a break
+    // with nothing after it was lost on saving).
+    std::vector<std::string> document() {
+        std::vector<std::string> lines;
+        for (auto n = 1 + pick(10); n > 0; --n) lines.push_back(line());
+        if (pick(3) == 0) lines.push_back(page_break());
+        return lines;
+    }
+
     // One edit: a line inserted, removed or replaced, or a word typed into a
     // line or deleted from it.
     void edit(edit::LiveLayout& live) {
         const auto n = live.line_count();
         const auto at = pick(n + 1);
-        switch (pick(5)) {
+        switch (pick(6)) {
             case 0: live.replace(at, 0, {line()}); return;
+            case 5: live.replace(n, 0, {page_break()}); return;  // a break at the end
             case 1: if (n > 1) live.replace(std::min(at, n - 1), 1, {}); return;
             case 2: if (n > 0) live.replace(std::min(at, n - 1), 1, {line()}); return;
             default: break;
@@ -345,9 +404,7 @@ struct Editor {
 TEST(RoundTrip, RandomEditsSurviveSaveAndReopen) {
     Editor editor{std::mt19937(13), edit::Dialect::markdown};
     for (int round = 0; round < 40; ++round) {
-        std::vector<std::string> lines;
-        for (auto n = 1 + editor.pick(10); n > 0; --n) lines.push_back(editor.line());
-        auto live = make(lines, edit::Dialect::markdown);
+        auto live = make(editor.document(), edit::Dialect::markdown);
         for (int step = 0; step < 12; ++step) {
             std::string before_edit;
             for (const auto& l : lines_of(live)) before_edit += "  <" + l + ">\n";
@@ -367,9 +424,7 @@ TEST(RoundTrip, RandomEditsSurviveSaveAndReopen) {
 TEST(RoundTrip, RandomEditsOfATextFileSurviveSaveAndReopen) {
     Editor editor{std::mt19937(7), edit::Dialect::text};
     for (int round = 0; round < 40; ++round) {
-        std::vector<std::string> lines;
-        for (auto n = 1 + editor.pick(10); n > 0; --n) lines.push_back(editor.line());
-        auto live = make(lines, edit::Dialect::text);
+        auto live = make(editor.document(), edit::Dialect::text);
         for (int step = 0; step < 12; ++step) {
             editor.edit(live);
             if (step % 4 != 3) continue;

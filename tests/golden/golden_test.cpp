@@ -82,6 +82,12 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"structure-md.pef", "structure.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
         // A table over two pages: its headings repeated on the second (issue 13).
         GoldenCase{"structure-long-table.brf", "structure-long-table.md", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf},
+        // Merged cells: a simple table with headings over two rows and two
+        // columns, and a listed one (issue 13). The two files are one document.
+        GoldenCase{"structure-spans-docx.brf", "structure-spans.docx", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"structure-spans-odt.brf", "structure-spans.odt", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;
@@ -123,4 +129,12 @@ TEST(RoundTrip, PefExportImportLayout) {
     ASSERT_EQ(again->pages.size(), doc->pages.size());
     for (std::size_t p = 0; p < doc->pages.size(); ++p)
         EXPECT_EQ(again->pages[p].lines, doc->pages[p].lines) << "page " << p + 1;
+}
+
+// The DOCX and the ODT with merged cells are one document: the same braille.
+TEST(Golden, MergedCellsLayOutAlikeFromDocxAndOdt) {
+    const auto docx = read_file(fs::path(TACTUS_GOLDEN_DIR) / "structure-spans-docx.brf");
+    const auto odt = read_file(fs::path(TACTUS_GOLDEN_DIR) / "structure-spans-odt.brf");
+    ASSERT_TRUE(docx && odt);
+    EXPECT_EQ(*docx, *odt);
 }

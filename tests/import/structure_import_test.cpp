@@ -102,3 +102,41 @@ TEST(StructureImport, PageBreakInATableCellComesAfterTheTable) {
     ASSERT_EQ(d.blocks.size(), 7u);
     EXPECT_EQ(d.blocks[5].label, "2");
 }
+
+namespace {
+
+// The table blocks as "row(header)" and "column+span:text" entries.
+std::string table_cells(const Document& d) {
+    std::string out;
+    for (const auto& b : d.blocks) {
+        if (b.kind == BlockKind::table_row) out += b.level == 1 ? "\nH " : "\nR ";
+        if (b.kind == BlockKind::table_cell)
+            out += std::to_string(b.level) + "+" + std::to_string(b.span) + ":" + b.text() + " ";
+    }
+    return out;
+}
+
+}  // namespace
+
+// Issue 13: merged cells. Every cell keeps its column (a merged cell's columns
+// are its own, a row's skipped columns hold no cell), and a cell merged across
+// columns says how many; before, the cells after a merged one moved left into
+// the wrong columns.
+TEST(StructureImport, MergedCellsKeepTheirColumns) {
+    const std::string expected =
+        "\nH 0+1:Bird 1+2:Seen "
+        "\nH 0+1: 1+1:Morning 2+1:Evening "
+        "\nR 0+1:Heron 1+1:3 2+1:1 "
+        "\nR 0+1:Owl 1+2:none "
+        "\nR 0+1:Kingfisher 1+1:1 2+1:2 "
+        "\nH 0+1:Plant 1+1:Where it grows 2+1:What it needs "
+        "\nR 0+1:Willow 1+1:on the river bank 2+1:wet soil and sun "
+        "\nR 0+1:Moss 1+2:anywhere damp and shady, on stones and bark ";
+    // DOCX: the merged-down cell under "Bird" is an empty cell of the file; the
+    // last row starts one column in (w:gridBefore).
+    EXPECT_EQ(table_cells(import_structure("structure-spans.docx")), expected + "\nR 1+1:by the gate 2+1:little water ");
+    // ODT: the covered cell under "Bird" holds no cell; the last row's first cell is empty.
+    auto odt = expected + "\nR 0+1: 1+1:by the gate 2+1:little water ";
+    odt.replace(odt.find("H 0+1: 1+1:Morning"), 7, "H ");
+    EXPECT_EQ(table_cells(import_structure("structure-spans.odt")), odt);
+}

@@ -60,11 +60,15 @@ TEST(TextImport, FormFeedInsideALineSplitsTheParagraphAndPagesAreNumbered) {
     EXPECT_EQ(doc->blocks, expected);
 }
 
-TEST(TextImport, PageBreaksBeforeAllContentOrAfterItAreDropped) {
+// Before any content an unlabelled break would only add an empty page; after
+// all of it a break is kept, so saving and reopening loses none (issue 13).
+TEST(TextImport, PageBreaksBeforeAllContentAreDroppedAndAfterItKept) {
     const auto doc = import::import_bytes("\f\fbody\n\f\n\f", "x.txt");
     ASSERT_TRUE(doc);
-    ASSERT_EQ(doc->blocks.size(), 1u);
+    ASSERT_EQ(doc->blocks.size(), 3u);
     EXPECT_EQ(doc->blocks[0].text(), "body");
+    EXPECT_EQ(doc->blocks[1], page_break("2", 2));
+    EXPECT_EQ(doc->blocks[2], page_break("3", 3));
 }
 
 TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndIndentIsTrimmed) {

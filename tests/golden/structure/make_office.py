@@ -63,8 +63,10 @@ docx_body = "".join([
     "<w:tbl><w:tblPr/>" + row(["Plant", "Where it grows", "What it needs"], True) +
     row(["Willow", "on the river bank", "wet soil and sun"]) + row(["Reed", "in shallow water", "still water"]) +
     "</w:tbl>",
-    # A header and its part exist, and are left out on purpose.
-    '<w:p><w:pPr><w:sectPr><w:headerReference w:type="default" r:id="rIdHeader"/></w:sectPr></w:pPr></w:p>',
+    # A header and its part exist, and are left out on purpose. The last
+    # section's properties sit in the body, as Word writes them (in a
+    # paragraph they would be a section break: a print page break at the end).
+    '<w:sectPr><w:headerReference w:type="default" r:id="rIdHeader"/></w:sectPr>',
 ])
 
 docx = [
@@ -196,3 +198,98 @@ write("table_break.docx", [docx[0], docx[1],
                            ("word/document.xml",
                             f'<?xml version="1.0" encoding="UTF-8"?><w:document {W} {R}><w:body>{break_body}'
                             '</w:body></w:document>')])
+
+# Merged cells (issue 13): a table whose first heading is merged down over two
+# header rows and whose second heading is merged across two columns, with a
+# body row merged across them too (a simple table: it fits the line); and a
+# table too wide for the line (listed format) with a merged entry and a row
+# that starts one column in (DOCX w:gridBefore; ODT: an empty first cell).
+# structure-spans.docx and structure-spans.odt are the same document and lay
+# out to the same braille (tests/golden/golden_test.cpp).
+
+
+def scell(text, span=1, vmerge=None):
+    tcpr = ""
+    if span > 1 or vmerge:
+        tcpr = "<w:tcPr>" + (f'<w:gridSpan w:val="{span}"/>' if span > 1 else "")
+        tcpr += ('<w:vMerge w:val="restart"/>' if vmerge == "restart" else "<w:vMerge/>" if vmerge else "")
+        tcpr += "</w:tcPr>"
+    return f"<w:tc>{tcpr}{p(r(text)) if text else '<w:p/>'}</w:tc>"
+
+
+def srow(cells, header=False, before=0):
+    trpr = ""
+    if header or before:
+        trpr = "<w:trPr>" + (f'<w:gridBefore w:val="{before}"/>' if before else "") + (
+            "<w:tblHeader/>" if header else "") + "</w:trPr>"
+    return "<w:tr>" + trpr + "".join(cells) + "</w:tr>"
+
+
+spans_docx_body = "".join([
+    p(r("Birds by the river"), "Heading1"),
+    "<w:tbl><w:tblPr/>" +
+    srow([scell("Bird", vmerge="restart"), scell("Seen", span=2)], True) +
+    srow([scell("", vmerge="continue"), scell("Morning"), scell("Evening")], True) +
+    srow([scell("Heron"), scell("3"), scell("1")]) +
+    srow([scell("Owl"), scell("none", span=2)]) +
+    srow([scell("Kingfisher"), scell("1"), scell("2")]) + "</w:tbl>",
+    p(r("Plants by the water:")),
+    "<w:tbl><w:tblPr/>" +
+    srow([scell("Plant"), scell("Where it grows"), scell("What it needs")], True) +
+    srow([scell("Willow"), scell("on the river bank"), scell("wet soil and sun")]) +
+    srow([scell("Moss"), scell("anywhere damp and shady, on stones and bark", span=2)]) +
+    srow([scell("by the gate"), scell("little water")], before=1) + "</w:tbl>",
+    p(r("After the tables.")),
+])
+spans_rels = ('<?xml version="1.0" encoding="UTF-8"?><Relationships '
+              'xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
+              '<Relationship Id="rId1" Type="http://schemas.openxmlformats.org/officeDocument/2006/relationships/styles"'
+              ' Target="styles.xml"/></Relationships>')
+write("structure-spans.docx", [docx[0], docx[1], ("word/_rels/document.xml.rels", spans_rels),
+                               ("word/document.xml",
+                                f'<?xml version="1.0" encoding="UTF-8"?><w:document {W} {R}><w:body>{spans_docx_body}'
+                                '</w:body></w:document>'),
+                               docx[4]])
+
+
+def tcell(text, columns=1, rows=1):
+    attrs = ""
+    if columns > 1:
+        attrs += f' table:number-columns-spanned="{columns}"'
+    if rows > 1:
+        attrs += f' table:number-rows-spanned="{rows}"'
+    return f'<table:table-cell office:value-type="string"{attrs}>{tp(text) if text else ""}</table:table-cell>'
+
+
+def covered(n=1):
+    return (f'<table:covered-table-cell table:number-columns-repeated="{n}"/>' if n > 1
+            else "<table:covered-table-cell/>")
+
+
+def trow_cells(cells):
+    return "<table:table-row>" + "".join(cells) + "</table:table-row>"
+
+
+spans_odt_text = "".join([
+    '<text:h text:style-name="Heading_20_1" text:outline-level="1">Birds by the river</text:h>',
+    '<table:table table:name="Birds"><table:table-column table:number-columns-repeated="3"/>'
+    "<table:table-header-rows>" +
+    trow_cells([tcell("Bird", rows=2), tcell("Seen", columns=2), covered()]) +
+    trow_cells([covered(), tcell("Morning"), tcell("Evening")]) + "</table:table-header-rows>" +
+    trow_cells([tcell("Heron"), tcell("3"), tcell("1")]) +
+    trow_cells([tcell("Owl"), tcell("none", columns=2), covered()]) +
+    trow_cells([tcell("Kingfisher"), tcell("1"), tcell("2")]) + "</table:table>",
+    tp("Plants by the water:"),
+    '<table:table table:name="Plants"><table:table-column table:number-columns-repeated="3"/>'
+    "<table:table-header-rows>" + trow(["Plant", "Where it grows", "What it needs"]) + "</table:table-header-rows>" +
+    trow(["Willow", "on the river bank", "wet soil and sun"]) +
+    trow_cells([tcell("Moss"), tcell("anywhere damp and shady, on stones and bark", columns=2), covered()]) +
+    trow_cells([tcell(""), tcell("by the gate"), tcell("little water")]) + "</table:table>",
+    tp("After the tables."),
+])
+write("structure-spans.odt", [odt[0], odt[1],
+                              ("content.xml",
+                               f'<?xml version="1.0" encoding="UTF-8"?><office:document-content {NS}>'
+                               f'<office:body><office:text>{spans_odt_text}</office:text></office:body>'
+                               '</office:document-content>'),
+                              odt[3]])
