@@ -389,7 +389,8 @@ void SimController::v3_abort_motion() {
     }
     phase_busy_ = false;
     xs_ = X::fetch;
-    pass_active_ = false;
+    // The pass stays active: strikes in pass counts what it struck, and the
+    // host's restart skips exactly those (ABORT clears the flag itself).
 }
 
 void SimController::v3_fault(std::uint8_t bits, double now) {
