@@ -48,7 +48,10 @@ void exec_abort(void) {
     HAM_CVX = 0;
     HAM_CCV = 0;
     xs = X_FETCH;
-    fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
+    /* The pass stays active: strikes in pass counts what it struck, and the
+     * host's restart after a limit, hammer or stream fault skips exactly
+     * those (clearing it here made the host restart the pass from its first
+     * strike, as main.c once did after a warm reset). ABORT clears it (link.c). */
 }
 
 void exec_init(void) {

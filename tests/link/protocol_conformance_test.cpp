@@ -362,6 +362,41 @@ TEST_P(Conformance, DuplicateDataIsNeverStoredTwice) {
     EXPECT_EQ(st.ack.buffer_free, controller::v3::kRingBytes - 5);
 }
 
+// A fault in the middle of a pass (here the soft limit: the third move would
+// leave the travel CONFIGURE set) keeps the pass active and its strike count,
+// so the host's restart skips exactly the strikes made. (Both controllers
+// cleared the pass flag on a fault, and the host then restarted the pass from
+// its first strike: its first dots struck twice.)
+TEST_P(Conformance, AFaultInTheMiddleOfAPassKeepsItsProgress) {
+    REQUIRE_V3();
+    hello(0);
+    const auto timing = profile::strike_timing(profile::default_profile());
+    machine::ControllerConfig c;
+    c.carriage_travel_steps = 1000;
+    send(1, 0x02, encode::encode_config_v3(c, timing.settle_ticks));
+    expect_ack(2);
+    // JOB_BEGIN, HOME, a pass of 5 strikes: the first 40 grid units (800
+    // steps, and the backlash: the carriage last moved toward home) out,
+    // then 8 units (160 steps) apart: 801, 961, then 1121 > 1000.
+    send_data(2, {encode::v3::op_job_begin, 0x09, 0x99, 0, 0, encode::v3::op_home, encode::v3::op_pass, 0x00, 0x00,
+                  40, 5, 0x00, 0x08, 0x08, 0x08, 0x08});
+    std::uint8_t seq = 3;
+    encode::Status st;
+    for (int i = 0; i < 40; ++i) {
+        skip_until_quiet();
+        st = status(seq++);
+        if (st.ack.state == encode::ControllerState::fault) break;
+    }
+    ASSERT_EQ(st.ack.state, encode::ControllerState::fault);
+    EXPECT_EQ(st.ack.faults & encode::fault::limit_switch, encode::fault::limit_switch);
+    EXPECT_EQ(st.ack.job_id, 0x0999);
+    EXPECT_EQ(st.ack.strikes_in_pass, 2);
+    EXPECT_EQ(st.flags & encode::flag::pass_active, encode::flag::pass_active);
+    EXPECT_EQ(st.flags & encode::flag::job_active, encode::flag::job_active);
+    EXPECT_EQ(st.flags & encode::flag::homed, 0);
+    EXPECT_EQ(st.ack.buffer_free, controller::v3::kRingBytes);  // the ring was dropped
+}
+
 // The host's bounded give-up: a controller that stops answering mid-job
 // (stopped with SIGSTOP after the first pass) ends the job not_answering with
 // the sheet to resume from, within the bound, and what it struck is the
