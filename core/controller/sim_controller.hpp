@@ -288,7 +288,8 @@ private:
     std::uint32_t p_first_ = 0;
     bool c_neg_ = false, f_neg_ = false, ham_ccv_ = false, p_is_first_ = false;
     bool fired_ = false;  // the strike under way was fired (not a skipped one)
-    bool strike_limit_ = false;  // the move under way trips the limit switch (injected)
+    bool p_drop_ = false; // a new session dropped the rest of the pass (exec_drop_pass)
+    [[nodiscard]] bool v3_dropped();
     std::size_t data_check_errors_ = 0;
 };
 

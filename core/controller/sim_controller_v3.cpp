@@ -70,6 +70,7 @@ void SimController::v3_boot(double now, bool keep_ram) {
     c_neg_ = false;  // exec_init
     f_neg_ = false;
     fired_ = false;
+    p_drop_ = false;
     if (keep_ram) {
         faults_ |= fault::warm_reset;
         state_ = job_active_ ? ControllerState::fault : ControllerState::idle;
@@ -170,6 +171,11 @@ void SimController::v3_hello(const encode::Frame& f, double now) {
                 set_waiting(false, now);
             }
         }
+        // The rest of a pass under way was in the ring: the executor leaves
+        // it at the next safe point (exec.c exec_drop_pass). Without this it
+        // took the new host's stream as that pass's strikes.
+        if (xs_ == X::feed || xs_ == X::move || xs_ == X::settle || xs_ == X::dwell || xs_ == X::next)
+            p_drop_ = true;
         session_ = true;
         muted_ = false;
         nonce_ = n;
@@ -364,6 +370,19 @@ void SimController::v3_control(const encode::Frame& f, double now) {
 }
 
 // --- the executor (exec.c)
+
+// Leaves a dropped pass at a safe point (at rest): it stays active, with its
+// strike count, and the job holds still until RESUME.
+bool SimController::v3_dropped() {
+    if (!p_drop_) return false;
+    p_drop_ = false;
+    xs_ = X::fetch;
+    pause_requested_ = false;
+    state_ = ControllerState::paused;
+    set_waiting(false, now_);
+    ack();
+    return true;
+}
 
 void SimController::v3_phase(double now, std::uint64_t first_ticks, std::uint64_t total_ticks) {
     if (first_ticks < kMinTimerGap) {
@@ -619,6 +638,7 @@ bool SimController::v3_poll(double now) {
             return true;
         case X::seek: xs_ = X::fetch; return true;
         case X::feed:
+            if (v3_dropped()) return true;
             if (p_left_ == 0) {
                 v3_pass_end();
                 return true;
@@ -678,6 +698,7 @@ bool SimController::v3_poll(double now) {
                 return true;
             }
             fired_ = false;
+            if (v3_dropped()) return true;  // the entry went with the ring
             {
                 const std::size_t n = (v3_at(0) & kEntryExt) ? 2 : 1;
                 ring_.erase(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(n));
@@ -697,6 +718,7 @@ bool SimController::v3_poll(double now) {
             }
             return true;
         case X::next:
+            if (v3_dropped()) return true;
             if (state_ == ControllerState::paused || state_ == ControllerState::fault) return false;
             if (ops_done_ == 0) {
                 // The next strike's entry has not arrived: wait at rest.

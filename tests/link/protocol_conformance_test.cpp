@@ -44,6 +44,8 @@ struct Controller {
     bool firmware = false;
     std::uint8_t protocol = 2;
 };
+// Test names in ctest read "GetParam() = cpp_simulator_v3", not the struct's bytes.
+void PrintTo(const Controller& c, std::ostream* os) { *os << c.name; }
 
 // The tables the firmware under test was built with; the C++ controller is
 // given the same ones.
@@ -395,6 +397,47 @@ TEST_P(Conformance, AFaultInTheMiddleOfAPassKeepsItsProgress) {
     EXPECT_EQ(st.flags & encode::flag::job_active, encode::flag::job_active);
     EXPECT_EQ(st.flags & encode::flag::homed, 0);
     EXPECT_EQ(st.ack.buffer_free, controller::v3::kRingBytes);  // the ring was dropped
+}
+
+// A new session (a new host after the old one died mid-job) while a pass is
+// under way: the ring is dropped and the job holds still (paused) until
+// RESUME, and what the new host sends then is taken as the ops it is, never
+// as the rest of the old pass's strikes.
+TEST_P(Conformance, ANewSessionInTheMiddleOfAPassHoldsTheJobStill) {
+    REQUIRE_V3();
+    hello(0, 0x1001);
+    configure_v3(1);
+    // A pass of 4 strikes of which only 2 entries are sent: it strikes 2 and
+    // waits at rest for the third entry.
+    send_data(2, {encode::v3::op_job_begin, 0x0A, 0xBC, 0, 0, encode::v3::op_home, encode::v3::op_pass, 0x00, 0x00,
+                  40, 4, 0x00, 0x02});
+    std::uint8_t seq = 3;
+    encode::Status st;
+    for (int i = 0; i < 40; ++i) {
+        skip_until_quiet();
+        st = status(seq++);
+        if (st.ack.strikes_in_pass == 2 && st.ack.state == encode::ControllerState::waiting) break;
+    }
+    ASSERT_EQ(st.ack.strikes_in_pass, 2);
+    ASSERT_EQ(st.ack.state, encode::ControllerState::waiting);
+    const std::int32_t carriage = st.carriage_step;
+    // The new host: another nonce.
+    send(100, 0x01, encode::encode_hello({0x2002, 3}));
+    skip_until_quiet();
+    st = status(101);
+    EXPECT_EQ(st.ack.state, encode::ControllerState::paused);
+    EXPECT_EQ(st.ack.strikes_in_pass, 2);
+    EXPECT_NE(st.flags & encode::flag::pass_active, 0);
+    send(102, 0x05);  // RESUME
+    skip_until_quiet();
+    // A stream beginning with JOB_BEGIN: executed as a new job, not as strikes.
+    send_data(103, {encode::v3::op_job_begin, 0x0D, 0xEF, 0, 0, encode::v3::op_job_end});
+    skip_until_quiet();
+    st = status(104);
+    EXPECT_EQ(st.ack.job_id, 0x0DEF);
+    EXPECT_EQ(st.flags & encode::flag::job_active, 0);
+    EXPECT_EQ(st.ack.state, encode::ControllerState::idle);
+    EXPECT_EQ(st.carriage_step, carriage) << "the carriage moved: the new stream was taken as strikes";
 }
 
 // The host's bounded give-up: a controller that stops answering mid-job
