@@ -11,6 +11,7 @@
 #include "command.hpp"
 #include "controller/pty_server.hpp"
 #include "firmware_emulator.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 
 namespace tactus::cli {
@@ -34,6 +35,7 @@ struct SimArgs {
     std::string firmware;  // an .ihx: the reference firmware in s51 instead of the C++ model
     std::string profile;   // --firmware: steps/mm for the log's millimetres
     std::string pin_trace; // --firmware: keep the pin trace (VCD) here
+    std::string firmware_tables;  // a firmware build's ramp.json: the C++ model speaks protocol 3
 };
 
 // One strike as a JSON line, flushed: a reader sees every strike at once. The
@@ -117,7 +119,9 @@ struct MuteWatch {
 void run_sim(const SimArgs& a) {
     if (!a.firmware.empty()) return run_firmware_sim(a);
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required (the in-process simulator is the device \"sim\")");
-    auto server = controller::PtyServer::open(a.server);
+    auto options = a.server;
+    if (!a.firmware_tables.empty()) options.sim.firmware = require(profile::load_firmware_tables(a.firmware_tables));
+    auto server = controller::PtyServer::open(options);
     if (!server) fail_with(server.error());
     auto& ctl = server->controller();
     if (a.paper_out_at > 0) ctl.inject_paper_out_at_sheet(static_cast<std::uint16_t>(a.paper_out_at));
@@ -195,6 +199,10 @@ void add_sim_command(CLI::App& app) {
     cmd->add_option("--firmware", args->firmware,
                     "Run the reference firmware (make -C firmware emu: firmware/build-emu/tactus-fw.ihx) in the s51 "
                     "emulator instead of the C++ model; strikes are read from its pins")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--firmware-tables", args->firmware_tables,
+                    "Speak protocol 3 as the reference firmware built with these ramp tables does (its "
+                    "build/ramp.json; HELLO_REPLY reports their id); without it the C++ controller speaks protocol 2")
         ->check(CLI::ExistingFile);
     cmd->add_option("--profile,-p", args->profile, "With --firmware: the profile whose steps/mm the log's mm use");
     cmd->add_option("--pin-trace", args->pin_trace,

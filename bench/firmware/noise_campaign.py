@@ -15,6 +15,12 @@ tests compare with the plan) or fail cleanly (exit 1 or 4 with "resume with
 the clean run's first-to-last strike time over the noisy run's, both in the
 emulator's own clock (s51's cycle count, so the machine's load does not
 enter). Writes bench/firmware/noise-last-run.json.
+
+With --cpp the same runs go to the C++ simulated controller speaking protocol
+3 as the firmware does (`sim --pty --firmware-tables` with the emulator
+build's ramp.json, motion in real time): the pty path of the campaign the
+unit tests run in process over hundreds of seeds (NoiseCampaignV3). Its
+clock is the controller's simulated one. Writes noise-last-run-cpp.json.
 """
 import argparse
 import json
@@ -44,9 +50,12 @@ def span(log):
     return log[-1][4] - log[0][4] if len(log) > 1 else 0.0
 
 
-def run(cli, fw, tables, note, rate, seed, tmp):
+def run(cli, fw, tables, note, rate, seed, tmp, cpp=False):
     log = Path(tmp) / f"strikes-{rate}-{seed}.jsonl"
-    sim = [cli, "sim", "--firmware", str(fw), "--pty", "--strike-log", str(log)]
+    if cpp:
+        sim = [cli, "sim", "--pty", "--baud", "9600", "--firmware-tables", str(tables), "--strike-log", str(log)]
+    else:
+        sim = [cli, "sim", "--firmware", str(fw), "--pty", "--strike-log", str(log)]
     if rate > 0:
         sim += ["--noise", str(rate), "--seed", str(seed)]
     server = subprocess.Popen(sim, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -69,13 +78,14 @@ def main():
     ap.add_argument("--firmware", default=str(ROOT / "build/default/firmware-emu/tactus-fw.ihx"))
     ap.add_argument("--seeds", type=int, default=5)
     ap.add_argument("--rates", default="1e-3,1e-2,2e-2")
+    ap.add_argument("--cpp", action="store_true", help="the C++ controller on protocol 3 instead of the firmware")
     a = ap.parse_args()
     fw = Path(a.firmware)
     tables = fw.with_name("ramp.json")
     note = ROOT / "resources/samples/firmware-note.md"
     results = {"runs": [], "summary": {}}
     with tempfile.TemporaryDirectory() as tmp:
-        clean = run(a.cli, fw, tables, note, 0, 0, tmp)
+        clean = run(a.cli, fw, tables, note, 0, 0, tmp, a.cpp)
         if clean["exit"] != 0:
             sys.exit(f"the clean run failed: {clean['output']}")
         want = places(clean["strikes"])
@@ -85,7 +95,7 @@ def main():
             done = clean_fail = wrong = ended = 0
             secs = 0.0
             for seed in range(1, a.seeds + 1):
-                r = run(a.cli, fw, tables, note, rate, seed, tmp)
+                r = run(a.cli, fw, tables, note, rate, seed, tmp, a.cpp)
                 got = places(r["strikes"])
                 ended += r["emulator_ended"]
                 if r["exit"] == 0 and got == want:
@@ -111,7 +121,8 @@ def main():
                                              "emulator_ended": ended}
             print(f"noise {rate:g}: {done} exact, {clean_fail} failed cleanly, {wrong} wrong of {a.seeds}; "
                   f"throughput {thr:.1f} % of a clean line; s51 ended by itself {ended} times")
-    (ROOT / "bench/firmware/noise-last-run.json").write_text(json.dumps(results, indent=1) + "\n")
+    out = "noise-last-run-cpp.json" if a.cpp else "noise-last-run.json"
+    (ROOT / "bench/firmware" / out).write_text(json.dumps(results, indent=1) + "\n")
 
 
 if __name__ == "__main__":

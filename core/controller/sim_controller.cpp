@@ -46,7 +46,10 @@ double SimController::ticks_to_s(std::uint64_t ticks) const {
     return options_.instant_motion ? 0.0 : static_cast<double>(ticks) / machine::kTickHz;
 }
 
-std::size_t SimController::ring_free() const { return machine::ram::kRingBytes - ring_.size(); }
+std::size_t SimController::ring_free() const {
+    if (v3_mode()) return v3_ring_free();
+    return machine::ram::kRingBytes - ring_.size();
+}
 
 bool SimController::move_buffered(std::size_t first_op_size) const {
     std::size_t pos = first_op_size;
@@ -105,6 +108,10 @@ std::vector<std::uint8_t> SimController::take_output() { return std::exchange(ou
 // Power-on or reset. The 8051 clears its SFRs on reset but not its RAM; only a
 // power cycle loses RAM, and the firmware tells the two apart by a signature.
 void SimController::boot(double now, bool keep_ram) {
+    if (v3_mode()) {
+        v3_boot(now, keep_ram);
+        return;
+    }
     if (current_) interrupt_op(now);
     current_.reset();
     expected_seq_ = 0;
@@ -181,7 +188,12 @@ void SimController::receive(std::span<const std::uint8_t> bytes, double now) {
     if (now - last_byte_ > kIdleGap) decoder_.idle(frames);
     last_byte_ = now;
     decoder_.push(bytes, frames);
-    for (const auto& f : frames) on_frame(f, now);
+    for (const auto& f : frames) {
+        if (v3_mode())
+            v3_frame(f, now);
+        else
+            on_frame(f, now);
+    }
 }
 
 void SimController::on_frame(const encode::Frame& f, double now) {
@@ -362,6 +374,11 @@ std::optional<double> SimController::next_event() const {
     auto consider = [&](std::optional<double> v) {
         if (v && (!t || *v < *t)) t = v;
     };
+    if (v3_mode()) {
+        if (phase_busy_) consider(phase_end_);
+        consider(reload_at_);
+        return t;
+    }
     if (current_) consider(op_end_);
     consider(keepalive_deadline());
     consider(reload_at_);
@@ -386,6 +403,10 @@ void SimController::set_waiting(bool waiting, double now) {
 }
 
 void SimController::advance(double t) {
+    if (v3_mode()) {
+        v3_advance(t);
+        return;
+    }
     for (;;) {
         // The earliest of: the op under way ends, the keep-alive runs out, paper arrives.
         std::optional<double> next;

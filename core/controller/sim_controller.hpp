@@ -5,6 +5,15 @@
 // the job stream is executed in simulated time from the step schedule, so a
 // test can compare what was struck with what was planned, step for step.
 //
+// Which protocol it speaks: version 2 (docs/protocol.md, step segments in the
+// job stream) unless SimOptions::firmware gives the ramp tables of a reference
+// firmware build, when it speaks version 3 exactly as that firmware does
+// (firmware/PROTOCOL-v3.md; firmware/src/link.c and exec.c are the rules it
+// follows): HELLO_REPLY with the tables' id, the firmware's ring and window,
+// the DATA check, pass records timed from the tables. One version at a time,
+// as on the chip: a HELLO for the other is refused (NAK bad payload), so the
+// host's link finds the version the way it finds the firmware's.
+//
 // It is a pure state machine driven by the caller's clock: receive() bytes that
 // arrived at time t, advance(t) to execute up to t, take_output() for the reply
 // bytes. SimTransport runs it in-process on virtual time; `tactus-cli sim --pty`
@@ -15,6 +24,7 @@
 #include <span>
 #include <vector>
 
+#include "machine/firmware_tables.hpp"
 #include "machine/ram_budget.hpp"
 #include "encode/frame.hpp"
 #include "encode/messages.hpp"
@@ -58,7 +68,25 @@ struct SimOptions {
     double reload_paper_after_s = -1;
     double sheet_load_s = 0.8;  // pick up and position a sheet
     double sheet_eject_s = 0.8;
+    // Speak protocol 3 as the reference firmware built with these ramp tables
+    // (its build/ramp.json, profile::load_firmware_tables) does; nullopt:
+    // protocol 2. The sheet load and eject times above are v2's: the v3
+    // firmware loads and ejects in no time, as the emulated chip does.
+    std::optional<machine::FirmwareTables> firmware;
 };
+
+// The reference firmware's sizes (firmware/src/fw.h: a 64-byte buffer, 17 of
+// it kept for a control frame): what a v3 controller reports in HELLO_REPLY.
+namespace v3 {
+inline constexpr std::size_t kBufferBytes = 64;
+inline constexpr std::size_t kSlack = 17;
+inline constexpr std::size_t kRingBytes = kBufferBytes - kSlack;         // 47
+inline constexpr std::size_t kMaxPayload = kRingBytes * 2 / 3 + 2;       // 33: 31 bytes of ops and the check
+inline constexpr std::size_t kWindowFrames = 4;
+inline constexpr std::uint8_t kFirmwareMajor = 1;
+inline constexpr std::uint8_t kFirmwareMinor = 0;
+inline constexpr std::uint32_t kStartGapDefault = 3000;
+}  // namespace v3
 
 class SimController {
 public:
@@ -99,6 +127,13 @@ public:
     void wedge_after_pass(std::uint16_t executed) { wedge_after_ = executed; }
 
     [[nodiscard]] const std::vector<LoggedStrike>& strike_log() const { return log_; }
+    // The protocol version it speaks (2, or 3 with SimOptions::firmware).
+    [[nodiscard]] std::uint8_t protocol() const {
+        return options_.firmware ? encode::kProtocolV3 : encode::kProtocolVersion;
+    }
+    // DATA frames whose v3 check failed although their frame CRC passed:
+    // dropped unanswered, never executed.
+    [[nodiscard]] std::size_t data_check_errors() const { return data_check_errors_; }
     [[nodiscard]] encode::Status status() const;
     [[nodiscard]] std::size_t ring_used() const { return ring_.size(); }
     [[nodiscard]] std::size_t max_ring_used() const { return max_ring_used_; }
@@ -202,6 +237,60 @@ private:
     double starved_since_ = -1;
     double starved_s_ = 0;
     std::vector<Wait> waits_;
+
+    // --- protocol 3 (sim_controller_v3.cpp): the reference firmware's link
+    // and executor (firmware/src/link.c, exec.c), in the same RAM / register
+    // split as above.
+    [[nodiscard]] bool v3_mode() const { return options_.firmware.has_value(); }
+    void v3_frame(const encode::Frame& f, double now);
+    void v3_hello(const encode::Frame& f, double now);
+    void v3_data(const encode::Frame& f, double now);
+    void v3_control(const encode::Frame& f, double now);
+    [[nodiscard]] bool v3_check_ops(std::span<const std::uint8_t> ops);
+    void v3_advance(double t);
+    [[nodiscard]] bool v3_poll(double now);
+    [[nodiscard]] bool v3_fetch(double now);
+    void v3_pass_begin(double now);
+    void v3_strike_move(double now);
+    void v3_pass_end();
+    void v3_fault(std::uint8_t bits, double now);
+    void v3_abort_motion();
+    void v3_flush();
+    void v3_boot(double now, bool keep_ram);
+    void v3_report_room();
+    void v3_starved();
+    // A timed phase (a move, a settle, a pulse): its first event comes
+    // `first_ticks` after the last event before it (or after `now` when the
+    // executor comes to it late: it waited for data or a RESUME), its last
+    // `total_ticks` after that same point.
+    void v3_phase(double now, std::uint64_t first_ticks, std::uint64_t total_ticks);
+    void v3_carriage(std::uint32_t steps, bool neg, double now);
+    [[nodiscard]] std::uint8_t v3_at(std::size_t i) const { return ring_[i]; }
+    [[nodiscard]] std::uint32_t v3_uvar(std::size_t& i) const;
+    [[nodiscard]] std::int32_t v3_svar(std::size_t& i) const;
+    [[nodiscard]] std::size_t v3_ring_free() const;
+
+    enum class X : std::uint8_t { fetch, home, seek, feed, move, settle, dwell, next };
+    // The job-stream check's state across frames (link.c's vstate).
+    struct V3Check {
+        std::uint8_t st = 0, n = 0, flags = 0, skip = 0;
+    };
+    V3Check v3c_;
+    std::size_t ops_done_ = 0;  // ring_[0, ops_done_) is whole and may be executed
+    // configuration (CONFIGURE v3)
+    std::uint16_t cfg_travel_ = 0, cfg_home_iv_ = 0, cfg_hammer_ = 0, cfg_settle_ = 0;
+    // executor (registers: reset on any boot)
+    X xs_ = X::fetch;
+    bool phase_busy_ = false;  // !mv_done
+    double phase_end_ = 0;     // the phase's last event
+    double last_event_ = 0;    // the last timer event made
+    std::uint8_t p_flags_ = 0, p_left_ = 0;
+    std::uint32_t p_first_ = 0;
+    bool c_neg_ = false, f_neg_ = false, ham_ccv_ = false, p_is_first_ = false;
+    bool fired_ = false;  // the strike under way was fired (not a skipped one)
+    bool p_drop_ = false; // a new session dropped the rest of the pass (exec_drop_pass)
+    [[nodiscard]] bool v3_dropped();
+    std::size_t data_check_errors_ = 0;
 };
 
 }  // namespace tactus::controller

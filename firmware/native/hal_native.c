@@ -22,4 +22,5 @@ uint8_t fw_paper_present(void) { return native_paper; }
 /* No motion natively: nothing is ever under way. */
 void exec_abort(void) { ++native_aborts; }
 uint8_t exec_busy(void) { return 0; }
+void exec_drop_pass(void) {}
 uint8_t fw_stack_used(void) { return 0; }

@@ -28,6 +28,7 @@ static __bit c_neg;             /* carriage's last direction (backlash) */
 static __bit f_neg;
 static __bit ham_ccv;
 static __bit p_is_first; /* the next entry is the pass's first (its move is the header's) */
+static __bit p_drop;     /* a new session dropped the rest of the pass (exec_drop_pass) */
 
 #ifdef FW_EMU
 /* Called once a strike is made (fired, counted, its pulse over, the hammer
@@ -48,11 +49,31 @@ void exec_abort(void) {
     HAM_CVX = 0;
     HAM_CCV = 0;
     xs = X_FETCH;
-    fw_flags &= (uint8_t)~FL_PASS_ACTIVE;
+    /* The pass stays active: strikes in pass counts what it struck, and the
+     * host's restart after a limit, hammer or stream fault skips exactly
+     * those (clearing it here made the host restart the pass from its first
+     * strike, as main.c once did after a warm reset). ABORT clears it (link.c). */
+}
+
+void exec_drop_pass(void) {
+    if (xs >= X_FEED) p_drop = 1;
+}
+
+/* Leaves a dropped pass at a safe point (at rest): it stays active, with its
+ * strike count, and the job holds still until RESUME. */
+static uint8_t dropped(void) {
+    if (!p_drop) return 0;
+    p_drop = 0;
+    xs = X_FETCH;
+    fw_pause_req = 0;
+    fw_state = ST_PAUSED;
+    fw_ack();
+    return 1;
 }
 
 void exec_init(void) {
     xs = X_FETCH;
+    p_drop = 0;
     c_neg = 0;
     f_neg = 0;
 }
@@ -296,6 +317,7 @@ void exec_poll(void) {
             return;
         case X_SEEK: xs = X_FETCH; return;
         case X_FEED:
+            if (dropped()) return;
             if (p_left == 0) {
                 pass_end();
                 return;
@@ -338,6 +360,7 @@ void exec_poll(void) {
                 fw_strike_fired();
             }
 #endif
+            if (dropped()) return; /* the entry went with the ring */
             fw_ops_head += (at(0) & E_EXT) ? 2 : 1;
             if (--p_left == 0) {
                 pass_end();
@@ -353,6 +376,7 @@ void exec_poll(void) {
             }
             return;
         case X_NEXT:
+            if (dropped()) return;
             if (fw_state == ST_PAUSED || fw_state == ST_FAULT) return;
             if (fw_ops_head == fw_ops_done) {
                 /* The next strike's entry has not arrived: wait at rest. */

@@ -10,6 +10,10 @@ void exec_abort(void);
 /* Whether the op at the head of the ring is under way (a pass record's bytes
  * are consumed as its strikes are made). */
 uint8_t exec_busy(void);
+/* A new session dropped the ring in the middle of a pass: the strike under
+ * way ends, then the executor leaves the pass (still active, with its strike
+ * count, which the new host skips) and holds still until RESUME. */
+void exec_drop_pass(void);
 #ifdef FW_EMU
 /* A strike was fired (the emulator's reset breakpoint goes on it). */
 void fw_strike_fired(void);

@@ -340,6 +340,9 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
                 else fw_state = ST_PAUSED;
             }
         }
+        /* The rest of a pass under way was in the ring: without this the
+         * executor took the new host's stream as that pass's strikes. */
+        exec_drop_pass();
         session = 1;
         nonce = n;
         expected = (uint8_t)(seq + 1);

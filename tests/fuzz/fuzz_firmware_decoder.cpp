@@ -74,6 +74,7 @@ uint8_t fw_stack_used(void) { return 0; }
 const uint8_t fw_table_id[4] = {1, 2, 3, 4};
 void exec_abort(void) {}
 uint8_t exec_busy(void) { return 0; }
+void exec_drop_pass(void) {}
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

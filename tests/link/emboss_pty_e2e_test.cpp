@@ -19,7 +19,10 @@
 #include "controller/sim_controller.hpp"
 #include "encode/messages.hpp"
 #include "profile/profile.hpp"
+#include "pipeline/pipeline.hpp"
 #include "plan/plan_file.hpp"
+#include "plan/planner.hpp"
+#include "profile/firmware_tables.hpp"
 #include "../common/process.hpp"
 #include "../common/strike_log.hpp"
 #include "../common/test_plans.hpp"
@@ -172,6 +175,77 @@ TEST_F(PtyEndToEnd, EmbossOnTheInProcessSimulator) {
     const auto out = p.read_all();
     EXPECT_EQ(p.wait(), 0) << out;
     EXPECT_NE(out.find("embossed 12 passes"), std::string::npos) << out;
+}
+
+// Protocol 3 end to end through the CLI, against the C++ controller speaking
+// it (`sim --pty --firmware-tables`): `emboss --firmware-tables` finds the
+// version from HELLO_REPLY, plans with the tables, and the strikes are the
+// plan's, on a clean line, across a warm reset in the middle of a pass, and
+// on a noisy line. The same commands the firmware in s51 is driven with
+// (firmware_emulator_e2e_test.cpp).
+class PtyEndToEndV3 : public PtyEndToEnd {
+protected:
+    static std::string note() { return std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md"; }
+    plan::JobPlan planned() {
+        const auto prof = profile::default_profile();
+        pipeline::PipelineOptions o;
+        o.layout.geometry.interpoint = prof.geometry.interpoint;
+        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
+        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+        auto doc = pipeline::lay_out_file(note(), o);
+        EXPECT_TRUE(doc) << doc.error().to_string();
+        plan::PlanOptions po;
+        auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
+        EXPECT_TRUE(tables) << tables.error().to_string();
+        po.firmware = *tables;
+        auto job = plan::plan_job(*doc, prof, po);
+        EXPECT_TRUE(job) << job.error().to_string();
+        return job ? *job : plan::JobPlan{};
+    }
+    Result emboss(std::vector<std::string> sim_extra) {
+        std::vector<std::string> sim{TACTUS_CLI, "sim", "--pty", "--baud", "9600", "--time-scale", "40",
+                                     "--firmware-tables", TACTUS_FIRMWARE_TABLES,
+                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
+        sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
+        Process server(sim);
+        const std::string pty = server.read_line(std::chrono::seconds(30));
+        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
+        auto client = cli_merged({TACTUS_CLI, "emboss", note(), "--device", "pty:" + pty + "?baud=9600",
+                                  "--firmware-tables", TACTUS_FIRMWARE_TABLES});
+        Result r;
+        r.output = client.read_all();
+        r.exit_code = client.wait();
+        server.signal(SIGTERM);
+        server.wait();
+        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
+        return r;
+    }
+};
+
+TEST_F(PtyEndToEndV3, StrikesThePlan) {
+    const auto want = controller::planned_strikes(planned());
+    ASSERT_FALSE(want.empty());
+    const auto r = emboss({});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.log, want);
+}
+
+TEST_F(PtyEndToEndV3, AWarmResetInTheMiddleOfAPassResumesAtTheExactStrike) {
+    const auto want = controller::planned_strikes(planned());
+    ASSERT_GT(want.size(), 20U);
+    const auto r = emboss({"--reset-at-strike", "17"});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("restarted"), std::string::npos) << r.output;
+    EXPECT_EQ(r.log, want);
+}
+
+TEST_F(PtyEndToEndV3, ANoisyLineStrikesExactly) {
+    const auto want = controller::planned_strikes(planned());
+    for (const char* seed : {"1", "2"}) {
+        const auto r = emboss({"--noise", "0.01", "--seed", seed});
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(r.log, want) << "seed " << seed;
+    }
 }
 
 }  // namespace
