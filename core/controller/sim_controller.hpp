@@ -85,7 +85,6 @@ inline constexpr std::size_t kMaxPayload = kRingBytes * 2 / 3 + 2;       // 33: 
 inline constexpr std::size_t kWindowFrames = 4;
 inline constexpr std::uint8_t kFirmwareMajor = 1;
 inline constexpr std::uint8_t kFirmwareMinor = 0;
-inline constexpr std::uint32_t kStartGapDefault = 3000;
 }  // namespace v3
 
 class SimController {

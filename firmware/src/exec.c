@@ -200,7 +200,7 @@ static void fetch(void) {
             fw_pass_index = be16(3);
             fw_executed = fw_pass_index;
             fw_strikes_in_pass = 0;
-            fw_flags |= FL_JOB_ACTIVE;
+            fw_flags = (uint8_t)((fw_flags | FL_JOB_ACTIVE) & ~FL_JOB_ENDED);
             fw_state = ST_RUNNING;
             fw_ops_head += 5;
             fw_ack();
@@ -214,7 +214,7 @@ static void fetch(void) {
              * xram otherwise. */
             *(volatile __xdata uint8_t *)0xFFFF = 's';
 #endif
-            fw_flags &= (uint8_t)~FL_JOB_ACTIVE;
+            fw_flags = (uint8_t)((fw_flags & ~FL_JOB_ACTIVE) | FL_JOB_ENDED);
             fw_state = ST_IDLE;
             fw_ack();
             break;

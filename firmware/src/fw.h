@@ -91,6 +91,10 @@
 #define FL_PASS_ACTIVE 0x04
 #define FL_PAPER 0x08
 #define FL_JOB_ACTIVE 0x10
+/* The job named by job id ran to its JOB_END (docs/protocol.md): set there,
+ * cleared by JOB_BEGIN (so an ABORT of a running job leaves it clear) and by
+ * a cold start. */
+#define FL_JOB_ENDED 0x20
 
 /* Capabilities. */
 #define CAP_INTERPOINT 0x01

@@ -440,6 +440,33 @@ TEST_P(Conformance, ANewSessionInTheMiddleOfAPassHoldsTheJobStill) {
     EXPECT_EQ(st.carriage_step, carriage) << "the carriage moved: the new stream was taken as strikes";
 }
 
+// STATUS_REPLY's *job ended* flag (docs/protocol.md, "What the controller
+// remembers"): set by JOB_END, kept by a new session and by ABORT once the
+// job has ended, cleared by the next JOB_BEGIN. (The firmware did not set it.)
+TEST_P(Conformance, JobEndedIsReportedUntilTheNextJobBegins) {
+    REQUIRE_V3();
+    hello(0, 0x3003);
+    configure_v3(1);
+    send_data(2, {encode::v3::op_job_begin, 0x03, 0x21, 0, 0, encode::v3::op_job_end});
+    skip_until_quiet();
+    auto st = status(3);
+    EXPECT_EQ(st.ack.job_id, 0x0321);
+    EXPECT_EQ(st.flags & encode::flag::job_active, 0);
+    EXPECT_EQ(st.flags & encode::flag::job_ended, encode::flag::job_ended);
+    send(4, 0x06);  // ABORT of an ended job: it still ran to its end
+    skip_until_quiet();
+    hello(20, 0x4004);  // a new host
+    st = status(21);
+    EXPECT_EQ(st.ack.job_id, 0x0321);
+    EXPECT_EQ(st.flags & encode::flag::job_ended, encode::flag::job_ended);
+    send_data(22, {encode::v3::op_job_begin, 0x03, 0x22, 0, 0});
+    skip_until_quiet();
+    st = status(23);
+    EXPECT_EQ(st.ack.job_id, 0x0322);
+    EXPECT_EQ(st.flags & encode::flag::job_active, encode::flag::job_active);
+    EXPECT_EQ(st.flags & encode::flag::job_ended, 0);
+}
+
 // The host's bounded give-up: a controller that stops answering mid-job
 // (stopped with SIGSTOP after the first pass) ends the job not_answering with
 // the sheet to resume from, within the bound, and what it struck is the
