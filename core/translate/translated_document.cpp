@@ -183,6 +183,23 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         std::u32string text;
         std::vector<std::uint8_t> emph;
         if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
+        // Spaces at a block's ends are print's (a text file's indent, a line
+        // kept verbatim), not braille: the layout's formats place the text.
+        if (j == spans.size()) {
+            const auto end = text.find_last_not_of(U' ');
+            const auto keep = end == std::u32string::npos ? 0 : end + 1;
+            text.resize(keep);
+            emph.resize(keep);
+        }
+        if (i == 0) {
+            const auto lead = std::min(text.size(), text.find_first_not_of(U' '));
+            text.erase(0, lead);
+            emph.erase(emph.begin(), emph.begin() + static_cast<std::ptrdiff_t>(lead));
+        }
+        if (text.empty()) {
+            i = j;
+            continue;
+        }
         // The first cell of a run never starts a line by itself: the block's
         // first cell, or text going on unspaced after a note reference (a space
         // after it gives a blank break anyway).
