@@ -12,7 +12,8 @@ namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
-// BANA Braille Formats 2016 §16.2 (for UEB): a note reference is dots 2356,
+// BANA Braille Formats 2016 §16.2 (for UEB; number not verified, docs/layout.md
+// "Sources"): a note reference is dots 2356,
 // 2356 followed unspaced by the reference (a number with its numeric indicator).
 constexpr document::Cell kNoteReferenceIndicator{0x36};
 
