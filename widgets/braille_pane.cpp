@@ -5,6 +5,9 @@
 #include <QInputMethodEvent>
 #include <QKeyEvent>
 #include <QMimeData>
+#include <QPaintEvent>
+#include <QPainter>
+#include <QTextBlock>
 #include <QUrl>
 
 namespace tactus::gui {
@@ -172,6 +175,31 @@ PrintPane::PrintPane(QWidget* parent) : QPlainTextEdit(parent) {
 bool PrintPane::event(QEvent* e) {
     if (leave_to_window(e)) return true;
     return QPlainTextEdit::event(e);
+}
+
+void PrintPane::paintEvent(QPaintEvent* e) {
+    QPlainTextEdit::paintEvent(e);
+    if (!marker_) return;
+    QPainter painter(viewport());
+    const auto offset = contentOffset();
+    const QColor ink = palette().color(QPalette::PlaceholderText);
+    for (auto block = firstVisibleBlock(); block.isValid(); block = block.next()) {
+        const auto box = blockBoundingGeometry(block).translated(offset);
+        if (box.top() > e->rect().bottom()) break;
+        if (!block.isVisible() || box.bottom() < e->rect().top()) continue;
+        const auto text = marker_(block.blockNumber());
+        if (text.isEmpty()) continue;
+        // A dashed rule across the line, the words on it: a page break seen as one.
+        const int mid = static_cast<int>(box.center().y());
+        const int left = static_cast<int>(box.left()) + 4;
+        const int words = fontMetrics().horizontalAdvance(text) + 12;
+        painter.setPen(QPen(ink, 1, Qt::DashLine));
+        painter.drawLine(left, mid, left + 16, mid);
+        painter.drawLine(left + 16 + words, mid, viewport()->width() - 4, mid);
+        painter.setPen(ink);
+        painter.drawText(QRect(left + 22, static_cast<int>(box.top()), words, static_cast<int>(box.height())),
+                         Qt::AlignVCenter | Qt::AlignLeft, text);
+    }
 }
 
 bool PrintPane::canInsertFromMimeData(const QMimeData* source) const {

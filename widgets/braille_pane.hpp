@@ -5,6 +5,7 @@
 // applies to the document (so one undo stack covers print and braille), with
 // six-key chord entry, space and backspace, and Unicode braille typed or pasted.
 #include <QPlainTextEdit>
+#include <functional>
 
 #include "document/cell.hpp"
 #include "six_key.hpp"
@@ -43,6 +44,10 @@ class PrintPane : public QPlainTextEdit {
     Q_OBJECT
 public:
     explicit PrintPane(QWidget* parent = nullptr);
+    // What a line without visible text stands for ("Print page 5" for a text
+    // file's form feed), drawn across that line as a rule with the words;
+    // empty for other lines.
+    void set_line_marker(std::function<QString(int line)> marker) { marker_ = std::move(marker); }
 
 Q_SIGNALS:
     void files_dropped(const QStringList& paths);
@@ -51,6 +56,10 @@ protected:
     bool canInsertFromMimeData(const QMimeData* source) const override;
     void insertFromMimeData(const QMimeData* source) override;
     bool event(QEvent* e) override;
+    void paintEvent(QPaintEvent* e) override;
+
+private:
+    std::function<QString(int)> marker_;
 };
 
 }  // namespace tactus::gui

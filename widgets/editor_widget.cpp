@@ -95,6 +95,23 @@ EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) 
     connect(braille_, &BraillePane::erase_forward, this, [this] { braille_erase(false); });
     connect(braille_, &BraillePane::new_paragraph, this, &EditorWidget::braille_new_paragraph);
     connect(print_, &PrintPane::files_dropped, this, &EditorWidget::files_dropped);
+    // A text file's form feed has no glyph: the line shows what it is.
+    print_->set_line_marker([this](int line) {
+        if (!layout_ || static_cast<std::size_t>(line) >= layout_->line_count()) return QString{};
+        const auto& text = layout_->line(static_cast<std::size_t>(line));
+        if (text.find_first_not_of("\f \t\r") != std::string::npos) return QString{};
+        return page_break_text(line);
+    });
+}
+
+QString EditorWidget::page_break_text(int line) const {
+    if (!layout_ || line < 0 || static_cast<std::size_t>(line) >= layout_->line_count()) return {};
+    const auto i = static_cast<std::size_t>(line);
+    const auto block = edit::parse_editor_line(layout_->line(i), layout_->dialect());
+    if (!block || block->kind != document::BlockKind::print_page_break) return {};
+    // The print page it starts, by core's numbering (document/print_page.hpp).
+    const auto page = QString::fromStdString(layout_->print_page_at(i));
+    return page.isEmpty() ? tr("Print page break") : tr("Print page break, page %1").arg(page);
 }
 
 EditorWidget::~EditorWidget() = default;
@@ -274,6 +291,12 @@ void EditorWidget::sync_from_print() {
     braille_->ensureCursorVisible();
     syncing_ = false;
     Q_EMIT position_changed(current_position());
+    // Coming to a page break line, the reader hears what it is.
+    const int line = pc.blockNumber();
+    if (line != cursor_line_) {
+        cursor_line_ = line;
+        if (const auto spoken = page_break_text(line); !spoken.isEmpty()) Q_EMIT page_break_reached(spoken);
+    }
 }
 
 void EditorWidget::sync_from_braille() {

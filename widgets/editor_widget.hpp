@@ -44,6 +44,10 @@ public:
     [[nodiscard]] std::size_t current_cell() const;
     [[nodiscard]] edit::PagePosition current_position() const;
 
+    // What a print page break line says, drawn on it and spoken when the cursor
+    // comes to it ("Print page break, page 5"); empty for any other line.
+    [[nodiscard]] QString page_break_text(int line) const;
+
     // Cell edits on line `line`: replace cells [from, to) with `cells`.
     void edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells);
 
@@ -54,6 +58,9 @@ Q_SIGNALS:
     // A cell typed with six keys, in words: "dots 1-2, b" (the dots, then the
     // print it back-translates to), for the screen reader to echo.
     void cell_entered(const QString& spoken);
+    // The print cursor came to a print page break line: what to say for it
+    // (a text file's form feed shows nothing a screen reader could read).
+    void page_break_reached(const QString& spoken);
 
 private:
     void refresh_braille();
@@ -73,6 +80,7 @@ private:
     QUndoStack* undo_ = nullptr;
     std::optional<edit::LiveLayout> layout_;
     int known_blocks_ = 1;
+    int cursor_line_ = -1;  // the print cursor's line when it last moved
     bool syncing_ = false;
     edit::RelayoutStats last_stats_;
 };

@@ -192,8 +192,8 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         return b;
     }
     if (dialect == Dialect::text) {
-        // The text as written.
-        b.spans.push_back(document::Span{std::string(t)});
+        // The text as written, the spaces at its ends too (a .txt is verbatim).
+        b.spans.push_back(document::Span{std::string(line)});
         return b;
     }
     if (t.starts_with('|')) {

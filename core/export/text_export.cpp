@@ -22,8 +22,10 @@ std::string escape_inline(std::string_view text, bool in_table) {
 
 // Keeps a paragraph's first characters from reading as a heading, list, break or table.
 std::string guard_line_start(std::string s) {
-    // Spaces at a block's start are not Markdown text: the mark must see the text.
-    s.erase(0, std::min(s.size(), s.find_first_not_of(' ')));
+    // Spaces and tabs at a block's start are not Markdown text (CommonMark
+    // strips them from a paragraph; a tab would even open a list or code
+    // block): the mark must see the text.
+    s.erase(0, std::min(s.size(), s.find_first_not_of(" \t")));
     if (s.empty()) return s;
     if (const auto n = ordinal_length(s); n > 0 && n < s.size() + 1) {
         s.insert(n - 1, 1, '\\');

@@ -14,13 +14,6 @@ bool is_blank(std::string_view s) {
     return s.find_first_not_of(" \t\v") == std::string_view::npos;
 }
 
-std::string_view trim(std::string_view s) {
-    const auto first = s.find_first_not_of(" \t\v");
-    if (first == std::string_view::npos) return {};
-    const auto last = s.find_last_not_of(" \t\v");
-    return s.substr(first, last - first + 1);
-}
-
 class TextReader {
 public:
     explicit TextReader(bool line_per_paragraph) : line_per_paragraph_(line_per_paragraph) {}
@@ -38,16 +31,22 @@ public:
     DocumentBuilder& builder() { return builder_; }
 
 private:
+    // A paragraph keeps the spaces at its ends as written (the text is
+    // verbatim; braille leaves them out, translate/translated_document.cpp);
+    // the lines of a hard-wrapped paragraph are joined with one space.
     void segment(std::string_view text, int number) {
         if (is_blank(text)) {
             builder_.end();
             return;
         }
-        if (!builder_.is_open() || line_per_paragraph_)
+        if (!builder_.is_open() || line_per_paragraph_) {
             builder_.begin(document::BlockKind::paragraph, 0, number);
-        else
+        } else {
+            builder_.trim_end();
             builder_.add_text(" ");
-        builder_.add_text(trim(text));
+            text = text.substr(text.find_first_not_of(" \t\v"));
+        }
+        builder_.add_text(text);
     }
 
     bool line_per_paragraph_;

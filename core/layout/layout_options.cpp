@@ -52,7 +52,8 @@ BlockIndents block_indents(const LayoutOptions& o, document::BlockKind kind, int
             return {indent, indent + o.list_runover, false};
         }
         case document::BlockKind::note:
-            // BANA Braille Formats §16 (notes): 7-5, the note starts in cell 7
+            // BANA Braille Formats §16 (notes; number not verified, docs/layout.md
+            // "Sources"): 7-5, the note starts in cell 7
             // with its reference, runover lines in cell 5.
             return {std::min(6, width / 2), std::min(4, width / 2), false};
         case document::BlockKind::table_cell:

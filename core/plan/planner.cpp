@@ -91,11 +91,19 @@ struct Planner::HitTable {
 namespace {
 
 // Every dot of one sheet, sorted by feed position then carriage position.
-Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
-                                      std::size_t sheet_number, const motion::StepAxis& carriage,
-                                      const motion::StepAxis& feed, bool check,
-                                      const Planner::HitTable* table = nullptr) {
-    std::vector<Hit> hits;
+// Returns a reference to a buffer of this thread that the next call reuses
+// (a sheet's dots without a reallocation per sheet).
+Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, const layout::PagedDocument& doc,
+                                             std::size_t sheet_number, const motion::StepAxis& carriage,
+                                             const motion::StepAxis& feed, bool check,
+                                             const Planner::HitTable* table = nullptr) {
+    thread_local std::vector<Hit> hits, sorted;
+    struct Key {
+        std::int32_t feed_step, head_step;
+        std::uint32_t index;
+    };
+    thread_local std::vector<Key> keys;
+    hits.clear();
     const layout::Sheet sheet = doc.sheet(sheet_number);
     const int dots = p.geometry.eight_dot ? 8 : 6;
     for (const auto& [side, page] : {std::pair{Side::front, sheet.front}, std::pair{Side::back, sheet.back}}) {
@@ -118,10 +126,19 @@ Result<std::vector<Hit>> collect_hits(const profile::PrinterProfile& p, const la
             }
         }
     }
-    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+    // By feed position, then carriage position. The sort runs on 12-byte keys
+    // carrying the dot's index, then the dots are gathered: std::sort's moves
+    // depend only on its comparisons, which give the same answers as on the
+    // dots, so the order is the same, ties included.
+    keys.resize(hits.size());
+    for (std::size_t i = 0; i < hits.size(); ++i)
+        keys[i] = {hits[i].feed_step, hits[i].head_step, static_cast<std::uint32_t>(i)};
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
         return a.feed_step != b.feed_step ? a.feed_step < b.feed_step : a.head_step < b.head_step;
     });
-    return hits;
+    sorted.resize(hits.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = hits[keys[i].index];
+    return &sorted;
 }
 
 constexpr std::uint64_t kMaxSettleTicks = static_cast<std::uint64_t>(0.5 * machine::kTickHz);  // half a second
@@ -231,19 +248,17 @@ Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOpti
 }
 
 Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const motion::MoveShape& shape) {
-    auto it = carriage_cache_.find(steps);
-    if (it == carriage_cache_.end() && o_.firmware) {
-        it = carriage_cache_
-                 .emplace(steps, motion::table_move(o_.firmware->carriage, static_cast<std::int32_t>(steps),
-                                                    strike_.settle_ticks))
-                 .first;
-    } else if (it == carriage_cache_.end()) {
+    if (steps >= carriage_cache_.size()) carriage_cache_.resize(steps + 1);
+    auto& known = carriage_cache_[steps];
+    if (!known && o_.firmware) {
+        known = motion::table_move(o_.firmware->carriage, static_cast<std::int32_t>(steps), strike_.settle_ticks);
+    } else if (!known) {
         auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
                              p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "carriage"));
-        it = carriage_cache_.emplace(steps, std::move(*m)).first;
+        known = std::move(*m);
     }
-    return it->second;
+    return *known;
 }
 
 const estimate::TuneChoice& Planner::table_move_choice(std::uint32_t steps, const motion::StepMove& m) {
@@ -312,7 +327,7 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     // Loading a sheet takes seconds: the head starts each sheet at rest.
     ringing_->reset();
-    const auto& h = *hits;
+    const auto& h = **hits;
     for (std::size_t first = 0; first < h.size();) {
         std::size_t end = first;
         while (end < h.size() && h[end].feed_step == h[first].feed_step) ++end;
@@ -520,7 +535,7 @@ Result<double> naive_duration(const layout::PagedDocument& doc, const profile::P
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
         auto hits = collect_hits(p, doc, s, carriage, feed, false);
         if (!hits) return std::unexpected(hits.error());
-        const auto& h = *hits;
+        const auto& h = **hits;
         std::int32_t feed_pos = 0;
         for (std::size_t first = 0; first < h.size();) {
             std::size_t end = first;

@@ -106,7 +106,7 @@ private:
     std::unique_ptr<estimate::Ringing> ringing_;
     std::vector<const estimate::TunedMove*> tuned_;  // by carriage steps: the tuner's choices, looked up once
     motion::StepAxis carriage_axis_, feed_axis_;
-    std::unordered_map<std::uint32_t, motion::StepMove> carriage_cache_;
+    std::vector<std::optional<motion::StepMove>> carriage_cache_;  // by carriage steps
     std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
     std::unordered_map<std::uint32_t, estimate::TuneChoice> table_choice_;  // v3: residuals of table moves
     std::shared_ptr<TableEstimates::Entry> shared_choice_;                  // v3: the same, shared across plans

@@ -12,7 +12,8 @@ namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
-// BANA Braille Formats 2016 §16.2 (for UEB): a note reference is dots 2356,
+// BANA Braille Formats 2016 §16.2 (for UEB; number not verified, docs/layout.md
+// "Sources"): a note reference is dots 2356,
 // 2356 followed unspaced by the reference (a number with its numeric indicator).
 constexpr document::Cell kNoteReferenceIndicator{0x36};
 
@@ -183,6 +184,23 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         std::u32string text;
         std::vector<std::uint8_t> emph;
         if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
+        // Spaces at a block's ends are print's (a text file's indent, a line
+        // kept verbatim), not braille: the layout's formats place the text.
+        if (j == spans.size()) {
+            const auto end = text.find_last_not_of(U' ');
+            const auto keep = end == std::u32string::npos ? 0 : end + 1;
+            text.resize(keep);
+            emph.resize(keep);
+        }
+        if (i == 0) {
+            const auto lead = std::min(text.size(), text.find_first_not_of(U' '));
+            text.erase(0, lead);
+            emph.erase(emph.begin(), emph.begin() + static_cast<std::ptrdiff_t>(lead));
+        }
+        if (text.empty()) {
+            i = j;
+            continue;
+        }
         // The first cell of a run never starts a line by itself: the block's
         // first cell, or text going on unspaced after a note reference (a space
         // after it gives a blank break anyway).

@@ -211,6 +211,16 @@
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="114" />
+        <source>Print page break</source>
+        <translation>原書換頁</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="114" />
+        <source>Print page break, page %1</source>
+        <translation>原書換頁，第 %1 頁</translation>
+    </message>
 </context>
 <context>
     <name>tactus::gui::FindReplaceDialog</name>

@@ -52,6 +52,7 @@ T = {
     "the document": "文件", "Opened %1: %n sheet(s)": "已開啟 %1：%n 張",
     "%n line(s) could not be translated; they are left out of the braille": "有 %n 行無法轉譯，未列入點字",
     "Sheet %1 of %2%3 | line %4 | cell %5 | print page %6": "第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁",
+    "Print page break": "原書換頁", "Print page break, page %1": "原書換頁，第 %1 頁",
     ", back": "，背面", ", front": "，正面", "Untitled": "未命名", "Save as Markdown": "另存為 Markdown", "Save as": "另存新檔", "Plain text (*.txt)": "純文字 (*.txt)",
     "Markdown (*.md)": "Markdown (*.md)", "Saved %1": "已儲存 %1", "untitled": "未命名", "PEF (*.pef)": "PEF (*.pef)",
     "Braille ASCII (*.brf)": "點字 ASCII (*.brf)", "Export": "匯出", "Cannot export %1: %2": "無法匯出 %1：%2",

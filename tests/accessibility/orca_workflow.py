@@ -15,6 +15,9 @@ works the app by keyboard only, asserting after every key what Orca says:
           job completes.
   focus   Tab from the print text back to it stays on the visible page; F10
           opens the menus; Ctrl+P puts the focus on the printer panel.
+  formfeed  a text file with a form feed: the cursor coming to that line says
+          "Print page break, page 2" (the form feed itself has no glyph), and
+          the next line is read as text again (issue 13).
 
 usage: orca_workflow.py SCENARIO TACTUS SAMPLE
 Exit 0 pass, 1 fail (with the transcript), 77 skipped (no Orca / window manager).
@@ -202,7 +205,26 @@ def scenario_fault(tactus, sample, work):
     return 0
 
 
-SCENARIOS = {"open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault}
+def scenario_formfeed(tactus, sample, work):
+    doc = os.path.join(work, "pages.txt")
+    with open(doc, "w", encoding="utf-8") as f:
+        f.write("The first page ends here.\n\f\nThe second page starts here.\n")
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        # The print text has the focus on opening (launch hears "Print text").
+        s.launch([tactus, "--no-recovery", doc])
+        s.step("Ctrl+Home goes to the first line", keys=["ctrl+Home"], allow_silent=True, quiet=0.8)
+        s.step("Down to the form feed says it is a page break", keys=["Down"],
+               expect=[r"Print page break, page 2"], once=[r"Print page break"])
+        s.step("Down reads the next line as text", keys=["Down"], expect=[r"The second page starts here"],
+               forbid=[r"Print page break"])
+        print(s.summary())
+    return 0
+
+
+SCENARIOS = {"open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
+             "formfeed": scenario_formfeed}
 
 
 def main():

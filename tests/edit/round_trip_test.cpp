@@ -35,11 +35,13 @@ document::Document import_as(const std::string& bytes, const std::string& name) 
 }
 
 // The blocks as readable text (kind, level, label, spans with their marks),
-// source lines left out: what must survive a save and reopen. Empty entries at
+// source lines left out: what must survive a save and reopen. With `verbatim`
+// (a text file) the spaces at a block's ends count; in Markdown they are not
+// text (CommonMark strips them from a paragraph, docs/gui.md). Empty entries at
 // the end of a table row are left out too: a Markdown table gives every row
 // the width of its widest, and they lay out as missing ones (the braille pages
 // are compared as well).
-std::string without_lines(const std::vector<document::Block>& blocks) {
+std::string without_lines(const std::vector<document::Block>& blocks, bool verbatim = false) {
     std::string out;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const auto& b = blocks[i];
@@ -53,18 +55,16 @@ std::string without_lines(const std::vector<document::Block>& blocks) {
         }
         out += std::to_string(static_cast<int>(b.kind)) + "/" + std::to_string(b.level);
         if (b.kind == document::BlockKind::print_page_break) out += " page " + b.label;
-        // Spaces at either end of a block say nothing (Markdown has none at a
-        // block's start; braille drops them at a line end).
         auto spans = b.spans;
-        while (!spans.empty() && !spans.front().note_reference) {
+        while (!verbatim && !spans.empty() && !spans.front().note_reference) {
             auto& t = spans.front().text;
-            t.erase(0, std::min(t.size(), t.find_first_not_of(' ')));
+            t.erase(0, std::min(t.size(), t.find_first_not_of(" \t")));
             if (!t.empty()) break;
             spans.erase(spans.begin());
         }
-        while (!spans.empty() && !spans.back().note_reference) {
+        while (!verbatim && !spans.empty() && !spans.back().note_reference) {
             auto& t = spans.back().text;
-            t.erase(std::min(t.size(), t.find_last_not_of(' ') + 1));
+            t.erase(std::min(t.size(), t.find_last_not_of(" \t") + 1));
             if (!t.empty()) break;
             spans.pop_back();
         }
@@ -133,10 +133,26 @@ void expect_round_trip(const edit::LiveLayout& live, const std::string& name) {
     const auto before = live.document();
     const auto bytes = edit::file_text(lines, live.dialect(), before, name);
     const auto reopened = import_as(bytes, name);
-    ASSERT_EQ(without_lines(reopened.blocks), without_lines(before.blocks)) << bytes;
+    // A text file keeps the spaces at a paragraph's ends (issue 13: they were lost).
+    const bool verbatim = edit::dialect_for(name) == edit::Dialect::text;
+    ASSERT_EQ(without_lines(reopened.blocks, verbatim), without_lines(before.blocks, verbatim)) << bytes;
     const auto dialect = edit::dialect_for(name);
     const auto again = make(edit::render_editor_lines(reopened, dialect), dialect);
-    ASSERT_EQ(without_lines(again.document().blocks), without_lines(before.blocks)) << bytes;
+    ASSERT_EQ(without_lines(again.document().blocks, verbatim), without_lines(before.blocks, verbatim)) << bytes;
+    if (verbatim && live.dialect() == edit::Dialect::text) {
+        // And the text lines themselves, spaces and all.
+        const auto text_lines = [](const std::vector<std::string>& all) {
+            std::vector<std::string> out;
+            for (const auto& l : all)
+                if (const auto b = edit::parse_editor_line(l, edit::Dialect::text);
+                    b && b->kind == document::BlockKind::paragraph)
+                    out.push_back(l);
+            return out;
+        };
+        const auto kept = text_lines(lines);
+        const auto shown_again = text_lines(lines_of(again));
+        ASSERT_EQ(shown_again, kept) << bytes;
+    }
     if (before.blocks.empty()) return;
     // Every print page break the lines hold is in the file, a last one too
     // (counted from the lines themselves: an unlabelled break before any text
@@ -229,6 +245,31 @@ TEST(RoundTrip, TheEditorAndTheImporterNumberPrintPagesAlike) {
     expect_round_trip(live, "book.md");
 }
 
+// Issue 13: the spaces at the ends of a text file's paragraph were lost on
+// saving and reopening. A .txt is verbatim: they are kept (braille leaves them
+// out). In Markdown they are not text (CommonMark strips a paragraph's), so a
+// Markdown file is written without them.
+TEST(RoundTrip, SpacesAtAParagraphsEndsStayInATextFile) {
+    const std::string text = "  indented\n\nkept  \n\n\tTabbed\t\n";
+    const auto doc = import_as(text, "notes.txt");
+    ASSERT_EQ(doc.blocks.size(), 3u);
+    EXPECT_EQ(doc.blocks[0].text(), "  indented");
+    EXPECT_EQ(doc.blocks[1].text(), "kept  ");
+    EXPECT_EQ(doc.blocks[2].text(), "\tTabbed\t");
+    const auto live = make(edit::render_editor_lines(doc, edit::Dialect::text), edit::Dialect::text);
+    EXPECT_EQ(edit::file_text(lines_of(live), live.dialect(), live.document(), "notes.txt"), text);
+    expect_round_trip(live, "notes.txt");
+    expect_round_trip(live, "notes.md");
+    // The braille is that of the words: the spaces are print's.
+    EXPECT_EQ(text_of(live.paged().pages),
+              text_of(make({"indented", "", "kept", "", "Tabbed"}, edit::Dialect::text).paged().pages));
+    // A hard-wrapped paragraph keeps its first line's indent and its last line's
+    // end; its lines are joined with one space.
+    const auto wrapped = import_as("  one  \n  two  \n\nthree\n", "w.txt");
+    ASSERT_EQ(wrapped.blocks.size(), 2u);
+    EXPECT_EQ(wrapped.blocks[0].text(), "  one two  ");
+}
+
 // Issue 13: a page break with nothing after it was dropped on saving and
 // reopening (the importer dropped it as an empty page). It is kept, in the
 // file and the document, and adds no line to the braille.
@@ -282,9 +323,11 @@ struct Editor {
             case 0: return "\f";
             case 1: return "";
             default: {
-                std::string t;
+                // Spaces or a tab at either end now and then (issue 13: they were lost).
+                static const std::vector<std::string> edges{"", "", "", " ", "  ", "\t", "    "};
+                std::string t = edges[pick(edges.size())];
                 for (const auto& s : spans()) t += s.text;
-                return t;
+                return t + edges[pick(edges.size())];
             }
         }
     }

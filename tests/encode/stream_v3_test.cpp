@@ -141,10 +141,13 @@ Result<plan::JobPlan> firmware_plan(const machine::FirmwareTables& t, unsigned s
 TEST(StreamV3, RandomDocumentsRoundTripThroughTheFirmwareRules) {
     const auto t = tables();
     const auto timing = profile::strike_timing(profile::default_profile());
-    // Two documents, of 1 and 2 pages. Each plan estimates the firmware's
-    // table moves on their step trains again (about 2.5 s of CPU in a release
-    // build, minutes in the ASan debug build): twelve took 34 s here, and
-    // even four ran past ASan's 300 s.
+    // Two documents, of 1 and 2 pages. When each plan estimated the
+    // firmware's table moves a piece per step (about 2.5 s of CPU in a release
+    // build, minutes in the ASan debug build), twelve took 34 s here, and even
+    // four ran past ASan's 300 s. The estimates now go by runs of equal
+    // intervals and are shared across plans (plan::TableEstimates): about
+    // 0.1 s per plan in a release build; more documents could be afforded
+    // once the ASan build's time is measured again.
     for (unsigned seed = 1; seed <= 2; ++seed) {
         auto job = firmware_plan(t, seed, seed);
         ASSERT_TRUE(job) << job.error().to_string();

@@ -71,12 +71,14 @@ TEST(TextImport, PageBreaksBeforeAllContentAreDroppedAndAfterItKept) {
     EXPECT_EQ(doc->blocks[2], page_break("3", 3));
 }
 
-TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndIndentIsTrimmed) {
+// A paragraph's spaces at its ends are kept as written: a .txt is verbatim
+// (issue 13; braille leaves them out, the translator's rule).
+TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndEdgeSpacesAreKept) {
     const auto doc = import::import_bytes("   first\t \n  \t \n\tsecond  \n", "x.txt");
     ASSERT_TRUE(doc);
     ASSERT_EQ(doc->blocks.size(), 2u);
-    EXPECT_EQ(doc->blocks[0].text(), "first");
-    EXPECT_EQ(doc->blocks[1].text(), "second");
+    EXPECT_EQ(doc->blocks[0].text(), "   first\t ");
+    EXPECT_EQ(doc->blocks[1].text(), "\tsecond  ");
 }
 
 TEST(TextImport, EmptyInputIsAnEmptyDocument) {

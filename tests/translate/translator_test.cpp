@@ -146,7 +146,8 @@ TEST(TranslateBlock, LongParagraphCutAtSpacesMatchesWholeTranslation) {
     b.spans = {document::Span{text, document::emphasis_none}};
     const auto chunked = translate::translate_block(b, *t);
     ASSERT_TRUE(chunked);
-    const auto whole = t->translate(u32(text));
+    // The block's last space is print's, not braille (a block's edge spaces are left out).
+    const auto whole = t->translate(u32(text.substr(0, text.size() - 1)));
     ASSERT_TRUE(whole);
     EXPECT_EQ(document::to_unicode_text(chunked->cells), document::to_unicode_text(*whole));
 }

@@ -2,6 +2,7 @@
 // The editor widget: typing re-translates live, cursor and selection follow
 // between print and braille, undo/redo through the QUndoStack, find/replace.
 #include <QLineEdit>
+#include <QSignalSpy>
 #include <QTextBlock>
 #include <QtTest>
 
@@ -164,6 +165,50 @@ private Q_SLOTS:
         auto fresh = edit::LiveLayout::create("en-ueb-g2.ctb", {});
         fresh->reset(all);
         QVERIFY(fresh->paged().pages == editor->layout().paged().pages);
+    }
+
+    // Issue 13: a text file's form feed showed nothing and said nothing. Its
+    // line is drawn as a page break with its print page, and the cursor coming
+    // to it says "Print page break, page 2"; the text saved is unchanged.
+    void a_form_feed_line_is_shown_and_spoken_as_a_page_break() {
+        auto layout = edit::LiveLayout::create("en-ueb-g2.ctb", {});
+        QVERIFY(layout.has_value());
+        layout->set_dialect(edit::Dialect::text);
+        layout->reset({"one", "\f", "two", "---"});
+        editor->adopt(std::move(*layout));
+        QCOMPARE(editor->page_break_text(1), QStringLiteral("Print page break, page 2"));
+        QVERIFY(editor->page_break_text(0).isEmpty());
+        QVERIFY(editor->page_break_text(3).isEmpty());  // "---" is text in a text file
+        QSignalSpy spoken(editor.get(), &EditorWidget::page_break_reached);
+        auto* print = editor->print_pane();
+        print->setFocus();
+        auto c = print->textCursor();
+        c.setPosition(print->document()->findBlockByNumber(1).position());
+        print->setTextCursor(c);
+        QCOMPARE(spoken.count(), 1);
+        QCOMPARE(spoken.front().front().toString(), QStringLiteral("Print page break, page 2"));
+        c.setPosition(print->document()->findBlockByNumber(2).position());
+        print->setTextCursor(c);
+        QCOMPARE(spoken.count(), 1);  // an ordinary line says nothing more
+        // The rule is drawn on the form feed's line and nowhere else: the
+        // line's pixels hold the marker's ink, the blank line's none.
+        const auto image = print->viewport()->grab().toImage();
+        const auto ink_in = [&](int line) {
+            QTextCursor at(print->document()->findBlockByNumber(line));
+            const QRectF box = print->cursorRect(at);
+            const auto background = image.pixel(image.width() - 2, static_cast<int>(box.top()) + 1);
+            int ink = 0;
+            for (int y = static_cast<int>(box.top()); y < static_cast<int>(box.bottom()); ++y)
+                for (int x = static_cast<int>(print->width() * 0.6); x < image.width() - 6; ++x)
+                    if (image.pixel(x, y) != background) ++ink;
+            return ink;
+        };
+        QVERIFY(ink_in(1) > 0);
+        QCOMPARE(ink_in(0), 0);
+        // Saved as text, the form feed line is the form feed it was.
+        QCOMPARE(QString::fromStdString(edit::file_text(std::vector<std::string>{"one", "\f", "two", "---"},
+                                                        edit::Dialect::text, editor->layout().document(), "t.txt")),
+                 QStringLiteral("one\n\f\ntwo\n---\n"));
     }
 };
 
