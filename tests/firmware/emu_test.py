@@ -167,6 +167,10 @@ def schedule_spread(passes, settle, hammer, got):
         return float("inf")
     d = [round(g - w) for (_, w), (_, g) in zip(want, got)]
     spread = max(d) - min(d)
+    hist = {}
+    for (k, _), x in zip(want, d):
+        hist[(k, x - min(d))] = hist.get((k, x - min(d)), 0) + 1
+    print("edges by kind and cycles off the earliest:", dict(sorted(hist.items())))
     print(f"{len(d)} step and hammer edges vs the firmware's schedule: the same to within {spread} cycles")
     return spread
 
