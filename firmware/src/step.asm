@@ -56,6 +56,7 @@ TH2     = 0xCD
 EA      = 0xAF          ; bit IE.7
 ACC0    = 0xE0          ; bit ACC.0
 ACC1    = 0xE1          ; bit ACC.1
+ACC2    = 0xE2          ; bit ACC.2
 CSTEP   = 0x90          ; bit P1.0: carriage STEP
 LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
         .include "ramp_eq.inc"  ; RAMP_DN_CL, RAMP_DN_CH, RAMP_DN_TOP (gen-ramp.py)
@@ -81,14 +82,17 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 _t2_isr:
         push    PSW                     ; 2
         xch     a, _t2_a                ; 1  ACC kept in RAM: no stack
+        clr     c                       ; 1
         mov     a, TL2                  ; 1  cycles since the overflow, + RCAP2L
-        setb    c                       ; 1
-        subb    a, RCAP2L               ; 1  - 1
+        subb    a, RCAP2L               ; 1  (its place sets the window: EDGE_E)
         jb      ACC0, 1$                ; 2
         nop                             ; 1
 1$:     jb      ACC1, 2$                ; 2
         sjmp    2$                      ; 2
-2$:     mov     a, _s_pin               ; 1
+2$:     jb      ACC2, 4$                ; 2
+        sjmp    3$                      ; 2
+3$:     sjmp    4$                      ; 2
+4$:     mov     a, _s_pin               ; 1
         xrl     P1, a                   ; 1  the edge: every step pin is low here,
         clr     TF2                     ; 1  the hammers as motion.c sets s_pin
         jnb     _m_cr, 10$              ; 2
@@ -108,63 +112,70 @@ _t2_isr:
         pop     PSW                     ; 2
         reti                            ; 2
 
-10$:    jnb     _m_slow, 16$            ; 2
-        ljmp    slow                    ;    (beyond a relative jump)
-16$:    jb      _m_fu, 13$              ; 2
+10$:    jb      _m_fu, up               ; 2
+        jb      _m_slow, 11$            ; 2
         ljmp    fastdn                  ; 2
+11$:    ljmp    slow
+
+        ; The ascent's end at full speed: loading the next phase through
+        ; _nextph (about 55 cycles) would let the next timer events fall
+        ; inside this interrupt. _nextph loaded what follows with the
+        ; ascent: a cruise (its count, mv_p past it and the descent), or a
+        ; short move's turn (the descent's count and mv_p; its index in s_ph).
+        ; (m_upcr and m_updn need no clearing: _nextph sets both whenever it
+        ; loads a fast ascent, the only phase that reads them.)
+turn:   clr     _m_fu                   ; 1
+        mov     _c_di, _s_ph            ; 2
+        sjmp    upx                     ; 2
+cruise: setb    _m_cr                   ; 1  tested first: m_fu may stay
+        sjmp    upx                     ; 2
         ; The ascent writes low bytes only: the slow ascent before it wrote
         ; T[K], whose high byte is 0xFF like every fast entry's (motion.c).
-13$:    mov     a, _c_ui                ; 1  index + RAMP_FAST_BIAS
+up:     mov     a, _c_ui                ; 1  index + RAMP_FAST_BIAS
         inc     _c_ui                   ; 1
-        movc    a, @a+pc                ; 2  the table is 7 bytes on
+        djnz    _c_di, upx              ; 2  the ascent counts in c_di (<= 256 steps)
+        jb      _m_updn, turn           ; 2
+        jb      _m_upcr, cruise         ; 2
+        setb    c                       ; the ascent's table, through DPTR
+        ljmp    last
+upx:    clr     CSTEP                   ; 1
+        movc    a, @a+pc                ; 2  the table is 7 bytes on:
         mov     RCAP2L, a               ; 1  (2 bytes)
-        ljmp    11$                     ; 2  (3 bytes)
-        nop                             ;    (2 bytes, never run)
-        nop
-        .include "ramp_up.inc"
-        ; The ramp ends at full speed, where a step is 46 cycles: loading the
-        ; cruise through _nextph (about 55 cycles) here would let the next
-        ; timer events fall inside this interrupt. _nextph loaded the
-        ; cruise's count and mv_p with the ascent: switch inline.
-        ; (m_upcr and m_updn need no clearing: _nextph sets both whenever
-        ; it loads a fast ascent, the only phase that reads them.)
-11$:    djnz    _c_di, 12$              ; 2  the ascent counts in c_di (<= 256 steps)
-        jnb     _m_upcr, 15$
-        setb    _m_cr                   ; tested first: m_fu may stay
-        sjmp    12$
-        ; A short move turns at its middle, also near full speed: the
-        ; descent's count and mv_p are loaded, its index is in s_ph.
-15$:    jnb     _m_updn, 14$
-        clr     _m_fu
-        mov     _c_di, _s_ph
-        sjmp    12$
-14$:    clr     CSTEP
-        xch     a, _t2_a
-        pop     PSW
-        ljmp    nextph_isr              ; it returns from the interrupt
-12$:    clr     CSTEP                   ; 1
+        xch     a, _t2_a                ; 1  (2 bytes)
+        pop     PSW                     ; 2  (2 bytes)
+        reti                            ; 2  (1 byte)
+uptab:  .include "ramp_up.inc"
+
+fastdn: mov     a, _c_di                ; 1
+        dec     _c_di                   ; 1
+        djnz    _c_cl, dnx              ; 2
+        djnz    _c_ch, dnx
+        clr     c                       ; the descent's table, through DPTR
+        ljmp    last
+dnx:    clr     CSTEP                   ; 1
+        movc    a, @a+pc                ; 2  the table is 7 bytes on
+        mov     RCAP2L, a               ; 1
         xch     a, _t2_a                ; 1
         pop     PSW                     ; 2
         reti                            ; 2
+dntab:  .include "ramp_dn.inc"
 
-fastdn: mov     a, _c_di
-        dec     _c_di
-        movc    a, @a+pc                ; the table is 7 bytes on
+        ; A fast phase's last step with no inline switch (its interval is
+        ; about 256 cycles): its reload from the table through DPTR (C: the
+        ; ascent's), then the next phase through nextph_isr.
+last:   clr     CSTEP
+        push    DPL
+        push    DPH
+        mov     DPTR, #(dntab - 7)
+        jnc     1$
+        mov     DPTR, #(uptab - 7)
+1$:     movc    a, @a+dptr
         mov     RCAP2L, a
-        ljmp    21$
-        nop
-        nop
-        .include "ramp_dn.inc"
-21$:    djnz    _c_cl, 22$
-        djnz    _c_ch, 22$
-        clr     CSTEP
+        pop     DPH
+        pop     DPL
         xch     a, _t2_a
         pop     PSW
-        ljmp    nextph_isr
-22$:    clr     CSTEP
-        xch     a, _t2_a
-        pop     PSW
-        reti
+        ljmp    nextph_isr              ; it returns from the interrupt
 
 ; Everything that is not a fast carriage step: 16-bit tables, the feed,
 ; homing, delays, hammers. Intervals here are at least 120 ticks.
