@@ -63,28 +63,40 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 
         .area CSEG (CODE)
 
-; Latency compensation (issue 12 item 4). Every edge (carriage and feed
-; steps, a hammer going down or up) is made with one XRL P1 a fixed number of
-; cycles after the interrupt reads the timer. The latency before that read is
-; the instruction the interrupt waits for: the rest of the one under way, or,
-; after a RETI (the UART's or the strobe's), the rest of it and the next one.
-; With no MUL or DIV in the image (4 cycles; tools/stack-depth.py fails the
-; build on them) that should be 0-3 cycles. The interrupt reads TL2, which
-; counts machine cycles since the overflow from RCAP2L (the reload, not yet
-; rewritten), and burns the complement in a two-bit chain (bit 0 clear: 1
-; cycle more, bit 1 clear: 2 more), so the edge lands on the same cycle
-; after the overflow whatever the latency was, as long as it is in the
-; chain's window of 4 cycles. Measured in s51 (tests/firmware/emu_test.py):
-; all but about 1 edge in 4,000 land on that cycle; the others are 4 cycles
-; late, a latency past the window whose source is not found yet (README,
-; "Not done"). A three-bit chain covers it but makes the interrupt too long
-; for the top of the ramp (46-50 cycles a step): those edges then overrun.
+; Latency compensation (issue 12 item 4): every edge (carriage and feed
+; steps, a hammer going down or up) is made by one XRL P1 exactly EDGE_TICKS
+; machine cycles after its timer event (the overflow), whatever the latency.
+; The latency is the instruction the interrupt waits for: the rest of the one
+; under way, or, after a RETI (the UART's or the strobe's), the rest of it and
+; the next one. With no MUL or DIV in the image (4 cycles; tools/stack-depth.py
+; fails the build on them) s51 shows 0-4 cycles: 0 or 1 nearly always, 2-4
+; about 1 edge in 1,000 with the UART busy (tests/firmware/emu_test.py, the
+; compensation taken out). The interrupt reads TL2, which counts cycles since
+; the overflow from RCAP2L (the reload, not yet rewritten): at that read it
+; is 8 + the latency in s51 (the vectoring LCALL starts 2 cycles after the
+; overflow, then PUSH, XCH, CLR). It burns LAT_MAX - latency in a three-bit
+; chain (bit 0 clear: 1 cycle more, bit 1: 2, bit 2: 4), so the edge comes at
+; a constant cycle: 8 + 3 (read, SUBB, ADD) + 6 (the chain's tests) + LAT_MAX
+; + 1 (MOV) = 22 after the overflow. The host adds EDGE_TICKS to a timer
+; event's time where it compares pin traces with a plan
+; (core/controller/firmware_trace.hpp, kEdgeTicks).
+;
+; LAT_MAX is the window's top: a latency above it would wrap and put that
+; edge 8 cycles late. Each cycle more costs a cycle on every step: the cruise
+; path is 32 - latency cycles with 4 (68.7 % of the CPU at 46 cycles a step,
+; the issue's bar is 70 %), and the ramp's top paths must end within about
+; 2 cycles of the next timer event (46-50 cycles a step), or that event's
+; latency grows past the window.
+LAT_MAX = 4
+EDGE_TICKS = 18 + LAT_MAX
+
 _t2_isr:
         push    PSW                     ; 2
         xch     a, _t2_a                ; 1  ACC kept in RAM: no stack
         clr     c                       ; 1
-        mov     a, TL2                  ; 1  cycles since the overflow, + RCAP2L
-        subb    a, RCAP2L               ; 1  (its place sets the window: EDGE_E)
+        mov     a, TL2                  ; 1  cycles since the overflow, + RCAP2L:
+        subb    a, RCAP2L               ; 1  8 + the latency (s51, see above)
+        add     a, #7 - LAT_MAX         ; 1  the window: latency 0 burns LAT_MAX
         jb      ACC0, 1$                ; 2
         nop                             ; 1
 1$:     jb      ACC1, 2$                ; 2
