@@ -49,7 +49,7 @@ struct FirmwareTables {
 // edge at t is the event at t - kPinEdgeTicks. controller::FirmwareTrace
 // subtracts it; FirmwareEndToEnd.ThePinEdgeDelayIsTheFirmwares checks it
 // against the assembled EDGE_TICKS.
-inline constexpr std::uint32_t kPinEdgeTicks = 22;
+inline constexpr std::uint32_t kPinEdgeTicks = 23;
 
 // The v3 controller's per-strike timing (CONFIGURE): at rest `settle_ticks`
 // after the move, then the hammer on for `hammer_ticks`.

@@ -69,45 +69,56 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 ; The latency is the instruction the interrupt waits for: the rest of the one
 ; under way, or, after a RETI (the UART's or the strobe's), the rest of it and
 ; the next one. With no MUL or DIV in the image (4 cycles; tools/stack-depth.py
-; fails the build on them) s51 shows 0-4 cycles: 0 or 1 nearly always, 2-4
-; about 1 edge in 1,000 with the UART busy (tests/firmware/emu_test.py, the
-; compensation taken out). The interrupt reads TL2, which counts cycles since
-; the overflow from RCAP2L (the reload, not yet rewritten): at that read it
-; is 8 + the latency in s51 (the vectoring LCALL starts 2 cycles after the
-; overflow, then PUSH, XCH, CLR). It burns LAT_MAX - latency in a three-bit
-; chain (bit 0 clear: 1 cycle more, bit 1: 2, bit 2: 4), so the edge comes at
-; a constant cycle: 8 + 3 (read, SUBB, ADD) + 6 (the chain's tests) + LAT_MAX
-; + 1 (MOV) = 22 after the overflow. The host adds EDGE_TICKS to a timer
-; event's time where it compares pin traces with a plan
-; (core/controller/firmware_trace.hpp, kEdgeTicks).
+; fails the build on them) s51 showed 0-4 cycles with the compensation taken
+; out (0 or 1 nearly always, 2-4 about 1 edge in 1,000 with the UART busy),
+; and one edge in a noisy run past a window of 0-4. The interrupt reads TL2,
+; which counts cycles since the overflow from RCAP2L (the reload, not yet
+; rewritten: the vectoring LCALL starts 2 cycles after the overflow in s51,
+; then PUSH, XCH, CLR TF2, JNB and two more put the read at 12 + latency),
+; and a tree of bit tests (LATENCY) burns the rest: 9 - latency cycles for a
+; latency of 0 to LAT_MAX. The edge then comes at 13 (the SUBB's end) + 9 +
+; 1 (MOV) = EDGE_TICKS after the overflow, counted the way s51's trace stamps
+; a port write (at its instruction's start). The host takes EDGE_TICKS off where it
+; compares pin traces with a plan (core/machine/firmware_tables.hpp,
+; kPinEdgeTicks; FirmwareEdgeDelay checks the two agree).
 ;
-; LAT_MAX is the window's top: a latency above it would wrap and put that
-; edge 8 cycles late. Each cycle more costs a cycle on every step: the cruise
-; path is 32 - latency cycles with 4 (68.7 % of the CPU at 46 cycles a step,
-; the issue's bar is 70 %), and the ramp's top paths must end within about
-; 2 cycles of the next timer event (46-50 cycles a step), or that event's
-; latency grows past the window.
-LAT_MAX = 4
-EDGE_TICKS = 18 + LAT_MAX
+; The cost is on every step: the cruise path is 30 - latency cycles (the
+; issue's bar is 70 % of the CPU at the top rate, 46 cycles a step), and
+; the ramp's top paths (46-50 cycles a step) must end within about 2 cycles
+; of the next timer event, or that event's latency grows past the window. A
+; latency past LAT_MAX (6 or 7) puts its edge 2 cycles late.
+LAT_MAX = 5
+EDGE_TICKS = 23
+
+; The read and the chain, in both entries (after the same 7 cycles: PUSH,
+; XCH, CLR, JNB). SUBB reads TL2 = RCAP2L + the cycles since the overflow
+; (12 + latency in s51), so A = RCAP2L - TL2 - 1 has 3 - latency in its low
+; 3 bits (latency 0-5: 011, 010, 001, 000, 111, 110). The tree takes
+; 9 - latency cycles on every branch: latency 4 and 5 (bit 2 set) two tests
+; and a NOP or none, latency 0-3 three tests and their pads (bit 0 set: 1,
+; bit 1 set: 2). A latency of 6 or 7 would come 2 cycles late, never 8.
+        .macro  LATENCY, ?l1, ?l2, ?l3
+        setb    c                       ; 1
+        mov     a, RCAP2L               ; 1
+        subb    a, TL2                  ; 1
+        jb      ACC2, l2                ; 2
+        jnb     ACC0, l1                ; 2
+        nop                             ; 1
+l1:     jnb     ACC1, l3                ; 2
+        sjmp    l3                      ; 2
+l2:     jnb     ACC0, l3                ; 2
+        nop                             ; 1
+l3:
+        .endm
 
 _t2_isr:
         push    PSW                     ; 2
         xch     a, _t2_a                ; 1  ACC kept in RAM: no stack
-        clr     c                       ; 1
-        mov     a, TL2                  ; 1  cycles since the overflow, + RCAP2L:
-        subb    a, RCAP2L               ; 1  8 + the latency (s51, see above)
-        add     a, #7 - LAT_MAX         ; 1  the window: latency 0 burns LAT_MAX
-        jb      ACC0, 1$                ; 2
-        nop                             ; 1
-1$:     jb      ACC1, 2$                ; 2
-        sjmp    2$                      ; 2
-2$:     jb      ACC2, 4$                ; 2
-        sjmp    3$                      ; 2
-3$:     sjmp    4$                      ; 2
-4$:     mov     a, _s_pin               ; 1
-        xrl     P1, a                   ; 1  the edge: every step pin is low here,
-        clr     TF2                     ; 1  the hammers as motion.c sets s_pin
-        jnb     _m_cr, 10$              ; 2
+        clr     TF2                     ; 1
+        jnb     _m_cr, 10$              ; 2  (before the read: it costs no cycle there)
+        LATENCY                         ; 3 + 9 - latency
+        mov     a, _s_pin               ; 1
+        xrl     P1, a                   ; 1  the edge: every step pin is low here
         djnz    _c_cl, 99$              ; 2  cruise: RCAP2 already holds T[R]
         djnz    _c_ch, 99$
         ; The cruise ends at full speed: loading the descent through _nextph
@@ -124,7 +135,11 @@ _t2_isr:
         pop     PSW                     ; 2
         reti                            ; 2
 
-10$:    jb      _m_fu, up               ; 2
+10$:    LATENCY                         ; the same, for every other phase
+        mov     a, _s_pin               ; 1
+        xrl     P1, a                   ; 1  the edge: the step pins are low here,
+                                        ;    the hammers as motion.c sets s_pin
+        jb      _m_fu, up               ; 2
         jb      _m_slow, 11$            ; 2
         ljmp    fastdn                  ; 2
 11$:    ljmp    slow

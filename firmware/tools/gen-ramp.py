@@ -25,12 +25,15 @@ from functools import reduce
 from pathlib import Path
 
 TICK_HZ = 11_059_200 / 12
-# The fast step-interrupt paths (step.asm) take at most this many machine
-# cycles, measured in s51 (bench/firmware); a cruise interval below it would
-# let steps pile up. Keep in step with FAST_PATH_CYCLES in firmware/README.md.
-MIN_CRUISE_TICKS = 40
-# The slow (16-bit) path, used for the feed and for intervals over 256 ticks.
-MIN_SLOW_TICKS = 120
+# The shortest interval the fast step-interrupt paths (step.asm) keep exact:
+# a short move's turn and the switch to cruise end 46 cycles after their
+# timer event (counted), and the next event's latency (that overrun + the
+# instruction after RETI, up to 2) must stay within LAT_MAX (5): 43, and one
+# cycle to spare. Was 40 before the latency compensation (firmware/README.md).
+MIN_CRUISE_TICKS = 44
+# The slow (16-bit) path, used for the feed and for intervals over 256 ticks:
+# 120 before the compensation moved every edge 15 cycles later.
+MIN_SLOW_TICKS = 136
 FAST_BIAS = 7          # bytes between the MOVC in step.asm and its table
 MAX_FAST_ENTRIES = 255 - FAST_BIAS + 1
 
