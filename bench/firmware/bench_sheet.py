@@ -146,6 +146,19 @@ def main():
         d = round(t * TICK_HZ) - w
         offsets[d] = offsets.get(d, 0) + 1
     lo = min(offsets)
+    # Where the offset changes: inside a move's steps it never may (the
+    # interrupt's schedule); at a phase program's start it may only grow (the
+    # main loop started it late: its data or its turn came late).
+    ds = [round(t * TICK_HZ) - w for (_, t), (_, w) in zip(got_edges, want_edges)]
+    inside_jumps, late_starts = 0, []
+    for i in range(1, len(ds)):
+        if ds[i] == ds[i - 1]:
+            continue
+        k, kp = want_edges[i][0], want_edges[i - 1][0]
+        if k == kp and k in "CF":
+            inside_jumps += 1
+        else:
+            late_starts.append([i, k, ds[i] - ds[i - 1]])
     emulated_end = hammer_ups[len(want_strikes) - 1] * TICK_HZ if len(hammer_ups) >= len(want_strikes) else float("nan")
     # The emulated sheet: from its start (the first step's time less the
     # plan's time before it) to its last hammer going up.
@@ -158,6 +171,8 @@ def main():
         "edges_compared": len(got_edges), "edge_kinds_equal": kinds_equal,
         "edge_offsets_cycles": {str(d - lo): n for d, n in sorted(offsets.items())},
         "edge_spread_cycles": max(offsets) - lo,
+        "edge_jumps_inside_moves": inside_jumps,
+        "late_program_starts": late_starts,
         "planned_sheet_s": round(planned, 6), "emulated_sheet_s": round(emulated, 6),
         "sheet_time_error_pct": round(100 * (emulated / planned - 1), 4),
         "sheet_time_error_cycles": round((emulated - planned) * TICK_HZ, 1),
