@@ -13,11 +13,13 @@ firmware; `tactus-cli sim --firmware --pty --pin-trace` runs the chip and
 Compares:
   * the strikes read from the pins with the plan's (sheet, hammer, carriage
     and feed step);
-  * every carriage and feed step edge and every hammer coming down with the
-    plan's time, in machine cycles (emulated minus planned: a constant, the
-    interrupt's latency, plus the instruction the interrupt waits for);
+  * every carriage and feed step edge and every hammer going down and up
+    with the plan's time, in machine cycles (emulated minus planned: one
+    constant, the step interrupt compensating its latency, firmware/src/step.asm;
+    edge_spread_cycles must be 0);
   * the plan's sheet time with the emulated one (from the sheet's first step
-    to its last hammer going up, plus the plan's time before that first step).
+    to its last hammer going up, plus the plan's time before that first step):
+    equal to the cycle.
 Prints the s51 wall time. Writes bench/firmware/last-sheet.json.
 """
 import argparse
@@ -37,8 +39,9 @@ import fwhost  # noqa: E402
 TICK_HZ = 11.0592e6 / 12
 
 
-def planned_edges(sheet, gap, clock):
-    """(kind, tick) of every step and hammer-down edge of the sheet's passes,
+def planned_edges(sheet, gap, clock, hammer):
+    """(kind, tick) of every step and hammer edge (down "H", up "h": `hammer`
+    ticks later) of the sheet's passes,
     and the sheet's end: the plan's clock (s) at the sheet's start is `clock`.
     Table moves: each segment is `count` steps of one whole interval."""
     out = []
@@ -61,6 +64,7 @@ def planned_edges(sheet, gap, clock):
             last = strike - k["move"]["settle_ticks"]
             out += [("C", last - ts[-1] + t) for t in ts] if ts else []
             out.append(("H", strike))
+            out.append(("h", strike + hammer))
         clock += p["duration_s"]
     return out, round(clock * TICK_HZ)
 
@@ -99,7 +103,9 @@ def main():
                                      check=True, capture_output=True, text=True).stdout)
     sheet = next(s for s in plan["sheets"] if s["index"] == a.sheet)
     clock = sum(s["duration_s"] for s in plan["sheets"] if s["index"] < a.sheet)
-    want_edges, sheet_end = planned_edges(sheet, gap, clock)
+    # The hammer pulse CONFIGURE gives the firmware (machine/controller_config.cpp).
+    dwell = json.loads((ROOT / "resources" / "profiles" / "default.json").read_text())["head"]["dwell_s"]
+    want_edges, sheet_end = planned_edges(sheet, gap, clock, int(dwell * TICK_HZ))
     want_strikes = [(a.sheet, k["hammer"], k["carriage_step"], p["feed_step"])
                     for p in sheet["passes"] for k in p["strikes"]]
     tmp = Path(tempfile.mkdtemp(prefix="tactus-sheet-"))
@@ -133,13 +139,26 @@ def main():
     first = next(i for i, e in enumerate(edges) if e[0] in "CF")
     edges = edges[first:]
     hammer_ups = [t for k, t in edges if k == "h"]
-    got_edges = [(k, t) for k, t in edges if k != "h"][:len(want_edges)]
+    got_edges = edges[:len(want_edges)]
     kinds_equal = [k for k, _ in got_edges] == [k for k, _ in want_edges]
     offsets = {}
     for (_, t), (_, w) in zip(got_edges, want_edges):
         d = round(t * TICK_HZ) - w
         offsets[d] = offsets.get(d, 0) + 1
     lo = min(offsets)
+    # Where the offset changes: inside a move's steps it never may (the
+    # interrupt's schedule); at a phase program's start it may only grow (the
+    # main loop started it late: its data or its turn came late).
+    ds = [round(t * TICK_HZ) - w for (_, t), (_, w) in zip(got_edges, want_edges)]
+    inside_jumps, late_starts = 0, []
+    for i in range(1, len(ds)):
+        if ds[i] == ds[i - 1]:
+            continue
+        k, kp = want_edges[i][0], want_edges[i - 1][0]
+        if k == kp and k in "CF":
+            inside_jumps += 1
+        else:
+            late_starts.append([i, k, ds[i] - ds[i - 1]])
     emulated_end = hammer_ups[len(want_strikes) - 1] * TICK_HZ if len(hammer_ups) >= len(want_strikes) else float("nan")
     # The emulated sheet: from its start (the first step's time less the
     # plan's time before it) to its last hammer going up.
@@ -152,8 +171,11 @@ def main():
         "edges_compared": len(got_edges), "edge_kinds_equal": kinds_equal,
         "edge_offsets_cycles": {str(d - lo): n for d, n in sorted(offsets.items())},
         "edge_spread_cycles": max(offsets) - lo,
+        "edge_jumps_inside_moves": inside_jumps,
+        "late_program_starts": late_starts,
         "planned_sheet_s": round(planned, 6), "emulated_sheet_s": round(emulated, 6),
         "sheet_time_error_pct": round(100 * (emulated / planned - 1), 4),
+        "sheet_time_error_cycles": round((emulated - planned) * TICK_HZ, 1),
         "s51_wall_s": round(wall, 1),
         "baud": a.baud,
     }

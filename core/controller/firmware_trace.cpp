@@ -3,6 +3,9 @@
 
 #include <charconv>
 
+#include "machine/firmware_tables.hpp"
+#include "machine/limits.hpp"
+
 namespace tactus::controller {
 namespace {
 
@@ -67,7 +70,9 @@ void FirmwareTrace::line(std::string_view l, std::vector<LoggedStrike>& out) {
     } else if (w[0][0] == '#') {
         std::uint64_t t = 0;
         std::from_chars(w[0].data() + 1, w[0].data() + w[0].size(), t);
-        now_s_ = static_cast<double>(t) * tick_s_;
+        // The timer event behind whatever changes at this time: every step
+        // and hammer edge comes kPinEdgeTicks after its event.
+        now_s_ = static_cast<double>(t) * tick_s_ - machine::kPinEdgeTicks / machine::kTickHz;
     } else if (w[0][0] == 'b' && w.size() >= 2) {
         std::uint32_t v = 0;
         bool known = true;

@@ -18,7 +18,9 @@
 
 namespace tactus::controller {
 
-// One edge on the step and hammer pins, at the emulator's clock.
+// One edge on the step and hammer pins: the time of the firmware's timer event
+// that made it, on the emulator's clock (the pin changes
+// machine::kPinEdgeTicks later).
 struct PinEdge {
     enum class Kind { carriage_step, feed_step, hammer_down, hammer_up };
     Kind kind;
@@ -34,7 +36,8 @@ public:
 
     // VCD text in any pieces (a growing file read as it grows); appends the
     // strikes whose hammer pulse it completes (a strike is logged when its
-    // hammer comes off, with the time and place it went on; a pulse under
+    // hammer comes off, with the time and place it went on; times are the
+    // timer events', machine::kPinEdgeTicks before the pins; a pulse under
     // 0.5 ms moves no hammer and is no strike). Steps count only while the
     // drivers are enabled (P1.6 low). Fails on a dump without port 1.
     Result<void> push(std::string_view text, std::vector<LoggedStrike>& out);

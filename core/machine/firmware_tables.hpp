@@ -41,6 +41,16 @@ struct FirmwareTables {
     bool operator==(const FirmwareTables&) const = default;
 };
 
+// Machine cycles from a timer event of the firmware's schedule (the timer-2
+// overflow) to the pin edge it makes: every carriage and feed step and every
+// hammer going down or up, on every path of the step interrupt, whatever its
+// latency (firmware/src/step.asm, EDGE_TICKS: it reads the timer and burns the
+// latency's complement). The plan's times are the timer events; a pin trace's
+// edge at t is the event at t - kPinEdgeTicks. controller::FirmwareTrace
+// subtracts it; FirmwareEndToEnd.ThePinEdgeDelayIsTheFirmwares checks it
+// against the assembled EDGE_TICKS.
+inline constexpr std::uint32_t kPinEdgeTicks = 23;
+
 // The v3 controller's per-strike timing (CONFIGURE): at rest `settle_ticks`
 // after the move, then the hammer on for `hammer_ticks`.
 struct StrikeTiming {

@@ -11,8 +11,8 @@ static FW_CODE uint16_t crc_nib[16] = {
 };
 
 uint16_t crc16_update(uint16_t crc, uint8_t b) {
-    crc = (uint16_t)((uint16_t)(crc << 4) ^ crc_nib[(uint8_t)((crc >> 12) ^ (b >> 4))]);
-    crc = (uint16_t)((uint16_t)(crc << 4) ^ crc_nib[(uint8_t)((crc >> 12) ^ (b & 0x0F))]);
+    crc = (uint16_t)((uint16_t)(crc << 4) ^ NIB(crc_nib, (crc >> 12) ^ (b >> 4)));
+    crc = (uint16_t)((uint16_t)(crc << 4) ^ NIB(crc_nib, (crc >> 12) ^ (b & 0x0F)));
     return crc;
 }
 

@@ -3,6 +3,11 @@
 #define TACTUS_FW_CRC16_H
 #include "fw.h"
 
+/* Entry i of a nibble table of 16-bit words, indexed through its bytes:
+ * SDCC indexes a uint16_t array with MUL AB, and the image must have no MUL
+ * or DIV (step.asm: they lengthen the step interrupt's latency). */
+#define NIB(t, i) (*(FW_CODE uint16_t *)((FW_CODE uint8_t *)(t) + (uint8_t)((uint8_t)(i) << 1)))
+
 /* CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF), the frame check of
  * docs/protocol.md, with a 16-entry nibble table. */
 uint16_t crc16_update(uint16_t crc, uint8_t b);

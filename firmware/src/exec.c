@@ -117,6 +117,15 @@ static int16_t svar(void) {
     return (u & 0x40) ? (int16_t)u - 128 : (int16_t)u;
 }
 
+/* n x g by shift and add: SDCC's __mulint uses MUL AB, and the image must
+ * have no MUL or DIV (step.asm: they lengthen the step interrupt's latency). */
+static uint16_t times(uint16_t n, uint8_t g) {
+    uint16_t r = 0;
+    for (; g; g >>= 1, n <<= 1)
+        if (g & 1) r += n;
+    return r;
+}
+
 /* Starts a pass record at the head: reads its header, consumes it, and
  * starts the feed. The header is whole in the ring; its entries follow as
  * they arrive (each strike starts once its entry is in). */
@@ -135,7 +144,7 @@ static void pass_begin(void) {
     xs = X_FEED;
     if (!(p_flags & PF_NO_FEED) && feed != 0) {
         uint8_t neg = feed < 0;
-        uint16_t steps = (uint16_t)(neg ? -feed : feed) * F_GRID;
+        uint16_t steps = times((uint16_t)(neg ? -feed : feed), F_GRID);
         if ((__bit)neg != f_neg) steps += F_BACKLASH;
         f_neg = neg;
         FDIR = !neg;
@@ -151,12 +160,12 @@ static void strike_move(uint8_t first) {
     ham_ccv = (e & E_CONCAVE) != 0;
     if (first) {
         neg = (p_flags & PF_FIRST_NEG) != 0;
-        carriage(p_first * C_GRID);
+        carriage(times(p_first, C_GRID));
     } else {
         d = e & E_DIST;
         if (e & E_EXT) d = (uint16_t)((d << 8) | at(1));
         neg = (p_flags & PF_SWEEP_NEG) != 0;
-        carriage(d * C_GRID);
+        carriage(times(d, C_GRID));
     }
     xs = X_MOVE;
 }

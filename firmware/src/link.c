@@ -312,8 +312,8 @@ static FW_CODE uint16_t chk_nib[16] = {
     0xEFBD, 0x640A, 0x7364, 0xF8D3, 0x5DB8, 0xD60F, 0xC161, 0x4AD6
 };
 uint16_t pass_crc_update(uint16_t c, uint8_t b) {
-    c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b >> 4))]);
-    c = (uint16_t)((uint16_t)(c << 4) ^ chk_nib[(uint8_t)((c >> 12) ^ (b & 0x0F))]);
+    c = (uint16_t)((uint16_t)(c << 4) ^ NIB(chk_nib, (c >> 12) ^ (b >> 4)));
+    c = (uint16_t)((uint16_t)(c << 4) ^ NIB(chk_nib, (c >> 12) ^ (b & 0x0F)));
     return c;
 }
 

@@ -20,6 +20,7 @@
 
 /* Read by step.asm. */
 __data uint8_t c_cl, c_ch, c_ui, c_di, s_pl, s_ph, s_pin, s_kind, mv_p;
+__data uint8_t t2_a; /* the step interrupt keeps ACC here (step.asm) */
 volatile __bit m_slow, m_cr, m_fu, m_upcr, m_updn, mv_done, mv_limit;
 /* Seven phases at most: slow up, fast up, cruise, fast down, slow down, the
  * last two steps, and the end (one byte). */
@@ -81,15 +82,18 @@ static FW_CODE uint8_t *t_slow;
 
 /* Steps with table indices lo..hi, rising (lo is a variable: it moves). Macros,
  * not functions, like emit_dn: a call level here costs 2 bytes of stack on
- * the main loop's deepest chain (README, "Stack"). */
+ * the main loop's deepest chain (README, "Stack"). The slow ascent writes
+ * T[K] too (its high byte is 0xFF, ramp_slow holds T[0..K]): the fast ascent
+ * then writes low bytes only, which keeps its interrupt short enough for
+ * the top of the ramp (step.asm). */
 #define EMIT_UP(lo, hi)                                                                         \
     do {                                                                                        \
-        if ((lo) < t_k) {                                                                       \
-            top = (hi) < t_k ? (hi) : (uint8_t)(t_k - 1);                                       \
+        if ((lo) <= t_k) {                                                                      \
+            top = (hi) <= t_k ? (hi) : t_k;                                                     \
             rec(K_SLOW_UP, (uint8_t)(top - (lo) + 1), (uint16_t)(t_slow + 2 * (lo)));           \
             (lo) = (uint8_t)(top + 1);                                                          \
         }                                                                                       \
-        if ((lo) <= (hi) && (lo) >= t_k)                                                        \
+        if ((lo) <= (hi) && (lo) > t_k)                                                         \
             rec(K_FAST_UP, (uint8_t)((hi) - (lo) + 1), (uint8_t)(RAMP_FAST_BIAS + (lo) - t_k)); \
     } while (0)
 
@@ -165,14 +169,17 @@ void move_home(uint16_t n) {
     start(START_GAP + cfg_home_iv, (uint16_t)(0 - cfg_home_iv));
 }
 
+/* The interrupt makes every edge with XRL P1 (step.asm): s_pin holds the pins
+ * that change, here the hammers that are up and go down ... */
 void hammer_down_after_settle(uint8_t pins) {
-    s_pin = pins;
+    s_pin = pins & (uint8_t)~P1;
     one_phase(K_SCOUNT, 1);
     start(cfg_settle, 0);
 }
 
+/* ... and the hammers that are down and go up. */
 void hammer_up_after_pulse(void) {
-    s_pin = 0;
+    s_pin = P1 & (PIN_CVX | PIN_CCV);
     one_phase(K_HOFF, 1);
     start(cfg_hammer, 0);
 }

@@ -40,7 +40,7 @@
         .globl  _nextph
         .globl  _timer_go
         .globl  _m_slow, _m_cr, _m_fu, _m_upcr, _m_updn, _mv_done, _mv_limit
-        .globl  _c_cl, _c_ch, _c_ui, _c_di, _s_pl, _s_ph, _s_pin, _s_kind, _mv_p
+        .globl  _c_cl, _c_ch, _c_ui, _c_di, _s_pl, _s_ph, _s_pin, _s_kind, _mv_p, _t2_a
 
 ACC     = 0xE0
 PSW     = 0xD0
@@ -54,102 +54,160 @@ TR2     = 0xCA          ; bit T2CON.2
 TL2     = 0xCC
 TH2     = 0xCD
 EA      = 0xAF          ; bit IE.7
+ACC0    = 0xE0          ; bit ACC.0
+ACC1    = 0xE1          ; bit ACC.1
+ACC2    = 0xE2          ; bit ACC.2
 CSTEP   = 0x90          ; bit P1.0: carriage STEP
 LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
         .include "ramp_eq.inc"  ; RAMP_DN_CL, RAMP_DN_CH, RAMP_DN_TOP (gen-ramp.py)
 
         .area CSEG (CODE)
 
-; Every edge (carriage and feed steps, a hammer coming down) is made the same
-; number of cycles after its timer event on every path, so the pins keep the
-; timer's schedule exactly (up to the instruction the interrupt waits for).
+; Latency compensation (issue 12 item 4): every edge (carriage and feed
+; steps, a hammer going down or up) is made by one XRL P1 exactly EDGE_TICKS
+; machine cycles after its timer event (the overflow), whatever the latency.
+; The latency is the instruction the interrupt waits for: the rest of the one
+; under way, or, after a RETI (the UART's or the strobe's), the rest of it and
+; the next one. With no MUL or DIV in the image (4 cycles; tools/stack-depth.py
+; fails the build on them) s51 showed 0-4 cycles with the compensation taken
+; out (0 or 1 nearly always, 2-4 about 1 edge in 1,000 with the UART busy),
+; and one edge in a noisy run past a window of 0-4. The interrupt reads TL2,
+; which counts cycles since the overflow from RCAP2L (the reload, not yet
+; rewritten: the vectoring LCALL starts 2 cycles after the overflow in s51,
+; then PUSH, XCH, CLR TF2, JNB and two more put the read at 12 + latency),
+; and a tree of bit tests (LATENCY) burns the rest: 9 - latency cycles for a
+; latency of 0 to LAT_MAX. The edge then comes at 13 (the SUBB's end) + 9 +
+; 1 (MOV) = EDGE_TICKS after the overflow, counted the way s51's trace stamps
+; a port write (at its instruction's start). The host takes EDGE_TICKS off where it
+; compares pin traces with a plan (core/machine/firmware_tables.hpp,
+; kPinEdgeTicks; FirmwareEdgeDelay checks the two agree).
+;
+; The cost is on every step: the cruise path is 30 - latency cycles (the
+; issue's bar is 70 % of the CPU at the top rate, 46 cycles a step), and
+; the ramp's top paths (46-50 cycles a step) must end within about 2 cycles
+; of the next timer event, or that event's latency grows past the window. A
+; latency past LAT_MAX (6 or 7) puts its edge 2 cycles late.
+LAT_MAX = 5
+EDGE_TICKS = 23
+
+; The read and the chain, in both entries (after the same 7 cycles: PUSH,
+; XCH, CLR, JNB). SUBB reads TL2 = RCAP2L + the cycles since the overflow
+; (12 + latency in s51), so A = RCAP2L - TL2 - 1 has 3 - latency in its low
+; 3 bits (latency 0-5: 011, 010, 001, 000, 111, 110). The tree takes
+; 9 - latency cycles on every branch: latency 4 and 5 (bit 2 set) two tests
+; and a NOP or none, latency 0-3 three tests and their pads (bit 0 set: 1,
+; bit 1 set: 2). A latency of 6 or 7 would come 2 cycles late, never 8.
+        .macro  LATENCY, ?l1, ?l2, ?l3
+        setb    c                       ; 1
+        mov     a, RCAP2L               ; 1
+        subb    a, TL2                  ; 1
+        jb      ACC2, l2                ; 2
+        jnb     ACC0, l1                ; 2
+        nop                             ; 1
+l1:     jnb     ACC1, l3                ; 2
+        sjmp    l3                      ; 2
+l2:     jnb     ACC0, l3                ; 2
+        nop                             ; 1
+l3:
+        .endm
+
 _t2_isr:
-        jb      _m_slow, 2$             ; 2
-        nop                             ; 1  the edge on the same cycle as the slow path's
-        setb    CSTEP                   ; 1  step edge: the driver steps on the rise
+        push    PSW                     ; 2
+        xch     a, _t2_a                ; 1  ACC kept in RAM: no stack
         clr     TF2                     ; 1
-        jnb     _m_cr, 10$              ; 2
+        jnb     _m_cr, 10$              ; 2  (before the read: it costs no cycle there)
+        LATENCY                         ; 3 + 9 - latency
+        mov     a, _s_pin               ; 1
+        xrl     P1, a                   ; 1  the edge: every step pin is low here
         djnz    _c_cl, 99$              ; 2  cruise: RCAP2 already holds T[R]
         djnz    _c_ch, 99$
         ; The cruise ends at full speed: loading the descent through _nextph
         ; (about 50 cycles) would hold the next edges back. A cruise is only
         ; in a whole ramp, so the descent is always the whole fast table
-        ; (ramp_eq.inc), and the switch to cruise left mv_p past its record.
+        ; (ramp_eq.inc), and _nextph left mv_p past it with the ascent.
         clr     _m_cr
+        clr     _m_fu
         mov     _c_cl, #RAMP_DN_CL
         mov     _c_ch, #RAMP_DN_CH
         mov     _c_di, #RAMP_DN_TOP
 99$:    clr     CSTEP                   ; 1
+        xch     a, _t2_a                ; 1
+        pop     PSW                     ; 2
         reti                            ; 2
-2$:     xch     a, _s_pin               ; 1  step edge or hammer down (none for a
-        orl     P1, a                   ; 1  delay); A and PSW are kept
-        xch     a, _s_pin               ; 1
-        ljmp    slow                    ; 2  (beyond a relative jump)
 
-10$:    jb      _m_fu, 13$              ; 2
+10$:    LATENCY                         ; the same, for every other phase
+        mov     a, _s_pin               ; 1
+        xrl     P1, a                   ; 1  the edge: the step pins are low here,
+                                        ;    the hammers as motion.c sets s_pin
+        jb      _m_fu, up               ; 2
+        jb      _m_slow, 11$            ; 2
         ljmp    fastdn                  ; 2
-13$:    push    ACC                     ; 2
-        mov     RCAP2H, #0xFF           ; 2  fast entries are <= 256 ticks
-        mov     a, _c_ui                ; 1  index + RAMP_FAST_BIAS
-        inc     _c_ui                   ; 1
-        movc    a, @a+pc                ; 2  the table is 7 bytes on
-        mov     RCAP2L, a               ; 1  (2 bytes)
-        pop     ACC                     ; 2  (2 bytes)
-        ljmp    11$                     ; 2  (3 bytes)
-        .include "ramp_up.inc"
-11$:    djnz    _c_cl, 12$              ; 2
-        djnz    _c_ch, 12$
-        ; The ramp ends at full speed, where a step is 46 cycles: loading the
-        ; cruise through _nextph (about 55 cycles) here would let the next two
-        ; timer events fall inside this interrupt and one would be lost.
-        ; _nextph prepared the cruise when it loaded this phase: switch inline.
-        jnb     _m_upcr, 15$
-        clr     _m_fu
-        setb    _m_cr
-        mov     _c_cl, _s_pl
-        mov     _c_ch, _s_ph
-        mov     _mv_p, _s_kind
-        sjmp    12$
-        ; A short move turns at its middle, also near full speed: the
-        ; descent _nextph prepared, inline.
-        ; (m_upcr and m_updn need no clearing: _nextph sets both whenever
-        ; it loads a fast ascent, the only phase that reads them.) The turn
-        ; comes at 46-47 cycles a step: this path takes 45.
-15$:    jnb     _m_updn, 14$
-        clr     _m_fu
-        mov     _c_cl, _s_pl
-        inc     _c_ch                   ; 0 -> 1: a fast descent is at most 256 steps
-        mov     _c_di, _s_ph
-        mov     _mv_p, _s_kind
-        clr     CSTEP
-        reti
-14$:    clr     CSTEP
-        ljmp    nextph_isr              ; it returns from the interrupt
-12$:    clr     CSTEP                   ; 1
-        reti                            ; 2
+11$:    ljmp    slow
 
-fastdn: push    ACC
-        mov     a, _c_di
-        dec     _c_di
-        movc    a, @a+pc
+        ; The ascent's end at full speed: loading the next phase through
+        ; _nextph (about 55 cycles) would let the next timer events fall
+        ; inside this interrupt. _nextph loaded what follows with the
+        ; ascent: a cruise (its count, mv_p past it and the descent), or a
+        ; short move's turn (the descent's count and mv_p; its index in s_ph).
+        ; (m_upcr and m_updn need no clearing: _nextph sets both whenever it
+        ; loads a fast ascent, the only phase that reads them.)
+turn:   clr     _m_fu                   ; 1
+        mov     _c_di, _s_ph            ; 2
+        sjmp    upx                     ; 2
+cruise: setb    _m_cr                   ; 1  tested first: m_fu may stay
+        sjmp    upx                     ; 2
+        ; The ascent writes low bytes only: the slow ascent before it wrote
+        ; T[K], whose high byte is 0xFF like every fast entry's (motion.c).
+up:     mov     a, _c_ui                ; 1  index + RAMP_FAST_BIAS
+        inc     _c_ui                   ; 1
+        djnz    _c_di, upx              ; 2  the ascent counts in c_di (<= 256 steps)
+        jb      _m_updn, turn           ; 2
+        jb      _m_upcr, cruise         ; 2
+        setb    c                       ; the ascent's table, through DPTR
+        ljmp    last
+upx:    clr     CSTEP                   ; 1
+        movc    a, @a+pc                ; 2  the table is 7 bytes on:
+        mov     RCAP2L, a               ; 1  (2 bytes)
+        xch     a, _t2_a                ; 1  (2 bytes)
+        pop     PSW                     ; 2  (2 bytes)
+        reti                            ; 2  (1 byte)
+uptab:  .include "ramp_up.inc"
+
+fastdn: mov     a, _c_di                ; 1
+        dec     _c_di                   ; 1
+        djnz    _c_cl, dnx              ; 2
+        djnz    _c_ch, dnx
+        clr     c                       ; the descent's table, through DPTR
+        ljmp    last
+dnx:    clr     CSTEP                   ; 1
+        movc    a, @a+pc                ; 2  the table is 7 bytes on
+        mov     RCAP2L, a               ; 1
+        xch     a, _t2_a                ; 1
+        pop     PSW                     ; 2
+        reti                            ; 2
+dntab:  .include "ramp_dn.inc"
+
+        ; A fast phase's last step with no inline switch (its interval is
+        ; about 256 cycles): its reload from the table through DPTR (C: the
+        ; ascent's), then the next phase through nextph_isr.
+last:   clr     CSTEP
+        push    DPL
+        push    DPH
+        mov     DPTR, #(dntab - 7)
+        jnc     1$
+        mov     DPTR, #(uptab - 7)
+1$:     movc    a, @a+dptr
         mov     RCAP2L, a
-        pop     ACC
-        ljmp    21$
-        .include "ramp_dn.inc"
-21$:    djnz    _c_cl, 22$
-        djnz    _c_ch, 22$
-        clr     CSTEP
-        ljmp    nextph_isr
-22$:    clr     CSTEP
-        reti
+        pop     DPH
+        pop     DPL
+        xch     a, _t2_a
+        pop     PSW
+        ljmp    nextph_isr              ; it returns from the interrupt
 
 ; Everything that is not a fast carriage step: 16-bit tables, the feed,
 ; homing, delays, hammers. Intervals here are at least 120 ticks.
-slow:   push    PSW
-        push    ACC
-        push    DPL
+slow:   push    DPL
         push    DPH
-        clr     TF2
         mov     a, _s_kind
         jz      70$                     ; idle after END (s_pin is 0)
         cjne    a, #4, 30$
@@ -191,7 +249,7 @@ slow:   push    PSW
         setb    _mv_done
         sjmp    60$
 45$:    cjne    a, #8, 46$
-        anl     P1, #0xCF               ; HOFF: both hammers up
+        anl     P1, #0xCF               ; HOFF: both hammers up (the edge was made)
         sjmp    50$
 46$:    cjne    a, #9, 50$
         clr     a                       ; LAST: the counter restarts from 0
@@ -201,19 +259,19 @@ slow:   push    PSW
         djnz    _c_ch, 60$
         ; A phase change: lower the pins, restore everything, and jump to
         ; nextph_isr, which saves what it touches and returns from the
-        ; interrupt. Its 3 bytes then sit where these 4 were, not on top of
+        ; interrupt. Its 3 bytes then sit where these 3 were, not on top of
         ; them (README, "Stack"). The pins fall before the phase is loaded
         ; instead of after: only the rising edges are timed.
         anl     P1, #0xFA               ; step pins low (the hammers stay)
         pop     DPH
         pop     DPL
-        pop     ACC
+        xch     a, _t2_a
         pop     PSW
         ljmp    nextph_isr
 60$:    anl     P1, #0xFA               ; step pins low (the hammers stay)
         pop     DPH
         pop     DPL
-        pop     ACC
+        xch     a, _t2_a
         pop     PSW
         reti
 70$:    clr     TR2                     ; 65,536 cycles idle: no reference now

@@ -145,6 +145,15 @@ def main():
                       if op in ("lcall", "acall") and arg not in funcs and arg not in LIBRARY})
     if unknown:
         print(f"stack-depth: WARNING: calls without a body here, counted as 0: {', '.join(unknown)}")
+    # MUL AB and DIV AB take 4 cycles and lengthen the step interrupt's
+    # latency past what step.asm compensates; SDCC's __mul*/__div*/__mod*
+    # routines use them.
+    slow = sorted({f"{name}: {op} {arg}".strip() for name, body in funcs.items() for op, arg in body
+                   if op in ("mul", "div") or (op in ("lcall", "acall", "ljmp") and
+                                               arg.startswith(("__mul", "__div", "__mod")))})
+    if slow:
+        sys.exit("stack-depth: MUL or DIV in the image (4 cycles: the step interrupt's latency "
+                 "compensation covers 0-3, step.asm): " + "; ".join(slow))
 
     def chain(name, p):
         return " -> ".join([name] + p)
