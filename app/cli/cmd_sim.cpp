@@ -29,6 +29,7 @@ struct SimArgs {
     std::string strike_log;
     int paper_out_at = 0;
     int reset_at_strike = 0;
+    int paper_reload_reads = 0;  // --firmware: paper loaded at the Nth read of the sensor
     int power_loss_at_strike = 0;
     int limit_at_strike = 0;
     int mute_after_pass = 0;
@@ -64,17 +65,21 @@ std::ofstream open_log(const std::string& path) {
 }
 
 // The firmware runs as it is: faults the C++ model injects have no switch on
-// the emulated chip (only the paper sensor, from the start).
+// the emulated chip (only the paper sensor: out from the start, loaded at its
+// Nth read).
 void run_firmware_sim(const SimArgs& a) {
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required");
     const PtyServerOptionsDefaults d;
     if (a.power_loss_at_strike > 0 || a.limit_at_strike > 0 ||
         a.mute_after_pass > 0 || a.server.sim.instant_motion || a.server.disconnect_at_s >= 0 ||
-        a.server.time_scale != d.time_scale || (a.paper_out_at > 1))
+        a.server.time_scale != d.time_scale || (a.paper_out_at > 1) ||
+        a.server.sim.reload_paper_after_s >= 0 ||
+        (a.paper_reload_reads > 0 && a.paper_out_at != 1))
         throw CommandFailed(exit_usage,
                             "sim --firmware: the emulated chip runs in real time; of the fault options it takes "
-                            "--noise, --seed, --reset-at-strike N (a warm reset just after the Nth strike) and "
-                            "--paper-out-at 1 (no paper from the start)");
+                            "--noise, --seed, --reset-at-strike N (a warm reset just after the Nth strike), "
+                            "--paper-out-at 1 (no paper from the start) and, with it, --paper-reload-reads N "
+                            "(paper loaded at the firmware's Nth read of its sensor)");
     const auto profile = load_profile_arg(a.profile);
     FirmwareEmulatorOptions o;
     o.ihx = a.firmware;
@@ -85,6 +90,7 @@ void run_firmware_sim(const SimArgs& a) {
     o.seed = a.server.seed;
     o.pin_trace = a.pin_trace;
     o.reset_at_strike = static_cast<std::size_t>(std::max(0, a.reset_at_strike));
+    o.paper_reload_reads = static_cast<std::size_t>(std::max(0, a.paper_reload_reads));
     auto log = open_log(a.strike_log);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
@@ -119,6 +125,9 @@ struct MuteWatch {
 void run_sim(const SimArgs& a) {
     if (!a.firmware.empty()) return run_firmware_sim(a);
     if (!a.pty) throw CommandFailed(exit_usage, "sim: --pty is required (the in-process simulator is the device \"sim\")");
+    if (a.paper_reload_reads > 0)
+        throw CommandFailed(exit_usage, "sim: --paper-reload-reads is for --firmware; the C++ controller takes "
+                                        "--paper-reload SECONDS");
     auto options = a.server;
     if (!a.firmware_tables.empty()) options.sim.firmware = require(profile::load_firmware_tables(a.firmware_tables));
     auto server = controller::PtyServer::open(options);
@@ -182,6 +191,10 @@ void add_sim_command(CLI::App& app) {
     cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(CLI::PositiveNumber);
     cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,
                     "Seconds (simulated) until the operator loads paper after a paper-out");
+    cmd->add_option("--paper-reload-reads", args->paper_reload_reads,
+                    "With --firmware and --paper-out-at 1: the operator loads paper at the firmware's Nth read of "
+                    "its paper sensor (an s51 breakpoint; it reads it once per main-loop pass while paper is out)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--reset-at-strike", args->reset_at_strike,
                     "Watchdog reset right after strike N (with --firmware: an s51 breakpoint resets the emulated "
                     "chip, RAM kept)")->check(CLI::PositiveNumber);

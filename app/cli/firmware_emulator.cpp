@@ -168,6 +168,8 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     const auto map = fs::path(ihx).replace_extension(".map");
     const unsigned sheet_at = map_symbol(map, "_fw_sheet");
     const unsigned strike_fired = o.reset_at_strike > 0 ? map_symbol(map, "_fw_strike_fired") : 0;
+    const bool reload = o.paper_out && o.paper_reload_reads > 0;
+    const unsigned paper_read = reload ? map_symbol(map, "_fw_paper_present") : 0;
     if (!in_path("s51"))
         throw CommandFailed(exit_device, "sim --firmware: s51 not found (apt-get install sdcc-ucsim)");
     Run run;
@@ -192,12 +194,23 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
              << "set hw vcd[0] add iram 0x" << std::hex << sheet_at << "\n"
              << "set hw vcd[0] add iram 0x" << sheet_at + 1 << std::dec << "\n"
              << "set hw vcd[0] start\n";
-        if (o.reset_at_strike > 0)
+        int breakpoint = 0;  // s51 numbers them from 1 as they are set
+        if (o.reset_at_strike > 0) {
             // A warm reset (RST: the SFRs cleared, RAM kept) just after the
             // Nth strike fired: the breakpoint stops the chip on its Nth hit,
             // removes itself, resets and runs on.
+            ++breakpoint;
             cmds << "break 0x" << std::hex << strike_fired << std::dec << " " << o.reset_at_strike << "\n"
-                 << "commands 1 delete 1 ; reset ; run\n";
+                 << "commands " << breakpoint << " delete " << breakpoint << " ; reset ; run\n";
+        }
+        if (reload) {
+            // The operator loads paper: at the Nth read of the sensor the
+            // breakpoint raises P3.6, removes itself and runs on.
+            ++breakpoint;
+            cmds << "break 0x" << std::hex << paper_read << std::dec << " " << o.paper_reload_reads << "\n"
+                 << "commands " << breakpoint << " delete " << breakpoint
+                 << " ; set memory port_3_cfg 1 0xff ; run\n";
+        }
         // `run` returns when the chip stops by itself (a stack overflow, an
         // invalid instruction); `kill` then ends s51, which the loop below
         // sees as the chip's own end.

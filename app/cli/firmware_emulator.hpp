@@ -29,6 +29,12 @@ struct FirmwareEmulatorOptions {
     // A warm reset of the chip just after its Nth strike (1-based; 0: none),
     // from an s51 breakpoint on the firmware's strike-fired label.
     std::size_t reset_at_strike = 0;
+    // With paper_out: the operator loads paper (P3.6 goes high) once the
+    // firmware has read its paper sensor this many times (0: never), from an
+    // s51 breakpoint on fw_paper_present. While *paper out* stands the
+    // firmware reads the sensor once per main-loop pass, so this is a delay
+    // counted in passes (s51 has no timed breakpoint).
+    std::size_t paper_reload_reads = 0;
 };
 
 // Starts s51 (niced), prints the pty path on stdout's first line,

@@ -237,6 +237,19 @@ void fw_report_room(void) {
         fw_ack();
 }
 
+/* Paper loaded while *paper out* stands: the fault clears and the job shows
+ * paused, with an ACK saying so; the host, which waits for the fault to
+ * clear, then sends RESUME, and the SHEET_BEGIN that found no paper runs
+ * (docs/protocol.md, "Paper out"; the C++ controller's load_paper). */
+void fw_poll_paper(void) {
+    if (!(fw_faults & F_PAPER_OUT) || !fw_paper_present()) return;
+    fw_faults &= (uint8_t)~F_PAPER_OUT;
+    /* Another fault (a warm reset) keeps the job in its fault. (The C++
+     * controller also passes over *host timeout*, which the firmware never sets.) */
+    if (fw_state == ST_FAULT && fw_faults == 0) fw_state = ST_PAUSED;
+    fw_ack();
+}
+
 void fw_starved(void) {
     if (session && fw_ring_free() > reported) fw_ack();
 }

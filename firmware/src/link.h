@@ -37,6 +37,9 @@ void fw_ack(void);
 /* Sends an ACK if the host has not heard of room it may now use (the v2
  * rules: a whole frame's room first appears, or a frame's worth more). */
 void fw_report_room(void);
+/* Main loop: clears *paper out* once the sensor sees paper (the job then
+ * shows paused until RESUME). */
+void fw_poll_paper(void);
 /* The executor ran out of data: report room the host has not been told of. */
 void fw_starved(void);
 uint8_t fw_ring_free(void);
@@ -46,7 +49,7 @@ uint8_t fw_ring_free(void);
 void fw_tx_kick(void);
 /* The next byte of the replies due, or -1 when there is none. */
 int16_t fw_reply_byte(void);
-/* Platform: whether paper is present (for the status flags). */
+/* Platform: whether paper is present (the status flags, RESUME, fw_poll_paper). */
 uint8_t fw_paper_present(void);
 /* Platform: the generated ramp table's identity (HELLO_REPLY). */
 extern FW_CODE uint8_t fw_table_id[4];

@@ -94,6 +94,7 @@ void main(void) {
         while ((b = io_rx()) >= 0) fw_rx_byte((uint8_t)b);
         if (fw_ops_head > 0) fw_compact(); /* between bytes: the frame in progress moves too */
         exec_poll();
+        fw_poll_paper();
         fw_report_room();
         io_tx_pump();
         LED = !(fw_state == ST_RUNNING || fw_state == ST_HOMING);

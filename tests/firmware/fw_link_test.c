@@ -375,6 +375,54 @@ static void test_control(void) {
     CHECK(one_reply().type == T_NAK);
 }
 
+/* Paper loaded while *paper out* stands (docs/protocol.md, "Paper out"): the
+ * main loop's poll sees the sensor change, clears the fault and shows paused
+ * with an ACK, without a RESUME; the host then resumes. (The firmware kept
+ * the fault until RESUME, and the host, waiting for it to clear, gave up.) */
+static void test_paper_loaded(void) {
+    reset_all();
+    hello(0, 7);
+    (void)one_reply();
+    /* A job whose SHEET_BEGIN found no paper (exec.c). */
+    native_paper = 0;
+    fw_flags = FL_JOB_ACTIVE;
+    fw_faults = F_PAPER_OUT;
+    fw_state = ST_FAULT;
+    for (int i = 0; i < 3; ++i) fw_poll_paper(); /* no paper yet: nothing changes, nothing is said */
+    native_drain();
+    struct reply r[4];
+    CHECK(replies(r, 4) == 0);
+    CHECK(fw_faults == F_PAPER_OUT && fw_state == ST_FAULT);
+    /* The operator loads paper. */
+    native_paper = 1;
+    fw_poll_paper();
+    native_drain();
+    CHECK(replies(r, 4) == 1);
+    CHECK(r[0].type == T_ACK && r[0].p[4] == 0 && r[0].p[3] == ST_PAUSED);
+    fw_poll_paper(); /* once only */
+    native_drain();
+    CHECK(replies(r, 4) == 0);
+    send(1, T_STATUS, NULL, 0);
+    r[0] = one_reply();
+    CHECK(r[0].type == T_STATUS_REPLY && r[0].p[3] == ST_PAUSED && r[0].p[4] == 0 && (r[0].p[8] & FL_PAPER));
+    send(2, T_RESUME, NULL, 0);
+    r[0] = one_reply();
+    CHECK(r[0].type == T_ACK && r[0].p[3] == ST_RUNNING && r[0].p[4] == 0);
+
+    /* With another fault standing, loading paper clears paper out only: the
+     * job stays in its fault. */
+    native_paper = 0;
+    fw_faults = F_PAPER_OUT | F_WARM_RESET;
+    fw_state = ST_FAULT;
+    native_paper = 1;
+    fw_poll_paper();
+    native_drain();
+    CHECK(replies(r, 4) == 1);
+    CHECK(r[0].p[4] == F_WARM_RESET && r[0].p[3] == ST_FAULT);
+    fw_faults = 0;
+    fw_flags = 0;
+}
+
 int main(void) {
     current = "test_crc";
     test_crc();
@@ -388,6 +436,8 @@ int main(void) {
     test_resync();
     current = "test_control";
     test_control();
+    current = "test_paper_loaded";
+    test_paper_loaded();
     if (failures) {
         fprintf(stderr, "%d check(s) failed\n", failures);
         return 1;

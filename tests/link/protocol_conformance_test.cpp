@@ -7,7 +7,8 @@
 // sessions, sequence numbers, duplicates, out-of-order frames, refusals,
 // silence on a bad CRC, HELLO_REPLY's table identity and the host's refusal
 // of other tables, the DATA check, the window over the ring, duplicate DATA
-// never executed twice, and the host's bounded give-up. The frame-level cases
+// never executed twice, paper out then paper loaded mid-run, and the host's
+// bounded give-up. The frame-level cases
 // the versions share also run against the C++ controller speaking protocol 2.
 // Raw frames, no host link, except where the host's own rules are the point.
 // Without sdcc and s51 the firmware's instance is not built; the C++ ones are.
@@ -71,6 +72,8 @@ protected:
 #endif
         if (!GetParam().firmware) args.insert(args.end(), {"--baud", "9600"});
         if (!GetParam().firmware && GetParam().protocol == 3) args.insert(args.end(), {"--firmware-tables", kTables});
+        const auto extra = extra_args();
+        args.insert(args.end(), extra.begin(), extra.end());
         server_.emplace(args);
         const auto pty = server_->read_line(std::chrono::seconds(30));
         ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
@@ -78,6 +81,8 @@ protected:
         ASSERT_TRUE(s) << s.error().to_string();
         line_ = std::move(*s);
     }
+    // The controller's own options (faults it is started with).
+    [[nodiscard]] virtual std::vector<std::string> extra_args() const { return {}; }
     void TearDown() override {
         line_.reset();
         if (server_) {
@@ -467,6 +472,68 @@ TEST_P(Conformance, JobEndedIsReportedUntilTheNextJobBegins) {
     EXPECT_EQ(st.flags & encode::flag::job_ended, 0);
 }
 
+// Sheet 1 finds no paper, and the operator loads it a moment later: the C++
+// controller after 1 s, the chip at its 4000th read of the paper sensor
+// (P3.6, raised by an s51 breakpoint; it reads it once per main-loop pass
+// while paper is out).
+class PaperConformance : public Conformance {
+protected:
+    [[nodiscard]] std::vector<std::string> extra_args() const override {
+        if (GetParam().firmware) return {"--paper-out-at", "1", "--paper-reload-reads", "4000"};
+        return {"--paper-out-at", "1", "--paper-reload", "1"};
+    }
+};
+
+// Paper out (docs/protocol.md, "Pause, resume, abort, faults, restarts"): the
+// SHEET_BEGIN that finds no paper faults with nothing dropped; loading paper
+// clears the fault and shows *paused* with an ACK of its own, no RESUME
+// needed; RESUME then runs the SHEET_BEGIN. (The firmware kept the fault
+// until RESUME, and the host, waiting for the fault to clear before it
+// resumes, gave up after 2 minutes.)
+TEST_P(PaperConformance, LoadingPaperClearsPaperOutAndShowsPaused) {
+    REQUIRE_V3();
+    hello(0, 0x5005);
+    configure_v3(1);
+    send_data(2, {encode::v3::op_job_begin, 0x05, 0x55, 0, 0, encode::v3::op_sheet_begin, 0x00, 0x01});
+    // The DATA's ACK, then the executor's (the fault).
+    auto a = expect_ack_info(3);
+    while (a.state != encode::ControllerState::fault) {
+        auto r = reply();
+        if (!r) break;
+        ASSERT_EQ(r->type, 0x82);
+        auto info = encode::decode_ack(r->payload);
+        ASSERT_TRUE(info);
+        a = *info;
+    }
+    ASSERT_EQ(a.state, encode::ControllerState::fault);
+    EXPECT_EQ(a.faults, encode::fault::paper_out);
+    auto st = status(3);
+    ASSERT_EQ(st.ack.state, encode::ControllerState::fault) << "paper loaded too soon to see the fault";
+    EXPECT_EQ(st.flags & encode::flag::paper_present, 0);
+    EXPECT_EQ(st.sheet, 0);
+    // The operator loads paper: an ACK says so, unasked.
+    auto r = reply(std::chrono::milliseconds(10000));
+    ASSERT_TRUE(r) << "loading paper was not reported";
+    ASSERT_EQ(r->type, 0x82);
+    auto info = encode::decode_ack(r->payload);
+    ASSERT_TRUE(info);
+    EXPECT_EQ(info->state, encode::ControllerState::paused);
+    EXPECT_EQ(info->faults, 0);
+    skip_until_quiet();
+    st = status(4);
+    EXPECT_EQ(st.ack.state, encode::ControllerState::paused);
+    EXPECT_EQ(st.ack.faults, 0);
+    EXPECT_NE(st.flags & encode::flag::paper_present, 0);
+    EXPECT_EQ(st.sheet, 0) << "the SHEET_BEGIN ran before RESUME";
+    send(5, 0x05);  // RESUME
+    skip_until_quiet();
+    st = status(6);
+    EXPECT_EQ(st.ack.state, encode::ControllerState::waiting);
+    EXPECT_EQ(st.ack.faults, 0);
+    EXPECT_EQ(st.sheet, 1);
+    EXPECT_EQ(st.ack.buffer_free, controller::v3::kRingBytes);  // nothing dropped: it ran
+}
+
 // The host's bounded give-up: a controller that stops answering mid-job
 // (stopped with SIGSTOP after the first pass) ends the job not_answering with
 // the sheet to resume from, within the bound, and what it struck is the
@@ -515,6 +582,8 @@ std::vector<Controller> controllers() {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothControllers, Conformance, ::testing::ValuesIn(controllers()),
+                         [](const auto& p) { return p.param.name; });
+INSTANTIATE_TEST_SUITE_P(BothControllers, PaperConformance, ::testing::ValuesIn(controllers()),
                          [](const auto& p) { return p.param.name; });
 
 }  // namespace
