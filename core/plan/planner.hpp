@@ -44,8 +44,9 @@ inline constexpr const char* kTooManyPassesWhere = "passes";
 
 // Firmware mode's residual estimates of table moves, shared across plans.
 // Estimating a table move runs every head model of the band over its step
-// train (one piece per step): seconds per document, and the same numbers
-// plan after plan. An entry is keyed by everything the estimate reads: the
+// train (Ringing::prepare_step_train), and gives the same numbers plan after
+// plan: in the sanitizer build, where that costs most, tests plan the same
+// tables again and again. An entry is keyed by everything the estimate reads: the
 // carriage ramp table, the strike settle, steps per mm, the head dynamics,
 // the vibration band and tolerance, and the hammer dwell; a profile or a
 // table that differs in any of them gets its own entry, never another's.
