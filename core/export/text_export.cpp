@@ -204,11 +204,16 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
             for (std::size_t from = 0; from < rows.size();) {
                 std::size_t to = from + 1;
                 while (to < rows.size() && !(rows[to].first && !rows[to - 1].first)) ++to;
+                // As wide as its widest row, counted in columns (a cell keeps its
+                // column: a merged cell's other columns are empty entries).
+                std::vector<std::vector<std::string>> entries;
                 std::size_t width = 1;
-                for (std::size_t r = from; r < to; ++r) width = std::max(width, rows[r].second.size());
+                for (std::size_t r = from; r < to; ++r) {
+                    entries.push_back(split_row(markdown_table_row(rows[r].second)));
+                    width = std::max(width, entries.back().size());
+                }
                 std::vector<std::string> table;
-                for (std::size_t r = from; r < to; ++r)
-                    table.push_back(join_row(split_row(markdown_table_row(rows[r].second)), width));
+                for (const auto& e : entries) table.push_back(join_row(e, width));
                 if (!rows[from].first) table.insert(table.begin(), join_row({}, width));
                 table.insert(table.begin() + 1, delimiter_row(width));
                 if (from > 0) lines.emplace_back();

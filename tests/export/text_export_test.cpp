@@ -104,3 +104,26 @@ TEST(MarkdownExport, PageLabelsAreKept) {
     const auto md = exporter::to_markdown(doc);
     EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
 }
+
+// Issue 13: a merged cell (DOCX, ODT) has no Markdown form. Each cell keeps its
+// column: the columns a merged cell covers, and a row's skipped ones, are
+// empty entries (before, the next cell was written into the column after the
+// merged one's first).
+TEST(MarkdownExport, MergedCellsKeepTheirColumnsAsEmptyEntries) {
+    document::Document doc;
+    auto row = text_block(document::BlockKind::table_row, 1, "");
+    auto cell = [](int column, std::string text, int span = 1) {
+        auto c = text_block(document::BlockKind::table_cell, column, std::move(text));
+        c.span = span;
+        return c;
+    };
+    doc.blocks = {row, cell(0, "Bird"), cell(1, "Seen", 2), cell(3, "Where")};
+    row.level = 0;
+    doc.blocks.insert(doc.blocks.end(), {row, cell(1, "3"), cell(2, "1"), cell(3, "reeds")});
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_EQ(md, "| Bird | Seen |  | Where |\n| --- | --- | --- | --- |\n|  | 3 | 1 | reeds |\n") << md;
+    std::vector<std::string> columns;
+    for (const auto& b : import_as(md, "saved.md").blocks)
+        if (b.kind == document::BlockKind::table_cell) columns.push_back(std::to_string(b.level) + ":" + b.text());
+    EXPECT_EQ(columns, (std::vector<std::string>{"0:Bird", "1:Seen", "2:", "3:Where", "0:", "1:3", "2:1", "3:reeds"}));
+}
