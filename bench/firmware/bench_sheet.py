@@ -95,8 +95,10 @@ def main():
     ap.add_argument("--doc", default=str(ROOT / "resources" / "samples" / "welcome.md"))
     ap.add_argument("--sheet", type=int, default=1)
     ap.add_argument("--baud", type=int, default=9600)
+    ap.add_argument("--fw-dir", default=str(ROOT / "firmware" / "build-emu"),
+                    help="the emulator build to run (e.g. a diagnostic build)")
     a = ap.parse_args()
-    fw = ROOT / "firmware" / "build-emu"
+    fw = Path(a.fw_dir)
     ramp = fw / "ramp.json"
     gap = json.loads(ramp.read_text())["start_gap_ticks"]
     plan = json.loads(subprocess.run([a.cli, "plan", "--json", "--firmware-tables", str(ramp), a.doc],
