@@ -19,6 +19,7 @@ build counts the bytes the receive queue dropped (STATUS_REPLY byte 23): it
 must be 0. Failed on the firmware whose frame CRC and DATA check were SDCC's
 C (about 360 main-loop cycles a DATA byte; 246 with them in assembly).
 """
+import os
 import signal
 import subprocess
 import sys
@@ -38,8 +39,10 @@ def main():
         sys.exit(f"{FW} missing: run make -C firmware emu")
     import tempfile
     with tempfile.TemporaryDirectory(prefix="tactus-busy-") as d:
-        proc = subprocess.Popen([str(ROOT / "firmware" / "tools" / "run-s51.sh"), str(FW), "--dir", d],
-                                stdout=subprocess.PIPE, text=True)
+        args = [str(ROOT / "firmware" / "tools" / "run-s51.sh"), str(FW), "--dir", d]
+        if os.environ.get("TACTUS_BUSY_VCD"):  # the pins, for a diagnostic build (firmware/README.md)
+            args += ["--vcd", os.environ["TACTUS_BUSY_VCD"]]
+        proc = subprocess.Popen(args, stdout=subprocess.PIPE, text=True)
         link = fwhost.Link(proc.stdout.readline().split()[1])
         try:
             return run(link)
