@@ -247,16 +247,22 @@ void fw_starved(void) {
 
 /* --- the job-stream check */
 
-/* Runs the job-stream grammar over one payload's ops. Returns 0 if every
+/* Runs the job-stream grammar over the ops of the frame at f (from f + 3),
+ * moving each to f + its offset as it goes. Returns 0 if every
  * byte fits, 1 for a malformed stream. Sets done_at: the payload offset just
  * past the last thing the executor may start, a whole op, or a pass header,
  * or one whole strike entry of a pass (passes stream: a strike starts when its
  * entry is in the ring). */
-static uint8_t check_ops(const FW_IDATA uint8_t *p, uint8_t len) {
+static uint8_t check_ops(FW_IDATA uint8_t *f, uint8_t len) {
     uint8_t i, b;
     done_at = 0;
     for (i = 0; i < len; ++i) {
-        b = p[i];
+        /* The ops lie behind the frame's 3 header bytes: each moves down to
+         * the ring's end as it is checked (one loop, not two: the frame's end
+         * is the longest main-loop pass). A malformed stream flushes the ring,
+         * so what moved past its end does not matter. */
+        b = f[(uint8_t)(i + 3)];
+        f[i] = b;
         switch (vs.st) {
             case VS_OP:
                 switch (b) {
@@ -440,7 +446,6 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
 }
 
 static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
-    uint8_t i;
     uint16_t c;
     FW_IDATA uint8_t *p = frame + 3;
     if (len < 3 || len > FW_MAX_DATA) {
@@ -459,7 +464,7 @@ static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
         nak(NAK_NO_SPACE);
         return;
     }
-    if (check_ops(p, len)) {
+    if (check_ops(frame, len)) {
         /* A malformed op: a host bug, and the ops before it may end
          * mid-record. The ring is dropped with a fault; the host restarts
          * from the progress it is told. */
@@ -471,8 +476,7 @@ static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
         return;
     }
     accept();
-    /* The ops already lie at the ring's end, behind the 3 header bytes. */
-    for (i = 0; i < len; ++i) frame[i] = p[i];
+    /* check_ops moved the ops to the ring's end. */
     if (done_at) fw_ops_done = (uint8_t)(fw_ops_end + done_at);
     fw_ops_end = (uint8_t)(fw_ops_end + len);
     fw_ack();
