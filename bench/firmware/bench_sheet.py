@@ -95,8 +95,10 @@ def main():
     ap.add_argument("--doc", default=str(ROOT / "resources" / "samples" / "welcome.md"))
     ap.add_argument("--sheet", type=int, default=1)
     ap.add_argument("--baud", type=int, default=9600)
+    ap.add_argument("--fw-dir", default=str(ROOT / "firmware" / "build-emu"),
+                    help="the emulator build to run (e.g. a diagnostic build)")
     a = ap.parse_args()
-    fw = ROOT / "firmware" / "build-emu"
+    fw = Path(a.fw_dir)
     ramp = fw / "ramp.json"
     gap = json.loads(ramp.read_text())["start_gap_ticks"]
     plan = json.loads(subprocess.run([a.cli, "plan", "--json", "--firmware-tables", str(ramp), a.doc],
@@ -129,6 +131,19 @@ def main():
     if host.poll() is None:
         host.send_signal(signal.SIGINT)
     host.wait(timeout=60)
+    # The emulator build counts the receive bytes its queue dropped
+    # (STATUS_REPLY byte 23, firmware/src/uart.c): asked in a session of our own.
+    dropped = stack = None
+    try:
+        link = fwhost.Link(pty)
+        try:
+            link.hello(nonce=0x5A5A)
+            st = link.reliable(fwhost.T_STATUS)
+            dropped, stack = st.payload[23], st.payload[24]
+        finally:
+            link.close()
+    except (OSError, TimeoutError) as e:
+        print(f"no STATUS after the sheet: {e}", file=sys.stderr)
     sim.send_signal(signal.SIGTERM)
     sim.wait(timeout=60)
     got = [json.loads(l) for l in log.read_text().splitlines()]
@@ -176,6 +191,7 @@ def main():
         "planned_sheet_s": round(planned, 6), "emulated_sheet_s": round(emulated, 6),
         "sheet_time_error_pct": round(100 * (emulated / planned - 1), 4),
         "sheet_time_error_cycles": round((emulated - planned) * TICK_HZ, 1),
+        "rx_bytes_dropped": dropped, "stack_high_water_bytes": stack,
         "s51_wall_s": round(wall, 1),
         "baud": a.baud,
     }

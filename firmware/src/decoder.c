@@ -5,7 +5,7 @@
 #include "link.h"
 
 static uint8_t rx_fill; /* bytes stored from LEN on, at fw_buf[fw_ops_end] */
-static uint8_t rx_sync; /* a SYNC was seen: collecting a candidate frame */
+static FW_BIT rx_sync; /* a SYNC was seen: collecting a candidate frame */
 /* The frame CRC over LEN..PAYLOAD and a DATA payload's check over its ops,
  * kept up to date byte by byte as the bytes arrive: computed whole when the
  * frame ends, they took about 10,000 machine cycles of one main-loop pass,
@@ -13,17 +13,25 @@ static uint8_t rx_sync; /* a SYNC was seen: collecting a candidate frame */
  * timer's only if the main loop starts each phase within a few thousand
  * cycles; PROTOCOL-v3.md, "Timing"). */
 static uint16_t rx_crc, rx_chk;
+/* Read from the candidate's header when its TYPE is stored: where the frame
+ * CRC ends (LEN + 3) and whether it is DATA, so that a payload byte takes the
+ * short path in fw_rx_byte (at the top step rate the main loop has about 280
+ * of its own cycles a byte at 9600 baud: firmware/README.md, "Main loop"). */
+static uint8_t rx_end;
+static FW_BIT rx_data;
 
 /* Folds the stored byte at index i (0 = LEN) into the running checks. */
 static void fold(uint8_t i, uint8_t b) {
-    const FW_IDATA uint8_t *r = fw_buf + fw_ops_end;
     if (i == 0) {
         rx_crc = 0xFFFF;
         rx_chk = 0xFFFF;
+    } else if (i == 2) {
+        rx_end = (uint8_t)(fw_buf[fw_ops_end] + 3);
+        rx_data = b == T_DATA;
     }
-    if (i < (uint8_t)(r[0] + 3)) rx_crc = crc16_update(rx_crc, b);
+    if (i < 3 || i < rx_end) rx_crc = crc16_update(rx_crc, b);
     /* Ops: payload bytes 3.. up to the 2-byte check at the payload's end. */
-    if (i >= 3 && r[2] == T_DATA && i < (uint8_t)(r[0] + 1)) rx_chk = pass_crc_update(rx_chk, b);
+    if (i >= 3 && rx_data && i < (uint8_t)(rx_end - 2)) rx_chk = pass_crc_update(rx_chk, b);
 }
 
 /* After the stored bytes changed under the candidate (a rescan). */
@@ -108,6 +116,7 @@ static inline void scan(void) {
 }
 
 void fw_rx_byte(uint8_t b) {
+    uint8_t i;
     if (!rx_sync) {
         if (b == FW_SYNC) {
             rx_sync = 1;
@@ -116,8 +125,16 @@ void fw_rx_byte(uint8_t b) {
         return;
     }
     /* scan() rejects a LEN whose frame would not fit, so this never overflows. */
-    fw_buf[fw_ops_end + rx_fill] = b;
-    fold(rx_fill, b);
+    i = rx_fill;
+    fw_buf[fw_ops_end + i] = b;
     ++rx_fill;
+    if (i >= 3 && i < rx_end) {
+        /* Inside the payload: LEN was checked (scan, at the first byte) and
+         * the frame is not whole yet, so only the checks move on. */
+        rx_crc = crc16_update(rx_crc, b);
+        if (rx_data && i < (uint8_t)(rx_end - 2)) rx_chk = pass_crc_update(rx_chk, b);
+        return;
+    }
+    fold(i, b);
     scan();
 }

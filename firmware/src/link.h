@@ -58,5 +58,8 @@ extern FW_CODE uint8_t fw_table_id[4];
  * over a DATA payload's ops; a polynomial other than the frame's, so an error
  * the frame CRC misses is not missed by this one for the same reason. */
 uint16_t pass_crc_update(uint16_t c, uint8_t b);
+#ifdef FW_EMU
+extern uint8_t fw_rx_dropped; /* uart.c: receive bytes the full queue dropped */
+#endif
 
 #endif

@@ -91,12 +91,26 @@ void main(void) {
     io_init();
     EA = 1;
     for (;;) {
+#ifdef FW_DIAG_RX
+        /* diagnostic: P1.7 high while a received byte is processed */
+        while ((b = io_rx()) >= 0) {
+            LED = 1;
+            fw_rx_byte((uint8_t)b);
+            LED = 0;
+        }
+#else
         while ((b = io_rx()) >= 0) fw_rx_byte((uint8_t)b);
+#endif
         if (fw_ops_head > 0) fw_compact(); /* between bytes: the frame in progress moves too */
         exec_poll();
         fw_poll_paper();
         fw_report_room();
         io_tx_pump();
+#if defined(FW_DIAG_RX)
+#elif defined(FW_DIAG_PASS)
+        LED = !LED; /* diagnostic: P1.7 toggles once a main-loop pass */
+#else
         LED = !(fw_state == ST_RUNNING || fw_state == ST_HOMING);
+#endif
     }
 }

@@ -21,6 +21,9 @@ static volatile __bit tx_have, tx_busy;
 
 void io_init(void) {
     rx_w = rx_r = 0;
+#ifdef FW_EMU
+    fw_rx_dropped = 0;
+#endif
     tx_busy = 0;
     tx_have = 0;
     TMOD = (TMOD & 0x0F) | 0x20; /* timer 1: 8-bit auto-reload */
@@ -37,12 +40,27 @@ void io_init(void) {
 }
 
 /* A byte that finds the queue full is dropped: the frame it belongs to fails
- * its CRC and the host sends it again. */
+ * its CRC and the host sends it again. The emulator build counts them
+ * (STATUS_REPLY's byte 23, saturating): the main loop must never let the
+ * queue fill (firmware/README.md, "Main loop"). */
+#ifdef FW_EMU
+uint8_t fw_rx_dropped;
+#define RX_DROPPED() \
+    do {             \
+        if (++fw_rx_dropped == 0) fw_rx_dropped = 255; \
+    } while (0)
+#else
+#define RX_DROPPED() \
+    do {             \
+    } while (0)
+#endif
 #define RX_PUT(b)                                  \
     do {                                           \
         if ((uint8_t)(rx_w - rx_r) < RXQ) {        \
             rxq[rx_w & (RXQ - 1)] = (b);           \
             ++rx_w;                                \
+        } else {                                   \
+            RX_DROPPED();                          \
         }                                          \
     } while (0)
 
