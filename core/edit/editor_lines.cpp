@@ -312,7 +312,8 @@ std::string render_editor_line(const document::Block& b, Dialect dialect) {
 std::vector<std::string> render_editor_lines(const document::Document& document, Dialect dialect) {
     if (dialect == Dialect::markdown) return exporter::markdown_lines(document);
     std::vector<std::string> lines;
-    for (auto& l : exporter::text_lines(document)) {
+    // A hard-wrapped paragraph is one line, as it is brailled.
+    for (auto& l : exporter::text_lines(document, exporter::SoftBreaks::as_spaces)) {
         // A braille block is several lines.
         for (std::size_t from = 0;;) {
             const auto nl = l.find('\n', from);

@@ -2,6 +2,8 @@
 #include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 
+#include "document/soft_break.hpp"
+
 #include <algorithm>
 #include <optional>
 
@@ -42,7 +44,9 @@ std::string render_spans(const std::vector<document::Span>& spans, bool in_table
             out += "[^" + span.text + "]";
             continue;
         }
-        std::string_view t = span.text;
+        // A soft line break (a hard-wrapped text paragraph) is a space: one block, one line.
+        const auto joined = document::soft_breaks_as_spaces(span.text);
+        std::string_view t = joined;
         const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
                               ? std::string_view("***")
                           : (span.emphasis & document::emphasis_bold)   ? std::string_view("**")
@@ -367,32 +371,38 @@ std::string text_line(const document::Block& b) {
     return out;
 }
 
-std::vector<std::string> text_lines(const document::Document& document) {
+std::vector<std::string> text_lines(const document::Document& document, SoftBreaks soft_breaks) {
     struct Line {
         std::string text;
         int source_line;
+        int last_line;  // the source line of its last line (a hard-wrapped paragraph has several)
         bool text_block;
     };
     std::vector<Line> blocks;
     for (const auto& b : document.blocks) {
         if (b.kind == document::BlockKind::table_row) continue;
         auto text = text_line(b);
-        if (is_text_line_kind(b) && trim(text).empty()) continue;
-        blocks.push_back(Line{std::move(text), b.source_line, is_text_line_kind(b)});
+        const bool text_block = is_text_line_kind(b);
+        if (text_block && trim(text).empty()) continue;
+        // A paragraph's soft line breaks (a braille block's lines are its rows).
+        const bool paragraph = document::is_text_kind(b.kind);
+        const auto breaks = paragraph ? static_cast<int>(std::ranges::count(text, '\n')) : 0;
+        if (soft_breaks == SoftBreaks::as_spaces && paragraph) text = document::soft_breaks_as_spaces(text);
+        blocks.push_back(Line{std::move(text), b.source_line, b.source_line == 0 ? 0 : b.source_line + breaks, text_block});
     }
     // Paragraphs apart by a blank line somewhere: the importer then joins lines,
     // so every two paragraphs need one.
     bool apart = false;
     for (std::size_t i = 1; i < blocks.size(); ++i)
         if (blocks[i - 1].text_block && blocks[i].text_block &&
-            (blocks[i].source_line == 0 || blocks[i].source_line != blocks[i - 1].source_line + 1))
+            (blocks[i].source_line == 0 || blocks[i].source_line != blocks[i - 1].last_line + 1))
             apart = true;
     std::vector<std::string> out;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         if (i > 0 && apart) {
             const auto& p = blocks[i - 1];
             const auto& b = blocks[i];
-            const bool gap = b.source_line == 0 || p.source_line == 0 || b.source_line > p.source_line + 1;
+            const bool gap = b.source_line == 0 || p.last_line == 0 || b.source_line > p.last_line + 1;
             if ((p.text_block && b.text_block) || gap) out.emplace_back();
         }
         out.push_back(std::move(blocks[i].text));

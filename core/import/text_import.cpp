@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Plain text: blank lines separate paragraphs, the lines of a paragraph are
-// joined with a space (hard-wrapped text reflows in braille), a form feed is a
+// kept as written, with a soft line break between them (document/soft_break.hpp:
+// print keeps the lines, hard-wrapped text reflows in braille), a form feed is a
 // print page break. A text with no blank line between its lines at all (a
 // verse-per-line Bible, a word list, a poem) has no other paragraph marks: each
 // of its lines is a paragraph, or the whole file would become one.
@@ -31,9 +32,9 @@ public:
     DocumentBuilder& builder() { return builder_; }
 
 private:
-    // A paragraph keeps the spaces at its ends as written (the text is
-    // verbatim; braille leaves them out, translate/translated_document.cpp);
-    // the lines of a hard-wrapped paragraph are joined with one space.
+    // A paragraph's lines are kept as written, the spaces at their ends too
+    // (the text is verbatim; braille leaves them out and reads a soft line
+    // break as one space, document/soft_break.hpp).
     void segment(std::string_view text, int number) {
         if (is_blank(text)) {
             builder_.end();
@@ -42,9 +43,7 @@ private:
         if (!builder_.is_open() || line_per_paragraph_) {
             builder_.begin(document::BlockKind::paragraph, 0, number);
         } else {
-            builder_.trim_end();
-            builder_.add_text(" ");
-            text = text.substr(text.find_first_not_of(" \t\v"));
+            builder_.add_text("\n");
         }
         builder_.add_text(text);
     }

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "common/utf8.hpp"
+#include "document/soft_break.hpp"
 #include "translate/word_division.hpp"
 
 namespace tactus::translate {
@@ -18,10 +19,12 @@ constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 constexpr document::Cell kNoteReferenceIndicator{0x36};
 
 // Joins spans into one string with an emphasis mark per code point. Line breaks
-// and tabs inside a block become spaces: layout decides where braille lines end.
+// and tabs inside a block become spaces: layout decides where braille lines end;
+// a soft line break with the spaces around it is one space (document/soft_break.hpp).
 Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph) {
     for (const auto& span : spans) {
-        auto u = utf8_to_utf32(span.text);
+        const bool soft_break = span.text.find_first_of("\r\n") != std::string::npos;
+        auto u = utf8_to_utf32(soft_break ? document::soft_breaks_as_spaces(span.text) : span.text);
         if (!u) return std::unexpected(u.error());
         for (char32_t c : *u) {
             if (c == U'\n' || c == U'\r' || c == U'\t' || c == U'\f' || c == U'\v') c = U' ';

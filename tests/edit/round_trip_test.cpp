@@ -263,11 +263,24 @@ TEST(RoundTrip, SpacesAtAParagraphsEndsStayInATextFile) {
     // The braille is that of the words: the spaces are print's.
     EXPECT_EQ(text_of(live.paged().pages),
               text_of(make({"indented", "", "kept", "", "Tabbed"}, edit::Dialect::text).paged().pages));
-    // A hard-wrapped paragraph keeps its first line's indent and its last line's
-    // end; its lines are joined with one space.
+    // A hard-wrapped paragraph keeps its lines as written (a soft line break
+    // between them); the editor shows it as one line, its lines joined with
+    // one space, as braille reads it.
     const auto wrapped = import_as("  one  \n  two  \n\nthree\n", "w.txt");
     ASSERT_EQ(wrapped.blocks.size(), 2u);
-    EXPECT_EQ(wrapped.blocks[0].text(), "  one two  ");
+    EXPECT_EQ(wrapped.blocks[0].text(), "  one  \n  two  ");
+    EXPECT_EQ(exporter::to_text(wrapped), "  one  \n  two  \n\nthree\n");
+    EXPECT_EQ(edit::render_editor_lines(wrapped, edit::Dialect::text),
+              (std::vector<std::string>{"  one two  ", "", "three"}));
+}
+
+// Issue 13 item 4: a hard-wrapped text (a Project Gutenberg book) reflows in
+// braille: its braille is that of its paragraphs on one line each.
+TEST(RoundTrip, AHardWrappedTextReflowsInBraille) {
+    const auto wrapped = import_as("It was the best  \n  of times,\nit was\tthe worst.\n\nThe end.\n", "book.txt");
+    const auto joined = import_as("It was the best of times, it was\tthe worst.\n\nThe end.\n", "book.txt");
+    EXPECT_EQ(text_of(pages_of(wrapped)), text_of(pages_of(joined)));
+    EXPECT_TRUE(pages_of(wrapped) == pages_of(joined));
 }
 
 // Issue 13: a page break with nothing after it was dropped on saving and

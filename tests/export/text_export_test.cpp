@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "import/import.hpp"
 
 using namespace tactus;
@@ -40,6 +42,8 @@ TEST(TextExport, ATextFileIsWrittenBackUnchanged) {
              "one *star*\ntwo # hash\nthree <b> & [a]\n",        // a line a paragraph
              "Page one.\n\f\nPage two & more.\n\nStill two.\n",  // a form feed between print pages
              "a_b_c \\ `x` | y ~~z~~\n",
+             // A hard-wrapped paragraph keeps its lines, their spaces too.
+             "It was the best of times,\n  it was the worst  \nof times.\n\nThe end.\n",
          }) {
         SCOPED_TRACE(text);
         const auto doc = import_as(text, "english.txt");
@@ -126,4 +130,33 @@ TEST(MarkdownExport, MergedCellsKeepTheirColumnsAsEmptyEntries) {
     for (const auto& b : import_as(md, "saved.md").blocks)
         if (b.kind == document::BlockKind::table_cell) columns.push_back(std::to_string(b.level) + ":" + b.text());
     EXPECT_EQ(columns, (std::vector<std::string>{"0:Bird", "1:Seen", "2:", "3:Where", "0:", "1:3", "2:1", "3:reeds"}));
+}
+
+// Property: a random text file of hard-wrapped paragraphs (lines with spaces or
+// a tab at their ends, any characters), a blank line between paragraphs, and
+// form feeds, is written back byte for byte after it was opened (issue 13
+// item 4: the lines of a paragraph were joined into one, the file changed
+// although nothing was edited).
+TEST(TextExport, RandomHardWrappedTextFilesAreWrittenBackUnchanged) {
+    static const std::vector<std::string> words{"word", "*", "_x_", "#", "&", "<b>", "[a]", "\\", "`c`", "1.", "-",
+                                                "42", "\u4eca\u5929", "a*b", "|", "**b**", "x", "Gutenberg,"};
+    static const std::vector<std::string> edges{"", "", "", "", " ", "  ", "\t"};
+    std::mt19937 rng(13);
+    const auto pick = [&rng](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+    const auto line = [&] {
+        std::string t = edges[pick(edges.size())];
+        for (auto n = 1 + pick(6); n > 0; --n) t += words[pick(words.size())] + (n > 1 ? " " : "");
+        return t + edges[pick(edges.size())];
+    };
+    for (int round = 0; round < 300; ++round) {
+        std::string text;
+        const auto paragraphs = 2 + pick(5);
+        for (std::size_t p = 0; p < paragraphs; ++p) {
+            if (p > 0) text += pick(5) == 0 ? "\f\n" : "\n";
+            for (auto n = 1 + pick(4); n > 0; --n) text += line() + "\n";
+        }
+        SCOPED_TRACE(text);
+        const auto doc = import_as(text, "book.txt");
+        ASSERT_EQ(exporter::to_text(doc), text);
+    }
 }

@@ -10,11 +10,13 @@ namespace {
 
 const auto P = document::BlockKind::paragraph;
 
-TEST(TextImport, ParagraphsJoinWrappedLinesAndFormFeedIsPrintPageBreak) {
+// A hard-wrapped paragraph keeps its lines, a soft line break between them
+// (document/soft_break.hpp: braille reads it as a space).
+TEST(TextImport, ParagraphsKeepWrappedLinesAndFormFeedIsPrintPageBreak) {
     const auto doc = import_data_file("utf8.txt");
     const std::vector<document::Block> expected = {
         text_block(P, 0, {{"Braille Lesson"}}, 1),
-        text_block(P, 0, {{"Braille is read by touch. Each cell has six dots."}}, 3),
+        text_block(P, 0, {{"Braille is read by touch.\nEach cell has six dots."}}, 3),
         text_block(P, 0, {{"盲文是一种触摸阅读的文字。"}}, 6),
         page_break("2", 7),
         text_block(P, 0, {{"Page two starts here."}}, 7),
@@ -32,7 +34,7 @@ TEST(TextImport, CrLfAndLoneCrEndLinesLikeLf) {
     EXPECT_EQ(lf->blocks, crlf->blocks);
     EXPECT_EQ(lf->blocks, cr->blocks);
     ASSERT_EQ(lf->blocks.size(), 2u);
-    EXPECT_EQ(lf->blocks[0].text(), "a b");
+    EXPECT_EQ(lf->blocks[0].text(), "a\nb");
     EXPECT_EQ(lf->blocks[1].source_line, 4);
 }
 
