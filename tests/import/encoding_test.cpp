@@ -6,6 +6,8 @@
 namespace tactus::test {
 namespace {
 
+// A paragraph keeps the file's line breaks (a hard-wrapped text is written
+// back as it was; braille reflows it: document/soft_break.hpp).
 std::vector<std::string> texts(const document::Document& doc) {
     std::vector<std::string> out;
     for (const auto& b : doc.blocks) out.push_back(b.kind == document::BlockKind::paragraph ? b.text() : "<break>");
@@ -16,8 +18,8 @@ TEST(Encoding, Big5IsDetectedAndConverted) {
     const auto doc = import_data_file("big5.txt");
     EXPECT_EQ(doc.encoding, "BIG5");
     const std::vector<std::string> expected = {
-        "盲人點字是一種讓視障者用手指觸摸閱讀的文字系統。 每個點字方格由六個點組成，排成兩行三列。",
-        "老師每天準備教材，學生們在課堂上認真學習。 今天的天氣很好，我們一起去公園散步吧。"};
+        "盲人點字是一種讓視障者用手指觸摸閱讀的文字系統。\n每個點字方格由六個點組成，排成兩行三列。",
+        "老師每天準備教材，學生們在課堂上認真學習。\n今天的天氣很好，我們一起去公園散步吧。"};
     EXPECT_EQ(texts(doc), expected);
 }
 
@@ -25,8 +27,8 @@ TEST(Encoding, Gb18030IsDetectedAndConverted) {
     const auto doc = import_data_file("gb18030.txt");
     EXPECT_EQ(doc.encoding, "GB18030");
     const std::vector<std::string> expected = {
-        "盲文是一种让视障人士用手指触摸阅读的文字系统。 每个盲文方格由六个点组成，排成两列三行。",
-        "老师每天准备教材，学生们在课堂上认真学习。 今天的天气很好，我们一起去公园散步吧。"};
+        "盲文是一种让视障人士用手指触摸阅读的文字系统。\n每个盲文方格由六个点组成，排成两列三行。",
+        "老师每天准备教材，学生们在课堂上认真学习。\n今天的天气很好，我们一起去公园散步吧。"};
     EXPECT_EQ(texts(doc), expected);
 }
 
@@ -34,7 +36,7 @@ TEST(Encoding, Windows1252IsDetectedWithCurlyQuotesAndEuro) {
     const auto doc = import_data_file("windows1252.txt");
     EXPECT_EQ(doc.encoding, "WINDOWS-1252");
     const std::vector<std::string> expected = {
-        "“Café crème” costs 5 € – naïve señor. Le café est très bon.",
+        "“Café crème” costs 5 € – naïve señor.\nLe café est très bon.",
         "Müller a mangé à la gare."};
     EXPECT_EQ(texts(doc), expected);
 }
