@@ -96,12 +96,14 @@ double now_seconds() {
 Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options) {
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
+    auto not_there_yet = [&] {
+        return fail("no spool database here yet: nothing has been queued on this machine. Queue a "
+                    "document with `tactus-cli emboss --queue --device DEVICE FILE` (it sets up a printer "
+                    "for DEVICE), or add one first with `tactus-cli queue printer add NAME --device DEVICE`",
+                    path.string());
+    };
     if (!exists) {
-        if (!options.create)
-            return fail("no spool database here yet: nothing has been queued on this machine. Queue a "
-                        "document with `tactus-cli emboss --queue --device DEVICE FILE` (it sets up a printer "
-                        "for DEVICE), or add one first with `tactus-cli queue printer add NAME --device DEVICE`",
-                        path.string());
+        if (!options.create) return not_there_yet();
         if (path.has_parent_path()) {
             std::filesystem::create_directories(path.parent_path(), ec);
             if (ec)
@@ -148,6 +150,11 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     }
 
     if (empty && user_version == 0) {
+        // An empty file is a spool another process is creating right now
+        // (SQLite makes the file before the schema): one that may not create
+        // leaves it to its creator. Writing the schema here raced the creator:
+        // root polling the CUPS backend's new spool made it read-only for lp.
+        if (!options.create) return not_there_yet();
         if (read_only) return fail("the spool database is empty and read-only", path.string());
         SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
         auto tx = sql::Transaction::begin(db);
@@ -731,6 +738,10 @@ Result<std::int64_t> Spool::data_version() {
 Diagnosis diagnose(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return {SpoolHealth::missing, Error{"no spool database here", path.string()}};
+    // An empty file is a spool its creator has not written yet (Spool::open
+    // leaves it alone unless it may create): not there yet, never foreign.
+    if (std::filesystem::file_size(path, ec) == 0 && !ec)
+        return {SpoolHealth::missing, Error{"the spool database is empty: nothing has been queued yet", path.string()}};
     auto s = Spool::open(path, {.create = false, .read_only_ok = true, .busy_timeout_ms = 2000});
     if (s) {
         if (auto c = s->check(); !c) return {SpoolHealth::damaged, c.error()};

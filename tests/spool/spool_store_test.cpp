@@ -68,6 +68,28 @@ TEST(SpoolStore, CreatesItsFolderAndKeepsJobsAcrossReopen) {
     EXPECT_EQ(events->front().kind, "submitted");
 }
 
+// The CUPS backend (user lp) creates the shared spool; SQLite makes the empty
+// file before the schema. A reader that may not create (a root `queue list`,
+// the CUPS test rig polling) used to write the schema into that empty file
+// itself, racing its creator: CupsIppE2E saw the backend fail with "attempt
+// to write a readonly database". Now such a reader finds nothing there yet and
+// writes nothing; the creator then opens it as usual, and diagnose calls it
+// missing, never foreign (recover would have moved it aside).
+TEST(SpoolStore, AReaderLeavesAnEmptySpoolFileToItsCreator) {
+    TempDir dir;
+    const auto db = dir / "spool.db";
+    std::ofstream(db).flush();  // the file as sqlite3_open leaves it, before the schema
+    const auto s = Spool::open(db, {.create = false});
+    ASSERT_FALSE(s);
+    EXPECT_NE(s.error().message.find("no spool database here yet"), std::string::npos) << s.error().to_string();
+    EXPECT_EQ(std::filesystem::file_size(db), 0U) << "the reader wrote into the creator's file";
+    EXPECT_FALSE(std::filesystem::exists(dir / "spool.db-wal"));
+    EXPECT_EQ(diagnose(db).health, SpoolHealth::missing);
+    auto created = Spool::open(db);
+    ASSERT_TRUE(created) << created.error().to_string();
+    EXPECT_TRUE(created->add_printer("lab", "pty:/dev/null", kProfile));
+}
+
 TEST(SpoolStore, ProfileSnapshotIsTakenAtSubmission) {
     TempDir dir;
     Spool s = open_with_printer(dir / "spool.db");
