@@ -164,6 +164,7 @@ private:
     void interrupt_op(double now);
     void stop_job(std::uint8_t fault_bits, double now);
     void boot(double now, bool keep_ram);
+    void power_on_ram();
     void maybe_report_space();
     void set_waiting(bool waiting, double now);
     [[nodiscard]] double ticks_to_s(std::uint64_t ticks) const;

@@ -75,23 +75,7 @@ void SimController::v3_boot(double now, bool keep_ram) {
         faults_ |= fault::warm_reset;
         state_ = job_active_ ? ControllerState::fault : ControllerState::idle;
     } else {
-        config_ = {};
-        configured_ = false;
-        cfg_travel_ = cfg_home_iv_ = cfg_hammer_ = cfg_settle_ = 0;
-        state_ = ControllerState::idle;
-        faults_ = fault::power_on_reset;
-        job_id_ = 0;
-        job_active_ = false;
-        job_ended_ = false;
-        sheet_ = 0;
-        pass_index_ = 0;
-        pass_active_ = false;
-        skip_ = 0;
-        executed_passes_ = 0;
-        strikes_in_pass_ = 0;
-        carriage_ = 0;
-        feed_ = 0;
-        underruns_ = 0;
+        power_on_ram();
     }
     free_reported_ = v3_ring_free();
 }
