@@ -29,6 +29,19 @@ inline motion::StepMove make_move(std::int32_t steps) {
 }
 
 // `sheets` sheets of `passes` dot rows, up to `strikes` dots per row.
+// A strike at `carriage_step` on the line at `y_mm`, a random hammer (one in
+// three concave) on its side, struck at `time_s`.
+inline plan::Strike random_strike(std::mt19937& rng, std::int32_t carriage_step, double y_mm, double time_s) {
+    plan::Strike k;
+    k.hammer = rng() % 3 == 0 ? plan::Hammer::concave : plan::Hammer::convex;
+    k.side = k.hammer == plan::Hammer::convex ? plan::Side::front : plan::Side::back;
+    k.carriage_step = carriage_step;
+    k.x_mm = carriage_step / 80.0;
+    k.y_mm = y_mm;
+    k.time_s = time_s;
+    return k;
+}
+
 inline plan::JobPlan make_plan(std::size_t sheets, std::size_t passes, std::size_t strikes,
                                unsigned seed = 1) {
     std::mt19937 rng(seed);
@@ -56,15 +69,8 @@ inline plan::JobPlan make_plan(std::size_t sheets, std::size_t passes, std::size
                     pass.direction > 0 ? col : 800 + static_cast<std::int32_t>(n - 1 - i) * 200;
                 pass.moves.push_back(make_move(target - carriage));
                 carriage = target;
-                plan::Strike k;
-                k.hammer = rng() % 3 == 0 ? plan::Hammer::concave : plan::Hammer::convex;
-                k.side = k.hammer == plan::Hammer::convex ? plan::Side::front : plan::Side::back;
-                k.carriage_step = target;
-                k.x_mm = target / 80.0;
-                k.y_mm = pass.y_mm;
                 t += pass.moves.back().duration_s + 0.002;
-                k.time_s = t;
-                pass.strikes.push_back(k);
+                pass.strikes.push_back(random_strike(rng, target, pass.y_mm, t));
                 ++job.strikes;
             }
             sheet.passes.push_back(std::move(pass));
@@ -123,17 +129,10 @@ inline plan::JobPlan make_firmware_plan(const machine::FirmwareTables& t, const 
             for (std::size_t i = 0; i < n; ++i) {
                 const std::int32_t units = i == 0 ? (start - carriage) / grid : pass.direction * gaps[i];
                 pass.moves.push_back(carriage_move(units));
-                plan::Strike k;
-                k.hammer = rng() % 3 == 0 ? plan::Hammer::concave : plan::Hammer::convex;
-                k.side = k.hammer == plan::Hammer::convex ? plan::Side::front : plan::Side::back;
-                k.carriage_step = carriage;
-                k.x_mm = carriage / 80.0;
-                k.y_mm = pass.y_mm;
                 time += static_cast<double>(t.carriage.move_ticks(static_cast<std::uint32_t>(
                             std::abs(pass.moves.back().steps))) + timing.settle_ticks + timing.hammer_ticks) /
                         machine::kTickHz;
-                k.time_s = time;
-                pass.strikes.push_back(k);
+                pass.strikes.push_back(random_strike(rng, carriage, pass.y_mm, time));
                 ++job.strikes;
             }
             sheet.passes.push_back(std::move(pass));
