@@ -6,6 +6,7 @@
 
 #include "edit/editor_lines.hpp"
 #include "import/import.hpp"
+#include "import/text_lines.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -33,8 +34,27 @@ LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, c
     return result;
 }
 
+// A text file is shown as its own lines, byte for byte (a hard-wrapped
+// paragraph's lines, blank lines with their spaces, form feeds where they
+// are), and saved with its line end.
+LoadResultPtr load_text(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
+                        const std::function<bool(int)>& progress) {
+    auto text = import::read_text_file(path.toStdString());
+    if (!text) {
+        auto r = std::make_shared<LoadResult>();
+        r->error = text.error();
+        r->path = path;
+        return r;
+    }
+    auto r = build(import::split_text_lines(*text), tables, options, edit::Dialect::text, progress);
+    if (r->layout) r->layout->set_line_ending(import::line_ending_of(*text));
+    r->path = path;
+    return r;
+}
+
 LoadResultPtr load(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
                    const std::function<bool(int)>& progress) {
+    if (edit::dialect_for(path.toStdString()) == edit::Dialect::text) return load_text(path, tables, options, progress);
     auto doc = import::import_file(path.toStdString());
     if (!doc) {
         auto r = std::make_shared<LoadResult>();
@@ -47,9 +67,8 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
         r->cancelled = true;
         return r;
     }
-    // A text file is shown as its text; anything else in the Markdown dialect.
-    const auto dialect = edit::dialect_for(path.toStdString());
-    auto r = build(edit::render_editor_lines(*doc, dialect), tables, options, dialect, progress);
+    auto r = build(edit::render_editor_lines(*doc, edit::Dialect::markdown), tables, options, edit::Dialect::markdown,
+                   progress);
     r->path = path;
     return r;
 }

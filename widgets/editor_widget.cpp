@@ -148,6 +148,7 @@ void EditorWidget::adopt(edit::LiveLayout layout) {
 }
 
 void EditorWidget::swap_layout(edit::LiveLayout layout) {
+    if (layout_) layout.set_line_ending(layout_->line_ending());  // the same file
     layout_ = std::move(layout);
     refresh_braille();
 }
@@ -196,6 +197,16 @@ void EditorWidget::on_contents_change(int position, int removed, int added) {
     last_stats_ = layout_->replace(static_cast<std::size_t>(first), static_cast<std::size_t>(std::max(0, old_count)),
                                    std::move(lines));
     replace_braille_blocks(first, std::max(0, old_count), count);
+    // Lines around the edit whose braille changed with it: the other lines of
+    // a hard-wrapped text paragraph (brailled as one), a table's header row.
+    const bool was = syncing_;
+    syncing_ = true;
+    for (auto i = last_stats_.braille_first; i < last_stats_.braille_end && i < layout_->line_count(); ++i) {
+        if (i >= static_cast<std::size_t>(first) && i < static_cast<std::size_t>(first + count)) continue;
+        const auto block = braille_->document()->findBlockByNumber(static_cast<int>(i));
+        if (block.isValid()) replace_changed_cells(block, braille_text(i));
+    }
+    syncing_ = was;
     Q_EMIT layout_changed();
 }
 

@@ -527,7 +527,8 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
     const auto& layout = editor_->layout();
-    return QByteArray::fromStdString(edit::file_text(lines, layout.dialect(), layout.document(), file_name.toStdString()));
+    return QByteArray::fromStdString(
+        edit::file_text(lines, layout.dialect(), layout.document(), file_name.toStdString(), layout.line_ending()));
 }
 
 bool MainWindow::save_to(const QString& path) {

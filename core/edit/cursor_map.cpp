@@ -62,4 +62,37 @@ std::size_t braille_to_print(const document::BrailleLine& cells, std::size_t cel
     return map(bw, cells.size(), cell, pw, content.size());
 }
 
+std::vector<std::pair<std::size_t, std::size_t>> braille_of_lines(std::span<const std::u32string> lines,
+                                                                  const document::BrailleLine& cells) {
+    const auto bw = words_of(cells, [](document::Cell c) { return c.blank(); });
+    std::vector<std::size_t> counts;
+    std::size_t words = 0, length = 0;
+    for (const auto& l : lines) {
+        counts.push_back(words_of(l, space).size());
+        words += counts.back();
+        length += l.size();
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    if (words == bw.size() && words > 0) {
+        std::size_t w = 0;
+        for (const auto n : counts) {
+            if (n == 0) {
+                const auto at = w < bw.size() ? bw[w].start : cells.size();
+                out.emplace_back(at, at);
+                continue;
+            }
+            out.emplace_back(bw[w].start, bw[w + n - 1].start + bw[w + n - 1].length);
+            w += n;
+        }
+        return out;
+    }
+    std::size_t seen = 0;
+    for (const auto& l : lines) {
+        const auto begin = length ? seen * cells.size() / length : 0;
+        seen += l.size();
+        out.emplace_back(begin, length ? seen * cells.size() / length : cells.size());
+    }
+    return out;
+}
+
 }  // namespace tactus::edit

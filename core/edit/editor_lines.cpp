@@ -8,6 +8,7 @@
 #include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
+#include "import/text_lines.hpp"
 
 namespace tactus::edit {
 namespace {
@@ -311,18 +312,9 @@ std::string render_editor_line(const document::Block& b, Dialect dialect) {
 
 std::vector<std::string> render_editor_lines(const document::Document& document, Dialect dialect) {
     if (dialect == Dialect::markdown) return exporter::markdown_lines(document);
-    std::vector<std::string> lines;
-    // A hard-wrapped paragraph is one line, as it is brailled.
-    for (auto& l : exporter::text_lines(document, exporter::SoftBreaks::as_spaces)) {
-        // A braille block is several lines.
-        for (std::size_t from = 0;;) {
-            const auto nl = l.find('\n', from);
-            lines.push_back(l.substr(from, nl == std::string::npos ? nl : nl - from));
-            if (nl == std::string::npos) break;
-            from = nl + 1;
-        }
-    }
-    return lines;
+    // The lines of the file core's text writer writes: a hard-wrapped
+    // paragraph is its lines, as the author wrote them.
+    return import::split_text_lines(exporter::to_text(document));
 }
 
 namespace {
@@ -351,8 +343,17 @@ bool risky_start(std::string_view line, document::BlockKind kind) {
 }  // namespace
 
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
-                      std::string_view file_name) {
-    if (dialect_for(file_name) == Dialect::text) return exporter::to_text(blocks);
+                      std::string_view file_name, std::string_view line_ending) {
+    if (dialect_for(file_name) == Dialect::text) {
+        if (dialect == Dialect::markdown) return exporter::to_text(blocks);
+        // A text file's lines are the editor's: written as they are.
+        std::string out;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (i) out += line_ending;
+            out += lines[i];
+        }
+        return out;
+    }
     if (dialect == Dialect::markdown) {
         // A line that stands for no block is not written: in a file it could
         // mean something (an unclosed "<!--" would swallow the rest).

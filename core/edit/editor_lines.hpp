@@ -7,8 +7,11 @@
 //   delimiter row "|---|---|" under it makes it the header row), a paragraph
 //   with *italic* and **bold**; the lines are core's Markdown writer's
 //   (export/text_export.hpp), which core's importer reads again.
-// - Text (a .txt): each line is a paragraph, its text as the author wrote it,
-//   with no escapes and no marks; a line holding a form feed is a print page break.
+// - Text (a .txt): the file's own lines, as the author wrote them, with no
+//   escapes and no marks; blank lines separate paragraphs, whose lines run on
+//   (a hard-wrapped paragraph, brailled as one), or each line is a paragraph
+//   when no blank line separates any two (import/text_lines.hpp, the
+//   importer's rules); a form feed is a print page break.
 // In both, a line of Unicode braille cells is braille kept verbatim.
 #include <optional>
 #include <span>
@@ -37,7 +40,9 @@ std::vector<document::Block> parse_table_cells(std::string_view utf8);
 bool is_table_delimiter(std::string_view utf8);
 
 // The editor's lines for a document, so that parse_editor_line gives its blocks
-// back: Markdown through core's Markdown writer, text through its text writer.
+// back: Markdown through core's Markdown writer, text the lines of the file
+// core's text writer writes (a text file opened is shown as its own lines,
+// import/text_lines.hpp split_text_lines).
 std::vector<std::string> render_editor_lines(const document::Document& document,
                                              Dialect dialect = Dialect::markdown);
 std::string render_editor_line(const document::Block& block, Dialect dialect = Dialect::markdown);
@@ -46,10 +51,11 @@ std::string render_editor_line(const document::Block& block, Dialect dialect = D
 // its name's extension: .txt and .text are plain text, anything else Markdown).
 // `blocks` are the lines' blocks with their print pages numbered
 // (LiveLayout::document()); when the lines are in the file's own dialect they
-// are written as they are (made whole, for a Markdown table), else the blocks
-// are written by core's writer for that format.
+// are written as they are (made whole, for a Markdown table; a text file's
+// lines byte for byte, joined with `line_ending`), else the blocks are written
+// by core's writer for that format.
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
-                      std::string_view file_name);
+                      std::string_view file_name, std::string_view line_ending = "\n");
 
 // The text a reader sees: without the heading marks, bullet and emphasis marks.
 // Used to map the cursor between print and braille word by word.

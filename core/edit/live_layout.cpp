@@ -5,7 +5,9 @@
 
 #include "common/utf8.hpp"
 #include "document/print_page.hpp"
+#include "edit/cursor_map.hpp"
 #include "edit/editor_lines.hpp"
+#include "import/text_lines.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/paginator.hpp"
 
@@ -24,6 +26,20 @@ document::BrailleLine cells_of_unicode(const std::string& utf8) {
 bool starts_table_line(std::string_view line) {
     const auto t = line.find_first_not_of(" \t");
     return t != std::string_view::npos && line[t] == '|';
+}
+
+// A line of Unicode braille cells (with spaces around it) is verbatim braille in both dialects.
+bool braille_text_line(std::string_view line) {
+    const auto from = line.find_first_not_of(" \t");
+    if (from == std::string_view::npos) return false;
+    return is_braille_line(line.substr(from, line.find_last_not_of(" \t") + 1 - from));
+}
+
+// A text line's pieces between form feeds: the first continues a paragraph, the last may start one.
+std::string_view first_piece(std::string_view line) { return line.substr(0, line.find('\f')); }
+std::string_view last_piece(std::string_view line) {
+    const auto ff = line.rfind('\f');
+    return ff == std::string_view::npos ? line : line.substr(ff + 1);
 }
 
 }  // namespace
@@ -46,6 +62,10 @@ document::BrailleLine LiveLayout::number_cells(int n) {
 
 void LiveLayout::translate_entry(std::size_t i) {
     auto& e = entries_[i];
+    if (dialect_ == Dialect::text && !braille_text_line(e.line)) {
+        translate_text_entry(i);
+        return;
+    }
     e.block = parse_editor_line(e.line, dialect_);
     e.error.reset();
     e.translated = translate::TranslatedBlock{};
@@ -115,10 +135,148 @@ void LiveLayout::translate_entry(std::size_t i) {
         e.translated.lines = layout::break_lines(e.translated.lines.front(), width, 0, 0);
 }
 
+// ---- the text dialect (import/text_lines.hpp, the rules text_import.cpp reads a file by) ----
+
+bool LiveLayout::find_paragraph_breaks() const {
+    import::ParagraphBreaks breaks;
+    for (const auto& e : entries_)
+        if (breaks.line(e.line)) return true;
+    return false;
+}
+
+bool LiveLayout::continues(std::size_t i) const {
+    if (dialect_ != Dialect::text || !runs_on_ || i == 0 || i >= entries_.size()) return false;
+    const auto& line = entries_[i].line;
+    const auto& above = entries_[i - 1].line;
+    return !import::is_blank_text_line(first_piece(line)) && !import::is_blank_text_line(last_piece(above)) &&
+           !braille_text_line(line) && !braille_text_line(above);
+}
+
+std::size_t LiveLayout::paragraph_head(std::size_t i) const {
+    while (continues(i)) --i;
+    return i;
+}
+
+std::vector<std::string_view> LiveLayout::paragraph_lines(std::size_t head) const {
+    std::vector<std::string_view> lines{last_piece(entries_[head].line)};
+    // A line ending in a form feed ends its paragraph there.
+    for (std::size_t j = head + 1; j < entries_.size() && continues(j); ++j) {
+        lines.push_back(first_piece(entries_[j].line));
+        if (entries_[j].line.find('\f') != std::string::npos) break;
+    }
+    return lines;
+}
+
+std::string LiveLayout::page_before(std::size_t i, std::span<const document::Block> earlier, bool& started) const {
+    started = false;
+    const auto scan = [&started](const document::Block& b) -> std::optional<std::string> {
+        if (b.kind == document::BlockKind::print_page_break) {
+            started = true;
+            return b.label;
+        }
+        if (b.kind != document::BlockKind::braille_page_break) started = true;
+        return std::nullopt;
+    };
+    for (auto b = earlier.rbegin(); b != earlier.rend(); ++b)
+        if (auto label = scan(*b)) return *label;
+    for (std::size_t j = i; j-- > 0;) {
+        const auto& e = entries_[j];
+        if (!e.block) continue;
+        if (dialect_ == Dialect::text)
+            for (auto c = e.cells.rbegin(); c != e.cells.rend(); ++c)
+                if (auto label = scan(*c)) return *label;
+        if (auto label = scan(*e.block)) return *label;
+    }
+    return std::string(document::first_print_page);
+}
+
+void LiveLayout::translate_text_entry(std::size_t i) {
+    auto& e = entries_[i];
+    e.block.reset();
+    e.error.reset();
+    e.translated = translate::TranslatedBlock{};
+    e.cells.clear();
+    e.translated_cells.clear();
+    // The blocks the line starts, as the importer reads them (TextReader):
+    // a form feed ends the paragraph and starts a print page; a piece of text
+    // starts a paragraph unless it continues the one above.
+    std::vector<document::Block> blocks;
+    std::string_view rest = e.line;
+    for (bool first = true;; first = false) {
+        const auto ff = rest.find('\f');
+        const auto piece = rest.substr(0, ff);
+        if (!import::is_blank_text_line(piece) && !(first && continues(i))) {
+            document::Block p;
+            if (ff == std::string_view::npos) {
+                // The lines that continue it, a soft line break apart (document/soft_break.hpp).
+                std::string text;
+                for (const auto line : paragraph_lines(i)) {
+                    if (line.data() != piece.data()) text += '\n';
+                    text += line;
+                }
+                p.spans.push_back(document::Span{std::move(text)});
+            } else {
+                p.spans.push_back(document::Span{std::string(piece)});
+            }
+            blocks.push_back(std::move(p));
+        }
+        if (ff == std::string_view::npos) break;
+        document::Block b;
+        b.kind = document::BlockKind::print_page_break;
+        blocks.push_back(std::move(b));
+        rest.remove_prefix(ff + 1);
+    }
+    // Page breaks numbered by the importers' rule (document/print_page.hpp);
+    // one before any text starts no page and is no block, as the importer drops it.
+    std::vector<document::Block> kept;
+    for (auto& b : blocks) {
+        if (b.kind == document::BlockKind::print_page_break) {
+            bool started = false;
+            const auto current = page_before(i, kept, started);
+            if (!started) continue;
+            b.label = document::next_print_page(current);
+        }
+        kept.push_back(std::move(b));
+    }
+    if (kept.empty()) return;
+    std::vector<translate::TranslatedBlock> translated;
+    for (const auto& b : kept) {
+        auto tb = translate::translate_block(b, translator_, layout::word_room(options_, b.kind, b.level));
+        if (!tb) {
+            e.error = located(tb.error(), "line " + std::to_string(i + 1));
+            e.block = kept.front();
+            return;
+        }
+        translated.push_back(std::move(*tb));
+    }
+    e.block = std::move(kept.front());
+    e.translated = std::move(translated.front());
+    for (std::size_t k = 1; k < kept.size(); ++k) {
+        e.cells.push_back(std::move(kept[k]));
+        e.translated_cells.push_back(std::move(translated[k]));
+    }
+}
+
+const translate::TranslatedBlock* LiveLayout::last_translated(std::size_t head) const {
+    const auto& e = entries_[head];
+    if (!e.block || e.error) return nullptr;
+    return e.translated_cells.empty() ? &e.translated : &e.translated_cells.back();
+}
+
+std::pair<std::size_t, std::size_t> LiveLayout::part_of(std::size_t head, std::size_t i) const {
+    const auto* tb = last_translated(head);
+    if (!tb || !document::is_text_kind(tb->kind)) return {0, 0};
+    std::vector<std::u32string> lines;
+    for (const auto line : paragraph_lines(head)) lines.push_back(utf8_to_utf32(line).value_or(std::u32string{}));
+    const auto parts = braille_of_lines(lines, tb->cells);
+    return i - head < parts.size() ? parts[i - head] : std::pair<std::size_t, std::size_t>{tb->cells.size(), tb->cells.size()};
+}
+
 bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress) {
     entries_.clear();
     entries_.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i) entries_[i].line = std::move(lines[i]);
+    runs_on_ = dialect_ == Dialect::text && find_paragraph_breaks();
     for (std::size_t i = 0; i < entries_.size(); ++i) {
         translate_entry(i);
         if (progress && i % 256 == 0 && progress(i, entries_.size())) return false;
@@ -135,13 +293,15 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     removed = std::min(removed, entries_.size() - first);
     const auto at = entries_.begin() + static_cast<std::ptrdiff_t>(first);
     const bool removed_breaks = std::any_of(at, at + static_cast<std::ptrdiff_t>(removed), [](const Entry& e) {
-        return e.block && e.block->kind == document::BlockKind::print_page_break;
+        return (e.block && e.block->kind == document::BlockKind::print_page_break) ||
+               e.line.find('\f') != std::string::npos;  // a text line's form feed
     });
     entries_.erase(at, at + static_cast<std::ptrdiff_t>(removed));
     std::vector<Entry> fresh(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i) fresh[i].line = std::move(lines[i]);
     entries_.insert(entries_.begin() + static_cast<std::ptrdiff_t>(first),
                     std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
+    if (dialect_ == Dialect::text) return replace_text(first, fresh.size(), removed_breaks);
     RelayoutStats stats;
     // Page breaks change the print page of every page after them: no early stop then.
     bool breaks_touched = removed_breaks;
@@ -179,12 +339,74 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     }
     auto layout = relayout_from(first, breaks_touched ? npos : first + count);
     layout.lines_translated = stats.lines_translated;
+    layout.braille_first = first;
+    layout.braille_end = first + count;
+    return layout;
+}
+
+RelayoutStats LiveLayout::replace_text(std::size_t first, std::size_t count, bool breaks_touched) {
+    RelayoutStats stats;
+    if (const bool runs_on = find_paragraph_breaks(); runs_on != runs_on_) {
+        // A first blank line between paragraphs (or the last one gone): every line reads anew.
+        runs_on_ = runs_on;
+        for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
+        paged_ = {};
+        stats = relayout_from(0);
+        stats.lines_translated = entries_.size();
+        stats.braille_end = entries_.size();
+        return stats;
+    }
+    // The paragraph open above the edit may have run into it (or now does):
+    // from its first line; and to the end of the paragraph the edit ends in,
+    // with the line after it, which may have started a paragraph or continued one.
+    const auto open_above = [this](std::size_t j) {
+        const auto& line = entries_[j].line;
+        if (!runs_on_ || braille_text_line(line) || import::is_blank_text_line(last_piece(line))) return j + 1;
+        return line.find('\f') != std::string::npos ? j : paragraph_head(j);
+    };
+    const std::size_t from = first > 0 ? std::min(first, open_above(first - 1)) : first;
+    std::size_t to = first + count;
+    while (to < entries_.size() && continues(to)) ++to;
+    if (runs_on_ && to < entries_.size() && !import::is_blank_text_line(first_piece(entries_[to].line))) ++to;
+    stats.braille_first = from;
+    stats.braille_end = to;
+    while (stats.braille_end < entries_.size() && continues(stats.braille_end)) ++stats.braille_end;
+    bool text_before = false;
+    for (std::size_t i = from; i-- > 0 && !text_before;) text_before = entries_[i].block.has_value();
+    for (std::size_t i = from; i < to; ++i) {
+        translate_entry(i);
+        ++stats.lines_translated;
+        breaks_touched = breaks_touched || entries_[i].line.find('\f') != std::string::npos;
+    }
+    // Changed page breaks (or the first text) number the form feeds after them anew.
+    if (breaks_touched || !text_before) {
+        const auto labels = [](const Entry& e) {
+            std::vector<std::string> out;
+            if (e.block) out.push_back(e.block->label);
+            for (const auto& c : e.cells) out.push_back(c.label);
+            return out;
+        };
+        for (std::size_t i = to; i < entries_.size(); ++i) {
+            if (entries_[i].line.find('\f') == std::string::npos) continue;
+            const auto before = labels(entries_[i]);
+            translate_entry(i);
+            ++stats.lines_translated;
+            if (labels(entries_[i]) == before) continue;
+            breaks_touched = true;
+            stats.braille_end = std::max(stats.braille_end, i + 1);
+        }
+    }
+    auto layout = relayout_from(from, breaks_touched ? npos : to);
+    layout.lines_translated = stats.lines_translated;
+    layout.braille_first = stats.braille_first;
+    layout.braille_end = stats.braille_end;
     return layout;
 }
 
 void LiveLayout::set_dialect(Dialect dialect) {
     if (dialect == dialect_) return;
     dialect_ = dialect;
+    runs_on_ = dialect_ == Dialect::text && find_paragraph_breaks();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};
     relayout_from(0);
@@ -201,7 +423,7 @@ document::Document LiveLayout::document() const {
     for (std::size_t i = 0; i < entries_.size();) {
         std::size_t end = i + 1;
         std::size_t width = 0;
-        if (starts_table_line(entries_[i].line)) {
+        if (dialect_ == Dialect::markdown && starts_table_line(entries_[i].line)) {
             end = i;
             for (; end < entries_.size() && starts_table_line(entries_[end].line); ++end)
                 width = std::max(width, entries_[end].cells.size());
@@ -212,6 +434,14 @@ document::Document LiveLayout::document() const {
             const int line = static_cast<int>(i + 1);
             doc.blocks.push_back(*e.block);
             doc.blocks.back().source_line = line;
+            if (dialect_ == Dialect::text) {
+                // The further blocks a text line starts (after a form feed inside it).
+                for (const auto& b : e.cells) {
+                    doc.blocks.push_back(b);
+                    doc.blocks.back().source_line = line;
+                }
+                continue;
+            }
             if (e.block->kind != document::BlockKind::table_row) continue;
             for (const auto& cell : e.cells) {
                 doc.blocks.push_back(cell);
@@ -366,6 +596,32 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
 
 document::BrailleLine LiveLayout::braille_of(std::size_t i) const {
     const auto& e = entries_[i];
+    if (dialect_ == Dialect::text && !braille_text_line(e.line)) {
+        // A text line shows its own part of its paragraph's braille (a
+        // hard-wrapped paragraph is brailled as one), then the page numbers
+        // and paragraphs it starts.
+        document::BrailleLine out;
+        const auto add = [&out](auto begin, auto end) {
+            if (begin == end) return;
+            if (!out.empty()) out.push_back(document::Cell{});
+            out.insert(out.end(), begin, end);
+        };
+        const auto add_part = [&](std::size_t head) {
+            const auto* tb = last_translated(head);
+            const auto [b, en] = part_of(head, i);
+            if (tb) add(tb->cells.begin() + static_cast<std::ptrdiff_t>(b), tb->cells.begin() + static_cast<std::ptrdiff_t>(en));
+        };
+        if (continues(i)) add_part(paragraph_head(i));
+        if (!e.block || e.error) return out;
+        const auto count = 1 + e.translated_cells.size();
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto& tb = k == 0 ? e.translated : e.translated_cells[k - 1];
+            if (tb.kind == document::BlockKind::print_page_break) add(tb.label.begin(), tb.label.end());
+            else if (k + 1 == count) add_part(i);
+            else add(tb.cells.begin(), tb.cells.end());
+        }
+        return out;
+    }
     if (!e.block || e.error) return {};
     switch (e.translated.kind) {
         case document::BlockKind::braille: {
@@ -400,6 +656,11 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
     PagePosition pos;
     if (entries_.empty()) return pos;
     i = std::min(i, entries_.size() - 1);
+    if (continues(i)) {
+        // A line of a hard-wrapped paragraph: its cells are on in the paragraph's braille.
+        const auto head = paragraph_head(i);
+        return position_of(head, entries_[head].cells.empty() ? part_of(head, i).first + cell : 0);
+    }
     const auto& e = entries_[i];
     pos.page = e.pages_before;
     int line = static_cast<int>(e.lines_before);
@@ -500,9 +761,14 @@ std::string LiveLayout::back_translate(const document::BrailleLine& cells) const
 std::optional<document::BlockKind> LiveLayout::previous_kind(std::size_t index) const {
     for (std::size_t j = index; j-- > 0;) {
         const auto& p = entries_[j];
-        if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
-            p.block->kind == document::BlockKind::braille_page_break)
-            continue;
+        if (!p.block || p.error) continue;
+        const auto laid_out = [](document::BlockKind k) {
+            return k != document::BlockKind::print_page_break && k != document::BlockKind::braille_page_break;
+        };
+        if (dialect_ == Dialect::text)  // the further blocks a text line starts, last first
+            for (auto c = p.cells.rbegin(); c != p.cells.rend(); ++c)
+                if (laid_out(c->kind)) return c->kind;
+        if (!laid_out(p.block->kind)) continue;
         return p.block->kind;
     }
     return std::nullopt;

@@ -10,7 +10,9 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "common/result.hpp"
@@ -34,6 +36,11 @@ struct RelayoutStats {
     std::size_t first_page_relaid = 0; // layout restarted at this page (a sheet front)
     std::size_t pages_relaid = 0;      // pages the paginator produced again
     bool converged = false;            // the old layout was reused after the edit
+    // Editor lines whose braille (braille_of) may have changed, [first, end):
+    // the lines translated again, with the lines of the paragraphs they are in
+    // (a hard-wrapped text paragraph is translated as one, from its first line).
+    std::size_t braille_first = 0;
+    std::size_t braille_end = 0;
 };
 
 class LiveLayout {
@@ -46,6 +53,10 @@ public:
     // The line dialect (editor_lines.hpp); a change translates every line again.
     void set_dialect(Dialect dialect);
     [[nodiscard]] Dialect dialect() const { return dialect_; }
+    // The line end a text file is saved with (import/text_lines.hpp line_ending_of;
+    // "\n" unless set): the text dialect's lines are the file's lines.
+    void set_line_ending(std::string ending) { line_ending_ = std::move(ending); }
+    [[nodiscard]] const std::string& line_ending() const { return line_ending_; }
 
     // The document the lines stand for: their blocks in order, page breaks with
     // the print page they start, a table row followed by its cells, and each
@@ -88,7 +99,9 @@ private:
         std::string line;
         std::optional<document::Block> block;
         translate::TranslatedBlock translated;
-        std::vector<document::Block> cells;  // a table row's cells
+        // A table row's cells; in the text dialect, the further blocks the
+        // line starts (a form feed inside a line starts a page and a paragraph).
+        std::vector<document::Block> cells;
         std::vector<translate::TranslatedBlock> translated_cells;
         std::optional<Error> error;
         std::size_t pages_before = 0;  // paginator state before this entry
@@ -100,10 +113,31 @@ private:
         : translator_(std::move(translator)), options_(std::move(options)) {}
 
     void translate_entry(std::size_t i);
+    // ---- the text dialect: a .txt shown as its lines (import/text_lines.hpp) ----
+    // A line's blocks: the page breaks and paragraphs it starts, each paragraph
+    // with the lines that continue it (soft line breaks between them).
+    void translate_text_entry(std::size_t i);
+    // Line i's first piece continues the paragraph above it.
+    [[nodiscard]] bool continues(std::size_t i) const;
+    // The line where the paragraph line i continues starts.
+    [[nodiscard]] std::size_t paragraph_head(std::size_t i) const;
+    // The lines of the paragraph that line `head`'s last piece starts.
+    [[nodiscard]] std::vector<std::string_view> paragraph_lines(std::size_t head) const;
+    // The last block line `head` starts and its translation: the paragraph its continuation lines belong to.
+    [[nodiscard]] const translate::TranslatedBlock* last_translated(std::size_t head) const;
+    // The part of line i's head paragraph's braille that is line i's.
+    [[nodiscard]] std::pair<std::size_t, std::size_t> part_of(std::size_t head, std::size_t i) const;
+    // True when a blank line separates two lines of text: paragraphs run on over lines.
+    [[nodiscard]] bool find_paragraph_breaks() const;
+    // The print page in effect after the lines before line i and the blocks
+    // `earlier` line i starts first; `started`: some text or page came before.
+    [[nodiscard]] std::string page_before(std::size_t i, std::span<const document::Block> earlier, bool& started) const;
     // Lays out entries from `first` on, restarting at a sheet boundary at or before it.
     // From entry `unchanged_from` on, the old layout is reused as soon as the
     // paginator reaches exactly the state it had there before (npos: never).
     RelayoutStats relayout_from(std::size_t first, std::size_t unchanged_from = npos);
+    // replace() in the text dialect: `count` new lines at `first`.
+    RelayoutStats replace_text(std::size_t first, std::size_t count, bool breaks_touched);
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);
     document::BrailleLine number_cells(int n);
     [[nodiscard]] int body_top(std::size_t page) const;
@@ -112,6 +146,8 @@ private:
     translate::Translator translator_;
     layout::LayoutOptions options_;
     Dialect dialect_ = Dialect::markdown;
+    std::string line_ending_ = "\n";
+    bool runs_on_ = false;  // text dialect: a paragraph's lines run on (find_paragraph_breaks)
     std::vector<Entry> entries_;
     // The kind of the last laid-out text block before entry `index` (page
     // breaks and lines in error skipped): what decides the paginator's blank

@@ -371,7 +371,7 @@ std::string text_line(const document::Block& b) {
     return out;
 }
 
-std::vector<std::string> text_lines(const document::Document& document, SoftBreaks soft_breaks) {
+std::vector<std::string> text_lines(const document::Document& document) {
     struct Line {
         std::string text;
         int source_line;
@@ -387,7 +387,6 @@ std::vector<std::string> text_lines(const document::Document& document, SoftBrea
         // A paragraph's soft line breaks (a braille block's lines are its rows).
         const bool paragraph = document::is_text_kind(b.kind);
         const auto breaks = paragraph ? static_cast<int>(std::ranges::count(text, '\n')) : 0;
-        if (soft_breaks == SoftBreaks::as_spaces && paragraph) text = document::soft_breaks_as_spaces(text);
         blocks.push_back(Line{std::move(text), b.source_line, b.source_line == 0 ? 0 : b.source_line + breaks, text_block});
     }
     // Paragraphs apart by a blank line somewhere: the importer then joins lines,

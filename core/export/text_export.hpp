@@ -51,18 +51,13 @@ std::string to_markdown(const document::Document& document);
 // feed, braille as its Unicode cells.
 std::string text_line(const document::Block& block);
 
-// What text_lines makes of a paragraph's soft line breaks (a hard-wrapped
-// paragraph, document/soft_break.hpp): kept, so the file is written with its
-// lines as they were, or as spaces, one paragraph a line (the editor's view).
-enum class SoftBreaks { kept, as_spaces };
-
 // The document as plain text lines: the blocks one a line (a paragraph with soft
-// line breaks is its lines, as one entry with "\n" in it, unless `as_spaces`),
+// line breaks, document/soft_break.hpp, is its lines, as one entry with "\n" in it),
 // with a blank line between two blocks whose source lines are apart (or unknown),
 // so a file opened and saved keeps its own paragraph breaks; and between every
 // two paragraphs once the text has any blank line, because then the importer
 // joins adjacent lines into one paragraph. A table's cells are one line each.
-std::vector<std::string> text_lines(const document::Document& document, SoftBreaks soft_breaks = SoftBreaks::kept);
+std::vector<std::string> text_lines(const document::Document& document);
 
 // text_lines as a file, each line ended by LF.
 std::string to_text(const document::Document& document);

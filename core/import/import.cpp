@@ -150,4 +150,12 @@ Result<document::Document> import_file(const std::filesystem::path& path, const 
     return import_bytes(*bytes, path.string(), options);
 }
 
+Result<std::string> read_text_file(const std::filesystem::path& path, const ImportOptions& options) {
+    auto bytes = read_file(path, max_import_bytes);
+    if (!bytes) return std::unexpected(bytes.error());
+    auto decoded = detail::decode_text(*bytes, options.encoding);
+    if (!decoded) return std::unexpected(located(decoded.error(), path.string()));
+    return std::string(decoded->text(*bytes));
+}
+
 }  // namespace tactus::import

@@ -29,6 +29,11 @@ Result<document::Document> import_file(const std::filesystem::path& path, const 
 Result<document::Document> import_bytes(std::string_view bytes, std::string_view name,
                               const ImportOptions& options = {});
 
+// A text file's content as UTF-8, decoded as import_file decodes it (the
+// encoding detected or given, docs/import.md "Encodings"): what the editor
+// shows of a .txt, its lines as written (import/text_lines.hpp).
+Result<std::string> read_text_file(const std::filesystem::path& path, const ImportOptions& options = {});
+
 // "txt"/"text", "md"/"markdown", "docx", "brf", "pef", "auto"/"automatic"; case-insensitive.
 Result<SourceFormat> parse_source_format(std::string_view name);
 // The canonical short name ("txt", "md", ...), for messages and the CLI.

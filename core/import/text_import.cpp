@@ -7,13 +7,10 @@
 // of its lines is a paragraph, or the whole file would become one.
 #include "import/document_builder.hpp"
 #include "import/importers.hpp"
+#include "import/text_lines.hpp"
 
 namespace tactus::import::detail {
 namespace {
-
-bool is_blank(std::string_view s) {
-    return s.find_first_not_of(" \t\v") == std::string_view::npos;
-}
 
 class TextReader {
 public:
@@ -36,7 +33,7 @@ private:
     // (the text is verbatim; braille leaves them out and reads a soft line
     // break as one space, document/soft_break.hpp).
     void segment(std::string_view text, int number) {
-        if (is_blank(text)) {
+        if (is_blank_text_line(text)) {
             builder_.end();
             return;
         }
@@ -52,42 +49,18 @@ private:
     DocumentBuilder builder_;
 };
 
-template <typename Fn>
-void for_each_line(std::string_view utf8, Fn&& fn) {
-    std::size_t start = 0;
-    int number = 1;
-    while (start < utf8.size()) {
-        auto end = utf8.find_first_of("\r\n", start);
-        if (end == std::string_view::npos) end = utf8.size();
-        if (!fn(utf8.substr(start, end - start), number++)) return;
-        if (end < utf8.size() && utf8[end] == '\r' && end + 1 < utf8.size() && utf8[end + 1] == '\n')
-            ++end;
-        start = end + 1;
-    }
-}
-
 // True when some blank line separates two lines of text.
 bool has_paragraph_breaks(std::string_view utf8) {
-    bool seen_text = false;
-    bool blank_after_text = false;
-    bool found = false;
-    for_each_line(utf8, [&](std::string_view line, int) {
-        if (is_blank(line)) {
-            blank_after_text = seen_text;
-        } else {
-            if (blank_after_text) found = true;
-            seen_text = true;
-        }
-        return !found;
-    });
-    return found;
+    ParagraphBreaks breaks;
+    for_each_text_line(utf8, [&](std::string_view line, int) { return !breaks.line(line); });
+    return breaks.found();
 }
 
 }  // namespace
 
 Result<document::Document> import_text(std::string_view utf8) {
     TextReader reader(!has_paragraph_breaks(utf8));
-    for_each_line(utf8, [&](std::string_view line, int number) {
+    for_each_text_line(utf8, [&](std::string_view line, int number) {
         reader.line(line, number);
         return !reader.builder().full();
     });

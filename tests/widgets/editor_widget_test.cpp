@@ -205,8 +205,9 @@ private Q_SLOTS:
         };
         QVERIFY(ink_in(1) > 0);
         QCOMPARE(ink_in(0), 0);
-        // Saved as text, the form feed line is the form feed it was.
-        QCOMPARE(QString::fromStdString(edit::file_text(std::vector<std::string>{"one", "\f", "two", "---"},
+        // Saved as text, the form feed line is the form feed it was (the
+        // lines as they are: a last line end is an empty last line).
+        QCOMPARE(QString::fromStdString(edit::file_text(std::vector<std::string>{"one", "\f", "two", "---", ""},
                                                         edit::Dialect::text, editor->layout().document(), "t.txt")),
                  QStringLiteral("one\n\f\ntwo\n---\n"));
     }

@@ -15,8 +15,11 @@
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
+#include "common/utf8.hpp"
 #include "export/export.hpp"
 #include "gui_test_support.hpp"
+#include "import/import.hpp"
+#include "pipeline/pipeline.hpp"
 #include "main_window.hpp"
 #include "preview_panel.hpp"
 #include "table_picker.hpp"
@@ -195,7 +198,8 @@ private Q_SLOTS:
         }
         MainWindow w;
         QVERIFY(w.open_file_now(path));
-        QCOMPARE(w.editor()->text(), QString::fromUtf8(text).chopped(1));
+        // The file's lines: its last line end shows as an empty last line.
+        QCOMPARE(w.editor()->text(), QString::fromUtf8(text));
         // Ctrl+S saves in place: Tactus writes text files.
         const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
         save();
@@ -208,8 +212,8 @@ private Q_SLOTS:
         auto* print = w.editor()->print_pane();
         print->moveCursor(QTextCursor::End);
         QTest::keyClick(print, Qt::Key_Return);
-        QTest::keyClick(print, Qt::Key_Return);
         QTest::keyClicks(print, "1. a_b_ <c>");
+        QTest::keyClick(print, Qt::Key_Return);
         save();
         QVERIFY(saved.open(QIODevice::ReadOnly));
         QCOMPARE(saved.readAll(), text + "\n1. a_b_ <c>\n");
@@ -218,6 +222,125 @@ private Q_SLOTS:
         QVERIFY(again.open_file_now(path));
         QCOMPARE(again.editor()->text(), w.editor()->text());
         QVERIFY(again.editor()->layout().paged().pages == w.editor()->layout().paged().pages);
+    }
+
+    // Issue 13 item 4, as a user meets it: a .txt opened, one character typed,
+    // saved; the file differs from the original by that character only. The
+    // texts hold what was lost before: a hard-wrapped paragraph's lines (the
+    // editor showed them joined, saving wrote the joined line), lines of
+    // spaces, CRLF line ends, a form feed before any text, Markdown-looking
+    // lines.
+    void a_text_file_edited_by_one_character_differs_by_it_data() {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<int>("line");    // where the character is typed
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QByteArray>("expected");
+        QTest::addColumn<QByteArray>("saved");  // saved before the edit
+        QTest::newRow("hard-wrapped") << QByteArray("It was the best of times,\nit was the worst of times.\n\nThe end.\n")
+                                      << 1 << 0 << QByteArray("It was the best of times,\nXit was the worst of times.\n\nThe end.\n")
+                                      << QByteArray("It was the best of times,\nit was the worst of times.\n\nThe end.\n");
+        QTest::newRow("lines of spaces") << QByteArray("one\n  \n\t\ntwo\n \n\n\nthree\n") << 0 << 3
+                                         << QByteArray("oneX\n  \n\t\ntwo\n \n\n\nthree\n")
+                                         << QByteArray("one\n  \n\t\ntwo\n \n\n\nthree\n");
+        QTest::newRow("CRLF") << QByteArray("one\r\ntwo\r\n\r\nthree\r\n") << 2 << 0
+                              << QByteArray("one\r\ntwo\r\nX\r\nthree\r\n") << QByteArray("one\r\ntwo\r\n\r\nthree\r\n");
+        QTest::newRow("mixed ends: the first") << QByteArray("one\r\ntwo\nthree\r") << 0 << 0
+                                               << QByteArray("Xone\r\ntwo\r\nthree\r\n")
+                                               << QByteArray("one\r\ntwo\r\nthree\r\n");
+        QTest::newRow("leading form feed") << QByteArray("\f\nTitle\n\n\fChapter\ntext\n\f") << 1 << 5
+                                           << QByteArray("\f\nTitleX\n\n\fChapter\ntext\n\f")
+                                           << QByteArray("\f\nTitle\n\n\fChapter\ntext\n\f");
+        QTest::newRow("no last line end") << QByteArray("one\ntwo") << 1 << 3 << QByteArray("one\ntwoX") << QByteArray("one\ntwo");
+        QTest::newRow("Markdown-looking") << QByteArray("& and # and *\n# not a heading\n1. not a list\n- nor this\n| a | b |\n> no quote\n")
+                                          << 0 << 0 << QByteArray("X& and # and *\n# not a heading\n1. not a list\n- nor this\n| a | b |\n> no quote\n")
+                                          << QByteArray("& and # and *\n# not a heading\n1. not a list\n- nor this\n| a | b |\n> no quote\n");
+    }
+    void a_text_file_edited_by_one_character_differs_by_it() {
+        QFETCH(QByteArray, text);
+        QFETCH(int, line);
+        QFETCH(int, column);
+        QFETCH(QByteArray, expected);
+        QFETCH(QByteArray, saved);
+        const auto path = dir.filePath(QStringLiteral("edited.txt"));
+        const auto write = [&path](const QByteArray& bytes) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        };
+        const auto read = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        write(text);
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        // The editor shows the file's lines as written, no escapes.
+        auto shown = QString::fromUtf8(text);
+        shown.replace(QStringLiteral("\r\n"), QStringLiteral("\n")).replace(QLatin1Char('\r'), QLatin1Char('\n'));
+        QCOMPARE(w.editor()->text(), shown);
+        const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
+        // Saved as opened: the same bytes (mixed line ends become the first).
+        save();
+        QVERIFY(!w.isWindowModified());
+        QCOMPARE(read(), saved);
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document()->findBlockByNumber(line));
+        c.setPosition(c.block().position() + column);
+        print->setTextCursor(c);
+        QTest::keyClicks(print, "X");
+        save();
+        QCOMPARE(read(), expected);
+        // The braille is the importer's of the saved file (a hard-wrapped paragraph reflows).
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        QVERIFY(again.editor()->layout().paged().pages == w.editor()->layout().paged().pages);
+        auto doc = import::import_file(path.toStdString());
+        QVERIFY(doc.has_value());
+        pipeline::PipelineOptions options;
+        options.tables = w.editor()->layout().tables();
+        options.layout = w.editor()->layout().options();
+        options.allow_empty = true;
+        const auto paged = pipeline::lay_out(*doc, options);
+        QVERIFY(paged.has_value());
+        QVERIFY(paged->pages == w.editor()->layout().paged().pages);
+    }
+
+    // A hard-wrapped paragraph: each print line shows its own words' braille,
+    // and typing on one line re-translates the paragraph on the lines around it.
+    void a_hard_wrapped_paragraph_shows_its_braille_line_by_line() {
+        const auto path = dir.filePath(QStringLiteral("wrapped.txt"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("one two\nthree\n\nfour\n");
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        auto* editor = w.editor();
+        const auto braille = [editor](int line) {
+            return editor->braille_pane()->document()->findBlockByNumber(line).text();
+        };
+        const auto cells = [editor](const std::string& print) {
+            return QString::fromStdString(document::to_unicode_text(
+                *editor->layout().translator().translate(utf8_to_utf32(print).value())));
+        };
+        QCOMPARE(braille(0), cells("one two"));
+        QCOMPARE(braille(1), cells("three"));
+        QCOMPARE(braille(3), cells("four"));
+        QTextCursor c(editor->print_pane()->document()->findBlockByNumber(1));
+        c.movePosition(QTextCursor::EndOfBlock);
+        editor->print_pane()->setTextCursor(c);
+        QTest::keyClicks(editor->print_pane(), " five");
+        QCOMPARE(braille(0), cells("one two"));
+        QCOMPARE(braille(1), cells("three five"));
+        // Joining the lines (backspace at the start of the second) makes one line.
+        c = QTextCursor(editor->print_pane()->document()->findBlockByNumber(1));
+        editor->print_pane()->setTextCursor(c);
+        QTest::keyClick(editor->print_pane(), Qt::Key_Backspace);
+        QCOMPARE(editor->text(), QStringLiteral("one twothree five\n\nfour\n"));
+        QCOMPARE(braille(0), cells("one twothree five"));
+        QCOMPARE(braille(2), cells("four"));
     }
 
     // A Markdown table is a pipe table in the editor, and saved as one.
