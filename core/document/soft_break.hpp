@@ -4,8 +4,8 @@
 // paragraph of a text file keeps it (import/text_import.cpp). Print keeps the
 // line as written; braille reflows it: the break, with the spaces and tabs at
 // the end of the line before it and the start of the line after it, reads as
-// one space (translate/translated_document.cpp; the editor's one-line view of
-// a paragraph, edit/editor_lines.cpp).
+// one space (translate/translated_document.cpp; the Markdown writer, which
+// writes a paragraph on one line). The editor shows the lines as written.
 #include <string>
 #include <string_view>
 
