@@ -19,6 +19,8 @@ run "spool: 10,000 jobs" "$build/bench/spool/bench_spool"
 run "emboss --dry-run: peak memory against pages (Genesis, 1x and 5x)" bench/dry_run/dry_run_memory.sh "$data/genesis.txt" 1 5
 if [ -x "$build/bench/gui/bench_gui" ]; then
   QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages" "$build/bench/gui/bench_gui" "$data/kjv.txt"
+  QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages of hard-wrapped .txt" \
+    "$build/bench/gui/bench_gui" "$data/kjv.txt" 1000 --text
 fi
 run "firmware: v3 line bytes per strike (host encoder)" "$build/bench/firmware/bench_v3_stream" \
   resources/samples/welcome.md "$data/genesis1-3.txt"

@@ -786,6 +786,7 @@ bool MainWindow::autosave_now() {
                      {QStringLiteral("path"), path_},
                      {QStringLiteral("name"), source_name_},
                      {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
+                     {QStringLiteral("line_ending"), QString::fromStdString(editor_->layout().line_ending())},
                      {QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
     return write_atomically(autosave_path_ + QStringLiteral(".json"), QJsonDocument(meta).toJson(), &error);
 }
@@ -811,6 +812,7 @@ QList<Recovery> MainWindow::pending_recoveries() {
         if (!QFileInfo::exists(r.autosave_path)) continue;
         r.document_path = meta.value(QStringLiteral("path")).toString();
         r.table = meta.value(QStringLiteral("table")).toString();
+        r.line_ending = meta.value(QStringLiteral("line_ending")).toString();
         r.saved_at = QDateTime::fromString(meta.value(QStringLiteral("time")).toString(), Qt::ISODate);
         out << r;
     }
@@ -832,6 +834,7 @@ bool MainWindow::recover(const Recovery& r) {
         return false;
     }
     layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
+    if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
     layout->reset(std::move(lines));
     editor_->adopt(std::move(*layout));
     tables_->set_table(QString::fromStdString(table));

@@ -37,6 +37,7 @@ struct Recovery {
     QString document_path;  // what it was a copy of ("" when untitled)
     QString table;
     QDateTime saved_at;
+    QString line_ending;  // a text file's ("\r\n", ...): it is saved with it again
 };
 
 class MainWindow : public QMainWindow {

@@ -451,6 +451,40 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending[0].autosave_path));
     }
 
+    // A CRLF text file recovered after a crash is saved with CRLF again.
+    void a_recovered_text_file_keeps_its_line_ends() {
+        const auto path = dir.filePath(QStringLiteral("dos.txt"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("one\r\ntwo\r\n");
+        }
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(path));
+            QTextCursor c(w.editor()->print_pane()->document()->findBlockByNumber(1));
+            c.movePosition(QTextCursor::EndOfBlock);
+            w.editor()->print_pane()->setTextCursor(c);
+            QTest::keyClicks(w.editor()->print_pane(), " three");
+            QVERIFY(w.autosave_now());
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QVERIFY(w.save_to(path));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("one\r\ntwo three\r\n"));
+    }
+
     void six_key_mapping_comes_from_the_settings() {
         QSettings().setValue(QStringLiteral("braille/six_keys"), QStringLiteral("ASDJKL"));  // dot 1 on A
         MainWindow w;
