@@ -152,7 +152,11 @@ int main(int argc, char** argv) {
     std::vector<double> latency;
     std::size_t relaid = 0;
     for (int k = 0; k < 300; ++k) {
-        const auto line = std::uniform_int_distribution<int>(0, print->document()->blockCount() - 1)(rng);
+        auto line = std::uniform_int_distribution<int>(0, print->document()->blockCount() - 1)(rng);
+        // In a text: a line of words (a letter typed into the blank line between
+        // two paragraphs joins them, and the pages after it move).
+        while (text && print->document()->findBlockByNumber(line).text().trimmed().isEmpty())
+            line = std::uniform_int_distribution<int>(0, print->document()->blockCount() - 1)(rng);
         const auto block = print->document()->findBlockByNumber(line);
         QTextCursor c(block);
         c.setPosition(block.position() + std::max(0, block.length() - 1) / 2);
