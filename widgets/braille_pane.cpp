@@ -166,10 +166,15 @@ void BraillePane::insertFromMimeData(const QMimeData* source) {
 PrintPane::PrintPane(QWidget* parent) : QPlainTextEdit(parent) {
     setObjectName(QStringLiteral("printPane"));
     setAccessibleName(tr("Print text"));
-    setAccessibleDescription(
-        tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**"));
+    set_text_file(false);
     setTabChangesFocus(true);
     setContextMenuPolicy(Qt::ActionsContextMenu);
+}
+
+void PrintPane::set_text_file(bool text_file) {
+    setAccessibleDescription(
+        text_file ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
+                  : tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**"));
 }
 
 bool PrintPane::event(QEvent* e) {

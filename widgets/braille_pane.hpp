@@ -48,6 +48,9 @@ public:
     // file's form feed), drawn across that line as a rule with the words;
     // empty for other lines.
     void set_line_marker(std::function<QString(int line)> marker) { marker_ = std::move(marker); }
+    // What the lines are, for a screen reader: a text file's own lines, or the
+    // Markdown dialect's one paragraph a line.
+    void set_text_file(bool text_file);
 
 Q_SIGNALS:
     void files_dropped(const QStringList& paths);

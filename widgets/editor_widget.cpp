@@ -122,6 +122,7 @@ QString EditorWidget::braille_text(std::size_t line) const {
 
 void EditorWidget::adopt(edit::LiveLayout layout) {
     layout_ = std::move(layout);
+    print_->set_text_file(layout_->dialect() == edit::Dialect::text);
     syncing_ = true;
     QStringList print, braille;
     print.reserve(static_cast<qsizetype>(layout_->line_count()));

@@ -1189,6 +1189,11 @@
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
+    <message>
+        <location filename="../../widgets/braille_pane.cpp" line="175" />
+        <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
+        <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
+    </message>
 </context>
 <context>
     <name>tactus::gui::PrinterPanel</name>

@@ -184,6 +184,7 @@ private Q_SLOTS:
         QVERIFY(again.open_file_now(path));
         QCOMPARE(again.editor()->text(), w.editor()->text());
         QVERIFY(again.editor()->layout().paged().pages == pages);
+        QVERIFY(again.editor()->print_pane()->accessibleDescription().startsWith(QStringLiteral("One paragraph per line")));
     }
 
     // Issue 13 item 4: a text file is its text in the editor (no Markdown
@@ -200,6 +201,8 @@ private Q_SLOTS:
         QVERIFY(w.open_file_now(path));
         // The file's lines: its last line end shows as an empty last line.
         QCOMPARE(w.editor()->text(), QString::fromUtf8(text));
+        // A screen reader hears what the lines are: the file's own, not Markdown.
+        QVERIFY(w.editor()->print_pane()->accessibleDescription().startsWith(QStringLiteral("The text file's lines")));
         // Ctrl+S saves in place: Tactus writes text files.
         const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
         save();
