@@ -108,7 +108,9 @@ QString EditorWidget::page_break_text(int line) const {
     if (!layout_ || line < 0 || static_cast<std::size_t>(line) >= layout_->line_count()) return {};
     const auto i = static_cast<std::size_t>(line);
     const auto block = edit::parse_editor_line(layout_->line(i), layout_->dialect());
-    if (!block || block->kind != document::BlockKind::print_page_break) return {};
+    // In a text file a form feed inside a line ("\fChapter 2") starts a page too.
+    const bool form_feed = layout_->dialect() == edit::Dialect::text && layout_->line(i).find('\f') != std::string::npos;
+    if (!form_feed && (!block || block->kind != document::BlockKind::print_page_break)) return {};
     // The print page it starts, by core's numbering (document/print_page.hpp).
     const auto page = QString::fromStdString(layout_->print_page_at(i));
     return page.isEmpty() ? tr("Print page break") : tr("Print page break, page %1").arg(page);

@@ -746,11 +746,16 @@ std::string LiveLayout::print_page_of(std::size_t page) const {
 }
 
 std::string LiveLayout::print_page_at(std::size_t line) const {
-    for (std::size_t i = std::min(line + 1, entries_.size()); i-- > 0;) {
-        const auto& b = entries_[i].block;
-        if (b && b->kind == document::BlockKind::print_page_break) return b->label;
+    if (entries_.empty()) return std::string(document::first_print_page);
+    // The page breaks before the end of the line (a text line's further blocks too).
+    bool started = false;
+    const auto i = std::min(line, entries_.size() - 1);
+    if (dialect_ == Dialect::text && entries_[i].block) {
+        std::vector<document::Block> own{*entries_[i].block};
+        own.insert(own.end(), entries_[i].cells.begin(), entries_[i].cells.end());
+        return page_before(i, own, started);
     }
-    return std::string(document::first_print_page);
+    return page_before(i + 1, {}, started);
 }
 
 std::string LiveLayout::back_translate(const document::BrailleLine& cells) const {

@@ -205,6 +205,15 @@ private Q_SLOTS:
         };
         QVERIFY(ink_in(1) > 0);
         QCOMPARE(ink_in(0), 0);
+        // A form feed inside a line starts a page as well, and says so.
+        auto inside = edit::LiveLayout::create("en-ueb-g2.ctb", {});
+        QVERIFY(inside.has_value());
+        inside->set_dialect(edit::Dialect::text);
+        inside->reset({"one", "\fChapter two", "text", "end\fthree"});
+        editor->adopt(std::move(*inside));
+        QCOMPARE(editor->page_break_text(1), QStringLiteral("Print page break, page 2"));
+        QVERIFY(editor->page_break_text(2).isEmpty());
+        QCOMPARE(editor->page_break_text(3), QStringLiteral("Print page break, page 3"));
         // Saved as text, the form feed line is the form feed it was (the
         // lines as they are: a last line end is an empty last line).
         QCOMPARE(QString::fromStdString(edit::file_text(std::vector<std::string>{"one", "\f", "two", "---", ""},
