@@ -133,11 +133,17 @@ void campaign(double rate, bool v3) {
     EXPECT_EQ(t.wrong, 0U) << t.first_wrong;
     EXPECT_EQ(t.completed + t.failed_cleanly, kSeeds);
     // At 1e-3 every job gets through; on the noisier lines most do (the frame
-    // size follows the line), the others end cleanly at the give-up.
+    // size follows the line), the others end cleanly at the give-up. At 2e-2
+    // a quarter of the v3 runs (a third of v2's) once failed at the session's
+    // open, 3 s into a line that garbled the controller's answers (issue 12
+    // item 8; link_impl.hpp silent_too_long): 151 of 200 v3 runs and 138 of
+    // v2's completed then, 198 and 182 now.
     if (rate <= 1e-3)
         EXPECT_EQ(t.completed, kSeeds);
+    else if (rate <= 1e-2)
+        EXPECT_GE(t.completed * 100, kSeeds * 97);
     else
-        EXPECT_GE(t.completed, kSeeds / 2);
+        EXPECT_GE(t.completed * 100, kSeeds * (v3 ? 95 : 80));
     std::printf("protocol %d, noise %g: %zu runs, %zu completed exactly, %zu failed cleanly, %zu wrong; %zu bytes corrupted, %zu DATA frames passed the CRC and failed the DATA check; "
                 "throughput %.1f %% of a clean line\n",
                 v3 ? 3 : 2, rate, static_cast<std::size_t>(kSeeds), t.completed, t.failed_cleanly, t.wrong, t.corrupted, t.check_drops,
