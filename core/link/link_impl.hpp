@@ -106,11 +106,26 @@ struct Link::Impl {
     // frames within the give-up (there a frame of ours garbled on its way
     // gets no answer at all: at 2e-2 per byte CONFIGURE is lost 12 times
     // running in 3 s in about 1 session of 30).
-    [[nodiscard]] bool silent_too_long(double since) const {
-        const double now = s->now();
-        const bool noisy = now - last_garbled < seconds(opt.give_up_after);
-        return now - std::max(since, last_heard()) >
-               seconds(noisy ? std::max(opt.silence_timeout, opt.give_up_after) : opt.silence_timeout);
+    // A request (HELLO, CONFIGURE, ...) waits for at least kSilentRetries
+    // retransmission timeouts too: at 9600 baud 3 s is 7 tries, and at 2e-2
+    // per byte a 24-byte CONFIGURE is lost on its way 7 times running in 1
+    // session of 6 (the controller says nothing to a frame it cannot read).
+    static constexpr double kSilentRetries = 12;
+    [[nodiscard]] double quiet_allowed(bool request) const {
+        const bool noisy = s->now() - last_garbled < seconds(opt.give_up_after);
+        double quiet = seconds(opt.silence_timeout);
+        if (request) quiet = std::max(quiet, kSilentRetries * rto());
+        if (noisy) quiet = std::max(quiet, seconds(opt.give_up_after));
+        return quiet;
+    }
+    [[nodiscard]] bool silent_too_long(double since, bool request = false) const {
+        return s->now() - std::max(since, last_heard()) > quiet_allowed(request);
+    }
+    // "3.0 s": how long a request was given (its error message).
+    [[nodiscard]] std::string quiet_text() const {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.1f s", quiet_allowed(true));
+        return b;
     }
 
     Result<void> raw_write(const std::vector<std::uint8_t>& bytes) {
@@ -307,10 +322,8 @@ struct Link::Impl {
             // Silent for the silence timeout: no answer. A controller that
             // answers (a noisy line loses most frames) is given until the
             // give-up to take this one.
-            if (silent_too_long(start))
-                return fail(ErrorKind::device, "no answer from the controller within " +
-                                std::to_string(opt.silence_timeout.count()) + " ms",
-                            device);
+            if (silent_too_long(start, true))
+                return fail(ErrorKind::device, "no answer from the controller within " + quiet_text(), device);
             if (s->now() - start > seconds(opt.give_up_after))
                 return fail(ErrorKind::device, "the controller answers but took no frame in " +
                                 std::to_string(opt.give_up_after.count() / 1000) +
@@ -353,10 +366,9 @@ struct Link::Impl {
         while (!last_hello) {
             // As transact: silent for the silence timeout, or no session by
             // the give-up (the controller answers, but the line garbles it).
-            if (silent_too_long(start))
-                return fail(ErrorKind::device, "no answer to HELLO within " +
-                                std::to_string(opt.silence_timeout.count()) +
-                                " ms: is the embosser on, the cable in, and the baud rate right?",
+            if (silent_too_long(start, true))
+                return fail(ErrorKind::device, "no answer to HELLO within " + quiet_text() +
+                                ": is the embosser on, the cable in, and the baud rate right?",
                             device);
             if (s->now() - start > seconds(opt.give_up_after))
                 return fail(ErrorKind::device, "no valid answer to HELLO in " +

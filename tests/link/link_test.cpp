@@ -384,6 +384,63 @@ TEST(LinkNoisySession, AControllerWhoseAnswersNeverGetThroughFailsAtTheGiveUpNam
     EXPECT_LT(garbled->now(), 13.0);
 }
 
+// Issue 12 item 8, a session at 9600 baud on a very noisy line: the
+// controller says nothing to a frame it cannot read, and 3 s there is 7
+// HELLOs (a 24-byte CONFIGURE at 2e-2 per byte is lost 7 times running in 1
+// session of 6): a request is given 12 retransmission timeouts (5.3 s at 9600)
+// as well as the silence timeout. Here the first 9 frames the host writes are
+// lost on the way: the old host gave up after 7.
+class LostWrites final : public transport::ByteStream {
+public:
+    LostWrites(std::unique_ptr<transport::ByteStream> inner, int lost) : inner_(std::move(inner)), lost_(lost) {}
+    Result<void> write(std::span<const std::uint8_t> b) override {
+        if (lost_ > 0) {
+            --lost_;
+            inner_->sleep(std::chrono::microseconds(static_cast<std::int64_t>(
+                1e6 * static_cast<double>(b.size()) / inner_->bytes_per_second())));
+            return {};
+        }
+        return inner_->write(b);
+    }
+    Result<std::size_t> read(std::span<std::uint8_t> buf, std::chrono::microseconds timeout) override {
+        return inner_->read(buf, timeout);
+    }
+    Result<void> reopen() override { return inner_->reopen(); }
+    [[nodiscard]] double now() const override { return inner_->now(); }
+    void sleep(std::chrono::microseconds d) override { inner_->sleep(d); }
+    [[nodiscard]] double bytes_per_second() const override { return inner_->bytes_per_second(); }
+    [[nodiscard]] std::string describe() const override { return inner_->describe(); }
+
+private:
+    std::unique_ptr<transport::ByteStream> inner_;
+    int lost_;
+};
+
+TEST(LinkNoisySession, AtNineThousandSixHundredBaudAHelloIsTriedTwelveTimes) {
+    controller::SimLineOptions line;
+    line.baud = 9600;
+    auto ctl = std::make_shared<SimController>();
+    auto l = link::Link::over(std::make_unique<LostWrites>(std::make_unique<SimTransport>(ctl, line), 9));
+    auto h = l.hello();
+    ASSERT_TRUE(h) << h.error().to_string();
+    EXPECT_GT(l.stream().now(), 3.0);
+    EXPECT_EQ(l.stats().frames_resent, 9U);
+}
+
+TEST(LinkNoisySession, AtNineThousandSixHundredBaudADeadLineStillFailsWithinSixSeconds) {
+    controller::SimLineOptions line;
+    line.baud = 9600;
+    auto ctl = std::make_shared<SimController>();
+    auto t = std::make_unique<SimTransport>(ctl, line);
+    t->silence_between(0, 1e9);
+    auto l = link::Link::over(std::move(t));
+    auto h = l.hello();
+    ASSERT_FALSE(h);
+    EXPECT_NE(h.error().message.find("no answer to HELLO within 5.3 s"), std::string::npos) << h.error().message;
+    EXPECT_GT(l.stream().now(), 5.0);
+    EXPECT_LT(l.stream().now(), 6.0);
+}
+
 // Issue 12 item 8, the bounded give-up. On the old code these jobs never
 // ended (a 28 s job was still running after 2 million simulated seconds): the
 // watchdog cancels them after a few wall seconds, so the test fails there
