@@ -414,10 +414,18 @@ struct Link::Impl {
             versions = {encode::kProtocolV3, encode::kProtocolVersion};
         else
             versions = {encode::kProtocolVersion, encode::kProtocolV3};
+        // A controller reports its power-on reset until a session opens:
+        // in the NAK refusing a version, and in the stale copies of it that
+        // arrive after. That is its state before this session, not a power
+        // loss during the job (which is seen before a restart's HELLO).
+        const bool power_loss_before = saw_power_loss;
         for (const auto v : versions) {
             auto h = hello_as(v);
             if (!h) return std::unexpected(h.error());
-            if (*h) return **h;
+            if (*h) {
+                saw_power_loss = power_loss_before;
+                return **h;
+            }
             // Refused: the answers to copies of that HELLO (re-sent, or
             // duplicated by the line) may still be on their way, and one
             // taken as refusing the next version failed the session (1 run

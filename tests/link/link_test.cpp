@@ -13,6 +13,7 @@
 #include "controller/sim_transport.hpp"
 #include "encode/frame.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/profile.hpp"
 #include "transport/byte_stream.hpp"
 
 namespace tactus {
@@ -482,6 +483,17 @@ TEST(LinkNoisySession, ALateSecondRefusalOfVersionTwoDoesNotRefuseVersionThree) 
     auto h = l.hello();
     ASSERT_TRUE(h) << h.error().to_string();
     EXPECT_EQ(l.protocol(), encode::kProtocolV3);
+    // The late refusal also carried the controller's power-on reset (it has
+    // no session yet): that is not a power loss during the job.
+    const auto timing = profile::strike_timing(profile::default_profile());
+    ASSERT_TRUE(l.use_firmware_tables(*tables, timing));
+    ASSERT_TRUE(l.configure({}));
+    const auto plan = test::make_firmware_plan(*tables, timing, 1, 2, 5, 3);
+    link::CancelToken cancel;
+    auto out = l.send_job(plan, 1, {}, cancel);
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->end, link::JobEnd::completed) << out->error.message;
+    EXPECT_EQ(ctl->strike_log(), controller::planned_strikes(plan));
 }
 
 // Issue 12 item 8, the bounded give-up. On the old code these jobs never
