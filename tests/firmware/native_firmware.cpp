@@ -138,7 +138,7 @@ void NativeFirmware::phase(std::uint64_t first_ticks, std::uint64_t total_ticks)
     }
     const double on_time = last_event_ + static_cast<double>(first_ticks) / machine::kTickHz;
     const double base = now_ <= on_time ? last_event_ : now_;
-    phase_end_ = base + static_cast<double>(total_ticks) / machine::kTickHz;
+    phase_end_ = options_.instant_motion ? now_ : base + static_cast<double>(total_ticks) / machine::kTickHz;
     phase_busy_ = true;
     mv_done = 0;
     mv_limit = 0;
@@ -181,6 +181,12 @@ void NativeFirmware::main_loop() {
         fw_poll_paper();
         fw_report_room();
         if (!mv_done) break;
+    }
+    const bool waiting = fw_state == ST_WAITING;
+    if (waiting && waiting_since_ < 0) waiting_since_ = now_;
+    if (!waiting && waiting_since_ >= 0) {
+        waits_.push_back({waiting_since_, now_ - waiting_since_, fw_executed});
+        waiting_since_ = -1;
     }
 }
 

@@ -41,6 +41,9 @@ struct NativeFirmwareOptions {
     machine::FirmwareTables tables;
     double baud = 9600;  // the reply line's pace (the firmware's build: BAUD=9600)
     bool paper_present = true;
+    // Every phase ends when it starts (the link-efficiency benchmark: the
+    // line and the ring are the only limits).
+    bool instant_motion = false;
 };
 
 class NativeFirmware final : public controller::LineEnd {
@@ -61,6 +64,9 @@ public:
     // and hammer, carriage and feed step, read from the firmware's counters
     // when the hammer comes down).
     [[nodiscard]] const std::vector<controller::LoggedStrike>& strike_log() const { return log_; }
+    // Each time the executor waited for data (state *waiting*: a job under
+    // way, its next op or strike entry not in the ring): when, how long.
+    [[nodiscard]] const std::vector<controller::SimController::Wait>& waits() const { return waits_; }
 
     // Called by the native motion layer (native_firmware.cpp).
     [[nodiscard]] const machine::FirmwareTables& tables() const { return options_.tables; }
@@ -82,6 +88,8 @@ private:
     double tx_next_ = 0;
     std::vector<std::uint8_t> out_;
     std::vector<controller::LoggedStrike> log_;
+    std::vector<controller::SimController::Wait> waits_;
+    double waiting_since_ = -1;
 };
 
 }  // namespace tactus::test
