@@ -109,10 +109,10 @@ struct CampaignTally {
     [[nodiscard]] double throughput() const { return seconds > 0 ? clean_seconds / seconds : 0.0; }
 };
 
-// Seeds 1..seeds at `rate` (each seed its own plan and line).
-inline CampaignTally campaign(const CampaignSetup& setup, double rate, std::uint64_t seeds) {
+// Seeds first..first + seeds - 1 at `rate` (each seed its own plan and line).
+inline CampaignTally campaign(const CampaignSetup& setup, double rate, std::uint64_t seeds, std::uint64_t first = 1) {
     CampaignTally t;
-    for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    for (std::uint64_t seed = first; seed < first + seeds; ++seed) {
         const auto plan = setup.tables ? make_firmware_plan(*setup.tables, setup.timing, setup.sheets, setup.passes,
                                                             setup.strikes, static_cast<unsigned>(seed))
                                        : make_plan(setup.sheets, setup.passes, setup.strikes, static_cast<unsigned>(seed));
@@ -135,10 +135,18 @@ inline CampaignTally campaign(const CampaignSetup& setup, double rate, std::uint
             t.failures.push_back("seed " + std::to_string(seed) + ": " + r.out.error.message);
         } else {
             ++t.wrong;
-            if (t.first_wrong.empty())
+            if (t.first_wrong.empty()) {
                 t.first_wrong = "seed " + std::to_string(seed) + ": " + std::to_string(r.log.size()) + " of " +
                                 std::to_string(planned.size()) + " strikes, end " +
                                 std::to_string(static_cast<int>(r.out.end)) + " " + r.out.error.message;
+                const auto at = std::mismatch(r.log.begin(), r.log.end(), planned.begin(), planned.end());
+                if (at.first != r.log.end() && at.second != planned.end())
+                    t.first_wrong += "; strike " + std::to_string(at.first - r.log.begin()) + " struck at carriage step " +
+                                     std::to_string(at.first->carriage_step) + ", feed step " +
+                                     std::to_string(at.first->feed_step) + ", sheet " + std::to_string(at.first->sheet) +
+                                     " where the plan has " + std::to_string(at.second->carriage_step) + ", " +
+                                     std::to_string(at.second->feed_step) + ", " + std::to_string(at.second->sheet);
+            }
         }
     }
     return t;

@@ -38,6 +38,9 @@ void campaign(double rate, bool v3) {
     // 200 seeds a rate; TACTUS_NOISE_SEEDS=N runs more (the figures in docs/protocol.md).
     const char* more = std::getenv("TACTUS_NOISE_SEEDS");
     const std::uint64_t kSeeds = more ? std::strtoull(more, nullptr, 10) : 200;
+    // TACTUS_NOISE_FIRST_SEED=N starts there (to run one seed again).
+    const char* from = std::getenv("TACTUS_NOISE_FIRST_SEED");
+    const std::uint64_t first = from ? std::strtoull(from, nullptr, 10) : 1;
     test::CampaignSetup setup;
     controller::SimOptions so;
     if (v3) {
@@ -49,7 +52,7 @@ void campaign(double rate, bool v3) {
         auto ctl = std::make_shared<controller::SimController>(so);
         return test::FarEnd{ctl, [ctl] { return ctl->strike_log(); }, [ctl] { return ctl->data_check_errors(); }};
     };
-    const auto t = test::campaign(setup, rate, kSeeds);
+    const auto t = test::campaign(setup, rate, kSeeds, first);
     if (std::getenv("TACTUS_NOISE_VERBOSE"))
         for (const auto& f : t.failures) std::printf("failed cleanly, %s\n", f.c_str());
     EXPECT_EQ(t.wrong, 0U) << t.first_wrong;
