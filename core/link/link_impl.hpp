@@ -419,21 +419,25 @@ struct Link::Impl {
         // arrive after. That is its state before this session, not a power
         // loss during the job (which is seen before a restart's HELLO).
         const bool power_loss_before = saw_power_loss;
-        for (const auto v : versions) {
-            auto h = hello_as(v);
-            if (!h) return std::unexpected(h.error());
-            if (*h) {
-                saw_power_loss = power_loss_before;
-                return **h;
+        // Every version twice: a refusal that came late (a copy held in the
+        // firmware's decoder behind a false start) can still meet the next
+        // offer; a controller that speaks neither refuses both again.
+        for (int round = 0; round < 2; ++round)
+            for (const auto v : versions) {
+                auto h = hello_as(v);
+                if (!h) return std::unexpected(h.error());
+                if (*h) {
+                    saw_power_loss = power_loss_before;
+                    return **h;
+                }
+                // Refused: the answers to copies of that HELLO (re-sent, or
+                // duplicated by the line) may still be on their way, and one
+                // taken as refusing the next version failed the session (1
+                // run in 1,500 at 2e-2). Let them arrive first; they are ignored.
+                const double until = s->now() + rto();
+                while (s->now() < until)
+                    if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
             }
-            // Refused: the answers to copies of that HELLO (re-sent, or
-            // duplicated by the line) may still be on their way, and one
-            // taken as refusing the next version failed the session (1 run
-            // in 1,500 at 2e-2). Let them arrive first; they are ignored.
-            const double until = s->now() + rto();
-            while (s->now() < until)
-                if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
-        }
         std::string offered;
         for (const auto v : versions) offered += (offered.empty() ? "" : " and ") + std::to_string(v);
         return fail(ErrorKind::protocol,

@@ -496,6 +496,65 @@ TEST(LinkNoisySession, ALateSecondRefusalOfVersionTwoDoesNotRefuseVersionThree) 
     EXPECT_EQ(ctl->strike_log(), controller::planned_strikes(plan));
 }
 
+// A refusal can come later than the wait after it: the firmware's decoder
+// holds a copy of the HELLO behind a false start until enough bytes arrive.
+// Here everything the controller said before the host's second write (the
+// refusal of protocol 2) arrives again just after that write (the HELLO for
+// protocol 3). The host offers every version a second time.
+class LateRefusal final : public transport::ByteStream {
+public:
+    explicit LateRefusal(std::unique_ptr<transport::ByteStream> inner) : inner_(std::move(inner)) {}
+    Result<void> write(std::span<const std::uint8_t> b) override {
+        if (++writes_ == 2) pending_ = heard_;
+        return inner_->write(b);
+    }
+    Result<std::size_t> read(std::span<std::uint8_t> buf, std::chrono::microseconds timeout) override {
+        if (!pending_.empty()) {
+            const std::size_t n = std::min(buf.size(), pending_.size());
+            std::copy_n(pending_.begin(), n, buf.begin());
+            pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n));
+            return n;
+        }
+        auto n = inner_->read(buf, timeout);
+        if (n && writes_ < 2) heard_.insert(heard_.end(), buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(*n));
+        return n;
+    }
+    Result<void> reopen() override { return inner_->reopen(); }
+    [[nodiscard]] double now() const override { return inner_->now(); }
+    void sleep(std::chrono::microseconds d) override { inner_->sleep(d); }
+    [[nodiscard]] double bytes_per_second() const override { return inner_->bytes_per_second(); }
+    [[nodiscard]] std::string describe() const override { return inner_->describe(); }
+
+private:
+    std::unique_ptr<transport::ByteStream> inner_;
+    int writes_ = 0;
+    std::vector<std::uint8_t> heard_, pending_;
+};
+
+TEST(LinkNoisySession, ARefusalOfVersionTwoThatComesLaterStillLetsVersionThreeOpen) {
+    auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
+    ASSERT_TRUE(tables) << tables.error().to_string();
+    controller::SimOptions so;
+    so.firmware = *tables;
+    auto ctl = std::make_shared<SimController>(so);
+    auto l = link::Link::over(
+        std::make_unique<LateRefusal>(std::make_unique<SimTransport>(ctl, controller::SimLineOptions{})));
+    auto h = l.hello();
+    ASSERT_TRUE(h) << h.error().to_string();
+    EXPECT_EQ(l.protocol(), encode::kProtocolV3);
+}
+
+TEST(LinkNoisySession, AControllerThatRefusesEveryVersionIsStillAnError) {
+    // The C++ controller on protocol 2, asked for 3 only: refused each time.
+    link::LinkOptions opt;
+    opt.protocol = encode::kProtocolV3;
+    auto l = link::Link::over(
+        std::make_unique<SimTransport>(std::make_shared<SimController>(), controller::SimLineOptions{}), opt);
+    auto h = l.hello();
+    ASSERT_FALSE(h);
+    EXPECT_NE(h.error().message.find("refused HELLO for protocol 3"), std::string::npos) << h.error().message;
+}
+
 // Issue 12 item 8, the bounded give-up. On the old code these jobs never
 // ended (a 28 s job was still running after 2 million simulated seconds): the
 // watchdog cancels them after a few wall seconds, so the test fails there
