@@ -8,7 +8,10 @@
 // motion taking no time (what the firmware's ring and window let through of
 // the line: DATA payload bytes over the line's capacity while DATA flowed).
 //
-//   bench_link_native [FILE...]     (default: resources/samples/welcome.md, sheet 1)
+//   bench_link_native [--max-payload N] [FILE...]   (default: resources/samples/welcome.md, sheet 1)
+//
+// --max-payload N: DATA payloads of at most N bytes (the firmware's is 33),
+// so that two frames fit the ring and the host need not wait for each ACK.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -33,7 +36,10 @@ struct Run {
     link::LinkStats stats;
     std::size_t strikes = 0;
     double first_to_last = 0;  // first to last strike
+    std::size_t line_bytes = 0;  // host to controller, every byte
 };
+
+std::size_t g_max_payload = 0;
 
 Run run(const plan::JobPlan& job, const machine::FirmwareTables& t, const machine::StrikeTiming& timing, double baud,
         bool instant) {
@@ -46,7 +52,9 @@ Run run(const plan::JobPlan& job, const machine::FirmwareTables& t, const machin
     line.baud = baud;
     auto tr = std::make_unique<controller::SimTransport>(fw, line);
     auto* raw = tr.get();
-    auto l = link::Link::over(std::move(tr));
+    link::LinkOptions lo;
+    lo.max_payload = g_max_payload;
+    auto l = link::Link::over(std::move(tr), lo);
     Run r;
     if (!l.hello() || !l.use_firmware_tables(t, timing) ||
         !l.configure(profile::controller_config(profile::default_profile())))
@@ -58,6 +66,7 @@ Run run(const plan::JobPlan& job, const machine::FirmwareTables& t, const machin
     r.completed = out && out->end == link::JobEnd::completed && fw->strike_log() == controller::planned_strikes(job);
     if (out) r.stats = out->stats;
     r.strikes = fw->strike_log().size();
+    r.line_bytes = raw->line_bytes_to_controller();
     if (r.strikes > 1) r.first_to_last = fw->strike_log().back().time_s - fw->strike_log().front().time_s;
     const double first = fw->strike_log().empty() ? 0 : fw->strike_log().front().time_s;
     for (const auto& w : fw->waits())
@@ -69,7 +78,12 @@ Run run(const plan::JobPlan& job, const machine::FirmwareTables& t, const machin
 
 int main(int argc, char** argv) {
     std::vector<std::string> files;
-    for (int i = 1; i < argc; ++i) files.emplace_back(argv[i]);
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--max-payload" && i + 1 < argc)
+            g_max_payload = std::stoul(argv[++i]);
+        else
+            files.emplace_back(argv[i]);
+    }
     if (files.empty()) files.emplace_back(TACTUS_SAMPLE);
     const auto prof = profile::default_profile();
     auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
@@ -109,6 +123,8 @@ int main(int argc, char** argv) {
         std::printf("| Baud | Exact | Job time | vs 57,600 baud | Waits after the first strike | Waited | Link efficiency (motion in no time) |\n");
         std::printf("|---|---|---|---|---|---|---|\n");
         const double fast = clean.seconds;
+        std::printf("line bytes to the controller: %zu, %.2f a strike (the session's frames included)\n",
+                    clean.line_bytes, static_cast<double>(clean.line_bytes) / static_cast<double>(want.size()));
         for (const double baud : {600.0, 1200.0, 2400.0, 4800.0, 9600.0, 57600.0}) {
             const auto r = run(job, *tables, timing, baud, false);
             const auto e = run(job, *tables, timing, baud, true);
