@@ -326,9 +326,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             step = resend_all();
         }
         if (step && silent_too_long(last_rx)) {
-            step = fail(ErrorKind::device, "no answer from the controller for " +
-                            std::to_string(opt.silence_timeout.count()) + " ms",
-                        device);
+            step = fail(ErrorKind::device, "no answer from the controller for " + quiet_text(false), device);
         }
         // Nothing outstanding: poll, so a lost ACK never stalls the window and
         // the controller's keep-alive watchdog stays quiet. Poll faster while

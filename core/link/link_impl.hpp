@@ -101,15 +101,15 @@ struct Link::Impl {
     // When the controller was last heard from: a valid frame, or one a noisy
     // line garbled. The silence timeout counts from here.
     [[nodiscard]] double last_heard() const { return std::max(last_rx, last_garbled); }
-    // How long the controller may stay silent before it counts as gone: the
-    // silence timeout, or the give-up on a line that garbled one of its
-    // frames within the give-up (there a frame of ours garbled on its way
-    // gets no answer at all: at 2e-2 per byte CONFIGURE is lost 12 times
-    // running in 3 s in about 1 session of 30).
-    // A request (HELLO, CONFIGURE, ...) waits for at least kSilentRetries
-    // retransmission timeouts too: at 9600 baud 3 s is 7 tries, and at 2e-2
-    // per byte a 24-byte CONFIGURE is lost on its way 7 times running in 1
-    // session of 6 (the controller says nothing to a frame it cannot read).
+    // How long the controller may stay silent before it counts as gone (the
+    // controller says nothing to a frame it cannot read, so on a noisy line
+    // silence proves little):
+    // * the silence timeout;
+    // * for a request (HELLO, CONFIGURE, ...) at least kSilentRetries
+    //   retransmission timeouts: at 9600 baud 3 s is 7 tries, and at 2e-2 per
+    //   byte a 24-byte CONFIGURE is lost on its way 7 times running in about
+    //   1 session of 6;
+    // * the give-up, once the line has garbled a frame within the give-up.
     static constexpr double kSilentRetries = 12;
     [[nodiscard]] double quiet_allowed(bool request) const {
         const bool noisy = s->now() - last_garbled < seconds(opt.give_up_after);
@@ -121,10 +121,10 @@ struct Link::Impl {
     [[nodiscard]] bool silent_too_long(double since, bool request = false) const {
         return s->now() - std::max(since, last_heard()) > quiet_allowed(request);
     }
-    // "3.0 s": how long a request was given (its error message).
-    [[nodiscard]] std::string quiet_text() const {
+    // "3.0 s": how long the controller was given (an error message's).
+    [[nodiscard]] std::string quiet_text(bool request = true) const {
         char b[32];
-        std::snprintf(b, sizeof b, "%.1f s", quiet_allowed(true));
+        std::snprintf(b, sizeof b, "%.1f s", quiet_allowed(request));
         return b;
     }
 
