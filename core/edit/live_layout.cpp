@@ -94,11 +94,13 @@ void LiveLayout::translate_entry(std::size_t i) {
             }
             if (b->kind != document::BlockKind::braille_page_break) started = true;
         }
-        if (!started) {
+        auto label = document::page_break_label({}, current, started);
+        if (!label) {
             e.block.reset();
             return;
         }
-        e.block->label = document::next_print_page(current);
+        e.block->label = std::move(*label);
+        e.block->label_counted = true;
     }
     auto tb = translate::translate_block(*e.block, translator_,
                               layout::word_room(options_, e.block->kind, e.block->level));
@@ -191,9 +193,10 @@ void LiveLayout::set_dialect(Dialect dialect) {
 }
 
 document::Document LiveLayout::document() const {
-    // As the importer reads the saved file: a braille page break after all text
-    // is dropped, a print page break kept (DocumentBuilder::finish); an
-    // unlabelled one before any text is no block here already.
+    // As the importer reads the saved file: page breaks after all text are
+    // kept (DocumentBuilder::finish: <!-- braillepage --> is written out, not
+    // implied); an unlabelled print page break before any text is no block
+    // here already.
     // A table (a run of table lines) has as many columns as its widest row, as
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
@@ -226,8 +229,6 @@ document::Document LiveLayout::document() const {
             }
         }
     }
-    while (!doc.blocks.empty() && doc.blocks.back().kind == document::BlockKind::braille_page_break)
-        doc.blocks.pop_back();
     return doc;
 }
 

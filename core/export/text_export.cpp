@@ -156,7 +156,8 @@ std::string markdown_line(const document::Block& b) {
         case document::BlockKind::table_cell:
             return {};
         case document::BlockKind::print_page_break:
-            return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
+            // A counted label is left for the reader to count again (document/print_page.hpp).
+            return b.label.empty() || b.label_counted ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
         case document::BlockKind::braille_page_break:
             return "<!-- braillepage -->";
         case document::BlockKind::braille:

@@ -340,7 +340,7 @@ private:
                 builder_.print_page_break(line, std::string(label));
             } else if (body == "braillepage") {
                 // Written by the editor for a forced braille page (a BRF form feed).
-                builder_.braille_page_break(line);
+                builder_.braille_page_break(line, DocumentBuilder::BrailleBreak::written);
             }
             return;  // any other comment is not content
         }

@@ -54,7 +54,8 @@ std::string without_lines(const std::vector<document::Block>& blocks, bool verba
             }
         }
         out += std::to_string(static_cast<int>(b.kind)) + "/" + std::to_string(b.level);
-        if (b.kind == document::BlockKind::print_page_break) out += " page " + b.label;
+        if (b.kind == document::BlockKind::print_page_break)
+            out += " page " + b.label + (b.label_counted ? " (counted)" : "");
         auto spans = b.spans;
         while (!verbatim && !spans.empty() && !spans.front().note_reference) {
             auto& t = spans.front().text;
@@ -306,6 +307,51 @@ TEST(RoundTrip, APageBreakAtTheEndIsKept) {
         EXPECT_EQ(text_of(md.paged().pages),
                   text_of(make({"one", "<!-- pagebreak 5 -->", "two"}, edit::Dialect::markdown).paged().pages));
     }
+}
+
+// Issue 13 item 4: a <!-- braillepage --> before all text or after it was
+// dropped on opening the saved file (the importer dropped it as it drops a
+// BRF's last form feed). The user wrote it: it is kept, and adds no page.
+TEST(RoundTrip, ABraillePageBreakAtEitherEndIsKept) {
+    const std::vector<std::string> lines{"<!-- braillepage -->", "one", "<!-- braillepage -->", "two",
+                                         "<!-- braillepage -->"};
+    const auto live = make(lines, edit::Dialect::markdown);
+    const auto saved = edit::file_text(lines, live.dialect(), live.document(), "doc.md");
+    const auto reopened = import_as(saved, "doc.md");
+    ASSERT_EQ(reopened.blocks.size(), 5u) << saved;
+    EXPECT_EQ(reopened.blocks.front().kind, document::BlockKind::braille_page_break);
+    EXPECT_EQ(reopened.blocks.back().kind, document::BlockKind::braille_page_break);
+    EXPECT_EQ(edit::render_editor_lines(reopened), lines);
+    expect_round_trip(live, "doc.md");
+    // The braille is that of the text with only the break between: the ones at the ends add no page.
+    EXPECT_EQ(text_of(live.paged().pages),
+              text_of(make({"one", "<!-- braillepage -->", "two"}, edit::Dialect::markdown).paged().pages));
+    // A BRF's last form feed ends its last page; it breaks nothing and is no block.
+    const auto brf = import_as("\"<3 \n\f", "doc.brf");
+    ASSERT_EQ(brf.blocks.size(), 1u);
+    EXPECT_EQ(brf.blocks.front().kind, document::BlockKind::braille);
+}
+
+// Issue 13 item 4: a "---" after <!-- pagebreak 10 --> opened as
+// "<!-- pagebreak 11 -->": the count was frozen into a label, so after the
+// user changed 10 to 20 the next page stayed 11. The count is kept a count.
+TEST(RoundTrip, ACountedPrintPageStaysCountedAfterSaving) {
+    const auto doc = import_as("one\n\n<!-- pagebreak 10 -->\n\ntwo\n\n---\n\nthree\n", "book.md");
+    const auto lines = edit::render_editor_lines(doc);
+    EXPECT_EQ(lines, (std::vector<std::string>{"one", "<!-- pagebreak 10 -->", "two", "<!-- pagebreak -->", "three"}));
+    auto live = make(lines, edit::Dialect::markdown);
+    EXPECT_EQ(live.print_page_at(3), "11");
+    live.replace(1, 1, {"<!-- pagebreak 20 -->"});
+    EXPECT_EQ(live.print_page_at(3), "21");
+    const auto reopened = import_as(edit::file_text(lines_of(live), live.dialect(), live.document(), "book.md"), "book.md");
+    std::vector<std::string> labels;
+    for (const auto& b : reopened.blocks)
+        if (b.kind == document::BlockKind::print_page_break) labels.push_back(b.label);
+    EXPECT_EQ(labels, (std::vector<std::string>{"20", "21"}));
+    expect_round_trip(live, "book.md");
+    // A text file's form feeds are counted too: saved as Markdown they stay counts.
+    const auto text = import_as("one\n\ftwo\n\fthree\n", "book.txt");
+    EXPECT_EQ(exporter::to_markdown(text), "one\n\n<!-- pagebreak -->\n\ntwo\n\n<!-- pagebreak -->\n\nthree\n");
 }
 
 namespace {
