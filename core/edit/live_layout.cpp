@@ -300,6 +300,18 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         }
         // What came before the restart decides the blank line before it.
         pag.set_previous_kind(previous_kind(k));
+    } else if (k > 0) {
+        // The restart page is not made yet (the entries before it end with a
+        // braille page break): its print page is the last page break's before it.
+        for (std::size_t j = k; j-- > 0;) {
+            const auto& e = entries_[j];
+            if (!e.block || e.error || e.block->kind != document::BlockKind::print_page_break) continue;
+            translate::TranslatedBlock mark;
+            mark.kind = document::BlockKind::print_page_break;
+            mark.label = e.translated.label;
+            pag.add(mark);
+            break;
+        }
     }
     std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();
@@ -351,7 +363,8 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         paged_.pages.insert(paged_.pages.end(), tail.pages.begin(), tail.pages.end());
         for (std::size_t p = resume; p < old.size(); ++p) paged_.pages.push_back(std::move(old[p]));
         warnings = tail.warnings;
-    } else if (!(base > 0 && pag.pages_closed() == 0 && pag.body_lines() == 0)) {
+    } else if (!(base > 0 && pag.pages_closed() == 0 && pag.body_lines() == 0 && pag.settled())) {
+        // (A table still open in the paginator has lines to come: finish lays it out.)
         auto tail = std::move(pag).finish();
         stats.pages_relaid = tail.pages.size();
         for (auto& p : tail.pages) paged_.pages.push_back(std::move(p));

@@ -150,7 +150,8 @@ std::string markdown_line(const document::Block& b) {
             if (b.spans.empty() || !b.spans.front().note_reference) break;
             auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());
             if (!rest.empty() && rest.front().text.starts_with(' ')) rest.front().text.erase(0, 1);
-            return "[^" + b.spans.front().text + "]: " + render_spans(rest);
+            // The note's text is read as Markdown of its own: it must not start a heading or list.
+            return "[^" + b.spans.front().text + "]: " + guard_line_start(render_spans(rest));
         }
         case document::BlockKind::table_row:
         case document::BlockKind::table_cell:
