@@ -12,14 +12,6 @@
 namespace tactus::edit {
 namespace {
 
-document::BrailleLine cells_of_unicode(const std::string& utf8) {
-    document::BrailleLine cells;
-    if (auto u = utf8_to_utf32(utf8))
-        for (char32_t c : *u)
-            if (document::Cell::is_unicode_braille(c)) cells.push_back(document::Cell::from_unicode(c));
-    return cells;
-}
-
 // A line of a Markdown table (a row or the delimiter row).
 bool starts_table_line(std::string_view line) {
     const auto t = line.find_first_not_of(" \t");
@@ -278,12 +270,22 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     layout::LayoutOptions opts = options_;
     opts.first_page_number = options_.first_page_number + static_cast<int>(base);
     layout::Paginator pag(opts, [this](int n) { return number_cells(n); });
+    if (k > 0) {
+        // The print page in effect at the restart: the last page break's before
+        // it (not the page's own: breaks after the restart at the page's top
+        // may have set that, and an inserted line now comes before them).
+        for (std::size_t j = k; j-- > 0;) {
+            const auto& e = entries_[j];
+            if (!e.block || e.error || e.block->kind != document::BlockKind::print_page_break) continue;
+            translate::TranslatedBlock mark;
+            mark.kind = document::BlockKind::print_page_break;
+            mark.label = e.translated.label;
+            pag.add(mark);  // empty body: sets the print page without drawing a separator
+            break;
+        }
+    }
     if (k > 0 && base < paged_.pages.size()) {
         const layout::Page& top = paged_.pages[base];
-        translate::TranslatedBlock mark;
-        mark.kind = document::BlockKind::print_page_break;
-        mark.label = cells_of_unicode(top.print_page);
-        pag.add(mark);  // empty body: sets the print page without drawing a separator
         const auto lines = entries_[k].lines_before;
         if (lines > 0) {
             // The body lines already on the restart page, as the page holds them.
@@ -300,18 +302,6 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         }
         // What came before the restart decides the blank line before it.
         pag.set_previous_kind(previous_kind(k));
-    } else if (k > 0) {
-        // The restart page is not made yet (the entries before it end with a
-        // braille page break): its print page is the last page break's before it.
-        for (std::size_t j = k; j-- > 0;) {
-            const auto& e = entries_[j];
-            if (!e.block || e.error || e.block->kind != document::BlockKind::print_page_break) continue;
-            translate::TranslatedBlock mark;
-            mark.kind = document::BlockKind::print_page_break;
-            mark.label = e.translated.label;
-            pag.add(mark);
-            break;
-        }
     }
     std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();

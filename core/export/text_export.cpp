@@ -316,8 +316,8 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
             ++i;
             continue;
         }
-        open.clear();
         if (!is_table_line(lines[i])) {
+            open.clear();
             block(trim(lines[i]));
             ++i;
             continue;
@@ -331,10 +331,11 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
         std::vector<std::vector<std::string>> rows;
         for (std::size_t j = i; j < end; ++j)
             if (!is_markdown_table_delimiter(lines[j])) rows.push_back(split_row(lines[j]));
-        if (rows.empty()) {  // delimiter rows alone: no table
+        if (rows.empty()) {  // delimiter rows alone: no table (nor the end of a list above)
             i = end;
             continue;
         }
+        open.clear();
         std::size_t width = 1;
         for (const auto& r : rows) width = std::max(width, r.size());
         std::string table;

@@ -185,3 +185,15 @@ TEST(LiveLayout, EditsAfterABraillePageBreakAtTheEndLayOutAsAFreshLayout) {
     ASSERT_EQ(table.paged().pages.size(), 3u);
     EXPECT_TRUE(table.paged().pages == make(lines_of(table)).paged().pages);
 }
+
+// Found the same way: a line inserted before the page breaks at the top of a
+// page took the page's print page, which those breaks set after it.
+TEST(LiveLayout, ALineInsertedBeforeThePageBreaksAtAPageTopKeepsItsPrintPage) {
+    // (The layout restarts at the third page, a sheet's front.)
+    auto live = make({"one", "<!-- braillepage -->", "two", "<!-- braillepage -->", "<!-- braillepage -->",
+                      "<!-- braillepage -->", "<!-- pagebreak 9 -->", "three"});
+    ASSERT_EQ(live.paged().pages.size(), 3u);
+    live.replace(6, 0, {"inserted"});
+    EXPECT_EQ(live.paged().pages[2].print_page, "");
+    EXPECT_TRUE(live.paged().pages == make(lines_of(live)).paged().pages);
+}
