@@ -54,6 +54,36 @@ MoveTuner::MoveTuner(const profile::PrinterProfile& p) : p_(p), ringing_(p) {
     const double f = dominant_frequency_hz(p.dynamics);
     for (auto k : {ShaperKind::none, ShaperKind::zv, ShaperKind::mzv, ShaperKind::zvd, ShaperKind::ei})
         shapers_.push_back(motion::design_shaper(k, f, p.dynamics.damping_ratio));
+    if (p.motion.shape == ProfileShape::automatic || p.motion.shaper == ShaperKind::automatic)
+        aim_steps_ = choose_aim_steps();
+}
+
+std::int32_t MoveTuner::choose_aim_steps() {
+    const auto& g = p_.geometry;
+    const double spm = p_.carriage.steps_per_mm;
+    std::vector<std::uint32_t> lengths;
+    for (double mm : {g.dot_pitch_mm, g.cell_pitch_mm - g.dot_pitch_mm, g.cell_pitch_mm}) {
+        const auto steps = static_cast<std::uint32_t>(std::lround(std::max(0.0, mm) * spm));
+        if (steps > 0 && std::find(lengths.begin(), lengths.end(), steps) == lengths.end()) lengths.push_back(steps);
+    }
+    std::int32_t best = 0;
+    double best_time = 1e300;
+    for (std::int32_t aim = 0; 1000.0 * aim / spm < target_um(); ++aim) {
+        aim_steps_ = aim;
+        cache_.clear();
+        double total = 0;
+        for (auto steps : lengths) {
+            auto t = carriage(steps);
+            if (!t) {
+                total = 1e300;
+                break;
+            }
+            total += (*t)->choice.duration_s;
+        }
+        if (total < best_time) best_time = total, best = aim;
+    }
+    cache_.clear();
+    return best;
 }
 
 const motion::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
@@ -103,7 +133,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                 if (tuned && s == 1.0 && steps > 0 && k == ShaperKind::none) {
                     Candidate r = c;
                     r.effect = ringing_.prepare(r.move);
-                    const auto ticks = ringing_.settle_after(*r.effect, target_um(), kMaxSettleTicks);
+                    const auto ticks = ringing_.settle_after(*r.effect, target_um(), kMaxSettleTicks, aim_mm());
                     if (ticks > 0) {
                         r.settle_ticks = static_cast<std::uint32_t>(ticks);
                         r.settle = static_cast<double>(ticks) / machine::kTickHz;
@@ -128,7 +158,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
         if (!c.effect) c.effect = ringing_.prepare(c.move);  // no settle: the move is the base
         Ringing::Residual res;
         if (steps > 0) {
-            res = c.settle_ticks > 0 ? ringing_.from_rest(*c.effect, c.settle) : ringing_.from_rest(*c.effect);
+            res = ringing_.from_rest(*c.effect, c.settle_ticks > 0 ? c.settle : 0.0, aim_mm());
         }
         const double worst = res.worst_um;
         const bool last = i + 1 == cands.size();
@@ -155,6 +185,9 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                                " um) is within " + fmt(1, tol) + " um";
                 if (n_rejected > 0)
                     t.choice.why += "; " + std::to_string(n_rejected) + " faster rejected: " + rejected;
+                if (aim_steps_ > 0)
+                    t.choice.why += "; the command stops " + std::to_string(aim_steps_) + " steps (" +
+                                    fmt(1, 1000.0 * aim_mm()) + " um) past the dot";
             }
             t.shape = std::move(c.move);
             t.base_duration_s = c.base_duration;

@@ -354,9 +354,16 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         pass.strikes.reserve(end - first);
         for (std::size_t k = 0; k < end - first; ++k) {
             const Hit& hit = pass.direction > 0 ? h[first + k] : h[end - 1 - k];
-            const std::int32_t target = hit.head_step;
+            // The command stops aim_steps past the dot, in the direction of the
+            // move (MoveTuner::aim_steps; 0 for table moves): a head lagging
+            // behind it reaches the dot sooner. No move when the head is on
+            // (or aimed at) the dot already. The lower bound moves dot to dot.
+            const std::int32_t dot = hit.head_step, dot_cur = head_cur_ - aim_cur_;
+            const std::int32_t aim_steps = o_.firmware ? 0 : tuner_->aim_steps();
+            std::int32_t target = head_cur_;
+            if (dot != dot_cur && dot != head_cur_) target = dot + (dot > head_cur_ ? aim_steps : -aim_steps);
             std::int32_t n = 0;
-            const double head_mm = std::abs(target - head_cur_) / p_.carriage.steps_per_mm;
+            const double head_mm = std::abs(dot - dot_cur) / p_.carriage.steps_per_mm;
             if (target != head_cur_) {
                 // The sources' reversal test on the last, current and next stops.
                 const bool reversal = static_cast<std::int64_t>(head_cur_ - head_prev_) *
@@ -366,6 +373,9 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                 head_prev_ = head_cur_;
                 head_cur_ = target;
             }
+            aim_cur_ = head_cur_ - dot;
+            // Where the command rests past the dot: the residual is |head - dot|.
+            const double off_mm = aim_cur_ / p_.carriage.steps_per_mm;
             motor_step_ += n;
             // Table moves (v3) are not tuned (no shape to choose); their
             // residual is estimated on the table's step train.
@@ -400,9 +410,9 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                 std::int64_t settle = tm.choice.settle_ticks;
                 if (n != 0) ringing_->move(*tm.settled, n > 0 ? 1 : -1);
                 else ringing_->rest_ticks(static_cast<std::uint64_t>(settle));
-                auto res = ringing_->residual();
+                auto res = ringing_->residual(off_mm);
                 if (res.worst_um > aim) {
-                    const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                    const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                     if (more < 0)
                         return fail("the head does not settle within " + std::to_string(p_.vibration.tolerance_um) +
                                         " um before strike " + std::to_string(k + 1) + " of the pass at " +
@@ -410,22 +420,22 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
                                     "field vibration.tolerance_um");
                     ringing_->rest_ticks(static_cast<std::uint64_t>(more));
                     settle += more;
-                    res = ringing_->residual();
+                    res = ringing_->residual(off_mm);
                 }
                 move_time = tm.base_duration_s + static_cast<double>(settle) / machine::kTickHz;
                 if (k == 0 && feed_time > move_time) {
                     // The carriage waits for the paper at rest: that wait settles it too.
                     ringing_->rest(feed_time - move_time);
-                    res = ringing_->residual();
+                    res = ringing_->residual(off_mm);
                     if (res.worst_um > p_.vibration.tolerance_um) {
                         // Seldom: the ringing after the longer wait is not within tolerance.
-                        const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                        const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                         if (more < 0)
                             return fail("the head does not settle before the first strike of the pass at " +
                                             std::to_string(pass.y_mm) + " mm",
                                         "field vibration.tolerance_um");
                         ringing_->rest_ticks(static_cast<std::uint64_t>(more));
-                        res = ringing_->residual();
+                        res = ringing_->residual(off_mm);
                         move_time = feed_time + static_cast<double>(more) / machine::kTickHz;
                         settle = static_cast<std::int64_t>(
                             std::ceil((move_time - tm.base_duration_s) * machine::kTickHz));
