@@ -74,8 +74,9 @@ public:
 
 private:
     // The aim (0, 1, 2, ... steps, while within target_um) for which the
-    // tuned moves of the sheet's typical lengths (dot pitch, cell pitch less
-    // dot pitch, cell pitch) take least time in all; ties to the smaller.
+    // settles after the time-optimal moves of the sheet's typical lengths (dot
+    // pitch, cell pitch less dot pitch, cell pitch) add up to least; ties to
+    // the smaller.
     std::int32_t choose_aim_steps();
     profile::PrinterProfile p_;
     std::int32_t aim_steps_ = 0;
