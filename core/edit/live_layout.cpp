@@ -500,9 +500,7 @@ std::string LiveLayout::back_translate(const document::BrailleLine& cells) const
 std::optional<document::BlockKind> LiveLayout::previous_kind(std::size_t index) const {
     for (std::size_t j = index; j-- > 0;) {
         const auto& p = entries_[j];
-        if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
-            p.block->kind == document::BlockKind::braille_page_break)
-            continue;
+        if (!p.block || p.error || !layout::sets_previous_kind(p.block->kind)) continue;
         return p.block->kind;
     }
     return std::nullopt;

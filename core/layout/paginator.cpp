@@ -314,7 +314,7 @@ void Paginator::add(const translate::TranslatedBlock& b) {
     }
     if (document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille) {
         if (blank_line_before(o_, last_kind_, b.kind)) add_blank_line();
-        last_kind_ = b.kind;
+        if (sets_previous_kind(b.kind)) last_kind_ = b.kind;
     }
     switch (b.kind) {
         case document::BlockKind::heading: {
