@@ -8,6 +8,7 @@
 #include "edit/editor_lines.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/paginator.hpp"
+#include "translate/script_check.hpp"
 
 namespace tactus::edit {
 namespace {
@@ -124,10 +125,13 @@ bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress)
         if (progress && i % 256 == 0 && progress(i, entries_.size())) return false;
     }
     paged_ = {};
+    check_script();
     relayout_from(0);
     if (progress) progress(entries_.size(), entries_.size());
     return true;
 }
+
+void LiveLayout::check_script() { script_warning_ = translate::check_script(document(), translator_.tables()); }
 
 RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
                                   std::vector<std::string> lines) {
@@ -238,6 +242,7 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
     numbers_.clear();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};
+    check_script();
     relayout_from(0);
     return {};
 }
@@ -357,7 +362,10 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         warnings = std::move(tail.warnings);
     }
     paged_.geometry = options_.geometry;
-    if (base == 0) paged_.warnings.clear();
+    if (base == 0) {
+        paged_.warnings.clear();
+        if (script_warning_) paged_.warnings.push_back(*script_warning_);
+    }
     for (auto& w : warnings)
         if (std::ranges::find(paged_.warnings, w) == paged_.warnings.end())
             paged_.warnings.push_back(std::move(w));

@@ -119,6 +119,11 @@ private:
     [[nodiscard]] std::optional<document::BlockKind> previous_kind(std::size_t index) const;
     layout::PagedDocument paged_;
     std::unordered_map<int, document::BrailleLine> numbers_;
+    // translate::check_script on the whole text, first among the warnings as
+    // in the CLI's pipeline; checked when the text is replaced whole (reset)
+    // or the table changes, not on every edit.
+    std::optional<std::string> script_warning_;
+    void check_script();
 };
 
 }  // namespace tactus::edit

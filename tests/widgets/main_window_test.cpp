@@ -68,6 +68,26 @@ private Q_SLOTS:
         QCOMPARE(w.recent_files().value(0), QFileInfo(test::sample("welcome.md")).absoluteFilePath());
     }
 
+    // Issue 13 "Bad input": a text whose script does not suit the table is
+    // warned about in the app as in the CLI, naming the better table (the app
+    // showed only the 8-dot escape warning, which names none).
+    void a_script_that_does_not_suit_the_table_names_the_better_one() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("chinese-tw.txt")));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("zh-tw.ctb")), qPrintable(w.announcer()->message()));
+        const auto english = dir.filePath(QStringLiteral("english.txt"));
+        QFile f(english);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("Braille is a tactile writing system. Teachers emboss it for their pupils every day.\n");
+        f.close();
+        QVERIFY(w.open_file_now(english));
+        QVERIFY2(!w.announcer()->message().contains(QStringLiteral("Warning")), qPrintable(w.announcer()->message()));
+        w.set_table(QStringLiteral("zh-tw.ctb"));
+        const auto said = w.announcer()->message();
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));  // the table is a setting: leave it as the other tests expect
+        QVERIFY2(said.contains(QStringLiteral("en-ueb-g2.ctb")), qPrintable(said));
+    }
+
     void status_bar_says_sheet_line_cell_print_page() {
         MainWindow w;
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
