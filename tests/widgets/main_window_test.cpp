@@ -7,6 +7,8 @@
 #include <QStandardPaths>
 #include <QJsonObject>
 #include <QLabel>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QtTest>
@@ -183,6 +185,55 @@ private Q_SLOTS:
         // Reading the PEF back gives the same pages.
         auto back = pipeline::lay_out_file(pef.toStdString(), {});
         QVERIFY(back.has_value());
+    }
+
+    // Issue 13 item 5: the app and the CLI give the same bytes for the same
+    // document, table and (default) format, compared with the real tactus-cli:
+    // Markdown structure (notes, quotes, lists, a table), a Chinese text file, a
+    // plain English text file.
+    void exports_equal_the_cli_bytes_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("table");
+        QTest::newRow("welcome.md") << test::sample("welcome.md") << QStringLiteral("en-ueb-g2.ctb");
+        QTest::newRow("structure-formats.md")
+            << QStringLiteral(TACTUS_TEST_DATA "/../golden/structure/structure-formats.md") << QStringLiteral("en-ueb-g2.ctb");
+        QTest::newRow("chinese-tw.txt") << test::sample("chinese-tw.txt") << QStringLiteral("zh-tw.ctb");
+        QTest::newRow("english.txt") << QString() << QStringLiteral("en-ueb-g1.ctb");
+    }
+    void exports_equal_the_cli_bytes() {
+        QFETCH(QString, file);
+        QFETCH(QString, table);
+        if (file.isEmpty()) {
+            file = dir.filePath(QStringLiteral("english.txt"));
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            for (int i = 0; i < 12; ++i)
+                f.write("Braille & print: # and * in 2026; the quick brown fox jumps over the lazy dog.\n\n");
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(file));
+        w.set_table(table);
+        for (const auto* format : {"brf", "pef"}) {
+            const auto app = dir.filePath(QStringLiteral("app.%1").arg(QLatin1String(format)));
+            const auto cli = dir.filePath(QStringLiteral("cli.%1").arg(QLatin1String(format)));
+            QVERIFY(w.export_to(app));
+            QProcess p;
+            p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QLatin1String(format),
+                                                 QStringLiteral("-t"), table, file, QStringLiteral("-o"), cli});
+            QVERIFY(p.waitForFinished(60000));
+            QCOMPARE(p.exitCode(), 0);
+            QFile a(app), c(cli);
+            QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+            auto app_bytes = a.readAll(), cli_bytes = c.readAll();
+            if (QLatin1String(format) == QLatin1String("pef")) {
+                // The title comes from a file name, which differs here by design.
+                const QRegularExpression title(QStringLiteral("<dc:title>[^<]*</dc:title>"));
+                app_bytes = QString::fromUtf8(app_bytes).remove(title).toUtf8();
+                cli_bytes = QString::fromUtf8(cli_bytes).remove(title).toUtf8();
+            }
+            QCOMPARE(app_bytes, cli_bytes);
+        }
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));
     }
 
     void save_and_reopen_round_trip() {
