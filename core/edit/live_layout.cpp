@@ -7,6 +7,7 @@
 #include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
 #include "layout/line_breaker.hpp"
+#include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
 #include "translate/script_check.hpp"
 
@@ -126,9 +127,19 @@ bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress)
     }
     paged_ = {};
     check_script();
+    decide_ready_braille();
     relayout_from(0);
     if (progress) progress(entries_.size(), entries_.size());
     return true;
+}
+
+void LiveLayout::decide_ready_braille() {
+    ready_braille_ = layout::is_ready_braille(document());
+    options_ = requested_;
+    if (ready_braille_) {
+        options_.page_numbers = layout::PageNumberPosition::none;
+        options_.print_page_indicators = false;
+    }
 }
 
 void LiveLayout::check_script() { script_warning_ = translate::check_script(document(), translator_.tables()); }
@@ -249,7 +260,8 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
 
 Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
-    options_ = std::move(options);
+    requested_ = std::move(options);
+    decide_ready_braille();
     // Braille lines wrap to the new width, and a word too long for the new line
     // is divided again (the division is made at translation).
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);

@@ -236,6 +236,37 @@ private Q_SLOTS:
         w.set_table(QStringLiteral("en-ueb-g2.ctb"));
     }
 
+    // Issue 13 item 1 in the app: ready-made braille opened and exported again
+    // is page for page, as the CLI does it; the app added its own braille page
+    // numbers, so a full BRF page ran over and its pages doubled.
+    void ready_braille_is_exported_page_for_page_data() {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("brf") << QStringLiteral(TACTUS_TEST_DATA "/../golden/expected/welcome-interpoint.brf");
+        QTest::newRow("pef") << QStringLiteral(TACTUS_TEST_DATA "/../golden/expected/structure-md.pef");
+    }
+    void ready_braille_is_exported_page_for_page() {
+        QFETCH(QString, file);
+        MainWindow w;
+        QVERIFY(w.open_file_now(file));
+        const auto app = dir.filePath(QStringLiteral("again.brf"));
+        const auto cli = dir.filePath(QStringLiteral("cli-again.brf"));
+        QVERIFY(w.export_to(app));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("brf"), file,
+                                             QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile a(app), c(cli);
+        QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+        const auto app_bytes = a.readAll();
+        QCOMPARE(app_bytes, c.readAll());
+        if (file.endsWith(QLatin1String(".brf"))) {
+            QFile source(file);
+            QVERIFY(source.open(QIODevice::ReadOnly));
+            QCOMPARE(app_bytes, source.readAll());
+        }
+    }
+
     void save_and_reopen_round_trip() {
         MainWindow w;
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
