@@ -238,9 +238,10 @@ TEST(StructureLayout, ATableContinuedOnANewPageRepeatsItsHeadings) {
     EXPECT_EQ(herons, 8);
 }
 
-// The note reference indicator ⠶⠶ is UEB's: other codes write the number in
-// parentheses as their table writes them (no 8-dot escapes).
-TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
+// The note reference indicator ⠶⠶ is UEB's and EBAE's (see
+// TheNoteReferenceIndicatorIsTheCodesOwn): Chinese writes the number in
+// parentheses as its table writes them (no 8-dot escapes).
+TEST(StructureLayout, ChineseHasNoNoteReferenceIndicator) {
     const std::vector<Block> blocks{
         text_block(BlockKind::paragraph, 0, {Span{"\u4eca\u5929"}, reference("1")}),
         text_block(BlockKind::note, 0, {reference("1"), Span{" \u8a3b"}})};
