@@ -24,6 +24,7 @@
 #include <span>
 #include <vector>
 
+#include "controller/line_end.hpp"
 #include "machine/firmware_tables.hpp"
 #include "machine/ram_budget.hpp"
 #include "encode/frame.hpp"
@@ -87,18 +88,18 @@ inline constexpr std::uint8_t kFirmwareMajor = 1;
 inline constexpr std::uint8_t kFirmwareMinor = 0;
 }  // namespace v3
 
-class SimController {
+class SimController final : public LineEnd {
 public:
     explicit SimController(SimOptions options = {});
 
     // Bytes from the host, arriving at simulated time `now` (seconds).
-    void receive(std::span<const std::uint8_t> bytes, double now);
+    void receive(std::span<const std::uint8_t> bytes, double now) override;
     // Runs the executor up to `now`.
-    void advance(double now);
+    void advance(double now) override;
     // When something next happens on its own (a step, a strike, a timeout), if anything.
-    [[nodiscard]] std::optional<double> next_event() const;
+    [[nodiscard]] std::optional<double> next_event() const override;
     // Reply bytes produced so far (and clears them).
-    std::vector<std::uint8_t> take_output();
+    std::vector<std::uint8_t> take_output() override;
 
     // Fault injection.
     void inject_paper_out_at_sheet(std::uint16_t sheet);  // sheet N has no paper when loaded
@@ -108,8 +109,8 @@ public:
     void set_paper_reload(double seconds) { options_.reload_paper_after_s = seconds; }
     void inject_limit_switch_at_strike(std::size_t nth);  // trips before the nth strike (1-based)
     void inject_hammer_fault_at_strike(std::size_t nth);
-    void warm_reset(double now);   // watchdog/RST: registers reset, RAM (progress) kept
-    void power_loss(double now);   // power cycle: RAM lost
+    void warm_reset(double now) override;   // watchdog/RST: registers reset, RAM (progress) kept
+    void power_loss(double now) override;   // power cycle: RAM lost
     void reset_at_strike(std::size_t nth, bool keep_ram);  // reset just after the nth strike
     // From the moment the job-wide executed-pass count reaches `executed`, every
     // reply is dropped until a new session (HELLO with a new nonce): the ACK of

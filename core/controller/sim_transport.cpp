@@ -9,7 +9,10 @@ namespace tactus::controller {
 
 SimTransport::SimTransport(std::shared_ptr<controller::SimController> controller,
                            SimLineOptions options)
-    : controller_(std::move(controller)), options_(options), rng_(options.noise.seed) {}
+    : controller_(controller), sim_(controller.get()), options_(options), rng_(options.noise.seed) {}
+
+SimTransport::SimTransport(std::shared_ptr<LineEnd> end, SimLineOptions options)
+    : controller_(std::move(end)), options_(options), rng_(options.noise.seed) {}
 
 double SimTransport::bytes_per_second() const { return options_.baud / options_.bits_per_byte; }
 

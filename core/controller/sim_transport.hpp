@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "controller/line_end.hpp"
 #include "controller/sim_controller.hpp"
 #include "transport/byte_stream.hpp"
 #include "transport/device.hpp"
@@ -45,6 +46,8 @@ SimLineOptions line_options(const transport::SimSettings& settings);
 class SimTransport final : public transport::ByteStream {
 public:
     SimTransport(std::shared_ptr<controller::SimController> controller, SimLineOptions options);
+    // Any other far end (the reference firmware's C compiled natively).
+    SimTransport(std::shared_ptr<LineEnd> end, SimLineOptions options);
 
     Result<void> write(std::span<const std::uint8_t> bytes) override;
     Result<std::size_t> read(std::span<std::uint8_t> buffer,
@@ -77,7 +80,8 @@ public:
     // simulated clock does not race to catch up: the clock is re-anchored.
     [[nodiscard]] std::optional<std::chrono::steady_clock::time_point> due();
 
-    [[nodiscard]] controller::SimController& controller() { return *controller_; }
+    // The C++ simulated controller at the far end (only when it is one).
+    [[nodiscard]] controller::SimController& controller() { return *sim_; }
     [[nodiscard]] std::size_t line_bytes_to_controller() const { return tx_count_; }
     [[nodiscard]] std::size_t bytes_corrupted() const { return corrupted_; }
 
@@ -96,7 +100,8 @@ private:
         return t >= w.first && t < w.second;
     }
 
-    std::shared_ptr<controller::SimController> controller_;
+    std::shared_ptr<LineEnd> controller_;
+    controller::SimController* sim_ = nullptr;
     SimLineOptions options_;
     std::mt19937_64 rng_;
     double now_ = 0;

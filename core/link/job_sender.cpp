@@ -325,10 +325,8 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
             resize_frames(js.payload_limit / 2);
             step = resend_all();
         }
-        if (step && now - last_rx > seconds(opt.silence_timeout)) {
-            step = fail(ErrorKind::device, "no answer from the controller for " +
-                            std::to_string(opt.silence_timeout.count()) + " ms",
-                        device);
+        if (step && silent_too_long(last_rx)) {
+            step = fail(ErrorKind::device, "no answer from the controller for " + quiet_text(false), device);
         }
         // Nothing outstanding: poll, so a lost ACK never stalls the window and
         // the controller's keep-alive watchdog stays quiet. Poll faster while

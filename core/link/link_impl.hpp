@@ -56,6 +56,11 @@ struct Link::Impl {
     bool saw_power_loss = false;
     std::optional<Error> refused;  // bad_payload / unknown_type: a protocol mismatch
     double last_rx = 0;
+    // When a frame last arrived that failed its CRC: the controller is there
+    // (a noisy line garbles its answers), so the silence timeout does not
+    // apply; the give-up still bounds the wait (issue 12 item 8: at 2e-2 per
+    // byte, sessions failed to open after 3 s of garbled answers).
+    double last_garbled = -1e300;
     double last_tx = 0;
     // When the controller last took a frame of ours (or executed a pass: the
     // job's own bookkeeping), for the bounded give-up.
@@ -91,6 +96,36 @@ struct Link::Impl {
         const double bps = s->bytes_per_second();
         const double line = bps > 0 ? (inflight + 2 * encode::kMaxFrame) / bps : 0;
         return seconds(opt.retransmit_timeout) + line;
+    }
+
+    // When the controller was last heard from: a valid frame, or one a noisy
+    // line garbled. The silence timeout counts from here.
+    [[nodiscard]] double last_heard() const { return std::max(last_rx, last_garbled); }
+    // How long the controller may stay silent before it counts as gone (the
+    // controller says nothing to a frame it cannot read, so on a noisy line
+    // silence proves little):
+    // * the silence timeout;
+    // * for a request (HELLO, CONFIGURE, ...) at least kSilentRetries
+    //   retransmission timeouts: at 9600 baud 3 s is 7 tries, and at 2e-2 per
+    //   byte a 24-byte CONFIGURE is lost on its way 7 times running in about
+    //   1 session of 6;
+    // * the give-up, once the line has garbled a frame within the give-up.
+    static constexpr double kSilentRetries = 12;
+    [[nodiscard]] double quiet_allowed(bool request) const {
+        const bool noisy = s->now() - last_garbled < seconds(opt.give_up_after);
+        double quiet = seconds(opt.silence_timeout);
+        if (request) quiet = std::max(quiet, kSilentRetries * rto());
+        if (noisy) quiet = std::max(quiet, seconds(opt.give_up_after));
+        return quiet;
+    }
+    [[nodiscard]] bool silent_too_long(double since, bool request = false) const {
+        return s->now() - std::max(since, last_heard()) > quiet_allowed(request);
+    }
+    // "3.0 s": how long the controller was given (an error message's).
+    [[nodiscard]] std::string quiet_text(bool request = true) const {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.1f s", quiet_allowed(request));
+        return b;
     }
 
     Result<void> raw_write(const std::vector<std::uint8_t>& bytes) {
@@ -269,6 +304,7 @@ struct Link::Impl {
         std::vector<Frame> frames;
         if (*n == 0 && timeout_s >= 0.05) decoder.idle(frames);  // quiet line: drop false starts
         decoder.push(std::span(buf).first(*n), frames);
+        if (decoder.stats().crc_errors > stats.crc_errors) last_garbled = s->now();
         stats.crc_errors = decoder.stats().crc_errors;
         for (const auto& f : frames)
             if (auto r = handle(f); !r) return r;
@@ -286,10 +322,8 @@ struct Link::Impl {
             // Silent for the silence timeout: no answer. A controller that
             // answers (a noisy line loses most frames) is given until the
             // give-up to take this one.
-            if (s->now() - std::max(start, last_rx) > seconds(opt.silence_timeout))
-                return fail(ErrorKind::device, "no answer from the controller within " +
-                                std::to_string(opt.silence_timeout.count()) + " ms",
-                            device);
+            if (silent_too_long(start, true))
+                return fail(ErrorKind::device, "no answer from the controller within " + quiet_text(), device);
             if (s->now() - start > seconds(opt.give_up_after))
                 return fail(ErrorKind::device, "the controller answers but took no frame in " +
                                 std::to_string(opt.give_up_after.count() / 1000) +
@@ -327,14 +361,20 @@ struct Link::Impl {
         const auto payload = encode::encode_hello({nonce, version});
         unacked.push_back({seq, FrameType::hello, payload, s->now()});
         const double start = s->now();
+        const std::size_t garbled_before = decoder.stats().crc_errors;
         if (auto r = transmit(unacked.back()); !r) return std::unexpected(r.error());
         while (!last_hello) {
-            // As transact: silent for the silence timeout, or no session by the give-up.
-            if (s->now() - std::max(start, last_rx) > seconds(opt.silence_timeout) ||
-                s->now() - start > seconds(opt.give_up_after))
-                return fail(ErrorKind::device, "no answer to HELLO within " +
-                                std::to_string(opt.silence_timeout.count()) +
-                                " ms: is the embosser on, the cable in, and the baud rate right?",
+            // As transact: silent for the silence timeout, or no session by
+            // the give-up (the controller answers, but the line garbles it).
+            if (silent_too_long(start, true))
+                return fail(ErrorKind::device, "no answer to HELLO within " + quiet_text() +
+                                ": is the embosser on, the cable in, and the baud rate right?",
+                            device);
+            if (s->now() - start > seconds(opt.give_up_after))
+                return fail(ErrorKind::device, "no valid answer to HELLO in " +
+                                std::to_string(opt.give_up_after.count() / 1000) + " s, " +
+                                std::to_string(decoder.stats().crc_errors - garbled_before) +
+                                " frames arrived corrupted: is the line very noisy, or the baud rate wrong?",
                             device);
             if (s->now() >= unacked.front().sent_at + rto()) {
                 ++stats.timeouts;
@@ -374,11 +414,30 @@ struct Link::Impl {
             versions = {encode::kProtocolV3, encode::kProtocolVersion};
         else
             versions = {encode::kProtocolVersion, encode::kProtocolV3};
-        for (const auto v : versions) {
-            auto h = hello_as(v);
-            if (!h) return std::unexpected(h.error());
-            if (*h) return **h;
-        }
+        // A controller reports its power-on reset until a session opens:
+        // in the NAK refusing a version, and in the stale copies of it that
+        // arrive after. That is its state before this session, not a power
+        // loss during the job (which is seen before a restart's HELLO).
+        const bool power_loss_before = saw_power_loss;
+        // Every version twice: a refusal that came late (a copy held in the
+        // firmware's decoder behind a false start) can still meet the next
+        // offer; a controller that speaks neither refuses both again.
+        for (int round = 0; round < 2; ++round)
+            for (const auto v : versions) {
+                auto h = hello_as(v);
+                if (!h) return std::unexpected(h.error());
+                if (*h) {
+                    saw_power_loss = power_loss_before;
+                    return **h;
+                }
+                // Refused: the answers to copies of that HELLO (re-sent, or
+                // duplicated by the line) may still be on their way, and one
+                // taken as refusing the next version failed the session (1
+                // run in 1,500 at 2e-2). Let them arrive first; they are ignored.
+                const double until = s->now() + rto();
+                while (s->now() < until)
+                    if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
+            }
         std::string offered;
         for (const auto v : versions) offered += (offered.empty() ? "" : " and ") + std::to_string(v);
         return fail(ErrorKind::protocol,

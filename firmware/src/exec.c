@@ -143,12 +143,12 @@ static void pass_begin(void) {
     fw_flags |= FL_PASS_ACTIVE;
     xs = X_FEED;
     if (!(p_flags & PF_NO_FEED) && feed != 0) {
-        uint8_t neg = feed < 0;
-        uint16_t steps = times((uint16_t)(neg ? -feed : feed), F_GRID);
-        if ((__bit)neg != f_neg) steps += F_BACKLASH;
-        f_neg = neg;
-        FDIR = !neg;
-        fw_feed += neg ? -(int16_t)steps : (int16_t)steps;
+        uint8_t back = feed < 0; /* not `neg`: that is the carriage's */
+        uint16_t steps = times((uint16_t)(back ? -feed : feed), F_GRID);
+        if ((__bit)back != f_neg) steps += F_BACKLASH;
+        f_neg = back;
+        FDIR = !back;
+        fw_feed += back ? -(int16_t)steps : (int16_t)steps;
         move_feed(steps);
     }
 }

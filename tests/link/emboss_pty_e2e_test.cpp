@@ -24,6 +24,7 @@
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
 #include "../common/process.hpp"
+#include "../common/pty_emboss.hpp"
 #include "../common/strike_log.hpp"
 #include "../common/test_plans.hpp"
 
@@ -58,21 +59,15 @@ protected:
     void TearDown() override { fs::remove_all(dir_); }
 
     Result run(std::vector<std::string> sim_faults, const std::string& baud = "115200") {
-        std::vector<std::string> sim{TACTUS_CLI, "sim", "--pty", "--baud", baud, "--time-scale", "40",
-                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
-        sim.insert(sim.end(), sim_faults.begin(), sim_faults.end());
-        Process server(sim);
-        const std::string pty = server.read_line(std::chrono::seconds(30));
-        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
-        Process client({TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string(), "--device",
-                        "pty:" + pty + "?baud=" + baud});
-        Result r;
-        r.output = client.read_all();
-        r.exit_code = client.wait();
-        server.signal(SIGTERM);
-        server.wait();
-        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
-        return r;
+        test::PtyEmboss e;
+        e.sim = {TACTUS_CLI, "sim", "--pty", "--baud", baud, "--time-scale", "40"};
+        e.sim.insert(e.sim.end(), sim_faults.begin(), sim_faults.end());
+        e.emboss = {TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string()};
+        e.baud = baud;
+        e.strike_log = dir_ / "strikes.jsonl";
+        e.merge_output = false;
+        const auto p = test::emboss_through_pty(e);
+        return Result{p.exit_code, p.output, p.log};
     }
 
     fs::path dir_;
@@ -186,39 +181,16 @@ TEST_F(PtyEndToEnd, EmbossOnTheInProcessSimulator) {
 class PtyEndToEndV3 : public PtyEndToEnd {
 protected:
     static std::string note() { return std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md"; }
-    plan::JobPlan planned() {
-        const auto prof = profile::default_profile();
-        pipeline::PipelineOptions o;
-        o.layout.geometry.interpoint = prof.geometry.interpoint;
-        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-        auto doc = pipeline::lay_out_file(note(), o);
-        EXPECT_TRUE(doc) << doc.error().to_string();
-        plan::PlanOptions po;
-        auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-        EXPECT_TRUE(tables) << tables.error().to_string();
-        po.firmware = *tables;
-        auto job = plan::plan_job(*doc, prof, po);
-        EXPECT_TRUE(job) << job.error().to_string();
-        return job ? *job : plan::JobPlan{};
-    }
+    plan::JobPlan planned() { return test::plan_with_firmware_tables(note(), TACTUS_FIRMWARE_TABLES); }
     Result emboss(std::vector<std::string> sim_extra) {
-        std::vector<std::string> sim{TACTUS_CLI, "sim", "--pty", "--baud", "9600", "--time-scale", "40",
-                                     "--firmware-tables", TACTUS_FIRMWARE_TABLES,
-                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
-        sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
-        Process server(sim);
-        const std::string pty = server.read_line(std::chrono::seconds(30));
-        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
-        auto client = cli_merged({TACTUS_CLI, "emboss", note(), "--device", "pty:" + pty + "?baud=9600",
-                                  "--firmware-tables", TACTUS_FIRMWARE_TABLES});
-        Result r;
-        r.output = client.read_all();
-        r.exit_code = client.wait();
-        server.signal(SIGTERM);
-        server.wait();
-        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
-        return r;
+        test::PtyEmboss e;
+        e.sim = {TACTUS_CLI, "sim", "--pty", "--baud", "9600", "--time-scale", "40",
+                 "--firmware-tables", TACTUS_FIRMWARE_TABLES};
+        e.sim.insert(e.sim.end(), sim_extra.begin(), sim_extra.end());
+        e.emboss = {TACTUS_CLI, "emboss", note(), "--firmware-tables", TACTUS_FIRMWARE_TABLES};
+        e.strike_log = dir_ / "strikes.jsonl";
+        const auto p = test::emboss_through_pty(e);
+        return Result{p.exit_code, p.output, p.log};
     }
 };
 

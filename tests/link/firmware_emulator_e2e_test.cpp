@@ -28,6 +28,7 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "../common/process.hpp"
+#include "../common/pty_emboss.hpp"
 #include "../common/strike_log.hpp"
 
 namespace tactus {
@@ -94,39 +95,17 @@ protected:
     void TearDown() override { fs::remove_all(dir_); }
 
     // The plan the CLI makes for the firmware: the same library calls.
-    plan::JobPlan planned() {
-        const auto prof = profile::default_profile();
-        pipeline::PipelineOptions o;
-        o.layout.geometry.interpoint = prof.geometry.interpoint;
-        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-        auto doc = pipeline::lay_out_file(kNote, o);
-        EXPECT_TRUE(doc) << doc.error().to_string();
-        plan::PlanOptions po;
-        auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_EMU_TABLES);
-        EXPECT_TRUE(tables) << tables.error().to_string();
-        po.firmware = *tables;
-        auto job = plan::plan_job(*doc, prof, po);
-        EXPECT_TRUE(job) << job.error().to_string();
-        return job ? *job : plan::JobPlan{};
-    }
+    plan::JobPlan planned() { return test::plan_with_firmware_tables(kNote, TACTUS_FIRMWARE_EMU_TABLES); }
 
     EmulatorRun emboss(const std::string& tables, std::vector<std::string> sim_extra = {}) {
-        std::vector<std::string> sim{TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty",
-                                     "--strike-log", (dir_ / "strikes.jsonl").string()};
-        sim.insert(sim.end(), sim_extra.begin(), sim_extra.end());
-        Process server(sim, (dir_ / "sim.err").string());
-        const std::string pty = server.read_line(std::chrono::seconds(30));
-        EXPECT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
-        Process client({TACTUS_CLI, "emboss", kNote, "--device", "pty:" + pty + "?baud=9600",
-                        "--firmware-tables", tables},
-                       Process::Options{{}, true, {}});
-        EmulatorRun r;
-        r.output = client.read_all();
-        r.exit_code = client.wait();
-        server.signal(SIGTERM);
-        server.wait();
-        r.log = test::read_strike_log((dir_ / "strikes.jsonl").string());
+        test::PtyEmboss e;
+        e.sim = {TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty"};
+        e.sim.insert(e.sim.end(), sim_extra.begin(), sim_extra.end());
+        e.emboss = {TACTUS_CLI, "emboss", kNote, "--firmware-tables", tables};
+        e.strike_log = dir_ / "strikes.jsonl";
+        e.sim_stderr = (dir_ / "sim.err").string();
+        const auto p = test::emboss_through_pty(e);
+        EmulatorRun r{p.exit_code, p.output, p.log, {}};
         for (const auto& k : r.log) r.times.push_back(k.time_s);
         return r;
     }
