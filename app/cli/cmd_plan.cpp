@@ -91,8 +91,10 @@ void run_plan(const PlanArgs& a) {
     }
     std::size_t passes = 0;
     std::size_t total_bytes = 0;
+    // Sheets planned ahead on the machine's cores, handed out in order (the same plan).
+    plan::SheetQueue sheets(planner, doc);
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
-        auto sheet = planner.plan_sheet(doc, s);
+        auto sheet = sheets.next();
         if (!sheet) fail_with(exit_bad_input, located(sheet.error(), a.layout.file));
         passes += sheet->passes.size();
         nlohmann::json sj = a.json ? plan::sheet_to_json(*sheet) : nlohmann::json{};

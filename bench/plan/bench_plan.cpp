@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Plans and estimates a whole book (the KJV from Debian's bible-kjv) on the
 // default profile, in the same run as its layout, and one page alone.
-// Figures: pages per second; planning time / layout time (goal <= 1); the
+// Figures: pages per second; planning time / layout time (goal <= 1), the
+// plan made on one thread and through a SheetQueue (the same plan, checked); the
 // embossing-time ratio plan / lower bound (goal <= 1.10); the speed-up over a
 // naive plan (one direction, a stop at every dot column).
 // Usage: bench_plan BOOK.txt [TABLE]
 #include <sys/resource.h>
 
+#include <bit>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -50,9 +53,16 @@ int main(int argc, char** argv) {
 
     // Layout and plan alternate, three rounds each, and the best of each is
     // compared: on a shared machine a single run of either can be slowed by
-    // other work, and alternating exposes both to the same conditions.
+    // other work, and alternating exposes both to the same conditions. The
+    // plan is made twice per round: one sheet at a time on this thread
+    // (Planner::plan_sheet), and through a SheetQueue (sheets planned ahead on
+    // the machine's cores, as the CLI and the spool plan); the two must agree
+    // to the bit (a digest of every strike's time, step and residual).
     constexpr int rounds = 3;
-    double layout_s = 1e300, plan_s = 1e300, layout_cpu = 1e300, plan_cpu = 1e300;
+    double layout_s = 1e300, layout_cpu = 1e300;
+    double plan_s[2] = {1e300, 1e300}, plan_cpu[2] = {1e300, 1e300};  // [serial, queue]
+    std::uint64_t digest[2] = {0, 0};
+    unsigned threads = 0;
     std::optional<layout::PagedDocument> doc;
     std::optional<plan::Planner> planner;
     std::size_t passes = 0, max_pass_bytes = 0;
@@ -70,24 +80,44 @@ int main(int argc, char** argv) {
         layout_cpu = std::min(layout_cpu, cpu_seconds() - c0);
         doc.emplace(std::move(*laid));
 
-        // The whole book, one sheet at a time (as the CLI and the spool do).
-        t0 = Clock::now();
-        c0 = cpu_seconds();
-        auto made = plan::Planner::create(prof);
-        if (!made) return 1;
-        passes = 0, max_pass_bytes = 0;
-        for (std::size_t s = 1; s <= doc->sheet_count(); ++s) {
-            auto sheet = made->plan_sheet(*doc, s);
-            if (!sheet) {
-                std::fprintf(stderr, "%s\n", sheet.error().to_string().c_str());
-                return 1;
+        for (int queued = 0; queued < 2; ++queued) {
+            // The whole book, one sheet at a time (the plan of a sheet freed before the next).
+            planner.reset();
+            t0 = Clock::now();
+            c0 = cpu_seconds();
+            auto made = plan::Planner::create(prof);
+            if (!made) return 1;
+            std::optional<plan::SheetQueue> queue;
+            if (queued) queue.emplace(*made, *doc);
+            passes = 0, max_pass_bytes = 0;
+            std::uint64_t h = 1469598103934665603ULL;
+            const auto mix = [&h](std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; };
+            for (std::size_t s = 1; s <= doc->sheet_count(); ++s) {
+                auto sheet = queue ? queue->next() : made->plan_sheet(*doc, s);
+                if (!sheet) {
+                    std::fprintf(stderr, "%s\n", sheet.error().to_string().c_str());
+                    return 1;
+                }
+                passes += sheet->passes.size();
+                for (const auto& p : sheet->passes) {
+                    max_pass_bytes = std::max(max_pass_bytes, p.segments * 6);
+                    for (std::size_t k = 0; k < p.strikes.size(); ++k) {
+                        mix(std::bit_cast<std::uint64_t>(p.strikes[k].time_s));
+                        mix(static_cast<std::uint64_t>(p.strikes[k].carriage_step));
+                        mix(std::bit_cast<std::uint64_t>(p.strikes[k].worst_residual_um));
+                        mix(p.moves[k].settle_ticks);
+                        mix(p.moves[k].segments.size());
+                    }
+                }
             }
-            passes += sheet->passes.size();
-            for (const auto& p : sheet->passes) max_pass_bytes = std::max(max_pass_bytes, p.segments * 6);
+            if (queue) threads = queue->threads();
+            queue.reset();
+            plan_s[queued] = std::min(plan_s[queued], seconds_since(t0));
+            plan_cpu[queued] = std::min(plan_cpu[queued], cpu_seconds() - c0);
+            mix(std::bit_cast<std::uint64_t>(made->totals().duration_s));
+            digest[queued] = h;
+            planner.emplace(std::move(*made));
         }
-        plan_s = std::min(plan_s, seconds_since(t0));
-        plan_cpu = std::min(plan_cpu, cpu_seconds() - c0);
-        planner.emplace(std::move(*made));
     }
     const plan::JobPlan t = planner->totals();  // a copy: the warm single-page runs below add to the totals
 
@@ -121,13 +151,20 @@ int main(int argc, char** argv) {
     std::printf("book:                 %s: %zu pages on %zu sheets, %zu passes, %zu strikes\n", argv[1],
                 doc->pages.size(), doc->sheet_count(), passes, t.strikes);
     std::printf("layout:               %.3f s (best of %d, alternating with the plan)\n", layout_s, rounds);
-    std::printf("plan + estimate:      %.3f s = %.0f pages/s (best of %d)\n", plan_s,
-                static_cast<double>(doc->pages.size()) / plan_s, rounds);
-    std::printf("ratio plan/layout:    %.3f (goal <= 1.0)\n", plan_s / layout_s);
+    std::printf("plan + estimate:      %.3f s = %.0f pages/s, one thread (best of %d)\n", plan_s[0],
+                static_cast<double>(doc->pages.size()) / plan_s[0], rounds);
+    std::printf("plan + estimate:      %.3f s = %.0f pages/s, SheetQueue on %u threads (best of %d)\n", plan_s[1],
+                static_cast<double>(doc->pages.size()) / plan_s[1], threads, rounds);
+    std::printf("same plan:            %s (digest %016llx, %016llx)\n", digest[0] == digest[1] ? "yes" : "NO",
+                static_cast<unsigned long long>(digest[0]), static_cast<unsigned long long>(digest[1]));
+    std::printf("ratio plan/layout:    %.3f with the queue, %.3f on one thread (goal <= 1.0)\n", plan_s[1] / layout_s,
+                plan_s[0] / layout_s);
     // CPU time is steadier on a shared machine; the layout's includes its
     // translation workers (processes, run in parallel: its wall time is less).
-    std::printf("cpu layout, plan:     %.3f s, %.3f s (best of %d): plan/layout %.3f\n", layout_cpu, plan_cpu, rounds,
-                plan_cpu / layout_cpu);
+    std::printf("cpu layout, plan:     %.3f s; %.3f s with the queue, %.3f s on one thread (best of %d)\n",
+                layout_cpu, plan_cpu[1], plan_cpu[0], rounds);
+    std::printf("cpu plan/layout:      %.3f with the queue, %.3f on one thread\n", plan_cpu[1] / layout_cpu,
+                plan_cpu[0] / layout_cpu);
     std::printf("one page (cold):      %.2f ms = %.0f pages/s; embosses in %.1f s\n", page_s * 1e3,
                 1.0 / page_s, page_emboss);
     std::printf("one page (warm):      %.3f ms = %.0f pages/s\n", page_warm_s * 1e3, 1.0 / page_warm_s);

@@ -61,6 +61,10 @@ struct Block {
     std::vector<Span> spans;                 // text kinds (is_text_kind)
     std::vector<BrailleLine> braille_lines;  // kind == braille
     std::string label;                       // print_page_break: page number as printed
+    // print_page_break: the label was counted on from the page before
+    // (document/print_page.hpp), not given in the source; a writer writes the
+    // break without it, so the pages after a changed label count on from it.
+    bool label_counted = false;
     int source_line = 0;                     // 1-based line in the source, 0 if unknown
     int span = 1;                            // table_cell: columns covered, from `level` on
     bool operator==(const Block&) const = default;

@@ -8,6 +8,7 @@
 #include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
+#include "import/markdown_footnotes.hpp"
 
 namespace tactus::edit {
 namespace {
@@ -37,55 +38,19 @@ std::optional<std::string> comment_argument(std::string_view s, std::string_view
     return std::string(rest);
 }
 
-std::vector<document::Span> parse_inline_markdown(std::string_view content);
-
-// The length of "[^label]" at the start of `s`, 0 if there is none.
-std::size_t note_reference_length(std::string_view s) {
-    if (!s.starts_with("[^")) return 0;
-    const auto close = s.find(']');
-    if (close == std::string_view::npos || close == 2 ||
-        s.substr(2, close - 2).find_first_of(" \t[") != std::string_view::npos)
-        return 0;
-    return close + 1;
-}
-
 // Inline Markdown (emphasis, escapes) and note references "[^label]" (an
-// escaped "\[^1]" is text). The text between references is read on its own.
+// escaped "\[^1]" is text), read by core's importer as the text of a
+// paragraph, so the editor and a saved file read a line alike (a reference is
+// a mark of its own there, and emphasis around it opens and closes as it does
+// in the file). Plain text takes the fast path, which is nearly every line of a
+// real book.
 std::vector<document::Span> parse_inline(std::string_view content) {
-    std::vector<document::Span> out;
-    // A piece between references keeps the spaces at its ends (Markdown would trim them).
-    const auto piece = [&out](std::string_view text) {
-        const auto lead = text.find_first_not_of(' ');
-        if (lead == std::string_view::npos) {
-            if (!text.empty()) out.push_back(document::Span{std::string(text)});
-            return;
-        }
-        const auto tail = text.size() - 1 - text.find_last_not_of(' ');
-        if (lead > 0) out.push_back(document::Span{std::string(lead, ' ')});
-        for (auto& span : parse_inline_markdown(text.substr(lead, text.size() - lead - tail)))
-            out.push_back(std::move(span));
-        if (tail > 0) out.push_back(document::Span{std::string(tail, ' ')});
-    };
-    std::size_t from = 0;
-    for (std::size_t i = content.find("[^"); i != std::string_view::npos; i = content.find("[^", i + 1)) {
-        const auto n = note_reference_length(content.substr(i));
-        if (n == 0 || (i > 0 && content[i - 1] == '\\')) continue;
-        piece(content.substr(from, i - from));
-        document::Span reference{std::string(content.substr(i + 2, n - 3))};
-        reference.note_reference = true;
-        out.push_back(std::move(reference));
-        from = i + n;
-        i = from - 1;
-    }
-    if (from == 0) return parse_inline_markdown(content);
-    piece(content.substr(from));
-    return out;
-}
-
-// Emphasis and escapes through core's importer; plain text takes the fast
-// path, which is nearly every line of a real book.
-std::vector<document::Span> parse_inline_markdown(std::string_view content) {
-    if (content.find_first_of(kInlineSpecials) == std::string_view::npos)
+    // The references' labels, in order; the importer numbers them 1, 2, 3 so.
+    std::vector<std::string> labels;
+    for (auto i = content.find("[^"); i != std::string_view::npos; i = content.find("[^", i + 1))
+        if (const auto id = import::note_reference_id(content, i); id && std::ranges::find(labels, *id) == labels.end())
+            labels.emplace_back(*id);
+    if (labels.empty() && content.find_first_of(kInlineSpecials) == std::string_view::npos)
         return content.empty() ? std::vector<document::Span>{} : std::vector<document::Span>{document::Span{std::string(content)}};
     import::ImportOptions options;
     options.format = import::SourceFormat::markdown;
@@ -94,15 +59,28 @@ std::vector<document::Span> parse_inline_markdown(std::string_view content) {
     // or "# *x*" from starting a list or a heading (it is Unicode whitespace, so
     // emphasis opens after it as at a line start), and is taken off again.
     constexpr std::string_view kGuard = "\u00a0";
-    auto doc = import::import_bytes(std::string(kGuard) + std::string(content), "line.md", options);
+    std::string source = std::string(kGuard) + std::string(content);
+    // Every reference in a line is one: its note is on a line of its own.
+    for (const auto& label : labels) source += "\n\n[^" + label + "]: x";
+    auto doc = import::import_bytes(source, "line.md", options);
     if (!doc) return {document::Span{std::string(content)}};
     std::vector<document::Span> spans;
-    for (const auto& b : doc->blocks)
-        for (const auto& s : b.spans) {
-            if (!spans.empty() && spans.back().emphasis == s.emphasis) spans.back().text += s.text;
-            else spans.push_back(s);
+    for (const auto& b : doc->blocks) {
+        if (b.kind == document::BlockKind::note) continue;
+        for (auto s : b.spans) {
+            if (s.note_reference) {
+                // The importer's number back to the line's own label.
+                const auto n = static_cast<std::size_t>(std::stoul(s.text));
+                if (n >= 1 && n <= labels.size()) s.text = labels[n - 1];
+                spans.push_back(std::move(s));
+            } else if (!spans.empty() && !spans.back().note_reference && spans.back().emphasis == s.emphasis) {
+                spans.back().text += s.text;
+            } else {
+                spans.push_back(std::move(s));
+            }
         }
-    if (!spans.empty() && spans.front().text.starts_with(kGuard)) {
+    }
+    if (!spans.empty() && !spans.front().note_reference && spans.front().text.starts_with(kGuard)) {
         spans.front().text.erase(0, kGuard.size());
         if (spans.front().text.empty()) spans.erase(spans.begin());
     }
@@ -153,6 +131,18 @@ std::vector<document::Block> parse_table_cells(std::string_view line) {
 }
 
 namespace {
+
+// A list item's or a note's text starts at its first word, as in Markdown (a
+// tag dropped in front of it leaves no space).
+std::vector<document::Span> text_from_first_word(std::vector<document::Span> spans) {
+    while (!spans.empty() && !spans.front().note_reference) {
+        auto& first = spans.front().text;
+        first.erase(0, std::min(first.size(), first.find_first_not_of(" \t")));
+        if (!first.empty()) break;
+        spans.erase(spans.begin());
+    }
+    return spans;
+}
 
 bool visible(const document::Block& b) {
     return std::ranges::any_of(b.spans, [](const document::Span& s) {
@@ -250,7 +240,8 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
             reference.note_reference = true;
             b.spans.push_back(std::move(reference));
             b.spans.push_back(document::Span{" "});
-            for (auto& s : parse_inline(trim(t.substr(close + 2)))) b.spans.push_back(std::move(s));
+            // The note's text starts at its first word, as the importer joins it.
+            for (auto& s : text_from_first_word(parse_inline(trim(t.substr(close + 2))))) b.spans.push_back(std::move(s));
             return b;
         }
     }
@@ -268,18 +259,7 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         document::Block text;
         text.spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
         if (!visible(text)) return std::nullopt;  // an empty item
-        // The item's text starts at its first word, as in Markdown (a tag
-        // dropped in front of it leaves no space).
-        const auto item_text = [&] {
-            auto spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
-            while (!spans.empty() && !spans.front().note_reference) {
-                auto& first = spans.front().text;
-                first.erase(0, std::min(first.size(), first.find_first_not_of(" \t")));
-                if (!first.empty()) break;
-                spans.erase(spans.begin());
-            }
-            return spans;
-        };
+        const auto item_text = [&] { return text_from_first_word(parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)))); };
         if (bullet) {
             // Bullets are kept as the bullet sign, as core's Markdown import does.
             b.spans = item_text();
@@ -341,6 +321,10 @@ bool risky_start(std::string_view line, document::BlockKind kind) {
         }
         case document::BlockKind::quote:
             while (t.starts_with('>')) t = trim(t.substr(1));
+            break;
+        case document::BlockKind::note:
+            // "[^1]: text": the importer reads a note's text as Markdown of its own.
+            t = trim(t.substr(std::min(t.find("]:") + 2, t.size())));
             break;
         default:
             return false;

@@ -12,14 +12,6 @@
 namespace tactus::edit {
 namespace {
 
-document::BrailleLine cells_of_unicode(const std::string& utf8) {
-    document::BrailleLine cells;
-    if (auto u = utf8_to_utf32(utf8))
-        for (char32_t c : *u)
-            if (document::Cell::is_unicode_braille(c)) cells.push_back(document::Cell::from_unicode(c));
-    return cells;
-}
-
 // A line of a Markdown table (a row or the delimiter row).
 bool starts_table_line(std::string_view line) {
     const auto t = line.find_first_not_of(" \t");
@@ -94,11 +86,13 @@ void LiveLayout::translate_entry(std::size_t i) {
             }
             if (b->kind != document::BlockKind::braille_page_break) started = true;
         }
-        if (!started) {
+        auto label = document::page_break_label({}, current, started);
+        if (!label) {
             e.block.reset();
             return;
         }
-        e.block->label = document::next_print_page(current);
+        e.block->label = std::move(*label);
+        e.block->label_counted = true;
     }
     auto tb = translate::translate_block(*e.block, translator_,
                               layout::word_room(options_, e.block->kind, e.block->level));
@@ -191,9 +185,10 @@ void LiveLayout::set_dialect(Dialect dialect) {
 }
 
 document::Document LiveLayout::document() const {
-    // As the importer reads the saved file: a braille page break after all text
-    // is dropped, a print page break kept (DocumentBuilder::finish); an
-    // unlabelled one before any text is no block here already.
+    // As the importer reads the saved file: page breaks after all text are
+    // kept (DocumentBuilder::finish: <!-- braillepage --> is written out, not
+    // implied); an unlabelled print page break before any text is no block
+    // here already.
     // A table (a run of table lines) has as many columns as its widest row, as
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
@@ -226,8 +221,6 @@ document::Document LiveLayout::document() const {
             }
         }
     }
-    while (!doc.blocks.empty() && doc.blocks.back().kind == document::BlockKind::braille_page_break)
-        doc.blocks.pop_back();
     return doc;
 }
 
@@ -277,12 +270,22 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     layout::LayoutOptions opts = options_;
     opts.first_page_number = options_.first_page_number + static_cast<int>(base);
     layout::Paginator pag(opts, [this](int n) { return number_cells(n); });
+    if (k > 0) {
+        // The print page in effect at the restart: the last page break's before
+        // it (not the page's own: breaks after the restart at the page's top
+        // may have set that, and an inserted line now comes before them).
+        for (std::size_t j = k; j-- > 0;) {
+            const auto& e = entries_[j];
+            if (!e.block || e.error || e.block->kind != document::BlockKind::print_page_break) continue;
+            translate::TranslatedBlock mark;
+            mark.kind = document::BlockKind::print_page_break;
+            mark.label = e.translated.label;
+            pag.add(mark);  // empty body: sets the print page without drawing a separator
+            break;
+        }
+    }
     if (k > 0 && base < paged_.pages.size()) {
         const layout::Page& top = paged_.pages[base];
-        translate::TranslatedBlock mark;
-        mark.kind = document::BlockKind::print_page_break;
-        mark.label = cells_of_unicode(top.print_page);
-        pag.add(mark);  // empty body: sets the print page without drawing a separator
         const auto lines = entries_[k].lines_before;
         if (lines > 0) {
             // The body lines already on the restart page, as the page holds them.
@@ -350,7 +353,8 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         paged_.pages.insert(paged_.pages.end(), tail.pages.begin(), tail.pages.end());
         for (std::size_t p = resume; p < old.size(); ++p) paged_.pages.push_back(std::move(old[p]));
         warnings = tail.warnings;
-    } else if (!(base > 0 && pag.pages_closed() == 0 && pag.body_lines() == 0)) {
+    } else if (!(base > 0 && pag.pages_closed() == 0 && pag.body_lines() == 0 && pag.settled())) {
+        // (A table still open in the paginator has lines to come: finish lays it out.)
         auto tail = std::move(pag).finish();
         stats.pages_relaid = tail.pages.size();
         for (auto& p : tail.pages) paged_.pages.push_back(std::move(p));

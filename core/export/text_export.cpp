@@ -150,13 +150,15 @@ std::string markdown_line(const document::Block& b) {
             if (b.spans.empty() || !b.spans.front().note_reference) break;
             auto rest = std::vector<document::Span>(b.spans.begin() + 1, b.spans.end());
             if (!rest.empty() && rest.front().text.starts_with(' ')) rest.front().text.erase(0, 1);
-            return "[^" + b.spans.front().text + "]: " + render_spans(rest);
+            // The note's text is read as Markdown of its own: it must not start a heading or list.
+            return "[^" + b.spans.front().text + "]: " + guard_line_start(render_spans(rest));
         }
         case document::BlockKind::table_row:
         case document::BlockKind::table_cell:
             return {};
         case document::BlockKind::print_page_break:
-            return b.label.empty() ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
+            // A counted label is left for the reader to count again (document/print_page.hpp).
+            return b.label.empty() || b.label_counted ? "<!-- pagebreak -->" : "<!-- pagebreak " + b.label + " -->";
         case document::BlockKind::braille_page_break:
             return "<!-- braillepage -->";
         case document::BlockKind::braille:
@@ -314,8 +316,8 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
             ++i;
             continue;
         }
-        open.clear();
         if (!is_table_line(lines[i])) {
+            open.clear();
             block(trim(lines[i]));
             ++i;
             continue;
@@ -329,10 +331,11 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
         std::vector<std::vector<std::string>> rows;
         for (std::size_t j = i; j < end; ++j)
             if (!is_markdown_table_delimiter(lines[j])) rows.push_back(split_row(lines[j]));
-        if (rows.empty()) {  // delimiter rows alone: no table
+        if (rows.empty()) {  // delimiter rows alone: no table (nor the end of a list above)
             i = end;
             continue;
         }
+        open.clear();
         std::size_t width = 1;
         for (const auto& r : rows) width = std::max(width, r.size());
         std::string table;

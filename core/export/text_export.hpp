@@ -17,7 +17,8 @@ namespace tactus::exporter {
 
 // One block as one line of Markdown, escaped so that core's Markdown importer
 // (and the editor's line dialect) reads the block back: "## Heading", "  - item",
-// "3. item", "> quote", "[^1]: note", "<!-- pagebreak 12 -->", a paragraph with
+// "3. item", "> quote", "[^1]: note", "<!-- pagebreak 12 -->" (a label counted on
+// from the page before is left out: "<!-- pagebreak -->"), a paragraph with
 // *italic* and **bold**. Table blocks give "" (see markdown_lines).
 std::string markdown_line(const document::Block& block);
 

@@ -156,25 +156,29 @@ void DocumentBuilder::flush_notes() {
 
 void DocumentBuilder::print_page_break(int source_line, std::string label) {
     end();
-    // Nothing printed yet: an unlabelled break would only add an empty page,
-    // while a label says where the print pages start (it is kept).
-    if (!has_content_ && blocks_.empty() && label.empty()) return;
-    // One numbering rule for importers, the editor and its layout (document/print_page.hpp).
-    print_page_ = document::print_page_label(label, print_page_);
+    // One numbering rule for importers, the editor and its layout
+    // (document/print_page.hpp): nothing printed yet, an unlabelled break
+    // starts no page, while a label says where the print pages start.
+    auto own = document::page_break_label(label, print_page_, has_content_ || print_pages_started_);
+    if (!own) return;
+    print_page_ = std::move(*own);
+    print_pages_started_ = true;
     document::Block b;
     b.kind = document::BlockKind::print_page_break;
     b.label = print_page_;
+    b.label_counted = label.empty();
     b.source_line = source_line;
     push(std::move(b));
 }
 
-void DocumentBuilder::braille_page_break(int source_line) {
+void DocumentBuilder::braille_page_break(int source_line, BrailleBreak kind) {
     end();
-    if (!has_content_) return;
+    if (!has_content_ && kind == BrailleBreak::implied) return;
     document::Block b;
     b.kind = document::BlockKind::braille_page_break;
     b.source_line = source_line;
     push(std::move(b));
+    if (kind == BrailleBreak::written && !full()) written_breaks_.push_back(blocks_.size() - 1);
 }
 
 void DocumentBuilder::braille_block(std::vector<document::BrailleLine> lines, int source_line) {
@@ -206,9 +210,13 @@ Result<document::Document> DocumentBuilder::finish() {
                     overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
     // A print page break after all text is kept: saving and opening again must
     // not lose it (issue 13), and it adds nothing to the braille (the paginator
-    // draws no separator line for it). A braille page break after all text
-    // breaks nothing (every BRF page ends with one) and is dropped.
-    while (!blocks_.empty() && blocks_.back().kind == document::BlockKind::braille_page_break) blocks_.pop_back();
+    // draws no separator line for it). An implied braille page break after all
+    // text breaks nothing (every BRF page ends with one) and is dropped; one
+    // the source writes out (Markdown's <!-- braillepage -->) is kept, as a
+    // print page break is (it adds no page: Paginator::break_page).
+    while (!blocks_.empty() && blocks_.back().kind == document::BlockKind::braille_page_break &&
+           !std::ranges::binary_search(written_breaks_, blocks_.size() - 1))
+        blocks_.pop_back();
     document::Document doc;
     doc.blocks = std::move(blocks_);
     blocks_ = {};

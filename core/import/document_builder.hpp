@@ -58,7 +58,12 @@ public:
 
     // `label` empty = the next print page (document::next_print_page; the first page is "1").
     void print_page_break(int source_line, std::string label = {});
-    void braille_page_break(int source_line);
+    // A braille page break the source implies (a BRF form feed, a PEF page)
+    // is dropped before any text and after all text, where it breaks nothing;
+    // one it writes out (Markdown's <!-- braillepage -->) is kept there too,
+    // so saving and opening again does not lose it (issue 13).
+    enum class BrailleBreak { implied, written };
+    void braille_page_break(int source_line, BrailleBreak kind = BrailleBreak::implied);
     void braille_block(std::vector<document::BrailleLine> lines, int source_line);
 
     // Blocks kept so far (the open one not counted).
@@ -75,6 +80,8 @@ private:
     document::Block current_;
     bool open_ = false;
     bool has_content_ = false;  // a non-break block has been kept
+    bool print_pages_started_ = false;  // a print page break has been kept
+    std::vector<std::size_t> written_breaks_;  // indices of BrailleBreak::written breaks, ascending
     std::string print_page_{document::first_print_page};  // the print page in effect
     int overflow_line_ = -1;
     std::vector<document::Block> notes_;  // notes waiting for their block's end

@@ -5,6 +5,22 @@
 
 #include "common/utf8.hpp"
 
+namespace tactus::import {
+
+std::optional<std::string_view> note_reference_id(std::string_view text, std::size_t at) {
+    if (at > text.size() || !text.substr(at).starts_with("[^")) return std::nullopt;
+    std::size_t backslashes = 0;
+    while (backslashes < at && text[at - 1 - backslashes] == '\\') ++backslashes;
+    if (backslashes % 2 == 1) return std::nullopt;
+    const auto close = text.find(']', at + 2);
+    if (close == std::string_view::npos || close == at + 2) return std::nullopt;
+    const auto id = text.substr(at + 2, close - at - 2);
+    if (id.find_first_of(" \t[") != std::string_view::npos) return std::nullopt;
+    return id;
+}
+
+}  // namespace tactus::import
+
 namespace tactus::import::detail {
 namespace {
 
@@ -105,17 +121,16 @@ PreparedMarkdown prepare_footnotes(std::string_view md) {
         while (!in_fence && !by_id.empty()) {
             const auto open = l.find("[^", pos);
             if (open == std::string_view::npos) break;
-            const auto close = l.find(']', open + 2);
-            if (close == std::string_view::npos) break;
-            const auto it = by_id.find(l.substr(open + 2, close - open - 2));
-            if (it == by_id.end() || (open > 0 && l[open - 1] == '\\')) {  // undefined, or escaped "\[^1]"
+            const auto id = note_reference_id(l, open);
+            const auto it = id ? by_id.find(*id) : by_id.end();
+            if (it == by_id.end()) {  // none, undefined, or escaped "\[^1]"
                 out.text.append(l.substr(pos, open + 2 - pos));
                 pos = open + 2;
                 continue;
             }
             out.text.append(l.substr(pos, open - pos));
             out.text += footnote_marker(it->second);
-            pos = close + 1;
+            pos = open + id->size() + 3;
         }
         out.text.append(l.substr(pos));
     }

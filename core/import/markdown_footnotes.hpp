@@ -12,6 +12,17 @@
 #include <string_view>
 #include <vector>
 
+namespace tactus::import {
+
+// The id of a note reference "[^id]" at `at` in `text` (an id has no space,
+// tab or bracket), or none: nothing of the kind there, or its "[" escaped
+// (after an odd run of backslashes: "\[^1]" is text, "\\[^1]" a backslash
+// and a reference). The one reading of a reference, for the importer and the
+// editor's line dialect.
+std::optional<std::string_view> note_reference_id(std::string_view text, std::size_t at);
+
+}  // namespace tactus::import
+
 namespace tactus::import::detail {
 
 struct MarkdownFootnote {

@@ -292,7 +292,7 @@ private:
     }
 
     void reference(std::size_t index) {
-        if (!builder_.is_open()) open_text_block();
+        begin_text();
         int& number = note_numbers_[index];
         const bool first = number == 0;
         if (first) number = ++notes_referenced_;
@@ -314,14 +314,20 @@ private:
         builder_.end_note();
     }
 
-    void add_text(std::string_view s, std::string_view where) {
-        if (s.empty()) return;
+    // The open block, with a list item's number or bullet first (before a
+    // reference too, when the item's text starts with one).
+    void begin_text() {
         if (!builder_.is_open()) open_text_block();
-        builder_.note_line(line_of(where.data()));
         if (item_pending_ && builder_.open_kind() == document::BlockKind::list_item) {
             item_pending_ = false;
             builder_.add_text(item_prefix_);
         }
+    }
+
+    void add_text(std::string_view s, std::string_view where) {
+        if (s.empty()) return;
+        begin_text();
+        builder_.note_line(line_of(where.data()));
         const auto emphasis = static_cast<std::uint8_t>(
             (italic_ > 0 ? document::emphasis_italic : 0) | (bold_ > 0 ? document::emphasis_bold : 0) |
             (underline_ > 0 ? document::emphasis_underline : 0));
@@ -340,7 +346,7 @@ private:
                 builder_.print_page_break(line, std::string(label));
             } else if (body == "braillepage") {
                 // Written by the editor for a forced braille page (a BRF form feed).
-                builder_.braille_page_break(line);
+                builder_.braille_page_break(line, DocumentBuilder::BrailleBreak::written);
             }
             return;  // any other comment is not content
         }

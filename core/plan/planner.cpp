@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <condition_variable>
+#include <deque>
 #include <mutex>
+#include <thread>
 
 #include "plan/geometry.hpp"
 #include "motion/motion.hpp"
@@ -141,6 +144,19 @@ Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, c
     return &sorted;
 }
 
+// The carriage steps from `cur` to `target`: the sources' reversal test on
+// the last, current and next stops (a reversal takes up the backlash).
+// Moves the stops on (prev, cur) when the head moves.
+std::int32_t head_move(std::int32_t& prev, std::int32_t& cur, std::int32_t target, std::int32_t backlash) {
+    if (target == cur) return 0;
+    const bool reversal = static_cast<std::int64_t>(cur - prev) * static_cast<std::int64_t>(target - cur) < 0;
+    const int dir = target > cur ? 1 : -1;
+    const std::int32_t n = target - cur + (reversal ? dir * backlash : 0);
+    prev = cur;
+    cur = target;
+    return n;
+}
+
 constexpr std::uint64_t kMaxSettleTicks = static_cast<std::uint64_t>(0.5 * machine::kTickHz);  // half a second
 
 motion::Limits limits(const profile::Axis& a) { return {a.v_max_mm_s, a.a_max_mm_s2, a.j_max_mm_s3}; }
@@ -247,16 +263,31 @@ Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOpti
     return Planner(p, o);
 }
 
+struct Planner::MoveCache {
+    std::mutex mutex;
+    std::unordered_map<std::uint32_t, motion::StepMove> moves;  // by carriage steps
+};
+
 Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const motion::MoveShape& shape) {
     if (steps >= carriage_cache_.size()) carriage_cache_.resize(steps + 1);
     auto& known = carriage_cache_[steps];
-    if (!known && o_.firmware) {
+    if (!known && shared_moves_) {
+        const std::lock_guard lock(shared_moves_->mutex);
+        if (auto it = shared_moves_->moves.find(steps); it != shared_moves_->moves.end()) known = it->second;
+    }
+    if (known) return *known;
+    if (o_.firmware) {
         known = motion::table_move(o_.firmware->carriage, static_cast<std::int32_t>(steps), strike_.settle_ticks);
-    } else if (!known) {
+    } else {
         auto m = motion::encode_move(shape, static_cast<std::int32_t>(steps), p_.carriage.steps_per_mm,
                              p_.motion.step_tolerance);
         if (!m) return std::unexpected(located(m.error(), "carriage"));
         known = std::move(*m);
+    }
+    if (shared_moves_) {
+        // The same move whoever encodes it (its tuned shape is the same): the first one stays.
+        const std::lock_guard lock(shared_moves_->mutex);
+        shared_moves_->moves.emplace(steps, *known);
     }
     return *known;
 }
@@ -306,14 +337,26 @@ Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::fe
     return std::pair{&it->second.first, &it->second.second};
 }
 
-Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number) {
+Result<const std::vector<Hit>*> Planner::sheet_hits(const layout::PagedDocument& doc, std::size_t sheet_number) {
     if (o_.check_layout && doc.geometry.interpoint != p_.geometry.interpoint)
         return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
                     "field geometry.interpoint");
     if (!hit_table_) hit_table_ = std::make_shared<const HitTable>(p_, carriage_axis_, feed_axis_);
-    auto hits = collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout, hit_table_.get());
+    return collect_hits(p_, doc, sheet_number, carriage_axis_, feed_axis_, o_.check_layout, hit_table_.get());
+}
+
+double Planner::dwell_time() const {
+    return o_.firmware ? static_cast<double>(strike_.hammer_ticks) / machine::kTickHz : p_.head.dwell_s;
+}
+
+Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::size_t sheet_number) {
+    auto hits = sheet_hits(doc, sheet_number);
     if (!hits) return std::unexpected(hits.error());
+    return plan_hits(sheet_number, **hits);
+}
+
+Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector<Hit>& h) {
     SheetPlan sheet;
     sheet.index = sheet_number;
     const auto backlash = carriage_axis_.steps_for(p_.carriage.backlash_mm);
@@ -323,11 +366,10 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     // event before it, and times settle and hammer from the timer too
     // (firmware/PROTOCOL-v3.md, "Timing"), so these sums are its clock.
     const double gap = o_.firmware ? ticks(o_.firmware->start_gap_ticks) : 0.0;
-    const double dwell = o_.firmware ? ticks(strike_.hammer_ticks) : p_.head.dwell_s;
+    const double dwell = dwell_time();
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line
     // Loading a sheet takes seconds: the head starts each sheet at rest.
     ringing_->reset();
-    const auto& h = **hits;
     for (std::size_t first = 0; first < h.size();) {
         std::size_t end = first;
         while (end < h.size() && h[end].feed_step == h[first].feed_step) ++end;
@@ -355,17 +397,8 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
         for (std::size_t k = 0; k < end - first; ++k) {
             const Hit& hit = pass.direction > 0 ? h[first + k] : h[end - 1 - k];
             const std::int32_t target = hit.head_step;
-            std::int32_t n = 0;
             const double head_mm = std::abs(target - head_cur_) / p_.carriage.steps_per_mm;
-            if (target != head_cur_) {
-                // The sources' reversal test on the last, current and next stops.
-                const bool reversal = static_cast<std::int64_t>(head_cur_ - head_prev_) *
-                                          static_cast<std::int64_t>(target - head_cur_) < 0;
-                const int dir = target > head_cur_ ? 1 : -1;
-                n = target - head_cur_ + (reversal ? dir * backlash : 0);
-                head_prev_ = head_cur_;
-                head_cur_ = target;
-            }
+            const std::int32_t n = head_move(head_prev_, head_cur_, target, backlash);
             motor_step_ += n;
             // Table moves (v3) are not tuned (no shape to choose); their
             // residual is estimated on the table's step train.
@@ -443,18 +476,21 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
             sm->steps = n;
             pass.segments += sm->segments.size();
             const double bound = motion::jerk_min_time(head_mm, carriage_lim);
+            double lead = 0;  // what the clock advances before the strike
             if (k == 0 && o_.firmware) {
                 // The firmware feeds first, then moves the carriage.
-                t += feed_time + move_time;
+                lead = feed_time + move_time;
                 pass.lower_bound_s += std::max(feed_bound, bound);
             } else if (k == 0) {
                 // The feed and the carriage's first move run at the same time.
-                t += std::max(feed_time, move_time);
+                lead = std::max(feed_time, move_time);
                 pass.lower_bound_s += std::max(feed_bound, bound);
             } else {
-                t += move_time;
+                lead = move_time;
                 pass.lower_bound_s += bound;
             }
+            t += lead;
+            if (leads_) leads_->push_back(lead);
             pass.lower_bound_s += dwell;
             Strike s;
             s.hammer = hammer_for(hit.side);
@@ -488,14 +524,242 @@ Result<SheetPlan> Planner::plan_sheet(const layout::PagedDocument& doc, std::siz
     return sheet;
 }
 
+struct SheetQueue::Impl {
+    // What crosses sheets, but the clock: the carriage's last two stops (the
+    // backlash rule), its step counter, the next pass's sweep direction.
+    struct Machine {
+        std::int32_t head_prev = 0, head_cur = 0, motor_step = 0;
+        int next_direction = +1;
+        bool operator==(const Machine&) const = default;
+    };
+    struct Job {
+        std::size_t sheet = 0;
+        Machine start, end;
+        std::vector<Hit> hits;
+        std::optional<Error> error;  // collecting its dots failed
+        // The tuned moves it uses (tuned on the calling thread).
+        std::vector<std::pair<std::uint32_t, const estimate::TunedMove*>> tuned;
+        bool taken = false, done = false;
+        std::optional<Result<SheetPlan>> result;
+        std::vector<double> leads;  // what the clock advances before each strike
+        JobPlan totals;             // this sheet's part of the totals
+        Machine after;              // the worker's machine state after it
+    };
+
+    Planner& planner;
+    const layout::PagedDocument& doc;
+    std::size_t next_sheet;     // the next to hand out
+    std::size_t next_queued;    // the next to collect and queue
+    Machine ahead;              // the machine after the last sheet queued
+    std::size_t window = 0;     // sheets queued ahead at most
+    std::vector<std::uint8_t> seen;  // by carriage steps: listed for the job being queued
+    std::mutex mutex;
+    std::condition_variable work, finished;
+    std::deque<std::unique_ptr<Job>> jobs;  // queued, in sheet order
+    bool stopping = false;
+    std::vector<std::jthread> workers;  // last: stopped and joined before the rest goes
+
+    Impl(Planner& pl, const layout::PagedDocument& d, std::size_t first)
+        : planner(pl), doc(d), next_sheet(first), next_queued(first) {
+        ahead = {planner.head_prev_, planner.head_cur_, planner.motor_step_, planner.next_direction_};
+    }
+
+    static Machine state_of(const Planner& p) { return {p.head_prev_, p.head_cur_, p.motor_step_, p.next_direction_}; }
+
+    // Collects the next sheet's dots, carries the machine state through its
+    // passes (the same head_move, the same pass order as plan_hits), tunes
+    // the moves it needs that are new, in the serial plan's order, and queues it.
+    void queue_next() {
+        auto job = std::make_unique<Job>();
+        job->sheet = next_queued++;
+        job->start = ahead;
+        auto hits = planner.sheet_hits(doc, job->sheet);
+        if (!hits) {
+            job->error = hits.error();
+        } else {
+            job->hits = **hits;
+            const auto& h = job->hits;
+            const auto backlash = planner.carriage_axis_.steps_for(planner.p_.carriage.backlash_mm);
+            const bool bidirectional = planner.p_.motion.bidirectional;
+            const bool tuned = !planner.o_.firmware;
+            auto& table = planner.tuned_;
+            for (std::size_t first = 0; first < h.size();) {
+                std::size_t end = first;
+                while (end < h.size() && h[end].feed_step == h[first].feed_step) ++end;
+                const int direction = bidirectional ? ahead.next_direction : +1;
+                if (bidirectional) ahead.next_direction = -ahead.next_direction;
+                for (std::size_t k = 0; k < end - first; ++k) {
+                    const Hit& hit = direction > 0 ? h[first + k] : h[end - 1 - k];
+                    const std::int32_t n = head_move(ahead.head_prev, ahead.head_cur, hit.head_step, backlash);
+                    ahead.motor_step += n;
+                    if (!tuned) continue;
+                    const auto steps = static_cast<std::uint32_t>(std::abs(n));
+                    if (steps >= table.size()) table.resize(steps + 1, nullptr);
+                    if (!table[steps]) {
+                        // A move that cannot be tuned is left to the worker, which fails on it where plan_sheet does.
+                        if (auto t = planner.tuner_->carriage(steps)) table[steps] = *t;
+                        else continue;
+                    }
+                    if (steps >= seen.size()) seen.resize(steps + 1, 0);
+                    if (!seen[steps]) {
+                        seen[steps] = 1;
+                        job->tuned.emplace_back(steps, table[steps]);
+                    }
+                }
+                first = end;
+            }
+            for (const auto& [steps, move] : job->tuned) seen[steps] = 0;
+        }
+        job->end = ahead;
+        {
+            const std::lock_guard lock(mutex);
+            jobs.push_back(std::move(job));
+        }
+        work.notify_one();
+    }
+
+    void run() {
+        std::optional<Planner> own;  // made on this thread
+        for (;;) {
+            Job* job = nullptr;
+            {
+                std::unique_lock lock(mutex);
+                work.wait(lock, [&] {
+                    if (stopping) return true;
+                    for (const auto& j : jobs)
+                        if (!j->taken) return true;
+                    return false;
+                });
+                if (stopping) return;
+                for (const auto& j : jobs)
+                    if (!j->taken) {
+                        job = j.get();
+                        break;
+                    }
+                job->taken = true;
+            }
+            if (!own) {
+                own.emplace(Planner(planner.p_, planner.o_));
+                own->shared_moves_ = planner.shared_moves_;
+            }
+            Planner& w = *own;
+            w.head_prev_ = job->start.head_prev;
+            w.head_cur_ = job->start.head_cur;
+            w.motor_step_ = job->start.motor_step;
+            w.next_direction_ = job->start.next_direction;
+            w.clock_s_ = 0;
+            w.totals_ = {};
+            for (const auto& [steps, move] : job->tuned) {
+                if (steps >= w.tuned_.size()) w.tuned_.resize(steps + 1, nullptr);
+                w.tuned_[steps] = move;
+            }
+            w.leads_ = &job->leads;
+            Result<SheetPlan> r = job->error ? Result<SheetPlan>(std::unexpected(*job->error))
+                                             : w.plan_hits(job->sheet, job->hits);
+            w.leads_ = nullptr;
+            job->totals = w.totals_;
+            job->after = state_of(w);
+            job->hits = {};
+            {
+                const std::lock_guard lock(mutex);
+                job->result = std::move(r);
+                job->done = true;
+            }
+            finished.notify_all();
+        }
+    }
+
+    void stop() {
+        {
+            const std::lock_guard lock(mutex);
+            stopping = true;
+        }
+        work.notify_all();
+        workers.clear();  // joins
+    }
+};
+
+SheetQueue::SheetQueue(Planner& planner, const layout::PagedDocument& doc, std::size_t first_sheet,
+                       unsigned threads)
+    : impl_(std::make_unique<Impl>(planner, doc, first_sheet)) {
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t sheets = doc.sheet_count() >= first_sheet ? doc.sheet_count() - first_sheet + 1 : 0;
+    // A few sheets are not worth a planner per thread (each tunes nothing,
+    // but sets up its own head models): plan_sheet on the calling thread.
+    if (threads < 2 || sheets < kMinSheets) return;
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, sheets));
+    if (!planner.shared_moves_) planner.shared_moves_ = std::make_shared<Planner::MoveCache>();
+    impl_->window = 3 * static_cast<std::size_t>(threads);
+    for (unsigned i = 0; i < threads; ++i) impl_->workers.emplace_back([this] { impl_->run(); });
+}
+
+SheetQueue::~SheetQueue() { impl_->stop(); }
+
+unsigned SheetQueue::threads() const { return static_cast<unsigned>(impl_->workers.size()); }
+
+Result<SheetPlan> SheetQueue::next() {
+    auto& q = *impl_;
+    const std::size_t last = q.doc.sheet_count();
+    if (q.workers.empty() || q.next_sheet > last) return q.planner.plan_sheet(q.doc, q.next_sheet++);
+    while (q.next_queued <= last && q.next_queued < q.next_sheet + q.window) q.queue_next();
+    std::unique_ptr<Impl::Job> job;
+    {
+        std::unique_lock lock(q.mutex);
+        q.finished.wait(lock, [&] { return q.jobs.front()->done; });
+        job = std::move(q.jobs.front());
+        q.jobs.pop_front();
+    }
+    ++q.next_sheet;
+    // Keep the workers busy while the caller uses this sheet.
+    if (q.next_queued <= last) q.queue_next();
+    auto& r = *job->result;
+    if (!r) return std::unexpected(r.error());
+    if (job->after != job->end)
+        return fail("sheet " + std::to_string(job->sheet) +
+                        ": planned ahead from a machine state its sheets before did not leave (a bug)",
+                    "plan");
+    // The clock, as plan_hits advances it: pass by pass, strike by strike.
+    Planner& p = q.planner;
+    SheetPlan& sheet = *r;
+    const double dwell = p.dwell_time();
+    std::size_t i = 0;
+    sheet.duration_s = 0;
+    for (auto& pass : sheet.passes) {
+        const double t0 = p.clock_s_;
+        double t = t0;
+        for (auto& s : pass.strikes) {
+            t += job->leads[i++];
+            s.time_s = t;
+            t += dwell;
+        }
+        pass.duration_s = t - t0;
+        p.clock_s_ = t;
+        sheet.duration_s += pass.duration_s;
+    }
+    const JobPlan& part = job->totals;
+    p.totals_.strikes += part.strikes;
+    p.totals_.segments += part.segments;
+    p.totals_.strikes_over_tolerance += part.strikes_over_tolerance;
+    p.totals_.max_residual_um = std::max(p.totals_.max_residual_um, part.max_residual_um);
+    p.totals_.max_worst_residual_um = std::max(p.totals_.max_worst_residual_um, part.max_worst_residual_um);
+    p.totals_.duration_s += sheet.duration_s;
+    p.totals_.lower_bound_s += sheet.lower_bound_s;
+    p.head_prev_ = job->end.head_prev;
+    p.head_cur_ = job->end.head_cur;
+    p.motor_step_ = job->end.motor_step;
+    p.next_direction_ = job->end.next_direction;
+    return std::move(r);
+}
+
 Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
-                         const PlanOptions& o) {
+                         const PlanOptions& o, unsigned threads) {
     auto planner = Planner::create(p, o);
     if (!planner) return std::unexpected(planner.error());
     std::vector<SheetPlan> sheets;
     std::size_t passes = 0;
+    SheetQueue queue(*planner, doc, 1, threads);
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
-        auto sheet = planner->plan_sheet(doc, s);
+        auto sheet = queue.next();
         if (!sheet) return std::unexpected(sheet.error());
         passes += sheet->passes.size();
         if (o.max_passes && passes > o.max_passes)

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 #include "common/result.hpp"
 #include "estimate/tune.hpp"
@@ -93,7 +94,14 @@ public:
     struct HitTable;
 
 private:
+    friend class SheetQueue;
     Planner(const profile::PrinterProfile& p, const PlanOptions& o);
+    // The sheet's dots, sorted (a buffer of this thread), after the checks plan_sheet makes.
+    Result<const std::vector<Hit>*> sheet_hits(const layout::PagedDocument& doc, std::size_t sheet_number);
+    // plan_sheet on those dots.
+    Result<SheetPlan> plan_hits(std::size_t sheet_number, const std::vector<Hit>& h);
+    // The hammer dwell, as the plan's clock counts it.
+    [[nodiscard]] double dwell_time() const;
     Result<motion::StepMove> carriage_steps(std::uint32_t steps, const motion::MoveShape& shape);
     Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> feed_move(std::uint32_t steps);
     const estimate::TuneChoice& table_move_choice(std::uint32_t steps, const motion::StepMove& m);
@@ -108,6 +116,9 @@ private:
     std::vector<const estimate::TunedMove*> tuned_;  // by carriage steps: the tuner's choices, looked up once
     motion::StepAxis carriage_axis_, feed_axis_;
     std::vector<std::optional<motion::StepMove>> carriage_cache_;  // by carriage steps
+    // A SheetQueue's planners share the carriage moves they encode (thread-safe).
+    struct MoveCache;
+    std::shared_ptr<MoveCache> shared_moves_;
     std::unordered_map<std::uint32_t, std::pair<motion::StepMove, motion::MoveShape>> feed_cache_;
     std::unordered_map<std::uint32_t, estimate::TuneChoice> table_choice_;  // v3: residuals of table moves
     std::shared_ptr<TableEstimates::Entry> shared_choice_;                  // v3: the same, shared across plans
@@ -119,10 +130,49 @@ private:
     std::int32_t head_cur_ = 0;     // P2: where the head stands (in carriage steps)
     int next_direction_ = +1;
     machine::StrikeTiming strike_;  // v3 only
+    // SheetQueue's workers: what the clock advances before each strike, in
+    // order (the same doubles the serial plan adds), to time the sheet later.
+    std::vector<double>* leads_ = nullptr;
 };
 
+// Plans the sheets of `doc` ahead on worker threads and hands them out in
+// order: next() returns what planner.plan_sheet(doc, n) would have, byte for
+// byte, and leaves the planner as that call would (its machine state, clock
+// and totals), so plan_sheet may go on where a queue stopped (or a queue
+// start where plan_sheet stopped; not both at once). Sheets are nearly independent:
+// the head starts each one at rest and the feed at its top edge. What
+// crosses sheets is cheap to carry ahead (the carriage's last two stops for
+// the backlash rule, its step counter, the sweep direction), except the
+// clock: a worker records what its clock advances before each strike, and
+// next() adds those to the planner's clock in order, as plan_sheet would.
+// Memory stays bounded: at most a few sheets per thread are planned ahead.
+// With one thread (or fewer than kMinSheets sheets) next() is plan_sheet. Tuning new moves
+// stays on the calling thread, in the serial plan's order (the tuner's
+// decisions are the serial plan's). `doc` and `planner` must outlive the queue.
+class SheetQueue {
+public:
+    // threads: 0 for std::thread::hardware_concurrency().
+    SheetQueue(Planner& planner, const layout::PagedDocument& doc, std::size_t first_sheet = 1,
+               unsigned threads = 0);
+    ~SheetQueue();
+    SheetQueue(const SheetQueue&) = delete;
+    SheetQueue& operator=(const SheetQueue&) = delete;
+    // The next sheet (first_sheet, then each after it, up to doc.sheet_count()).
+    Result<SheetPlan> next();
+    // Fewer sheets than this are planned on the calling thread.
+    static constexpr std::size_t kMinSheets = 4;
+    // Worker threads in use (0: planning on the calling thread).
+    [[nodiscard]] unsigned threads() const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+// Every sheet of `doc` (through a SheetQueue: `threads` as there).
 Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
-                         const PlanOptions& o = {});
+                         const PlanOptions& o = {}, unsigned threads = 0);
 
 // The naive plan for comparison: one sweep direction (+x), the carriage stopping
 // at every dot column of the line whether or not a dot is struck there. Only its

@@ -158,8 +158,9 @@ Result<StreamSize> measure_print_job(const layout::PagedDocument& document, cons
     std::size_t passes = 0;
     bool started = false;
     const std::size_t sheets = document.sheet_count();
+    plan::SheetQueue queue(*planner, document);  // a few sheets ahead on the machine's cores
     for (std::size_t s = 1; s <= sheets; ++s) {
-        auto sheet = planner->plan_sheet(document, s);
+        auto sheet = queue.next();
         if (!sheet) return std::unexpected(sheet.error());
         passes += sheet->passes.size();
         if (passes > encode::kMaxJobPasses)

@@ -44,12 +44,17 @@ inline std::vector<std::string> lines_of(const edit::LiveLayout& l) {
 inline document::Document document_of(const std::vector<std::string>& lines) {
     document::Document d;
     std::string previous_label(document::first_print_page);
+    bool started = false;
     for (const auto& l : lines) {
         if (auto b = edit::parse_editor_line(l)) {
             if (b->kind == document::BlockKind::print_page_break) {
-                b->label = document::print_page_label(b->label, previous_label);
-                previous_label = b->label;
+                // The one numbering rule (document/print_page.hpp).
+                auto label = document::page_break_label(b->label, previous_label, started);
+                if (!label) continue;
+                b->label_counted = b->label.empty();
+                b->label = previous_label = *label;
             }
+            if (b->kind != document::BlockKind::braille_page_break) started = true;
             d.blocks.push_back(std::move(*b));
         }
     }

@@ -17,9 +17,8 @@ TEST(EditorLines, SamplesRoundTrip) {
         auto doc = import::import_file(test::sample_path(file));
         ASSERT_TRUE(doc.has_value());
         const auto lines = edit::render_editor_lines(*doc);
-        std::vector<document::Block> parsed;
-        for (const auto& l : lines)
-            if (auto b = edit::parse_editor_line(l)) parsed.push_back(*b);
+        // The lines' blocks, their print pages numbered by the one rule.
+        const auto parsed = test::document_of(lines).blocks;
         std::vector<document::Block> expected;
         for (auto b : doc->blocks) {
             b.source_line = 0;
@@ -31,6 +30,7 @@ TEST(EditorLines, SamplesRoundTrip) {
             ASSERT_EQ(parsed[i].level, expected[i].level);
             ASSERT_EQ(std::string(parsed[i].text()), std::string(expected[i].text()));
             ASSERT_EQ(parsed[i].label, expected[i].label);
+            ASSERT_EQ(parsed[i].label_counted, expected[i].label_counted);
             ASSERT_TRUE(parsed[i].spans == expected[i].spans) << lines[i].c_str();
         }
     }

@@ -165,3 +165,35 @@ TEST(LiveLayout, BadTableIsAnErrorNotACrash) {
     ASSERT_EQ(ok.tables(), std::string("en-ueb-g2.ctb"));  // unchanged
     ASSERT_EQ(ok.paged().pages.size(), std::size_t{1});
 }
+
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4): text
+// typed after a braille page break at the end lost its print page (the page
+// it starts was not made yet, and the restart began with no print page), and a
+// table left last on a page after an edit lost its page (it was still open in
+// the paginator, which looked empty).
+TEST(LiveLayout, EditsAfterABraillePageBreakAtTheEndLayOutAsAFreshLayout) {
+    // (Two pages before, so the new one starts a sheet: the layout restarts there.)
+    auto typed = make({"one", "<!-- braillepage -->", "<!-- pagebreak 7 -->", "two", "<!-- braillepage -->",
+                       "<!-- braillepage -->"});
+    typed.replace(6, 0, {"three"});
+    ASSERT_EQ(typed.paged().pages.size(), 3u);
+    EXPECT_EQ(typed.paged().pages.back().print_page, "⠼⠛");
+    EXPECT_TRUE(typed.paged().pages == make(lines_of(typed)).paged().pages);
+    auto table = make({"one", "<!-- braillepage -->", "two", "<!-- braillepage -->", "| a | b |", "| --- | --- |",
+                       "| c | d |", "---"});
+    table.replace(7, 1, {});
+    ASSERT_EQ(table.paged().pages.size(), 3u);
+    EXPECT_TRUE(table.paged().pages == make(lines_of(table)).paged().pages);
+}
+
+// Found the same way: a line inserted before the page breaks at the top of a
+// page took the page's print page, which those breaks set after it.
+TEST(LiveLayout, ALineInsertedBeforeThePageBreaksAtAPageTopKeepsItsPrintPage) {
+    // (The layout restarts at the third page, a sheet's front.)
+    auto live = make({"one", "<!-- braillepage -->", "two", "<!-- braillepage -->", "<!-- braillepage -->",
+                      "<!-- braillepage -->", "<!-- pagebreak 9 -->", "three"});
+    ASSERT_EQ(live.paged().pages.size(), 3u);
+    live.replace(6, 0, {"inserted"});
+    EXPECT_EQ(live.paged().pages[2].print_page, "");
+    EXPECT_TRUE(live.paged().pages == make(lines_of(live)).paged().pages);
+}

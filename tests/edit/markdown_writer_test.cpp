@@ -27,6 +27,17 @@ TEST(MarkdownWriter, SavedSamplesReopenToTheSameLines) {
     }
 }
 
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen: a line that writes
+// nothing (a table's delimiter row alone) between two numbered items ended
+// the list in the writer's mind, not in the file: "5." then "10." read as 5, 6.
+TEST(MarkdownWriter, ANumberedListGoesOnAcrossALineThatWritesNothing) {
+    const std::vector<std::string> lines{"5. five", "| --- | --- |", "10. ten"};
+    const auto md = exporter::join_markdown_lines(lines);
+    const auto reopened = import::import_bytes(md, "list.md");
+    ASSERT_TRUE(reopened.has_value());
+    EXPECT_EQ(edit::render_editor_lines(*reopened), (std::vector<std::string>{"5. five", "10. ten"})) << md;
+}
+
 TEST(MarkdownWriter, BlankLinesMakeNoBlocksAndBlocksAreParagraphsApart) {
     const std::vector<std::string> lines{"# Title", "", "first", "   ", "second"};
     EXPECT_EQ(exporter::join_markdown_lines(lines), "# Title\n\nfirst\n\nsecond\n");

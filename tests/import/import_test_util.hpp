@@ -16,7 +16,7 @@ namespace tactus::document {
 // Readable failure output for block comparisons (found by ADL).
 inline void PrintTo(const document::Block& b, std::ostream* os) {
     *os << "Block{kind=" << static_cast<int>(b.kind) << " level=" << b.level << " line="
-        << b.source_line << " label='" << b.label << "' spans=[";
+        << b.source_line << " label='" << b.label << (b.label_counted ? "' (counted)" : "'") << " spans=[";
     for (const auto& s : b.spans)
         *os << "('" << s.text << "'," << int{s.emphasis} << (s.note_reference ? ",ref" : "") << ")";
     *os << "] braille_lines=" << b.braille_lines.size() << "}";
@@ -91,10 +91,13 @@ inline document::Block text_block(document::BlockKind kind, int level, std::vect
     return b;
 }
 
-inline document::Block page_break(std::string label, int line = 0) {
+// A print page break as an importer gives it: `label` counted on from the page
+// before (the source gave none), unless `counted` is false (the source's own).
+inline document::Block page_break(std::string label, int line = 0, bool counted = true) {
     document::Block b;
     b.kind = document::BlockKind::print_page_break;
     b.label = std::move(label);
+    b.label_counted = counted;
     b.source_line = line;
     return b;
 }

@@ -43,7 +43,7 @@ TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
 
 TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
     const auto doc = md("one\n\n<!-- pagebreak: xii -->\n\ntwo\n\n<!-- just a note -->\n\nthree\n");
-    const std::vector<document::Block> expected = {text_block(P, 0, {{"one"}}, 1), page_break("xii", 3),
+    const std::vector<document::Block> expected = {text_block(P, 0, {{"one"}}, 1), page_break("xii", 3, false),
                                          text_block(P, 0, {{"two"}}, 5),
                                          text_block(P, 0, {{"three"}}, 9)};
     EXPECT_EQ(doc.blocks, expected);
@@ -65,7 +65,7 @@ TEST(MarkdownImport, AnUnlabelledBreakCountsOnFromTheLabelBeforeIt) {
 TEST(MarkdownImport, ALabelledBreakBeforeTheTextSetsTheFirstPrintPage) {
     const auto doc = md("---\n\n<!-- pagebreak 10 -->\n\none\n\n---\n\ntwo\n");
     ASSERT_EQ(doc.blocks.size(), 4u);
-    EXPECT_EQ(doc.blocks[0], page_break("10", 3));
+    EXPECT_EQ(doc.blocks[0], page_break("10", 3, false));
     EXPECT_EQ(doc.blocks[2].label, "11");
 }
 
