@@ -7,7 +7,9 @@
 #include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
 #include "layout/line_breaker.hpp"
+#include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
+#include "translate/script_check.hpp"
 
 namespace tactus::edit {
 namespace {
@@ -118,10 +120,23 @@ bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress)
         if (progress && i % 256 == 0 && progress(i, entries_.size())) return false;
     }
     paged_ = {};
+    check_script();
+    decide_ready_braille();
     relayout_from(0);
     if (progress) progress(entries_.size(), entries_.size());
     return true;
 }
+
+void LiveLayout::decide_ready_braille() {
+    ready_braille_ = layout::is_ready_braille(document());
+    options_ = requested_;
+    if (ready_braille_) {
+        options_.page_numbers = layout::PageNumberPosition::none;
+        options_.print_page_indicators = false;
+    }
+}
+
+void LiveLayout::check_script() { script_warning_ = translate::check_script(document(), translator_.tables()); }
 
 RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
                                   std::vector<std::string> lines) {
@@ -231,13 +246,15 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
     numbers_.clear();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};
+    check_script();
     relayout_from(0);
     return {};
 }
 
 Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
-    options_ = std::move(options);
+    requested_ = std::move(options);
+    decide_ready_braille();
     // Braille lines wrap to the new width, and a word too long for the new line
     // is divided again (the division is made at translation).
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
@@ -361,7 +378,10 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         warnings = std::move(tail.warnings);
     }
     paged_.geometry = options_.geometry;
-    if (base == 0) paged_.warnings.clear();
+    if (base == 0) {
+        paged_.warnings.clear();
+        if (script_warning_) paged_.warnings.push_back(*script_warning_);
+    }
     for (auto& w : warnings)
         if (std::ranges::find(paged_.warnings, w) == paged_.warnings.end())
             paged_.warnings.push_back(std::move(w));
@@ -504,9 +524,7 @@ std::string LiveLayout::back_translate(const document::BrailleLine& cells) const
 std::optional<document::BlockKind> LiveLayout::previous_kind(std::size_t index) const {
     for (std::size_t j = index; j-- > 0;) {
         const auto& p = entries_[j];
-        if (!p.block || p.error || p.block->kind == document::BlockKind::print_page_break ||
-            p.block->kind == document::BlockKind::braille_page_break)
-            continue;
+        if (!p.block || p.error || !layout::sets_previous_kind(p.block->kind)) continue;
         return p.block->kind;
     }
     return std::nullopt;

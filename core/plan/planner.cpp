@@ -708,7 +708,10 @@ SheetQueue::SheetQueue(Planner& planner, const layout::PagedDocument& doc, std::
     if (threads < 2 || sheets < kMinSheets) return;
     threads = static_cast<unsigned>(std::min<std::size_t>(threads, sheets));
     if (!planner.shared_moves_) planner.shared_moves_ = std::make_shared<Planner::MoveCache>();
-    impl_->window = 3 * static_cast<std::size_t>(threads);
+    // Enough sheets ahead that the workers go on while the caller (or the
+    // thread handing out sheets) waits for a core on a busy machine; a
+    // sheet's plan is well under a megabyte.
+    impl_->window = kAheadPerThread * static_cast<std::size_t>(threads);
     for (unsigned i = 0; i < threads; ++i) impl_->workers.emplace_back([this] { impl_->run(); });
 }
 

@@ -146,7 +146,7 @@ private:
 // the backlash rule, its step counter, the sweep direction), except the
 // clock: a worker records what its clock advances before each strike, and
 // next() adds those to the planner's clock in order, as plan_sheet would.
-// Memory stays bounded: at most a few sheets per thread are planned ahead.
+// Memory stays bounded: at most kAheadPerThread sheets per thread are planned ahead.
 // With one thread (or fewer than kMinSheets sheets) next() is plan_sheet. Tuning new moves
 // stays on the calling thread, in the serial plan's order (the tuner's
 // decisions are the serial plan's). `doc` and `planner` must outlive the queue.
@@ -162,6 +162,7 @@ public:
     Result<SheetPlan> next();
     // Fewer sheets than this are planned on the calling thread.
     static constexpr std::size_t kMinSheets = 4;
+    static constexpr std::size_t kAheadPerThread = 8;
     // Worker threads in use (0: planning on the calling thread).
     [[nodiscard]] unsigned threads() const;
 
