@@ -564,11 +564,10 @@ bool MainWindow::export_to(const QString& path) {
     if (suffix == QLatin1String("brf")) {
         bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {
-        exporter::PefMetadata meta;
-        meta.title = QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString();
-        for (const auto& t : translate::table_catalogue())
-            if (t.file == editor_->layout().tables()) meta.language = t.language_tag;
-        meta.date = QDate::currentDate().toString(Qt::ISODate).toStdString();
+        const auto meta = exporter::pef_metadata(
+            {}, QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString(),
+            QDate::currentDate().toString(Qt::ISODate).toStdString(),
+            translate::table_language_tag(editor_->layout().tables()));
         bytes = exporter::to_pef(paged, meta);
     }
     if (!bytes) {

@@ -9,6 +9,7 @@
 #include "export/export.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
+#include "translate/catalogue.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -64,8 +65,10 @@ void run_layout(const LayoutCommandArgs& a) {
     if (a.to.empty())
         throw CLI::RequiredError("--to (or --summary)");
     const auto format = require(exporter::parse_export_format(a.to), exit_usage);
-    // A PEF's own metadata is kept; anything else gets the file's name and today.
-    const auto meta = exporter::pef_metadata(doc.metadata, std::filesystem::path(a.layout.file).stem().string(), today());
+    // A PEF's own metadata is kept; anything else gets the file's name, today
+    // and the table's language (as the app's export does).
+    const auto meta = exporter::pef_metadata(doc.metadata, std::filesystem::path(a.layout.file).stem().string(), today(),
+                                             translate::table_language_tag(options.tables));
     if (a.output.empty() || a.output == "-") {
         require(exporter::write_document(doc, format, meta, std::cout));
         return;

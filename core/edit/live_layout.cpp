@@ -9,7 +9,9 @@
 #include "edit/editor_lines.hpp"
 #include "import/text_lines.hpp"
 #include "layout/line_breaker.hpp"
+#include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
+#include "translate/script_check.hpp"
 
 namespace tactus::edit {
 namespace {
@@ -278,10 +280,23 @@ bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress)
         if (progress && i % 256 == 0 && progress(i, entries_.size())) return false;
     }
     paged_ = {};
+    check_script();
+    decide_ready_braille();
     relayout_from(0);
     if (progress) progress(entries_.size(), entries_.size());
     return true;
 }
+
+void LiveLayout::decide_ready_braille() {
+    ready_braille_ = layout::is_ready_braille(document());
+    options_ = requested_;
+    if (ready_braille_) {
+        options_.page_numbers = layout::PageNumberPosition::none;
+        options_.print_page_indicators = false;
+    }
+}
+
+void LiveLayout::check_script() { script_warning_ = translate::check_script(document(), translator_.tables()); }
 
 RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
                                   std::vector<std::string> lines) {
@@ -463,13 +478,15 @@ Result<void> LiveLayout::set_tables(const std::string& tables) {
     numbers_.clear();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};
+    check_script();
     relayout_from(0);
     return {};
 }
 
 Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return ok;
-    options_ = std::move(options);
+    requested_ = std::move(options);
+    decide_ready_braille();
     // Braille lines wrap to the new width, and a word too long for the new line
     // is divided again (the division is made at translation).
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
@@ -600,7 +617,10 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         warnings = std::move(tail.warnings);
     }
     paged_.geometry = options_.geometry;
-    if (base == 0) paged_.warnings.clear();
+    if (base == 0) {
+        paged_.warnings.clear();
+        if (script_warning_) paged_.warnings.push_back(*script_warning_);
+    }
     for (auto& w : warnings)
         if (std::ranges::find(paged_.warnings, w) == paged_.warnings.end())
             paged_.warnings.push_back(std::move(w));
@@ -780,13 +800,10 @@ std::optional<document::BlockKind> LiveLayout::previous_kind(std::size_t index) 
     for (std::size_t j = index; j-- > 0;) {
         const auto& p = entries_[j];
         if (!p.block || p.error) continue;
-        const auto laid_out = [](document::BlockKind k) {
-            return k != document::BlockKind::print_page_break && k != document::BlockKind::braille_page_break;
-        };
         if (dialect_ == Dialect::text)  // the further blocks a text line starts, last first
             for (auto c = p.cells.rbegin(); c != p.cells.rend(); ++c)
-                if (laid_out(c->kind)) return c->kind;
-        if (!laid_out(p.block->kind)) continue;
+                if (layout::sets_previous_kind(c->kind)) return c->kind;
+        if (!layout::sets_previous_kind(p.block->kind)) continue;
         return p.block->kind;
     }
     return std::nullopt;

@@ -72,7 +72,14 @@ public:
     Result<void> set_options(layout::LayoutOptions options);
 
     [[nodiscard]] const layout::PagedDocument& paged() const { return paged_; }
-    [[nodiscard]] const layout::LayoutOptions& options() const { return options_; }
+    // The options asked for (set_options, create). Ready-made braille (a BRF or
+    // PEF opened as it is: only braille lines and braille page breaks) is laid
+    // out with them less the braille page numbers and print page indicators,
+    // so its pages come out page for page with the numbers they carry, as
+    // layout::keep_braille_pages does for the CLI (decided when the text is
+    // replaced whole, the table or the options change; not on every edit).
+    [[nodiscard]] const layout::LayoutOptions& options() const { return requested_; }
+    [[nodiscard]] bool ready_braille() const { return ready_braille_; }
     [[nodiscard]] const std::string& tables() const { return translator_.tables(); }
     [[nodiscard]] std::size_t line_count() const { return entries_.size(); }
     [[nodiscard]] const std::string& line(std::size_t i) const { return entries_[i].line; }
@@ -110,7 +117,7 @@ private:
     };
 
     LiveLayout(translate::Translator translator, layout::LayoutOptions options)
-        : translator_(std::move(translator)), options_(std::move(options)) {}
+        : translator_(std::move(translator)), options_(options), requested_(std::move(options)) {}
 
     void translate_entry(std::size_t i);
     // ---- the text dialect: a .txt shown as its lines (import/text_lines.hpp) ----
@@ -144,7 +151,10 @@ private:
     [[nodiscard]] int body_capacity(std::size_t page) const;
 
     translate::Translator translator_;
-    layout::LayoutOptions options_;
+    layout::LayoutOptions options_;    // in effect (see options())
+    layout::LayoutOptions requested_;  // as asked for
+    bool ready_braille_ = false;
+    void decide_ready_braille();
     Dialect dialect_ = Dialect::markdown;
     std::string line_ending_ = "\n";
     bool runs_on_ = false;  // text dialect: a paragraph's lines run on (find_paragraph_breaks)
@@ -155,6 +165,11 @@ private:
     [[nodiscard]] std::optional<document::BlockKind> previous_kind(std::size_t index) const;
     layout::PagedDocument paged_;
     std::unordered_map<int, document::BrailleLine> numbers_;
+    // translate::check_script on the whole text, first among the warnings as
+    // in the CLI's pipeline; checked when the text is replaced whole (reset)
+    // or the table changes, not on every edit.
+    std::optional<std::string> script_warning_;
+    void check_script();
 };
 
 }  // namespace tactus::edit

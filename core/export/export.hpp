@@ -29,7 +29,10 @@ struct PefMetadata {
 
 // The metadata to write: the source's own (a PEF's dc: elements) when it has
 // any, else a title and date made for this export.
-PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title, std::string date);
+// `language` (BCP 47, translate::table_language_tag) is written when the
+// source has no metadata of its own. The CLI and the app both ask here.
+PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title, std::string date,
+                         std::string language = {});
 
 // Braille ASCII: CRLF after every line, a form feed after every page (blank
 // backs included, so an interpoint embosser stays in step). Fails on dots 7-8,

@@ -53,10 +53,11 @@ void write_page(const layout::Page& page, std::string& row, std::ostream& out) {
 }  // namespace
 
 PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title,
-                         std::string date) {
+                         std::string date, std::string language) {
     PefMetadata m;
     m.title = std::move(title);
     m.date = std::move(date);
+    m.language = std::move(language);
     m.source = source;
     return m;
 }

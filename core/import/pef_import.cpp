@@ -4,7 +4,7 @@
 // volume and section, sections overriding their volume), the sections
 // themselves and the dc: metadata are kept in the document, so the pages can be
 // embossed and exported as they are (layout/braille_pages.hpp). Impossible
-// attribute values (cols="0", rows="-5", duplex="maybe") are refused with their line.
+// attribute values (cols="0", rows="-5", duplex="maybe", rowgap="-1") are refused with their line.
 #include <array>
 #include <charconv>
 #include <cstdio>
@@ -108,6 +108,7 @@ private:
                             where);
             *field = value;
         }
+        if (auto ok = read_rowgap(n, required); !ok) return ok;
         if (const auto a = n.attribute("duplex")) {
             const auto v = trim(a.value());
             if (v == "true" || v == "1") grid.duplex = true;
@@ -120,8 +121,29 @@ private:
         return {};
     }
 
+    // rowgap (xsd:nonNegativeInteger) on a volume (required), section, page or
+    // row. Tactus writes its own (0, or 1 for 8-dot), but a value the schema
+    // forbids marks a broken file, refused like cols="0".
+    Result<void> read_rowgap(const pugi::xml_node& n, bool required) const {
+        const auto a = n.attribute("rowgap");
+        const auto element = "<" + std::string(local_name(n)) + ">";
+        if (!a) {
+            if (required) return fail(element + " has no rowgap attribute", std::to_string(line_of(n)));
+            return {};
+        }
+        auto v = trim(a.value());
+        if (v.starts_with('+')) v.remove_prefix(1);
+        int value = 0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
+        if (v.empty() || ec != std::errc{} || end != v.data() + v.size() || value < 0)
+            return fail(element + " rowgap=\"" + std::string(a.value()) + "\" must be a whole number, 0 or more",
+                        std::to_string(line_of(n)));
+        return {};
+    }
+
     Result<void> read_page(const pugi::xml_node& page, const Grid& grid) {
         if (builder_.full()) return {};
+        if (auto ok = read_rowgap(page, false); !ok) return ok;
         builder_.braille_page_break(line_of(page));
         std::vector<document::BrailleLine> rows;
         for (const auto& row : pef_children(page, "row")) {
@@ -142,6 +164,7 @@ private:
     }
 
     Result<document::BrailleLine> read_row(const pugi::xml_node& row) {
+        if (auto ok = read_rowgap(row, false); !ok) return std::unexpected(ok.error());
         const auto decoded = utf8_to_utf32(row.child_value());
         if (!decoded) return std::unexpected(located(decoded.error(), std::to_string(line_of(row))));
         document::BrailleLine line;

@@ -68,18 +68,30 @@ BlockIndents block_indents(const LayoutOptions& o, document::BlockKind kind, int
 bool blank_line_before(const LayoutOptions& o, std::optional<document::BlockKind> previous,
                        document::BlockKind kind) {
     if (kind == document::BlockKind::heading) return o.blank_line_before_heading;
+    // A note follows the block that refers to it, inside that block's structure
+    // (a list, a quote): no blank line before it (its 7-5 format sets it off).
+    if (kind == document::BlockKind::note) return false;
+    const bool paragraph_spacing = kind == document::BlockKind::paragraph && o.blank_line_between_paragraphs;
+    // Braille Formats 2016, Appendix C "Blank Lines": a blank line before but
+    // not after a cell-5 or cell-7 heading, whatever follows it (a list or a
+    // block quote starts right under it); a centred heading has its blank line
+    // after it already, and a table (columned material, the one exception)
+    // gets its own in the paginator.
+    if (previous == document::BlockKind::heading) return paragraph_spacing;
+    // Block quotes (displayed material, Braille Formats §9) and lists (§8): a
+    // blank line before and after.
     const bool quote = kind == document::BlockKind::quote;
     const bool after_quote = previous == document::BlockKind::quote;
     if (quote != after_quote) return true;
-    // BANA Braille Formats §8 (lists): a blank line before and after a list,
-    // except right under a heading (the heading's own rule: none after it). A
-    // note placed after an item stays inside the list.
     const bool list = kind == document::BlockKind::list_item;
     const bool after_list = previous == document::BlockKind::list_item;
-    if (previous && previous != document::BlockKind::heading && list != after_list &&
-        kind != document::BlockKind::note && previous != document::BlockKind::note)
-        return true;
-    return kind == document::BlockKind::paragraph && o.blank_line_between_paragraphs;
+    if (previous && list != after_list) return true;
+    return paragraph_spacing;
+}
+
+bool sets_previous_kind(document::BlockKind kind) {
+    return kind != document::BlockKind::note && kind != document::BlockKind::print_page_break &&
+           kind != document::BlockKind::braille_page_break;
 }
 
 std::size_t word_room(const LayoutOptions& o, document::BlockKind kind, int level) {

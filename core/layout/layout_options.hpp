@@ -55,12 +55,19 @@ struct BlockIndents {
 BlockIndents block_indents(const LayoutOptions& options, document::BlockKind kind, int level);
 
 // Whether a blank line goes before a text block of `kind` that follows one of
-// `previous` (none at the start; page breaks do not count): before a heading
-// (BANA §4), at the start and after the end of a block quote (docs/layout.md)
-// and of a list (BANA §8), between paragraphs when asked. Tables add their own (the paginator). The
-// paginator and the editor's cursor map both ask here.
+// `previous` (none at the start; see sets_previous_kind): before a heading
+// (BANA §4), before and after a block quote and a list (BANA §8, §9), none
+// under a cell-5 or cell-7 heading (Braille Formats 2016 Appendix C), none
+// before a note, between paragraphs when asked. Tables add their own (the
+// paginator). The paginator and the editor's cursor map both ask here.
 bool blank_line_before(const LayoutOptions& options, std::optional<document::BlockKind> previous,
                        document::BlockKind kind);
+
+// Whether a block of `kind` is the `previous` of blank_line_before for the
+// blocks after it. Page breaks are not, and neither is a note: it belongs to
+// the block that refers to it, so a list or a quote goes on (or ends) after
+// it as if the note were not there.
+bool sets_previous_kind(document::BlockKind kind);
 
 // The cells a word of this block can have on any of its lines: a word longer
 // than this is divided (translate/word_division.hpp).

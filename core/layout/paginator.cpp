@@ -69,11 +69,13 @@ void Paginator::add_line(document::BrailleLine line, int source_line) {
                 stripped = true;
             }
         }
-        if (stripped)
-            doc_.warnings.push_back(
-                (source_line > 0 ? "line " + std::to_string(source_line) + ": " : std::string{}) +
-                "cells with dots 7-8 (often a character the table does not know) shown as 6-dot;"
-                " use 8-dot layout to keep them");
+        if (stripped) {
+            // Once for a source line, however many braille lines it makes.
+            auto w = (source_line > 0 ? "line " + std::to_string(source_line) + ": " : std::string{}) +
+                     "cells with dots 7-8 (often a character the table does not know) shown as 6-dot;"
+                     " use 8-dot layout to keep them";
+            if (doc_.warnings.empty() || doc_.warnings.back() != w) doc_.warnings.push_back(std::move(w));
+        }
     }
     trim_right(line);
     if (body_.empty()) page_top_print_page_ = print_page_;
@@ -314,7 +316,7 @@ void Paginator::add(const translate::TranslatedBlock& b) {
     }
     if (document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille) {
         if (blank_line_before(o_, last_kind_, b.kind)) add_blank_line();
-        last_kind_ = b.kind;
+        if (sets_previous_kind(b.kind)) last_kind_ = b.kind;
     }
     switch (b.kind) {
         case document::BlockKind::heading: {

@@ -128,6 +128,7 @@ private:
     std::int32_t motor_step_ = 0;   // the controller's carriage step counter
     std::int32_t head_prev_ = -1;   // P1 of the reversal rule: homing ends moving +x (v3: toward home)
     std::int32_t head_cur_ = 0;     // P2: where the head stands (in carriage steps)
+    std::int32_t aim_cur_ = 0;      // head_cur_ less the dot struck there (the command stops past it: tune.hpp)
     int next_direction_ = +1;
     machine::StrikeTiming strike_;  // v3 only
     // SheetQueue's workers: what the clock advances before each strike, in
@@ -145,7 +146,7 @@ private:
 // the backlash rule, its step counter, the sweep direction), except the
 // clock: a worker records what its clock advances before each strike, and
 // next() adds those to the planner's clock in order, as plan_sheet would.
-// Memory stays bounded: at most a few sheets per thread are planned ahead.
+// Memory stays bounded: at most kAheadPerThread sheets per thread are planned ahead.
 // With one thread (or fewer than kMinSheets sheets) next() is plan_sheet. Tuning new moves
 // stays on the calling thread, in the serial plan's order (the tuner's
 // decisions are the serial plan's). `doc` and `planner` must outlive the queue.
@@ -161,6 +162,7 @@ public:
     Result<SheetPlan> next();
     // Fewer sheets than this are planned on the calling thread.
     static constexpr std::size_t kMinSheets = 4;
+    static constexpr std::size_t kAheadPerThread = 8;
     // Worker threads in use (0: planning on the calling thread).
     [[nodiscard]] unsigned threads() const;
 

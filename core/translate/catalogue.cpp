@@ -80,4 +80,11 @@ std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
     return out;
 }
 
+std::string table_language_tag(std::string_view tables) {
+    const auto first = tables.substr(0, tables.find(','));
+    for (const auto& t : table_catalogue())
+        if (t.file == first) return t.language_tag;
+    return {};
+}
+
 }  // namespace tactus::translate

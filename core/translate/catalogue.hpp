@@ -24,6 +24,11 @@ struct TableInfo {
 // "zh-TW"), so a Chinese interface lists "中文（台灣）" rather than English names.
 std::vector<TableInfo> table_catalogue(std::string_view display_locale = "en");
 
+// The BCP 47 language of a table list (its first table's language_tag in the
+// catalogue, e.g. "en", "cmn-TW"), or "" for a table the catalogue does not
+// list. What a PEF's dc:language says, for the CLI and the app alike.
+std::string table_language_tag(std::string_view tables);
+
 // The table Tactus uses when none is chosen.
 inline constexpr const char* kDefaultTable = "en-ueb-g2.ctb";
 

@@ -13,11 +13,6 @@ namespace {
 
 constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 
-// BANA Braille Formats 2016 §16.2 (for UEB; number not verified, docs/layout.md
-// "Sources"): a note reference is dots 2356,
-// 2356 followed unspaced by the reference (a number with its numeric indicator).
-constexpr document::Cell kNoteReferenceIndicator{0x36};
-
 // Joins spans into one string with an emphasis mark per code point. Line breaks
 // and tabs inside a block become spaces: layout decides where braille lines end;
 // a soft line break with the spaces around it is one space (document/soft_break.hpp).
@@ -154,18 +149,19 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
 }
 
 // A note reference, attached to the word before it (never a line break in
-// front of it or inside it). In UEB the note reference indicator and the
-// number; other codes (Chinese, EBAE, ...) have no such indicator that Tactus
-// knows, and the number goes in parentheses as the code writes them (every
-// table Tactus lists knows them; square brackets are unknown to zh-tw), the
-// way print without superscripts marks a note (docs/layout.md, "Notes").
+// front of it or inside it): the code's note reference indicator and the
+// number, or, for a code without one, the number in parentheses as the code
+// writes them (every table Tactus lists knows them; square brackets are unknown
+// to zh-tw), the way print without superscripts marks a note
+// (Translator::note_reference_indicator, docs/layout.md "Notes").
 Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out) {
     auto u = utf8_to_utf32(span.text);
     if (!u) return std::unexpected(u.error());
-    if (!tr.is_ueb()) *u = U"(" + *u + U")";
+    const auto& indicator = tr.note_reference_indicator();
+    if (indicator.empty()) *u = U"(" + *u + U")";
     auto cells = tr.translate(*u);
     if (!cells) return std::unexpected(cells.error());
-    if (tr.is_ueb()) out.cells.insert(out.cells.end(), 2, kNoteReferenceIndicator);
+    out.cells.insert(out.cells.end(), indicator.begin(), indicator.end());
     out.cells.insert(out.cells.end(), cells->begin(), cells->end());
     out.breaks.resize(out.cells.size(), BreakBefore::never);
     return {};

@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <vector>
 #include <algorithm>
 
@@ -95,6 +97,25 @@ std::string table_info(const std::string& table, const char* key) {
     return s;
 }
 
+// A metadata value of a table (liblouis reads a table's own `#+key:` lines
+// only), else of the first table it includes that has one: en-us-g2.ctb has no
+// metadata of its own but includes en-us-g1.ctb (#+system:ebae).
+std::string table_metadata(const std::string& table, const char* key, int depth = 0) {
+    if (auto v = table_info(table, key); !v.empty() || depth >= 4) return v;
+    const std::filesystem::path path =
+        table.find('/') != std::string::npos ? std::filesystem::path(table) : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (!line.starts_with("include")) continue;
+        std::istringstream words(line.substr(7));
+        std::string included;
+        if (!(words >> included)) continue;
+        if (auto v = table_metadata(included, key, depth + 1); !v.empty()) return v;
+    }
+    return {};
+}
+
 // The first installed hyphenation dictionary for the language ("en" ->
 // hyph_en_US.dic), checked by hyphenating a known word with it.
 std::string find_hyphenation(const std::string& first_table, const std::string& language) {
@@ -142,8 +163,10 @@ Result<Translator> Translator::open(std::string tables) {
     {
         std::lock_guard guard(louis::lock());
         t.hyphenation_ = find_hyphenation(first, table_info(first, "language"));
-        t.ueb_ = table_info(first, "system") == "ueb";
+        t.system_ = table_metadata(first, "system");
+        t.ueb_ = t.system_ == "ueb";
         if (t.ueb_) t.division_.number_continuation = document::Cell{0x10};  // dot 5
+        if (t.ueb_ || t.system_ == "ebae") t.note_indicator_.assign(2, document::Cell{0x36});  // dots 2356 2356
         louis::take_log();
     }
     if (t.division_.number_continuation) {

@@ -53,9 +53,18 @@ public:
 
     [[nodiscard]] const DivisionRules& division_rules() const { return division_; }
     // True for a table of Unified English Braille (liblouis `#+system:ueb`):
-    // the rules that are UEB's (number division, the note reference indicator)
-    // apply only then.
+    // the rules that are UEB's alone (number division) apply only then.
     [[nodiscard]] bool is_ueb() const { return ueb_; }
+    // The braille system of the table (liblouis `#+system:`, e.g. "ueb", "ebae",
+    // "cmn-bopomofo"), read from the first table or, when it has none (en-us-g2.ctb),
+    // from the first table it includes that has one; empty when none says.
+    [[nodiscard]] const std::string& braille_system() const { return system_; }
+    // The code's note reference indicator, written before a note's reference
+    // number (docs/layout.md, "Notes"): dots 2356 2356 in UEB and in EBAE (BANA
+    // Braille Formats 2011 §16.1.3, "77#a numbered"). Empty for a code Tactus
+    // knows none of (Chinese and the rest): the reference is then written in
+    // parentheses, as print without superscripts does. The one place this rule lives.
+    [[nodiscard]] const document::BrailleLine& note_reference_indicator() const { return note_indicator_; }
 
     // Where `word` may be hyphenated (true before character i), from the
     // hyphenation dictionary liblouis has for the table's language
@@ -76,6 +85,8 @@ private:
     std::string hyphenation_;  // e.g. "hyph_en_US.dic"; empty: none for this language
     DivisionRules division_;
     bool ueb_ = false;
+    std::string system_;
+    document::BrailleLine note_indicator_;
 };
 
 }  // namespace tactus::translate

@@ -88,6 +88,17 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"structure-spans-docx.brf", "structure-spans.docx", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         GoldenCase{"structure-spans-odt.brf", "structure-spans.odt", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf},
+        // Blank lines by Braille Formats 2016 Appendix C (a quote and a list
+        // right under a cell-5 or cell-7 heading, a table after a blank line),
+        // notes inside a quote and a list; the note reference indicator of UEB
+        // and of EBAE (en-us-g2.ctb), and the parentheses of a code without
+        // one (zh-tw.ctb) (issue 13).
+        GoldenCase{"structure-formats.brf", "structure-formats.md", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"structure-formats-ebae.brf", "structure-formats.md", "en-us-g2.ctb", true,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"structure-notes-zh.brf", "structure-notes-zh.md", "zh-tw.ctb", true,
                    exporter::ExportFormat::brf}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;

@@ -160,6 +160,14 @@ TEST(BraillePages, ImpossiblePefAttributesAreRefusedWithTheLine) {
         EXPECT_NE(doc.error().message.find(what), std::string::npos) << doc.error().message;
         EXPECT_EQ(doc.error().where, (kPef / file).string() + ":11") << file;
     }
+    // rowgap is a non-negative whole number wherever it stands (volume, section,
+    // page, row); the old importer did not look at it.
+    for (const auto& [file, line] : {std::pair{"bad_rowgap.pef", ":11"}, std::pair{"bad_row_rowgap.pef", ":14"}}) {
+        auto doc = import_file(kPef / file);
+        ASSERT_FALSE(doc) << file;
+        EXPECT_NE(doc.error().message.find("rowgap"), std::string::npos) << doc.error().message;
+        EXPECT_EQ(doc.error().where, (kPef / file).string() + line) << file;
+    }
     auto rows_over = import_file(kPef / "too_many_rows.pef");
     ASSERT_FALSE(rows_over);
     EXPECT_NE(rows_over.error().message.find("3 rows"), std::string::npos) << rows_over.error().message;

@@ -193,6 +193,29 @@ TEST(Paginator, SixDotLayoutStripsDots78WithAWarning) {
     EXPECT_EQ(rows(doc.pages[0])[0], "  AA");
 }
 
+// One warning a source line, not one a braille line: a paragraph whose every
+// line has an escape said "line 3: ..." once per braille line (a Chinese text
+// under an English table printed it hundreds of times).
+TEST(Paginator, SixDotWarningOnceForASourceLineOverSeveralBrailleLines) {
+    layout::Paginator p(small(10, 12, false), number);
+    auto b = para("A");
+    b.source_line = 3;
+    b.breaks.assign(b.cells.size(), translate::BreakBefore::never);
+    for (int i = 0; i < 4; ++i) {
+        b.cells.push_back(document::Cell{});
+        b.breaks.push_back(translate::BreakBefore::blank);
+        for (int k = 0; k < 5; ++k) {
+            b.cells.push_back(document::Cell{0xC1});
+            b.breaks.push_back(k == 0 ? translate::BreakBefore::allowed : translate::BreakBefore::never);
+        }
+    }
+    p.add(b);
+    auto doc = std::move(p).finish();
+    ASSERT_GE(doc.pages[0].lines.size(), 4u);
+    ASSERT_EQ(doc.warnings.size(), 1u);
+    EXPECT_NE(doc.warnings[0].find("line 3"), std::string::npos);
+}
+
 TEST(LayoutOptions, RejectsImpossibleGeometry) {
     layout::LayoutOptions o;
     o.geometry.cells_per_line = 2;

@@ -238,9 +238,10 @@ TEST(StructureLayout, ATableContinuedOnANewPageRepeatsItsHeadings) {
     EXPECT_EQ(herons, 8);
 }
 
-// The note reference indicator ⠶⠶ is UEB's: other codes write the number in
-// parentheses as their table writes them (no 8-dot escapes).
-TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
+// The note reference indicator ⠶⠶ is UEB's and EBAE's (see
+// TheNoteReferenceIndicatorIsTheCodesOwn): Chinese writes the number in
+// parentheses as its table writes them (no 8-dot escapes).
+TEST(StructureLayout, ChineseHasNoNoteReferenceIndicator) {
     const std::vector<Block> blocks{
         text_block(BlockKind::paragraph, 0, {Span{"\u4eca\u5929"}, reference("1")}),
         text_block(BlockKind::note, 0, {reference("1"), Span{" \u8a3b"}})};
@@ -259,4 +260,73 @@ TEST(StructureLayout, TheNoteReferenceIndicatorIsOnlyUebs) {
     auto ueb = translate::Translator::open("en-ueb-g2.ctb");
     ASSERT_TRUE(ueb);
     EXPECT_TRUE(ueb->is_ueb());
+}
+
+// Braille Formats 2016, Appendix C "Blank Lines": a blank line before but not
+// after a cell-5 or cell-7 heading; only columned material (a table) gets one
+// after it. A block quote under such a heading follows it directly, as a list
+// does (docs/layout.md, "Blank lines").
+TEST(StructureLayout, NoBlankLineUnderACellFiveOrSevenHeadingBeforeAQuoteOrAList) {
+    const auto lines = lay_out_lines({text_block(BlockKind::paragraph, 0, "Before."),
+                                      text_block(BlockKind::heading, 2, "Saying"),
+                                      text_block(BlockKind::quote, 1, "Quoted."),
+                                      text_block(BlockKind::heading, 3, "Steps"),
+                                      text_block(BlockKind::list_item, 1, "1. first"),
+                                      text_block(BlockKind::heading, 3, "Birds"),
+                                      row(true), text_block(BlockKind::table_cell, 0, "Bird"),
+                                      row(false), text_block(BlockKind::table_cell, 0, "Heron")},
+                                     27);
+    EXPECT_EQ(lines, (std::vector<std::string>{"  ,BEFORE4", "", "    ,SAYING", "  ,QUOTED4", "", "      ,STEPS",
+                                               "#A4 FIRST", "", "      ,BIRDS", "", ",BIRD", "333333", ",HERON"}));
+}
+
+// A note placed after the block that refers to it stays inside that block's
+// structure: no blank line before it, and the block after the note is
+// separated as if it followed the note's block (the blank line after a list or
+// a quote is kept; a quote goes on after a note inside it).
+TEST(StructureLayout, ANoteInsideAListOrAQuoteKeepsTheirBlankLines) {
+    const auto lines = lay_out_lines(
+        {text_block(BlockKind::list_item, 1, {Span{"\u2022 one"}, reference("1")}),
+         text_block(BlockKind::note, 0, {reference("1"), Span{" Note."}}),
+         text_block(BlockKind::paragraph, 0, "After."),
+         text_block(BlockKind::quote, 1, {Span{"Quoted"}, reference("2")}),
+         text_block(BlockKind::note, 0, {reference("2"), Span{" Source."}}),
+         text_block(BlockKind::quote, 1, "More."),
+         text_block(BlockKind::paragraph, 0, "End.")},
+        27, "en-ueb-g1.ctb");
+    EXPECT_EQ(lines, (std::vector<std::string>{"_4 ONE77#A", "      77#A ,NOTE4", "", "  ,AFTER4", "",
+                                               "  ,QUOTED77#B", "      77#B ,SOURCE4", "  ,MORE4", "", "  ,END4"}));
+}
+
+// The note reference indicator is the code's: dots 2356 2356 before the number
+// in EBAE too (BANA Braille Formats 2011 §16.1.3, "77#a numbered"), read from
+// en-us-g2.ctb, which has no metadata of its own but includes en-us-g1.ctb
+// (#+system:ebae). Chinese has none Tactus knows: the number in parentheses.
+TEST(StructureLayout, TheNoteReferenceIndicatorIsTheCodesOwn) {
+    const auto blocks = [](const std::string& text) {
+        return std::vector<Block>{text_block(BlockKind::paragraph, 0, {Span{text}, reference("1")}),
+                                  text_block(BlockKind::note, 0, {reference("1"), Span{" " + text}})};
+    };
+    for (const std::string table : {"en-us-g2.ctb", "en-us-g1.ctb"}) {
+        SCOPED_TRACE(table);
+        auto tr = translate::Translator::open(table);
+        ASSERT_TRUE(tr);
+        EXPECT_EQ(tr->braille_system(), "ebae");
+        const auto lines = lay_out_lines(blocks("We saw herons."), 27, table);
+        ASSERT_GE(lines.size(), 2u);
+        EXPECT_TRUE(lines[0].ends_with("477#A")) << lines[0];
+        EXPECT_TRUE(lines[1].starts_with("      77#A ")) << lines[1];
+    }
+    for (const std::string table : {"zhcn-g2.ctb", "zh-tw.ctb"}) {
+        SCOPED_TRACE(table);
+        auto tr = translate::Translator::open(table);
+        ASSERT_TRUE(tr);
+        EXPECT_TRUE(tr->note_reference_indicator().empty());
+        const auto bracketed = tr->translate(U"(1)");
+        ASSERT_TRUE(bracketed);
+        const auto lines = lay_out_lines(blocks("\u4eca\u5929"), 27, table);
+        ASSERT_GE(lines.size(), 2u);
+        EXPECT_TRUE(lines[0].ends_with(brf(*bracketed))) << lines[0] << " / " << brf(*bracketed);
+        EXPECT_TRUE(lines[1].starts_with("      " + brf(*bracketed))) << lines[1];
+    }
 }

@@ -162,3 +162,21 @@ TEST(TranslateBlock, InvalidUtf8NamesTheLine) {
     ASSERT_FALSE(r);
     EXPECT_EQ(r.error().where, "line 7:byte 3");
 }
+
+// English words are divided between syllables (UEB 10.13), which needs
+// liblouis's hyphenation dictionary for the table's language. The build looked
+// for the dictionaries in "/liblouis/tables" (liblouis.pc has `tablesdir`, not
+// `datadir`), so none was ever found and words were cut anywhere.
+TEST(Translator, EnglishWordsHaveSyllableBreaksFromLiblouisDictionary) {
+    auto tr = translate::Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(tr);
+    const std::u32string word = U"hyphenation";
+    const auto points = tr->hyphenation_points(word);
+    ASSERT_EQ(points.size(), word.size() + 1);  // true before character i
+    std::string marked;
+    for (std::size_t i = 0; i < word.size(); ++i) {
+        if (points[i]) marked += '-';
+        marked += static_cast<char>(word[i]);
+    }
+    EXPECT_EQ(marked, "hy-phen-ation");
+}

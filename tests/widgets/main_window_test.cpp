@@ -7,6 +7,8 @@
 #include <QStandardPaths>
 #include <QJsonObject>
 #include <QLabel>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTextBlock>
 #include <QtTest>
@@ -69,6 +71,26 @@ private Q_SLOTS:
         QVERIFY(!spoken.isEmpty());
         QVERIFY(w.announcer()->message().contains(QStringLiteral("Opened welcome.md")));
         QCOMPARE(w.recent_files().value(0), QFileInfo(test::sample("welcome.md")).absoluteFilePath());
+    }
+
+    // Issue 13 "Bad input": a text whose script does not suit the table is
+    // warned about in the app as in the CLI, naming the better table (the app
+    // showed only the 8-dot escape warning, which names none).
+    void a_script_that_does_not_suit_the_table_names_the_better_one() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("chinese-tw.txt")));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("zh-tw.ctb")), qPrintable(w.announcer()->message()));
+        const auto english = dir.filePath(QStringLiteral("english.txt"));
+        QFile f(english);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("Braille is a tactile writing system. Teachers emboss it for their pupils every day.\n");
+        f.close();
+        QVERIFY(w.open_file_now(english));
+        QVERIFY2(!w.announcer()->message().contains(QStringLiteral("Warning")), qPrintable(w.announcer()->message()));
+        w.set_table(QStringLiteral("zh-tw.ctb"));
+        const auto said = w.announcer()->message();
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));  // the table is a setting: leave it as the other tests expect
+        QVERIFY2(said.contains(QStringLiteral("en-ueb-g2.ctb")), qPrintable(said));
     }
 
     void status_bar_says_sheet_line_cell_print_page() {
@@ -166,6 +188,86 @@ private Q_SLOTS:
         // Reading the PEF back gives the same pages.
         auto back = pipeline::lay_out_file(pef.toStdString(), {});
         QVERIFY(back.has_value());
+    }
+
+    // Issue 13 item 5: the app and the CLI give the same bytes for the same
+    // document, table and (default) format, compared with the real tactus-cli:
+    // Markdown structure (notes, quotes, lists, a table), a Chinese text file, a
+    // plain English text file.
+    void exports_equal_the_cli_bytes_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("table");
+        QTest::newRow("welcome.md") << test::sample("welcome.md") << QStringLiteral("en-ueb-g2.ctb");
+        QTest::newRow("structure-formats.md")
+            << QStringLiteral(TACTUS_TEST_DATA "/../golden/structure/structure-formats.md") << QStringLiteral("en-ueb-g2.ctb");
+        QTest::newRow("chinese-tw.txt") << test::sample("chinese-tw.txt") << QStringLiteral("zh-tw.ctb");
+        QTest::newRow("english.txt") << QString() << QStringLiteral("en-ueb-g1.ctb");
+    }
+    void exports_equal_the_cli_bytes() {
+        QFETCH(QString, file);
+        QFETCH(QString, table);
+        if (file.isEmpty()) {
+            file = dir.filePath(QStringLiteral("english.txt"));
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            for (int i = 0; i < 12; ++i)
+                f.write("Braille & print: # and * in 2026; the quick brown fox jumps over the lazy dog.\n\n");
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(file));
+        w.set_table(table);
+        for (const auto* format : {"brf", "pef"}) {
+            const auto app = dir.filePath(QStringLiteral("app.%1").arg(QLatin1String(format)));
+            const auto cli = dir.filePath(QStringLiteral("cli.%1").arg(QLatin1String(format)));
+            QVERIFY(w.export_to(app));
+            QProcess p;
+            p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QLatin1String(format),
+                                                 QStringLiteral("-t"), table, file, QStringLiteral("-o"), cli});
+            QVERIFY(p.waitForFinished(60000));
+            QCOMPARE(p.exitCode(), 0);
+            QFile a(app), c(cli);
+            QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+            auto app_bytes = a.readAll(), cli_bytes = c.readAll();
+            if (QLatin1String(format) == QLatin1String("pef")) {
+                // The title comes from a file name, which differs here by design.
+                const QRegularExpression title(QStringLiteral("<dc:title>[^<]*</dc:title>"));
+                app_bytes = QString::fromUtf8(app_bytes).remove(title).toUtf8();
+                cli_bytes = QString::fromUtf8(cli_bytes).remove(title).toUtf8();
+            }
+            QCOMPARE(app_bytes, cli_bytes);
+        }
+        w.set_table(QStringLiteral("en-ueb-g2.ctb"));
+    }
+
+    // Issue 13 item 1 in the app: ready-made braille opened and exported again
+    // is page for page, as the CLI does it; the app added its own braille page
+    // numbers, so a full BRF page ran over and its pages doubled.
+    void ready_braille_is_exported_page_for_page_data() {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("brf") << QStringLiteral(TACTUS_TEST_DATA "/../golden/expected/welcome-interpoint.brf");
+        QTest::newRow("pef") << QStringLiteral(TACTUS_TEST_DATA "/../golden/expected/structure-md.pef");
+    }
+    void ready_braille_is_exported_page_for_page() {
+        QFETCH(QString, file);
+        MainWindow w;
+        QVERIFY(w.open_file_now(file));
+        const auto app = dir.filePath(QStringLiteral("again.brf"));
+        const auto cli = dir.filePath(QStringLiteral("cli-again.brf"));
+        QVERIFY(w.export_to(app));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("brf"), file,
+                                             QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile a(app), c(cli);
+        QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+        const auto app_bytes = a.readAll();
+        QCOMPARE(app_bytes, c.readAll());
+        if (file.endsWith(QLatin1String(".brf"))) {
+            QFile source(file);
+            QVERIFY(source.open(QIODevice::ReadOnly));
+            QCOMPARE(app_bytes, source.readAll());
+        }
     }
 
     void save_and_reopen_round_trip() {
