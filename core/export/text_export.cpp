@@ -12,12 +12,62 @@ namespace {
 
 using namespace exporter::markdown;  // the line syntax the writer and the editor share
 
-std::string escape_inline(std::string_view text, bool in_table) {
+bool is_alnum(char c) { return is_digit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+// True when the special character at `i` means something to a Markdown
+// reader where it stands, so it must be escaped; the text is shown as its
+// author wrote it everywhere else ("5 * 3 & co.", not "5 \* 3 \& co."). At a
+// span's edge the neighbour is unknown, and it is escaped.
+bool needs_escape(std::string_view text, std::size_t i) {
+    const char c = text[i];
+    switch (c) {
+        case '*':
+        case '_':
+        case '~': {
+            // A run of them with a space on both sides neither opens nor closes
+            // emphasis or strikethrough (CommonMark "left-flanking").
+            auto from = i, to = i + 1;
+            while (from > 0 && text[from - 1] == c) --from;
+            while (to < text.size() && text[to] == c) ++to;
+            const auto around = [&](bool (*test)(char)) {
+                return from > 0 && test(text[from - 1]) && to < text.size() && test(text[to]);
+            };
+            // Nor does a "_" inside a word ("snake_case").
+            return !(around(is_space) || (c == '_' && around(is_alnum)));
+        }
+        case '&': {
+            // Only "&name;", "&#123;" and "&#x1F;" are entities.
+            auto j = i + 1;
+            if (j < text.size() && text[j] == '#') ++j;
+            const auto name = j;
+            while (j < text.size() && is_alnum(text[j])) ++j;
+            return j == text.size() || (j > name && text[j] == ';');
+        }
+        case '<':
+            // A tag, a comment or an autolink starts with one of these.
+            return i + 1 == text.size() || (is_alnum(text[i + 1]) && !is_digit(text[i + 1])) ||
+                   std::string_view("/!?").find(text[i + 1]) != std::string_view::npos;
+        case '>':
+            return false;  // only at a line's start (guard_line_start)
+        default:
+            return kInlineSpecials.find(c) != std::string_view::npos;
+    }
+}
+
+// `before` and `after`: the characters written around the text, a space at
+// the block's edges (CommonMark counts a line's start and end as whitespace),
+// so the decision is the same however the text is cut into spans.
+std::string escape_inline(std::string_view text, bool in_table, char before, char after) {
+    std::string context;
+    context.reserve(text.size() + 2);
+    context += before;
+    context += text;
+    context += after;
     std::string out;
     out.reserve(text.size() + 8);
-    for (char c : text) {
-        if (kInlineSpecials.find(c) != std::string_view::npos || (in_table && c == '|')) out.push_back('\\');
-        out.push_back(c);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (needs_escape(context, i + 1) || (in_table && text[i] == '|')) out.push_back('\\');
+        out.push_back(text[i]);
     }
     return out;
 }
@@ -33,13 +83,42 @@ std::string guard_line_start(std::string s) {
         s.insert(n - 1, 1, '\\');
         return s;
     }
-    if (std::string_view("#-+=>|").find(s[0]) != std::string_view::npos) s.insert(0, 1, '\\');
+    if (std::string_view("#-+=>|").find(s[0]) != std::string_view::npos) {
+        s.insert(0, 1, '\\');
+        return s;
+    }
+    // A run of "*", "_" or "~" with a space after it is text left unescaped
+    // (an emphasis mark touches its word): here it would start a list, a
+    // thematic break or a code fence.
+    if (std::string_view("*_~").find(s[0]) != std::string_view::npos) {
+        const auto run = s.find_first_not_of(s[0]);
+        if (run == std::string::npos || is_space(s[run])) s.insert(0, 1, '\\');
+    }
     return s;
 }
 
+std::string_view emphasis_mark(std::uint8_t emphasis) {
+    return (emphasis & document::emphasis_bold) && (emphasis & document::emphasis_italic) ? std::string_view("***")
+           : (emphasis & document::emphasis_bold)                                         ? std::string_view("**")
+           : (emphasis & document::emphasis_italic)                                       ? std::string_view("*")
+                                                                                          : std::string_view();
+}
+
 std::string render_spans(const std::vector<document::Span>& spans, bool in_table = false) {
+    // The first character written for spans[k...]: a space at the block's end.
+    const auto first_written = [&spans](std::size_t k) {
+        for (; k < spans.size(); ++k) {
+            if (spans[k].note_reference) return '[';
+            const auto joined = document::soft_breaks_as_spaces(spans[k].text);
+            if (joined.empty()) continue;
+            const auto mark = emphasis_mark(spans[k].emphasis);
+            return mark.empty() || is_space(joined.front()) || trim(joined).empty() ? joined.front() : mark.front();
+        }
+        return ' ';
+    };
     std::string out;
-    for (const auto& span : spans) {
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const auto& span = spans[k];
         if (span.note_reference) {
             out += "[^" + span.text + "]";
             continue;
@@ -47,21 +126,18 @@ std::string render_spans(const std::vector<document::Span>& spans, bool in_table
         // A soft line break (a hard-wrapped text paragraph) is a space: one block, one line.
         const auto joined = document::soft_breaks_as_spaces(span.text);
         std::string_view t = joined;
-        const auto mark = (span.emphasis & document::emphasis_bold) && (span.emphasis & document::emphasis_italic)
-                              ? std::string_view("***")
-                          : (span.emphasis & document::emphasis_bold)   ? std::string_view("**")
-                          : (span.emphasis & document::emphasis_italic) ? std::string_view("*")
-                                                                        : std::string_view();
+        const auto mark = emphasis_mark(span.emphasis);
+        const char before = out.empty() ? ' ' : out.back();
         const auto core = trim(t);
         if (mark.empty() || core.empty()) {
-            out += escape_inline(t, in_table);
+            out += escape_inline(t, in_table, before, first_written(k + 1));
             continue;
         }
         // Emphasis marks must touch the words: keep surrounding spaces outside.
         const auto lead = static_cast<std::size_t>(core.data() - t.data());
         out += std::string(t.substr(0, lead));
         out += mark;
-        out += escape_inline(core, in_table);
+        out += escape_inline(core, in_table, mark.front(), mark.front());
         out += mark;
         out += std::string(t.substr(lead + core.size()));
     }

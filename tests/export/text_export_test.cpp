@@ -160,3 +160,27 @@ TEST(TextExport, RandomHardWrappedTextFilesAreWrittenBackUnchanged) {
         ASSERT_EQ(exporter::to_text(doc), text);
     }
 }
+
+// Issue 13 item 4: the editor shows a Markdown document's text as its author
+// wrote it: the writer escapes a character only where Markdown would read it
+// as something else ("5 \\* 3 \\& co." was shown for "5 * 3 & co.").
+TEST(MarkdownExport, TextIsEscapedOnlyWhereMarkdownWouldReadIt) {
+    document::Block b;
+    b.spans = {document::Span{"5 * 3 & co. <3 snake_case a*b *x* &amp; <b> ~~s~~ _y_ ** a"}};
+    const auto line = exporter::markdown_line(b);
+    EXPECT_EQ(line, "5 * 3 & co. <3 snake_case a\\*b \\*x\\* \\&amp; \\<b> \\~\\~s\\~\\~ \\_y\\_ ** a");
+    auto doc = import::import_bytes(line + "\n", "e.md");
+    ASSERT_TRUE(doc.has_value());
+    ASSERT_EQ(doc->blocks.size(), 1u);
+    EXPECT_EQ(doc->blocks[0].spans, b.spans);
+    // At a block's start the same characters would open a list, a break or a fence.
+    for (const std::string text : {"* x", "_ _ _", "~~~ x", "*"}) {
+        b.spans = {document::Span{text}};
+        const auto start = exporter::markdown_line(b);
+        EXPECT_EQ(start, "\\" + text);
+        auto again = import::import_bytes(start + "\n", "e.md");
+        ASSERT_TRUE(again.has_value());
+        ASSERT_EQ(again->blocks.size(), 1u) << start;
+        EXPECT_EQ(again->blocks[0].text(), text);
+    }
+}
