@@ -651,15 +651,14 @@ bool MainWindow::may_reflow_braille() {
     const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
                              "printer's page?")
                               .arg(name);
-    const auto detail = tr("Braille page %1 has %2 rows of up to %3 cells: the file's page is %4 cells by %5 lines, "
-                           "the printer's page holds %6 cells by %7 lines. Nothing has been embossed or exported. "
-                           "Reflow lays the braille out again on the printer's page, so its lines and pages change. "
-                           "Stop leaves it as it is; choose a printer whose page is large enough.")
+    // The editor's lines do not carry the file's declared grid: the page's own size is said.
+    const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
+                           "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
+                           "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "
+                           "printer whose page is large enough.")
                             .arg(misfit->page)
                             .arg(misfit->rows)
                             .arg(misfit->cols)
-                            .arg(misfit->file_cols)
-                            .arg(misfit->file_rows)
                             .arg(misfit->target_cols)
                             .arg(misfit->target_rows);
     if (!interactive_) {
@@ -670,8 +669,10 @@ bool MainWindow::may_reflow_braille() {
     QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
     box.setObjectName(QStringLiteral("pageTooSmallQuestion"));
     box.setInformativeText(detail);
+    // The name is what Orca says first ("alert ..."); the question and the
+    // details are the box's labels, which Orca reads next (a description on
+    // the box as well made Orca read all of it twice).
     box.setAccessibleName(tr("The printer's page is too small"));
-    box.setAccessibleDescription(question + QLatin1Char(' ') + detail);
     auto* reflow = box.addButton(tr("&Reflow"), QMessageBox::AcceptRole);
     auto* stop = box.addButton(tr("&Stop"), QMessageBox::RejectRole);
     reflow->setObjectName(QStringLiteral("reflowButton"));

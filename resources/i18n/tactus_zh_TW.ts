@@ -763,8 +763,8 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>Braille page %1 has %2 rows of up to %3 cells: the file&apos;s page is %4 cells by %5 lines, the printer&apos;s page holds %6 cells by %7 lines. Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
-        <translation>點字第 %1 頁有 %2 行，每行最多 %3 方：檔案的頁面是每行 %4 方、每頁 %5 行，印表機的頁面只容納每行 %6 方、每頁 %7 行。尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
+        <source>Braille page %1 has %2 lines of up to %3 cells; the printer&apos;s page holds %4 cells by %5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
+        <translation>點字第 %1 頁有 %2 行，每行最多 %3 方；印表機的頁面只容納每行 %4 方、每頁 %5 行。尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />

@@ -109,7 +109,7 @@ private Q_SLOTS:
 
         struct Seen {
             bool asked = false;
-            QString text, name, description, buttons, button_names;
+            QString text, name, description, buttons, button_names;  // description: the labels' text
         };
         const auto answer = [](Seen& seen, const char* button) {
             QTimer::singleShot(200, [&seen, button] {
@@ -119,7 +119,10 @@ private Q_SLOTS:
                 seen.text = box->text() + QLatin1Char(' ') + box->informativeText();
                 auto* a = QAccessible::queryAccessibleInterface(box);
                 seen.name = a ? a->text(QAccessible::Name) : QString();
-                seen.description = a ? a->text(QAccessible::Description) : QString();
+                // What Orca reads after the name: the box's labels, through AT-SPI.
+                for (int i = 0; a && i < a->childCount(); ++i)
+                    if (auto* c = a->child(i); c && c->role() == QAccessible::StaticText)
+                        seen.description += c->text(QAccessible::Name) + QLatin1Char(' ');
                 for (auto* b : box->buttons()) {
                     seen.buttons += b->text() + QLatin1Char('|');
                     if (auto* ba = QAccessible::queryAccessibleInterface(b))
@@ -134,13 +137,13 @@ private Q_SLOTS:
         QVERIFY(!w.emboss());
         QVERIFY(stop.asked);
         QVERIFY2(stop.text.contains(QStringLiteral("too small")), qPrintable(stop.text));
-        QVERIFY2(stop.text.contains(QStringLiteral("40 cells by 25 lines")), qPrintable(stop.text));
+        QVERIFY2(stop.text.contains(QStringLiteral("25 lines of up to 40 cells")), qPrintable(stop.text));
         QVERIFY2(stop.text.contains(QStringLiteral("27 cells by 24 lines")), qPrintable(stop.text));
         QCOMPARE(stop.buttons, QStringLiteral("&Reflow|&Stop|"));
         // What AT-SPI hands Orca: the dialog's name and the whole question, each button by name.
         QCOMPARE(stop.name, QStringLiteral("The printer's page is too small"));
         QVERIFY2(stop.description.contains(QStringLiteral("Lay the braille out again")), qPrintable(stop.description));
-        QVERIFY2(stop.description.contains(QStringLiteral("40 cells by 25 lines")), qPrintable(stop.description));
+        QVERIFY2(stop.description.contains(QStringLiteral("27 cells by 24 lines")), qPrintable(stop.description));
         QCOMPARE(stop.button_names, QStringLiteral("Reflow|Stop|"));
         QVERIFY(w.printer_panel()->jobs().empty());
         // Nothing in the spool (the spool file is made by the first job: none yet here).
