@@ -6,6 +6,7 @@
 #include "common/utf8.hpp"
 #include "document/print_page.hpp"
 #include "edit/editor_lines.hpp"
+#include "export/text_export.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
@@ -199,6 +200,16 @@ void LiveLayout::set_dialect(Dialect dialect) {
     relayout_from(0);
 }
 
+std::size_t LiveLayout::table_columns(std::size_t index) const {
+    auto first = index, end = index;
+    while (first > 0 && starts_table_line(entries_[first - 1].line)) --first;
+    while (end < entries_.size() && starts_table_line(entries_[end].line)) ++end;
+    std::vector<std::string> lines;
+    lines.reserve(end - first);
+    for (auto i = first; i < end; ++i) lines.push_back(entries_[i].line);
+    return exporter::markdown_table_width(lines);
+}
+
 document::Document LiveLayout::document() const {
     // As the importer reads the saved file: page breaks after all text are
     // kept (DocumentBuilder::finish: <!-- braillepage --> is written out, not
@@ -212,9 +223,9 @@ document::Document LiveLayout::document() const {
         std::size_t end = i + 1;
         std::size_t width = 0;
         if (starts_table_line(entries_[i].line)) {
+            width = table_columns(i);
             end = i;
-            for (; end < entries_.size() && starts_table_line(entries_[end].line); ++end)
-                width = std::max(width, entries_[end].cells.size());
+            while (end < entries_.size() && starts_table_line(entries_[end].line)) ++end;
         }
         for (; i < end; ++i) {
             const auto& e = entries_[i];
@@ -349,6 +360,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     stats.first_page_relaid = base;
     std::vector<std::string> warnings;
     std::size_t j = k;
+    std::size_t table_end = 0, columns = 0;  // the table entry j is in (table_columns)
     for (; j < entries_.size(); ++j) {
         auto& e = entries_[j];
         if (j >= unchanged_from && pag.settled() && same_state(e)) {
@@ -358,9 +370,21 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         e.pages_before = base + pag.pages_closed();
         e.lines_before = pag.body_lines();
         e.settled_before = pag.settled();
+        if (starts_table_line(e.line) && j >= table_end) {
+            table_end = j;
+            while (table_end < entries_.size() && starts_table_line(entries_[table_end].line)) ++table_end;
+            columns = table_columns(j);
+        }
         if (e.block && !e.error) {
             pag.add(e.translated);
             for (const auto& cell : e.translated_cells) pag.add(cell);
+            if (e.block->kind == document::BlockKind::table_row)
+                for (auto c = e.translated_cells.size(); c < columns; ++c) {
+                    translate::TranslatedBlock empty;  // as document() pads the row
+                    empty.kind = document::BlockKind::table_cell;
+                    empty.level = static_cast<int>(c);
+                    pag.add(empty);
+                }
         }
     }
     if (stats.converged) {

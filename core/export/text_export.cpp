@@ -260,6 +260,13 @@ std::string markdown_table_row(std::span<const document::Block> cells) {
     return join_row(texts, texts.size());
 }
 
+std::size_t markdown_table_width(std::span<const std::string> lines) {
+    std::size_t width = 1;
+    for (const auto& l : lines)
+        if (!is_markdown_table_delimiter(l)) width = std::max(width, split_row(l).size());
+    return width;
+}
+
 bool is_markdown_table_delimiter(std::string_view line) {
     const auto t = trim(line);
     if (!t.starts_with('|') || t.find('-') == std::string_view::npos) return false;
@@ -412,8 +419,7 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
             continue;
         }
         open.clear();
-        std::size_t width = 1;
-        for (const auto& r : rows) width = std::max(width, r.size());
+        const auto width = markdown_table_width(lines.subspan(i, end - i));
         std::string table;
         if (!header) table = join_row({}, width) + "\n" + delimiter_row(width);
         for (std::size_t r = 0; r < rows.size(); ++r) {
