@@ -199,6 +199,9 @@ std::string markdown_line(const document::Block& b) {
     switch (b.kind) {
         case document::BlockKind::heading: {
             auto text = render_spans(b.spans);
+            // Spaces at its end are no text (Markdown strips them), and they
+            // would hide a "#" before them from the check below.
+            text.erase(std::min(text.size(), text.find_last_not_of(" \t") + 1));
             // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
             if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
                 text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
