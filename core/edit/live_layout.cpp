@@ -222,11 +222,18 @@ document::Document LiveLayout::document() const {
     for (std::size_t i = 0; i < entries_.size();) {
         std::size_t end = i + 1;
         std::size_t width = 0;
+        std::vector<document::Align> aligns;  // the columns', from the delimiter row
         if (starts_table_line(entries_[i].line)) {
             width = table_columns(i);
             end = i;
             while (end < entries_.size() && starts_table_line(entries_[end].line)) ++end;
+            for (auto d = i; d < end && aligns.empty(); ++d)
+                if (is_table_delimiter(entries_[d].line)) aligns = exporter::markdown_table_alignments(entries_[d].line);
         }
+        const auto align = [&aligns](document::Block& cell) {
+            const auto c = static_cast<std::size_t>(std::max(cell.level, 0));
+            if (c < aligns.size()) cell.align = aligns[c];
+        };
         for (; i < end; ++i) {
             const auto& e = entries_[i];
             if (!e.block) continue;
@@ -237,12 +244,14 @@ document::Document LiveLayout::document() const {
             for (const auto& cell : e.cells) {
                 doc.blocks.push_back(cell);
                 doc.blocks.back().source_line = line;
+                align(doc.blocks.back());
             }
             for (auto c = e.cells.size(); c < width; ++c) {
                 document::Block empty;
                 empty.kind = document::BlockKind::table_cell;
                 empty.level = static_cast<int>(c);
                 empty.source_line = line;
+                align(empty);
                 doc.blocks.push_back(std::move(empty));
             }
         }

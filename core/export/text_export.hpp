@@ -34,6 +34,11 @@ std::string markdown_table_row(std::span<const document::Block> cells);
 // it the same way (issue 13 item 4: one rule for both).
 std::size_t markdown_table_width(std::span<const std::string> lines);
 
+// The column alignments a pipe table's delimiter row gives: "|:--|:-:|--:|---|"
+// -> left, centre, right, none. The Markdown importer reads them (md4c), the
+// writer writes them back (join_markdown_lines keeps the editor's row's).
+std::vector<document::Align> markdown_table_alignments(std::string_view delimiter);
+
 // True for a pipe table's delimiter row: "|---|:--:|".
 bool is_markdown_table_delimiter(std::string_view line);
 

@@ -39,7 +39,7 @@ TEST(MarkdownWriter, ANumberedListGoesOnAcrossALineThatWritesNothing) {
 }
 
 // Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4, seed
-// 69): raw HTML in a heading, "# \\&  # <b>", reads "&  # " (the tag dropped,
+// 69): raw HTML in a heading, "# \&  # <b>", reads "&  # " (the tag dropped,
 // the space before it kept). Written again from that text, the heading lost
 // the escape that keeps its last "#" (the space after it hid it), so the file
 // read "&": the "#" became a closing run. The editor now reads a heading's

@@ -99,6 +99,7 @@ std::string without_lines(const std::vector<document::Block>& blocks, bool verba
         for (const auto& s : merged)
             out += " [" + std::string(s.note_reference ? "^" : "") + std::to_string(s.emphasis) + ":" + s.text + "]";
         for (const auto& l : b.braille_lines) out += " " + document::to_unicode_text(l);
+        if (b.align != document::Align::none) out += " align " + std::to_string(static_cast<int>(b.align));
         out += "\n";
     }
     return out;
@@ -217,7 +218,8 @@ TEST(RoundTrip, ATableShowsAsATableAndIsSavedAsOne) {
         "Plants:\n\n| Plant | Where it grows |\n|:--|--:|\n| Willow | by the *river* |\n| Fern | in a \\| shade |\n\nAfter.\n";
     const auto doc = import_as(text, "plants.md");
     const auto lines = edit::render_editor_lines(doc, edit::Dialect::markdown);
-    EXPECT_EQ(lines, (std::vector<std::string>{"Plants:", "| Plant | Where it grows |", "| --- | --- |",
+    // (The columns' alignment is kept: issue 13 item 4.)
+    EXPECT_EQ(lines, (std::vector<std::string>{"Plants:", "| Plant | Where it grows |", "| :-- | --: |",
                                                "| Willow | by the *river* |", "| Fern | in a \\| shade |",
                                                "After."}));
     auto live = make(lines, edit::Dialect::markdown);
@@ -460,7 +462,12 @@ struct Editor {
                 }
                 return exporter::markdown_table_row(cells);
             }
-            case 7: return "| --- | --- |";
+            case 7: {
+                // A delimiter row, its columns aligned or not (issue 13: alignment was lost).
+                static const std::vector<std::string> delimiters{"| --- | --- |", "|:--|:-:|", "| --: | --- |",
+                                                                 "|:---:|---:|", "| :-- | --- | --: |"};
+                return delimiters[pick(delimiters.size())];
+            }
             case 8: return "";
             case 9: return "<!-- braillepage -->";
             default: b.kind = document::BlockKind::paragraph; break;
@@ -583,7 +590,7 @@ struct Editor {
 
 // Property: random edits (text, headings, bullets and numbered items at three
 // levels, item text starting with a number, quotes, two-column tables with and
-// without a header, notes and their references, print page breaks with and
+// without a header, their columns aligned or not, notes and their references, print page breaks with and
 // without print numbers, braille page breaks before, between and after the
 // text, Markdown's special characters in the text) on random Markdown
 // documents, through the editor's model as the editor widget drives it
