@@ -41,6 +41,7 @@
 #include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
+#include "layout/braille_pages.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
 #include "motion_view.hpp"
@@ -557,6 +558,7 @@ void MainWindow::export_dialog(const QString& format) {
 }
 
 bool MainWindow::export_to(const QString& path) {
+    if (!may_reflow_braille()) return false;
     const auto& paged = editor_->layout().paged();
     const auto suffix = QFileInfo(path).suffix().toLower();
     Result<std::string> bytes = fail("unknown export format", suffix.toStdString());
@@ -640,6 +642,51 @@ bool MainWindow::maybe_save() {
     return answer == QMessageBox::Discard;
 }
 
+bool MainWindow::may_reflow_braille() {
+    const auto& live = editor_->layout();
+    if (!live.ready_braille()) return true;
+    const auto misfit = layout::find_braille_misfit(live.document(), live.options());
+    if (!misfit) return true;
+    const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
+    const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
+                             "printer's page?")
+                              .arg(name);
+    // The editor's lines do not carry the file's declared grid: the page's own size is said.
+    const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
+                           "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
+                           "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "
+                           "printer whose page is large enough.")
+                            .arg(misfit->page)
+                            .arg(misfit->rows)
+                            .arg(misfit->cols)
+                            .arg(misfit->target_cols)
+                            .arg(misfit->target_rows);
+    if (!interactive_) {
+        report(question + QLatin1Char(' ') + detail, true);
+        return false;
+    }
+    FocusReturn back(this, editor_->print_pane());
+    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("pageTooSmallQuestion"));
+    box.setInformativeText(detail);
+    // The name is what Orca says first ("alert ..."); the question and the
+    // details are the box's labels, which Orca reads next (a description on
+    // the box as well made Orca read all of it twice).
+    box.setAccessibleName(tr("The printer's page is too small"));
+    auto* reflow = box.addButton(tr("&Reflow"), QMessageBox::AcceptRole);
+    auto* stop = box.addButton(tr("&Stop"), QMessageBox::RejectRole);
+    reflow->setObjectName(QStringLiteral("reflowButton"));
+    stop->setObjectName(QStringLiteral("stopButton"));
+    reflow->setAccessibleDescription(tr("Lay the braille out again on the printer's page and go on"));
+    stop->setAccessibleDescription(tr("Emboss or export nothing"));
+    box.setDefaultButton(stop);
+    box.setEscapeButton(stop);
+    box.exec();
+    if (box.clickedButton() == reflow) return true;
+    report(tr("Stopped: nothing was embossed or exported (the printer's page is too small for %1)").arg(name));
+    return false;
+}
+
 bool MainWindow::may_stop_embossing() {
     const auto job = printer_->embossing();
     if (!job || !interactive_) return true;
@@ -705,6 +752,9 @@ bool MainWindow::emboss() {
     // Else into the spool: the job outlives this window, and waits if the
     // embosser is unreachable.
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    // A CUPS queue lays the document out with its own embosser's profile; the
+    // spool embosses the pages laid out here, on this profile's page.
+    if (!printer_->selected_is_queue() && !may_reflow_braille()) return false;
     const bool sent = printer_->selected_is_queue()
                           ? printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")), tables_->table())
                           : printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;

@@ -124,6 +124,11 @@ private:
     void report(const QString& message, bool error = false);
     [[nodiscard]] QString table_warning(const QString& detail) const;
     bool maybe_save();
+    // Ready-made braille (BRF, PEF) whose page is larger than the printer's:
+    // asks before anything is embossed or exported whether to reflow it on the
+    // printer's page or to stop (layout::find_braille_misfit, the rule the
+    // CLI's exit 5 asks). True to go on. A window that is not interactive stops.
+    bool may_reflow_braille();
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
     void remove_autosave();

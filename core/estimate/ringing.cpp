@@ -41,7 +41,7 @@ struct Model {
     Eigen::RowVector4d c = Eigen::RowVector4d::Zero();
     Vec4 eq = Vec4::Zero();  // the resting state under a unit command
     Rows rows;               // c exp(A s_i), s_i = i dwell / kSamples: head error at each dwell instant
-    Vec4 colmax;             // max_i |rows(i, j)|: |rows z| <= colmax . |z|
+    Vec4 cmax, cmin;         // max_i and min_i of rows(i, j): bound the error (sample_bound)
     Mat4 dwell;              // exp(A dwell)
     std::array<Mat4, kBits> pow2;
     int n = 0;
@@ -65,7 +65,8 @@ Model make_model(const StateSpace& s, double dwell_s) {
     // At rest under a constant command u: A x + B u = 0.
     m.eq.head(s.n) = -a.partialPivLu().solve(b);
     for (int i = 0; i <= kSamples; ++i) m.rows.row(i) = m.c * expm(m.a, dwell_s * i / kSamples);
-    m.colmax = m.rows.cwiseAbs().colwise().maxCoeff().transpose();
+    m.cmax = m.rows.colwise().maxCoeff().transpose();
+    m.cmin = m.rows.colwise().minCoeff().transpose();
     m.dwell = expm(m.a, dwell_s);
     for (int k = 0; k < kBits; ++k) m.pow2[static_cast<std::size_t>(k)] = expm(m.a, std::ldexp(1.0, k) / machine::kTickHz);
     return m;
@@ -75,20 +76,23 @@ Model make_model(const StateSpace& s, double dwell_s) {
 // so that every element is computed by the same operations in the same order
 // as the plain loop (one IEEE multiply or add at a time, no reassociation),
 // two elements per SSE2 instruction: the same bits, in half the instructions.
-double error_um(const Model& m, const Vec4& z) {
+// `off` (mm) is where the command rests past the dot the hammer must hit
+// (command minus dot): the error is then head minus dot, rows z + off.
+double error_um(const Model& m, const Vec4& z, double off = 0.0) {
     const double* c = m.rows.data();  // column-major, kSamples + 1 rows
     constexpr int n = kSamples + 1;
     double worst = 0;
     int r = 0;
 #if defined(__SSE2__)
     const __m128d z0 = _mm_set1_pd(z[0]), z1 = _mm_set1_pd(z[1]), z2 = _mm_set1_pd(z[2]), z3 = _mm_set1_pd(z[3]);
-    const __m128d sign = _mm_set1_pd(-0.0);
+    const __m128d sign = _mm_set1_pd(-0.0), o = _mm_set1_pd(off);
     __m128d w = _mm_setzero_pd();
     for (; r + 1 < n; r += 2) {
         __m128d e = _mm_mul_pd(_mm_loadu_pd(c + r), z0);
         e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + n + r), z1));
         e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 2 * n + r), z2));
         e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 3 * n + r), z3));
+        e = _mm_add_pd(e, o);  // + 0.0 leaves e as it was
         w = _mm_max_pd(w, _mm_andnot_pd(sign, e));  // |e|
     }
     alignas(16) double lanes[2];
@@ -96,8 +100,22 @@ double error_um(const Model& m, const Vec4& z) {
     worst = std::max(lanes[0], lanes[1]);
 #endif
     for (; r < n; ++r)
-        worst = std::max(worst, std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3]));
+        worst = std::max(worst,
+                         std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3] + off));
     return 1000.0 * worst;
+}
+
+// A bound on error_um(m, z, off) / 1000 without sampling: every row's
+// product rows(i) z lies between the sums of the columns' smallest and largest
+// products with z; the error is that plus `off`.
+double sample_bound(const Model& m, const Vec4& z, double off) {
+    double hi = off, lo = off;
+    for (int j = 0; j < 4; ++j) {
+        const double a = z[j] * m.cmax[j], b = z[j] * m.cmin[j];
+        hi += std::max(a, b);
+        lo += std::min(a, b);
+    }
+    return std::max(std::fabs(hi), std::fabs(lo));
 }
 
 Vec4 after_ticks(const Model& m, Vec4 z, std::uint64_t ticks) {
@@ -136,15 +154,15 @@ struct Ringing::Impl {
     mutable std::size_t first = 1;  // the band model that failed (or was worst) last: tried first
     mutable std::size_t worst_model = 1;
 
-    [[nodiscard]] bool within(const std::vector<Vec4>& zs, std::uint64_t ticks, double target_um) const {
+    [[nodiscard]] bool within(const std::vector<Vec4>& zs, std::uint64_t ticks, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
         for (std::size_t k = 0; k < nb; ++k) {
             const std::size_t i = 1 + (first - 1 + k) % nb;
             const Model& m = models[i];
             const Vec4 zz = after_ticks(m, zs[i], ticks);
-            if (m.colmax.dot(zz.cwiseAbs()) <= target_mm) continue;  // cannot exceed: no need to sample
-            if (error_um(m, zz) > target_um) {
+            if (sample_bound(m, zz, off) <= target_mm) continue;  // cannot exceed: no need to sample
+            if (error_um(m, zz, off) > target_um) {
                 first = i;
                 return false;
             }
@@ -153,14 +171,14 @@ struct Ringing::Impl {
     }
 
     // Every band model of `zs` within target_um (the states as they are).
-    [[nodiscard]] bool passes(const std::vector<Vec4>& zs, double target_um) const {
+    [[nodiscard]] bool passes(const std::vector<Vec4>& zs, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
         for (std::size_t k = 0; k < nb; ++k) {
             const std::size_t i = 1 + (first - 1 + k) % nb;
             const Model& m = models[i];
-            if (m.colmax.dot(zs[i].cwiseAbs()) <= target_mm) continue;
-            if (error_um(m, zs[i]) > target_um) {
+            if (sample_bound(m, zs[i], off) <= target_mm) continue;
+            if (error_um(m, zs[i], off) > target_um) {
                 first = i;
                 return false;
             }
@@ -175,11 +193,11 @@ struct Ringing::Impl {
     }
 
     [[nodiscard]] std::int64_t settle(const std::vector<Vec4>& zs, double target_um, std::uint64_t from,
-                                      std::uint64_t max_ticks) const {
+                                      std::uint64_t max_ticks, double off) const {
         std::vector<Vec4> lo_z = zs;
         if (from > 0)
             for (std::size_t i = 0; i < lo_z.size(); ++i) lo_z[i] = after_ticks(models[i], zs[i], from);
-        if (passes(lo_z, target_um)) return static_cast<std::int64_t>(from);
+        if (passes(lo_z, target_um, off)) return static_cast<std::int64_t>(from);
         // Rests grow by powers of two from the last that failed until one
         // passes; then the bits below it, from the highest, each kept when the
         // rest with it still fails: the first tick that passes after the last
@@ -189,13 +207,13 @@ struct Ringing::Impl {
         for (;; ++k) {
             if (k >= kBits || lo + (std::uint64_t{1} << k) > max_ticks) return -1;
             auto hi_z = advanced(lo_z, k);
-            if (passes(hi_z, target_um)) break;
+            if (passes(hi_z, target_um, off)) break;
             lo += std::uint64_t{1} << k;
             lo_z = std::move(hi_z);
         }
         for (--k; k >= 0; --k) {
             auto try_z = advanced(lo_z, k);
-            if (passes(try_z, target_um)) continue;
+            if (passes(try_z, target_um, off)) continue;
             lo += std::uint64_t{1} << k;
             lo_z = std::move(try_z);
         }
@@ -208,15 +226,15 @@ struct Ringing::Impl {
         dwell_pending = false;
     }
 
-    [[nodiscard]] Residual residual(const std::vector<Vec4>& zs) const {
+    [[nodiscard]] Residual residual(const std::vector<Vec4>& zs, double off) const {
         Residual r;
-        r.nominal_um = error_um(models[0], zs[0]);
+        r.nominal_um = error_um(models[0], zs[0], off);
         const std::size_t nb = models.size() - 1;
         for (std::size_t k = 0; k < nb; ++k) {
             const std::size_t i = 1 + (first - 1 + k) % nb;  // the one that was worst last, first
             const Model& m = models[i];
-            if (1000.0 * m.colmax.dot(zs[i].cwiseAbs()) <= r.worst_um) continue;  // cannot be the worst
-            const double e = error_um(m, zs[i]);
+            if (1000.0 * sample_bound(m, zs[i], off) <= r.worst_um) continue;  // cannot be the worst
+            const double e = error_um(m, zs[i], off);
             if (e > r.worst_um) r.worst_um = e, worst_model = i;
         }
         first = worst_model;
@@ -434,31 +452,31 @@ void Ringing::dwell() {
     impl_->dwell_pending = true;  // applied by the next move (one product) or whatever comes first
 }
 
-Ringing::Residual Ringing::residual() {
+Ringing::Residual Ringing::residual(double offset_mm) {
     impl_->apply_dwell();
-    return impl_->residual(impl_->z);
+    return impl_->residual(impl_->z, offset_mm);
 }
 
-bool Ringing::within_after(std::uint64_t ticks, double target_um) {
+bool Ringing::within_after(std::uint64_t ticks, double target_um, double offset_mm) {
     impl_->apply_dwell();
-    return impl_->within(impl_->z, ticks, target_um);
+    return impl_->within(impl_->z, ticks, target_um, offset_mm);
 }
 
-std::int64_t Ringing::settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks) {
+std::int64_t Ringing::settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks, double offset_mm) {
     impl_->apply_dwell();
-    return impl_->settle(impl_->z, target_um, from, max_ticks);
+    return impl_->settle(impl_->z, target_um, from, max_ticks, offset_mm);
 }
 
-std::int64_t Ringing::settle_after(const Move& mv, double target_um, std::uint64_t max_ticks) const {
-    return impl_->settle(mv.w, target_um, 0, max_ticks);
+std::int64_t Ringing::settle_after(const Move& mv, double target_um, std::uint64_t max_ticks, double offset_mm) const {
+    return impl_->settle(mv.w, target_um, 0, max_ticks, offset_mm);
 }
 
-Ringing::Residual Ringing::from_rest(const Move& mv, double rest_s) const {
+Ringing::Residual Ringing::from_rest(const Move& mv, double rest_s, double offset_mm) const {
     const auto& s = *impl_;
     std::vector<Vec4> z(mv.w.begin(), mv.w.end());
     if (rest_s > 0)
         for (std::size_t i = 0; i < z.size(); ++i) z[i] = expm(s.models[i].a, rest_s) * z[i];
-    return s.residual(z);
+    return s.residual(z, offset_mm);
 }
 
 }  // namespace tactus::estimate

@@ -67,25 +67,32 @@ public:
     // The command held for `seconds`.
     void rest(double seconds);
     void rest_ticks(std::uint64_t ticks);
-    // Largest |head - command| while a hammer strikes now (through the dwell,
+    // `offset_mm` below: where the command rests past the dot the hammer must
+    // hit (command minus dot, mm, in carriage coordinates; 0: on the dot). The
+    // residual is then |head - dot|, the error state z staying relative to
+    // the command. docs/motion.md, "Aim past the dot".
+    //
+    // Largest |head - dot| while a hammer strikes now (through the dwell,
     // 33 instants), um.
-    [[nodiscard]] Residual residual();
+    [[nodiscard]] Residual residual(double offset_mm = 0);
     // Is the worst residual of a strike made after `ticks` more at rest within `target_um`?
-    [[nodiscard]] bool within_after(std::uint64_t ticks, double target_um);
+    [[nodiscard]] bool within_after(std::uint64_t ticks, double target_um, double offset_mm = 0);
     // The fewest ticks at rest, at least `from`, after which a strike's worst
     // residual is within `target_um` (`from` itself when it is; else rests
     // grow from `from` until one passes, and a bisection to the tick finds
     // the first that passes after the last that failed); -1 when none up to
     // `max_ticks` does.
-    [[nodiscard]] std::int64_t settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks);
-    // settle_ticks from 0 for a strike right after `m`, the head at rest before it.
-    [[nodiscard]] std::int64_t settle_after(const Move& m, double target_um, std::uint64_t max_ticks) const;
+    [[nodiscard]] std::int64_t settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks,
+                                            double offset_mm = 0);
+    // settle_ticks from 0 for a strike right after `m` (direction +1), the head at rest before it.
+    [[nodiscard]] std::int64_t settle_after(const Move& m, double target_um, std::uint64_t max_ticks,
+                                            double offset_mm = 0) const;
     // The hammer dwell passes (the command held); folded into the next move's product.
     void dwell();
 
     // The residual of a strike right after `m` (plus `rest_s` at rest), the
     // head at rest before it: what auto-tune compares.
-    [[nodiscard]] Residual from_rest(const Move& m, double rest_s = 0) const;
+    [[nodiscard]] Residual from_rest(const Move& m, double rest_s = 0, double offset_mm = 0) const;
     [[nodiscard]] std::size_t models() const;
 
 private:

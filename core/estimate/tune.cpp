@@ -54,6 +54,40 @@ MoveTuner::MoveTuner(const profile::PrinterProfile& p) : p_(p), ringing_(p) {
     const double f = dominant_frequency_hz(p.dynamics);
     for (auto k : {ShaperKind::none, ShaperKind::zv, ShaperKind::mzv, ShaperKind::zvd, ShaperKind::ei})
         shapers_.push_back(motion::design_shaper(k, f, p.dynamics.damping_ratio));
+    if (p.motion.shape == ProfileShape::automatic || p.motion.shaper == ShaperKind::automatic)
+        aim_steps_ = choose_aim_steps();
+}
+
+std::int32_t MoveTuner::choose_aim_steps() {
+    // Measured on the move that wins on heavily damped machines, the
+    // time-optimal one and the shortest settle after it: whichever aim the
+    // choice lands on, every move is then tuned (and checked) with it.
+    const auto& g = p_.geometry;
+    const double spm = p_.carriage.steps_per_mm;
+    const motion::Limits lim{p_.carriage.v_max_mm_s, p_.carriage.a_max_mm_s2, p_.carriage.j_max_mm_s3};
+    std::vector<std::shared_ptr<const Ringing::Move>> moves;
+    std::vector<std::int64_t> lengths;
+    for (double mm : {g.dot_pitch_mm, g.cell_pitch_mm - g.dot_pitch_mm, g.cell_pitch_mm}) {
+        const auto steps = std::lround(std::max(0.0, mm) * spm);
+        if (steps <= 0 || std::find(lengths.begin(), lengths.end(), steps) != lengths.end()) continue;
+        lengths.push_back(steps);
+        moves.push_back(ringing_.prepare(motion::jerk_move(static_cast<double>(steps) / spm, lim)));
+    }
+    std::int32_t best = 0;
+    std::int64_t best_ticks = -1;
+    for (std::int32_t aim = 0; 1000.0 * aim / spm < target_um(); ++aim) {
+        std::int64_t total = 0;
+        for (const auto& m : moves) {
+            const auto t = ringing_.settle_after(*m, target_um(), kMaxSettleTicks, aim / spm);
+            if (t < 0) {
+                total = -1;
+                break;
+            }
+            total += t;
+        }
+        if (total >= 0 && (best_ticks < 0 || total < best_ticks)) best_ticks = total, best = aim;
+    }
+    return best;
 }
 
 const motion::Shaper& MoveTuner::design_shaper(ShaperKind k) const {
@@ -103,7 +137,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                 if (tuned && s == 1.0 && steps > 0 && k == ShaperKind::none) {
                     Candidate r = c;
                     r.effect = ringing_.prepare(r.move);
-                    const auto ticks = ringing_.settle_after(*r.effect, target_um(), kMaxSettleTicks);
+                    const auto ticks = ringing_.settle_after(*r.effect, target_um(), kMaxSettleTicks, aim_mm());
                     if (ticks > 0) {
                         r.settle_ticks = static_cast<std::uint32_t>(ticks);
                         r.settle = static_cast<double>(ticks) / machine::kTickHz;
@@ -128,7 +162,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
         if (!c.effect) c.effect = ringing_.prepare(c.move);  // no settle: the move is the base
         Ringing::Residual res;
         if (steps > 0) {
-            res = c.settle_ticks > 0 ? ringing_.from_rest(*c.effect, c.settle) : ringing_.from_rest(*c.effect);
+            res = ringing_.from_rest(*c.effect, c.settle_ticks > 0 ? c.settle : 0.0, aim_mm());
         }
         const double worst = res.worst_um;
         const bool last = i + 1 == cands.size();
@@ -155,6 +189,9 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
                                " um) is within " + fmt(1, tol) + " um";
                 if (n_rejected > 0)
                     t.choice.why += "; " + std::to_string(n_rejected) + " faster rejected: " + rejected;
+                if (aim_steps_ > 0)
+                    t.choice.why += "; the command stops " + std::to_string(aim_steps_) + " steps (" +
+                                    fmt(1, 1000.0 * aim_mm()) + " um) past the dot";
             }
             t.shape = std::move(c.move);
             t.base_duration_s = c.base_duration;

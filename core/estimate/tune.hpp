@@ -53,8 +53,18 @@ public:
     [[nodiscard]] const std::map<std::uint32_t, TunedMove>& decisions() const { return cache_; }
     [[nodiscard]] const motion::Shaper& design_shaper(profile::ShaperKind k) const;
 
+    // Where auto-tune has the command stop: this many carriage steps past the
+    // dot, in the direction of the move (0 with the profile's shape and shaper
+    // fixed). Chosen once per profile (choose_aim_steps), the same for every
+    // move: a strike's residual is |head - dot|, and a head that lags behind
+    // the command (a heavily damped machine creeping onto it) reaches a dot
+    // the command overshoots sooner. docs/motion.md, "Aim past the dot".
+    [[nodiscard]] std::int32_t aim_steps() const { return aim_steps_; }
+    [[nodiscard]] double aim_mm() const { return aim_steps_ / p_.carriage.steps_per_mm; }
+
     // Residual of an arbitrary move on the nominal machine and its band worst
-    // case (band_variants), um, the head at rest before the move.
+    // case (band_variants), um, the head at rest before the move, the command
+    // stopping on the dot (no aim offset).
     double nominal_residual_um(const motion::MoveShape& m);
     double worst_residual_um(const motion::MoveShape& m);
     // What auto-tune aims the band's worst case at: the tolerance less 0.1 um.
@@ -63,7 +73,13 @@ public:
     [[nodiscard]] const Ringing& ringing() const { return ringing_; }
 
 private:
+    // The aim (0, 1, 2, ... steps, while within target_um) for which the
+    // settles after the time-optimal moves of the sheet's typical lengths (dot
+    // pitch, cell pitch less dot pitch, cell pitch) add up to least; ties to
+    // the smaller.
+    std::int32_t choose_aim_steps();
     profile::PrinterProfile p_;
+    std::int32_t aim_steps_ = 0;
     Ringing ringing_;
     std::vector<motion::Shaper> shapers_;  // indexed by ShaperKind
     std::map<std::uint32_t, TunedMove> cache_;

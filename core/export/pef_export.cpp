@@ -88,9 +88,6 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
         if (!meta.language.empty()) m.append_child("dc:language").text() = meta.language.c_str();
         if (!meta.date.empty()) m.append_child("dc:date").text() = meta.date.c_str();
     }
-    std::ostringstream head_text;
-    head_xml.save(head_text, "  ", pugi::format_indent | pugi::format_no_declaration,
-                  pugi::encoding_utf8);
 
     const auto& g = doc.geometry;
     // Ready-made braille keeps its sections and their duplex; laid-out text is one
@@ -98,8 +95,9 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
     const bool volume_duplex = doc.sections.empty() ? g.interpoint : doc.sections.front().duplex;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\">\n";
-    std::istringstream head_lines(head_text.str());
-    for (std::string line; std::getline(head_lines, line);) out << "  " << line << '\n';
+    // One level in, under <pef>: pugixml indents the elements, never the text
+    // inside them (a multi-line dc:description stays as the source had it).
+    head.print(out, "  ", pugi::format_indent, pugi::encoding_utf8, 1);
     out << "  <body>\n    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page
         << "\" rowgap=\"" << (g.eight_dot ? 1 : 0) << "\" duplex=\""
         << (volume_duplex ? "true" : "false") << "\">\n";

@@ -59,7 +59,7 @@ bool is_ready_braille(const document::Document& doc) {
     return any;
 }
 
-Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target) {
+std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& doc, const LayoutOptions& target) {
     const auto& g = target.geometry;
     const auto pages = source_pages(doc);
     for (std::size_t p = 0; p < pages.size(); ++p) {
@@ -67,19 +67,28 @@ Result<void> check_braille_fits(const document::Document& doc, const LayoutOptio
         const int cols = longest_row(pages[p].rows);
         if (rows <= g.lines_per_page && cols <= g.cells_per_line) continue;
         const auto grid = doc.braille_grid;
-        const std::string source_size =
-            grid ? std::to_string(grid->cols) + " cells x " + std::to_string(grid->rows) + " lines"
-                 : std::to_string(cols) + " cells x " + std::to_string(rows) + " lines";
-        return fail("braille page " + std::to_string(p + 1) + " has " + std::to_string(rows) + " rows of up to " +
-                        std::to_string(cols) + " cells (the file's page is " + source_size +
-                        "), but the page holds " + std::to_string(g.cells_per_line) + " cells x " +
-                        std::to_string(g.lines_per_page) +
-                        " lines; stopped before anything was laid out or embossed. Use a printer or --preset whose page is"
-                        " at least "
-                        "that large, or --reflow to lay the braille out again on this page",
-                    pages[p].source_line > 0 ? std::to_string(pages[p].source_line) : std::string{});
+        return BraillePageMisfit{.page = static_cast<int>(p + 1),
+                                 .rows = rows,
+                                 .cols = cols,
+                                 .file_cols = grid ? grid->cols : cols,
+                                 .file_rows = grid ? grid->rows : rows,
+                                 .target_cols = g.cells_per_line,
+                                 .target_rows = g.lines_per_page,
+                                 .source_line = pages[p].source_line};
     }
-    return {};
+    return std::nullopt;
+}
+
+Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target) {
+    const auto m = find_braille_misfit(doc, target);
+    if (!m) return {};
+    return fail("braille page " + std::to_string(m->page) + " has " + std::to_string(m->rows) + " rows of up to " +
+                    std::to_string(m->cols) + " cells (the file's page is " + std::to_string(m->file_cols) +
+                    " cells x " + std::to_string(m->file_rows) + " lines), but the page holds " +
+                    std::to_string(m->target_cols) + " cells x " + std::to_string(m->target_rows) +
+                    " lines; stopped before anything was laid out or embossed. Use a printer or --preset whose page is"
+                    " at least that large, or --reflow to lay the braille out again on this page",
+                m->source_line > 0 ? std::to_string(m->source_line) : std::string{});
 }
 
 Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target) {

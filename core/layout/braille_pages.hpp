@@ -4,6 +4,8 @@
 // source's rows on the source's pages, with the page numbers it carries and no
 // new ones, PEF sections each starting on a new sheet. Laying it out again
 // (the paginator) is a choice the user makes, not something done silently.
+#include <optional>
+
 #include "common/result.hpp"
 #include "document/document.hpp"
 #include "layout/layout_options.hpp"
@@ -14,6 +16,23 @@ namespace tactus::layout {
 // True when the document is formatted braille: it has braille pages and no text
 // to translate (what the BRF and PEF importers produce).
 bool is_ready_braille(const document::Document& doc);
+
+// The first source page that the target's page cannot hold, with both sizes.
+struct BraillePageMisfit {
+    int page = 0;         // 1-based source page
+    int rows = 0;         // its rows
+    int cols = 0;         // its longest row, in cells
+    int file_cols = 0;    // the file's own page (PEF cols/rows; else this page's size)
+    int file_rows = 0;
+    int target_cols = 0;  // the target's page
+    int target_rows = 0;
+    int source_line = 0;  // where the page starts in the file (0: unknown)
+};
+
+// Nothing when every source page fits the target's page (a row no longer than
+// its cells, no more rows than its lines). The one rule the CLI (exit 5) and
+// the app (its question before embossing or exporting) both ask.
+std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& doc, const LayoutOptions& target);
 
 // Fails, naming the first page that does not fit and both sizes, when a source
 // page has more rows than `target` has lines or a row longer than its cells.

@@ -26,7 +26,7 @@ struct Strike {
     // Added by the plan stage for estimate and preview:
     double paper_x_mm = 0;  // the dot in paper coordinates: the sheet as it runs
     double paper_y_mm = 0;  // through the machine, front side up
-    double residual_um = 0;        // head position error while the hammer is down, nominal machine
+    double residual_um = 0;        // the head's distance from the dot while the hammer is down, nominal machine
     double worst_residual_um = 0;  // the same, worst case over the damping/frequency band
     bool operator==(const Strike&) const = default;
 };

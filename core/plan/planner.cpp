@@ -144,10 +144,18 @@ Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, c
     return &sorted;
 }
 
-// The carriage steps from `cur` to `target`: the sources' reversal test on
-// the last, current and next stops (a reversal takes up the backlash).
-// Moves the stops on (prev, cur) when the head moves.
-std::int32_t head_move(std::int32_t& prev, std::int32_t& cur, std::int32_t target, std::int32_t backlash) {
+// The carriage steps from the stop `cur` to the next, for `dot`: the command
+// stops `aim` steps past the dot in the direction it moves
+// (MoveTuner::aim_steps; 0 for table moves: on the dot), a head lagging
+// behind it reaching the dot sooner; it does not move when it is on (or
+// aimed at) the dot already. The sources' reversal test on the last,
+// current and next stops (a reversal takes up the backlash). Moves the stops
+// on (prev, cur) when the head moves, and sets `aimed` to cur less the dot.
+std::int32_t head_move(std::int32_t& prev, std::int32_t& cur, std::int32_t& aimed, std::int32_t dot,
+                       std::int32_t aim, std::int32_t backlash) {
+    std::int32_t target = cur;
+    if (dot != cur - aimed && dot != cur) target = dot + (dot > cur ? aim : -aim);
+    aimed = target - dot;
     if (target == cur) return 0;
     const bool reversal = static_cast<std::int64_t>(cur - prev) * static_cast<std::int64_t>(target - cur) < 0;
     const int dir = target > cur ? 1 : -1;
@@ -396,9 +404,14 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
         pass.strikes.reserve(end - first);
         for (std::size_t k = 0; k < end - first; ++k) {
             const Hit& hit = pass.direction > 0 ? h[first + k] : h[end - 1 - k];
-            const std::int32_t target = hit.head_step;
-            const double head_mm = std::abs(target - head_cur_) / p_.carriage.steps_per_mm;
-            const std::int32_t n = head_move(head_prev_, head_cur_, target, backlash);
+            // The command stops aim_steps past the dot (head_move); the lower
+            // bound moves dot to dot.
+            const std::int32_t dot = hit.head_step, dot_cur = head_cur_ - aim_cur_;
+            const std::int32_t aim_steps = o_.firmware ? 0 : tuner_->aim_steps();
+            const double head_mm = std::abs(dot - dot_cur) / p_.carriage.steps_per_mm;
+            const std::int32_t n = head_move(head_prev_, head_cur_, aim_cur_, dot, aim_steps, backlash);
+            // Where the command rests past the dot: the residual is |head - dot|.
+            const double off_mm = aim_cur_ / p_.carriage.steps_per_mm;
             motor_step_ += n;
             // Table moves (v3) are not tuned (no shape to choose); their
             // residual is estimated on the table's step train.
@@ -433,9 +446,9 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
                 std::int64_t settle = tm.choice.settle_ticks;
                 if (n != 0) ringing_->move(*tm.settled, n > 0 ? 1 : -1);
                 else ringing_->rest_ticks(static_cast<std::uint64_t>(settle));
-                auto res = ringing_->residual();
+                auto res = ringing_->residual(off_mm);
                 if (res.worst_um > aim) {
-                    const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                    const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                     if (more < 0)
                         return fail("the head does not settle within " + std::to_string(p_.vibration.tolerance_um) +
                                         " um before strike " + std::to_string(k + 1) + " of the pass at " +
@@ -443,22 +456,22 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
                                     "field vibration.tolerance_um");
                     ringing_->rest_ticks(static_cast<std::uint64_t>(more));
                     settle += more;
-                    res = ringing_->residual();
+                    res = ringing_->residual(off_mm);
                 }
                 move_time = tm.base_duration_s + static_cast<double>(settle) / machine::kTickHz;
                 if (k == 0 && feed_time > move_time) {
                     // The carriage waits for the paper at rest: that wait settles it too.
                     ringing_->rest(feed_time - move_time);
-                    res = ringing_->residual();
+                    res = ringing_->residual(off_mm);
                     if (res.worst_um > p_.vibration.tolerance_um) {
                         // Seldom: the ringing after the longer wait is not within tolerance.
-                        const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks);
+                        const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                         if (more < 0)
                             return fail("the head does not settle before the first strike of the pass at " +
                                             std::to_string(pass.y_mm) + " mm",
                                         "field vibration.tolerance_um");
                         ringing_->rest_ticks(static_cast<std::uint64_t>(more));
-                        res = ringing_->residual();
+                        res = ringing_->residual(off_mm);
                         move_time = feed_time + static_cast<double>(more) / machine::kTickHz;
                         settle = static_cast<std::int64_t>(
                             std::ceil((move_time - tm.base_duration_s) * machine::kTickHz));
@@ -530,6 +543,7 @@ struct SheetQueue::Impl {
     struct Machine {
         std::int32_t head_prev = 0, head_cur = 0, motor_step = 0;
         int next_direction = +1;
+        std::int32_t aim_cur = 0;
         bool operator==(const Machine&) const = default;
     };
     struct Job {
@@ -561,10 +575,12 @@ struct SheetQueue::Impl {
 
     Impl(Planner& pl, const layout::PagedDocument& d, std::size_t first)
         : planner(pl), doc(d), next_sheet(first), next_queued(first) {
-        ahead = {planner.head_prev_, planner.head_cur_, planner.motor_step_, planner.next_direction_};
+        ahead = state_of(planner);
     }
 
-    static Machine state_of(const Planner& p) { return {p.head_prev_, p.head_cur_, p.motor_step_, p.next_direction_}; }
+    static Machine state_of(const Planner& p) {
+        return {p.head_prev_, p.head_cur_, p.motor_step_, p.next_direction_, p.aim_cur_};
+    }
 
     // Collects the next sheet's dots, carries the machine state through its
     // passes (the same head_move, the same pass order as plan_hits), tunes
@@ -582,6 +598,7 @@ struct SheetQueue::Impl {
             const auto backlash = planner.carriage_axis_.steps_for(planner.p_.carriage.backlash_mm);
             const bool bidirectional = planner.p_.motion.bidirectional;
             const bool tuned = !planner.o_.firmware;
+            const std::int32_t aim = tuned ? planner.tuner_->aim_steps() : 0;
             auto& table = planner.tuned_;
             for (std::size_t first = 0; first < h.size();) {
                 std::size_t end = first;
@@ -590,7 +607,8 @@ struct SheetQueue::Impl {
                 if (bidirectional) ahead.next_direction = -ahead.next_direction;
                 for (std::size_t k = 0; k < end - first; ++k) {
                     const Hit& hit = direction > 0 ? h[first + k] : h[end - 1 - k];
-                    const std::int32_t n = head_move(ahead.head_prev, ahead.head_cur, hit.head_step, backlash);
+                    const std::int32_t n =
+                        head_move(ahead.head_prev, ahead.head_cur, ahead.aim_cur, hit.head_step, aim, backlash);
                     ahead.motor_step += n;
                     if (!tuned) continue;
                     const auto steps = static_cast<std::uint32_t>(std::abs(n));
@@ -647,6 +665,7 @@ struct SheetQueue::Impl {
             w.head_cur_ = job->start.head_cur;
             w.motor_step_ = job->start.motor_step;
             w.next_direction_ = job->start.next_direction;
+            w.aim_cur_ = job->start.aim_cur;
             w.clock_s_ = 0;
             w.totals_ = {};
             for (const auto& [steps, move] : job->tuned) {
@@ -751,6 +770,7 @@ Result<SheetPlan> SheetQueue::next() {
     p.head_cur_ = job->end.head_cur;
     p.motor_step_ = job->end.motor_step;
     p.next_direction_ = job->end.next_direction;
+    p.aim_cur_ = job->end.aim_cur;
     return std::move(r);
 }
 

@@ -128,6 +128,7 @@ private:
     std::int32_t motor_step_ = 0;   // the controller's carriage step counter
     std::int32_t head_prev_ = -1;   // P1 of the reversal rule: homing ends moving +x (v3: toward home)
     std::int32_t head_cur_ = 0;     // P2: where the head stands (in carriage steps)
+    std::int32_t aim_cur_ = 0;      // head_cur_ less the dot struck there (the command stops past it: tune.hpp)
     int next_direction_ = +1;
     machine::StrikeTiming strike_;  // v3 only
     // SheetQueue's workers: what the clock advances before each strike, in

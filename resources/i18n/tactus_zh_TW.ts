@@ -757,6 +757,46 @@
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The printer&apos;s page is too small for the pages of %1. Lay the braille out again on the printer&apos;s page?</source>
+        <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Braille page %1 has %2 lines of up to %3 cells; the printer&apos;s page holds %4 cells by %5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
+        <translation>點字第 %1 頁有 %2 行，每行最多 %3 方；印表機的頁面只容納每行 %4 方、每頁 %5 行。尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The printer&apos;s page is too small</source>
+        <translation>印表機的頁面太小</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>&amp;Reflow</source>
+        <translation>重新排版(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Lay the braille out again on the printer&apos;s page and go on</source>
+        <translation>在印表機的頁面上重新排版點字並繼續</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Emboss or export nothing</source>
+        <translation>不列印也不匯出</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Stopped: nothing was embossed or exported (the printer&apos;s page is too small for %1)</source>
+        <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
+    </message>
+    <message>
         <location filename="../../widgets/main_window.cpp" line="766" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>

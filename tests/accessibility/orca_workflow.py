@@ -18,6 +18,9 @@ works the app by keyboard only, asserting after every key what Orca says:
   formfeed  a text file with a form feed: the cursor coming to that line says
           "Print page break, page 2" (the form feed itself has no glyph), and
           the next line is read as text again (issue 13).
+  pagetoosmall  a 40 x 25 PEF on the default 27 x 24 profile: Ctrl+P reads the
+          question with both sizes and the focused Stop button, Tab reads
+          Reflow, Escape stops and says nothing was embossed (issue 13 item 1).
 
 usage: orca_workflow.py SCENARIO TACTUS SAMPLE
 Exit 0 pass, 1 fail (with the transcript), 77 skipped (no Orca / window manager).
@@ -223,8 +226,25 @@ def scenario_formfeed(tactus, sample, work):
     return 0
 
 
+def scenario_pagetoosmall(tactus, sample, work):
+    root = os.path.dirname(os.path.dirname(os.path.dirname(sample)))  # resources/samples/welcome.md
+    pef = os.path.join(root, "tests", "data", "pef", "us_braille_40x25.pef")
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", pef])
+        s.step("Ctrl+P asks before embossing", keys=["ctrl+p"],
+               expect=[r"too small", r"25 lines of up to \d+ cells", r"27 cells by 24 lines", r"Stop push button"],
+               once=[r"Nothing has been embossed"])
+        s.step("Tab reads the other button", keys=["Tab"], expect=[r"Reflow push button"])
+        s.step("Escape stops", keys=["Escape"], expect=[r"Stopped: nothing was embossed"],
+               forbid=[r"Embossing us_braille"])
+        print(s.summary())
+    return 0
+
+
 SCENARIOS = {"open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
-             "formfeed": scenario_formfeed}
+             "formfeed": scenario_formfeed, "pagetoosmall": scenario_pagetoosmall}
 
 
 def main():

@@ -135,6 +135,25 @@ TEST(BraillePages, PageLargerThanThePrinterPageIsRefusedBeforeAnything) {
     EXPECT_EQ(rows(fits->pages[0]).size(), 25u);
 }
 
+// The one rule the CLI's exit 5 and the app's question ask: the first page
+// that does not fit, with the file's page and the printer's.
+TEST(BraillePages, MisfitNamesThePageAndBothSizes) {
+    const auto doc = read_pef("us_braille_40x25.pef");
+    const auto m = find_braille_misfit(doc, a4().layout);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->page, 1);
+    EXPECT_EQ(m->file_cols, 40);
+    EXPECT_EQ(m->file_rows, 25);
+    EXPECT_EQ(m->target_cols, 27);
+    EXPECT_EQ(m->target_rows, 24);
+    EXPECT_GT(m->cols, 27);
+    LayoutOptions big;
+    big.geometry.cells_per_line = 40;
+    big.geometry.lines_per_page = 25;
+    EXPECT_FALSE(find_braille_misfit(doc, big));
+    EXPECT_TRUE(check_braille_fits(doc, big));
+}
+
 // BRF written by layout and read back gives the same pages: no second page
 // number, no page split in two (4 pages for 2 before).
 TEST(BraillePages, BrfRoundTripIsPageForPage) {

@@ -56,13 +56,17 @@ TEST(Planner, HandWorkedSheet) {
     EXPECT_EQ(passes[1].feed.steps, 50);
     // Carriage step counter: 25 mm = 2000 steps, ... ; the back dot needs the
     // carriage at 186.25 - 12 = 174.25 mm = 13940 steps; going back to 25 mm
-    // reverses the carriage, so one step of backlash is added.
-    EXPECT_EQ(passes[0].strikes[0].carriage_step, 2000);
-    EXPECT_EQ(passes[0].strikes[1].carriage_step, 2200);
-    EXPECT_EQ(passes[0].strikes[2].carriage_step, 2960);
-    EXPECT_EQ(passes[1].strikes[0].carriage_step, 13940);
-    EXPECT_EQ(passes[2].strikes[0].carriage_step, 1999);
-    EXPECT_EQ(passes[2].moves[0].steps, 1999 - 13940);
+    // reverses the carriage, so one step of backlash is added. Every command
+    // stops the tuner's aim (3 steps on the default profile) past its dot, in
+    // the direction it moves: 2003, ..., 13943, then 2000 - 3 = 1997 moving
+    // -x, less the step of backlash on the counter.
+    ASSERT_EQ(estimate::MoveTuner(profile::default_profile()).aim_steps(), 3);
+    EXPECT_EQ(passes[0].strikes[0].carriage_step, 2003);
+    EXPECT_EQ(passes[0].strikes[1].carriage_step, 2203);
+    EXPECT_EQ(passes[0].strikes[2].carriage_step, 2963);
+    EXPECT_EQ(passes[1].strikes[0].carriage_step, 13943);
+    EXPECT_EQ(passes[2].strikes[0].carriage_step, 1996);
+    EXPECT_EQ(passes[2].moves[0].steps, 1996 - 13943);
     EXPECT_EQ(job->strikes, 5u);
     // Step moves add up to the counter at every strike (no lost step).
     std::int64_t counter = 0;

@@ -4,7 +4,9 @@
 // byte), Ctrl+P stores the job in the spool, and quitting while it embosses
 // asks first, in a dialog a keyboard answers; the job is still in the spool
 // after the window is gone.
+#include <QAccessible>
 #include <QApplication>
+#include <QLabel>
 #include <QDoubleSpinBox>
 #include <QMessageBox>
 #include <QPushButton>
@@ -16,6 +18,7 @@
 #include "controller/builtin_sim.hpp"
 #include "encode/messages.hpp"
 #include "gui_test_support.hpp"
+#include "editor_widget.hpp"
 #include "main_window.hpp"
 #include "printer_panel.hpp"
 #include "profile/controller_config.hpp"
@@ -67,6 +70,117 @@ private Q_SLOTS:
         const auto printer = s->printer("sim");
         QVERIFY(printer);
         QCOMPARE(printer->profile_json, profile::to_json(edited).dump());
+    }
+
+    // Issue 13 item 1: a PEF whose page (40 cells x 25 lines) is larger than
+    // the printer profile's (27 x 24 by default). Before, the app laid it out
+    // on the profile's page and queued it without a word. Now it asks first,
+    // in a dialog a screen reader reads (question, sizes, both buttons), with
+    // the same rule as the CLI's exit 5 (layout::find_braille_misfit): Stop
+    // queues nothing, Reflow queues the braille laid out on the printer's page.
+    void a_pef_larger_than_the_printers_page_asks_before_embossing() {
+        const auto pef = dir_.path() + QStringLiteral("/wide.pef");
+        QString row;
+        for (int w = 0; w < 8; ++w) row += QStringLiteral("⠁⠃⠉⠙") + (w < 7 ? QStringLiteral("⠀") : QStringLiteral("⠼"));
+        QCOMPARE(row.size(), 40);
+        {
+            QFile f(pef);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QString xml = QStringLiteral(
+                "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\"><head>"
+                "<meta xmlns:dc=\"http://purl.org/dc/elements/1.1/\"><dc:format>application/x-pef+xml</dc:format>"
+                "<dc:identifier>wide</dc:identifier></meta></head><body>"
+                "<volume cols=\"40\" rows=\"25\" rowgap=\"0\" duplex=\"true\"><section>");
+            for (int p = 0; p < 2; ++p) {
+                xml += QStringLiteral("<page>");
+                for (int r = 0; r < 25; ++r) xml += QStringLiteral("<row>") + row + QStringLiteral("</row>");
+                xml += QStringLiteral("</page>");
+            }
+            xml += QStringLiteral("</section></volume></body></pef>\n");
+            f.write(xml.toUtf8());
+        }
+        MainWindow w;
+        w.set_interactive(true);
+        w.show();
+        QVERIFY(w.open_file_now(pef));
+        QCOMPARE(w.profile_editor()->profile().geometry.cells_per_line, 27);
+        w.printer_panel()->select_device(QStringLiteral("sim"));
+
+        struct Seen {
+            bool asked = false;
+            QString text, name, description, buttons, button_names;  // description: the labels' text
+        };
+        const auto answer = [](Seen& seen, const char* button) {
+            QTimer::singleShot(200, [&seen, button] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                if (!box) return;
+                seen.asked = box->objectName() == QLatin1String("pageTooSmallQuestion");
+                seen.text = box->text() + QLatin1Char(' ') + box->informativeText();
+                auto* a = QAccessible::queryAccessibleInterface(box);
+                seen.name = a ? a->text(QAccessible::Name) : QString();
+                // What Orca reads after the name: the box's labels, through AT-SPI.
+                for (int i = 0; a && i < a->childCount(); ++i)
+                    if (auto* c = a->child(i); c && c->role() == QAccessible::StaticText)
+                        seen.description += c->text(QAccessible::Name) + QLatin1Char(' ');
+                for (auto* b : box->buttons()) {
+                    seen.buttons += b->text() + QLatin1Char('|');
+                    if (auto* ba = QAccessible::queryAccessibleInterface(b))
+                        seen.button_names += ba->text(QAccessible::Name) + QLatin1Char('|');
+                }
+                box->findChild<QPushButton*>(QLatin1String(button))->click();
+            });
+        };
+
+        Seen stop;
+        answer(stop, "stopButton");
+        QVERIFY(!w.emboss());
+        QVERIFY(stop.asked);
+        QVERIFY2(stop.text.contains(QStringLiteral("too small")), qPrintable(stop.text));
+        QVERIFY2(stop.text.contains(QStringLiteral("25 lines of up to 40 cells")), qPrintable(stop.text));
+        QVERIFY2(stop.text.contains(QStringLiteral("27 cells by 24 lines")), qPrintable(stop.text));
+        QCOMPARE(stop.buttons, QStringLiteral("&Reflow|&Stop|"));
+        // What AT-SPI hands Orca: the dialog's name and the whole question, each button by name.
+        QCOMPARE(stop.name, QStringLiteral("The printer's page is too small"));
+        QVERIFY2(stop.description.contains(QStringLiteral("Lay the braille out again")), qPrintable(stop.description));
+        QVERIFY2(stop.description.contains(QStringLiteral("27 cells by 24 lines")), qPrintable(stop.description));
+        QCOMPARE(stop.button_names, QStringLiteral("Reflow|Stop|"));
+        QVERIFY(w.printer_panel()->jobs().empty());
+        // Nothing in the spool (the spool file is made by the first job: none yet here).
+        if (auto s = spool::Spool::open(db_, {.create = false})) {
+            const auto none = s->jobs(true);
+            QVERIFY2(none, none ? "" : none.error().to_string().c_str());
+            QVERIFY(none->empty());
+        }
+
+        // Export asks the same question.
+        Seen stop_export;
+        answer(stop_export, "stopButton");
+        QVERIFY(!w.export_to(dir_.path() + QStringLiteral("/wide-again.pef")));
+        QVERIFY(stop_export.asked);
+        QVERIFY(!QFile::exists(dir_.path() + QStringLiteral("/wide-again.pef")));
+
+        Seen reflow;
+        answer(reflow, "reflowButton");
+        QVERIFY(w.emboss());
+        QVERIFY(reflow.asked);
+        const auto& paged = w.editor()->layout().paged();
+        QCOMPARE(paged.geometry.cells_per_line, 27);
+        std::size_t cells = 0;
+        for (const auto& page : paged.pages)
+            for (const auto& line : page.lines) {
+                QVERIFY(line.size() <= 27);
+                for (auto c : line) cells += c.dots != 0 ? 1 : 0;
+            }
+        // Laid out again, nothing lost: every cell of the 2 x 25 rows of 33 raised cells.
+        QCOMPARE(cells, std::size_t{2 * 25 * 33});
+        auto s = spool::Spool::open(db_, {.create = false});
+        QVERIFY(s);
+        const auto jobs = s->jobs(true);
+        QVERIFY2(jobs, jobs ? "" : jobs.error().to_string().c_str());
+        QCOMPARE(jobs->size(), std::size_t{1});
+        QCOMPARE(jobs->front().sheets_per_copy, paged.sheet_count());
+        QVERIFY(paged.pages.size() > 2);  // 50 long rows do not fit on 2 pages of 24 lines
     }
 
     void quitting_while_a_job_embosses_asks_first_and_the_job_stays_queued() {
