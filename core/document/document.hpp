@@ -55,6 +55,11 @@ constexpr bool is_text_kind(BlockKind k) {
 // Blocks that make up a table.
 constexpr bool is_table_kind(BlockKind k) { return k == BlockKind::table_row || k == BlockKind::table_cell; }
 
+// A table column's print alignment (Markdown's delimiter row "|:--|:-:|--:|",
+// DOCX w:jc, ODT fo:text-align). Kept so that saving writes it back; braille
+// layout does not follow it (docs/layout.md, "Tables").
+enum class Align : std::uint8_t { none, left, centre, right };
+
 struct Block {
     BlockKind kind = BlockKind::paragraph;
     int level = 0;
@@ -67,6 +72,7 @@ struct Block {
     bool label_counted = false;
     int source_line = 0;                     // 1-based line in the source, 0 if unknown
     int span = 1;                            // table_cell: columns covered, from `level` on
+    Align align = Align::none;               // table_cell: its column's alignment
     bool operator==(const Block&) const = default;
 
     // The plain text of all spans, for display and tests.

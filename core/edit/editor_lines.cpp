@@ -45,13 +45,15 @@ std::optional<std::string> comment_argument(std::string_view s, std::string_view
 // a mark of its own there, and emphasis around it opens and closes as it does
 // in the file). Plain text takes the fast path, which is nearly every line of a
 // real book.
-std::vector<document::Span> parse_inline(std::string_view content) {
+// `whole_line`: `content` is a heading's whole line, read as the importer
+// reads it in a file (its closing "#"s, raw HTML in it), not as a paragraph.
+std::vector<document::Span> parse_inline(std::string_view content, bool whole_line = false) {
     // The references' labels, in order; the importer numbers them 1, 2, 3 so.
     std::vector<std::string> labels;
     for (auto i = content.find("[^"); i != std::string_view::npos; i = content.find("[^", i + 1))
         if (const auto id = import::note_reference_id(content, i); id && std::ranges::find(labels, *id) == labels.end())
             labels.emplace_back(*id);
-    if (labels.empty() && content.find_first_of(kInlineSpecials) == std::string_view::npos)
+    if (!whole_line && labels.empty() && content.find_first_of(kInlineSpecials) == std::string_view::npos)
         return content.empty() ? std::vector<document::Span>{} : std::vector<document::Span>{document::Span{std::string(content)}};
     import::ImportOptions options;
     options.format = import::SourceFormat::markdown;
@@ -60,7 +62,7 @@ std::vector<document::Span> parse_inline(std::string_view content) {
     // or "# *x*" from starting a list or a heading (it is Unicode whitespace, so
     // emphasis opens after it as at a line start), and is taken off again.
     constexpr std::string_view kGuard = "\u00a0";
-    std::string source = std::string(kGuard) + std::string(content);
+    std::string source = (whole_line ? std::string() : std::string(kGuard)) + std::string(content);
     // Every reference in a line is one: its note is on a line of its own.
     for (const auto& label : labels) source += "\n\n[^" + label + "]: x";
     auto doc = import::import_bytes(source, "line.md", options);
@@ -81,7 +83,7 @@ std::vector<document::Span> parse_inline(std::string_view content) {
             }
         }
     }
-    if (!spans.empty() && !spans.front().note_reference && spans.front().text.starts_with(kGuard)) {
+    if (!whole_line && !spans.empty() && !spans.front().note_reference && spans.front().text.starts_with(kGuard)) {
         spans.front().text.erase(0, kGuard.size());
         if (spans.front().text.empty()) spans.erase(spans.begin());
     }
@@ -211,13 +213,9 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
     if (hashes >= 1 && hashes <= 6 && (hashes == t.size() || is_space(t[hashes]))) {
         b.kind = document::BlockKind::heading;
         b.level = static_cast<int>(hashes);
-        // A closing run of "#" after a space is not text, as in Markdown.
-        auto content = trim(t.substr(hashes));
-        if (const auto run = content.find_last_not_of('#'); content.ends_with('#')) {
-            if (run == std::string_view::npos) content = {};
-            else if (is_space(content[run])) content = trim(content.substr(0, run));
-        }
-        b.spans = parse_inline(content);
+        // The whole line through the importer, as the file is read: a closing
+        // run of "#"s is no text, nor raw HTML ("# \&  # <b>" reads "&").
+        b.spans = parse_inline(t, true);
         return b;
     }
     if (t.starts_with('>')) {

@@ -7,6 +7,7 @@
 #include "document/print_page.hpp"
 #include "edit/cursor_map.hpp"
 #include "edit/editor_lines.hpp"
+#include "export/text_export.hpp"
 #include "import/text_lines.hpp"
 #include "layout/line_breaker.hpp"
 #include "layout/braille_pages.hpp"
@@ -423,6 +424,16 @@ void LiveLayout::set_dialect(Dialect dialect) {
     relayout_from(0);
 }
 
+std::size_t LiveLayout::table_columns(std::size_t index) const {
+    auto first = index, end = index;
+    while (first > 0 && starts_table_line(entries_[first - 1].line)) --first;
+    while (end < entries_.size() && starts_table_line(entries_[end].line)) ++end;
+    std::vector<std::string> lines;
+    lines.reserve(end - first);
+    for (auto i = first; i < end; ++i) lines.push_back(entries_[i].line);
+    return exporter::markdown_table_width(lines);
+}
+
 document::Document LiveLayout::document() const {
     // As the importer reads the saved file: page breaks after all text are
     // kept (DocumentBuilder::finish: <!-- braillepage --> is written out, not
@@ -435,11 +446,18 @@ document::Document LiveLayout::document() const {
     for (std::size_t i = 0; i < entries_.size();) {
         std::size_t end = i + 1;
         std::size_t width = 0;
+        std::vector<document::Align> aligns;  // the columns', from the delimiter row
         if (dialect_ == Dialect::markdown && starts_table_line(entries_[i].line)) {
+            width = table_columns(i);
             end = i;
-            for (; end < entries_.size() && starts_table_line(entries_[end].line); ++end)
-                width = std::max(width, entries_[end].cells.size());
+            while (end < entries_.size() && starts_table_line(entries_[end].line)) ++end;
+            for (auto d = i; d < end && aligns.empty(); ++d)
+                if (is_table_delimiter(entries_[d].line)) aligns = exporter::markdown_table_alignments(entries_[d].line);
         }
+        const auto align = [&aligns](document::Block& cell) {
+            const auto c = static_cast<std::size_t>(std::max(cell.level, 0));
+            if (c < aligns.size()) cell.align = aligns[c];
+        };
         for (; i < end; ++i) {
             const auto& e = entries_[i];
             if (!e.block) continue;
@@ -458,12 +476,14 @@ document::Document LiveLayout::document() const {
             for (const auto& cell : e.cells) {
                 doc.blocks.push_back(cell);
                 doc.blocks.back().source_line = line;
+                align(doc.blocks.back());
             }
             for (auto c = e.cells.size(); c < width; ++c) {
                 document::Block empty;
                 empty.kind = document::BlockKind::table_cell;
                 empty.level = static_cast<int>(c);
                 empty.source_line = line;
+                align(empty);
                 doc.blocks.push_back(std::move(empty));
             }
         }
@@ -588,6 +608,7 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
     stats.first_page_relaid = base;
     std::vector<std::string> warnings;
     std::size_t j = k;
+    std::size_t table_end = 0, columns = 0;  // the table entry j is in (table_columns)
     for (; j < entries_.size(); ++j) {
         auto& e = entries_[j];
         if (j >= unchanged_from && pag.settled() && same_state(e)) {
@@ -597,9 +618,21 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         e.pages_before = base + pag.pages_closed();
         e.lines_before = pag.body_lines();
         e.settled_before = pag.settled();
+        if (dialect_ == Dialect::markdown && starts_table_line(e.line) && j >= table_end) {
+            table_end = j;
+            while (table_end < entries_.size() && starts_table_line(entries_[table_end].line)) ++table_end;
+            columns = table_columns(j);
+        }
         if (e.block && !e.error) {
             pag.add(e.translated);
             for (const auto& cell : e.translated_cells) pag.add(cell);
+            if (e.block->kind == document::BlockKind::table_row)
+                for (auto c = e.translated_cells.size(); c < columns; ++c) {
+                    translate::TranslatedBlock empty;  // as document() pads the row
+                    empty.kind = document::BlockKind::table_cell;
+                    empty.level = static_cast<int>(c);
+                    pag.add(empty);
+                }
         }
     }
     if (stats.converged) {

@@ -163,6 +163,10 @@ private:
     // breaks and lines in error skipped): what decides the paginator's blank
     // line before the next block.
     [[nodiscard]] std::optional<document::BlockKind> previous_kind(std::size_t index) const;
+    // The columns of the table whose lines include entry `index`, as the saved
+    // file has them (exporter::markdown_table_width): a shorter row gets empty
+    // entries at its end, in the layout and in document() alike.
+    [[nodiscard]] std::size_t table_columns(std::size_t index) const;
     layout::PagedDocument paged_;
     std::unordered_map<int, document::BrailleLine> numbers_;
     // translate::check_script on the whole text, first among the warnings as

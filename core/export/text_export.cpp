@@ -183,9 +183,17 @@ std::string join_row(const std::vector<std::string>& cells, std::size_t width) {
     return out;
 }
 
-std::string delimiter_row(std::size_t width) {
+// "| --- | :-: |": each column's alignment (none where `aligns` has none).
+std::string delimiter_row(std::span<const document::Align> aligns, std::size_t width) {
     std::string out = "|";
-    for (std::size_t c = 0; c < width; ++c) out += " --- |";
+    for (std::size_t c = 0; c < width; ++c) {
+        switch (c < aligns.size() ? aligns[c] : document::Align::none) {
+            case document::Align::left: out += " :-- |"; break;
+            case document::Align::centre: out += " :-: |"; break;
+            case document::Align::right: out += " --: |"; break;
+            case document::Align::none: out += " --- |"; break;
+        }
+    }
     return out;
 }
 
@@ -199,6 +207,9 @@ std::string markdown_line(const document::Block& b) {
     switch (b.kind) {
         case document::BlockKind::heading: {
             auto text = render_spans(b.spans);
+            // Spaces at its end are no text (Markdown strips them), and they
+            // would hide a "#" before them from the check below.
+            text.erase(std::min(text.size(), text.find_last_not_of(" \t") + 1));
             // A heading's text ending in "#" would read as the closing "#"s Markdown drops.
             if (const auto run = text.find_last_not_of('#'); text.ends_with('#'))
                 text.insert(run == std::string::npos ? 0 : run + 1, 1, '\\');
@@ -260,6 +271,26 @@ std::string markdown_table_row(std::span<const document::Block> cells) {
     return join_row(texts, texts.size());
 }
 
+std::vector<document::Align> markdown_table_alignments(std::string_view delimiter) {
+    std::vector<document::Align> out;
+    for (const auto& cell : split_row(delimiter)) {
+        const auto t = trim(cell);
+        const bool left = t.starts_with(':'), right = t.size() > 1 && t.ends_with(':');
+        out.push_back(left && right ? document::Align::centre
+                      : left        ? document::Align::left
+                      : right       ? document::Align::right
+                                    : document::Align::none);
+    }
+    return out;
+}
+
+std::size_t markdown_table_width(std::span<const std::string> lines) {
+    std::size_t width = 1;
+    for (const auto& l : lines)
+        if (!is_markdown_table_delimiter(l)) width = std::max(width, split_row(l).size());
+    return width;
+}
+
 bool is_markdown_table_delimiter(std::string_view line) {
     const auto t = trim(line);
     if (!t.starts_with('|') || t.find('-') == std::string_view::npos) return false;
@@ -282,22 +313,41 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
                 if (blocks[i].kind == document::BlockKind::table_cell) rows.back().second.push_back(blocks[i]);
             }
             // A header row after body rows starts a table of its own (a blank
-            // line apart: one Markdown table has one header row, at its top).
+            // line apart: one Markdown table has one header row, at its top),
+            // and so does a row whose columns are aligned otherwise (all the
+            // cells of a Markdown table's column have the delimiter row's).
+            const auto same_alignment = [](const std::vector<document::Block>& one,
+                                           const std::vector<document::Block>& other) {
+                for (const auto& x : one)
+                    for (const auto& y : other)
+                        if (x.level == y.level && x.align != y.align) return false;
+                return true;
+            };
             for (std::size_t from = 0; from < rows.size();) {
                 std::size_t to = from + 1;
-                while (to < rows.size() && !(rows[to].first && !rows[to - 1].first)) ++to;
+                while (to < rows.size() && !(rows[to].first && !rows[to - 1].first) &&
+                       same_alignment(rows[from].second, rows[to].second))
+                    ++to;
                 // As wide as its widest row, counted in columns (a cell keeps its
                 // column: a merged cell's other columns are empty entries).
                 std::vector<std::vector<std::string>> entries;
                 std::size_t width = 1;
+                // A column's alignment: its cells' (the first that has one).
+                std::vector<document::Align> aligns;
                 for (std::size_t r = from; r < to; ++r) {
                     entries.push_back(split_row(markdown_table_row(rows[r].second)));
                     width = std::max(width, entries.back().size());
+                    for (const auto& cell : rows[r].second) {
+                        const auto c = static_cast<std::size_t>(std::max(cell.level, 0));
+                        if (cell.align == document::Align::none) continue;
+                        if (aligns.size() <= c) aligns.resize(c + 1);
+                        if (aligns[c] == document::Align::none) aligns[c] = cell.align;
+                    }
                 }
                 std::vector<std::string> table;
                 for (const auto& e : entries) table.push_back(join_row(e, width));
                 if (!rows[from].first) table.insert(table.begin(), join_row({}, width));
-                table.insert(table.begin() + 1, delimiter_row(width));
+                table.insert(table.begin() + 1, delimiter_row(aligns, width));
                 if (from > 0) lines.emplace_back();
                 for (auto& l : table) lines.push_back(std::move(l));
                 from = to;
@@ -412,14 +462,20 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
             continue;
         }
         open.clear();
-        std::size_t width = 1;
-        for (const auto& r : rows) width = std::max(width, r.size());
+        const auto width = markdown_table_width(lines.subspan(i, end - i));
+        // The columns' alignments, as the (first) delimiter row gives them.
+        const auto delimiter = std::find_if(lines.begin() + static_cast<std::ptrdiff_t>(i),
+                                            lines.begin() + static_cast<std::ptrdiff_t>(end),
+                                            [](const std::string& l) { return is_markdown_table_delimiter(l); });
+        const auto aligns = delimiter == lines.begin() + static_cast<std::ptrdiff_t>(end)
+                                ? std::vector<document::Align>{}
+                                : markdown_table_alignments(*delimiter);
         std::string table;
-        if (!header) table = join_row({}, width) + "\n" + delimiter_row(width);
+        if (!header) table = join_row({}, width) + "\n" + delimiter_row(aligns, width);
         for (std::size_t r = 0; r < rows.size(); ++r) {
             if (!table.empty()) table += "\n";
             table += join_row(rows[r], width);
-            if (header && r == 0) table += "\n" + delimiter_row(width);
+            if (header && r == 0) table += "\n" + delimiter_row(aligns, width);
         }
         block(table);
         i = end;

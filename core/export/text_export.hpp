@@ -27,6 +27,18 @@ std::string markdown_line(const document::Block& block);
 // empty entries (Markdown has no merged cells).
 std::string markdown_table_row(std::span<const document::Block> cells);
 
+// The columns of the pipe table a run of table lines is written as: as many
+// as its widest row (cells split at unescaped pipes), delimiter rows not
+// counted (join_markdown_lines writes them anew), at least one. The importer
+// gives every row that many cells; the editor's live layout pads its rows to
+// it the same way (issue 13 item 4: one rule for both).
+std::size_t markdown_table_width(std::span<const std::string> lines);
+
+// The column alignments a pipe table's delimiter row gives: "|:--|:-:|--:|---|"
+// -> left, centre, right, none. The Markdown importer reads them (md4c), the
+// writer writes them back (join_markdown_lines keeps the editor's row's).
+std::vector<document::Align> markdown_table_alignments(std::string_view delimiter);
+
 // True for a pipe table's delimiter row: "|---|:--:|".
 bool is_markdown_table_delimiter(std::string_view line);
 

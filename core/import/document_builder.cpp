@@ -125,9 +125,12 @@ void DocumentBuilder::table_row(bool header, int source_line) {
     push(std::move(b));
 }
 
-void DocumentBuilder::begin_cell(int column, int source_line, int span) {
+void DocumentBuilder::begin_cell(int column, int source_line, int span, document::Align align) {
     begin(document::BlockKind::table_cell, column, source_line);
-    if (open_ && current_.kind == document::BlockKind::table_cell) current_.span = std::max(1, span);
+    if (open_ && current_.kind == document::BlockKind::table_cell) {
+        current_.span = std::max(1, span);
+        current_.align = align;
+    }
 }
 
 void DocumentBuilder::end_table() {

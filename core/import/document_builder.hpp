@@ -50,7 +50,7 @@ public:
     // empty cell is kept (it holds its column). end_table() after the last row.
     void table_row(bool header, int source_line);
     // `span`: the columns a merged cell covers, from `column` on.
-    void begin_cell(int column, int source_line, int span = 1);
+    void begin_cell(int column, int source_line, int span = 1, document::Align align = document::Align::none);
     void end_table();
     // Drops the last row when all its cells are empty: a Markdown table without
     // a header row is written with an empty one (as Pandoc does).

@@ -112,7 +112,13 @@ private:
             out_.skip_columns(whole_number(attribute(child(trPr, "gridBefore"), "val"), 0));
             for (const auto& cell : row.children()) {
                 if (local_name(cell) != "tc") continue;
-                out_.begin_cell(whole_number(attribute(child(child(cell, "tcPr"), "gridSpan"), "val"), 1));
+                // The alignment of the cell's first paragraph (<w:jc w:val="center"/>);
+                // left is the default (LibreOffice writes it in every cell), so none.
+                const auto jc = attribute(child(child(child(cell, "p"), "pPr"), "jc"), "val");
+                const auto align = jc == "center"                 ? document::Align::centre
+                                   : jc == "right" || jc == "end" ? document::Align::right
+                                                                  : document::Align::none;
+                out_.begin_cell(whole_number(attribute(child(child(cell, "tcPr"), "gridSpan"), "val"), 1), align);
                 container(cell);
                 out_.end_cell();
             }

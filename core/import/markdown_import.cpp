@@ -142,9 +142,18 @@ private:
                 column_ = 0;
                 break;
             case MD_BLOCK_TH:
-            case MD_BLOCK_TD:
-                builder_.begin_cell(column_++, 0);
+            case MD_BLOCK_TD: {
+                // The column's alignment, from the delimiter row ("|:--|:-:|--:|").
+                auto align = document::Align::none;
+                switch (static_cast<MD_BLOCK_TD_DETAIL*>(detail)->align) {
+                    case MD_ALIGN_LEFT: align = document::Align::left; break;
+                    case MD_ALIGN_CENTER: align = document::Align::centre; break;
+                    case MD_ALIGN_RIGHT: align = document::Align::right; break;
+                    default: break;
+                }
+                builder_.begin_cell(column_++, 0, 1, align);
                 break;
+            }
             case MD_BLOCK_OL: {
                 builder_.end();
                 const auto* d = static_cast<MD_BLOCK_OL_DETAIL*>(detail);

@@ -103,14 +103,14 @@ void OfficeText::begin_row(bool header) {
     column_ = 0;
 }
 
-void OfficeText::begin_cell(int span) {
+void OfficeText::begin_cell(int span, document::Align align) {
     if (note_depth_ > 0 || table_depth_ != 1) {
         if (cell_has_text_) builder_.add_text(" ");
         return;
     }
     column_ = std::min(column_, kMaxColumns - 1);
     span = std::clamp(span, 1, kMaxColumns - column_);
-    builder_.begin_cell(column_, 0, span);
+    builder_.begin_cell(column_, 0, span, align);
     column_ += span;
     cell_has_text_ = false;
 }

@@ -62,7 +62,7 @@ public:
     // A cell covering `span` columns (a merged cell), or `skip` columns no
     // cell starts in (DOCX w:gridBefore, ODT's covered cells): the next cell
     // keeps its column, as the paginator lays columns out by their index.
-    void begin_cell(int span = 1);
+    void begin_cell(int span = 1, document::Align align = document::Align::none);
     void skip_columns(int count);
     void end_cell();
     void end_table();

@@ -73,6 +73,27 @@ TEST(MarkdownExport, ATableIsWrittenAsAPipeTableAndReadBack) {
     EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
 }
 
+// Issue 13 item 4: a table's column alignment ("|:--|:-:|--:|---|") was lost
+// on saving: the document model did not hold it. Each cell now holds its
+// column's (Block::align), the importer reads it, the writer writes it, and
+// the editor's own delimiter row is kept when its lines are saved.
+TEST(MarkdownExport, ATablesColumnAlignmentIsKept) {
+    const auto doc = import_as("| L | C | R | N |\n|:--|:-:|--:|---|\n| 1 | 2 | 3 |\n", "t.md");
+    std::vector<document::Align> aligns;
+    for (const auto& b : doc.blocks)
+        if (b.kind == document::BlockKind::table_cell) aligns.push_back(b.align);
+    using A = document::Align;
+    EXPECT_EQ(aligns, (std::vector<A>{A::left, A::centre, A::right, A::none, A::left, A::centre, A::right, A::none}));
+    const auto md = exporter::to_markdown(doc);
+    EXPECT_EQ(md, "| L | C | R | N |\n| :-- | :-: | --: | --- |\n| 1 | 2 | 3 |  |\n");
+    EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
+    // The editor's lines, as typed (a narrower delimiter row is made whole).
+    const std::vector<std::string> lines{"| a | b | c |", "|:-:|--:|", "| 1 | 2 | 3 |"};
+    EXPECT_EQ(exporter::join_markdown_lines(lines), "| a | b | c |\n| :-: | --: | --- |\n| 1 | 2 | 3 |\n");
+    EXPECT_EQ(exporter::markdown_table_alignments("| :--- |:---:| ---: | - |"),
+              (std::vector<A>{A::left, A::centre, A::right, A::none}));
+}
+
 TEST(MarkdownExport, ATableWithoutHeaderRowGetsAnEmptyOneThatReadsAsNone) {
     // A DOCX table without <w:tblHeader/>: no header row.
     document::Document doc;
