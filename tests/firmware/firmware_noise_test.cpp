@@ -15,18 +15,12 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "../common/noise_campaign.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 namespace tactus {
 namespace {
 
-const machine::FirmwareTables& tables() {
-    static const machine::FirmwareTables t = [] {
-        auto r = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-        EXPECT_TRUE(r) << r.error().to_string();
-        return r ? *r : machine::FirmwareTables{};
-    }();
-    return t;
-}
+const machine::FirmwareTables& tables() { return test::firmware_tables(); }
 
 test::CampaignSetup firmware_setup() {
     test::CampaignSetup setup;

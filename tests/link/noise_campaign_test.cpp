@@ -21,18 +21,12 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "../common/noise_campaign.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 namespace tactus {
 namespace {
 
-const machine::FirmwareTables& tables() {
-    static const machine::FirmwareTables t = [] {
-        auto r = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-        EXPECT_TRUE(r) << r.error().to_string();
-        return r ? *r : machine::FirmwareTables{};
-    }();
-    return t;
-}
+const machine::FirmwareTables& tables() { return test::firmware_tables(); }
 
 void campaign(double rate, bool v3) {
     // 200 seeds a rate; TACTUS_NOISE_SEEDS=N runs more (the figures in docs/protocol.md).

@@ -24,18 +24,12 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "../common/test_plans.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 namespace tactus {
 namespace {
 
-const machine::FirmwareTables& tables() {
-    static const machine::FirmwareTables t = [] {
-        auto r = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-        EXPECT_TRUE(r) << r.error().to_string();
-        return r ? *r : machine::FirmwareTables{};
-    }();
-    return t;
-}
+const machine::FirmwareTables& tables() { return test::firmware_tables(); }
 machine::StrikeTiming timing() { return profile::strike_timing(profile::default_profile()); }
 
 struct Run {
