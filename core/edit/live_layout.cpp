@@ -443,6 +443,8 @@ document::Document LiveLayout::document() const {
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
     document::Document doc;
+    doc.encoding = encoding_;
+    doc.byte_order_mark = byte_order_mark_;
     for (std::size_t i = 0; i < entries_.size();) {
         std::size_t end = i + 1;
         std::size_t width = 0;
