@@ -768,6 +768,11 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
+        <translation>無法依這台點字印表機的頁面排版此文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>

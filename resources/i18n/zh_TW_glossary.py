@@ -20,6 +20,7 @@ T = {
     "Save the whole file as UTF-8 from now on": "此後整個檔案都存成 UTF-8",
     "Save nothing": "不儲存任何內容",
     "Not saved: %1 has a character that %2 cannot hold": "未儲存：%1 含有 %2 無法容納的字元",
+    "The document cannot be laid out for this printer's page: %1": "無法依這台點字印表機的頁面排版此文件：%1",
     "front": "正面", "back": "背面", "front and back": "正面與背面",
     "back, as read after turning the sheet": "背面（翻頁後閱讀的方向）",
     "Sheet %1 (%2) - pages %3 / %4": "第 %1 張（%2）－ 第 %3 / %4 頁",
