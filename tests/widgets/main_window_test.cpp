@@ -7,6 +7,9 @@
 #include <QStandardPaths>
 #include <QJsonObject>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStatusBar>
@@ -533,6 +536,49 @@ private Q_SLOTS:
                  qPrintable(said));
         // Saved under another name as Markdown it is UTF-8, which holds it.
         QVERIFY(w.save_to(dir.filePath(QStringLiteral("western.md"))));
+
+        // With someone to ask: the question, named for Orca, Cancel first
+        // (nothing written), then Save as UTF-8 (the whole file, from then on).
+        w.set_interactive(true);
+        w.show();
+        struct Seen {
+            bool asked = false;
+            QString name, text, buttons;
+        };
+        const auto answer = [](Seen& seen, bool utf8) {
+            QTimer::singleShot(200, [&seen, utf8] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                if (!box) return;
+                seen.asked = box->objectName() == QLatin1String("encodingQuestion");
+                seen.text = box->text() + QLatin1Char(' ') + box->informativeText();
+                if (auto* a = QAccessible::queryAccessibleInterface(box)) seen.name = a->text(QAccessible::Name);
+                for (auto* b : box->buttons())
+                    if (auto* ba = QAccessible::queryAccessibleInterface(b)) seen.buttons += ba->text(QAccessible::Name) + QLatin1Char('|');
+                (utf8 ? box->findChild<QPushButton*>(QStringLiteral("saveUtf8Button")) : box->button(QMessageBox::Cancel))->click();
+            });
+        };
+        Seen cancel;
+        answer(cancel, false);
+        QVERIFY(!w.save_to(path));
+        QVERIFY(cancel.asked);
+        QCOMPARE(cancel.name, QStringLiteral("A character does not fit the file's encoding"));
+        QVERIFY2(cancel.text.contains(QStringLiteral("WINDOWS-1252")) && cancel.text.contains(QStringLiteral("U+4E2D")) &&
+                     cancel.text.contains(QStringLiteral("3:1")),
+                 qPrintable(cancel.text));
+        QVERIFY2(cancel.buttons.contains(QStringLiteral("Save as UTF-8")), qPrintable(cancel.buttons));
+        {
+            QFile again(path);
+            QVERIFY(again.open(QIODevice::ReadOnly));
+            QCOMPARE(again.readAll(), original);
+        }
+        Seen utf8;
+        answer(utf8, true);
+        QVERIFY(w.save_to(path));
+        QVERIFY(utf8.asked);
+        QFile saved(path);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QCOMPARE(saved.readAll(), QByteArray("Caf\xC3\xA9\n\n\xE4\xB8\xADna\xC3\xAFve\n"));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("UTF-8"));
     }
 
     // A hard-wrapped paragraph: each print line shows its own words' braille,
