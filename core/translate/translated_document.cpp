@@ -69,20 +69,24 @@ public:
     // A word too long to translate in one piece: divided straight away.
     Result<void> add_long_word(std::u32string_view word, std::span<const std::uint8_t> emph, BreakBefore join) {
         if (room_ == 0) return add(word, emph, join);
-        return append_pieces(divide_word(tr_, word, emph, room_), join);
+        // Each line straight into the block's cells, never all the lines at once.
+        bool first = true;
+        return divide_word(tr_, word, emph, room_, [&](document::BrailleLine&& piece) { append_piece(piece, first, join); });
     }
 
 private:
+    void append_piece(const document::BrailleLine& piece, bool& first, BreakBefore first_break) {
+        if (piece.empty()) return;
+        out_.breaks.push_back(first ? first_break : BreakBefore::forced);
+        out_.breaks.insert(out_.breaks.end(), piece.size() - 1, BreakBefore::never);
+        out_.cells.insert(out_.cells.end(), piece.begin(), piece.end());
+        first = false;
+    }
+
     Result<void> append_pieces(Result<std::vector<document::BrailleLine>> pieces, BreakBefore first_break) {
         if (!pieces) return std::unexpected(pieces.error());
         bool first = true;
-        for (auto& piece : *pieces) {
-            if (piece.empty()) continue;
-            out_.breaks.push_back(first ? first_break : BreakBefore::forced);
-            out_.breaks.insert(out_.breaks.end(), piece.size() - 1, BreakBefore::never);
-            out_.cells.insert(out_.cells.end(), piece.begin(), piece.end());
-            first = false;
-        }
+        for (const auto& piece : *pieces) append_piece(piece, first, first_break);
         return {};
     }
 
