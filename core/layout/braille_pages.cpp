@@ -12,6 +12,7 @@ struct SourcePage {
     std::vector<document::BrailleLine> rows;
     int source_line = 0;
     std::size_t section = 0;
+    std::size_t first_block = 0;  // the page's first braille block
 };
 
 std::vector<SourcePage> source_pages(const document::Document& doc) {
@@ -30,7 +31,7 @@ std::vector<SourcePage> source_pages(const document::Document& doc) {
         }
         if (b.kind != document::BlockKind::braille) continue;
         if (!open) {
-            pages.push_back(SourcePage{&b, {}, b.source_line, section});
+            pages.push_back(SourcePage{&b, {}, b.source_line, section, i});
             open = true;
         }
         auto& rows = pages.back().rows;
@@ -91,7 +92,8 @@ Result<void> check_braille_fits(const document::Document& doc, const LayoutOptio
                 m->source_line > 0 ? std::to_string(m->source_line) : std::string{});
 }
 
-Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target) {
+Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target,
+                                         std::vector<BlockPlace>* places) {
     if (auto ok = check_braille_fits(doc, target); !ok) return std::unexpected(located(ok.error(), doc.source_name));
     const auto pages = source_pages(doc);
     PagedDocument out;
@@ -122,6 +124,8 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
         out.pages.push_back(std::move(filler));
     };
     std::size_t section = static_cast<std::size_t>(-1);
+    if (places) places->assign(doc.blocks.size(), BlockPlace{});
+    std::size_t placed = 0;  // blocks before this have their place
     for (const auto& p : pages) {
         const bool section_duplex =
             p.section < doc.braille_sections.size() ? doc.braille_sections[p.section].duplex : interpoint;
@@ -129,7 +133,19 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
             section = p.section;
             // A new section starts on a new sheet: never on the back of the last one.
             if (interpoint && out.pages.size() % 2 == 1) blank_back();
-            out.sections.push_back(PageSection{out.pages.size(), section_duplex});
+            const bool volume = p.section < doc.braille_sections.size() && doc.braille_sections[p.section].starts_volume;
+            out.sections.push_back(PageSection{out.pages.size(), section_duplex, volume || out.sections.empty()});
+        }
+        if (places) {
+            // The blocks before the page's first row (its page break) land where it does;
+            // the page's blocks, row by row.
+            for (; placed < p.first_block; ++placed) (*places)[placed] = BlockPlace{out.pages.size(), 0};
+            int row = 0;
+            for (; placed < doc.blocks.size() && row < static_cast<int>(p.rows.size()); ++placed) {
+                (*places)[placed] = BlockPlace{out.pages.size(), row};
+                const auto& b = doc.blocks[placed];
+                if (b.kind == document::BlockKind::braille) row += static_cast<int>(b.braille_lines.size());
+            }
         }
         Page page;
         page.braille_number = static_cast<int>(out.pages.size()) + 1;
@@ -138,6 +154,12 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
         out.pages.push_back(std::move(page));
         // A single-sided section on interpoint paper: every page has its own sheet.
         if (interpoint && !section_duplex) blank_back();
+    }
+    if (places) {
+        // Blocks after the last row: the end of the last page.
+        const BlockPlace end = out.pages.empty() ? BlockPlace{}
+                                                 : BlockPlace{out.pages.size() - 1, static_cast<int>(pages.back().rows.size())};
+        for (; placed < doc.blocks.size(); ++placed) (*places)[placed] = end;
     }
     if (doc.braille_sections.empty()) out.sections.clear();  // BRF: one stream of pages
     return out;
