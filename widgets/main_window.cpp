@@ -340,7 +340,7 @@ void MainWindow::set_table(const QString& table) {
         for (std::size_t i = 0; i < editor_->layout().line_count(); ++i) lines.push_back(editor_->layout().line(i));
         start_busy(tr("Translating with %1").arg(tables_->currentText()),
                    lay_out_lines(std::move(lines), table.toStdString(), editor_->layout().options(),
-                                 editor_->layout().dialect()),
+                                 editor_->layout().dialect(), editor_->layout().braille_structure()),
                    false);
         return;
     }
@@ -566,8 +566,9 @@ bool MainWindow::export_to(const QString& path) {
     if (suffix == QLatin1String("brf")) {
         bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {
+        // A PEF's own metadata is kept, as the CLI keeps it (paged.metadata).
         const auto meta = exporter::pef_metadata(
-            {}, QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString(),
+            paged.metadata, QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString(),
             QDate::currentDate().toString(Qt::ISODate).toStdString(),
             translate::table_language_tag(editor_->layout().tables()));
         bytes = exporter::to_pef(paged, meta);
