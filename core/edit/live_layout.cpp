@@ -350,21 +350,68 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
         return (e.block && e.block->kind == document::BlockKind::print_page_break) ||
                e.line.find('\f') != std::string::npos;  // a text line's form feed
     });
-    // The section marks of the lines replaced (BrailleStructure; see the header).
+    // The section marks (BrailleStructure; see the header). The editor reports
+    // an edit as the lines it touched: the removed lines the same at the start
+    // and the end of the new ones were kept as they were (a line inserted above
+    // a line is that line replaced by the new line and itself), and keep
+    // their marks. The marks of the lines really deleted go to the first line
+    // that replaces them, or else to the line after them.
+    // The end first: a line inserted above another (the common report, and
+    // undo's) is matched so even when the lines look alike (page breaks).
+    std::size_t prefix = 0, suffix = 0;
+    while (suffix < removed && suffix < lines.size() &&
+           at[static_cast<std::ptrdiff_t>(removed - 1 - suffix)].line == lines[lines.size() - 1 - suffix])
+        ++suffix;
+    while (prefix < removed - suffix && prefix < lines.size() - suffix &&
+           at[static_cast<std::ptrdiff_t>(prefix)].line == lines[prefix])
+        ++prefix;
+    struct Kept {
+        std::size_t line;  // in the new lines
+        document::BrailleSection section;
+        std::optional<std::string> origin;
+    };
+    std::vector<Kept> kept;
     std::optional<document::BrailleSection> moved;
-    for (auto e = at; e != at + static_cast<std::ptrdiff_t>(removed); ++e)
-        if (e->section) merge_mark(moved, *e->section);
+    std::string moved_from;  // the text of the line the winning mark was on
+    for (std::size_t r = 0; r < removed; ++r) {
+        const auto& e = at[static_cast<std::ptrdiff_t>(r)];
+        if (!e.section) continue;
+        if (r < prefix) kept.push_back({first + r, *e.section, e.mark_origin});
+        else if (r >= removed - suffix) kept.push_back({first + lines.size() - (removed - r), *e.section, e.mark_origin});
+        else {
+            merge_mark(moved, *e.section);
+            moved_from = e.mark_origin.value_or(e.line);
+        }
+    }
+    const std::size_t middle_end = first + lines.size() - suffix;  // the new lines in the middle: [first + prefix, middle_end)
     entries_.erase(at, at + static_cast<std::ptrdiff_t>(removed));
     std::vector<Entry> fresh(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i) fresh[i].line = std::move(lines[i]);
     entries_.insert(entries_.begin() + static_cast<std::ptrdiff_t>(first),
                     std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
-    // To the first line that replaces them, or else the line after them; a
-    // mark of its own there is the later section's, and wins.
-    if (moved && first < entries_.size()) {
-        auto& onto = entries_[first].section;
-        if (onto) onto->starts_volume = onto->starts_volume || moved->starts_volume;
-        else onto = moved;
+    for (auto& k : kept) {
+        // A mark moved here by a deletion goes back to its own line when that
+        // line comes back above it (the deletion undone).
+        std::size_t onto = k.line;
+        if (k.origin)
+            for (std::size_t m = first + prefix; m < middle_end; ++m)
+                if (entries_[m].line == *k.origin) {
+                    onto = m;
+                    k.origin.reset();
+                    break;
+                }
+        merge_mark(entries_[onto].section, k.section);
+        entries_[onto].mark_origin = k.origin;
+    }
+    if (moved && first + prefix < entries_.size()) {
+        auto& onto = entries_[first + prefix];
+        if (onto.section) {
+            onto.section->starts_volume = onto.section->starts_volume || moved->starts_volume;
+        } else {
+            onto.section = moved;
+            // Moved onto a line that was there: the line it came from, for an undo.
+            if (first + prefix >= middle_end) onto.mark_origin = moved_from;
+        }
     }
     if (dialect_ == Dialect::text) return replace_text(first, fresh.size(), removed_breaks);
     RelayoutStats stats;

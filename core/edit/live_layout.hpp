@@ -91,13 +91,18 @@ public:
     // this layout's dialect) and its braille structure.
     bool reset(const document::Document& document, const Progress& progress = {});
     // Replaces `removed` lines starting at `first` with `lines`.
-    // The braille structure follows the lines: a line edited or split keeps
-    // its section mark (on its first part); inserted lines join the section
-    // of the line above them; the mark of a deleted line passes to the first
-    // line that replaces it, or else to the line after the deletion, so the
-    // pages that are left stay in their section and volume. When marks meet on
-    // one line, the last one's section wins (the sections before it have no
-    // line left) and a volume start among them is kept.
+    // The braille structure follows the lines: a line edited keeps its
+    // section mark, a line split keeps it on the part that is the same (on
+    // the first part when both changed); inserted lines join the section of
+    // the line above them (the removed lines equal to the first and last new
+    // ones are taken as kept, not replaced: the editor reports a line
+    // inserted above a line as that line replaced by both); the mark of a
+    // deleted line passes to the first line that replaces it, or else to the
+    // line after the deletion, so the pages that are left stay in their
+    // section and volume, and goes back to its line when that line comes back
+    // above it (undo). When marks meet on one line, the last one's section
+    // wins (the sections before it have no line left) and a volume start
+    // among them is kept.
     RelayoutStats replace(std::size_t first, std::size_t removed, std::vector<std::string> lines);
     // The braille structure as the lines hold it now (empty when none was given).
     [[nodiscard]] BrailleStructure braille_structure() const;
@@ -151,6 +156,8 @@ private:
         std::optional<Error> error;
         // A ready-made braille section (and perhaps a volume) starts on this line (BrailleStructure).
         std::optional<document::BrailleSection> section;
+        // The section mark came here when the line it was on was deleted: that line's text.
+        std::optional<std::string> mark_origin;
         std::size_t pages_before = 0;  // paginator state before this entry
         std::size_t lines_before = 0;
         bool settled_before = false;  // no table or list was open before this entry

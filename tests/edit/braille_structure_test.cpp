@@ -208,6 +208,35 @@ TEST(BrailleStructure, UndoingADeletionGivesTheStructureBack) {
     EXPECT_EQ(pef(live.paged()), original);
 }
 
+// The page before a section start deleted and the deletion undone: the
+// section start stays where it was (the lines come back above it, before the
+// section), as the editor reports the undo.
+TEST(BrailleStructure, UndoingADeletionBeforeASectionKeepsItsStart) {
+    auto live = open(kData + "volumes.pef");
+    const auto before = live.braille_structure();
+    const auto original = pef(live.paged());
+    const auto v3 = before.sections[3].first_block;  // volume 3's page break line
+    const std::vector<std::string> deleted = {live.line(v3 - 2), live.line(v3 - 1)};
+    ASSERT_EQ(deleted[1], "⠋⠊⠧⠑");
+    live.replace(v3 - 2, 3, {live.line(v3)});  // as the editor reports deleting whole lines above it
+    EXPECT_EQ(count(pef(live.paged()), "<page"), 6u);
+    live.replace(v3 - 2, 1, {deleted[0], deleted[1], live.line(v3 - 2)});
+    EXPECT_EQ(live.braille_structure(), before);
+    EXPECT_EQ(pef(live.paged()), original);
+}
+
+// Enter at the start or end of a section's first line: the line that is the
+// same keeps the mark.
+TEST(BrailleStructure, ABlankLineBesideASectionStartLeavesItThere) {
+    auto live = open(kData + "volumes.pef");
+    const auto v2 = live.braille_structure().sections[2].first_block;
+    const auto text = live.line(v2);
+    live.replace(v2, 1, {"", text});
+    EXPECT_EQ(live.braille_structure().sections[2].first_block, v2 + 1);
+    live.replace(v2 + 1, 1, {text, ""});
+    EXPECT_EQ(live.braille_structure().sections[2].first_block, v2 + 1);
+}
+
 // Print text typed into a PEF: it is no longer ready-made braille, so it is
 // laid out by the paginator on the options' page, as one section; its
 // metadata is still written. Taken out again, the sections are back.

@@ -360,6 +360,21 @@ private Q_SLOTS:
         QVERIFY2(!xml.contains(QStringLiteral("⠋⠊⠧⠑")), qPrintable(xml));
         QVERIFY2(xml.contains(QStringLiteral("<row>⠇⠁⠌</row>\n          <row>⠑⠝⠙</row>")), qPrintable(xml));
         QVERIFY2(xml.contains(QStringLiteral("cols=\"12\" rows=\"5\"")), qPrintable(xml));
+
+        // Every edit undone: the file as the CLI writes it again, structure and all.
+        auto* undo = w.editor()->undo_stack();
+        while (undo->canUndo()) undo->undo();
+        const auto undone = dir.filePath(QStringLiteral("volumes-undone.pef"));
+        const auto cli = dir.filePath(QStringLiteral("volumes-cli.pef"));
+        QVERIFY(w.export_to(undone));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("pef"),
+                                             QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef"), QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile u(undone), from_cli(cli);
+        QVERIFY(u.open(QIODevice::ReadOnly) && from_cli.open(QIODevice::ReadOnly));
+        QCOMPARE(u.readAll(), from_cli.readAll());
     }
 
     void save_and_reopen_round_trip() {
