@@ -161,6 +161,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         sp->set_document(&editor_->layout().paged());
         update_status();
         schedule_plan();
+        tell_pages_kept();
     });
     connect(editor_, &EditorWidget::position_changed, this, [this, sp](const edit::PagePosition& p) {
         if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
@@ -443,6 +444,7 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
     if (replace_text) {
         remove_autosave();
         editor_->adopt(std::move(*r->layout));
+        pages_kept_ = editor_->layout().pages_kept();
         const QFileInfo info(r->path);
         // Saved in place when Tactus writes the format (Markdown, text), else "Save as".
         const auto suffix = info.suffix().toLower();
@@ -467,6 +469,19 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         editor_->swap_layout(std::move(*r->layout));
         report(tr("Braille table: %1").arg(tables_->currentText()));
     }
+}
+
+void MainWindow::tell_pages_kept() {
+    if (!editor_->has_layout()) return;
+    const auto& layout = editor_->layout();
+    const bool kept = layout.pages_kept();
+    if (kept == pages_kept_) return;
+    pages_kept_ = kept;
+    if (!layout.ready_braille()) return;  // a new document, a table's change: said elsewhere
+    // Spoken and shown once, at the edit that changed it (what to do about it is in docs/gui.md).
+    report(kept ? tr("The braille's own pages, sections and volumes are kept again")
+                : tr("The braille is laid out again on the printer's page: its own pages, sections and volumes are "
+                     "kept only while it holds nothing but braille rows that fit the page"));
 }
 
 QString MainWindow::status_text() const {

@@ -123,6 +123,9 @@ public:
     // change; not on every edit).
     [[nodiscard]] const layout::LayoutOptions& options() const { return requested_; }
     [[nodiscard]] bool ready_braille() const { return ready_braille_; }
+    // The pages are ready-made braille kept as it is (layout::keep_braille_pages),
+    // not laid out again by the paginator.
+    [[nodiscard]] bool pages_kept() const { return kept_; }
     [[nodiscard]] const std::string& tables() const { return translator_.tables(); }
     [[nodiscard]] std::size_t line_count() const { return entries_.size(); }
     [[nodiscard]] const std::string& line(std::size_t i) const { return entries_[i].line; }

@@ -377,6 +377,25 @@ private Q_SLOTS:
         QCOMPARE(u.readAll(), from_cli.readAll());
     }
 
+    // Print text typed into a PEF: the app says, once, that the braille is laid
+    // out again and its own pages are no longer kept; taken out, that they are kept again.
+    void typing_print_into_a_pef_says_its_pages_are_laid_out_again() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef")));
+        QVERIFY(w.editor()->layout().pages_kept());
+        QCOMPARE(w.editor()->layout().paged().sheet_count(), std::size_t{4});
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document());
+        c.movePosition(QTextCursor::End);
+        c.insertText(QStringLiteral("\nPrint text"));
+        QVERIFY(!w.editor()->layout().pages_kept());
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("laid out again")), qPrintable(w.announcer()->message()));
+        w.editor()->undo_stack()->undo();
+        QVERIFY(w.editor()->layout().pages_kept());
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("kept again")), qPrintable(w.announcer()->message()));
+        QCOMPARE(w.editor()->layout().paged().sheet_count(), std::size_t{4});
+    }
+
     void save_and_reopen_round_trip() {
         MainWindow w;
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
