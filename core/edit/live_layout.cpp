@@ -543,6 +543,7 @@ document::Document LiveLayout::document() const {
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
     document::Document doc;
+    doc.blocks.reserve(entries_.size());
     doc.braille_grid = braille_grid_;
     doc.metadata = metadata_;
     std::optional<document::BrailleSection> mark;  // a section starts at the next block
@@ -619,8 +620,9 @@ BrailleStructure LiveLayout::braille_structure() const {
 
 bool LiveLayout::keep_pages() {
     auto doc = document();
-    if (!layout::is_ready_braille(doc) || layout::find_braille_misfit(doc, requested_)) return false;
+    if (!layout::is_ready_braille(doc)) return false;
     std::vector<layout::BlockPlace> places;
+    // Refused when a page does not fit (layout::check_braille_fits): laid out again then.
     auto kept = layout::keep_braille_pages(doc, requested_, &places);
     if (!kept) return false;
     paged_ = std::move(*kept);

@@ -9,7 +9,7 @@ namespace {
 // One source page: the rows of the braille blocks between two page breaks.
 struct SourcePage {
     const document::Block* first = nullptr;
-    std::vector<document::BrailleLine> rows;
+    std::vector<const document::BrailleLine*> rows;  // into the document's blocks: no copy
     int source_line = 0;
     std::size_t section = 0;
     std::size_t first_block = 0;  // the page's first braille block
@@ -34,15 +34,14 @@ std::vector<SourcePage> source_pages(const document::Document& doc) {
             pages.push_back(SourcePage{&b, {}, b.source_line, section, i});
             open = true;
         }
-        auto& rows = pages.back().rows;
-        rows.insert(rows.end(), b.braille_lines.begin(), b.braille_lines.end());
+        for (const auto& row : b.braille_lines) pages.back().rows.push_back(&row);
     }
     return pages;
 }
 
-int longest_row(const std::vector<document::BrailleLine>& rows) {
+int longest_row(const std::vector<const document::BrailleLine*>& rows) {
     std::size_t n = 0;
-    for (const auto& r : rows) n = std::max(n, r.size());
+    for (const auto* r : rows) n = std::max(n, r->size());
     return static_cast<int>(n);
 }
 
@@ -104,8 +103,8 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
     for (const auto& p : pages) {
         cols = std::max(cols, longest_row(p.rows));
         rows = std::max(rows, static_cast<int>(p.rows.size()));
-        for (const auto& r : p.rows)
-            eight_dot = eight_dot || std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+        for (const auto* r : p.rows)
+            eight_dot = eight_dot || std::ranges::any_of(*r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
     }
     if (doc.braille_grid) {
         cols = std::max(cols, doc.braille_grid->cols);
@@ -149,7 +148,8 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
         }
         Page page;
         page.braille_number = static_cast<int>(out.pages.size()) + 1;
-        page.lines = p.rows;
+        page.lines.reserve(static_cast<std::size_t>(out.geometry.lines_per_page));
+        for (const auto* r : p.rows) page.lines.push_back(*r);
         page.lines.resize(static_cast<std::size_t>(out.geometry.lines_per_page));
         out.pages.push_back(std::move(page));
         // A single-sided section on interpoint paper: every page has its own sheet.
