@@ -346,6 +346,11 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     first = std::min(first, entries_.size());
     removed = std::min(removed, entries_.size() - first);
     const auto at = entries_.begin() + static_cast<std::ptrdiff_t>(first);
+    // One row of kept pages edited in place (a cell typed): where it is, for kept_row_edit.
+    std::optional<std::pair<std::size_t, std::size_t>> row_place;
+    if (kept_ && removed == 1 && lines.size() == 1 && !at->section && one_row(*at))
+        row_place = std::pair{at->pages_before, at->lines_before};
+    const auto old_row = row_place ? at->block->braille_lines.front() : document::BrailleLine{};
     const bool removed_breaks = std::any_of(at, at + static_cast<std::ptrdiff_t>(removed), [](const Entry& e) {
         return (e.block && e.block->kind == document::BlockKind::print_page_break) ||
                e.line.find('\f') != std::string::npos;  // a text line's form feed
@@ -448,6 +453,15 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
             continue;
         }
         break;
+    }
+    if (row_place && count == 1 && kept_row_edit(first, *row_place, old_row)) {
+        RelayoutStats in_place;
+        in_place.lines_translated = stats.lines_translated;
+        in_place.first_page_relaid = row_place->first;
+        in_place.pages_relaid = 1;
+        in_place.braille_first = first;
+        in_place.braille_end = first + 1;
+        return in_place;
     }
     auto layout = relayout_from(first, breaks_touched ? npos : first + count);
     layout.lines_translated = stats.lines_translated;
@@ -616,6 +630,34 @@ BrailleStructure LiveLayout::braille_structure() const {
             s.sections.back().first_block = i;
         }
     return s;
+}
+
+bool LiveLayout::one_row(const Entry& e) {
+    return e.block && !e.error && e.block->kind == document::BlockKind::braille && e.block->braille_lines.size() == 1;
+}
+
+bool LiveLayout::kept_row_edit(std::size_t i, std::pair<std::size_t, std::size_t> place,
+                               const document::BrailleLine& old_row) {
+    // Only when layout::keep_braille_pages would give the same pages with just
+    // this row changed: a row still, no section mark, no change to the page's
+    // grid (both rows within the file's cols and the printer's) or to 8-dot.
+    // braille_structure_test's random edits compare it with keep_pages.
+    auto& e = entries_[i];
+    if (!one_row(e) || e.section || !braille_grid_) return false;
+    const auto& row = e.block->braille_lines.front();
+    const auto cols = static_cast<std::size_t>(std::min(braille_grid_->cols, requested_.geometry.cells_per_line));
+    const auto eight = [](const document::BrailleLine& r) {
+        return std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+    };
+    if (row.size() > cols || old_row.size() > cols ||
+        (!requested_.geometry.eight_dot && (eight(row) || eight(old_row))))
+        return false;
+    if (place.first >= paged_.pages.size() || place.second >= paged_.pages[place.first].lines.size()) return false;
+    paged_.pages[place.first].lines[place.second] = row;
+    e.pages_before = place.first;
+    e.lines_before = place.second;
+    e.settled_before = true;
+    return true;
 }
 
 bool LiveLayout::keep_pages() {

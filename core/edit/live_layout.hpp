@@ -214,6 +214,10 @@ private:
     // Lays the ready-made braille out page for page (keep_braille_pages) when
     // it still is ready-made braille and fits; false when it is not.
     bool keep_pages();
+    // A row of kept pages edited in place: the row changed on its page, when
+    // keep_braille_pages would change nothing else (else false: keep_pages).
+    bool kept_row_edit(std::size_t i, std::pair<std::size_t, std::size_t> place, const document::BrailleLine& old_row);
+    [[nodiscard]] static bool one_row(const Entry& e);
     Dialect dialect_ = Dialect::markdown;
     std::string line_ending_ = "\n";
     bool runs_on_ = false;  // text dialect: a paragraph's lines run on (find_paragraph_breaks)

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -265,4 +266,48 @@ TEST(BrailleStructure, PositionsCountBlankBacks) {
     EXPECT_EQ(live.position_of(five).page, 6u);
     EXPECT_EQ(live.line_at(6, 0), five);
     EXPECT_TRUE(live.paged().pages[5].filler);
+}
+
+// Random edits (cells typed and erased in rows, rows split, joined, deleted,
+// page breaks typed): after each, the live pages are exactly what the CLI's
+// call, layout::keep_braille_pages, gives for the document the lines stand
+// for (the editor changes a row in place when nothing else can change).
+TEST(BrailleStructure, RandomEditsGiveTheCoreCallsPages) {
+    for (const auto* name : {"volumes.pef", "real/book.pef", "real/margin-uneven.pef"}) {
+        SCOPED_TRACE(name);
+        auto live = open(kData + name);
+        std::mt19937 rng(13);
+        const auto pick = [&rng](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+        const std::vector<std::string> cells = {"⠁", "⠃", "⠉", "⠀", "⠿"};
+        for (int step = 0; step < 300; ++step) {
+            const auto i = pick(live.line_count());
+            auto line = live.line(i);
+            switch (pick(10)) {
+                case 0: live.replace(i, 1, {line, "⠙⠑"}); break;                      // a row added
+                case 1: if (live.line_count() > 3) live.replace(i, 1, {}); break;  // a line deleted
+                case 2: live.replace(i, 0, {"<!-- braillepage -->"}); break;     // a page break typed
+                case 3:
+                    if (i + 1 < live.line_count() && edit::is_braille_line(line) && edit::is_braille_line(live.line(i + 1)))
+                        live.replace(i, 2, {line + live.line(i + 1)});  // two rows joined
+                    break;
+                default:
+                    if (!edit::is_braille_line(line)) break;
+                    // A cell typed at the end or the last one erased (3 bytes each).
+                    if (pick(2) == 0 || line.size() <= 3) line += cells[pick(cells.size())];
+                    else line.resize(line.size() - 3);
+                    live.replace(i, 1, {line});
+            }
+            const auto doc = live.document();
+            const auto expected = layout::keep_braille_pages(doc, big_page());
+            if (!expected) {
+                EXPECT_FALSE(live.pages_kept());
+                continue;
+            }
+            ASSERT_TRUE(live.pages_kept()) << "step " << step;
+            ASSERT_TRUE(live.paged().pages == expected->pages) << "step " << step;
+            ASSERT_EQ(live.paged().sections, expected->sections) << "step " << step;
+            ASSERT_EQ(live.paged().geometry, expected->geometry) << "step " << step;
+            ASSERT_EQ(live.paged().metadata, expected->metadata) << "step " << step;
+        }
+    }
 }
