@@ -798,6 +798,11 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
+        <translation>無法依此印表機的頁面排版文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
         <source>The braille&apos;s own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
