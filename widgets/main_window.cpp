@@ -680,7 +680,7 @@ bool MainWindow::may_reflow_braille() {
     const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
                              "printer's page?")
                               .arg(name);
-    // The editor's lines do not carry the file's declared grid: the page's own size is said.
+    // The page's own size is said (its lines, its longest row), which is what must fit.
     const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
                            "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
                            "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "
