@@ -10,10 +10,6 @@
 #include <tuple>
 #include <unordered_map>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -72,38 +68,16 @@ Model make_model(const StateSpace& s, double dwell_s) {
     return m;
 }
 
-// The hot loops of planning (per strike, per machine) below are written out
-// so that every element is computed by the same operations in the same order
-// as the plain loop (one IEEE multiply or add at a time, no reassociation),
-// two elements per SSE2 instruction: the same bits, in half the instructions.
-// `off` (mm) is where the command rests past the dot the hammer must hit
-// (command minus dot): the error is then head minus dot, rows z + off.
-double error_um(const Model& m, const Vec4& z, double off = 0.0) {
-    const double* c = m.rows.data();  // column-major, kSamples + 1 rows
-    constexpr int n = kSamples + 1;
-    double worst = 0;
-    int r = 0;
-#if defined(__SSE2__)
-    const __m128d z0 = _mm_set1_pd(z[0]), z1 = _mm_set1_pd(z[1]), z2 = _mm_set1_pd(z[2]), z3 = _mm_set1_pd(z[3]);
-    const __m128d sign = _mm_set1_pd(-0.0), o = _mm_set1_pd(off);
-    __m128d w = _mm_setzero_pd();
-    for (; r + 1 < n; r += 2) {
-        __m128d e = _mm_mul_pd(_mm_loadu_pd(c + r), z0);
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + n + r), z1));
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 2 * n + r), z2));
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 3 * n + r), z3));
-        e = _mm_add_pd(e, o);  // + 0.0 leaves e as it was
-        w = _mm_max_pd(w, _mm_andnot_pd(sign, e));  // |e|
-    }
-    alignas(16) double lanes[2];
-    _mm_store_pd(lanes, w);
-    worst = std::max(lanes[0], lanes[1]);
-#endif
-    for (; r < n; ++r)
-        worst = std::max(worst,
-                         std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3] + off));
-    return 1000.0 * worst;
-}
+// Defined with the per-strike kernels (below): the largest |rows z + off| over
+// the dwell samples, four rows per AVX2 instruction (two per SSE2 one in the
+// baseline clone), every element computed by the same operations in the same
+// order as the plain loop (one IEEE multiply or add at a time, no fused
+// multiply-add, no reassociation): the same bits. `off` (mm) is where the
+// command rests past the dot the hammer must hit (command minus dot): the
+// error is then head minus dot, rows z + off.
+double error_kernel(const double* c, const double* z, double off);
+
+double error_um(const Model& m, const Vec4& z, double off = 0.0) { return error_kernel(m.rows.data(), z.data(), off); }
 
 // A bound on error_um(m, z, off) / 1000 without sampling: every row's
 // product rows(i) z lies between the sums of the columns' smallest and largest
@@ -202,6 +176,32 @@ TACTUS_SIMD_CLONES void bound_kernel(const double* z, const double* cmax, const 
     }
 }
 
+TACTUS_SIMD_CLONES double error_kernel(const double* c, const double* z, double off) {
+    constexpr std::size_t n = kSamples + 1;  // rows, column-major
+    V4 z0, z1, z2, z3, o, w;
+    for (int l = 0; l < 4; ++l) z0[l] = z[0], z1[l] = z[1], z2[l] = z[2], z3[l] = z[3], o[l] = off, w[l] = 0.0;
+    std::size_t r = 0;
+    for (; r + 4 <= n; r += 4) {
+        V4 c0, c1, c2, c3;
+        __builtin_memcpy(&c0, c + r, sizeof(V4));
+        __builtin_memcpy(&c1, c + n + r, sizeof(V4));
+        __builtin_memcpy(&c2, c + 2 * n + r, sizeof(V4));
+        __builtin_memcpy(&c3, c + 3 * n + r, sizeof(V4));
+        V4 e = c0 * z0;
+        e = e + c1 * z1;
+        e = e + c2 * z2;
+        e = e + c3 * z3;
+        e = e + o;                    // + 0.0 leaves e as it was
+        const V4 a = e < 0 ? -e : e;  // |e| (a zero's sign does not matter to the largest)
+        w = w < a ? a : w;
+    }
+    double worst = std::max(std::max(w[0], w[1]), std::max(w[2], w[3]));
+    for (; r < n; ++r)
+        worst = std::max(worst,
+                         std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3] + off));
+    return 1000.0 * worst;
+}
+
 }  // namespace
 
 std::vector<ModelVariant> band_variants(const profile::Vibration& v) {
@@ -261,8 +261,7 @@ struct Ringing::Impl {
     [[nodiscard]] bool within(const std::vector<Vec4>& zs, std::uint64_t ticks, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             const Vec4 zz = after_ticks(m, zs[i], ticks);
             if (sample_bound(m, zz, off) <= target_mm) continue;  // cannot exceed: no need to sample
@@ -278,8 +277,7 @@ struct Ringing::Impl {
     [[nodiscard]] bool passes(const std::vector<Vec4>& zs, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             if (sample_bound(m, zs[i], off) <= target_mm) continue;
             if (error_um(m, zs[i], off) > target_um) {
@@ -348,8 +346,8 @@ struct Ringing::Impl {
         r.nominal_um = error_um(models[0], z_of(0), off);
         bound_kernel(z_soa.data(), cmax_soa.data(), cmin_soa.data(), off, bounds.data(), kPad);
         const std::size_t nb = models.size() - 1;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;  // the one that was worst last, first
+        // The one that was worst last, first (then on, wrapping round).
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             if (1000.0 * bounds[i] <= r.worst_um) continue;  // cannot be the worst
             const double e = error_um(models[i], z_of(i), off);
             if (e > r.worst_um) r.worst_um = e, worst_model = i;
@@ -362,8 +360,8 @@ struct Ringing::Impl {
         Residual r;
         r.nominal_um = error_um(models[0], zs[0], off);
         const std::size_t nb = models.size() - 1;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;  // the one that was worst last, first
+        // The one that was worst last, first (then on, wrapping round).
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             if (1000.0 * sample_bound(m, zs[i], off) <= r.worst_um) continue;  // cannot be the worst
             const double e = error_um(m, zs[i], off);
