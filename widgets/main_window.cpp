@@ -42,6 +42,7 @@
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "layout/braille_pages.hpp"
+#include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
 #include "motion_view.hpp"
@@ -121,6 +122,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
     connect(&plan_timer_, &QTimer::timeout, this, &MainWindow::start_plan);
     connect(profile_, &ProfileEditor::profile_changed, this, [this](const profile::PrinterProfile& p) {
+        // The document is laid out for the machine's page, as tactus-cli lays it out for a profile.
+        if (editor_->has_layout()) {
+            auto options = editor_->layout().options();
+            if (const auto page = profile::page_geometry(p); options.geometry != page) {
+                options.geometry = page;
+                if (auto ok = editor_->set_layout_options(options); !ok)
+                    report(tr("The document cannot be laid out for this printer's page: %1")
+                               .arg(QString::fromStdString(ok.error().to_string())),
+                           true);
+            }
+        }
         preview_->preview()->set_geometry(sheet_geometry(p));
         vibration_->set_profile(p);
         schedule_plan();

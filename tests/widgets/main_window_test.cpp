@@ -22,6 +22,9 @@
 #include "gui_test_support.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
+#include "profile/page_geometry.hpp"
+#include "profile/profile_json.hpp"
+#include "profile_editor.hpp"
 #include "main_window.hpp"
 #include "preview_panel.hpp"
 #include "table_picker.hpp"
@@ -268,6 +271,40 @@ private Q_SLOTS:
             QVERIFY(source.open(QIODevice::ReadOnly));
             QCOMPARE(app_bytes, source.readAll());
         }
+    }
+
+    // The document is laid out for the printer's page: a profile with narrower,
+    // shorter pages lays it out again, as tactus-cli lays it out for that
+    // page. The app kept 27 x 24 whatever profile was loaded, so its lines were
+    // wider than the machine's page.
+    void a_loaded_profile_lays_the_document_out_for_its_page() {
+        auto machine = profile::default_profile();
+        machine.geometry.cells_per_line = 20;
+        machine.geometry.lines_per_page = 22;
+        const auto profile_path = dir.filePath(QStringLiteral("narrow.json"));
+        const auto saved = profile::save_profile(machine, profile_path.toStdString());
+        QVERIFY2(saved, saved ? "" : saved.error().to_string().c_str());
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QVERIFY(w.profile_editor()->load(profile_path));
+        const auto& paged = w.editor()->layout().paged();
+        QCOMPARE(paged.geometry, profile::page_geometry(machine));
+        for (const auto& page : paged.pages) {
+            QVERIFY(page.lines.size() <= 22);
+            for (const auto& line : page.lines) QVERIFY(line.size() <= 20);
+        }
+        const auto app = dir.filePath(QStringLiteral("narrow-app.brf"));
+        const auto cli = dir.filePath(QStringLiteral("narrow-cli.brf"));
+        QVERIFY(w.export_to(app));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("brf"),
+                                             QStringLiteral("--cells"), QStringLiteral("20"), QStringLiteral("--lines"),
+                                             QStringLiteral("22"), test::sample("welcome.md"), QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile a(app), c(cli);
+        QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), c.readAll());
     }
 
     void save_and_reopen_round_trip() {
