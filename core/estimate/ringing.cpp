@@ -215,17 +215,27 @@ std::vector<ModelVariant> band_variants(const profile::Vibration& v) {
 }
 
 struct Ringing::Move {
-    std::vector<Mat4> phi;    // per model: exp(A T)
-    std::vector<Mat4> phi_d;  // the same after a dwell: exp(A T) exp(A dwell)
-    std::vector<Vec4> w;
+    // Per model, while the move is made (emptied by lay_out_soa): exp(A T),
+    // and the same after a dwell, exp(A T) exp(A dwell).
+    std::vector<Mat4> phi, phi_d;
+    std::vector<Vec4> w;  // per model
     // The same numbers laid out for Ringing::move (the hot loop): element by
-    // element across the models, kLanesPadded models per element
-    // (soa[(c * 4 + r) * kPad + i] = phi[i](r, c); padding 0).
+    // element across the models, kPad models per element
+    // (phi_soa[(c * 4 + r) * kPad + i] = phi[i](r, c); padding 0).
     std::vector<double> phi_soa, phi_d_soa, w_soa;
 };
 
 namespace {
-// Fills a move's *_soa from its per-model numbers.
+// Model i's matrix from its element-by-element layout.
+Mat4 matrix_of(const std::vector<double>& soa, std::size_t i) {
+    Mat4 m;
+    double* p = m.data();
+    for (std::size_t e = 0; e < 16; ++e) p[e] = soa[e * kPad + i];
+    return m;
+}
+
+// Fills a move's *_soa from its per-model numbers, and frees its per-model
+// matrices (kept once: a tuned move is kept for the whole plan).
 void lay_out_soa(Ringing::Move& mv) {
     mv.phi_soa.assign(16 * kPad, 0.0);
     mv.phi_d_soa.assign(16 * kPad, 0.0);
@@ -239,6 +249,8 @@ void lay_out_soa(Ringing::Move& mv) {
         }
         for (std::size_t r = 0; r < 4; ++r) mv.w_soa[r * kPad + i] = mv.w[i][static_cast<Eigen::Index>(r)];
     }
+    std::vector<Mat4>().swap(mv.phi);
+    std::vector<Mat4>().swap(mv.phi_d);
 }
 }  // namespace
 
@@ -516,13 +528,14 @@ std::shared_ptr<const Ringing::Move> Ringing::prepare_step_train(std::span<const
 }
 
 std::shared_ptr<const Ringing::Move> Ringing::then_rest(const Move& mv, std::uint64_t ticks) const {
-    auto out = std::make_shared<Move>(mv);
+    auto out = std::make_shared<Move>();
+    out->w = mv.w;
     for (std::size_t i = 0; i < impl_->models.size(); ++i) {
         Mat4 e = Mat4::Identity();
         for (std::uint64_t t = ticks, k = 0; t != 0; ++k, t >>= 1)
             if (t & 1U) e = impl_->models[i].pow2[k] * e;
-        out->phi[i] = e * mv.phi[i];
-        out->phi_d[i] = e * mv.phi_d[i];
+        out->phi.push_back(e * matrix_of(mv.phi_soa, i));
+        out->phi_d.push_back(e * matrix_of(mv.phi_d_soa, i));
         out->w[i] = e * mv.w[i];
     }
     lay_out_soa(*out);
