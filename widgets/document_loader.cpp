@@ -47,8 +47,11 @@ LoadResultPtr load_text(const QString& path, const std::string& tables, const la
         r->path = path;
         return r;
     }
-    auto r = build(import::split_text_lines(*text), tables, options, edit::Dialect::text, progress);
-    if (r->layout) r->layout->set_line_ending(import::line_ending_of(*text));
+    auto r = build(import::split_text_lines(text->text), tables, options, edit::Dialect::text, progress);
+    if (r->layout) {
+        r->layout->set_line_ending(import::line_ending_of(text->text));
+        r->layout->set_encoding(text->encoding, text->byte_order_mark);  // saved in it again
+    }
     r->path = path;
     return r;
 }

@@ -151,7 +151,10 @@ void EditorWidget::adopt(edit::LiveLayout layout) {
 }
 
 void EditorWidget::swap_layout(edit::LiveLayout layout) {
-    if (layout_) layout.set_line_ending(layout_->line_ending());  // the same file
+    if (layout_) {  // the same file
+        layout.set_line_ending(layout_->line_ending());
+        layout.set_encoding(layout_->encoding(), layout_->byte_order_mark());
+    }
     layout_ = std::move(layout);
     refresh_braille();
 }

@@ -30,6 +30,11 @@ public:
     // A layout of the same lines built elsewhere (new table or options off-thread):
     // the print text and its undo history stay.
     void swap_layout(edit::LiveLayout layout);
+    // The encoding the file is saved in from now on (the user chose UTF-8 for
+    // a character the file's own encoding cannot hold).
+    void set_encoding(const std::string& encoding, bool byte_order_mark) {
+        if (layout_) layout_->set_encoding(encoding, byte_order_mark);
+    }
     Result<void> set_tables(const std::string& tables);
     Result<void> set_layout_options(const layout::LayoutOptions& options);
 

@@ -41,6 +41,7 @@
 #include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
+#include "export/text_export.hpp"
 #include "layout/braille_pages.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
@@ -560,8 +561,26 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
 }
 
 bool MainWindow::save_to(const QString& path) {
+    // In the file's format and, for a text file, its own encoding (core's writer).
+    std::vector<std::string> lines;
+    for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
+    const auto bytes_for = [&] {
+        const auto& layout = editor_->layout();
+        return edit::file_bytes(lines, layout.dialect(), layout.document(), path.toStdString(), layout.line_ending());
+    };
+    auto bytes = bytes_for();
+    if (!bytes && exporter::is_unrepresentable_error(bytes.error())) {
+        if (!may_save_as_utf8(path, bytes.error())) return false;
+        editor_->set_encoding("UTF-8", false);
+        bytes = bytes_for();
+    }
+    if (!bytes) {
+        report(tr("Cannot save %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(bytes.error().to_string())),
+               true);
+        return false;
+    }
     QString error;
-    if (!write_atomically(path, file_bytes(path), &error)) {
+    if (!write_atomically(path, QByteArray::fromStdString(*bytes), &error)) {
         report(error, true);
         return false;
     }
@@ -716,6 +735,37 @@ bool MainWindow::may_reflow_braille() {
     return false;
 }
 
+bool MainWindow::may_save_as_utf8(const QString& path, const Error& why) {
+    const auto name = QFileInfo(path).fileName();
+    const auto encoding = QString::fromStdString(editor_->layout().encoding());
+    const auto question = tr("%1 cannot be saved in its encoding, %2. Save it as UTF-8?").arg(name, encoding);
+    const auto detail = tr("At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that "
+                           "expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character "
+                           "to keep %3.")
+                            .arg(QString::fromStdString(why.where), QString::fromStdString(why.message), encoding);
+    if (!interactive_) {
+        report(question + QLatin1Char(' ') + detail, true);
+        return false;
+    }
+    FocusReturn back(this, editor_->print_pane());
+    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("encodingQuestion"));
+    box.setInformativeText(detail);
+    // As the page-too-small question: the name first, then the box's labels.
+    box.setAccessibleName(tr("A character does not fit the file's encoding"));
+    auto* utf8 = box.addButton(tr("Save as &UTF-8"), QMessageBox::AcceptRole);
+    auto* cancel = box.addButton(QMessageBox::Cancel);
+    utf8->setObjectName(QStringLiteral("saveUtf8Button"));
+    utf8->setAccessibleDescription(tr("Save the whole file as UTF-8 from now on"));
+    cancel->setAccessibleDescription(tr("Save nothing"));
+    box.setDefaultButton(cancel);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() == utf8) return true;
+    report(tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
+    return false;
+}
+
 bool MainWindow::may_stop_embossing() {
     const auto job = printer_->embossing();
     if (!job || !interactive_) return true;
@@ -864,6 +914,8 @@ bool MainWindow::autosave_now() {
                      {QStringLiteral("name"), source_name_},
                      {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
                      {QStringLiteral("line_ending"), QString::fromStdString(editor_->layout().line_ending())},
+                     {QStringLiteral("encoding"), QString::fromStdString(editor_->layout().encoding())},
+                     {QStringLiteral("byte_order_mark"), editor_->layout().byte_order_mark()},
                      {QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
     return write_atomically(autosave_path_ + QStringLiteral(".json"), QJsonDocument(meta).toJson(), &error);
 }
@@ -890,6 +942,8 @@ QList<Recovery> MainWindow::pending_recoveries() {
         r.document_path = meta.value(QStringLiteral("path")).toString();
         r.table = meta.value(QStringLiteral("table")).toString();
         r.line_ending = meta.value(QStringLiteral("line_ending")).toString();
+        r.encoding = meta.value(QStringLiteral("encoding")).toString();
+        r.byte_order_mark = meta.value(QStringLiteral("byte_order_mark")).toBool();
         r.saved_at = QDateTime::fromString(meta.value(QStringLiteral("time")).toString(), Qt::ISODate);
         out << r;
     }
@@ -912,6 +966,7 @@ bool MainWindow::recover(const Recovery& r) {
     }
     layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
     if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
+    if (!r.encoding.isEmpty()) layout->set_encoding(r.encoding.toStdString(), r.byte_order_mark);
     layout->reset(std::move(lines));
     editor_->adopt(std::move(*layout));
     tables_->set_table(QString::fromStdString(table));

@@ -38,6 +38,8 @@ struct Recovery {
     QString table;
     QDateTime saved_at;
     QString line_ending;  // a text file's ("\r\n", ...): it is saved with it again
+    QString encoding;     // a text file's ("BIG5", ...): it is saved in it again
+    bool byte_order_mark = false;
 };
 
 class MainWindow : public QMainWindow {
@@ -130,6 +132,9 @@ private:
     // printer's page or to stop (layout::find_braille_misfit, the rule the
     // CLI's exit 5 asks). True to go on. A window that is not interactive stops.
     bool may_reflow_braille();
+    // A character the text file's encoding cannot hold: asks whether to save
+    // as UTF-8 (true) or not at all.
+    bool may_save_as_utf8(const QString& path, const Error& why);
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
     void remove_autosave();

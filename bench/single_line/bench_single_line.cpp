@@ -4,7 +4,7 @@
 // as the size grows; peak resident size is printed too. Two kinds of line:
 // English words (what a converted e-book with lost line ends looks like) and
 // one word without any space (the worst case: every line is a divided word).
-// Usage: bench_single_line [MB...]   (default 1 4 16)
+// Usage: bench_single_line [words|no-space] [MB...]   (default both kinds, 1 4 16)
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -81,9 +81,17 @@ void measure(const char* kind, std::size_t mb, bool words) {
 
 int main(int argc, char** argv) {
     std::vector<std::size_t> sizes;
-    for (int i = 1; i < argc; ++i) sizes.push_back(static_cast<std::size_t>(std::atoi(argv[i])));
+    bool words = true, no_space = true;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "words") no_space = false;
+        else if (a == "no-space") words = false;
+        else sizes.push_back(static_cast<std::size_t>(std::atoi(argv[i])));
+    }
     if (sizes.empty()) sizes = {1, 4, 16};
-    for (auto mb : sizes) measure("words", mb, true);
-    for (auto mb : sizes) measure("no-space", mb, false);
+    if (words)
+        for (auto mb : sizes) measure("words", mb, true);
+    if (no_space)
+        for (auto mb : sizes) measure("no-space", mb, false);
     return 0;
 }

@@ -63,6 +63,22 @@ Result<std::u32string> utf8_to_utf32(std::string_view utf8) {
     return out;
 }
 
+Result<void> append_utf32(std::u32string& out, std::string_view utf8) {
+    const auto start = out.size();
+    if (out.capacity() < start + utf8.size()) out.reserve(start + utf8.size());  // at most one code point a byte
+    char32_t cp = 0;
+    for (std::size_t i = 0; i < utf8.size();) {
+        const auto n = decode(utf8, i, cp);
+        if (n == 0) {
+            out.resize(start);
+            return fail("invalid UTF-8", "byte " + std::to_string(i));
+        }
+        out.push_back(cp);
+        i += n;
+    }
+    return {};
+}
+
 void append_utf8(std::string& out, char32_t cp) {
     if (cp < 0x80) {
         out.push_back(static_cast<char>(cp));

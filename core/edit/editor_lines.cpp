@@ -359,6 +359,13 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
     return exporter::to_markdown(blocks);
 }
 
+Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
+                               std::string_view file_name, std::string_view line_ending) {
+    auto text = file_text(lines, dialect, blocks, file_name, line_ending);
+    if (dialect_for(file_name) != Dialect::text) return text;
+    return exporter::encode_text(text, blocks.encoding, blocks.byte_order_mark);
+}
+
 std::string editor_line_content(std::string_view line, Dialect dialect) {
     const auto block = parse_editor_line(line, dialect);
     if (!block) return {};

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/result.hpp"
 #include "document/document.hpp"
 
 namespace tactus::edit {
@@ -56,6 +57,14 @@ std::string render_editor_line(const document::Block& block, Dialect dialect = D
 // by core's writer for that format.
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                       std::string_view file_name, std::string_view line_ending = "\n");
+
+// file_text as the file's bytes: a text file (.txt, .text) in the encoding it
+// was opened with (`blocks.encoding`, with its byte-order mark when
+// `blocks.byte_order_mark`: exporter::encode_text), so a file opened and saved
+// is the same bytes; Markdown as UTF-8. Fails, writing nothing, when the text
+// holds a character that encoding cannot (exporter::is_unrepresentable_error).
+Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
+                               std::string_view file_name, std::string_view line_ending = "\n");
 
 // The text a reader sees: without the heading marks, bullet and emphasis marks.
 // Used to map the cursor between print and braille word by word.

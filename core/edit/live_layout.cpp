@@ -557,6 +557,8 @@ document::Document LiveLayout::document() const {
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
     document::Document doc;
+    doc.encoding = encoding_;
+    doc.byte_order_mark = byte_order_mark_;
     doc.blocks.reserve(entries_.size());
     doc.braille_grid = braille_grid_;
     doc.metadata = metadata_;

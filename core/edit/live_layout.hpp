@@ -75,6 +75,15 @@ public:
     // "\n" unless set): the text dialect's lines are the file's lines.
     void set_line_ending(std::string ending) { line_ending_ = std::move(ending); }
     [[nodiscard]] const std::string& line_ending() const { return line_ending_; }
+    // The encoding a text file is saved in (import::read_text_file; UTF-8
+    // without a byte-order mark unless set), given to document() as the
+    // document's own (Document::encoding, byte_order_mark).
+    void set_encoding(std::string encoding, bool byte_order_mark) {
+        encoding_ = std::move(encoding);
+        byte_order_mark_ = byte_order_mark;
+    }
+    [[nodiscard]] const std::string& encoding() const { return encoding_; }
+    [[nodiscard]] bool byte_order_mark() const { return byte_order_mark_; }
 
     // The document the lines stand for: their blocks in order, page breaks with
     // the print page they start, a table row followed by its cells, and each
@@ -220,6 +229,8 @@ private:
     [[nodiscard]] static bool one_row(const Entry& e);
     Dialect dialect_ = Dialect::markdown;
     std::string line_ending_ = "\n";
+    std::string encoding_ = "UTF-8";
+    bool byte_order_mark_ = false;
     bool runs_on_ = false;  // text dialect: a paragraph's lines run on (find_paragraph_breaks)
     std::vector<Entry> entries_;
     // The kind of the last laid-out text block before entry `index` (page

@@ -7,7 +7,10 @@
 // tests/edit/round_trip_test.cpp).
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "common/result.hpp"
 
 #include "document/document.hpp"
 
@@ -74,5 +77,21 @@ std::vector<std::string> text_lines(const document::Document& document);
 
 // text_lines as a file, each line ended by LF.
 std::string to_text(const document::Document& document);
+
+// ---- Encodings ----
+
+// UTF-8 text as the bytes of a file in `encoding` (an ICU name, as the
+// importer records it in Document::encoding: "UTF-8", "UTF-16LE", "BIG5",
+// "GB18030", "WINDOWS-1252", ...; empty = UTF-8), with the encoding's
+// byte-order mark first when `byte_order_mark`. A text file opened and saved
+// is the same bytes. Nothing is ever replaced: a character the encoding
+// cannot hold fails (ErrorKind::input) naming it and its line:column, so the
+// caller can ask the user (save as UTF-8, or not at all); see
+// is_unrepresentable_error.
+Result<std::string> encode_text(std::string_view utf8, std::string_view encoding, bool byte_order_mark = false);
+
+// True for the error encode_text gives for a character the encoding cannot
+// hold (as opposed to an unknown encoding name).
+bool is_unrepresentable_error(const Error& error);
 
 }  // namespace tactus::exporter

@@ -14,6 +14,7 @@
 #include <pugixml.hpp>
 
 #include <unordered_map>
+#include <unordered_set>
 
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
@@ -80,7 +81,7 @@ public:
     BodyReader(const DocxStyles& styles, DocxNumbering& numbering, const pugi::xml_node& footnotes,
                const pugi::xml_node& endnotes)
         : styles_(styles), numbering_(numbering), footnotes_(notes_by_id(footnotes)),
-          endnotes_(notes_by_id(endnotes)) {}
+          endnotes_(notes_by_id(endnotes)), footnotes_root_(footnotes), endnotes_root_(endnotes) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
@@ -95,7 +96,23 @@ public:
         }
     }
 
-    Result<document::Document> finish() { return out_.finish(); }
+    // Footnotes, then endnotes, that nothing in the text refers to (issue 13,
+    // session 7: they were left out): at the end of the document, in their
+    // part's order, as notes without a reference. Word's own notes (the
+    // separator lines, w:type="separator" and the like) are not notes.
+    Result<document::Document> finish() {
+        for (const auto* root : {&footnotes_root_, &endnotes_root_})
+            for (const auto& n : root->children()) {
+                const auto name = local_name(n);
+                if ((name != "footnote" && name != "endnote") || out_.full()) continue;
+                if (const auto type = attribute(n, "type"); !type.empty() && type != "normal") continue;
+                if (referenced_.contains(std::string(name) + ":" + std::string(attribute(n, "id")))) continue;
+                out_.begin_unreferenced_note();
+                note_text(n);
+                out_.end_note();
+            }
+        return out_.finish();
+    }
 
 private:
     // Rows and cells; a row with <w:tblHeader/> is a header row. A cell merged
@@ -211,19 +228,26 @@ private:
     void note(const std::unordered_map<std::string, pugi::xml_node>& notes, std::string_view id) {
         const auto it = notes.find(std::string(id));
         if (it == notes.end()) return;
+        referenced_.insert(std::string(local_name(it->second)) + ":" + std::string(id));
         out_.begin_note();
-        for (const auto& p : it->second.children())
+        note_text(it->second);
+        out_.end_note();
+    }
+
+    void note_text(const pugi::xml_node& note) {
+        for (const auto& p : note.children())
             if (local_name(p) == "p") {
                 out_.begin_paragraph(document::BlockKind::paragraph, 0, {});
                 inline_content(p);
                 out_.end_paragraph();
             }
-        out_.end_note();
     }
 
     const DocxStyles& styles_;
     DocxNumbering& numbering_;
     std::unordered_map<std::string, pugi::xml_node> footnotes_, endnotes_;
+    pugi::xml_node footnotes_root_, endnotes_root_;
+    std::unordered_set<std::string> referenced_;  // "footnote:2", "endnote:1"
     OfficeText out_;
 };
 

@@ -200,6 +200,7 @@ Result<DecodedText> decode_utf8(std::string_view bytes, std::size_t bom, std::st
                     byte_at(invalid + bom));
     DecodedText out;
     out.bom_bytes = bom;
+    out.byte_order_mark = bom != 0;
     out.encoding = std::move(label);
     return out;
 }
@@ -215,7 +216,10 @@ Result<DecodedText> decode_with(std::string_view bytes, const std::string& name,
     DecodedText out;
     out.converted = std::move(*text);
     // Explicit UTF-16LE/BE and friends keep a byte-order mark as U+FEFF.
-    if (std::string_view(out.converted).starts_with("\xEF\xBB\xBF")) out.converted.erase(0, 3);
+    if (std::string_view(out.converted).starts_with("\xEF\xBB\xBF")) {
+        out.converted.erase(0, 3);
+        out.byte_order_mark = true;
+    }
     out.is_copy = true;
     out.encoding = std::move(label);
     return out;

@@ -17,6 +17,7 @@ struct DecodedText {
     bool is_copy = false;
     std::size_t bom_bytes = 0;
     std::string encoding;  // as detected or as given by the user, e.g. "GB18030"
+    bool byte_order_mark = false;  // the bytes began with one (removed from the text)
 
     [[nodiscard]] std::string_view text(std::string_view source) const {
         return is_copy ? std::string_view(converted) : source.substr(bom_bytes);

@@ -112,6 +112,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
 
     Result<document::Document> doc = document::Document{};
     std::string encoding;
+    bool byte_order_mark = false;
     switch (format) {
         case SourceFormat::text:
         case SourceFormat::markdown: {
@@ -121,6 +122,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             doc = format == SourceFormat::text ? detail::import_text(text)
                                                : detail::import_markdown(text);
             encoding = decoded->encoding;
+            byte_order_mark = decoded->byte_order_mark;
             break;
         }
         case SourceFormat::docx:
@@ -141,6 +143,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
     if (!doc) return std::unexpected(located(doc.error(), where));
     doc->source_name = where;
     doc->encoding = std::move(encoding);
+    doc->byte_order_mark = byte_order_mark;
     return doc;
 }
 
@@ -150,12 +153,12 @@ Result<document::Document> import_file(const std::filesystem::path& path, const 
     return import_bytes(*bytes, path.string(), options);
 }
 
-Result<std::string> read_text_file(const std::filesystem::path& path, const ImportOptions& options) {
+Result<TextFile> read_text_file(const std::filesystem::path& path, const ImportOptions& options) {
     auto bytes = read_file(path, max_import_bytes);
     if (!bytes) return std::unexpected(bytes.error());
     auto decoded = detail::decode_text(*bytes, options.encoding);
     if (!decoded) return std::unexpected(located(decoded.error(), path.string()));
-    return std::string(decoded->text(*bytes));
+    return TextFile{std::string(decoded->text(*bytes)), decoded->encoding, decoded->byte_order_mark};
 }
 
 }  // namespace tactus::import

@@ -31,8 +31,14 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
 
 // A text file's content as UTF-8, decoded as import_file decodes it (the
 // encoding detected or given, docs/import.md "Encodings"): what the editor
-// shows of a .txt, its lines as written (import/text_lines.hpp).
-Result<std::string> read_text_file(const std::filesystem::path& path, const ImportOptions& options = {});
+// shows of a .txt, its lines as written (import/text_lines.hpp); and the
+// encoding it is saved in again (Document::encoding, byte_order_mark).
+struct TextFile {
+    std::string text;  // UTF-8, without the byte-order mark
+    std::string encoding;
+    bool byte_order_mark = false;
+};
+Result<TextFile> read_text_file(const std::filesystem::path& path, const ImportOptions& options = {});
 
 // "txt"/"text", "md"/"markdown", "docx", "brf", "pef", "auto"/"automatic"; case-insensitive.
 Result<SourceFormat> parse_source_format(std::string_view name);

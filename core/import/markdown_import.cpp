@@ -308,9 +308,44 @@ private:
         const auto label = std::to_string(number);
         builder_.note_reference(label);
         if (!first) return;
+        write_note(builder_, index, label);
+    }
+
+public:
+    // Notes that nothing refers to (issue 13, session 7: they were dropped, so
+    // the editor lost a note line whose reference had been deleted). Each is
+    // kept where its definition stands: before the first block that starts
+    // after the definition's line (after that block's own notes, never inside
+    // a table), or at the end. Numbered on after the referenced notes, in the
+    // order of definition (docs/layout.md "Notes").
+    void place_unreferenced_notes(document::Document& doc) {
+        for (std::size_t index = 0; index < notes_.size(); ++index) {
+            if (note_numbers_[index] != 0) continue;
+            note_numbers_[index] = ++notes_referenced_;
+            DocumentBuilder one;
+            write_note(one, index, std::to_string(note_numbers_[index]));
+            auto note = one.finish();
+            if (!note || note->blocks.empty()) continue;
+            auto& blocks = doc.blocks;
+            std::size_t at = 0;
+            for (; at < blocks.size(); ++at) {
+                const auto& b = blocks[at];
+                const bool inside_table =
+                    b.kind == document::BlockKind::table_cell ||
+                    (b.kind == document::BlockKind::table_row && at > 0 && document::is_table_kind(blocks[at - 1].kind));
+                if (b.kind != document::BlockKind::note && !inside_table && b.source_line > notes_[index].line) break;
+            }
+            blocks.insert(blocks.begin() + static_cast<std::ptrdiff_t>(at), note->blocks.front());
+        }
+    }
+
+private:
+
+    // A note block: its reference, then the note's own Markdown (emphasis,
+    // links), read as a document of its own.
+    void write_note(DocumentBuilder& builder, std::size_t index, const std::string& label) const {
         const auto& note = notes_[index];
-        builder_.begin_note(label, note.line);
-        // The note's own Markdown (emphasis, links), read as a document of its own.
+        builder.begin_note(label, note.line);
         const LineIndex lines(note.text);
         static const std::vector<MarkdownFootnote> none;
         MarkdownReader inner(note.text, lines, none);
@@ -318,9 +353,9 @@ private:
             auto doc = inner.builder().finish();
             if (doc)
                 for (const auto& b : doc->blocks)
-                    for (const auto& span : b.spans) builder_.add_text(span.text, span.emphasis);
+                    for (const auto& span : b.spans) builder.add_text(span.text, span.emphasis);
         }
-        builder_.end_note();
+        builder.end_note();
     }
 
     // The open block, with a list item's number or bullet first (before a
@@ -414,7 +449,9 @@ Result<document::Document> import_markdown(std::string_view source) {
         reader.page_break(lines.line_at(ff));
         start = ff + 1;
     }
-    return reader.builder().finish();
+    auto doc = reader.builder().finish();
+    if (doc) reader.place_unreferenced_notes(*doc);
+    return doc;
 }
 
 }  // namespace tactus::import::detail

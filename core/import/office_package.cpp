@@ -144,6 +144,12 @@ void OfficeText::begin_note(int source_line) {
     builder_.begin_note(label, source_line);
 }
 
+void OfficeText::begin_unreferenced_note() {
+    if (note_depth_++ > 0) return;
+    builder_.end();
+    builder_.begin_note(std::to_string(++notes_), 0);
+}
+
 void OfficeText::end_note() {
     if (note_depth_ == 0 || --note_depth_ > 0) return;
     builder_.end_note();

@@ -70,6 +70,10 @@ public:
     // A note reference in the text; begin_note/end_note around the note's text.
     void begin_note(int source_line = 0);
     void end_note();
+    // A note nothing in the text refers to: a note block of its own where the
+    // text now ends (numbered on after the others), no reference; end_note after
+    // its text (docs/layout.md "Notes").
+    void begin_unreferenced_note();
 
     [[nodiscard]] bool full() const { return builder_.full(); }
     Result<document::Document> finish() { return builder_.finish(); }

@@ -293,14 +293,52 @@ bool Paginator::lay_out_simple_table() {
 // the reader learns the order of the columns. Empty entries are left out; a
 // row whose first column is empty (or merged away) starts in cell 1 with its
 // first entry, so each row still starts at the margin.
+//
+// On a page the table runs on to, the column headings (the header rows' lines)
+// are repeated at its top, as for a simple table (BANA Braille Formats §11;
+// docs/layout.md "Tables"). So that they head whole rows, a row that would
+// run over the page's end starts on the next page when it fits there under
+// the headings; the headings and the first row stay together.
 void Paginator::lay_out_listed_table() {
+    struct Line {
+        document::BrailleLine cells;
+        int source_line = 0;
+    };
+    std::vector<std::vector<Line>> rows;
+    rows.reserve(table_.size());
     for (const auto& row : table_) {
+        auto& lines = rows.emplace_back();
         bool first = true;
         for (const auto& cell : row.cells) {
             if (entry(cell).empty()) continue;
-            add_wrapped(cell, block_indents(o_, document::BlockKind::table_cell, first ? 0 : std::max(cell.level, 1)));
+            const auto in = block_indents(o_, document::BlockKind::table_cell, first ? 0 : std::max(cell.level, 1));
+            for (auto& l : break_lines(cell.cells, cell.breaks, width(), in.first, in.runover))
+                lines.push_back(Line{std::move(l), cell.source_line});
             first = false;
         }
+    }
+    std::size_t head = 0;
+    while (head < table_.size() && table_[head].header) ++head;
+    std::vector<Line> headings;
+    for (std::size_t r = 0; r < head; ++r) headings.insert(headings.end(), rows[r].begin(), rows[r].end());
+    const auto next_capacity = [this] { return layout::body_capacity(o_, doc_.pages.size() + 1); };
+    // The headings and the first row together, when they fit on a page at all.
+    if (!headings.empty() && head < rows.size()) {
+        const auto together = static_cast<int>(headings.size() + rows[head].size());
+        if (!body_.empty() && static_cast<int>(body_.size()) + together > body_capacity() && together <= next_capacity())
+            close_page();
+    }
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        const auto need = static_cast<int>(rows[r].size());
+        if (r >= head && !headings.empty() && need > 0) {
+            const bool runs_over = static_cast<int>(body_.size()) + need > body_capacity();
+            const bool fits_below_headings = static_cast<int>(headings.size()) + need <= next_capacity();
+            if (runs_over && fits_below_headings && !body_.empty()) {
+                close_page();
+                for (const auto& h : headings) add_line(h.cells, h.source_line);
+            }
+        }
+        for (auto& l : rows[r]) add_line(std::move(l.cells), l.source_line);
     }
 }
 

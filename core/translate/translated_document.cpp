@@ -16,16 +16,22 @@ constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 // Joins spans into one string with an emphasis mark per code point. Line breaks
 // and tabs inside a block become spaces: layout decides where braille lines end;
 // a soft line break with the spaces around it is one space (document/soft_break.hpp).
+// Decoded straight into `text`, reserved once (issue 13 item 6: a 50 MB
+// paragraph was decoded into a copy and then pushed code point by code point,
+// 720 MB at the peak for 50 MB of text).
 Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph) {
+    std::size_t bytes = 0;
+    for (const auto& span : spans) bytes += span.text.size();
+    text.reserve(text.size() + bytes);
+    emph.reserve(emph.size() + bytes);
     for (const auto& span : spans) {
         const bool soft_break = span.text.find_first_of("\r\n") != std::string::npos;
-        auto u = utf8_to_utf32(soft_break ? document::soft_breaks_as_spaces(span.text) : span.text);
-        if (!u) return std::unexpected(u.error());
-        for (char32_t c : *u) {
-            if (c == U'\n' || c == U'\r' || c == U'\t' || c == U'\f' || c == U'\v') c = U' ';
-            text.push_back(c);
-            emph.push_back(span.emphasis);
-        }
+        const auto start = text.size();
+        if (auto ok = append_utf32(text, soft_break ? document::soft_breaks_as_spaces(span.text) : span.text); !ok)
+            return ok;
+        for (auto i = start; i < text.size(); ++i)
+            if (const auto c = text[i]; c == U'\n' || c == U'\r' || c == U'\t' || c == U'\f' || c == U'\v') text[i] = U' ';
+        emph.resize(text.size(), span.emphasis);
     }
     return {};
 }
@@ -63,20 +69,24 @@ public:
     // A word too long to translate in one piece: divided straight away.
     Result<void> add_long_word(std::u32string_view word, std::span<const std::uint8_t> emph, BreakBefore join) {
         if (room_ == 0) return add(word, emph, join);
-        return append_pieces(divide_word(tr_, word, emph, room_), join);
+        // Each line straight into the block's cells, never all the lines at once.
+        bool first = true;
+        return divide_word(tr_, word, emph, room_, [&](document::BrailleLine&& piece) { append_piece(piece, first, join); });
     }
 
 private:
+    void append_piece(const document::BrailleLine& piece, bool& first, BreakBefore first_break) {
+        if (piece.empty()) return;
+        out_.breaks.push_back(first ? first_break : BreakBefore::forced);
+        out_.breaks.insert(out_.breaks.end(), piece.size() - 1, BreakBefore::never);
+        out_.cells.insert(out_.cells.end(), piece.begin(), piece.end());
+        first = false;
+    }
+
     Result<void> append_pieces(Result<std::vector<document::BrailleLine>> pieces, BreakBefore first_break) {
         if (!pieces) return std::unexpected(pieces.error());
         bool first = true;
-        for (auto& piece : *pieces) {
-            if (piece.empty()) continue;
-            out_.breaks.push_back(first ? first_break : BreakBefore::forced);
-            out_.breaks.insert(out_.breaks.end(), piece.size() - 1, BreakBefore::never);
-            out_.cells.insert(out_.cells.end(), piece.begin(), piece.end());
-            first = false;
-        }
+        for (const auto& piece : *pieces) append_piece(piece, first, first_break);
         return {};
     }
 

@@ -24,11 +24,11 @@ std::optional<std::size_t> cell_cut(const MappedBraille& m, std::uint32_t q) {
 class Divider {
 public:
     Divider(const Translator& tr, std::u32string_view word, std::span<const std::uint8_t> emphasis,
-            std::size_t room)
+            std::size_t room, const PieceSink& sink)
         : tr_(tr), word_(word), emphasis_(emphasis), room_(room),
-          rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)) {}
+          rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)), sink_(sink) {}
 
-    Result<std::vector<document::BrailleLine>> run() {
+    Result<void> run() {
         while (pos_ < word_.size()) {
             // The rest of the word, translated through a window long enough to
             // hold more than a line: a 1 MB word must not cost a 1 MB
@@ -45,12 +45,12 @@ public:
                 window *= 2;
             }
             if (end == word_.size() && rest.cells.size() <= room_) {
-                pieces_.push_back(std::move(rest.cells));
+                sink_(std::move(rest.cells));
                 break;
             }
             if (auto ok = next_piece(end, rest); !ok) return std::unexpected(ok.error());
         }
-        return std::move(pieces_);
+        return {};
     }
 
 private:
@@ -80,7 +80,7 @@ private:
     }
 
     void accept(document::BrailleLine cells, std::size_t next, bool continues_number) {
-        pieces_.push_back(std::move(cells));
+        sink_(std::move(cells));
         pos_ = next;
         continues_number_ = continues_number;
     }
@@ -135,8 +135,8 @@ private:
         const std::size_t cells_of_first = q < end && k ? *k : rest.cells.size();
         for (std::size_t s = 0; s < cells_of_first; s += room_) {
             const auto e = std::min(cells_of_first, s + room_);
-            pieces_.emplace_back(rest.cells.begin() + static_cast<std::ptrdiff_t>(s),
-                                 rest.cells.begin() + static_cast<std::ptrdiff_t>(e));
+            sink_(document::BrailleLine(rest.cells.begin() + static_cast<std::ptrdiff_t>(s),
+                                        rest.cells.begin() + static_cast<std::ptrdiff_t>(e)));
         }
         pos_ = q;
         continues_number_ = false;
@@ -149,7 +149,7 @@ private:
     std::size_t room_;
     const DivisionRules& rules_;
     std::vector<bool> hyphenation_;
-    std::vector<document::BrailleLine> pieces_;
+    const PieceSink& sink_;
     std::size_t pos_ = 0;
     bool continues_number_ = false;
 };
@@ -159,8 +159,17 @@ private:
 Result<std::vector<document::BrailleLine>> divide_word(const Translator& translator, std::u32string_view word,
                                              std::span<const std::uint8_t> emphasis,
                                              std::size_t room) {
+    std::vector<document::BrailleLine> pieces;
+    auto ok = divide_word(translator, word, emphasis, room,
+                          [&pieces](document::BrailleLine&& piece) { pieces.push_back(std::move(piece)); });
+    if (!ok) return std::unexpected(ok.error());
+    return pieces;
+}
+
+Result<void> divide_word(const Translator& translator, std::u32string_view word, std::span<const std::uint8_t> emphasis,
+                         std::size_t room, const PieceSink& sink) {
     if (room == 0) return fail("no room to divide a word into");
-    return Divider(translator, word, emphasis, room).run();
+    return Divider(translator, word, emphasis, room, sink).run();
 }
 
 }  // namespace tactus::translate

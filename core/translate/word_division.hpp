@@ -13,6 +13,7 @@
 //    the next line, since the continuation does not end numeric mode.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -29,5 +30,12 @@ namespace tactus::translate {
 Result<std::vector<document::BrailleLine>> divide_word(const Translator& translator, std::u32string_view word,
                                              std::span<const std::uint8_t> emphasis,
                                              std::size_t room);
+
+// The same, each line handed to `sink` as it is made, so a word of many
+// megabytes (a text without spaces) is not held twice, once as its lines
+// (issue 13 item 6: 140 MB of lines for 50 MB).
+using PieceSink = std::function<void(document::BrailleLine&&)>;
+Result<void> divide_word(const Translator& translator, std::u32string_view word, std::span<const std::uint8_t> emphasis,
+                         std::size_t room, const PieceSink& sink);
 
 }  // namespace tactus::translate

@@ -768,6 +768,51 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
+        <translation>無法依這台點字印表機的頁面排版此文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Cannot save %1: %2</source>
+        <translation>無法儲存 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
+        <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
+        <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>A character does not fit the file&apos;s encoding</source>
+        <translation>有字元不符合檔案的編碼</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Save as &amp;UTF-8</source>
+        <translation>存成 UTF-8(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Save the whole file as UTF-8 from now on</source>
+        <translation>此後整個檔案都存成 UTF-8</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Save nothing</source>
+        <translation>不儲存任何內容</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Not saved: %1 has a character that %2 cannot hold</source>
+        <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
         <source>The printer&apos;s page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>

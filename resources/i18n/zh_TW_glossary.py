@@ -10,6 +10,17 @@ T = {
     "typing": "輸入",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
+    # A text file saved in its own encoding (issue 13, session 7).
+    "Cannot save %1: %2": "無法儲存 %1：%2",
+    "%1 cannot be saved in its encoding, %2. Save it as UTF-8?": "%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？",
+    "At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.":
+        "位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。",
+    "A character does not fit the file's encoding": "有字元不符合檔案的編碼",
+    "Save as &UTF-8": "存成 UTF-8(&U)",
+    "Save the whole file as UTF-8 from now on": "此後整個檔案都存成 UTF-8",
+    "Save nothing": "不儲存任何內容",
+    "Not saved: %1 has a character that %2 cannot hold": "未儲存：%1 含有 %2 無法容納的字元",
+    "The document cannot be laid out for this printer's page: %1": "無法依這台點字印表機的頁面排版此文件：%1",
     "front": "正面", "back": "背面", "front and back": "正面與背面",
     "back, as read after turning the sheet": "背面（翻頁後閱讀的方向）",
     "Sheet %1 (%2) - pages %3 / %4": "第 %1 張（%2）－ 第 %3 / %4 頁",

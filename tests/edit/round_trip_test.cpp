@@ -390,6 +390,47 @@ TEST(RoundTrip, NotesAndReferencesReadAlikeInTheEditorAndTheFile) {
     EXPECT_EQ(parsed("[^1]: <b> x"), "7/0 [^0:1] [0: x]\n");
 }
 
+// Issue 13 (session 7) item 2: a note that nothing refers to (its reference
+// deleted, or never written) was dropped when the file was opened again. It
+// stays where its line is, numbered on after the referenced notes, and the
+// braille shows it there (docs/layout.md "Notes").
+TEST(RoundTrip, ANoteNothingRefersToIsKept) {
+    const std::vector<std::string> lines = {"# Title", "Intro[^1] text.", "[^1]: First note.", "Middle.",
+                                            "[^2]: Its reference was deleted.", "End."};
+    const auto live = make(lines, edit::Dialect::markdown);
+    expect_round_trip(live, "notes.md");
+    const auto bytes = edit::file_text(lines, live.dialect(), live.document(), "notes.md");
+    EXPECT_NE(bytes.find("[^2]: Its reference was deleted."), std::string::npos) << bytes;
+    const auto reopened = import_as(bytes, "notes.md");
+    EXPECT_EQ(without_lines(reopened.blocks),
+              "0/1 [0:Title]\n1/0 [0:Intro] [^0:1] [0: text.]\n7/0 [^0:1] [0: First note.]\n1/0 [0:Middle.]\n"
+              "7/0 [^0:2] [0: Its reference was deleted.]\n1/0 [0:End.]\n");
+    // Opened again, the editor shows it on its line.
+    EXPECT_EQ(edit::render_editor_lines(reopened), lines);
+    // The braille has it, with its note number, between "Middle." and "End.".
+    const auto braille = text_of(pages_of(reopened));
+    const auto middle = braille.find("\u2820\u280d\u280a\u2819\u2819\u2807\u2811\u2832");  // ,middle4
+    const auto end = braille.find("\u2820\u2811\u281d\u2819\u2832");  // ,end4
+    ASSERT_NE(middle, std::string::npos) << braille;
+    ASSERT_NE(end, std::string::npos) << braille;
+    const auto note = braille.find("\u2836\u2836\u283c\u2803", middle);  // 77#b
+    ASSERT_NE(note, std::string::npos) << braille;
+    EXPECT_LT(note, end) << braille;
+    // A definition nothing refers to in a file someone else wrote: kept where it stands.
+    EXPECT_EQ(without_lines(import_as("One.\n\n[^x]: Alone.\n\nTwo[^y].\n\n[^y]: Used.\n", "x.md").blocks),
+              "1/0 [0:One.]\n7/0 [^0:2] [0: Alone.]\n1/0 [0:Two] [^0:1] [0:.]\n7/0 [^0:1] [0: Used.]\n");
+    // ... at the end when it comes after all text, never inside a table.
+    const auto table = import_as("| a | b |\n|---|---|\n[^z]: Inside.\n| c | d |\n\nAfter.\n[^w]: Last.\n", "t.md");
+    ASSERT_FALSE(table.blocks.empty());
+    EXPECT_EQ(table.blocks.back().kind, document::BlockKind::note);
+    for (std::size_t i = 1; i < table.blocks.size(); ++i)
+        if (table.blocks[i].kind == document::BlockKind::note) {
+            EXPECT_FALSE(document::is_table_kind(table.blocks[i - 1].kind) && i + 1 < table.blocks.size() &&
+                         document::is_table_kind(table.blocks[i + 1].kind))
+                << without_lines(table.blocks);
+        }
+}
+
 namespace {
 
 const std::vector<std::string> kWords{"word", "*", "_x_", "#", "&", "<b>", "[a]", "\\", "`c`", "1.", "-", "~~",

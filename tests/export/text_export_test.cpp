@@ -205,3 +205,128 @@ TEST(MarkdownExport, TextIsEscapedOnlyWhereMarkdownWouldReadIt) {
         EXPECT_EQ(again->blocks[0].text(), text);
     }
 }
+
+// ---- Issue 13 (session 7) item 1: a text file is saved in its own encoding ----
+
+namespace {
+
+std::string from_hex(std::string_view hex) {
+    std::string out;
+    for (std::size_t i = 0; i + 1 < hex.size();) {
+        if (hex[i] == ' ') {
+            ++i;
+            continue;
+        }
+        out += static_cast<char>(std::stoi(std::string(hex.substr(i, 2)), nullptr, 16));
+        i += 2;
+    }
+    return out;
+}
+
+struct EncodedSample {
+    const char* name;
+    std::string bytes;             // the file as another program wrote it
+    const char* encoding;          // what the importer detects
+    std::string edited_bytes;      // after `edit`, as that program would write it
+    std::string from, to;          // the edit: the first `from` becomes `to` (UTF-8)
+};
+
+std::vector<EncodedSample> encoded_samples() {
+    return {
+        // "Café “quoted” costs €5.\n\nNaïve résumé, façade.\n" (iconv -t WINDOWS-1252)
+        {"windows-1252",
+         from_hex("4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 2e0a 0a4e 61ef 7665 2072 e973 756d "
+                  "e92c 2066 61e7 6164 652e 0a"),
+         "WINDOWS-1252",
+         from_hex("4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 2e0a 0a4e 61ef 7665 2072 e973 756d "
+                  "e92c 2066 61e7 6164 65fc 2e0a"),
+         "façade.", "façadeü."},
+        // BOM + "Hello 世界\n\nbye\n" in UTF-16LE
+        {"UTF-16LE with BOM",
+         from_hex("fffe 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 6200 7900 6500 0a00"),
+         "UTF-16LE",
+         from_hex("fffe 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 6200 7900 6500 2100 0a00"),
+         "bye", "bye!"},
+        // "春眠不覺曉，處處聞啼鳥。\n夜來風雨聲，花落知多少。\n" (iconv -t BIG5)
+        {"Big5",
+         from_hex("ac4b af76 a4a3 c4b1 bee5 a141 b342 b342 bb44 b3da b3be a143 0aa9 5da8 d3ad b7ab 42c1 6ea1 "
+                  "41aa e1b8 a8aa bea6 68a4 d6a1 430a"),
+         "BIG5",
+         // the last 少 (a4d6) becomes 中 (a4a4)
+         from_hex("ac4b af76 a4a3 c4b1 bee5 a141 b342 b342 bb44 b3da b3be a143 0aa9 5da8 d3ad b7ab 42c1 6ea1 "
+                  "41aa e1b8 a8aa bea6 68a4 a4a1 430a"),
+         "多少", "多中"},
+        // "春眠不觉晓，处处闻啼鸟。\n夜来风雨声，花落知多少。\n" (iconv -t GB18030)
+        {"GB18030",
+         from_hex("b4ba c3df b2bb bef5 cffe a3ac b4a6 b4a6 cec5 cce4 c4f1 a1a3 0ad2 b9c0 b4b7 e7d3 eac9 f9a3 "
+                  "acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a"),
+         "GB18030",
+         // 少 (c9d9) becomes 中 (d6d0)
+         from_hex("b4ba c3df b2bb bef5 cffe a3ac b4a6 b4a6 cec5 cce4 c4f1 a1a3 0ad2 b9c0 b4b7 e7d3 eac9 f9a3 "
+                  "acbb a8c2 e4d6 aab6 e0d6 d0a1 a30a"),
+         "多少", "多中"},
+    };
+}
+
+}  // namespace
+
+TEST(TextEncoding, AFileOpenedAndSavedIsTheSameBytes) {
+    for (const auto& s : encoded_samples()) {
+        SCOPED_TRACE(s.name);
+        const auto doc = import_as(s.bytes, "poem.txt");
+        EXPECT_EQ(doc.encoding, s.encoding);
+        auto saved = exporter::encode_text(exporter::to_text(doc), doc.encoding, doc.byte_order_mark);
+        ASSERT_TRUE(saved) << saved.error().to_string();
+        EXPECT_EQ(*saved, s.bytes);
+    }
+}
+
+TEST(TextEncoding, AnEditedFileIsSavedInItsEncoding) {
+    for (const auto& s : encoded_samples()) {
+        SCOPED_TRACE(s.name);
+        auto doc = import_as(s.bytes, "poem.txt");
+        bool edited = false;
+        for (auto& b : doc.blocks)
+            for (auto& span : b.spans)
+                if (const auto at = span.text.find(s.from); !edited && at != std::string::npos) {
+                    span.text.replace(at, s.from.size(), s.to);
+                    edited = true;
+                }
+        ASSERT_TRUE(edited);
+        auto saved = exporter::encode_text(exporter::to_text(doc), doc.encoding, doc.byte_order_mark);
+        ASSERT_TRUE(saved) << saved.error().to_string();
+        EXPECT_EQ(*saved, s.edited_bytes);
+        // ... and it reads back as the edited text, in the same encoding.
+        const auto again = import_as(*saved, "poem.txt");
+        EXPECT_EQ(again.encoding, s.encoding);
+        EXPECT_EQ(without_lines(again.blocks), without_lines(doc.blocks));
+    }
+}
+
+TEST(TextEncoding, ACharacterTheEncodingCannotHoldIsNeverWrittenLossily) {
+    // 中 in a Western file, 们 (Simplified only) in a Big5 one, an emoji in GB2312-era Big5.
+    const struct {
+        const char* text;
+        const char* encoding;
+        const char* where;
+        const char* character;
+    } cases[] = {
+        {"Caf\xC3\xA9\n\nand \xE4\xB8\xAD here\n", "WINDOWS-1252", "3:5", "U+4E2D"},
+        {"\xE6\x88\x91\xE4\xBB\xAC\n", "BIG5", "1:2", "U+4EEC"},
+        {"ok\n\xF0\x9F\x98\x80\n", "BIG5", "2:1", "U+1F600"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.text);
+        const auto saved = exporter::encode_text(c.text, c.encoding);
+        ASSERT_FALSE(saved) << "wrote " << saved->size() << " bytes";
+        EXPECT_TRUE(exporter::is_unrepresentable_error(saved.error()));
+        EXPECT_EQ(saved.error().where, c.where);
+        EXPECT_NE(saved.error().message.find(c.character), std::string::npos) << saved.error().message;
+        EXPECT_NE(saved.error().message.find(c.encoding), std::string::npos) << saved.error().message;
+    }
+    // GB18030 holds every Unicode character; UTF-8 too.
+    EXPECT_TRUE(exporter::encode_text("\xE6\x88\x91\xE4\xBB\xAC \xF0\x9F\x98\x80\n", "GB18030"));
+    const auto unknown = exporter::encode_text("a", "no-such-encoding");
+    ASSERT_FALSE(unknown);
+    EXPECT_FALSE(exporter::is_unrepresentable_error(unknown.error()));
+}

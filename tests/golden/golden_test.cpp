@@ -83,6 +83,11 @@ INSTANTIATE_TEST_SUITE_P(
         // A table over two pages: its headings repeated on the second (issue 13).
         GoldenCase{"structure-long-table.brf", "structure-long-table.md", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
+        // A listed table over three pages: its headings (the header row, listed)
+        // repeated at the top of each page it runs on to, rows kept whole
+        // (issue 13, session 7: they were not repeated).
+        GoldenCase{"structure-long-listed-table.brf", "structure-long-listed-table.md", "en-ueb-g2.ctb", true,
+                   exporter::ExportFormat::brf},
         // Merged cells: a simple table with headings over two rows and two
         // columns, and a listed one (issue 13). The two files are one document.
         GoldenCase{"structure-spans-docx.brf", "structure-spans.docx", "en-ueb-g2.ctb", true,

@@ -89,3 +89,23 @@ TEST(DocxImport, EmptyAndNonZipInputsAreErrors) {
 
 }  // namespace
 }  // namespace tactus::test
+
+// Issue 13 (session 7) item 2: a footnote or endnote nothing refers to (its
+// reference deleted in Word) was left out. It is kept, at the end of the
+// document (a notes part gives it no place in the text), numbered on after the
+// referenced notes, footnotes before endnotes; Word's separators are not notes.
+TEST(DocxImport, NotesNothingRefersToAreKeptAtTheEnd) {
+    const auto doc = tactus::test::import_data_file("unreferenced_notes.docx");
+    std::string got;
+    for (const auto& b : doc.blocks) {
+        got += std::to_string(static_cast<int>(b.kind)) + ":";
+        for (const auto& s : b.spans) got += s.note_reference ? "[" + s.text + "]" : s.text;
+        got += "\n";
+    }
+    EXPECT_EQ(got,
+              "1:Referred[1] here.\n"
+              "7:[1] The referred note.\n"
+              "1:Last paragraph.\n"
+              "7:[2] A footnote whose reference was deleted.\n"
+              "7:[3] An endnote nothing refers to.\n");
+}

@@ -180,3 +180,15 @@ TEST(Translator, EnglishWordsHaveSyllableBreaksFromLiblouisDictionary) {
     }
     EXPECT_EQ(marked, "hy-phen-ation");
 }
+
+// Issue 13 item 6: a paragraph is decoded straight into the translator's text
+// (no whole copy on the side); a bad byte leaves what was there.
+TEST(Utf8, AppendUtf32AddsToTheEndOrNothing) {
+    std::u32string text = U"ab";
+    ASSERT_TRUE(tactus::append_utf32(text, "c\xE4\xB8\xAD\xF0\x9F\x98\x80"));
+    EXPECT_EQ(text, U"abc\u4E2D\U0001F600");
+    const auto bad = tactus::append_utf32(text, "x\xC3");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "byte 1");
+    EXPECT_EQ(text, U"abc\u4E2D\U0001F600");
+}

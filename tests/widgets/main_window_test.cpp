@@ -7,6 +7,9 @@
 #include <QStandardPaths>
 #include <QJsonObject>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStatusBar>
@@ -572,6 +575,136 @@ private Q_SLOTS:
         const auto paged = pipeline::lay_out(*doc, options);
         QVERIFY(paged.has_value());
         QVERIFY(paged->pages == w.editor()->layout().paged().pages);
+    }
+
+    // Issue 13 (session 7) item 1: a .txt was saved as UTF-8 whatever its
+    // encoding. Opened and saved it is the same bytes; edited, it is still in
+    // its encoding (the bytes another program would write).
+    void a_text_file_is_saved_in_its_encoding_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<int>("line");  // where `typed` is typed, at the line's start
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QByteArray>("expected");
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        QTest::newRow("windows-1252")
+            << hex("4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 2e0a 0a4e 61ef 7665 2072 e973 756d e92c 2066 61e7 6164 652e 0a")
+            << 2 << QStringLiteral("\u00FC")
+            << hex("4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 2e0a 0afc 4e61 ef76 6520 72e9 7375 6de9 2c20 6661 e761 6465 2e0a");
+        QTest::newRow("UTF-16LE with BOM") << hex("fffe 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 6200 7900 6500 0a00")
+                                           << 2 << QStringLiteral("!")
+                                           << hex("fffe 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2100 6200 7900 6500 0a00");
+        QTest::newRow("Big5")
+            << hex("ac4b af76 a4a3 c4b1 bee5 a141 b342 b342 bb44 b3da b3be a143 0aa9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a")
+            << 1 << QStringLiteral("\u4E2D")
+            << hex("ac4b af76 a4a3 c4b1 bee5 a141 b342 b342 bb44 b3da b3be a143 0aa4 a4a9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a");
+        QTest::newRow("GB18030")
+            << hex("b4ba c3df b2bb bef5 cffe a3ac b4a6 b4a6 cec5 cce4 c4f1 a1a3 0ad2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a")
+            << 1 << QStringLiteral("\u4E2D")
+            << hex("b4ba c3df b2bb bef5 cffe a3ac b4a6 b4a6 cec5 cce4 c4f1 a1a3 0ad6 d0d2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a");
+    }
+    void a_text_file_is_saved_in_its_encoding() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(int, line);
+        QFETCH(QString, typed);
+        QFETCH(QByteArray, expected);
+        const auto path = dir.filePath(QStringLiteral("encoded.txt"));
+        const auto read = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
+        save();
+        QCOMPARE(read(), bytes);
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document()->findBlockByNumber(line));
+        c.insertText(typed);  // keyClicks takes Latin-1 only
+        save();
+        QVERIFY(!w.isWindowModified());
+        QCOMPARE(read(), expected);
+    }
+
+    // A character the file's encoding cannot hold is never written as a
+    // substitute: without an answer (no one to ask) nothing is saved, and the
+    // message names the character, its line and the encoding.
+    void a_character_the_encoding_cannot_hold_is_not_saved_silently() {
+        const auto path = dir.filePath(QStringLiteral("western.txt"));
+        const auto bytes = QByteArray::fromHex("4361 66e9 0a0a 6e61 ef76 650a");  // "Café\n\nnaïve\n" in windows-1252
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        const auto original = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("WINDOWS-1252"));
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document()->findBlockByNumber(2));
+        c.insertText(QStringLiteral("\u4E2D"));
+        QVERIFY(!w.save_to(path));
+        QVERIFY(w.isWindowModified());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), original);
+        const auto said = w.announcer()->message();
+        QVERIFY2(said.contains(QStringLiteral("U+4E2D")) && said.contains(QStringLiteral("WINDOWS-1252")) &&
+                     said.contains(QStringLiteral("3:1")),
+                 qPrintable(said));
+        // Saved under another name as Markdown it is UTF-8, which holds it.
+        QVERIFY(w.save_to(dir.filePath(QStringLiteral("western.md"))));
+
+        // With someone to ask: the question, named for Orca, Cancel first
+        // (nothing written), then Save as UTF-8 (the whole file, from then on).
+        w.set_interactive(true);
+        w.show();
+        struct Seen {
+            bool asked = false;
+            QString name, text, buttons;
+        };
+        const auto answer = [](Seen& seen, bool utf8) {
+            QTimer::singleShot(200, [&seen, utf8] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                if (!box) return;
+                seen.asked = box->objectName() == QLatin1String("encodingQuestion");
+                seen.text = box->text() + QLatin1Char(' ') + box->informativeText();
+                if (auto* a = QAccessible::queryAccessibleInterface(box)) seen.name = a->text(QAccessible::Name);
+                for (auto* b : box->buttons())
+                    if (auto* ba = QAccessible::queryAccessibleInterface(b)) seen.buttons += ba->text(QAccessible::Name) + QLatin1Char('|');
+                (utf8 ? box->findChild<QPushButton*>(QStringLiteral("saveUtf8Button")) : box->button(QMessageBox::Cancel))->click();
+            });
+        };
+        Seen cancel;
+        answer(cancel, false);
+        QVERIFY(!w.save_to(path));
+        QVERIFY(cancel.asked);
+        QCOMPARE(cancel.name, QStringLiteral("A character does not fit the file's encoding"));
+        QVERIFY2(cancel.text.contains(QStringLiteral("WINDOWS-1252")) && cancel.text.contains(QStringLiteral("U+4E2D")) &&
+                     cancel.text.contains(QStringLiteral("3:1")),
+                 qPrintable(cancel.text));
+        QVERIFY2(cancel.buttons.contains(QStringLiteral("Save as UTF-8")), qPrintable(cancel.buttons));
+        {
+            QFile again(path);
+            QVERIFY(again.open(QIODevice::ReadOnly));
+            QCOMPARE(again.readAll(), original);
+        }
+        Seen utf8;
+        answer(utf8, true);
+        QVERIFY(w.save_to(path));
+        QVERIFY(utf8.asked);
+        QFile saved(path);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QCOMPARE(saved.readAll(), QByteArray("Caf\xC3\xA9\n\n\xE4\xB8\xADna\xC3\xAFve\n"));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("UTF-8"));
     }
 
     // A hard-wrapped paragraph: each print line shows its own words' braille,
