@@ -14,7 +14,8 @@ namespace {
 constexpr int kImportShare = 10;  // percent of the progress bar for reading the file
 
 LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, const layout::LayoutOptions& options,
-                    edit::Dialect dialect, const std::function<bool(int)>& progress) {
+                    edit::Dialect dialect, const std::function<bool(int)>& progress,
+                    edit::BrailleStructure structure = {}) {
     auto result = std::make_shared<LoadResult>();
     auto layout = edit::LiveLayout::create(tables, options);
     if (!layout) {
@@ -25,7 +26,7 @@ LoadResultPtr build(std::vector<std::string> lines, const std::string& tables, c
     const bool done = layout->reset(std::move(lines), [&](std::size_t i, std::size_t n) {
         const int pct = kImportShare + static_cast<int>((100 - kImportShare) * (n ? static_cast<double>(i) / static_cast<double>(n) : 1.0));
         return progress ? progress(pct) : false;
-    });
+    }, std::move(structure));
     if (!done) {
         result->cancelled = true;
         return result;
@@ -67,8 +68,9 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
         r->cancelled = true;
         return r;
     }
+    // Ready-made braille's sections, volumes, grid and metadata go with its lines (core's one rule).
     auto r = build(edit::render_editor_lines(*doc, edit::Dialect::markdown), tables, options, edit::Dialect::markdown,
-                   progress);
+                   progress, edit::braille_structure(*doc));
     r->path = path;
     return r;
 }
@@ -90,9 +92,11 @@ QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables,
 }
 
 QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::string& tables,
-                                     const layout::LayoutOptions& options, edit::Dialect dialect) {
-    return QtConcurrent::run([lines = std::move(lines), tables, options, dialect](QPromise<LoadResultPtr>& promise) mutable {
-        promise.addResult(build(std::move(lines), tables, options, dialect, reporter(promise)));
+                                     const layout::LayoutOptions& options, edit::Dialect dialect,
+                                     edit::BrailleStructure structure) {
+    return QtConcurrent::run([lines = std::move(lines), tables, options, dialect,
+                              structure = std::move(structure)](QPromise<LoadResultPtr>& promise) mutable {
+        promise.addResult(build(std::move(lines), tables, options, dialect, reporter(promise), std::move(structure)));
     });
 }
 

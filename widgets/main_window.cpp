@@ -42,6 +42,7 @@
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "layout/braille_pages.hpp"
+#include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
 #include "motion_view.hpp"
@@ -121,6 +122,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     plan_timer_.setInterval(700);  // plan after a pause in typing, not on every key
     connect(&plan_timer_, &QTimer::timeout, this, &MainWindow::start_plan);
     connect(profile_, &ProfileEditor::profile_changed, this, [this](const profile::PrinterProfile& p) {
+        // The document is laid out for the machine's page, as tactus-cli lays it out for a profile.
+        if (editor_->has_layout()) {
+            auto options = editor_->layout().options();
+            if (const auto page = profile::page_geometry(p); options.geometry != page) {
+                options.geometry = page;
+                if (auto ok = editor_->set_layout_options(options); !ok)
+                    report(tr("The document cannot be laid out for this printer's page: %1")
+                               .arg(QString::fromStdString(ok.error().to_string())),
+                           true);
+            }
+        }
         preview_->preview()->set_geometry(sheet_geometry(p));
         vibration_->set_profile(p);
         schedule_plan();
@@ -161,6 +173,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         sp->set_document(&editor_->layout().paged());
         update_status();
         schedule_plan();
+        tell_pages_kept();
     });
     connect(editor_, &EditorWidget::position_changed, this, [this, sp](const edit::PagePosition& p) {
         if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
@@ -340,7 +353,7 @@ void MainWindow::set_table(const QString& table) {
         for (std::size_t i = 0; i < editor_->layout().line_count(); ++i) lines.push_back(editor_->layout().line(i));
         start_busy(tr("Translating with %1").arg(tables_->currentText()),
                    lay_out_lines(std::move(lines), table.toStdString(), editor_->layout().options(),
-                                 editor_->layout().dialect()),
+                                 editor_->layout().dialect(), editor_->layout().braille_structure()),
                    false);
         return;
     }
@@ -443,6 +456,7 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
     if (replace_text) {
         remove_autosave();
         editor_->adopt(std::move(*r->layout));
+        pages_kept_ = editor_->layout().pages_kept();
         const QFileInfo info(r->path);
         // Saved in place when Tactus writes the format (Markdown, text), else "Save as".
         const auto suffix = info.suffix().toLower();
@@ -467,6 +481,19 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         editor_->swap_layout(std::move(*r->layout));
         report(tr("Braille table: %1").arg(tables_->currentText()));
     }
+}
+
+void MainWindow::tell_pages_kept() {
+    if (!editor_->has_layout()) return;
+    const auto& layout = editor_->layout();
+    const bool kept = layout.pages_kept();
+    if (kept == pages_kept_) return;
+    pages_kept_ = kept;
+    if (!layout.ready_braille()) return;  // a new document, a table's change: said elsewhere
+    // Spoken and shown once, at the edit that changed it (what to do about it is in docs/gui.md).
+    report(kept ? tr("The braille's own pages, sections and volumes are kept again")
+                : tr("The braille is laid out again on the printer's page: its own pages, sections and volumes are "
+                     "kept only while it holds nothing but braille rows that fit the page"));
 }
 
 QString MainWindow::status_text() const {
@@ -566,8 +593,9 @@ bool MainWindow::export_to(const QString& path) {
     if (suffix == QLatin1String("brf")) {
         bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {
+        // A PEF's own metadata is kept, as the CLI keeps it (paged.metadata).
         const auto meta = exporter::pef_metadata(
-            {}, QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString(),
+            paged.metadata, QFileInfo(source_name_.isEmpty() ? path : source_name_).completeBaseName().toStdString(),
             QDate::currentDate().toString(Qt::ISODate).toStdString(),
             translate::table_language_tag(editor_->layout().tables()));
         bytes = exporter::to_pef(paged, meta);
@@ -652,7 +680,7 @@ bool MainWindow::may_reflow_braille() {
     const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
                              "printer's page?")
                               .arg(name);
-    // The editor's lines do not carry the file's declared grid: the page's own size is said.
+    // The page's own size is said (its lines, its longest row), which is what must fit.
     const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
                            "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
                            "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "

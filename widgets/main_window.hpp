@@ -149,6 +149,10 @@ private:
     QString path_;         // where Save writes (Markdown only); empty: ask
     QString source_name_;  // the file the document came from, for the title
     bool interactive_ = false;
+    bool pages_kept_ = false;  // the layout kept ready-made braille's own pages when it last changed
+    // Says so when an edit makes ready-made braille be laid out again (its own
+    // pages, sections and volumes no longer kept), and when they are kept again.
+    void tell_pages_kept();
     QString autosave_path_;
     QTimer autosave_timer_;
     QPointer<QFutureWatcher<LoadResultPtr>> busy_;

@@ -8,6 +8,7 @@
 
 #include "command.hpp"
 #include "layout/braille_pages.hpp"
+#include "profile/page_geometry.hpp"
 
 namespace tactus::cli {
 
@@ -78,11 +79,12 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
 
 pipeline::PipelineOptions LayoutArgs::pipeline_options(const profile::PrinterProfile& machine) const {
     auto o = pipeline_options();
-    auto& g = o.layout.geometry;
-    g.interpoint = machine.geometry.interpoint;
-    if (cells == 0) g.cells_per_line = machine.geometry.cells_per_line;
-    if (lines == 0) g.lines_per_page = machine.geometry.lines_per_page;
-    g.eight_dot = machine.geometry.eight_dot || eight_dot;
+    // The machine's page, narrowed by --cells / --lines, with eight dots when either asks.
+    auto g = profile::page_geometry(machine);
+    if (cells > 0) g.cells_per_line = cells;
+    if (lines > 0) g.lines_per_page = lines;
+    g.eight_dot = g.eight_dot || eight_dot;
+    o.layout.geometry = g;
     return o;
 }
 

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 
+#include "profile/page_geometry.hpp"
 #include "translate/translator.hpp"
 
 namespace tactus::cups {
@@ -72,10 +73,7 @@ Result<pipeline::PipelineOptions> pipeline_options(const CupsOptions& o, const p
     pipeline::PipelineOptions out;
     const auto& machine = profile.geometry;
     auto& g = out.layout.geometry;
-    g.cells_per_line = machine.cells_per_line;
-    g.lines_per_page = machine.lines_per_page;
-    g.interpoint = machine.interpoint;
-    g.eight_dot = machine.eight_dot;
+    g = tactus::profile::page_geometry(profile);
     if (const auto* t = find(o, kBrailleTable)) {
         auto tables = braille_table(*t);
         if (!tables) return std::unexpected(tables.error());

@@ -23,6 +23,7 @@
 #include "plan/planner.hpp"
 #include "profile/controller_config.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 
 using namespace tactus;
@@ -94,9 +95,7 @@ int main(int argc, char** argv) {
     const auto timing = profile::strike_timing(prof);
     for (const auto& f : files) {
         pipeline::PipelineOptions o;
-        o.layout.geometry.interpoint = prof.geometry.interpoint;
-        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+        o.layout.geometry = profile::page_geometry(prof);
         auto doc = pipeline::lay_out_file(f, o);
         if (!doc) {
             std::fprintf(stderr, "%s\n", doc.error().to_string().c_str());

@@ -17,6 +17,7 @@
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 
 using namespace tactus;
@@ -70,9 +71,7 @@ int main(int argc, char** argv) {
                 "v3 B/dot", "v2 B/dot", "v2 / v3", "sheet time");
     for (const auto& f : files) {
         pipeline::PipelineOptions o;
-        o.layout.geometry.interpoint = prof.geometry.interpoint;
-        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+        o.layout.geometry = profile::page_geometry(prof);
         auto doc = pipeline::lay_out_file(f, o);
         if (!doc) {
             std::fprintf(stderr, "%s\n", doc.error().to_string().c_str());

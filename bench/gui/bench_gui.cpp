@@ -6,7 +6,10 @@
 // With --text the book is a hard-wrapped plain text file (72 columns, a blank
 // line between verses, as Project Gutenberg writes books): the editor's text
 // dialect, where a paragraph is several editor lines brailled as one.
-// Usage: bench_gui BOOK.txt [PAGES] [--text]
+// With a .pef the book is that ready-made braille, opened as it is (its own
+// pages, sections and volumes kept by layout::keep_braille_pages after every
+// edit): each keystroke types or erases a braille cell in a row.
+// Usage: bench_gui BOOK.txt [PAGES] [--text] | bench_gui BOOK.pef
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -73,6 +76,62 @@ double percentile(std::vector<double> v, double p) {
     return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
 }
 
+// Keystrokes in a ready-made braille book: a cell typed into a row, then erased.
+int bench_pef(const std::string& file) {
+    const long rss_empty = rss_kb();
+    MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    auto options = window.editor()->layout().options();
+    options.geometry.cells_per_line = 40;  // room for the file's own page
+    options.geometry.lines_per_page = 30;
+    if (!window.editor()->set_layout_options(options)) return 1;
+    QSignalSpy opened(&window, &MainWindow::opened);
+    const auto t_open = Clock::now();
+    window.open_file(QString::fromStdString(file));
+    if (!opened.wait(600000)) {
+        std::fprintf(stderr, "open timed out\n");
+        return 1;
+    }
+    const double open_ms = ms_since(t_open);
+    QApplication::processEvents();
+    const long rss_open = rss_kb();
+    const auto& layout = window.editor()->layout();
+    if (!layout.pages_kept()) {
+        std::fprintf(stderr, "the file's pages are not kept (do they fit 40 x 30?)\n");
+        return 1;
+    }
+    auto* print = window.editor()->print_pane();
+    auto* preview = window.preview_panel()->preview();
+    std::mt19937 rng(1);
+    std::vector<double> latency;
+    for (int k = 0; k < 300; ++k) {
+        int line = 0;  // a row: not a page break line, not an empty row
+        do line = std::uniform_int_distribution<int>(0, print->document()->blockCount() - 1)(rng);
+        while (print->document()->findBlockByNumber(line).text().startsWith(QLatin1Char('<')) ||
+               print->document()->findBlockByNumber(line).text().size() < 2);
+        const auto block = print->document()->findBlockByNumber(line);
+        QTextCursor c(block);
+        c.movePosition(QTextCursor::EndOfBlock);
+        QApplication::processEvents();
+        const auto t0 = Clock::now();
+        c.insertText(QString(QChar(0x2811)));  // one cell, as the braille pane types it
+        c.deletePreviousChar();
+        preview->repaint();
+        latency.push_back(ms_since(t0) / 2);
+    }
+    if (!layout.pages_kept()) std::fprintf(stderr, "the pages were laid out again\n");
+    std::printf("document: %s, %d editor lines, %zu braille pages, %zu sheets, %zu sections (kept as they are)\n",
+                file.c_str(), print->document()->blockCount(), layout.paged().pages.size(), layout.paged().sheet_count(),
+                layout.paged().sections.size());
+    std::printf("braille cell typed -> updated preview: median %.2f ms, p95 %.2f ms, max %.2f ms (goal: median < 16 ms)\n",
+                percentile(latency, 0.5), percentile(latency, 0.95), percentile(latency, 1.0));
+    std::printf("open: tactus %.0f ms\n", open_ms);
+    std::printf("resident memory: %.1f MB with the book open (%.1f MB before opening)\n",
+                static_cast<double>(rss_open) / 1024.0, static_cast<double>(rss_empty) / 1024.0);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -86,6 +145,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::size_t target_pages = argc > 2 ? std::stoul(argv[2]) : 1000;
+    const bool pef = std::string_view(argv[1]).ends_with(".pef");
+    if (pef) return bench_pef(argv[1]);
 
     // The first verses of the book, one paragraph each, until they fill the pages.
     std::ifstream in(argv[1]);

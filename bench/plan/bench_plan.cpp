@@ -17,6 +17,7 @@
 
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
+#include "profile/page_geometry.hpp"
 
 using namespace tactus;
 using Clock = std::chrono::steady_clock;
@@ -47,9 +48,7 @@ int main(int argc, char** argv) {
     const auto prof = profile::default_profile();
     pipeline::PipelineOptions options;
     if (argc > 2) options.tables = argv[2];
-    options.layout.geometry.interpoint = prof.geometry.interpoint;
-    options.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    options.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    options.layout.geometry = profile::page_geometry(prof);
 
     // Layout and plan alternate, three rounds each, and the best of each is
     // compared: on a shared machine a single run of either can be slowed by

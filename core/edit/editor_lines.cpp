@@ -176,6 +176,9 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         document::BrailleLine cells;
         const auto text = utf8_to_utf32(t);
         for (char32_t c : *text) cells.push_back(document::Cell::from_unicode(c));
+        // One blank cell is how the writer shows an empty row (a PEF's <row/>,
+        // a BRF's empty line: exporter::markdown_lines): an empty row again.
+        if (cells.size() == 1 && cells.front().blank()) cells.clear();
         b.braille_lines.push_back(std::move(cells));
         return b;
     }

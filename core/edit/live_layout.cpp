@@ -39,6 +39,39 @@ std::string_view last_piece(std::string_view line) {
 
 }  // namespace
 
+BrailleStructure braille_structure(const document::Document& doc) {
+    BrailleStructure s;
+    s.grid = doc.braille_grid;
+    s.metadata = doc.metadata;
+    // The editor line each block starts on, as the Markdown writer writes a
+    // ready-made braille document (exporter::markdown_lines): a braille block
+    // a line a row (a page without rows one blank row), a page break a line.
+    std::vector<std::size_t> line_of(doc.blocks.size() + 1, 0);
+    std::size_t line = 0;
+    for (std::size_t i = 0; i < doc.blocks.size(); ++i) {
+        line_of[i] = line;
+        const auto& b = doc.blocks[i];
+        line += b.kind == document::BlockKind::braille ? std::max<std::size_t>(b.braille_lines.size(), 1) : 1;
+    }
+    line_of.back() = line;
+    for (auto section : doc.braille_sections) {
+        section.first_block = line_of[std::min(section.first_block, doc.blocks.size())];
+        s.sections.push_back(section);
+    }
+    return s;
+}
+
+namespace {
+
+// Two section marks meet on one line: the later one's section, a volume start if either had one.
+void merge_mark(std::optional<document::BrailleSection>& onto, const document::BrailleSection& later) {
+    const bool volume = (onto && onto->starts_volume) || later.starts_volume;
+    onto = later;
+    onto->starts_volume = volume;
+}
+
+}  // namespace
+
 Result<LiveLayout> LiveLayout::create(const std::string& tables, layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return std::unexpected(ok.error());
     auto translator = translate::Translator::open(tables);
@@ -271,10 +304,19 @@ std::pair<std::size_t, std::size_t> LiveLayout::part_of(std::size_t head, std::s
     return i - head < parts.size() ? parts[i - head] : std::pair<std::size_t, std::size_t>{tb->cells.size(), tb->cells.size()};
 }
 
-bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress) {
+bool LiveLayout::reset(const document::Document& document, const Progress& progress) {
+    return reset(render_editor_lines(document, dialect_), progress, edit::braille_structure(document));
+}
+
+bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress, BrailleStructure structure) {
     entries_.clear();
     entries_.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i) entries_[i].line = std::move(lines[i]);
+    for (const auto& section : structure.sections)
+        if (section.first_block < entries_.size()) merge_mark(entries_[section.first_block].section, section);
+    braille_grid_ = std::move(structure.grid);
+    metadata_ = std::move(structure.metadata);
+    kept_ = false;
     runs_on_ = dialect_ == Dialect::text && find_paragraph_breaks();
     for (std::size_t i = 0; i < entries_.size(); ++i) {
         translate_entry(i);
@@ -304,15 +346,78 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
     first = std::min(first, entries_.size());
     removed = std::min(removed, entries_.size() - first);
     const auto at = entries_.begin() + static_cast<std::ptrdiff_t>(first);
+    // One row of kept pages edited in place (a cell typed): where it is, for kept_row_edit.
+    std::optional<std::pair<std::size_t, std::size_t>> row_place;
+    if (kept_ && removed == 1 && lines.size() == 1 && !at->section && one_row(*at))
+        row_place = std::pair{at->pages_before, at->lines_before};
+    const auto old_row = row_place ? at->block->braille_lines.front() : document::BrailleLine{};
     const bool removed_breaks = std::any_of(at, at + static_cast<std::ptrdiff_t>(removed), [](const Entry& e) {
         return (e.block && e.block->kind == document::BlockKind::print_page_break) ||
                e.line.find('\f') != std::string::npos;  // a text line's form feed
     });
+    // The section marks (BrailleStructure; see the header). The editor reports
+    // an edit as the lines it touched: the removed lines the same at the start
+    // and the end of the new ones were kept as they were (a line inserted above
+    // a line is that line replaced by the new line and itself), and keep
+    // their marks. The marks of the lines really deleted go to the first line
+    // that replaces them, or else to the line after them.
+    // The end first: a line inserted above another (the common report, and
+    // undo's) is matched so even when the lines look alike (page breaks).
+    std::size_t prefix = 0, suffix = 0;
+    while (suffix < removed && suffix < lines.size() &&
+           at[static_cast<std::ptrdiff_t>(removed - 1 - suffix)].line == lines[lines.size() - 1 - suffix])
+        ++suffix;
+    while (prefix < removed - suffix && prefix < lines.size() - suffix &&
+           at[static_cast<std::ptrdiff_t>(prefix)].line == lines[prefix])
+        ++prefix;
+    struct Kept {
+        std::size_t line;  // in the new lines
+        document::BrailleSection section;
+        std::optional<std::string> origin;
+    };
+    std::vector<Kept> kept;
+    std::optional<document::BrailleSection> moved;
+    std::string moved_from;  // the text of the line the winning mark was on
+    for (std::size_t r = 0; r < removed; ++r) {
+        const auto& e = at[static_cast<std::ptrdiff_t>(r)];
+        if (!e.section) continue;
+        if (r < prefix) kept.push_back({first + r, *e.section, e.mark_origin});
+        else if (r >= removed - suffix) kept.push_back({first + lines.size() - (removed - r), *e.section, e.mark_origin});
+        else {
+            merge_mark(moved, *e.section);
+            moved_from = e.mark_origin.value_or(e.line);
+        }
+    }
+    const std::size_t middle_end = first + lines.size() - suffix;  // the new lines in the middle: [first + prefix, middle_end)
     entries_.erase(at, at + static_cast<std::ptrdiff_t>(removed));
     std::vector<Entry> fresh(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i) fresh[i].line = std::move(lines[i]);
     entries_.insert(entries_.begin() + static_cast<std::ptrdiff_t>(first),
                     std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
+    for (auto& k : kept) {
+        // A mark moved here by a deletion goes back to its own line when that
+        // line comes back above it (the deletion undone).
+        std::size_t onto = k.line;
+        if (k.origin)
+            for (std::size_t m = first + prefix; m < middle_end; ++m)
+                if (entries_[m].line == *k.origin) {
+                    onto = m;
+                    k.origin.reset();
+                    break;
+                }
+        merge_mark(entries_[onto].section, k.section);
+        entries_[onto].mark_origin = k.origin;
+    }
+    if (moved && first + prefix < entries_.size()) {
+        auto& onto = entries_[first + prefix];
+        if (onto.section) {
+            onto.section->starts_volume = onto.section->starts_volume || moved->starts_volume;
+        } else {
+            onto.section = moved;
+            // Moved onto a line that was there: the line it came from, for an undo.
+            if (first + prefix >= middle_end) onto.mark_origin = moved_from;
+        }
+    }
     if (dialect_ == Dialect::text) return replace_text(first, fresh.size(), removed_breaks);
     RelayoutStats stats;
     // Page breaks change the print page of every page after them: no early stop then.
@@ -348,6 +453,15 @@ RelayoutStats LiveLayout::replace(std::size_t first, std::size_t removed,
             continue;
         }
         break;
+    }
+    if (row_place && count == 1 && kept_row_edit(first, *row_place, old_row)) {
+        RelayoutStats in_place;
+        in_place.lines_translated = stats.lines_translated;
+        in_place.first_page_relaid = row_place->first;
+        in_place.pages_relaid = 1;
+        in_place.braille_first = first;
+        in_place.braille_end = first + 1;
+        return in_place;
     }
     auto layout = relayout_from(first, breaks_touched ? npos : first + count);
     layout.lines_translated = stats.lines_translated;
@@ -443,6 +557,10 @@ document::Document LiveLayout::document() const {
     // a Markdown table as many as its header: shorter rows get empty entries at
     // the end, which lay out as the missing ones did.
     document::Document doc;
+    doc.blocks.reserve(entries_.size());
+    doc.braille_grid = braille_grid_;
+    doc.metadata = metadata_;
+    std::optional<document::BrailleSection> mark;  // a section starts at the next block
     for (std::size_t i = 0; i < entries_.size();) {
         std::size_t end = i + 1;
         std::size_t width = 0;
@@ -460,8 +578,14 @@ document::Document LiveLayout::document() const {
         };
         for (; i < end; ++i) {
             const auto& e = entries_[i];
+            if (e.section) merge_mark(mark, *e.section);
             if (!e.block) continue;
             const int line = static_cast<int>(i + 1);
+            if (mark) {
+                mark->first_block = doc.blocks.size();
+                doc.braille_sections.push_back(*mark);
+                mark.reset();
+            }
             doc.blocks.push_back(*e.block);
             doc.blocks.back().source_line = line;
             if (dialect_ == Dialect::text) {
@@ -488,7 +612,76 @@ document::Document LiveLayout::document() const {
             }
         }
     }
+    // The lines above the first section's mark (typed in above it) are in it.
+    if (!doc.braille_sections.empty()) {
+        doc.braille_sections.front().first_block = 0;
+        doc.braille_sections.front().starts_volume = true;
+    }
     return doc;
+}
+
+BrailleStructure LiveLayout::braille_structure() const {
+    BrailleStructure s;
+    s.grid = braille_grid_;
+    s.metadata = metadata_;
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+        if (entries_[i].section) {
+            s.sections.push_back(*entries_[i].section);
+            s.sections.back().first_block = i;
+        }
+    return s;
+}
+
+bool LiveLayout::one_row(const Entry& e) {
+    return e.block && !e.error && e.block->kind == document::BlockKind::braille && e.block->braille_lines.size() == 1;
+}
+
+bool LiveLayout::kept_row_edit(std::size_t i, std::pair<std::size_t, std::size_t> place,
+                               const document::BrailleLine& old_row) {
+    // Only when layout::keep_braille_pages would give the same pages with just
+    // this row changed: a row still, no section mark, no change to the page's
+    // grid (both rows within the file's cols and the printer's) or to 8-dot.
+    // braille_structure_test's random edits compare it with keep_pages.
+    auto& e = entries_[i];
+    if (!one_row(e) || e.section || !braille_grid_) return false;
+    const auto& row = e.block->braille_lines.front();
+    const auto cols = static_cast<std::size_t>(std::min(braille_grid_->cols, requested_.geometry.cells_per_line));
+    const auto eight = [](const document::BrailleLine& r) {
+        return std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+    };
+    if (row.size() > cols || old_row.size() > cols ||
+        (!requested_.geometry.eight_dot && (eight(row) || eight(old_row))))
+        return false;
+    if (place.first >= paged_.pages.size() || place.second >= paged_.pages[place.first].lines.size()) return false;
+    paged_.pages[place.first].lines[place.second] = row;
+    e.pages_before = place.first;
+    e.lines_before = place.second;
+    e.settled_before = true;
+    return true;
+}
+
+bool LiveLayout::keep_pages() {
+    auto doc = document();
+    if (!layout::is_ready_braille(doc)) return false;
+    std::vector<layout::BlockPlace> places;
+    // Refused when a page does not fit (layout::check_braille_fits): laid out again then.
+    auto kept = layout::keep_braille_pages(doc, requested_, &places);
+    if (!kept) return false;
+    paged_ = std::move(*kept);
+    if (script_warning_) paged_.warnings.push_back(*script_warning_);
+    // Each line where its block landed; a line without one where the next block did.
+    const layout::BlockPlace end =
+        paged_.pages.empty() ? layout::BlockPlace{} : layout::BlockPlace{paged_.pages.size() - 1, 0};
+    std::size_t b = 0;
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+        while (b < doc.blocks.size() && doc.blocks[b].source_line < static_cast<int>(i + 1)) ++b;
+        const auto place = b < places.size() ? places[b] : end;
+        entries_[i].pages_before = place.page;
+        entries_[i].lines_before = static_cast<std::size_t>(place.row);
+        entries_[i].settled_before = true;
+    }
+    kept_ = true;
+    return true;
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
@@ -515,11 +708,27 @@ Result<void> LiveLayout::set_options(layout::LayoutOptions options) {
     return {};
 }
 
-int LiveLayout::body_top(std::size_t page) const { return layout::body_top(options_, page); }
+// Pages kept as they are have no margins and no page number lines of ours.
+int LiveLayout::body_top(std::size_t page) const { return kept_ ? 0 : layout::body_top(options_, page); }
 
-int LiveLayout::body_capacity(std::size_t page) const { return layout::body_capacity(options_, page); }
+int LiveLayout::body_capacity(std::size_t page) const {
+    return kept_ ? paged_.geometry.lines_per_page : layout::body_capacity(options_, page);
+}
 
 RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged_from) {
+    // Ready-made braille is kept page for page, as the CLI keeps it, while it fits.
+    if (ready_braille_ && keep_pages()) {
+        RelayoutStats stats;
+        stats.pages_relaid = paged_.pages.size();
+        return stats;
+    }
+    if (kept_) {
+        // The entries hold kept pages' places, not the paginator's: lay everything out again.
+        kept_ = false;
+        first = 0;
+        unchanged_from = npos;
+        paged_ = {};
+    }
     // Restart point: an entry before the edit that starts on a sheet front, moved
     // back to the first entry starting on that page so no page break lies between
     // the top of the page and the restart (the page's own print page then holds).
@@ -650,6 +859,8 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         warnings = std::move(tail.warnings);
     }
     paged_.geometry = options_.geometry;
+    paged_.sections.clear();
+    paged_.metadata = metadata_;  // a PEF's own, when it was opened from one
     if (base == 0) {
         paged_.warnings.clear();
         if (script_warning_) paged_.warnings.push_back(*script_warning_);
@@ -729,6 +940,13 @@ PagePosition LiveLayout::position_of(std::size_t i, std::size_t cell) const {
     }
     const auto& e = entries_[i];
     pos.page = e.pages_before;
+    if (kept_) {
+        // A row of a kept page: its own cells, where the page has it.
+        pos.line = static_cast<int>(e.lines_before);
+        pos.cell = static_cast<int>(cell);
+        if (pos.page >= paged_.pages.size() && !paged_.pages.empty()) pos.page = paged_.pages.size() - 1;
+        return pos;
+    }
     int line = static_cast<int>(e.lines_before);
     int column = 0;
     const int width = options_.geometry.cells_per_line - options_.left_margin - options_.right_margin;

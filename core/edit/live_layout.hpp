@@ -43,6 +43,24 @@ struct RelayoutStats {
     std::size_t braille_end = 0;
 };
 
+// Ready-made braille's structure beyond its rows (a PEF's): where its sections
+// and volumes start, by editor line, the file's page grid and its dc:
+// metadata. The rows are the editor's lines; this is what they do not carry.
+// Each section's start is a mark on the line its first page starts on (its
+// page break line, or its first row); edits move the marks with their lines
+// (LiveLayout::replace says how), so the structure of the pages that still
+// exist is kept.
+struct BrailleStructure {
+    std::vector<document::BrailleSection> sections;  // first_block: the editor line the section starts on
+    std::optional<document::BrailleGrid> grid;
+    std::vector<document::MetadataItem> metadata;
+    bool operator==(const BrailleStructure&) const = default;
+};
+
+// The structure of a document as its editor lines (render_editor_lines,
+// Markdown) hold it: its sections' first blocks turned into editor lines.
+BrailleStructure braille_structure(const document::Document& document);
+
 class LiveLayout {
 public:
     // Cancels a long build when it returns true; receives (done, total).
@@ -60,26 +78,54 @@ public:
 
     // The document the lines stand for: their blocks in order, page breaks with
     // the print page they start, a table row followed by its cells, and each
-    // block's source_line its 1-based editor line. What is saved.
+    // block's source_line its 1-based editor line; a ready-made braille
+    // document's sections (a section starts at the first block at or after its
+    // mark), grid and metadata. What is saved, exported and embossed.
     [[nodiscard]] document::Document document() const;
 
     // Replaces everything; translates every line. Returns false when cancelled.
-    bool reset(std::vector<std::string> lines, const Progress& progress = {});
+    // `structure`: a ready-made braille document's sections, volumes, grid
+    // and metadata (braille_structure), marked on these lines.
+    bool reset(std::vector<std::string> lines, const Progress& progress = {}, BrailleStructure structure = {});
+    // The same from a document: its editor lines (render_editor_lines, in
+    // this layout's dialect) and its braille structure.
+    bool reset(const document::Document& document, const Progress& progress = {});
     // Replaces `removed` lines starting at `first` with `lines`.
+    // The braille structure follows the lines: a line edited keeps its
+    // section mark, a line split keeps it on the part that is the same (on
+    // the first part when both changed); inserted lines join the section of
+    // the line above them (the removed lines equal to the first and last new
+    // ones are taken as kept, not replaced: the editor reports a line
+    // inserted above a line as that line replaced by both); the mark of a
+    // deleted line passes to the first line that replaces it, or else to the
+    // line after the deletion, so the pages that are left stay in their
+    // section and volume, and goes back to its line when that line comes back
+    // above it (undo). When marks meet on one line, the last one's section
+    // wins (the sections before it have no line left) and a volume start
+    // among them is kept.
     RelayoutStats replace(std::size_t first, std::size_t removed, std::vector<std::string> lines);
+    // The braille structure as the lines hold it now (empty when none was given).
+    [[nodiscard]] BrailleStructure braille_structure() const;
     // New table or layout options: everything is translated and laid out again.
     Result<void> set_tables(const std::string& tables);
     Result<void> set_options(layout::LayoutOptions options);
 
     [[nodiscard]] const layout::PagedDocument& paged() const { return paged_; }
     // The options asked for (set_options, create). Ready-made braille (a BRF or
-    // PEF opened as it is: only braille lines and braille page breaks) is laid
-    // out with them less the braille page numbers and print page indicators,
-    // so its pages come out page for page with the numbers they carry, as
-    // layout::keep_braille_pages does for the CLI (decided when the text is
-    // replaced whole, the table or the options change; not on every edit).
+    // PEF opened as it is: only braille lines and braille page breaks) whose
+    // pages fit these options' page is laid out by layout::keep_braille_pages,
+    // the CLI's call, after every edit: page for page, on the file's own grid,
+    // each section on a new sheet, with its volumes and metadata. When its
+    // pages do not fit (the app asks before embossing or exporting), or once
+    // print text is typed into it, it is laid out by the paginator with these
+    // options less the braille page numbers and print page indicators
+    // (decided when the text is replaced whole, the table or the options
+    // change; not on every edit).
     [[nodiscard]] const layout::LayoutOptions& options() const { return requested_; }
     [[nodiscard]] bool ready_braille() const { return ready_braille_; }
+    // The pages are ready-made braille kept as it is (layout::keep_braille_pages),
+    // not laid out again by the paginator.
+    [[nodiscard]] bool pages_kept() const { return kept_; }
     [[nodiscard]] const std::string& tables() const { return translator_.tables(); }
     [[nodiscard]] std::size_t line_count() const { return entries_.size(); }
     [[nodiscard]] const std::string& line(std::size_t i) const { return entries_[i].line; }
@@ -111,6 +157,10 @@ private:
         std::vector<document::Block> cells;
         std::vector<translate::TranslatedBlock> translated_cells;
         std::optional<Error> error;
+        // A ready-made braille section (and perhaps a volume) starts on this line (BrailleStructure).
+        std::optional<document::BrailleSection> section;
+        // The section mark came here when the line it was on was deleted: that line's text.
+        std::optional<std::string> mark_origin;
         std::size_t pages_before = 0;  // paginator state before this entry
         std::size_t lines_before = 0;
         bool settled_before = false;  // no table or list was open before this entry
@@ -155,6 +205,19 @@ private:
     layout::LayoutOptions requested_;  // as asked for
     bool ready_braille_ = false;
     void decide_ready_braille();
+    // The braille structure's grid and metadata (the sections are the entries' marks).
+    std::optional<document::BrailleGrid> braille_grid_;
+    std::vector<document::MetadataItem> metadata_;
+    // paged_ is layout::keep_braille_pages's: entries' pages_before and
+    // lines_before are the page and row their block landed on.
+    bool kept_ = false;
+    // Lays the ready-made braille out page for page (keep_braille_pages) when
+    // it still is ready-made braille and fits; false when it is not.
+    bool keep_pages();
+    // A row of kept pages edited in place: the row changed on its page, when
+    // keep_braille_pages would change nothing else (else false: keep_pages).
+    bool kept_row_edit(std::size_t i, std::pair<std::size_t, std::size_t> place, const document::BrailleLine& old_row);
+    [[nodiscard]] static bool one_row(const Entry& e);
     Dialect dialect_ = Dialect::markdown;
     std::string line_ending_ = "\n";
     bool runs_on_ = false;  // text dialect: a paragraph's lines run on (find_paragraph_breaks)

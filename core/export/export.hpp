@@ -39,8 +39,9 @@ PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std:
 // which BRF cannot carry, naming the page and line.
 Result<std::string> to_brf(const layout::PagedDocument& doc);
 
-// PEF 2008-1: one volume; one section with duplex from the geometry, or the
-// source's sections with their own duplex (ready-made braille).
+// PEF 2008-1: one volume of one section with duplex from the geometry, or the
+// source's volumes and sections with their own duplex (ready-made braille,
+// layout::PageSection), every volume with the document's cols and rows.
 Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta = {});
 
 // Unicode braille text: LF line ends, a form feed between pages.

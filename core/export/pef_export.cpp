@@ -90,33 +90,42 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
     }
 
     const auto& g = doc.geometry;
-    // Ready-made braille keeps its sections and their duplex; laid-out text is one
-    // section whose duplex is the layout's.
-    const bool volume_duplex = doc.sections.empty() ? g.interpoint : doc.sections.front().duplex;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<pef version=\"2008-1\" xmlns=\"http://www.daisy.org/ns/2008/pef\">\n";
     // One level in, under <pef>: pugixml indents the elements, never the text
     // inside them (a multi-line dc:description stays as the source had it).
     head.print(out, "  ", pugi::format_indent, pugi::encoding_utf8, 1);
-    out << "  <body>\n    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page
-        << "\" rowgap=\"" << (g.eight_dot ? 1 : 0) << "\" duplex=\""
-        << (volume_duplex ? "true" : "false") << "\">\n";
+    out << "  <body>\n";
+    // Ready-made braille keeps its volumes, its sections and their duplex (a
+    // volume's duplex is its first section's; a section that differs says so);
+    // laid-out text is one volume of one section whose duplex is the layout's.
+    bool volume_duplex = g.interpoint;
+    const auto open_volume = [&](bool duplex) {
+        volume_duplex = duplex;
+        out << "    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page << "\" rowgap=\""
+            << (g.eight_dot ? 1 : 0) << "\" duplex=\"" << (duplex ? "true" : "false") << "\">\n";
+    };
+    const auto open_section = [&](bool duplex) {
+        out << (duplex == volume_duplex ? std::string("      <section>\n")
+                                        : std::string("      <section duplex=\"") + (duplex ? "true" : "false") + "\">\n");
+    };
+    open_volume(doc.sections.empty() ? g.interpoint : doc.sections.front().duplex);
+    open_section(volume_duplex);
     std::string row;
     std::size_t next_section = 0;
     bool section_has_page = false;
-    out << "      <section>\n";
     for (std::size_t p = 0; p < doc.pages.size(); ++p) {
         const auto& page = doc.pages[p];
-        if (next_section < doc.sections.size() && doc.sections[next_section].first_page == p) {
-            const bool d = doc.sections[next_section].duplex;
+        while (next_section < doc.sections.size() && doc.sections[next_section].first_page == p) {
+            const auto& section = doc.sections[next_section];
             if (next_section > 0) {
                 if (!section_has_page) out << "        <page />\n";  // a section needs a page
                 out << "      </section>\n";
-                out << (d == volume_duplex ? std::string("      <section>\n")
-                                           : std::string("      <section duplex=\"") + (d ? "true" : "false") + "\">\n");
-            } else if (d != volume_duplex) {
-                // Cannot happen: the volume takes the first section's duplex.
-                return fail("first section's duplex differs from its volume");
+                if (section.starts_volume) {
+                    out << "    </volume>\n";
+                    open_volume(section.duplex);
+                }
+                open_section(section.duplex);
             }
             section_has_page = false;
             ++next_section;

@@ -355,8 +355,11 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
             continue;
         }
         if (b.kind == document::BlockKind::braille) {
+            // An empty row is one blank cell (the editor reads it back as an
+            // empty row); a page without rows (a PEF's <page/>) one empty row.
             for (const auto& l : b.braille_lines)
                 lines.push_back(l.empty() ? document::to_unicode_text({document::Cell{}}) : document::to_unicode_text(l));
+            if (b.braille_lines.empty()) lines.push_back(document::to_unicode_text({document::Cell{}}));
         } else if (auto line = markdown_line(b); !trim(line).empty()) {
             lines.push_back(std::move(line));
         }

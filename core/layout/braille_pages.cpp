@@ -9,9 +9,10 @@ namespace {
 // One source page: the rows of the braille blocks between two page breaks.
 struct SourcePage {
     const document::Block* first = nullptr;
-    std::vector<document::BrailleLine> rows;
+    std::vector<const document::BrailleLine*> rows;  // into the document's blocks: no copy
     int source_line = 0;
     std::size_t section = 0;
+    std::size_t first_block = 0;  // the page's first braille block
 };
 
 std::vector<SourcePage> source_pages(const document::Document& doc) {
@@ -30,18 +31,17 @@ std::vector<SourcePage> source_pages(const document::Document& doc) {
         }
         if (b.kind != document::BlockKind::braille) continue;
         if (!open) {
-            pages.push_back(SourcePage{&b, {}, b.source_line, section});
+            pages.push_back(SourcePage{&b, {}, b.source_line, section, i});
             open = true;
         }
-        auto& rows = pages.back().rows;
-        rows.insert(rows.end(), b.braille_lines.begin(), b.braille_lines.end());
+        for (const auto& row : b.braille_lines) pages.back().rows.push_back(&row);
     }
     return pages;
 }
 
-int longest_row(const std::vector<document::BrailleLine>& rows) {
+int longest_row(const std::vector<const document::BrailleLine*>& rows) {
     std::size_t n = 0;
-    for (const auto& r : rows) n = std::max(n, r.size());
+    for (const auto* r : rows) n = std::max(n, r->size());
     return static_cast<int>(n);
 }
 
@@ -91,7 +91,8 @@ Result<void> check_braille_fits(const document::Document& doc, const LayoutOptio
                 m->source_line > 0 ? std::to_string(m->source_line) : std::string{});
 }
 
-Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target) {
+Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target,
+                                         std::vector<BlockPlace>* places) {
     if (auto ok = check_braille_fits(doc, target); !ok) return std::unexpected(located(ok.error(), doc.source_name));
     const auto pages = source_pages(doc);
     PagedDocument out;
@@ -102,8 +103,8 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
     for (const auto& p : pages) {
         cols = std::max(cols, longest_row(p.rows));
         rows = std::max(rows, static_cast<int>(p.rows.size()));
-        for (const auto& r : p.rows)
-            eight_dot = eight_dot || std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+        for (const auto* r : p.rows)
+            eight_dot = eight_dot || std::ranges::any_of(*r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
     }
     if (doc.braille_grid) {
         cols = std::max(cols, doc.braille_grid->cols);
@@ -122,6 +123,8 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
         out.pages.push_back(std::move(filler));
     };
     std::size_t section = static_cast<std::size_t>(-1);
+    if (places) places->assign(doc.blocks.size(), BlockPlace{});
+    std::size_t placed = 0;  // blocks before this have their place
     for (const auto& p : pages) {
         const bool section_duplex =
             p.section < doc.braille_sections.size() ? doc.braille_sections[p.section].duplex : interpoint;
@@ -129,15 +132,34 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
             section = p.section;
             // A new section starts on a new sheet: never on the back of the last one.
             if (interpoint && out.pages.size() % 2 == 1) blank_back();
-            out.sections.push_back(PageSection{out.pages.size(), section_duplex});
+            const bool volume = p.section < doc.braille_sections.size() && doc.braille_sections[p.section].starts_volume;
+            out.sections.push_back(PageSection{out.pages.size(), section_duplex, volume || out.sections.empty()});
+        }
+        if (places) {
+            // The blocks before the page's first row (its page break) land where it does;
+            // the page's blocks, row by row.
+            for (; placed < p.first_block; ++placed) (*places)[placed] = BlockPlace{out.pages.size(), 0};
+            int row = 0;
+            for (; placed < doc.blocks.size() && row < static_cast<int>(p.rows.size()); ++placed) {
+                (*places)[placed] = BlockPlace{out.pages.size(), row};
+                const auto& b = doc.blocks[placed];
+                if (b.kind == document::BlockKind::braille) row += static_cast<int>(b.braille_lines.size());
+            }
         }
         Page page;
         page.braille_number = static_cast<int>(out.pages.size()) + 1;
-        page.lines = p.rows;
+        page.lines.reserve(static_cast<std::size_t>(out.geometry.lines_per_page));
+        for (const auto* r : p.rows) page.lines.push_back(*r);
         page.lines.resize(static_cast<std::size_t>(out.geometry.lines_per_page));
         out.pages.push_back(std::move(page));
         // A single-sided section on interpoint paper: every page has its own sheet.
         if (interpoint && !section_duplex) blank_back();
+    }
+    if (places) {
+        // Blocks after the last row: the end of the last page.
+        const BlockPlace end = out.pages.empty() ? BlockPlace{}
+                                                 : BlockPlace{out.pages.size() - 1, static_cast<int>(pages.back().rows.size())};
+        for (; placed < doc.blocks.size(); ++placed) (*places)[placed] = end;
     }
     if (doc.braille_sections.empty()) out.sections.clear();  // BRF: one stream of pages
     return out;

@@ -5,6 +5,7 @@
 // new ones, PEF sections each starting on a new sheet. Laying it out again
 // (the paginator) is a choice the user makes, not something done silently.
 #include <optional>
+#include <vector>
 
 #include "common/result.hpp"
 #include "document/document.hpp"
@@ -43,6 +44,17 @@ Result<void> check_braille_fits(const document::Document& doc, const LayoutOptio
 // sheets are interpoint is the target's (the printer's) choice. On interpoint
 // paper a section that would start on a back gets a blank back first, and each
 // page of a single-sided section gets a blank back of its own (`Page::filler`).
-Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target);
+//
+// `places`, when given, receives for each block of `doc` where it lands: the
+// page (an index into the result's pages) and the row its first row is on; a
+// braille page break, and any block that is no row, where the next row lands
+// (the editor maps its lines to paper with it).
+struct BlockPlace {
+    std::size_t page = 0;
+    int row = 0;
+    bool operator==(const BlockPlace&) const = default;
+};
+Result<PagedDocument> keep_braille_pages(const document::Document& doc, const LayoutOptions& target,
+                                         std::vector<BlockPlace>* places = nullptr);
 
 }  // namespace tactus::layout

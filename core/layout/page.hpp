@@ -56,6 +56,9 @@ struct PageGeometry {
 struct PageSection {
     std::size_t first_page = 0;
     bool duplex = false;  // the source section's duplex, written back to PEF
+    // The section starts a PEF <volume> (the first section always does): the
+    // PEF writer writes the volumes back as the source had them.
+    bool starts_volume = false;
     bool operator==(const PageSection&) const = default;
 };
 

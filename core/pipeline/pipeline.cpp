@@ -66,8 +66,11 @@ std::size_t text_size(const document::Block& b) {
     return n;
 }
 
-layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::string> first_warnings) {
+layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::string> first_warnings,
+                             const document::Document& source) {
     auto doc = std::move(paginator).finish();
+    // A PEF laid out again (--reflow) keeps its metadata, as it does kept page for page.
+    doc.metadata = source.metadata;
     doc.warnings.insert(doc.warnings.begin(), first_warnings.begin(), first_warnings.end());
     return doc;
 }
@@ -122,7 +125,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
             paginator.add(**block);
         }
         if (number_error) return std::unexpected(*number_error);
-        return finish(std::move(paginator), std::move(script_warnings));
+        return finish(std::move(paginator), std::move(script_warnings), document);
     }
 
     BlockQueue queue;
@@ -147,7 +150,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     producer.join();
     if (auto e = queue.error()) return std::unexpected(*e);
     if (number_error) return std::unexpected(*number_error);
-    return finish(std::move(paginator), std::move(script_warnings));
+    return finish(std::move(paginator), std::move(script_warnings), document);
 }
 
 Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,

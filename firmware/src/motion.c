@@ -60,7 +60,7 @@ static void start(uint16_t x, uint16_t second) {
 
 void motion_init(void) {
     T2CON = 0; /* timer, 16-bit auto-reload */
-    PT2 = 1;   /* steps above the UART and the strobe: latency is one instruction */
+    PT2 = 1;   /* steps above the UART and the strobe: 5 cycles of latency at most (README, "Step timing") */
     ET2 = 1;
     mv_done = 1;
 }

@@ -82,6 +82,13 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 ; compares pin traces with a plan (core/machine/firmware_tables.hpp,
 ; kPinEdgeTicks; FirmwareEdgeDelay checks the two agree).
 ;
+; The worst latency is 5 cycles (firmware/README.md, "Step timing"): a RETI
+; and the instruction after it (3), then a low-priority request s51 takes
+; first at that boundary (it goes by its list, not the priority): its
+; vectoring and the vector's first instruction, a NOP (tools/vectors.py), 2.
+; With SDCC's LJMP there (3) an edge came 2 cycles late about once in 3.5
+; million (tests/firmware/emu_latency_test.py forces it).
+;
 ; The cost is on every step: the cruise path is 30 - latency cycles (the
 ; issue's bar is 70 % of the CPU at the top rate, 46 cycles a step), and
 ; the ramp's top paths (46-50 cycles a step) must end within about 2 cycles

@@ -797,6 +797,21 @@
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
+        <translation>無法依此印表機的頁面排版文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The braille&apos;s own pages, sections and volumes are kept again</source>
+        <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The braille is laid out again on the printer&apos;s page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
+        <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
+    </message>
+    <message>
         <location filename="../../widgets/main_window.cpp" line="766" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>

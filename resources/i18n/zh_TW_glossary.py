@@ -185,6 +185,10 @@ T = {
     "Lay the braille out again on the printer's page and go on": "在印表機的頁面上重新排版點字並繼續",
     "Emboss or export nothing": "不列印也不匯出",
     "Stopped: nothing was embossed or exported (the printer's page is too small for %1)": "已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）",
+    "The document cannot be laid out for this printer's page: %1": "無法依此印表機的頁面排版文件：%1",
+    "The braille's own pages, sections and volumes are kept again": "已恢復保留點字原有的頁面、段落與分冊",
+    "The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page":
+        "點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊",
     "The print spool's jobs, from this window, tactus-cli and the network": "列印佇列中的工作，來自本視窗、tactus-cli 與網路",
     "Job": "工作", "Simulator faults (built-in simulator)": "模擬器故障（內建模擬器）", "Paper out": "缺紙",
     "The feeder runs empty; the simulated operator loads paper 5 seconds later": "送紙器沒紙了；模擬的操作員會在 5 秒後補紙",

@@ -18,6 +18,7 @@
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 #include "process.hpp"
 #include "strike_log.hpp"
@@ -29,9 +30,7 @@ namespace tactus::test {
 inline plan::JobPlan plan_with_firmware_tables(const std::string& document, const std::string& tables_json) {
     const auto prof = profile::default_profile();
     pipeline::PipelineOptions o;
-    o.layout.geometry.interpoint = prof.geometry.interpoint;
-    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    o.layout.geometry = profile::page_geometry(prof);
     auto doc = pipeline::lay_out_file(document, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};

@@ -21,6 +21,7 @@
 #include "profile/firmware_tables.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 
 using namespace tactus;
@@ -41,10 +42,7 @@ plan::JobPlan plan_sample(const BackHalfCase& c) {
     const auto prof = profile::default_profile();
     pipeline::PipelineOptions o;
     o.tables = c.tables;
-    o.layout.geometry.interpoint = prof.geometry.interpoint;
-    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-    o.layout.geometry.eight_dot = prof.geometry.eight_dot;
+    o.layout.geometry = profile::page_geometry(prof);
     auto doc = pipeline::lay_out_file(kSamples / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};
@@ -120,9 +118,7 @@ TEST(BackHalfV3, WelcomeSheetOneFramesMatchExpected) {
     ASSERT_TRUE(tables) << tables.error().to_string();
     pipeline::PipelineOptions o;
     o.tables = "en-ueb-g2.ctb";
-    o.layout.geometry.interpoint = prof.geometry.interpoint;
-    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    o.layout.geometry = profile::page_geometry(prof);
     auto doc = pipeline::lay_out_file(kSamples / "welcome.md", o);
     ASSERT_TRUE(doc) << doc.error().to_string();
     plan::PlanOptions po;

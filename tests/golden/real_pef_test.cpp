@@ -25,6 +25,7 @@ constexpr std::string_view kBlankCell = "\u2800";
 
 struct Section {
     bool duplex = true;
+    std::size_t volume = 0;  // 0-based: the <volume> it is in
     std::vector<std::vector<std::string>> pages;  // rows, trailing blank cells and rows dropped
 };
 
@@ -61,14 +62,17 @@ Pef parse(const std::string& xml) {
     const auto root = doc.document_element();
     for (const auto& m : root.child("head").child("meta").children())
         if (std::string(m.name()).starts_with("dc:")) pef.dc.emplace(m.name(), m.text().get());
+    std::size_t volume = 0;
     for (const auto& v : root.child("body").children()) {
         if (local(v.name()) != "volume") continue;
+        ++volume;
         pef.cols = std::max(pef.cols, v.attribute("cols").as_int());
         pef.rows = std::max(pef.rows, v.attribute("rows").as_int());
         const bool volume_duplex = std::string(v.attribute("duplex").value()) == "true";
         for (const auto& s : v.children()) {
             if (local(s.name()) != "section") continue;
             Section section;
+            section.volume = volume - 1;
             section.duplex = s.attribute("duplex") ? std::string(s.attribute("duplex").value()) == "true" : volume_duplex;
             for (const auto& p : s.children()) {
                 if (local(p.name()) != "page") continue;
@@ -128,6 +132,7 @@ TEST_P(RealPef, PefExportIsPageForPage) {
     for (std::size_t s = 0; s < in.sections.size(); ++s) {
         SCOPED_TRACE("section " + std::to_string(s + 1));
         EXPECT_EQ(out.sections[s].duplex, in.sections[s].duplex);
+        EXPECT_EQ(out.sections[s].volume, in.sections[s].volume);
         ASSERT_EQ(out.sections[s].pages.size(), in.sections[s].pages.size());
         for (std::size_t p = 0; p < in.sections[s].pages.size(); ++p)
             EXPECT_EQ(out.sections[s].pages[p], in.sections[s].pages[p]) << "page " << p + 1;
@@ -174,6 +179,38 @@ TEST_P(RealPef, SmallerPageIsRefused) {
         {"layout", "--to", "pef", "--cells", std::to_string(in.longest_row - 1), "--lines", "30", kReal + GetParam()}));
     EXPECT_EQ(r.exit_code, 5) << r.err;
     EXPECT_TRUE(r.out.empty());
+}
+
+// A PEF of three volumes (tests/data/pef/volumes.pef, valid PEF 2008-1): the
+// PEF written again has the same volumes, each with its sections, their
+// duplex and pages; before, every volume was merged into one.
+TEST(MultiVolumePef, KeepsItsVolumes) {
+    const std::string file = TACTUS_TEST_DATA "/pef/volumes.pef";
+    const auto in = parse(read(file));
+    ASSERT_EQ(in.sections.size(), 4u);
+    ASSERT_EQ(in.sections.back().volume, 2u);
+    const auto r = tactus::test::run_captured(tactus::test::cli({"layout", "--to", "pef", file}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto out = parse(r.out);
+    ASSERT_EQ(out.sections.size(), in.sections.size()) << r.out;
+    for (std::size_t s = 0; s < in.sections.size(); ++s) {
+        SCOPED_TRACE("section " + std::to_string(s + 1));
+        EXPECT_EQ(out.sections[s].volume, in.sections[s].volume);
+        EXPECT_EQ(out.sections[s].duplex, in.sections[s].duplex);
+        EXPECT_EQ(out.sections[s].pages, in.sections[s].pages);
+    }
+    EXPECT_EQ(out.cols, 12);
+    EXPECT_EQ(out.rows, 5);
+    // Read back, written again: the same bytes (a fixed point).
+    const auto again_file = fs::temp_directory_path() / "tactus-volumes-again.pef";
+    {
+        std::ofstream o(again_file, std::ios::binary);
+        o << r.out;
+    }
+    const auto again = tactus::test::run_captured(tactus::test::cli({"layout", "--to", "pef", again_file.string()}));
+    fs::remove(again_file);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(again.out, r.out);
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, RealPef,

@@ -13,6 +13,7 @@
 #include "controller/sim_transport.hpp"
 #include "encode/frame.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 #include "transport/byte_stream.hpp"
 
@@ -664,7 +665,7 @@ namespace {
 TEST(LinkWithPlanner, BundledSampleStrikesExactlyThePlanUnderNoise) {
     const auto profile = profile::default_profile();
     pipeline::PipelineOptions po;
-    po.layout.geometry.interpoint = profile.geometry.interpoint;
+    po.layout.geometry = tactus::profile::page_geometry(profile);
     const auto doc = pipeline::lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/welcome.md", po);
     ASSERT_TRUE(doc) << doc.error().to_string();
     const auto plan = plan::plan_job(*doc, profile);

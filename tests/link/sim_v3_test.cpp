@@ -22,6 +22,7 @@
 #include "plan/planner.hpp"
 #include "profile/controller_config.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 #include "../common/test_plans.hpp"
 #include "../common/firmware_tables_fixture.hpp"
@@ -89,9 +90,7 @@ TEST(SimV3, OnlyProtocol3IsSpoken) {
 TEST(SimV3, APlannedDocumentStrikesThePlanAtThePlansTimes) {
     const auto prof = profile::default_profile();
     pipeline::PipelineOptions o;
-    o.layout.geometry.interpoint = prof.geometry.interpoint;
-    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
+    o.layout.geometry = profile::page_geometry(prof);
     auto doc = pipeline::lay_out_file(std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md", o);
     ASSERT_TRUE(doc) << doc.error().to_string();
     plan::PlanOptions po;

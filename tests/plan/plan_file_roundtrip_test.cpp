@@ -17,6 +17,7 @@
 #include "pipeline/pipeline.hpp"
 #include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
+#include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
 #include "../common/test_plans.hpp"
 
@@ -82,10 +83,7 @@ TEST(PlanFileRoundTrip, RealPlansEncodeToTheSameBytes) {
         SCOPED_TRACE(file);
         pipeline::PipelineOptions o;
         o.tables = tables;
-        o.layout.geometry.interpoint = prof.geometry.interpoint;
-        o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-        o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-        o.layout.geometry.eight_dot = prof.geometry.eight_dot;
+        o.layout.geometry = profile::page_geometry(prof);
         auto doc = pipeline::lay_out_file(samples / file, o);
         ASSERT_TRUE(doc) << doc.error().to_string();
         auto plan = plan_job(*doc, prof);

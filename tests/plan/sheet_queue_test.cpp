@@ -19,6 +19,7 @@
 #include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
+#include "profile/page_geometry.hpp"
 
 namespace tactus::plan {
 namespace {
@@ -126,10 +127,7 @@ void expect_same(const Planned& serial, const Planned& parallel) {
 layout::PagedDocument laid_out(const fs::path& file, const char* tables, const profile::PrinterProfile& prof) {
     pipeline::PipelineOptions o;
     o.tables = tables;
-    o.layout.geometry.interpoint = prof.geometry.interpoint;
-    o.layout.geometry.cells_per_line = prof.geometry.cells_per_line;
-    o.layout.geometry.lines_per_page = prof.geometry.lines_per_page;
-    o.layout.geometry.eight_dot = prof.geometry.eight_dot;
+    o.layout.geometry = profile::page_geometry(prof);
     auto doc = pipeline::lay_out_file(file, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     return doc ? std::move(*doc) : layout::PagedDocument{};

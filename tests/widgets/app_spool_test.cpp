@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <bit>
 #include <fstream>
 
 #include "controller/builtin_sim.hpp"
@@ -24,6 +25,8 @@
 #include "profile/controller_config.hpp"
 #include "profile/profile_json.hpp"
 #include "profile_editor.hpp"
+#include "spool/print_job.hpp"
+#include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
 
 using namespace tactus;
@@ -181,6 +184,60 @@ private Q_SLOTS:
         QCOMPARE(jobs->size(), std::size_t{1});
         QCOMPARE(jobs->front().sheets_per_copy, paged.sheet_count());
         QVERIFY(paged.pages.size() > 2);  // 50 long rows do not fit on 2 pages of 24 lines
+    }
+
+    // Issue 13 item 1: a PEF of a duplex section of three pages, then a
+    // single-sided section of two, embossed from the app on interpoint paper,
+    // goes through the spool as the file's pages: the second section starts
+    // on a new sheet (sheet 2's back is blank), each page of the single-sided
+    // section has a sheet of its own, and no blank back is struck. Before, the
+    // app laid the five pages out as one stream: 3 sheets, page 4 on the back
+    // of sheet 2 and page 5 on the front of sheet 3.
+    void a_single_sided_section_starts_on_a_new_sheet_and_its_backs_are_not_struck() {
+        MainWindow w;
+        w.set_interactive(false);
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef")));
+        QVERIFY(w.profile_editor()->profile().geometry.interpoint);
+        w.printer_panel()->select_device(QStringLiteral("sim"));
+        QVERIFY(w.emboss());
+        auto s = spool::Spool::open(db_, {.create = false});
+        QVERIFY(s);
+        const auto jobs = s->jobs(true);
+        QVERIFY2(jobs, jobs ? "" : jobs.error().to_string().c_str());
+        QCOMPARE(jobs->size(), std::size_t{1});
+        QCOMPARE(jobs->front().sheets_per_copy, std::size_t{4});
+        // The pages the spool holds, planned as the runner plans them.
+        const auto snapshot = s->document_snapshot(jobs->front().id);
+        QVERIFY(snapshot);
+        const auto pages = spool::from_snapshot(*snapshot);
+        QVERIFY2(pages, pages ? "" : pages.error().to_string().c_str());
+        QCOMPARE(pages->pages.size(), std::size_t{8});
+        const auto job = spool::make_print_job(*pages, w.profile_editor()->profile(), "");
+        QVERIFY2(job, job ? "" : job.error().to_string().c_str());
+        const auto& sheets = job->plan.sheets;
+        QCOMPARE(sheets.size(), std::size_t{4});
+        std::vector<std::size_t> front(4), back(4);
+        for (std::size_t i = 0; i < sheets.size(); ++i)
+            for (const auto& pass : sheets[i].passes)
+                for (const auto& strike : pass.strikes) ++(strike.side == plan::Side::front ? front : back)[i];
+        // Sheet 1: pages 1 and 2; sheet 2: page 3 and a blank back; sheets 3
+        // and 4: pages 4 and 5, one side each.
+        for (std::size_t i = 0; i < 4; ++i) QVERIFY2(front[i] > 0, qPrintable(QStringLiteral("sheet %1 front").arg(i + 1)));
+        QVERIFY(back[0] > 0);
+        QCOMPARE(back[1], std::size_t{0});
+        QCOMPARE(back[2], std::size_t{0});
+        QCOMPARE(back[3], std::size_t{0});
+        // The strikes are the file's dots: "one two three" then "four", "five".
+        const auto dots = [](const char* utf8) {
+            std::size_t n = 0;
+            for (const auto c : QString::fromUtf8(utf8)) n += static_cast<std::size_t>(std::popcount(c.unicode() - 0x2800u));
+            return n;
+        };
+        QCOMPARE(front[0], dots("⠕⠝⠑"));
+        QCOMPARE(back[0], dots("⠞⠺⠕"));
+        QCOMPARE(front[1], dots("⠞⠓⠗⠑⠑"));
+        QCOMPARE(front[2], dots("⠋⠕⠥⠗"));
+        QCOMPARE(front[3], dots("⠋⠊⠧⠑"));
     }
 
     void quitting_while_a_job_embosses_asks_first_and_the_job_stays_queued() {

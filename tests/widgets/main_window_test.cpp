@@ -22,6 +22,9 @@
 #include "gui_test_support.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
+#include "profile/page_geometry.hpp"
+#include "profile/profile_json.hpp"
+#include "profile_editor.hpp"
 #include "main_window.hpp"
 #include "preview_panel.hpp"
 #include "table_picker.hpp"
@@ -268,6 +271,166 @@ private Q_SLOTS:
             QVERIFY(source.open(QIODevice::ReadOnly));
             QCOMPARE(app_bytes, source.readAll());
         }
+    }
+
+    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on a
+    // multi-volume one: opened in the app and exported without an edit, the
+    // PEF and BRF are byte for byte what tactus-cli writes for the same file
+    // and page (40 x 30, interpoint): the file's own cols/rows, its sections
+    // (each on a new sheet) and their duplex (a single-sided section's blank
+    // backs), its volumes, its dc: metadata. Before, the app dropped all of
+    // that: it laid the rows out on its own page as one section of one volume,
+    // with metadata of its own making.
+    void a_pef_is_exported_as_the_cli_exports_it_data() {
+        QTest::addColumn<QString>("file");
+        for (const auto* name : {"book.pef", "butterfly.pef", "8-dot-chart.pef", "margin-uneven.pef",
+                                 "flow-in-header-footer4.pef"})
+            QTest::newRow(name) << QStringLiteral(TACTUS_TEST_DATA "/pef/real/") + QLatin1String(name);
+        QTest::newRow("volumes.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef");
+        QTest::newRow("single_sided_section.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef");
+        QTest::newRow("sections.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/sections.pef");
+    }
+    void a_pef_is_exported_as_the_cli_exports_it() {
+        QFETCH(QString, file);
+        MainWindow w;
+        auto options = w.editor()->layout().options();
+        options.geometry.cells_per_line = 40;
+        options.geometry.lines_per_page = 30;
+        options.geometry.interpoint = true;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(w.open_file_now(file));
+        for (const auto* format : {"brf", "pef"}) {
+            const auto app = dir.filePath(QStringLiteral("app-real.%1").arg(QLatin1String(format)));
+            const auto cli = dir.filePath(QStringLiteral("cli-real.%1").arg(QLatin1String(format)));
+            QFile::remove(app);
+            QFile::remove(cli);
+            QProcess p;
+            p.start(QStringLiteral(TACTUS_CLI),
+                    {QStringLiteral("layout"), QStringLiteral("--to"), QLatin1String(format), QStringLiteral("--cells"),
+                     QStringLiteral("40"), QStringLiteral("--lines"), QStringLiteral("30"), QStringLiteral("--interpoint"),
+                     file, QStringLiteral("-o"), cli});
+            QVERIFY(p.waitForFinished(60000));
+            const bool exported = w.export_to(app);
+            if (p.exitCode() != 0) {
+                // An 8-dot file as BRF: refused by both.
+                QCOMPARE(QLatin1String(format), QLatin1String("brf"));
+                QVERIFY(!exported);
+                continue;
+            }
+            QVERIFY(exported);
+            QFile a(app), c(cli);
+            QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+            QCOMPARE(a.readAll(), c.readAll());
+        }
+    }
+
+    // A multi-volume PEF through the app: edited (a row changed, a page of
+    // volume 2 deleted, a row added to the last page), its volumes, sections,
+    // duplex and metadata are still there; only the edited rows differ.
+    void an_edited_pef_keeps_its_volumes_sections_and_metadata() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef")));
+        auto* print = w.editor()->print_pane();
+        const auto lines = print->toPlainText().split(QLatin1Char('\n'));
+        // Volume 2's second page: its page break line and its row.
+        const auto five = lines.indexOf(QStringLiteral("⠋⠊⠧⠑"));
+        QVERIFY(five > 0);
+        QCOMPARE(lines[five - 1], QStringLiteral("<!-- braillepage -->"));
+        QTextCursor c(print->document()->findBlockByNumber(static_cast<int>(five - 1)));
+        c.movePosition(QTextCursor::NextBlock, QTextCursor::KeepAnchor, 2);
+        c.removeSelectedText();  // the page break and the row: the page is gone
+        // A row changed in volume 1 ("two" -> "twoo"), a row added on the last page.
+        const auto two = print->toPlainText().split(QLatin1Char('\n')).indexOf(QStringLiteral("⠞⠺⠕"));
+        QVERIFY(two > 0);
+        QTextCursor t(print->document()->findBlockByNumber(static_cast<int>(two)));
+        t.movePosition(QTextCursor::EndOfBlock);
+        t.insertText(QStringLiteral("⠕"));
+        QTextCursor end(print->document());
+        end.movePosition(QTextCursor::End);
+        end.insertText(QStringLiteral("\n⠑⠝⠙"));
+        const auto app = dir.filePath(QStringLiteral("volumes-edited.pef"));
+        QVERIFY(w.export_to(app));
+        QFile a(app);
+        QVERIFY(a.open(QIODevice::ReadOnly));
+        const auto xml = QString::fromUtf8(a.readAll());
+        QCOMPARE(xml.count(QStringLiteral("<volume ")), 3);
+        QCOMPARE(xml.count(QStringLiteral("<section")), 4);
+        QCOMPARE(xml.count(QStringLiteral("<page")), 6);
+        QVERIFY2(xml.contains(QStringLiteral("<section duplex=\"false\">")), qPrintable(xml));
+        QVERIFY2(xml.contains(QStringLiteral("<dc:identifier>org.example.tactus.volumes-2026</dc:identifier>")), qPrintable(xml));
+        QVERIFY2(xml.contains(QStringLiteral("<dc:creator>Tactus test suite</dc:creator>")), qPrintable(xml));
+        QVERIFY2(xml.contains(QStringLiteral("<row>⠞⠺⠕⠕</row>")), qPrintable(xml));
+        QVERIFY2(!xml.contains(QStringLiteral("⠋⠊⠧⠑")), qPrintable(xml));
+        QVERIFY2(xml.contains(QStringLiteral("<row>⠇⠁⠌</row>\n          <row>⠑⠝⠙</row>")), qPrintable(xml));
+        QVERIFY2(xml.contains(QStringLiteral("cols=\"12\" rows=\"5\"")), qPrintable(xml));
+
+        // Every edit undone: the file as the CLI writes it again, structure and all.
+        auto* undo = w.editor()->undo_stack();
+        while (undo->canUndo()) undo->undo();
+        const auto undone = dir.filePath(QStringLiteral("volumes-undone.pef"));
+        const auto cli = dir.filePath(QStringLiteral("volumes-cli.pef"));
+        QVERIFY(w.export_to(undone));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("pef"),
+                                             QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef"), QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile u(undone), from_cli(cli);
+        QVERIFY(u.open(QIODevice::ReadOnly) && from_cli.open(QIODevice::ReadOnly));
+        QCOMPARE(u.readAll(), from_cli.readAll());
+    }
+
+    // Print text typed into a PEF: the app says, once, that the braille is laid
+    // out again and its own pages are no longer kept; taken out, that they are kept again.
+    void typing_print_into_a_pef_says_its_pages_are_laid_out_again() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef")));
+        QVERIFY(w.editor()->layout().pages_kept());
+        QCOMPARE(w.editor()->layout().paged().sheet_count(), std::size_t{4});
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document());
+        c.movePosition(QTextCursor::End);
+        c.insertText(QStringLiteral("\nPrint text"));
+        QVERIFY(!w.editor()->layout().pages_kept());
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("laid out again")), qPrintable(w.announcer()->message()));
+        w.editor()->undo_stack()->undo();
+        QVERIFY(w.editor()->layout().pages_kept());
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("kept again")), qPrintable(w.announcer()->message()));
+        QCOMPARE(w.editor()->layout().paged().sheet_count(), std::size_t{4});
+    }
+
+    // The document is laid out for the printer's page: a profile with narrower,
+    // shorter pages lays it out again, as tactus-cli lays it out for that
+    // page. The app kept 27 x 24 whatever profile was loaded, so its lines were
+    // wider than the machine's page.
+    void a_loaded_profile_lays_the_document_out_for_its_page() {
+        auto machine = profile::default_profile();
+        machine.geometry.cells_per_line = 20;
+        machine.geometry.lines_per_page = 22;
+        const auto profile_path = dir.filePath(QStringLiteral("narrow.json"));
+        const auto saved = profile::save_profile(machine, profile_path.toStdString());
+        QVERIFY2(saved, saved ? "" : saved.error().to_string().c_str());
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QVERIFY(w.profile_editor()->load(profile_path));
+        const auto& paged = w.editor()->layout().paged();
+        QCOMPARE(paged.geometry, profile::page_geometry(machine));
+        for (const auto& page : paged.pages) {
+            QVERIFY(page.lines.size() <= 22);
+            for (const auto& line : page.lines) QVERIFY(line.size() <= 20);
+        }
+        const auto app = dir.filePath(QStringLiteral("narrow-app.brf"));
+        const auto cli = dir.filePath(QStringLiteral("narrow-cli.brf"));
+        QVERIFY(w.export_to(app));
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--to"), QStringLiteral("brf"),
+                                             QStringLiteral("--cells"), QStringLiteral("20"), QStringLiteral("--lines"),
+                                             QStringLiteral("22"), test::sample("welcome.md"), QStringLiteral("-o"), cli});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QFile a(app), c(cli);
+        QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
+        QCOMPARE(a.readAll(), c.readAll());
     }
 
     void save_and_reopen_round_trip() {
