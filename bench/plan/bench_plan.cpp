@@ -10,10 +10,12 @@
 
 #include <bit>
 #include <chrono>
+#include <cstdlib>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
@@ -45,6 +47,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: %s BOOK.txt [TABLE]\n", argv[0]);
         return 2;
     }
+    // The 1-minute load average before and after: on a shared machine the
+    // wall times mean little without it (CPU times are steadier).
+    double load_before[1] = {-1};
+    if (::getloadavg(load_before, 1) < 1) load_before[0] = -1;
     const auto prof = profile::default_profile();
     pipeline::PipelineOptions options;
     if (argc > 2) options.tables = argv[2];
@@ -147,6 +153,10 @@ int main(int argc, char** argv) {
 
     rusage self{};
     ::getrusage(RUSAGE_SELF, &self);
+    double load_after[1] = {-1};
+    if (::getloadavg(load_after, 1) < 1) load_after[0] = -1;
+    std::printf("load:                 %.2f before, %.2f after (1-minute load average; %u cores)\n", load_before[0],
+                load_after[0], std::thread::hardware_concurrency());
     std::printf("book:                 %s: %zu pages on %zu sheets, %zu passes, %zu strikes\n", argv[1],
                 doc->pages.size(), doc->sheet_count(), passes, t.strikes);
     std::printf("layout:               %.3f s (best of %d, alternating with the plan)\n", layout_s, rounds);

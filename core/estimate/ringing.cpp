@@ -10,10 +10,6 @@
 #include <tuple>
 #include <unordered_map>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
 
@@ -72,38 +68,16 @@ Model make_model(const StateSpace& s, double dwell_s) {
     return m;
 }
 
-// The hot loops of planning (per strike, per machine) below are written out
-// so that every element is computed by the same operations in the same order
-// as the plain loop (one IEEE multiply or add at a time, no reassociation),
-// two elements per SSE2 instruction: the same bits, in half the instructions.
-// `off` (mm) is where the command rests past the dot the hammer must hit
-// (command minus dot): the error is then head minus dot, rows z + off.
-double error_um(const Model& m, const Vec4& z, double off = 0.0) {
-    const double* c = m.rows.data();  // column-major, kSamples + 1 rows
-    constexpr int n = kSamples + 1;
-    double worst = 0;
-    int r = 0;
-#if defined(__SSE2__)
-    const __m128d z0 = _mm_set1_pd(z[0]), z1 = _mm_set1_pd(z[1]), z2 = _mm_set1_pd(z[2]), z3 = _mm_set1_pd(z[3]);
-    const __m128d sign = _mm_set1_pd(-0.0), o = _mm_set1_pd(off);
-    __m128d w = _mm_setzero_pd();
-    for (; r + 1 < n; r += 2) {
-        __m128d e = _mm_mul_pd(_mm_loadu_pd(c + r), z0);
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + n + r), z1));
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 2 * n + r), z2));
-        e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(c + 3 * n + r), z3));
-        e = _mm_add_pd(e, o);  // + 0.0 leaves e as it was
-        w = _mm_max_pd(w, _mm_andnot_pd(sign, e));  // |e|
-    }
-    alignas(16) double lanes[2];
-    _mm_store_pd(lanes, w);
-    worst = std::max(lanes[0], lanes[1]);
-#endif
-    for (; r < n; ++r)
-        worst = std::max(worst,
-                         std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3] + off));
-    return 1000.0 * worst;
-}
+// Defined with the per-strike kernels (below): the largest |rows z + off| over
+// the dwell samples, four rows per AVX2 instruction (two per SSE2 one in the
+// baseline clone), every element computed by the same operations in the same
+// order as the plain loop (one IEEE multiply or add at a time, no fused
+// multiply-add, no reassociation): the same bits. `off` (mm) is where the
+// command rests past the dot the hammer must hit (command minus dot): the
+// error is then head minus dot, rows z + off.
+double error_kernel(const double* c, const double* z, double off);
+
+double error_um(const Model& m, const Vec4& z, double off = 0.0) { return error_kernel(m.rows.data(), z.data(), off); }
 
 // A bound on error_um(m, z, off) / 1000 without sampling: every row's
 // product rows(i) z lies between the sums of the columns' smallest and largest
@@ -124,11 +98,115 @@ Vec4 after_ticks(const Model& m, Vec4 z, std::uint64_t ticks) {
     return z;
 }
 
+// The per-strike work across the models, element by element: the models'
+// states side by side (z_soa[r * kPad + i], state r of model i), so one
+// vector instruction handles four models, each lane computing exactly what
+// the per-model code computes (the same IEEE multiplies and adds in the same
+// order; no fused multiply-add: the AVX2 clone below does not enable FMA).
+// Compiled twice (AVX2 and the baseline) and chosen at load time where the
+// compiler supports it.
+// band_variants' grid: damping x 5 values, natural frequency x 9.
+constexpr int kDampingValues = 5, kFrequencyValues = 9;
+// The models (the nominal one and the band's) rounded up to a multiple of 8.
+constexpr std::size_t kPad = (1 + kDampingValues * kFrequencyValues + 7) / 8 * 8;
+using V4 = double __attribute__((vector_size(32)));
+using U4 = std::uint64_t __attribute__((vector_size(32)));
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TACTUS_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define TACTUS_SIMD_CLONES
+#endif
+
+// z <- phi z + sign w, per model (Ringing::move).
+TACTUS_SIMD_CLONES void move_kernel(double* z, const double* phi, const double* w, double sign, std::size_t n) {
+    V4 sg;
+    for (int l = 0; l < 4; ++l) sg[l] = sign;
+    for (std::size_t i = 0; i < n; i += 4) {
+        V4 z0, z1, z2, z3;
+        __builtin_memcpy(&z0, z + 0 * kPad + i, sizeof(V4));
+        __builtin_memcpy(&z1, z + 1 * kPad + i, sizeof(V4));
+        __builtin_memcpy(&z2, z + 2 * kPad + i, sizeof(V4));
+        __builtin_memcpy(&z3, z + 3 * kPad + i, sizeof(V4));
+        for (std::size_t r = 0; r < 4; ++r) {
+            V4 m0, m1, m2, m3, ww;
+            __builtin_memcpy(&m0, phi + (0 * 4 + r) * kPad + i, sizeof(V4));
+            __builtin_memcpy(&m1, phi + (1 * 4 + r) * kPad + i, sizeof(V4));
+            __builtin_memcpy(&m2, phi + (2 * 4 + r) * kPad + i, sizeof(V4));
+            __builtin_memcpy(&m3, phi + (3 * 4 + r) * kPad + i, sizeof(V4));
+            __builtin_memcpy(&ww, w + r * kPad + i, sizeof(V4));
+            V4 e = m0 * z0;
+            e = e + m1 * z1;
+            e = e + m2 * z2;
+            e = e + m3 * z3;
+            e = e + sg * ww;
+            __builtin_memcpy(z + r * kPad + i, &e, sizeof(V4));
+        }
+    }
+}
+
+// sample_bound for every model at once (bound[i] for model i).
+TACTUS_SIMD_CLONES void bound_kernel(const double* z, const double* cmax, const double* cmin, double off,
+                                     double* bound, std::size_t n) {
+    V4 o;
+    for (int l = 0; l < 4; ++l) o[l] = off;
+    U4 abs_mask;
+    for (int l = 0; l < 4; ++l) abs_mask[l] = 0x7FFFFFFFFFFFFFFFULL;
+    for (std::size_t i = 0; i < n; i += 4) {
+        V4 hi = o, lo = o;
+        for (std::size_t j = 0; j < 4; ++j) {
+            V4 zj, mx, mn;
+            __builtin_memcpy(&zj, z + j * kPad + i, sizeof(V4));
+            __builtin_memcpy(&mx, cmax + j * kPad + i, sizeof(V4));
+            __builtin_memcpy(&mn, cmin + j * kPad + i, sizeof(V4));
+            const V4 a = zj * mx, b = zj * mn;
+            hi = hi + (a < b ? b : a);  // std::max(a, b)
+            lo = lo + (b < a ? b : a);  // std::min(a, b)
+        }
+        U4 uh, ul;  // |hi|, |lo|: the sign bit cleared, as std::fabs
+        __builtin_memcpy(&uh, &hi, sizeof(V4));
+        __builtin_memcpy(&ul, &lo, sizeof(V4));
+        uh &= abs_mask;
+        ul &= abs_mask;
+        V4 ah, al;
+        __builtin_memcpy(&ah, &uh, sizeof(V4));
+        __builtin_memcpy(&al, &ul, sizeof(V4));
+        const V4 r = ah < al ? al : ah;  // std::max(|hi|, |lo|)
+        __builtin_memcpy(bound + i, &r, sizeof(V4));
+    }
+}
+
+TACTUS_SIMD_CLONES double error_kernel(const double* c, const double* z, double off) {
+    constexpr std::size_t n = kSamples + 1;  // rows, column-major
+    V4 z0, z1, z2, z3, o, w;
+    for (int l = 0; l < 4; ++l) z0[l] = z[0], z1[l] = z[1], z2[l] = z[2], z3[l] = z[3], o[l] = off, w[l] = 0.0;
+    std::size_t r = 0;
+    for (; r + 4 <= n; r += 4) {
+        V4 c0, c1, c2, c3;
+        __builtin_memcpy(&c0, c + r, sizeof(V4));
+        __builtin_memcpy(&c1, c + n + r, sizeof(V4));
+        __builtin_memcpy(&c2, c + 2 * n + r, sizeof(V4));
+        __builtin_memcpy(&c3, c + 3 * n + r, sizeof(V4));
+        V4 e = c0 * z0;
+        e = e + c1 * z1;
+        e = e + c2 * z2;
+        e = e + c3 * z3;
+        e = e + o;                    // + 0.0 leaves e as it was
+        const V4 a = e < 0 ? -e : e;  // |e| (a zero's sign does not matter to the largest)
+        w = w < a ? a : w;
+    }
+    double worst = std::max(std::max(w[0], w[1]), std::max(w[2], w[3]));
+    for (; r < n; ++r)
+        worst = std::max(worst,
+                         std::fabs(c[r] * z[0] + c[n + r] * z[1] + c[2 * n + r] * z[2] + c[3 * n + r] * z[3] + off));
+    return 1000.0 * worst;
+}
+
 }  // namespace
 
 std::vector<ModelVariant> band_variants(const profile::Vibration& v) {
     std::vector<ModelVariant> out;
-    constexpr int nd = 5, nf = 9;
+    constexpr int nd = kDampingValues, nf = kFrequencyValues;
     for (int i = 0; i < nd; ++i)
         for (int j = 0; j < nf; ++j)
             out.push_back({1 - v.damping_band + 2 * v.damping_band * i / (nd - 1),
@@ -137,15 +215,53 @@ std::vector<ModelVariant> band_variants(const profile::Vibration& v) {
 }
 
 struct Ringing::Move {
-    std::vector<Mat4> phi;    // per model: exp(A T)
-    std::vector<Mat4> phi_d;  // the same after a dwell: exp(A T) exp(A dwell)
-    std::vector<Vec4> w;
+    // Per model, while the move is made (emptied by lay_out_soa): exp(A T),
+    // and the same after a dwell, exp(A T) exp(A dwell).
+    std::vector<Mat4> phi, phi_d;
+    std::vector<Vec4> w;  // per model
+    // The same numbers laid out for Ringing::move (the hot loop): element by
+    // element across the models, kPad models per element
+    // (phi_soa[(c * 4 + r) * kPad + i] = phi[i](r, c); padding 0).
+    std::vector<double> phi_soa, phi_d_soa, w_soa;
 };
+
+namespace {
+// Model i's matrix from its element-by-element layout.
+Mat4 matrix_of(const std::vector<double>& soa, std::size_t i) {
+    Mat4 m;
+    double* p = m.data();
+    for (std::size_t e = 0; e < 16; ++e) p[e] = soa[e * kPad + i];
+    return m;
+}
+
+// Fills a move's *_soa from its per-model numbers, and frees its per-model
+// matrices (kept once: a tuned move is kept for the whole plan).
+void lay_out_soa(Ringing::Move& mv) {
+    mv.phi_soa.assign(16 * kPad, 0.0);
+    mv.phi_d_soa.assign(16 * kPad, 0.0);
+    mv.w_soa.assign(4 * kPad, 0.0);
+    for (std::size_t i = 0; i < mv.phi.size(); ++i) {
+        const double* p = mv.phi[i].data();  // column-major: p[c * 4 + r]
+        const double* pd = mv.phi_d[i].data();
+        for (std::size_t e = 0; e < 16; ++e) {
+            mv.phi_soa[e * kPad + i] = p[e];
+            mv.phi_d_soa[e * kPad + i] = pd[e];
+        }
+        for (std::size_t r = 0; r < 4; ++r) mv.w_soa[r * kPad + i] = mv.w[i][static_cast<Eigen::Index>(r)];
+    }
+    std::vector<Mat4>().swap(mv.phi);
+    std::vector<Mat4>().swap(mv.phi_d);
+}
+}  // namespace
 
 struct Ringing::Impl {
     std::vector<Model> models;  // [0] nominal, then the band
     mutable std::vector<MoveSimulator> sims;  // one per model: their matrix exponentials are cached
-    std::vector<Vec4> z;
+    // The head's error state of every model, element by element (z_soa[r *
+    // kPad + i]: state r of model i; padding 0). z() and set_z() convert.
+    std::vector<double> z_soa = std::vector<double>(4 * kPad, 0.0);
+    std::vector<double> cmax_soa = std::vector<double>(4 * kPad, 0.0), cmin_soa = std::vector<double>(4 * kPad, 0.0);
+    mutable std::vector<double> bounds = std::vector<double>(kPad, 0.0);
     bool dwell_pending = false;  // the last dwell not yet applied (folded into the next move)
     std::unordered_map<std::uint64_t, std::vector<Mat4>> rests;
     // prepare_step_train: per (kind of piece, interval in ticks, steps per mm),
@@ -157,8 +273,7 @@ struct Ringing::Impl {
     [[nodiscard]] bool within(const std::vector<Vec4>& zs, std::uint64_t ticks, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             const Vec4 zz = after_ticks(m, zs[i], ticks);
             if (sample_bound(m, zz, off) <= target_mm) continue;  // cannot exceed: no need to sample
@@ -174,8 +289,7 @@ struct Ringing::Impl {
     [[nodiscard]] bool passes(const std::vector<Vec4>& zs, double target_um, double off) const {
         const std::size_t nb = models.size() - 1;
         const double target_mm = target_um / 1000.0;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             if (sample_bound(m, zs[i], off) <= target_mm) continue;
             if (error_um(m, zs[i], off) > target_um) {
@@ -220,18 +334,46 @@ struct Ringing::Impl {
         return static_cast<std::int64_t>(lo + 1);
     }
 
+    [[nodiscard]] Vec4 z_of(std::size_t i) const {
+        return {z_soa[i], z_soa[kPad + i], z_soa[2 * kPad + i], z_soa[3 * kPad + i]};
+    }
+    void set_z(std::size_t i, const Vec4& v) {
+        for (std::size_t r = 0; r < 4; ++r) z_soa[r * kPad + i] = v[static_cast<Eigen::Index>(r)];
+    }
+    [[nodiscard]] std::vector<Vec4> z() const {
+        std::vector<Vec4> out(models.size());
+        for (std::size_t i = 0; i < models.size(); ++i) out[i] = z_of(i);
+        return out;
+    }
+
     void apply_dwell() {
         if (!dwell_pending) return;
-        for (std::size_t i = 0; i < z.size(); ++i) z[i] = models[i].dwell * z[i];
+        for (std::size_t i = 0; i < models.size(); ++i) set_z(i, models[i].dwell * z_of(i));
         dwell_pending = false;
+    }
+
+    // residual() on the state as it is, the band's bounds computed for every model at once.
+    [[nodiscard]] Residual residual_here(double off) const {
+        Residual r;
+        r.nominal_um = error_um(models[0], z_of(0), off);
+        bound_kernel(z_soa.data(), cmax_soa.data(), cmin_soa.data(), off, bounds.data(), kPad);
+        const std::size_t nb = models.size() - 1;
+        // The one that was worst last, first (then on, wrapping round).
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
+            if (1000.0 * bounds[i] <= r.worst_um) continue;  // cannot be the worst
+            const double e = error_um(models[i], z_of(i), off);
+            if (e > r.worst_um) r.worst_um = e, worst_model = i;
+        }
+        first = worst_model;
+        return r;
     }
 
     [[nodiscard]] Residual residual(const std::vector<Vec4>& zs, double off) const {
         Residual r;
         r.nominal_um = error_um(models[0], zs[0], off);
         const std::size_t nb = models.size() - 1;
-        for (std::size_t k = 0; k < nb; ++k) {
-            const std::size_t i = 1 + (first - 1 + k) % nb;  // the one that was worst last, first
+        // The one that was worst last, first (then on, wrapping round).
+        for (std::size_t k = 0, i = first; k < nb; ++k, i = i == nb ? 1 : i + 1) {
             const Model& m = models[i];
             if (1000.0 * sample_bound(m, zs[i], off) <= r.worst_um) continue;  // cannot be the worst
             const double e = error_um(m, zs[i], off);
@@ -247,6 +389,11 @@ Ringing::Ringing(const profile::PrinterProfile& p) : impl_(std::make_unique<Impl
     for (const auto& v : band_variants(p.vibration))
         impl_->models.push_back(make_model(build_model(p.dynamics, v), p.head.dwell_s));
     for (const auto& m : impl_->models) impl_->sims.emplace_back(m.space);
+    for (std::size_t i = 0; i < impl_->models.size(); ++i)
+        for (std::size_t j = 0; j < 4; ++j) {
+            impl_->cmax_soa[j * kPad + i] = impl_->models[i].cmax[static_cast<Eigen::Index>(j)];
+            impl_->cmin_soa[j * kPad + i] = impl_->models[i].cmin[static_cast<Eigen::Index>(j)];
+        }
     reset();
 }
 Ringing::~Ringing() = default;
@@ -266,6 +413,7 @@ std::shared_ptr<const Ringing::Move> Ringing::prepare(const motion::MoveShape& s
         mv->phi.push_back(expm(m.a, shape.duration));
         mv->phi_d.push_back(mv->phi.back() * m.dwell);
     }
+    lay_out_soa(*mv);
     return mv;
 }
 
@@ -375,54 +523,35 @@ std::shared_ptr<const Ringing::Move> Ringing::prepare_step_train(std::span<const
         mv->phi.push_back(expm(m.a, duration));
         mv->phi_d.push_back(mv->phi.back() * m.dwell);
     }
+    lay_out_soa(*mv);
     return mv;
 }
 
 std::shared_ptr<const Ringing::Move> Ringing::then_rest(const Move& mv, std::uint64_t ticks) const {
-    auto out = std::make_shared<Move>(mv);
+    auto out = std::make_shared<Move>();
+    out->w = mv.w;
     for (std::size_t i = 0; i < impl_->models.size(); ++i) {
         Mat4 e = Mat4::Identity();
         for (std::uint64_t t = ticks, k = 0; t != 0; ++k, t >>= 1)
             if (t & 1U) e = impl_->models[i].pow2[k] * e;
-        out->phi[i] = e * mv.phi[i];
-        out->phi_d[i] = e * mv.phi_d[i];
+        out->phi.push_back(e * matrix_of(mv.phi_soa, i));
+        out->phi_d.push_back(e * matrix_of(mv.phi_d_soa, i));
         out->w[i] = e * mv.w[i];
     }
+    lay_out_soa(*out);
     return out;
 }
 
 void Ringing::reset() {
-    impl_->z.assign(impl_->models.size(), Vec4::Zero());
+    std::fill(impl_->z_soa.begin(), impl_->z_soa.end(), 0.0);
     impl_->dwell_pending = false;
 }
 
 void Ringing::move(const Move& mv, int dir) {
     auto& s = *impl_;
-    const auto& phi = s.dwell_pending ? mv.phi_d : mv.phi;
-    const double sign = dir;
-    // The hot loop of planning: written out so that it compiles to plain
-    // multiply-adds over the columns (Eigen's product was 3x slower here).
-    for (std::size_t i = 0; i < s.z.size(); ++i) {
-        const double* m = phi[i].data();  // column-major
-        const double* w = mv.w[i].data();
-        double* out = s.z[i].data();
-#if defined(__SSE2__)
-        const __m128d z0 = _mm_set1_pd(out[0]), z1 = _mm_set1_pd(out[1]), z2 = _mm_set1_pd(out[2]),
-                      z3 = _mm_set1_pd(out[3]), sg = _mm_set1_pd(sign);
-        for (int r = 0; r < 4; r += 2) {
-            __m128d e = _mm_mul_pd(_mm_loadu_pd(m + r), z0);
-            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 4 + r), z1));
-            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 8 + r), z2));
-            e = _mm_add_pd(e, _mm_mul_pd(_mm_loadu_pd(m + 12 + r), z3));
-            e = _mm_add_pd(e, _mm_mul_pd(sg, _mm_loadu_pd(w + r)));
-            _mm_storeu_pd(out + r, e);
-        }
-#else
-        const double z0 = out[0], z1 = out[1], z2 = out[2], z3 = out[3];
-        for (int r = 0; r < 4; ++r)
-            out[r] = m[r] * z0 + m[4 + r] * z1 + m[8 + r] * z2 + m[12 + r] * z3 + sign * w[r];
-#endif
-    }
+    // The hot loop of planning, on every model at once (move_kernel).
+    move_kernel(s.z_soa.data(), s.dwell_pending ? mv.phi_d_soa.data() : mv.phi_soa.data(), mv.w_soa.data(),
+                static_cast<double>(dir), kPad);
     s.dwell_pending = false;
 }
 
@@ -438,13 +567,13 @@ void Ringing::rest(double seconds) {
         for (const auto& m : s.models) e.push_back(expm(m.a, seconds));
         it = s.rests.emplace(key, std::move(e)).first;
     }
-    for (std::size_t i = 0; i < s.z.size(); ++i) s.z[i] = it->second[i] * s.z[i];
+    for (std::size_t i = 0; i < s.models.size(); ++i) s.set_z(i, it->second[i] * s.z_of(i));
 }
 
 void Ringing::rest_ticks(std::uint64_t ticks) {
     auto& s = *impl_;
     s.apply_dwell();
-    for (std::size_t i = 0; i < s.z.size(); ++i) s.z[i] = after_ticks(s.models[i], s.z[i], ticks);
+    for (std::size_t i = 0; i < s.models.size(); ++i) s.set_z(i, after_ticks(s.models[i], s.z_of(i), ticks));
 }
 
 void Ringing::dwell() {
@@ -454,17 +583,17 @@ void Ringing::dwell() {
 
 Ringing::Residual Ringing::residual(double offset_mm) {
     impl_->apply_dwell();
-    return impl_->residual(impl_->z, offset_mm);
+    return impl_->residual_here(offset_mm);
 }
 
 bool Ringing::within_after(std::uint64_t ticks, double target_um, double offset_mm) {
     impl_->apply_dwell();
-    return impl_->within(impl_->z, ticks, target_um, offset_mm);
+    return impl_->within(impl_->z(), ticks, target_um, offset_mm);
 }
 
 std::int64_t Ringing::settle_ticks(double target_um, std::uint64_t from, std::uint64_t max_ticks, double offset_mm) {
     impl_->apply_dwell();
-    return impl_->settle(impl_->z, target_um, from, max_ticks, offset_mm);
+    return impl_->settle(impl_->z(), target_um, from, max_ticks, offset_mm);
 }
 
 std::int64_t Ringing::settle_after(const Move& mv, double target_um, std::uint64_t max_ticks, double offset_mm) const {

@@ -133,13 +133,41 @@ Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, c
     // carrying the dot's index, then the dots are gathered: std::sort's moves
     // depend only on its comparisons, which give the same answers as on the
     // dots, so the order is the same, ties included.
+    sorted.resize(hits.size());
+    // First as one 64-bit integer per dot (feed, carriage, index, from the
+    // smallest of each): when no two dots share both positions, the order is
+    // the only one sorted by position, whatever sorts it.
+    thread_local std::vector<std::uint64_t> packed;
+    if (!hits.empty() && hits.size() < (std::size_t{1} << 24)) {
+        std::int32_t feed_min = hits[0].feed_step, feed_max = feed_min, head_min = hits[0].head_step,
+                     head_max = head_min;
+        for (const auto& h : hits) {
+            feed_min = std::min(feed_min, h.feed_step), feed_max = std::max(feed_max, h.feed_step);
+            head_min = std::min(head_min, h.head_step), head_max = std::max(head_max, h.head_step);
+        }
+        constexpr std::int64_t kRange = std::int64_t{1} << 20;
+        if (std::int64_t{feed_max} - feed_min < kRange && std::int64_t{head_max} - head_min < kRange) {
+            packed.resize(hits.size());
+            for (std::size_t i = 0; i < hits.size(); ++i)
+                packed[i] = static_cast<std::uint64_t>(hits[i].feed_step - feed_min) << 44 |
+                            static_cast<std::uint64_t>(hits[i].head_step - head_min) << 24 | i;
+            std::sort(packed.begin(), packed.end());
+            bool tie = false;
+            for (std::size_t i = 1; i < packed.size() && !tie; ++i) tie = packed[i] >> 24 == packed[i - 1] >> 24;
+            if (!tie) {
+                for (std::size_t i = 0; i < packed.size(); ++i) sorted[i] = hits[packed[i] & 0xFFFFFF];
+                return &sorted;
+            }
+        }
+    }
+    // Dots that share both positions: their order is what std::sort leaves
+    // them in, as it always was.
     keys.resize(hits.size());
     for (std::size_t i = 0; i < hits.size(); ++i)
         keys[i] = {hits[i].feed_step, hits[i].head_step, static_cast<std::uint32_t>(i)};
     std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
         return a.feed_step != b.feed_step ? a.feed_step < b.feed_step : a.head_step < b.head_step;
     });
-    sorted.resize(hits.size());
     for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = hits[keys[i].index];
     return &sorted;
 }
@@ -408,7 +436,8 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
             // bound moves dot to dot.
             const std::int32_t dot = hit.head_step, dot_cur = head_cur_ - aim_cur_;
             const std::int32_t aim_steps = o_.firmware ? 0 : tuner_->aim_steps();
-            const double head_mm = std::abs(dot - dot_cur) / p_.carriage.steps_per_mm;
+            const auto head_steps = static_cast<std::uint32_t>(std::abs(dot - dot_cur));
+            const double head_mm = head_steps / p_.carriage.steps_per_mm;
             const std::int32_t n = head_move(head_prev_, head_cur_, aim_cur_, dot, aim_steps, backlash);
             // Where the command rests past the dot: the residual is |head - dot|.
             const double off_mm = aim_cur_ / p_.carriage.steps_per_mm;
@@ -488,7 +517,10 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
             if (!sm) return std::unexpected(sm.error());
             sm->steps = n;
             pass.segments += sm->segments.size();
-            const double bound = motion::jerk_min_time(head_mm, carriage_lim);
+            // The time-optimal move dot to dot, by its length in steps (the same function of it).
+            if (head_steps >= bound_cache_.size()) bound_cache_.resize(head_steps + 1, -1.0);
+            double& bound = bound_cache_[head_steps];
+            if (bound < 0) bound = motion::jerk_min_time(head_mm, carriage_lim);
             double lead = 0;  // what the clock advances before the strike
             if (k == 0 && o_.firmware) {
                 // The firmware feeds first, then moves the carriage.

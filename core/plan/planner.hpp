@@ -116,6 +116,7 @@ private:
     std::vector<const estimate::TunedMove*> tuned_;  // by carriage steps: the tuner's choices, looked up once
     motion::StepAxis carriage_axis_, feed_axis_;
     std::vector<std::optional<motion::StepMove>> carriage_cache_;  // by carriage steps
+    std::vector<double> bound_cache_;  // the lower bound's carriage move time by steps dot to dot (-1: not yet)
     // A SheetQueue's planners share the carriage moves they encode (thread-safe).
     struct MoveCache;
     std::shared_ptr<MoveCache> shared_moves_;
