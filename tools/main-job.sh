@@ -12,7 +12,9 @@ mkdir -p out
 "$cli" layout --interpoint --to pef -o out/welcome.pef resources/samples/welcome.md
 "$cli" layout --interpoint --summary resources/samples/welcome.md
 # Emboss it on the built-in simulated controller (exit 0 only when the controller
-# has confirmed executing every pass); the last lines are the summary.
+# has confirmed executing every pass); the last lines are the summary. It speaks
+# protocol 3 with the ramp tables the firmware would be built with from the same
+# profile (the summary ends "(protocol 3)"; sim?protocol=2 for the older one).
 "$cli" emboss --device "sim?speed=max" resources/samples/welcome.md | tail -n 2
 
 # The same host on the real controller code: the reference firmware (firmware/,

@@ -33,6 +33,7 @@
 #include "link/fault_words.hpp"
 #include "link/link.hpp"
 #include "profile/controller_config.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/db_path.hpp"
 #include "spool/printer_setup.hpp"
@@ -129,20 +130,25 @@ spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, li
             auto spec = transport::parse_device(p.device);
             auto settings = spec ? transport::sim_settings(*spec) : std::unexpected(spec.error());
             if (!settings) return std::unexpected(settings.error());
-            return link::Link::over(sim->connect(*settings), options);
+            // The built-in simulator runs the firmware the printer's profile makes.
+            auto stream = sim->connect(*settings, spool::printer_firmware_tables(p));
+            if (!stream) return std::unexpected(stream.error());
+            return link::Link::over(std::move(*stream), options);
         }
-        return link::Link::open(p.device, options);
+        return spool::open_printer(p, options);
     };
 }
 
 // The strikes of a job's last stream as the built-in simulator logged them,
 // against the plan (planned again with the printer's profile, as the runner did).
+// `firmware`: the tables the simulator ran the job with (protocol 3).
 QString strike_check(const std::string& document, const std::string& profile_json, const spool::JobRecord& job,
-                     const std::vector<controller::LoggedStrike>& logged) {
+                     const std::vector<controller::LoggedStrike>& logged,
+                     const std::optional<machine::FirmwareTables>& firmware) {
     auto doc = spool::from_snapshot(document);
     auto prof = profile::parse_profile(profile_json);
     if (!doc || !prof) return {};
-    auto plan = spool::plan_copies(*doc, *prof, job.copies);
+    auto plan = spool::plan_copies(*doc, *prof, job.copies, firmware ? &*firmware : nullptr);
     if (!plan || !job.link_job) return {};
     const auto from = std::max<std::size_t>(job.run_start_sheet, 1);
     std::vector<controller::LoggedStrike> expected;
@@ -359,7 +365,15 @@ void PrinterPanel::set_profile_source(std::function<profile::PrinterProfile()> s
 }
 
 controller::BuiltInSimulator& PrinterPanel::simulator() {
-    if (!sim_) sim_ = std::make_shared<controller::BuiltInSimulator>();
+    if (!sim_) {
+        // It runs the reference firmware built from the app's profile
+        // (protocol 3); a printer with another profile reflashes it when it
+        // connects (BuiltInSimulator::connect).
+        auto options = controller::BuiltInSimulator::default_options();
+        const auto prof = profile_source_ ? profile_source_() : profile::default_profile();
+        if (auto t = profile::make_firmware_tables(prof)) options.firmware = std::move(*t);
+        sim_ = std::make_shared<controller::BuiltInSimulator>(options);
+    }
     return *sim_;
 }
 
@@ -965,8 +979,8 @@ void PrinterPanel::check_strikes(const spool::JobRecord& j) {
         Q_EMIT job_finished(id, true, text);
     });
     watcher->setFuture(QtConcurrent::run(
-        [document = *doc, profile = printer->profile_json, j, strikes = sim_->strikes()] {
-            return strike_check(document, profile, j, strikes);
+        [document = *doc, profile = printer->profile_json, j, strikes = sim_->strikes(), fw = sim_->firmware()] {
+            return strike_check(document, profile, j, strikes, fw);
         }));
 }
 

@@ -23,6 +23,7 @@
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 #include "spool/print_job.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -48,17 +49,46 @@ struct EmbossArgs {
     EmbossQueueArgs queue;
 };
 
-machine::FirmwareTables firmware_tables(const EmbossArgs& a) {
-    if (a.firmware_tables.empty())
-        throw CommandFailed(exit_usage,
-                            "emboss: the controller is the reference firmware (protocol 3): give the ramp "
-                            "tables it was built with, --firmware-tables firmware/build/ramp.json");
-    return require(profile::load_firmware_tables(a.firmware_tables));
+// The tables a protocol-3 controller runs: the firmware build's ramp.json
+// when given, else the ones the profile makes (the rule the firmware build
+// and the simulator use); HELLO_REPLY's table id must match either way.
+// `known`: the ones already made for the simulator.
+machine::FirmwareTables firmware_tables(const EmbossArgs& a, const profile::PrinterProfile& p,
+                                        const std::optional<machine::FirmwareTables>& known) {
+    if (known) return *known;
+    if (!a.firmware_tables.empty()) return require(profile::load_firmware_tables(a.firmware_tables));
+    auto t = profile::make_firmware_tables(p);
+    if (!t)
+        throw CommandFailed(exit_bad_input,
+                            "emboss: the controller speaks protocol 3, but the reference firmware cannot run this "
+                            "profile: " + t.error().to_string());
+    return *t;
+}
+
+// The tables the built-in simulator (`--device sim...`) runs: the profile's,
+// so it speaks protocol 3 as the firmware built from the profile does; none
+// (protocol 2) for `sim?protocol=2`, for a saved plan (protocol 2), and, with
+// a one-line notice, for a profile the firmware cannot run.
+std::optional<machine::FirmwareTables> sim_tables(const EmbossArgs& a) {
+    auto spec = transport::parse_device(a.device);
+    if (!spec || spec->scheme != "sim") return std::nullopt;
+    auto settings = transport::sim_settings(*spec);
+    if (!settings || settings->protocol == 2 || a.plan_file) return std::nullopt;
+    if (!a.firmware_tables.empty()) return require(profile::load_firmware_tables(a.firmware_tables));
+    auto t = profile::make_firmware_tables(load_profile_arg(a.profile));
+    if (t) return *t;
+    if (settings->protocol == 3)
+        throw CommandFailed(exit_bad_input, "emboss: sim?protocol=3: the reference firmware cannot run this profile: " +
+                                                t.error().to_string());
+    std::cerr << "emboss: the simulator speaks protocol 2, since the reference firmware cannot run this profile ("
+              << t.error().to_string() << ")" << std::endl;
+    return std::nullopt;
 }
 
 // The print job, from a saved plan or from the document; the controller is
 // configured from the profile the plan was made with, either way.
-spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false) {
+spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
+                        const std::optional<machine::FirmwareTables>& known_tables = std::nullopt) {
     if (a.plan_file && for_firmware)
         throw CommandFailed(exit_usage, "emboss: a saved plan is for protocol 2; the reference firmware (protocol 3) "
                                         "is planned for with its own tables: give the document, not --plan");
@@ -72,7 +102,8 @@ spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false) {
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, profile);
-    if (for_firmware) return require(spool::make_firmware_print_job(doc, profile, firmware_tables(a), a.device));
+    if (for_firmware)
+        return require(spool::make_firmware_print_job(doc, profile, firmware_tables(a, profile, known_tables), a.device));
     return require(spool::make_print_job(doc, profile, a.device));
 }
 
@@ -149,11 +180,12 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     // that is not there (device).
     link::LinkOptions options;
     options.give_up_after = std::chrono::milliseconds(static_cast<std::int64_t>(a.give_up_after_s * 1000));
+    options.sim_firmware = sim_tables(a);
     auto link = require(link::Link::open(a.device, options));
     // HELLO_REPLY says which controller answered: the reference firmware
     // (protocol 3) is planned for with its own tables.
     require(link.hello());
-    const auto job = prepare(a, link.protocol() == encode::kProtocolV3);
+    const auto job = prepare(a, link.protocol() == encode::kProtocolV3, options.sim_firmware);
 
     const bool tty = isatty(STDERR_FILENO) != 0;
     link::CancelToken cancel;
@@ -190,7 +222,7 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
             std::cout << "embossed " << out->passes_done << " passes on " << a.device << ": "
                       << s.bytes_written << " bytes sent, " << s.frames_resent
                       << " frames resent, " << s.reconnects << " reconnects, " << s.restarts
-                      << " restarts\n";
+                      << " restarts (protocol " << int{link.protocol()} << ")\n";
             return;
         case link::JobEnd::cancelled:
             throw CommandFailed(exit_failure, "cancelled after " + std::to_string(out->passes_done) +
@@ -223,7 +255,8 @@ void add_emboss_command(CLI::App& app) {
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
     cmd->add_option("--firmware-tables", args->firmware_tables,
                     "The reference firmware's ramp tables (its build/ramp.json): a controller speaking protocol 3 "
-                    "is planned for with them, and refused when it was built with others")
+                    "is planned for with them, and refused when it was built with others (default: the tables "
+                    "the profile makes, as make -C firmware PROFILE=... builds them)")
         ->check(CLI::ExistingFile);
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
         ->check(CLI::PositiveNumber);

@@ -46,7 +46,7 @@ void run_serve(const ServeArgs& a) {
     options.link.reconnect_deadline = std::chrono::milliseconds(a.reconnect_ms);
     options.link.fault_wait = std::chrono::milliseconds(a.fault_wait_ms);
     const auto link_options = options.link;
-    auto connect = [link_options](const spool::PrinterRecord& p) { return link::Link::open(p.device, link_options); };
+    auto connect = [link_options](const spool::PrinterRecord& p) { return spool::open_printer(p, link_options); };
 
     std::signal(SIGINT, on_serve_signal);
     std::signal(SIGTERM, on_serve_signal);

@@ -34,9 +34,10 @@ struct SimArgs {
     int limit_at_strike = 0;
     int mute_after_pass = 0;
     std::string firmware;  // an .ihx: the reference firmware in s51 instead of the C++ model
-    std::string profile;   // --firmware: steps/mm for the log's millimetres
+    std::string profile;   // the ramp tables of protocol 3; --firmware: steps/mm for the log's millimetres
     std::string pin_trace; // --firmware: keep the pin trace (VCD) here
     std::string firmware_tables;  // a firmware build's ramp.json: the C++ model speaks protocol 3
+    int protocol = 0;             // 0: 3 with the profile's tables when it has them, else 2
 };
 
 // One strike as a JSON line, flushed: a reader sees every strike at once. The
@@ -129,7 +130,22 @@ void run_sim(const SimArgs& a) {
         throw CommandFailed(exit_usage, "sim: --paper-reload-reads is for --firmware; the C++ controller takes "
                                         "--paper-reload SECONDS");
     auto options = a.server;
-    if (!a.firmware_tables.empty()) options.sim.firmware = require(profile::load_firmware_tables(a.firmware_tables));
+    // Protocol 3 by default, as the reference firmware built from the profile
+    // speaks it (the same tables: profile::make_firmware_tables).
+    if (!a.firmware_tables.empty() && a.protocol == 2)
+        throw CommandFailed(exit_usage, "sim: --firmware-tables is protocol 3; leave it out for --protocol 2");
+    if (!a.firmware_tables.empty()) {
+        options.sim.firmware = require(profile::load_firmware_tables(a.firmware_tables));
+    } else if (a.protocol != 2) {
+        auto t = profile::make_firmware_tables(load_profile_arg(a.profile));
+        if (t) options.sim.firmware = *t;
+        else if (a.protocol == 3)
+            throw CommandFailed(exit_bad_input, "sim: --protocol 3: the reference firmware cannot run this profile: " +
+                                                    t.error().to_string());
+        else
+            std::cerr << "sim: speaking protocol 2, since the reference firmware cannot run this profile ("
+                      << t.error().to_string() << ")" << std::endl;
+    }
     auto server = controller::PtyServer::open(options);
     if (!server) fail_with(server.error());
     auto& ctl = server->controller();
@@ -215,9 +231,15 @@ void add_sim_command(CLI::App& app) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--firmware-tables", args->firmware_tables,
                     "Speak protocol 3 as the reference firmware built with these ramp tables does (its "
-                    "build/ramp.json; HELLO_REPLY reports their id); without it the C++ controller speaks protocol 2")
+                    "build/ramp.json; HELLO_REPLY reports their id); without it, with the tables the profile makes")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--profile,-p", args->profile, "With --firmware: the profile whose steps/mm the log's mm use");
+    cmd->add_option("--protocol", args->protocol,
+                    "2: speak the older protocol 2; 3: protocol 3 or fail (default: 3 when the reference firmware "
+                    "can run the profile, else 2 with a notice)")
+        ->check(CLI::IsMember({2, 3}));
+    cmd->add_option("--profile,-p", args->profile,
+                    "The printer profile whose ramp tables protocol 3 runs (default: the bundled one); with "
+                    "--firmware: whose steps/mm the log's mm use");
     cmd->add_option("--pin-trace", args->pin_trace,
                     "With --firmware: keep the emulator's trace of port 1 (steps, directions, hammers) in FILE "
                     "(VCD, the emulator's clock)");

@@ -195,7 +195,7 @@ int run_backend_job(const BackendJob& job, const BackendTuning& tuning,
     options.link.fault_wait = milliseconds(tuning.fault_wait_ms);
     const auto link_options = options.link;
     spool::Runner runner(db, printer->name,
-                         [link_options](const spool::PrinterRecord& p) { return link::Link::open(p.device, link_options); },
+                         [link_options](const spool::PrinterRecord& p) { return spool::open_printer(p, link_options); },
                          options);
     bool runner_held = false;
     bool told_waiting = false;

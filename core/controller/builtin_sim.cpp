@@ -2,6 +2,8 @@
 #include "controller/builtin_sim.hpp"
 
 #include <thread>
+
+#include "controller/open_device.hpp"
 #include <type_traits>
 
 namespace tactus::controller {
@@ -77,6 +79,27 @@ std::unique_ptr<transport::ByteStream> BuiltInSimulator::connect(const transport
     line_.set_speed(line.speed);
     controller_->set_paper_reload(settings.paper_reload_s.value_or(paper_reload_s_));
     return std::make_unique<Stream>(*this);
+}
+
+Result<std::unique_ptr<transport::ByteStream>> BuiltInSimulator::connect(
+    const transport::SimSettings& settings, const std::optional<machine::FirmwareTables>& tables) {
+    auto firmware = sim_firmware_for(settings, tables);
+    if (!firmware) return std::unexpected(firmware.error());
+    {
+        std::lock_guard lock(mutex_);
+        if (controller_->firmware() != *firmware) controller_->reflash(std::move(*firmware), line_.now());
+    }
+    return connect(settings);
+}
+
+std::uint8_t BuiltInSimulator::protocol() const {
+    std::lock_guard lock(mutex_);
+    return controller_->protocol();
+}
+
+std::optional<machine::FirmwareTables> BuiltInSimulator::firmware() const {
+    std::lock_guard lock(mutex_);
+    return controller_->firmware();
 }
 
 void BuiltInSimulator::paper_out() {

@@ -18,6 +18,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/result.hpp"
 #include "controller/sim_controller.hpp"
 #include "controller/sim_transport.hpp"
 #include "transport/byte_stream.hpp"
@@ -36,6 +37,18 @@ public:
     // string's options (speed, baud, noise, paper-reload; the default
     // SimSettings: the plan's own speed).
     std::unique_ptr<transport::ByteStream> connect(const transport::SimSettings& settings);
+    // The same for a printer whose profile makes `tables`
+    // (profile::make_firmware_tables; nullopt when it cannot): the controller
+    // speaks protocol 3 with them unless the settings say protocol=2, as the
+    // reference firmware built from that profile does. When that is not the
+    // firmware it runs, it is flashed with it first, a power cycle (RAM and
+    // the job count lost), as a technician would reflash the chip. Refused
+    // for protocol=3 without tables.
+    Result<std::unique_ptr<transport::ByteStream>> connect(const transport::SimSettings& settings,
+                                                           const std::optional<machine::FirmwareTables>& tables);
+    // The protocol the controller speaks now (2, or 3 with ramp tables).
+    [[nodiscard]] std::uint8_t protocol() const;
+    [[nodiscard]] std::optional<machine::FirmwareTables> firmware() const;
 
     // Faults, at the simulated moment the line is next used:
     void paper_out();                      // the feeder runs empty (the operator reloads it)

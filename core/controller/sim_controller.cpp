@@ -165,6 +165,13 @@ void SimController::power_loss(double now) {
     boot(now, false);
 }
 
+void SimController::reflash(std::optional<machine::FirmwareTables> firmware, double now) {
+    advance(now);
+    options_.firmware = std::move(firmware);
+    ++resets_;
+    boot(now, false);
+}
+
 void SimController::inject_paper_out_at_sheet(std::uint16_t sheet) { paper_out_sheet_ = sheet; }
 void SimController::inject_limit_switch_at_strike(std::size_t nth) { limit_at_ = nth; }
 void SimController::inject_hammer_fault_at_strike(std::size_t nth) { hammer_at_ = nth; }

@@ -111,6 +111,11 @@ public:
     void inject_hammer_fault_at_strike(std::size_t nth);
     void warm_reset(double now) override;   // watchdog/RST: registers reset, RAM (progress) kept
     void power_loss(double now) override;   // power cycle: RAM lost
+    // Another firmware flashed (other ramp tables, or none: protocol 2), then
+    // a power cycle: RAM lost. The app's built-in simulator takes the tables
+    // of the printer profile it is connected for.
+    void reflash(std::optional<machine::FirmwareTables> firmware, double now);
+    [[nodiscard]] const std::optional<machine::FirmwareTables>& firmware() const { return options_.firmware; }
     void reset_at_strike(std::size_t nth, bool keep_ram);  // reset just after the nth strike
     // From the moment the job-wide executed-pass count reaches `executed`, every
     // reply is dropped until a new session (HELLO with a new nonce): the ACK of

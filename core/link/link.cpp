@@ -13,7 +13,7 @@ Link& Link::operator=(Link&&) noexcept = default;
 Link::~Link() = default;
 
 Result<Link> Link::open(std::string_view device, LinkOptions options) {
-    auto s = controller::open_device(device);
+    auto s = controller::open_device(device, options.sim_firmware);
     if (!s) return std::unexpected(s.error());
     auto link = over(std::move(*s), options);
     link.impl_->device = std::string(device);

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -61,6 +62,11 @@ struct LinkOptions {
     // v2; a controller that refuses it is offered v3, which the reference
     // firmware speaks), 2 or 3 to insist on one.
     std::uint8_t protocol = 0;
+    // For a `sim` device (Link::open): the ramp tables of the profile the job
+    // is planned with (profile::make_firmware_tables), so the simulated
+    // controller speaks protocol 3 as the firmware built from that profile
+    // does (controller::open_device). Without them it speaks protocol 2.
+    std::optional<machine::FirmwareTables> sim_firmware;
 };
 
 // One pass the controller has executed (called in execution order).

@@ -2,8 +2,9 @@
 #pragma once
 // What the reference firmware (firmware/, protocol v3) was built with: the
 // S-curve ramp tables it walks from flash, the dot grids its pass records
-// count in, and the backlash it adds on a reversal. firmware/tools/gen-ramp.py
-// generates them from the printer profile and writes an exact copy to
+// count in, and the backlash it adds on a reversal. profile::make_firmware_tables
+// makes them from the printer profile; the firmware build (firmware/tools/
+// gen-ramp.cpp) writes them into its sources and an exact copy to
 // build/ramp.json, which profile::load_firmware_tables reads. The planner plans
 // v3 jobs with these tables (table moves), so its step times are the
 // firmware's to the machine cycle; HELLO_REPLY's table id must match.
@@ -50,6 +51,27 @@ struct FirmwareTables {
 // subtracts it; FirmwareEndToEnd.ThePinEdgeDelayIsTheFirmwares checks it
 // against the assembled EDGE_TICKS.
 inline constexpr std::uint32_t kPinEdgeTicks = 23;
+
+// What the reference firmware's step interrupt (firmware/src/step.asm) and its
+// flash impose on its ramp tables; profile::make_firmware_tables holds a
+// profile to them (firmware/README.md, "Timing").
+// The shortest interval the fast step-interrupt paths keep exact: a short
+// move's turn and the switch to cruise end 46 cycles after their timer event
+// (counted), and the next event's latency (that overrun + the instruction
+// after RETI, up to 2) must stay within LAT_MAX (5): 43, and one cycle to spare.
+inline constexpr std::uint32_t kMinCruiseTicks = 44;
+// The slow (16-bit) path, used for the feed and for intervals over 256 ticks.
+inline constexpr std::uint32_t kMinSlowTicks = 136;
+// Intervals up to this many ticks take the fast path (one reload byte).
+inline constexpr std::uint32_t kFastMaxTicks = 256;
+inline constexpr std::uint32_t kFastBias = 7;  // bytes between the MOVC in step.asm and its table
+inline constexpr std::uint32_t kMaxFastEntries = 255 - kFastBias + 1;
+// Machine cycles from the last timer event of one phase to the start of a
+// move: the time the main loop is given to build the move's phases
+// (FirmwareTables::start_gap_ticks).
+inline constexpr std::uint32_t kStartGapTicks = 3000;
+// The longest ramp from rest to v_max the tables hold, in seconds.
+inline constexpr double kMaxRampSeconds = 2.0;
 
 // The v3 controller's per-strike timing (CONFIGURE): at rest `settle_ticks`
 // after the move, then the hammer on for `hammer_ticks`.

@@ -53,10 +53,9 @@ Result<PrintJob> make_print_job(const layout::PagedDocument& document, const pro
 }
 
 Result<PrintJob> make_firmware_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
-                                         const machine::FirmwareTables& tables, std::string_view device) {
-    plan::PlanOptions options;
-    options.firmware = tables;
-    auto plan = plan::plan_job(document, profile, options);
+                                         const machine::FirmwareTables& tables, std::string_view device,
+                                         std::size_t copies) {
+    auto plan = plan_copies(document, profile, copies, &tables);
     if (!plan) return std::unexpected(plan.error());
     auto job = assemble(std::move(*plan), profile, encode::kProtocolV3, device);
     job.firmware = tables;

@@ -45,7 +45,8 @@ Result<PrintJob> make_print_job(const layout::PagedDocument& document, const pro
 // The same for the reference firmware (protocol 3): planned with the ramp
 // tables it was built with, so the plan's moves are the ones it makes.
 Result<PrintJob> make_firmware_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
-                                         const machine::FirmwareTables& tables, std::string_view device);
+                                         const machine::FirmwareTables& tables, std::string_view device,
+                                         std::size_t copies = 1);
 
 // A saved plan as a print job for `device`. Refused (ErrorKind::input, with
 // the reason) when the plan was made for another link protocol version, or,

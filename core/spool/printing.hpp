@@ -11,6 +11,7 @@
 #include "profile/controller_config.hpp"
 #include "encode/messages.hpp"
 #include "layout/page.hpp"
+#include "machine/firmware_tables.hpp"
 #include "plan/plan.hpp"
 #include "profile/profile.hpp"
 
@@ -20,9 +21,11 @@ namespace tactus::spool {
 // document does not fit the profile (e.g. the profile now has fewer cells per
 // line), and with `where` == kPassesWhere when all copies together have more
 // passes than the controller counts in one job (encode::kMaxJobPasses).
+// `firmware`: planned for the reference firmware (protocol 3) built with
+// these ramp tables (plan::PlanOptions::firmware).
 inline constexpr const char* kPassesWhere = "passes";
 Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profile::PrinterProfile& profile,
-                                  std::size_t copies);
+                                  std::size_t copies, const machine::FirmwareTables* firmware = nullptr);
 
 // The sheet carrying braille page `page` (1-based) of a stored job's first
 // copy (`queue resume --from-page`, the app's Resume from page). A page

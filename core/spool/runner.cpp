@@ -8,6 +8,7 @@
 
 #include "encode/messages.hpp"
 #include "link/fault_words.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/print_job.hpp"
 #include "spool/printing.hpp"
@@ -15,6 +16,7 @@
 #include "spool/settlement.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/try.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::spool {
 namespace {
@@ -63,6 +65,20 @@ const char* to_string(RunEnd e) {
     case RunEnd::stopped: return "stopped";
     }
     return "?";
+}
+
+std::optional<machine::FirmwareTables> printer_firmware_tables(const PrinterRecord& p) {
+    auto prof = profile::parse_profile(p.profile_json);
+    if (!prof) return std::nullopt;
+    auto t = profile::make_firmware_tables(*prof);
+    if (!t) return std::nullopt;
+    return std::move(*t);
+}
+
+Result<link::Link> open_printer(const PrinterRecord& p, link::LinkOptions options) {
+    const auto spec = transport::parse_device(p.device);
+    if (spec && spec->scheme == "sim") options.sim_firmware = printer_firmware_tables(p);
+    return link::Link::open(p.device, options);
 }
 
 Runner::Runner(std::filesystem::path db, std::string printer, ConnectFn connect, RunnerOptions options)
@@ -209,8 +225,6 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    std::vector<std::size_t> passes;
-    for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
     SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
     if (submitted_profile != printer.profile_json)
         SPOOL_TRY(s.log(job.id, printer.id, "profile",
@@ -222,6 +236,28 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         if (auto c = connect(); !c) return wait_for_printer(job, c.error().to_string());
         unreachable_ = 0;
     }
+    // The reference firmware (protocol 3, as the simulators speak it too)
+    // runs table moves: the job is planned again with the tables the profile
+    // makes, the rule the firmware was built with; HELLO_REPLY's table id must
+    // be theirs (use_firmware_tables), or the firmware was built for another
+    // profile.
+    if (link_->protocol() == encode::kProtocolV3) {
+        auto tables = profile::make_firmware_tables(*profile);
+        auto v3 = tables ? make_firmware_print_job(*doc, *profile, *tables, printer.device, job.copies)
+                         : Result<PrintJob>(std::unexpected(tables.error()));
+        Result<void> checked = v3 ? link_->use_firmware_tables(*v3->firmware, v3->timing)
+                                  : Result<void>(std::unexpected(v3.error()));
+        if (!checked) {
+            const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
+                             "cannot emboss with its current profile: " + checked.error().to_string();
+            SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+            return RunEnd::failed;
+        }
+        print = std::move(v3);
+        plan = &print->plan;
+    }
+    std::vector<std::size_t> passes;
+    for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
     // The controller gets the configuration of the profile this job was just
     // planned with (the printer's profile may have changed since the link opened).
     if (auto c = link_->configure(print->config); !c) return transient_failure(job, c.error().to_string());

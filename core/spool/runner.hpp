@@ -35,8 +35,19 @@ struct RunnerOptions {
     link::LinkOptions link;
 };
 
-// Opens the printer's device (Link::open in serve; the in-process simulator in tests).
+// Opens the printer's device (open_printer in serve; the in-process simulator in tests).
 using ConnectFn = std::function<Result<link::Link>(const PrinterRecord&)>;
+
+// The ramp tables the reference firmware built from the printer's profile
+// runs (profile::make_firmware_tables); nullopt when the profile is invalid
+// or the firmware cannot run it.
+std::optional<machine::FirmwareTables> printer_firmware_tables(const PrinterRecord& p);
+
+// Link::open for a printer. A `sim` device simulates the reference firmware
+// built from the printer's profile: protocol 3 with its tables
+// (controller::open_device), protocol 2 for `sim?protocol=2` or a profile the
+// firmware cannot run.
+Result<link::Link> open_printer(const PrinterRecord& p, link::LinkOptions options);
 
 // What one job run came to (for tests and serve's log).
 enum class RunEnd { completed, cancelled, paused, requeued, failed, stopped };

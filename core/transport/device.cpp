@@ -75,10 +75,14 @@ Result<SimSettings> sim_settings(const DeviceSpec& spec) {
         else if (k == "noise") s.noise = *d;
         else if (k == "seed") s.seed = static_cast<std::uint64_t>(*d);
         else if (k == "paper-reload") s.paper_reload_s = *d;
+        else if (k == "protocol") {
+            if (*d != 2 && *d != 3) return fail(ErrorKind::usage, "\"" + v + "\" is not a protocol version (2 or 3)", where);
+            s.protocol = static_cast<int>(*d);
+        }
         else if (k == "speed") {
             if (*d <= 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a speed above 0 (or max)", where);
             s.speed = *d;
-        } else return fail(ErrorKind::usage, "unknown option (baud, noise, seed, paper-reload, speed)", where);
+        } else return fail(ErrorKind::usage, "unknown option (baud, noise, seed, paper-reload, speed, protocol)", where);
     }
     if (s.baud < 300) return fail(ErrorKind::usage, "baud rate below 300", "sim option baud");
     return s;

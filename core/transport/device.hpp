@@ -5,7 +5,7 @@
 //   pty:/dev/pts/3?baud=115200
 //   hid:10c4:ea80[:serial]?baud=115200
 //   lpt:/dev/parport0
-//   sim?baud=115200&noise=1e-3&seed=7&paper-reload=5&speed=10
+//   sim?baud=115200&noise=1e-3&seed=7&paper-reload=5&speed=10&protocol=2
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -56,6 +56,11 @@ struct SimSettings {
     // default) is the plan's own speed; 0 is `speed=max`, as fast as the
     // computer can.
     double speed = 1;
+    // The protocol the simulated controller speaks: 0 (the default) is 3, as
+    // the reference firmware built from the profile speaks it, when the
+    // profile can be made into its ramp tables, else 2; `protocol=2` or
+    // `protocol=3` insists on one.
+    int protocol = 0;
 };
 Result<SimSettings> sim_settings(const DeviceSpec& spec);
 

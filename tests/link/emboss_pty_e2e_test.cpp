@@ -27,6 +27,9 @@
 #include "../common/pty_emboss.hpp"
 #include "../common/strike_log.hpp"
 #include "../common/test_plans.hpp"
+#include "../common/firmware_tables_fixture.hpp"
+#include "link/link.hpp"
+#include "profile/profile_json.hpp"
 
 namespace tactus {
 namespace {
@@ -60,7 +63,9 @@ protected:
 
     Result run(std::vector<std::string> sim_faults, const std::string& baud = "115200") {
         test::PtyEmboss e;
-        e.sim = {TACTUS_CLI, "sim", "--pty", "--baud", baud, "--time-scale", "40"};
+        // A saved plan is protocol 2's: the simulator speaks it on request
+        // (its default is protocol 3, as the firmware built from the profile).
+        e.sim = {TACTUS_CLI, "sim", "--pty", "--protocol", "2", "--baud", baud, "--time-scale", "40"};
         e.sim.insert(e.sim.end(), sim_faults.begin(), sim_faults.end());
         e.emboss = {TACTUS_CLI, "emboss", "--plan", (dir_ / "plan.json").string()};
         e.baud = baud;
@@ -113,7 +118,8 @@ TEST_F(PtyEndToEnd, PowerLossFailsWithResumeHint) {
 // the device code (4) and says which sheet to resume from. (The old CLI had
 // no such option and, without it, never gave up.)
 TEST_F(PtyEndToEnd, AnEmbosserThatStopsAnsweringEndsWithTheDeviceCodeAndTheSheetToResume) {
-    Process server({TACTUS_CLI, "sim", "--pty", "--baud", "115200", "--time-scale", "40", "--disconnect-at", "0.25",
+    Process server({TACTUS_CLI, "sim", "--pty", "--protocol", "2", "--baud", "115200", "--time-scale", "40",
+                    "--disconnect-at", "0.25",
                     "--disconnect-for", "100000", "--strike-log", (dir_ / "strikes.jsonl").string()});
     const std::string pty = server.read_line(std::chrono::seconds(30));
     ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
@@ -218,6 +224,77 @@ TEST_F(PtyEndToEndV3, ANoisyLineStrikesExactly) {
         EXPECT_EQ(r.exit_code, 0) << r.output;
         EXPECT_EQ(r.log, want) << "seed " << seed;
     }
+}
+
+// The simulators speak protocol 3 by default, with the tables the profile
+// makes (profile::make_firmware_tables, the firmware build's rule): `sim
+// --pty` and `emboss` are given no tables, and the host plans with the ones
+// its profile makes, which HELLO_REPLY's table id must match.
+TEST_F(PtyEndToEndV3, TheDefaultSimulatorSpeaksProtocol3WithTheProfilesTables) {
+    const auto want = controller::planned_strikes(planned());  // the firmware build's tables
+    test::PtyEmboss e;
+    e.sim = {TACTUS_CLI, "sim", "--pty", "--baud", "9600", "--time-scale", "40"};
+    e.emboss = {TACTUS_CLI, "emboss", note()};
+    e.strike_log = dir_ / "strikes.jsonl";
+    const auto r = test::emboss_through_pty(e);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("(protocol 3)"), std::string::npos) << r.output;
+    EXPECT_EQ(r.log, want);
+}
+
+TEST(SimDefaultProtocol, HelloReplyIsVersion3WithTheProfilesTableId) {
+    const auto tables = profile::make_firmware_tables(profile::default_profile());
+    ASSERT_TRUE(tables.has_value());
+    link::LinkOptions o;
+    o.sim_firmware = *tables;
+    auto l = link::Link::open("sim?speed=max", o);
+    ASSERT_TRUE(l.has_value()) << l.error().to_string();
+    const auto h = l->hello();
+    ASSERT_TRUE(h.has_value()) << h.error().to_string();
+    EXPECT_EQ(h->protocol, 3);
+    EXPECT_EQ(h->table_id, tables->table_id);
+    EXPECT_EQ(h->table_id, test::firmware_tables().table_id);  // the firmware build's, from the same profile
+    // sim?protocol=2: the older protocol, on request.
+    auto old = link::Link::open("sim?speed=max&protocol=2", o);
+    ASSERT_TRUE(old.has_value());
+    const auto h2 = old->hello();
+    ASSERT_TRUE(h2.has_value()) << h2.error().to_string();
+    EXPECT_EQ(h2->protocol, 2);
+    // protocol=3 without tables is refused; nothing else is a protocol.
+    EXPECT_FALSE(link::Link::open("sim?protocol=3").has_value());
+    const auto bad = link::Link::open("sim?protocol=4");
+    ASSERT_FALSE(bad.has_value());
+    EXPECT_EQ(bad.error().kind, ErrorKind::usage);
+}
+
+TEST(SimDefaultProtocol, EmbossOnTheSimulatorSpeaksProtocol3AndProtocol2OnRequest) {
+    const std::string note = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+    auto r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max", note});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("(protocol 3)"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err.find("protocol 2"), std::string::npos) << r.err;
+    r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=2", note});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("(protocol 2)"), std::string::npos) << r.out;
+    // A profile the firmware cannot run (a carriage cruising below 3,600
+    // steps/s): protocol 2, with a one-line notice naming the field.
+    const auto dir = fs::temp_directory_path() / ("tactus-slow-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    auto j = profile::to_json(profile::default_profile());
+    j["carriage"]["v_max_mm_s"] = 40.0;
+    std::ofstream(dir / "slow.json") << j.dump();
+    r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max", "--profile", (dir / "slow.json").string(),
+                            note});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("(protocol 2)"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("emboss: the simulator speaks protocol 2"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("carriage.v_max_mm_s"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    // ... and refused when protocol 3 is insisted on.
+    r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=3", "--profile",
+                            (dir / "slow.json").string(), note});
+    EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -72,6 +72,8 @@ protected:
 #endif
         if (!GetParam().firmware) args.insert(args.end(), {"--baud", "9600"});
         if (!GetParam().firmware && GetParam().protocol == 3) args.insert(args.end(), {"--firmware-tables", kTables});
+        // Protocol 2 only on request: the simulator's default is 3.
+        if (!GetParam().firmware && GetParam().protocol == 2) args.insert(args.end(), {"--protocol", "2"});
         const auto extra = extra_args();
         args.insert(args.end(), extra.begin(), extra.end());
         server_.emplace(args);

@@ -29,7 +29,10 @@ public:
     PtySim(const std::filesystem::path& dir, const std::string& name, std::vector<std::string> extra = {},
            double time_scale = 1000)
         : log_(dir / (name + ".strikes")) {
-        std::vector<std::string> args{kCli, "sim", "--pty", "--time-scale", std::to_string(time_scale), "--baud", "230400",
+        // Protocol 2, on request (the simulator's default is 3): the strike
+        // audit (strike_audit.hpp) replays protocol 2's plan.
+        std::vector<std::string> args{kCli, "sim", "--pty", "--protocol", "2", "--time-scale", std::to_string(time_scale),
+                                      "--baud", "230400",
                                       "--strike-log", log_.string()};
         args.insert(args.end(), extra.begin(), extra.end());
         sim_ = std::make_unique<Process>(args, (dir / (name + ".sim.log")).string());

@@ -100,7 +100,9 @@ inline KillReport kill_loop(const KillOptions& o) {
     while (r.kills < o.kills && Clock::now() - start < o.budget && r.problems.empty()) {
         ++r.rounds;
         const auto log = o.dir / ("round" + std::to_string(r.rounds) + ".strikes");
-        Process sim({o.cli, "sim", "--pty", "--time-scale", "1000", "--baud", "230400", "--strike-log", log.string()},
+        // Protocol 2 on request, as the strike audit replays its plan.
+        Process sim({o.cli, "sim", "--pty", "--protocol", "2", "--time-scale", "1000", "--baud", "230400",
+                     "--strike-log", log.string()},
                     (o.dir / "sim.log").string());
         const auto pty = sim.read_line(std::chrono::seconds(10));
         if (pty.empty()) {

@@ -206,7 +206,9 @@ struct Files {
 TEST(PrintJobCli, PlanJsonIsEmbossedWithThePlansProfileAndStrikesThePlan) {
     Files f;
     f.make_plan();
-    Process server(cli({"sim", "--pty", "--time-scale", "40", "--strike-log", (f.dir / "strikes.jsonl").string()}),
+    // A saved plan is protocol 2's: the simulator speaks it on request.
+    Process server(cli({"sim", "--pty", "--protocol", "2", "--time-scale", "40", "--strike-log",
+                        (f.dir / "strikes.jsonl").string()}),
                    Process::Options{{}, true, {}});
     const std::string pty = server.read_line(std::chrono::seconds(30));
     ASSERT_EQ(pty.rfind("/dev/pts/", 0), 0U) << pty;
