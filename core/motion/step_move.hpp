@@ -2,7 +2,12 @@
 #pragma once
 // A move in whole motor steps with its step timing: what the planner produces,
 // the estimate replays and the encoder sends.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <memory>
 #include <vector>
 
 namespace tactus::motion {
@@ -26,10 +31,65 @@ struct StepSegment {
     bool operator==(const StepSegment&) const = default;
 };
 
+// A move's step segments, a value whose copies share one immutable array:
+// copying a StepMove (the planner copies a tuned move into every strike that
+// uses it) costs a reference count, not an allocation. The array lives as long
+// as any copy does, whatever thread or plan holds it. Mutation copies the array
+// first when another StepSegments shares it (copy on write); a reference that a
+// mutating accessor returned is valid until this object is next copied,
+// assigned or mutated.
+class StepSegments {
+public:
+    using value_type = StepSegment;
+    using const_iterator = const StepSegment*;
+    using iterator = const_iterator;
+    using size_type = std::size_t;
+
+    StepSegments() = default;
+    StepSegments(std::vector<StepSegment> v) {  // NOLINT(google-explicit-constructor): a vector is segments
+        if (!v.empty()) v_ = std::make_shared<std::vector<StepSegment>>(std::move(v));
+    }
+    StepSegments(std::initializer_list<StepSegment> l) : StepSegments(std::vector<StepSegment>(l)) {}
+
+    [[nodiscard]] const StepSegment* data() const { return v_ ? v_->data() : nullptr; }
+    [[nodiscard]] std::size_t size() const { return v_ ? v_->size() : 0; }
+    [[nodiscard]] bool empty() const { return size() == 0; }
+    [[nodiscard]] const StepSegment* begin() const { return data(); }
+    [[nodiscard]] const StepSegment* end() const { return data() + size(); }
+    [[nodiscard]] const StepSegment& operator[](std::size_t i) const { return (*v_)[i]; }
+    [[nodiscard]] const StepSegment& front() const { return v_->front(); }
+    [[nodiscard]] const StepSegment& back() const { return v_->back(); }
+
+    // Mutation (copy on write).
+    StepSegment& operator[](std::size_t i) { return own()[i]; }
+    StepSegment& back() { return own().back(); }
+    void push_back(const StepSegment& s) { own().push_back(s); }
+    void clear() { v_.reset(); }
+
+    friend bool operator==(const StepSegments& a, const StepSegments& b) {
+        return a.v_ == b.v_ || std::equal(a.begin(), a.end(), b.begin(), b.end());
+    }
+
+private:
+    std::vector<StepSegment>& own() {
+        if (!v_) {
+            v_ = std::make_shared<std::vector<StepSegment>>();
+        } else if (v_.use_count() != 1) {
+            v_ = std::make_shared<std::vector<StepSegment>>(*v_);
+        } else {
+            // The last other copy may have been released by another thread:
+            // its reads happen before our writes.
+            std::atomic_thread_fence(std::memory_order_acquire);
+        }
+        return *v_;
+    }
+    std::shared_ptr<std::vector<StepSegment>> v_;
+};
+
 // One axis move in whole motor steps, with its step timing.
 struct StepMove {
     std::int32_t steps = 0;  // signed: direction is the sign
-    std::vector<StepSegment> segments;
+    StepSegments segments;
     double duration_s = 0;
     // Ticks at rest between the last step and the end of duration_s: the
     // planned settle before a strike, which the controller waits out.
