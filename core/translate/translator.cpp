@@ -116,6 +116,36 @@ std::string table_metadata(const std::string& table, const char* key, int depth 
     return {};
 }
 
+// The next whitespace-separated word of `line` from `at`.
+std::string_view next_word(std::string_view line, std::size_t& at) {
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+    const auto start = at;
+    while (at < line.size() && line[at] != ' ' && line[at] != '\t' && line[at] != '\r') ++at;
+    return line.substr(start, at - start);
+}
+
+// Does the table (or a table it includes, at any depth) hold a rule with this
+// opcode? Read from the table files, as table_metadata() reads them; a prefix
+// (`noback`, `nofor`) before the opcode counts.
+bool table_has_opcode(const std::string& table, std::string_view opcode, int depth = 0) {
+    if (depth > 8) return false;
+    const std::filesystem::path path =
+        table.find('/') != std::string::npos ? std::filesystem::path(table) : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::size_t at = 0;
+        auto op = next_word(line, at);
+        while (op == "noback" || op == "nofor") op = next_word(line, at);
+        if (op == opcode) return true;
+        if (op == "include") {
+            const auto included = next_word(line, at);
+            if (!included.empty() && table_has_opcode(std::string(included), opcode, depth + 1)) return true;
+        }
+    }
+    return false;
+}
+
 // The first installed hyphenation dictionary for the language ("en" ->
 // hyph_en_US.dic), checked by hyphenating a known word with it.
 std::string find_hyphenation(const std::string& first_table, const std::string& language) {
@@ -166,6 +196,16 @@ Result<Translator> Translator::open(std::string tables) {
         t.system_ = table_metadata(first, "system");
         t.ueb_ = t.system_ == "ueb";
         if (t.ueb_) t.division_.number_continuation = document::Cell{0x10};  // dot 5
+        // `compbrl` switches a whole word to computer braille when any of its
+        // characters asks for it (en-us-g2.ctb does so for a word holding a
+        // dot or a slash): how the start of a word is written then depends on
+        // its end.
+        t.word_wide_rules_ = false;
+        for (std::size_t at = 0; at <= t.tables_.size() && !t.word_wide_rules_;) {
+            const auto comma = std::min(t.tables_.find(',', at), t.tables_.size());
+            t.word_wide_rules_ = table_has_opcode(t.tables_.substr(at, comma - at), "compbrl");
+            at = comma + 1;
+        }
         if (t.ueb_ || t.system_ == "ebae") t.note_indicator_.assign(2, document::Cell{0x36});  // dots 2356 2356
         louis::take_log();
     }

@@ -66,6 +66,13 @@ public:
     // parentheses, as print without superscripts does. The one place this rule lives.
     [[nodiscard]] const document::BrailleLine& note_reference_indicator() const { return note_indicator_; }
 
+    // True when the table can write the start of a word differently because
+    // of what comes at its far end (a `compbrl` rule: a dot or a slash anywhere
+    // in a word puts the whole word in computer braille, as en-us-g2.ctb
+    // does). Word division then looks four lines ahead, not one
+    // (translate/word_division.cpp).
+    [[nodiscard]] bool has_word_wide_rules() const { return word_wide_rules_; }
+
     // Where `word` may be hyphenated (true before character i), from the
     // hyphenation dictionary liblouis has for the table's language
     // (hyph_en_US.dic for English); all false when there is none.
@@ -85,6 +92,7 @@ private:
     std::string hyphenation_;  // e.g. "hyph_en_US.dic"; empty: none for this language
     DivisionRules division_;
     bool ueb_ = false;
+    bool word_wide_rules_ = true;
     std::string system_;
     document::BrailleLine note_indicator_;
 };

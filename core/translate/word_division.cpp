@@ -26,23 +26,29 @@ public:
     Divider(const Translator& tr, std::u32string_view word, std::span<const std::uint8_t> emphasis,
             std::size_t room, const PieceSink& sink)
         : tr_(tr), word_(word), emphasis_(emphasis), room_(room),
-          rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)), sink_(sink) {}
+          rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)), sink_(sink),
+          short_window_(!tr.has_word_wide_rules() && std::ranges::none_of(word, is_space) &&
+                        std::ranges::all_of(emphasis, [](std::uint8_t e) { return e == 0; })) {}
 
     Result<void> run() {
         while (pos_ < word_.size()) {
-            // The rest of the word, translated through a window long enough to
-            // hold more than a line: a 1 MB word must not cost a 1 MB
-            // translation per line.
-            std::size_t window = 4 * room_ + 16;
+            // The rest of the word as a line starting here shows it, translated
+            // through a window just long enough for the line's cells and
+            // `kLookahead` characters after them, not through a fixed window
+            // of four lines: a text without spaces is a divided word from end
+            // to end, and that window was most of its cost (issue 13 item 6).
             MappedBraille rest;
             std::size_t end = 0;
+            std::size_t window = first_window();
             for (;;) {
                 end = std::min(word_.size(), pos_ + window);
                 auto r = translate(end, false);
                 if (!r) return std::unexpected(r.error());
                 rest = std::move(*r);
-                if (end == word_.size() || rest.cells.size() > room_ + 8) break;
-                window *= 2;
+                if (end == word_.size() || enough(rest, end)) break;
+                // Too few cells: twice the characters; else the characters
+                // the line's cells came from and the lookahead.
+                window = rest.cells.size() <= room_ || !short_window_ ? window * 2 : span_ + kLookahead;
             }
             if (end == word_.size() && rest.cells.size() <= room_) {
                 sink_(std::move(rest.cells));
@@ -54,6 +60,33 @@ public:
     }
 
 private:
+    // Characters of the word translated after the last one a line's cells
+    // come from: longer than the longest rule string of the English tables
+    // (15, en-ueb-g2.ctb's `parthenogenesis`), so every rule liblouis could
+    // match over the line's characters lies inside the window. (The
+    // equivalence test passes with none at all: this is margin.)
+    static constexpr std::size_t kLookahead = 16;
+
+    // The first window: as many characters as the last line's cells came
+    // from (a line's worth when none was made yet) and the lookahead.
+    [[nodiscard]] std::size_t first_window() const {
+        if (!short_window_) return 4 * room_ + 16;
+        return (span_ > 0 ? span_ + 2 : room_ + 1) + kLookahead;
+    }
+
+    // Does the window hold a line's cells (one more than the line holds, as
+    // the division search reads them) with `kLookahead` characters of the
+    // word after the last character any of those cells comes from? `span_`
+    // is set to the characters those cells came from.
+    [[nodiscard]] bool enough(const MappedBraille& rest, std::size_t end) {
+        if (!short_window_) return rest.cells.size() > room_ + 8;
+        if (rest.cells.size() <= room_) return false;
+        std::size_t last = 0;
+        for (std::size_t k = 0; k <= room_; ++k) last = std::max<std::size_t>(last, rest.source[k]);
+        span_ = last + 1;
+        return pos_ + span_ + kLookahead <= end;
+    }
+
     // Translation of word[pos_, to) (+ a hyphen), as a line starting there shows it.
     Result<MappedBraille> translate(std::size_t to, bool with_hyphen) {
         std::u32string text(word_.substr(pos_, to - pos_));
@@ -152,6 +185,14 @@ private:
     const PieceSink& sink_;
     std::size_t pos_ = 0;
     bool continues_number_ = false;
+    std::size_t span_ = 0;  // characters the last window's line of cells came from
+    // A window of one line and the lookahead, for a word without spaces or
+    // emphasis, in a table without word-wide rules. Emphasis and capitals over
+    // several words are marked by a passage indicator, which liblouis chooses
+    // by counting the words of the passage to its end, and a `compbrl` rule
+    // writes a whole word in computer braille when a character anywhere in it
+    // asks for it: there the window stays four lines long, as before.
+    bool short_window_;
 };
 
 }  // namespace

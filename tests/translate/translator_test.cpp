@@ -192,3 +192,27 @@ TEST(Utf8, AppendUtf32AddsToTheEndOrNothing) {
     EXPECT_EQ(bad.error().where, "byte 1");
     EXPECT_EQ(text, U"abc\u4E2D\U0001F600");
 }
+
+// Issue 13 item 6, session 8: word division looks one line ahead instead of
+// four only in tables that write a word locally. en-us-g2.ctb (through
+// en-us-g1.ctb) has `compbrl`, which puts a whole word in computer braille when
+// "://", ".com", "()" and the like appear anywhere in it; the UEB and Chinese
+// tables have none.
+TEST(Translator, KnowsWhichTablesHaveWordWideRules) {
+    for (const auto& [table, wide] : {std::pair{"en-us-g2.ctb", true}, std::pair{"en-us-g1.ctb", true},
+                                      std::pair{"en-ueb-g1.ctb", false}, std::pair{"en-ueb-g2.ctb", false},
+                                      std::pair{"zh-tw.ctb", false}, std::pair{"zhcn-g2.ctb", false}}) {
+        auto tr = translate::Translator::open(table);
+        ASSERT_TRUE(tr) << table;
+        EXPECT_EQ(tr->has_word_wide_rules(), wide) << table;
+    }
+    // The rule's effect, which is why the window must stay long there: the
+    // start of the word changes with its end.
+    auto ebae = translate::Translator::open("en-us-g2.ctb");
+    ASSERT_TRUE(ebae);
+    const auto plain = ebae->translate(U"OHZIBTKngtte");
+    const auto url = ebae->translate(U"OHZIBTKngtte.com");
+    ASSERT_TRUE(plain && url);
+    EXPECT_EQ(tactus::document::cell_to_brf((*plain)[0]), ',');   // capital sign
+    EXPECT_EQ(tactus::document::cell_to_brf((*url)[0]), '_');     // computer braille begins
+}

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The word division of core/translate/word_division.cpp as it was at commit
+// 7c54b89 (session 8, before issue 13 item 6's speed-up for text without
+// spaces), copied unchanged but for its namespace. Test-only: the equivalence
+// test checks that the faster division gives the same lines.
+#include <algorithm>
+#include <optional>
+
+#include "translate/word_division.hpp"
+
+namespace tactus::translate::reference {
+namespace detail {
+
+inline bool is_digit(char32_t c) { return c >= U'0' && c <= U'9'; }
+inline bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000 || c == 0xA0; }
+
+// Index of the first cell made from print character `q` or later: where a cut
+// before character q falls in the cells, if it is clean (no cell of an earlier
+// character after it).
+inline std::optional<std::size_t> cell_cut(const MappedBraille& m, std::uint32_t q) {
+    std::size_t k = 0;
+    while (k < m.source.size() && m.source[k] < q) ++k;
+    for (std::size_t i = k; i < m.source.size(); ++i)
+        if (m.source[i] < q) return std::nullopt;
+    return k;
+}
+
+class Divider {
+public:
+    Divider(const Translator& tr, std::u32string_view word, std::span<const std::uint8_t> emphasis,
+            std::size_t room, const PieceSink& sink)
+        : tr_(tr), word_(word), emphasis_(emphasis), room_(room),
+          rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)), sink_(sink) {}
+
+    Result<void> run() {
+        while (pos_ < word_.size()) {
+            // The rest of the word, translated through a window long enough to
+            // hold more than a line: a 1 MB word must not cost a 1 MB
+            // translation per line.
+            std::size_t window = 4 * room_ + 16;
+            MappedBraille rest;
+            std::size_t end = 0;
+            for (;;) {
+                end = std::min(word_.size(), pos_ + window);
+                auto r = translate(end, false);
+                if (!r) return std::unexpected(r.error());
+                rest = std::move(*r);
+                if (end == word_.size() || rest.cells.size() > room_ + 8) break;
+                window *= 2;
+            }
+            if (end == word_.size() && rest.cells.size() <= room_) {
+                sink_(std::move(rest.cells));
+                break;
+            }
+            if (auto ok = next_piece(end, rest); !ok) return std::unexpected(ok.error());
+        }
+        return {};
+    }
+
+private:
+    // Translation of word[pos_, to) (+ a hyphen), as a line starting there shows it.
+    Result<MappedBraille> translate(std::size_t to, bool with_hyphen) {
+        std::u32string text(word_.substr(pos_, to - pos_));
+        std::vector<std::uint8_t> emph;
+        if (!emphasis_.empty())
+            emph.assign(emphasis_.begin() + static_cast<std::ptrdiff_t>(pos_),
+                        emphasis_.begin() + static_cast<std::ptrdiff_t>(to));
+        if (with_hyphen) {
+            text.push_back(U'-');
+            if (!emph.empty()) emph.push_back(emph.back());
+        }
+        auto m = tr_.translate_mapped(text, emph);
+        if (!m) return m;
+        // After a divided number the next line goes on in numeric mode: its
+        // numeric indicator is left out (UEB 6.10.5).
+        const auto& ni = rules_.numeric_indicator;
+        if (continues_number_ && !ni.empty() && m->cells.size() > ni.size() &&
+            std::equal(ni.begin(), ni.end(), m->cells.begin())) {
+            const auto n = static_cast<std::ptrdiff_t>(ni.size());
+            m->cells.erase(m->cells.begin(), m->cells.begin() + n);
+            m->source.erase(m->source.begin(), m->source.begin() + n);
+        }
+        return m;
+    }
+
+    void accept(document::BrailleLine cells, std::size_t next, bool continues_number) {
+        sink_(std::move(cells));
+        pos_ = next;
+        continues_number_ = continues_number;
+    }
+
+    Result<void> next_piece(std::size_t end, const MappedBraille& rest) {
+        // The last print character whose cells still start within the line.
+        std::size_t hint = pos_ + 1;
+        for (std::size_t k = 0; k < rest.cells.size() && k < room_; ++k)
+            hint = std::max<std::size_t>(hint, pos_ + rest.source[k] + 1);
+        hint = std::min(hint, end - 1);
+        // First syllable boundaries (and digit boundaries, which a number has
+        // instead), then any boundary between two print characters.
+        for (int pass = 0; pass < 2; ++pass) {
+            for (std::size_t q = hint; q > pos_; --q) {
+                const bool digits = is_digit(word_[q - 1]) && is_digit(word_[q]);
+                // A space inside a word is UEB's numeric space ("6 1" is one number).
+                const bool numeric_space = q >= pos_ + 2 && is_space(word_[q - 1]) && is_digit(word_[q - 2]) &&
+                                           is_digit(word_[q]);
+                if ((is_space(word_[q - 1]) || is_space(word_[q])) && !numeric_space) continue;
+                const bool syllable = q < hyphenation_.size() && hyphenation_[q];
+                if (pass == 0 && !digits && !numeric_space && !syllable) continue;
+                if ((digits || numeric_space) && rules_.number_continuation) {
+                    // UEB 6.10.3: between digits, the one-cell continuation
+                    // indicator; 6.10.4: at a numeric space, the two-cell one in
+                    // its place.
+                    const auto at = numeric_space ? q - 1 : q;
+                    const std::size_t signs = numeric_space ? 2 : 1;
+                    const auto k = cell_cut(rest, static_cast<std::uint32_t>(at - pos_));
+                    if (!k || *k == 0 || *k + signs > room_) continue;
+                    document::BrailleLine cells(rest.cells.begin(),
+                                                rest.cells.begin() + static_cast<std::ptrdiff_t>(*k));
+                    cells.insert(cells.end(), signs, *rules_.number_continuation);
+                    accept(std::move(cells), q, true);
+                    return {};
+                }
+                if (numeric_space) continue;
+                auto left = translate(q, true);
+                if (!left) return std::unexpected(left.error());
+                if (left->cells.size() <= room_) {
+                    accept(std::move(left->cells), q, false);
+                    return {};
+                }
+            }
+        }
+        // Nothing fits: the first print character alone is wider than the line
+        // (a long escape for a character the table does not know). Its cells go
+        // on as many lines as they need; no cell is lost.
+        std::size_t q = pos_ + 1;
+        std::optional<std::size_t> k;
+        for (; q < end; ++q)
+            if ((k = cell_cut(rest, static_cast<std::uint32_t>(q - pos_))) && *k > 0) break;
+        const std::size_t cells_of_first = q < end && k ? *k : rest.cells.size();
+        for (std::size_t s = 0; s < cells_of_first; s += room_) {
+            const auto e = std::min(cells_of_first, s + room_);
+            sink_(document::BrailleLine(rest.cells.begin() + static_cast<std::ptrdiff_t>(s),
+                                        rest.cells.begin() + static_cast<std::ptrdiff_t>(e)));
+        }
+        pos_ = q;
+        continues_number_ = false;
+        return {};
+    }
+
+    const Translator& tr_;
+    std::u32string_view word_;
+    std::span<const std::uint8_t> emphasis_;
+    std::size_t room_;
+    const DivisionRules& rules_;
+    std::vector<bool> hyphenation_;
+    const PieceSink& sink_;
+    std::size_t pos_ = 0;
+    bool continues_number_ = false;
+};
+
+}  // namespace detail
+
+// The division of issue 13 as it was before the speed-up of session 8: the
+// rest of the word translated through a window of 4 * room + 16 characters for
+// every line. Kept as the reference the new division must equal, line for line.
+inline Result<std::vector<document::BrailleLine>> divide_word(const Translator& translator, std::u32string_view word,
+                                                              std::span<const std::uint8_t> emphasis,
+                                                              std::size_t room) {
+    std::vector<document::BrailleLine> pieces;
+    const PieceSink sink = [&pieces](document::BrailleLine&& piece) { pieces.push_back(std::move(piece)); };
+    if (room == 0) return fail("no room to divide a word into");
+    auto ok = detail::Divider(translator, word, emphasis, room, sink).run();
+    if (!ok) return std::unexpected(ok.error());
+    return pieces;
+}
+
+}  // namespace tactus::translate::reference
