@@ -114,6 +114,10 @@ TEST(WordDivisionEquivalence, UnspacedAndMixedWordsGiveTheSameLines) {
                 words.push_back(pick(rng, kBase64, 400));
                 words.push_back(runs(rng, 400, false));
                 words.push_back(runs(rng, 300, true));
+                // 200 characters or fewer: syllable points from the
+                // hyphenation dictionary are tried first.
+                words.push_back(pick(rng, kLower, 150));
+                words.push_back(runs(rng, 190, false));
             }
             for (const auto& w : words) {
                 const auto diff = compare(*tr, w, {}, room);
