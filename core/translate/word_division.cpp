@@ -61,11 +61,17 @@ public:
 
 private:
     // Characters of the word translated after the last one a line's cells
-    // come from: longer than the longest rule string of the English tables
-    // (15, en-ueb-g2.ctb's `parthenogenesis`), so every rule liblouis could
-    // match over the line's characters lies inside the window. (The
-    // equivalence test passes with none at all: this is margin.)
-    static constexpr std::size_t kLookahead = 16;
+    // come from, so that the end of the window does not change how those
+    // cells are written. No lookahead is provably enough: liblouis's `match`
+    // rules repeat (en-ueb-chardefs.uti: `%[a#]%[_.$]*`) and its capitals and
+    // emphasis modes look to the end of a word. Measured instead: the
+    // equivalence test (tests/translate/word_division_equivalence_test.cpp,
+    // run with several seeds) and the golden lines of
+    // tests/data/layout/unspaced-lines.brf give the old lines with no
+    // lookahead at all; 8 characters are margin. Each character of lookahead
+    // is one more character translated for every line (of the 14 to 25
+    // characters a line of such text holds).
+    static constexpr std::size_t kLookahead = 8;
 
     // The first window: as many characters as the last line's cells came
     // from (a line's worth when none was made yet) and the lookahead.
