@@ -63,14 +63,16 @@ private:
     // Characters of the word translated after the last one a line's cells
     // come from, so that the end of the window does not change how those
     // cells are written. No lookahead is provably enough: liblouis's `match`
-    // rules repeat (en-ueb-chardefs.uti: `%[a#]%[_.$]*`) and its capitals and
-    // emphasis modes look to the end of a word. Measured instead: the
-    // equivalence test (tests/translate/word_division_equivalence_test.cpp,
-    // run with several seeds) and the golden lines of
-    // tests/data/layout/unspaced-lines.brf give the old lines with no
-    // lookahead at all; 8 characters are margin. Each character of lookahead
-    // is one more character translated for every line (of the 14 to 25
-    // characters a line of such text holds).
+    // rules repeat (en-ueb-chardefs.uti: `%[a#]%[_.$]*`), its capitals and
+    // emphasis modes look to the end of a word, and whether `"` opens or
+    // closes a quotation depends on what follows it. Measured instead with
+    // the equivalence test (tests/translate/word_division_equivalence_test.cpp)
+    // over many seeds and the golden lines of
+    // tests/data/layout/unspaced-lines.brf: with no lookahead one seed in
+    // about ten gives another line (en-ueb-g2, a closing quote before the
+    // window's end read as an opening one); with 8 characters every seed
+    // gives the old lines. Each character of lookahead is one more character
+    // translated for every line (of the 14 to 25 a line of such text holds).
     static constexpr std::size_t kLookahead = 8;
 
     // The first window: as many characters as the last line's cells came
