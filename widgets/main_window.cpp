@@ -35,6 +35,8 @@
 #include <QVBoxLayout>
 #include <unistd.h>
 
+#include <algorithm>
+
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
@@ -699,16 +701,39 @@ bool MainWindow::may_reflow_braille() {
     const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
                              "printer's page?")
                               .arg(name);
-    // The page's own size is said (its lines, its longest row), which is what must fit.
-    const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
-                           "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
-                           "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "
-                           "printer whose page is large enough.")
-                            .arg(misfit->page)
-                            .arg(misfit->rows)
-                            .arg(misfit->cols)
-                            .arg(misfit->target_cols)
-                            .arg(misfit->target_rows);
+    // The file's own page is said, as it declares it (PEF cols x rows; a
+    // BRF's longest line and page), volume by volume when its volumes differ,
+    // against the printer's page: what the user can compare with a printer.
+    const auto& volumes = misfit->volumes;
+    const bool one_size = std::ranges::all_of(volumes, [&](const layout::VolumePage& v) {
+        return v.cols == volumes.front().cols && v.rows == volumes.front().rows;
+    });
+    QString sizes;
+    if (volumes.empty() || one_size) {
+        const int cols = volumes.empty() ? misfit->file_cols : volumes.front().cols;
+        const int rows = volumes.empty() ? misfit->file_rows : volumes.front().rows;
+        sizes = tr("The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.")
+                    .arg(name)
+                    .arg(cols)
+                    .arg(rows)
+                    .arg(misfit->target_cols)
+                    .arg(misfit->target_rows);
+    } else {
+        QStringList each;
+        for (const auto& v : volumes)
+            each << (v.fits ? tr("volume %1, %2 cells by %3 lines") : tr("volume %1, %2 cells by %3 lines, too large"))
+                        .arg(v.volume)
+                        .arg(v.cols)
+                        .arg(v.rows);
+        sizes = tr("The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.")
+                    .arg(name, each.join(tr("; ")))
+                    .arg(misfit->target_cols)
+                    .arg(misfit->target_rows);
+    }
+    const auto detail = sizes + QLatin1Char(' ') +
+                        tr("Nothing has been embossed or exported. Reflow lays the braille out again on the printer's "
+                           "page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page "
+                           "is large enough.");
     if (!interactive_) {
         report(question + QLatin1Char(' ') + detail, true);
         return false;

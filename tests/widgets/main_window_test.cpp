@@ -336,6 +336,73 @@ private Q_SLOTS:
         }
     }
 
+    // Issue 13 item 1: the page-too-small question says the file's declared
+    // page, volume by volume when its volumes differ, against the printer's
+    // (volume_grids.pef: 12 x 5, 20 x 8, 16 x 6, on a 19 x 8 page, where only
+    // volume 2 is too large; its longest row is 19 cells, so the question is
+    // asked only because its declared page is checked). Before, the question
+    // said the first page's own measure ("8 lines of up to 19 cells"), which
+    // fits the printer's 19 x 8, and nothing of the file's volumes. What Orca
+    // reads (the box's name, its labels, the buttons' names and descriptions)
+    // and what a window that cannot ask announces.
+    void the_page_too_small_question_says_each_volumes_declared_page() {
+        MainWindow w;
+        auto options = w.editor()->layout().options();
+        options.geometry.cells_per_line = 19;
+        options.geometry.lines_per_page = 8;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef")));
+        const auto out = dir.filePath(QStringLiteral("grids-small.pef"));
+        const QString sizes = QStringLiteral(
+            "The pages of volume_grids.pef differ by volume: volume 1, 12 cells by 5 lines; volume 2, 20 cells by 8 "
+            "lines, too large; volume 3, 16 cells by 6 lines. The printer's page holds 19 cells by 8 lines.");
+
+        // A window that cannot ask stops, and says why.
+        w.set_interactive(false);
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(sizes), qPrintable(w.announcer()->message()));
+        QVERIFY(!QFile::exists(out));
+
+        w.set_interactive(true);
+        w.show();
+        QString text, name, labels, buttons;
+        QTimer::singleShot(200, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != QLatin1String("pageTooSmallQuestion")) return;
+            text = box->text() + QLatin1Char(' ') + box->informativeText();
+            auto* a = QAccessible::queryAccessibleInterface(box);
+            name = a ? a->text(QAccessible::Name) : QString();
+            for (int i = 0; a && i < a->childCount(); ++i)
+                if (auto* c = a->child(i); c && c->role() == QAccessible::StaticText)
+                    labels += c->text(QAccessible::Name) + QLatin1Char(' ');
+            for (auto* b : box->buttons())
+                if (auto* ba = QAccessible::queryAccessibleInterface(b))
+                    buttons += ba->text(QAccessible::Name) + QLatin1Char(':') + ba->text(QAccessible::Description) +
+                               QLatin1Char('|');
+            box->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
+        });
+        QVERIFY(!w.export_to(out));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY2(text.contains(sizes), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("lines of up to")), qPrintable(text));
+        QCOMPARE(name, QStringLiteral("The printer's page is too small"));
+        QVERIFY2(labels.contains(sizes), qPrintable(labels));
+        QCOMPARE(buttons, QStringLiteral("Reflow:Lay the braille out again on the printer's page and go on|"
+                                         "Stop:Emboss or export nothing|"));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("Stopped: nothing was embossed or exported")),
+                 qPrintable(w.announcer()->message()));
+
+        // One page size for the whole file: said once.
+        w.set_interactive(false);
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef")));
+        options.geometry.cells_per_line = 11;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral(
+                     "The pages of volumes.pef are 12 cells by 5 lines; the printer's page holds 11 cells by 8 lines.")),
+                 qPrintable(w.announcer()->message()));
+    }
+
     // A multi-volume PEF through the app: edited (a row changed, a page of
     // volume 2 deleted, a row added to the last page), its volumes, sections,
     // duplex and metadata are still there; only the edited rows differ.
