@@ -40,6 +40,7 @@
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
+#include "edit/braille_carrier.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
@@ -851,17 +852,31 @@ void MainWindow::show_panel(const QString& name) {
 
 bool MainWindow::emboss() {
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
-    // To a CUPS queue: the source document as the editor holds it (Markdown),
-    // laid out by the server with its embosser's profile, in the chosen table.
-    // Else into the spool: the job outlives this window, and waits if the
-    // embosser is unreachable.
+    // To a CUPS queue: the source document, laid out by the server with its
+    // embosser's profile, in the chosen table: ready-made braille with a
+    // PEF's structure as PEF (its pages, sections, volumes, grids and
+    // metadata: edit::structured_braille_pef, the rule the autosave follows
+    // too), anything else as Markdown. Else into the spool: the job outlives
+    // this window, and waits if the embosser is unreachable.
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
     // A CUPS queue lays the document out with its own embosser's profile; the
     // spool embosses the pages laid out here, on this profile's page.
-    if (!printer_->selected_is_queue() && !may_reflow_braille()) return false;
-    const bool sent = printer_->selected_is_queue()
-                          ? printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")), tables_->table())
-                          : printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+    const bool to_queue = printer_->selected_is_queue();
+    if (!to_queue && !may_reflow_braille()) return false;
+    bool sent = false;
+    if (to_queue) {
+        const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
+        if (pef && !*pef) {
+            report(tr("Cannot send %1: %2").arg(name, QString::fromStdString(pef->error().to_string())), true);
+            return false;
+        }
+        sent = pef ? printer_->send_to_queue(name, base + QStringLiteral(".pef"), QByteArray::fromStdString(**pef),
+                                             tables_->table())
+                   : printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")),
+                                             tables_->table());
+    } else {
+        sent = printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+    }
     if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.
         show_panel(QStringLiteral("printer"));
@@ -929,8 +944,21 @@ bool MainWindow::autosave_now() {
     QDir().mkpath(autosave_dir());
     if (autosave_path_.isEmpty())
         autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
+    // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
+    // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
+    // the rule a CUPS job follows too); anything else as the editor's lines.
+    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
+    const bool as_pef = pef && pef->has_value();
+    const auto info = QFileInfo(autosave_path_);
+    const auto path = info.path() + QLatin1Char('/') + info.completeBaseName() +
+                      (as_pef ? QStringLiteral(".pef") : QStringLiteral(".md"));
+    if (path != autosave_path_) {
+        remove_autosave();  // the copy in the other format
+        autosave_path_ = path;
+    }
     QString error;
-    if (!write_atomically(autosave_path_, editor_->text().toUtf8(), &error)) {
+    if (!write_atomically(autosave_path_, as_pef ? QByteArray::fromStdString(**pef) : editor_->text().toUtf8(), &error)) {
         message_->show_message(error, 10000);
         return false;
     }
@@ -955,7 +983,8 @@ void MainWindow::remove_autosave() {
 QList<Recovery> MainWindow::pending_recoveries() {
     QList<Recovery> out;
     const QDir dir(autosave_dir());
-    for (const auto& info : dir.entryInfoList({QStringLiteral("*.md.json")}, QDir::Files, QDir::Time)) {
+    for (const auto& info :
+         dir.entryInfoList({QStringLiteral("*.md.json"), QStringLiteral("*.pef.json")}, QDir::Files, QDir::Time)) {
         QFile f(info.absoluteFilePath());
         if (!f.open(QIODevice::ReadOnly)) continue;
         const auto meta = QJsonDocument::fromJson(f.readAll()).object();
@@ -981,19 +1010,32 @@ bool MainWindow::recover(const Recovery& r) {
         report(tr("Cannot read the autosaved copy %1: %2").arg(r.autosave_path, f.errorString()), true);
         return false;
     }
-    std::vector<std::string> lines;
-    for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
     const auto table = r.table.isEmpty() ? editor_->layout().tables() : r.table.toStdString();
-    auto layout = edit::LiveLayout::create(table, editor_->layout().options());
-    if (!layout) {
-        report(QString::fromStdString(layout.error().to_string()), true);
-        return false;
+    if (r.autosave_path.endsWith(QLatin1String(".pef"))) {
+        // Ready-made braille kept as PEF: opened as a PEF is, with its structure.
+        f.close();
+        auto loaded = load_file_now(r.autosave_path, table, editor_->layout().options());
+        if (!loaded->layout) {
+            report(tr("Cannot read the autosaved copy %1: %2")
+                       .arg(r.autosave_path, loaded->error ? QString::fromStdString(loaded->error->to_string()) : QString()),
+                   true);
+            return false;
+        }
+        editor_->adopt(std::move(*loaded->layout));
+    } else {
+        std::vector<std::string> lines;
+        for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
+        auto layout = edit::LiveLayout::create(table, editor_->layout().options());
+        if (!layout) {
+            report(QString::fromStdString(layout.error().to_string()), true);
+            return false;
+        }
+        layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
+        if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
+        if (!r.encoding.isEmpty()) layout->set_encoding(r.encoding.toStdString(), r.byte_order_mark);
+        layout->reset(std::move(lines));
+        editor_->adopt(std::move(*layout));
     }
-    layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
-    if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
-    if (!r.encoding.isEmpty()) layout->set_encoding(r.encoding.toStdString(), r.byte_order_mark);
-    layout->reset(std::move(lines));
-    editor_->adopt(std::move(*layout));
     tables_->set_table(QString::fromStdString(table));
     path_ = r.document_path;
     source_name_ = r.document_path.isEmpty() ? tr("Recovered") : QFileInfo(r.document_path).fileName();

@@ -783,6 +783,11 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Cannot send %1: %2</source>
+        <translation>無法送出 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
         <source>; </source>
         <translation>；</translation>
     </message>

@@ -197,6 +197,8 @@ T = {
     "The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.":
         "%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。",
     "; ": "；",
+    # A PEF's structure sent to a CUPS queue could not be written (issue 13 item 1, session 8).
+    "Cannot send %1: %2": "無法送出 %1：%2",
     "Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.":
         "尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。",
     "The printer's page is too small": "印表機的頁面太小",

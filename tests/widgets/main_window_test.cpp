@@ -928,6 +928,67 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending[0].autosave_path));
     }
 
+    // Issue 13 item 1: a PEF of volumes with their own page sizes and
+    // single-sided sections (volume_grids.pef), edited, is autosaved as PEF;
+    // recovered after a crash it exports (PEF and BRF) the same bytes as the
+    // window that crashed. Before, the autosave was the editor's Markdown
+    // lines: the recovery had the rows and pages but no sections, volumes,
+    // grids or metadata, so its PEF was one volume of one section on one
+    // grid, and its BRF lost the blank backs of the single-sided sections.
+    void a_recovered_pef_exports_what_the_crashed_window_exported() {
+        const QString file = QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef");
+        QByteArray before_pef, before_brf;
+        const auto read = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(file));
+            // A row of volume 2 changed (a cell typed at its end).
+            auto* print = w.editor()->print_pane();
+            const auto block = print->document()->find(QStringLiteral("⠋⠕⠥⠗"));
+            QVERIFY(!block.isNull());
+            QTextCursor c(block);
+            c.movePosition(QTextCursor::EndOfBlock);
+            c.insertText(QStringLiteral("⠗"));
+            QVERIFY(w.isWindowModified());
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.pef"))));
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.brf"))));
+            before_pef = read(dir.filePath(QStringLiteral("crashed.pef")));
+            before_brf = read(dir.filePath(QStringLiteral("crashed.brf")));
+            QVERIFY(before_pef.contains("⠋⠕⠥⠗⠗"));
+            QVERIFY(w.autosave_now());
+            QVERIFY2(w.autosave_path().endsWith(QLatin1String(".pef")), qPrintable(w.autosave_path()));
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;  // its process died
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        QVERIFY(pending[0].autosave_path.endsWith(QLatin1String(".pef")));
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QVERIFY(w.isWindowModified());
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.pef"))));
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.brf"))));
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.pef"))), before_pef);
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.brf"))), before_brf);
+        // Print typed into it: no longer ready-made braille, autosaved as the editor's lines.
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, QStringLiteral("Print words"));
+        QVERIFY(w.autosave_now());
+        QVERIFY2(w.autosave_path().endsWith(QLatin1String(".md")), qPrintable(w.autosave_path()));
+        QVERIFY(!QFile::exists(QFileInfo(w.autosave_path()).path() + QLatin1Char('/') +
+                               QFileInfo(w.autosave_path()).completeBaseName() + QStringLiteral(".pef")));
+    }
+
     // A CRLF text file recovered after a crash is saved with CRLF again.
     void a_recovered_text_file_keeps_its_line_ends() {
         const auto path = dir.filePath(QStringLiteral("dos.txt"));
