@@ -91,12 +91,16 @@ struct BrailleGrid {
 };
 
 // A PEF section: its pages start at block `first_block` and on a new sheet.
+// Its grid is the one in force for it (PEF 2008-1: its volume's cols, rows,
+// rowgap and duplex, each overridden by the section's own), so volumes of
+// different page sizes keep theirs.
 struct BrailleSection {
     std::size_t first_block = 0;
     int cols = 0;
     int rows = 0;
     bool duplex = false;
     bool starts_volume = false;
+    int rowgap = 0;
     bool operator==(const BrailleSection&) const = default;
 };
 

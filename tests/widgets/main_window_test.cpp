@@ -276,8 +276,8 @@ private Q_SLOTS:
         }
     }
 
-    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on a
-    // multi-volume one: opened in the app and exported without an edit, the
+    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on
+    // multi-volume ones (volume_grids.pef: each volume its own page size): opened in the app and exported without an edit, the
     // PEF and BRF are byte for byte what tactus-cli writes for the same file
     // and page (40 x 30, interpoint): the file's own cols/rows, its sections
     // (each on a new sheet) and their duplex (a single-sided section's blank
@@ -290,6 +290,7 @@ private Q_SLOTS:
                                  "flow-in-header-footer4.pef"})
             QTest::newRow(name) << QStringLiteral(TACTUS_TEST_DATA "/pef/real/") + QLatin1String(name);
         QTest::newRow("volumes.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef");
+        QTest::newRow("volume_grids.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef");
         QTest::newRow("single_sided_section.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef");
         QTest::newRow("sections.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/sections.pef");
     }
@@ -323,8 +324,83 @@ private Q_SLOTS:
             QVERIFY(exported);
             QFile a(app), c(cli);
             QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
-            QCOMPARE(a.readAll(), c.readAll());
+            const auto app_bytes = a.readAll();
+            QCOMPARE(app_bytes, c.readAll());
+            if (file.endsWith(QLatin1String("volume_grids.pef")) && QLatin1String(format) == QLatin1String("pef")) {
+                // Its volumes' own page sizes (12 x 5, 20 x 8, 16 x 6 with a
+                // 10 x 4 section): the file again, byte for byte.
+                QFile source(file);
+                QVERIFY(source.open(QIODevice::ReadOnly));
+                QCOMPARE(app_bytes, source.readAll());
+            }
         }
+    }
+
+    // Issue 13 item 1: the page-too-small question says the file's declared
+    // page, volume by volume when its volumes differ, against the printer's
+    // (volume_grids.pef: 12 x 5, 20 x 8, 16 x 6, on a 19 x 8 page, where only
+    // volume 2 is too large; its longest row is 19 cells, so the question is
+    // asked only because its declared page is checked). Before, the question
+    // said the first page's own measure ("8 lines of up to 19 cells"), which
+    // fits the printer's 19 x 8, and nothing of the file's volumes. What Orca
+    // reads (the box's name, its labels, the buttons' names and descriptions)
+    // and what a window that cannot ask announces.
+    void the_page_too_small_question_says_each_volumes_declared_page() {
+        MainWindow w;
+        auto options = w.editor()->layout().options();
+        options.geometry.cells_per_line = 19;
+        options.geometry.lines_per_page = 8;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef")));
+        const auto out = dir.filePath(QStringLiteral("grids-small.pef"));
+        const QString sizes = QStringLiteral(
+            "The pages of volume_grids.pef differ by volume: volume 1, 12 cells by 5 lines; volume 2, 20 cells by 8 "
+            "lines, too large; volume 3, 16 cells by 6 lines. The printer's page holds 19 cells by 8 lines.");
+
+        // A window that cannot ask stops, and says why.
+        w.set_interactive(false);
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(sizes), qPrintable(w.announcer()->message()));
+        QVERIFY(!QFile::exists(out));
+
+        w.set_interactive(true);
+        w.show();
+        QString text, name, labels, buttons;
+        QTimer::singleShot(200, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != QLatin1String("pageTooSmallQuestion")) return;
+            text = box->text() + QLatin1Char(' ') + box->informativeText();
+            auto* a = QAccessible::queryAccessibleInterface(box);
+            name = a ? a->text(QAccessible::Name) : QString();
+            for (int i = 0; a && i < a->childCount(); ++i)
+                if (auto* c = a->child(i); c && c->role() == QAccessible::StaticText)
+                    labels += c->text(QAccessible::Name) + QLatin1Char(' ');
+            for (auto* b : box->buttons())
+                if (auto* ba = QAccessible::queryAccessibleInterface(b))
+                    buttons += ba->text(QAccessible::Name) + QLatin1Char(':') + ba->text(QAccessible::Description) +
+                               QLatin1Char('|');
+            box->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
+        });
+        QVERIFY(!w.export_to(out));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY2(text.contains(sizes), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("lines of up to")), qPrintable(text));
+        QCOMPARE(name, QStringLiteral("The printer's page is too small"));
+        QVERIFY2(labels.contains(sizes), qPrintable(labels));
+        QCOMPARE(buttons, QStringLiteral("Reflow:Lay the braille out again on the printer's page and go on|"
+                                         "Stop:Emboss or export nothing|"));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("Stopped: nothing was embossed or exported")),
+                 qPrintable(w.announcer()->message()));
+
+        // One page size for the whole file: said once.
+        w.set_interactive(false);
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef")));
+        options.geometry.cells_per_line = 11;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral(
+                     "The pages of volumes.pef are 12 cells by 5 lines; the printer's page holds 11 cells by 8 lines.")),
+                 qPrintable(w.announcer()->message()));
     }
 
     // A multi-volume PEF through the app: edited (a row changed, a page of
@@ -850,6 +926,67 @@ private Q_SLOTS:
         QVERIFY(w.isWindowModified());  // recovered work is unsaved until saved
         QVERIFY(MainWindow::pending_recoveries().isEmpty());
         QVERIFY(!QFile::exists(pending[0].autosave_path));
+    }
+
+    // Issue 13 item 1: a PEF of volumes with their own page sizes and
+    // single-sided sections (volume_grids.pef), edited, is autosaved as PEF;
+    // recovered after a crash it exports (PEF and BRF) the same bytes as the
+    // window that crashed. Before, the autosave was the editor's Markdown
+    // lines: the recovery had the rows and pages but no sections, volumes,
+    // grids or metadata, so its PEF was one volume of one section on one
+    // grid, and its BRF lost the blank backs of the single-sided sections.
+    void a_recovered_pef_exports_what_the_crashed_window_exported() {
+        const QString file = QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef");
+        QByteArray before_pef, before_brf;
+        const auto read = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(file));
+            // A row of volume 2 changed (a cell typed at its end).
+            auto* print = w.editor()->print_pane();
+            const auto block = print->document()->find(QStringLiteral("⠋⠕⠥⠗"));
+            QVERIFY(!block.isNull());
+            QTextCursor c(block);
+            c.movePosition(QTextCursor::EndOfBlock);
+            c.insertText(QStringLiteral("⠗"));
+            QVERIFY(w.isWindowModified());
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.pef"))));
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.brf"))));
+            before_pef = read(dir.filePath(QStringLiteral("crashed.pef")));
+            before_brf = read(dir.filePath(QStringLiteral("crashed.brf")));
+            QVERIFY(before_pef.contains("⠋⠕⠥⠗⠗"));
+            QVERIFY(w.autosave_now());
+            QVERIFY2(w.autosave_path().endsWith(QLatin1String(".pef")), qPrintable(w.autosave_path()));
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;  // its process died
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        QVERIFY(pending[0].autosave_path.endsWith(QLatin1String(".pef")));
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QVERIFY(w.isWindowModified());
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.pef"))));
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.brf"))));
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.pef"))), before_pef);
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.brf"))), before_brf);
+        // Print typed into it: no longer ready-made braille, autosaved as the editor's lines.
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, QStringLiteral("Print words"));
+        QVERIFY(w.autosave_now());
+        QVERIFY2(w.autosave_path().endsWith(QLatin1String(".md")), qPrintable(w.autosave_path()));
+        QVERIFY(!QFile::exists(QFileInfo(w.autosave_path()).path() + QLatin1Char('/') +
+                               QFileInfo(w.autosave_path()).completeBaseName() + QStringLiteral(".pef")));
     }
 
     // A CRLF text file recovered after a crash is saved with CRLF again.
