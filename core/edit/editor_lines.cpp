@@ -361,9 +361,10 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
 
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                                std::string_view file_name, std::string_view line_ending) {
-    auto text = file_text(lines, dialect, blocks, file_name, line_ending);
-    if (dialect_for(file_name) != Dialect::text) return text;
-    return exporter::encode_text(text, blocks.encoding, blocks.byte_order_mark);
+    // One rule for every print file the editor writes, text or Markdown: the
+    // encoding the document was opened with (issue 13 item 4).
+    return exporter::encode_text(file_text(lines, dialect, blocks, file_name, line_ending), blocks.encoding,
+                                 blocks.byte_order_mark);
 }
 
 std::string editor_line_content(std::string_view line, Dialect dialect) {

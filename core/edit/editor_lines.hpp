@@ -58,11 +58,12 @@ std::string render_editor_line(const document::Block& block, Dialect dialect = D
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                       std::string_view file_name, std::string_view line_ending = "\n");
 
-// file_text as the file's bytes: a text file (.txt, .text) in the encoding it
-// was opened with (`blocks.encoding`, with its byte-order mark when
-// `blocks.byte_order_mark`: exporter::encode_text), so a file opened and saved
-// is the same bytes; Markdown as UTF-8. Fails, writing nothing, when the text
-// holds a character that encoding cannot (exporter::is_unrepresentable_error).
+// file_text as the file's bytes, text (.txt, .text) and Markdown alike, in the
+// encoding the document was opened with (`blocks.encoding`, with its
+// byte-order mark when `blocks.byte_order_mark`: exporter::encode_text; empty,
+// as for a new document or a DOCX, is UTF-8), so a file opened and saved is the
+// same bytes. Fails, writing nothing, when the text holds a character that
+// encoding cannot (exporter::is_unrepresentable_error).
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                                std::string_view file_name, std::string_view line_ending = "\n");
 
