@@ -413,7 +413,7 @@ TEST(RoundTrip, ANoteNothingRefersToIsKept) {
     const auto end = braille.find("\u2820\u2811\u281d\u2819\u2832");  // ,end4
     ASSERT_NE(middle, std::string::npos) << braille;
     ASSERT_NE(end, std::string::npos) << braille;
-    const auto note = braille.find("\u2836\u2836\u283c\u2803", middle);  // 77#b
+    const auto note = braille.find("\u2814\u283c\u2803", middle);  // 9#b (UEB superscript 2, uncontracted)
     ASSERT_NE(note, std::string::npos) << braille;
     EXPECT_LT(note, end) << braille;
     // A definition nothing refers to in a file someone else wrote: kept where it stands.
