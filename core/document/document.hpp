@@ -113,6 +113,8 @@ struct Document {
     std::string encoding;     // detected or given source encoding (text and Markdown
                               // imports); the file is saved in it again (exporter::encode_text)
     bool byte_order_mark = false;  // the source began with one: it is written again
+    std::string line_ending;       // text and Markdown imports: the file's first line end
+                                   // ("\n", "\r\n", "\r"), which it is saved with again
     std::optional<BrailleGrid> braille_grid;     // BRF, PEF: the source's page size
     std::vector<BrailleSection> braille_sections;  // PEF sections, in order
     std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order

@@ -53,8 +53,9 @@ std::string render_editor_line(const document::Block& block, Dialect dialect = D
 // `blocks` are the lines' blocks with their print pages numbered
 // (LiveLayout::document()); when the lines are in the file's own dialect they
 // are written as they are (made whole, for a Markdown table; a text file's
-// lines byte for byte, joined with `line_ending`), else the blocks are written
-// by core's writer for that format.
+// lines byte for byte), else the blocks are written by core's writer for that
+// format; every line ends with `line_ending`, the file's own (a text or
+// Markdown file's first, Document::line_ending).
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                       std::string_view file_name, std::string_view line_ending = "\n");
 

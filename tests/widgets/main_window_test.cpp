@@ -649,6 +649,11 @@ private Q_SLOTS:
             << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00")
             << 1 << QStringLiteral("!")
             << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00");
+        // The same as Windows Notepad writes it: with CRLF, which it keeps.
+        QTest::newRow("UTF-16LE with BOM, CRLF")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00")
+            << 1 << QStringLiteral("!")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00");
         // "## 春曉\n\n春眠不覺曉，處處聞啼鳥。\n\n夜來風雨聲，花落知多少。\n"
         QTest::newRow("Big5")
             << hex("2323 20ac 4bbe e50a 0aac 4baf 76a4 a3c4 b1be e5a1 41b3 42b3 42bb 44b3 dab3 bea1 430a 0aa9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a")
