@@ -989,11 +989,10 @@ TEST(TextEncoding, AMarkdownFileWithoutAnEncodingIsUtf8) {
 // Saving and reopening changes nothing, the line ends too: a Markdown file
 // written with CRLF (Windows Notepad, which also writes UTF-16LE with a
 // byte-order mark) was saved with LF. It keeps its first line end, as a text
-// file does (import/text_lines.hpp line_ending_of). (A file with CR alone, old
-// Mac OS, keeps it too, but the footnote pass of the importer splits lines at
-// LF only, so it is left out here: docs/import.md.)
+// file does (import/text_lines.hpp line_ending_of). A file with CR alone (old
+// Mac OS) too; its notes were not read (the footnote pass split lines at LF).
 TEST(RoundTrip, AMarkdownFileKeepsItsLineEnd) {
-    for (const std::string ending : {"\r\n", "\n"}) {
+    for (const std::string ending : {"\r\n", "\r", "\n"}) {
         SCOPED_TRACE(::testing::PrintToString(ending));
         const auto e = ending;
         // As core's Markdown writer writes it (a blank line between blocks).
