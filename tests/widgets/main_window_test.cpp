@@ -967,6 +967,46 @@ private Q_SLOTS:
         QCOMPARE(f.readAll(), QByteArray("one\r\ntwo three\r\n"));
     }
 
+    // Issue 13 item 4 (session 8): a Markdown file recovered after a crash is
+    // saved in its encoding and with its line ends again (Notepad's UTF-16LE
+    // with a BOM and CRLF), as a text file is.
+    void a_recovered_markdown_file_keeps_its_encoding_and_line_ends() {
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        const auto path = dir.filePath(QStringLiteral("notepad.md"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            // "# Hello 世界\r\n\r\n**bye** now\r\n"
+            f.write(hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00"));
+        }
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(path));
+            QTextCursor c(w.editor()->print_pane()->document()->findBlockByNumber(1));
+            c.movePosition(QTextCursor::EndOfBlock);
+            w.editor()->print_pane()->setTextCursor(c);
+            QTest::keyClicks(w.editor()->print_pane(), "!");
+            QVERIFY(w.autosave_now());
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("UTF-16LE"));
+        QVERIFY(w.save_to(path));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // "# Hello 世界\r\n\r\n**bye** now!\r\n"
+        QCOMPARE(f.readAll(), hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 2100 0d00 0a00"));
+    }
+
     void six_key_mapping_comes_from_the_settings() {
         QSettings().setValue(QStringLiteral("braille/six_keys"), QStringLiteral("ASDJKL"));  // dot 1 on A
         MainWindow w;
