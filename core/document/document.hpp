@@ -114,9 +114,11 @@ struct MetadataItem {
 struct Document {
     std::vector<Block> blocks;
     std::string source_name;  // file name the document came from, for messages
-    std::string encoding;     // detected or given source encoding (text imports); a
-                              // text file is saved in it again (exporter::encode_text)
+    std::string encoding;     // detected or given source encoding (text and Markdown
+                              // imports); the file is saved in it again (exporter::encode_text)
     bool byte_order_mark = false;  // the source began with one: it is written again
+    std::string line_ending;       // text and Markdown imports: the file's first line end
+                                   // ("\n", "\r\n", "\r"), which it is saved with again
     std::optional<BrailleGrid> braille_grid;     // BRF, PEF: the source's page size
     std::vector<BrailleSection> braille_sections;  // PEF sections, in order
     std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order

@@ -706,11 +706,88 @@ private Q_SLOTS:
         QCOMPARE(read(), expected);
     }
 
+    // Issue 13 item 4 (session 8): a .md was saved as UTF-8 whatever its
+    // encoding. It follows the text file's rule (edit::file_bytes): opened and
+    // saved it is the same bytes; edited, it is still in its encoding.
+    void a_markdown_file_is_saved_in_its_encoding_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<int>("line");  // where `typed` is typed, at the line's start
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QByteArray>("expected");
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        // "# Café “quoted” costs €5\n\nNaïve résumé, *façade*.\n\n- œuvre, Ærø\n"
+        QTest::newRow("windows-1252")
+            << hex("2320 4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 0a0a 4e61 ef76 6520 72e9 7375 6de9 2c20 2a66 61e7 6164 652a 2e0a 0a2d 209c 7576 7265 2c20 c672 f80a")
+            << 1 << QStringLiteral("\u00FC")
+            << hex("2320 4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 0a0a fc4e 61ef 7665 2072 e973 756d e92c 202a 6661 e761 6465 2a2e 0a0a 2d20 9c75 7672 652c 20c6 72f8 0a");
+        // BOM + "# Hello 世界\n\n**bye** now\n"
+        QTest::newRow("UTF-16LE with BOM")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00")
+            << 1 << QStringLiteral("!")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00");
+        // The same as Windows Notepad writes it: with CRLF, which it keeps.
+        QTest::newRow("UTF-16LE with BOM, CRLF")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00")
+            << 1 << QStringLiteral("!")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00");
+        // "## 春曉\n\n春眠不覺曉，處處聞啼鳥。\n\n夜來風雨聲，花落知多少。\n"
+        QTest::newRow("Big5")
+            << hex("2323 20ac 4bbe e50a 0aac 4baf 76a4 a3c4 b1be e5a1 41b3 42b3 42bb 44b3 dab3 bea1 430a 0aa9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a")
+            << 2 << QStringLiteral("\u4E2D")
+            << hex("2323 20ac 4bbe e50a 0aac 4baf 76a4 a3c4 b1be e5a1 41b3 42b3 42bb 44b3 dab3 bea1 430a 0aa4 a4a9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a");
+        // "## 春晓\n\n春眠不觉晓，处处闻啼鸟。\n\n夜来风雨声，花落知多少。\n"
+        QTest::newRow("GB18030")
+            << hex("2323 20b4 bacf fe0a 0ab4 bac3 dfb2 bbbe f5cf fea3 acb4 a6b4 a6ce c5cc e4c4 f1a1 a30a 0ad2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a")
+            << 2 << QStringLiteral("\u4E2D")
+            << hex("2323 20b4 bacf fe0a 0ab4 bac3 dfb2 bbbe f5cf fea3 acb4 a6b4 a6ce c5cc e4c4 f1a1 a30a 0ad6 d0d2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a");
+    }
+    void a_markdown_file_is_saved_in_its_encoding() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(int, line);
+        QFETCH(QString, typed);
+        QFETCH(QByteArray, expected);
+        const auto path = dir.filePath(QStringLiteral("encoded.md"));
+        const auto read = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
+        save();
+        QCOMPARE(read(), bytes);
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document()->findBlockByNumber(line));
+        c.insertText(typed);  // keyClicks takes Latin-1 only
+        save();
+        QVERIFY(!w.isWindowModified());
+        QCOMPARE(read(), expected);
+        // Reopened, it is the text as edited, in the same encoding.
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        QCOMPARE(again.editor()->layout().encoding(), w.editor()->layout().encoding());
+    }
+
     // A character the file's encoding cannot hold is never written as a
     // substitute: without an answer (no one to ask) nothing is saved, and the
     // message names the character, its line and the encoding.
+    // Issue 13 item 4 (session 8): a Markdown file the same way, by the same rule.
+    void a_character_the_encoding_cannot_hold_is_not_saved_silently_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("line");  // the editor line of "naïve"
+        QTest::newRow("text") << QStringLiteral("western.txt") << 2;
+        QTest::newRow("Markdown") << QStringLiteral("western.md") << 1;
+    }
     void a_character_the_encoding_cannot_hold_is_not_saved_silently() {
-        const auto path = dir.filePath(QStringLiteral("western.txt"));
+        QFETCH(QString, name);
+        QFETCH(int, line);
+        const auto path = dir.filePath(name);
         const auto bytes = QByteArray::fromHex("4361 66e9 0a0a 6e61 ef76 650a");  // "Café\n\nnaïve\n" in windows-1252
         {
             QFile f(path);
@@ -725,7 +802,7 @@ private Q_SLOTS:
         QVERIFY(w.open_file_now(path));
         QCOMPARE(w.editor()->layout().encoding(), std::string("WINDOWS-1252"));
         auto* print = w.editor()->print_pane();
-        QTextCursor c(print->document()->findBlockByNumber(2));
+        QTextCursor c(print->document()->findBlockByNumber(line));
         c.insertText(QStringLiteral("\u4E2D"));
         QVERIFY(!w.save_to(path));
         QVERIFY(w.isWindowModified());
@@ -736,8 +813,12 @@ private Q_SLOTS:
         QVERIFY2(said.contains(QStringLiteral("U+4E2D")) && said.contains(QStringLiteral("WINDOWS-1252")) &&
                      said.contains(QStringLiteral("3:1")),
                  qPrintable(said));
-        // Saved under another name as Markdown it is UTF-8, which holds it.
-        QVERIFY(w.save_to(dir.filePath(QStringLiteral("western.md"))));
+        // Saved under another name, text or Markdown, it is still in its
+        // encoding (one rule, edit::file_bytes): refused the same way.
+        for (const auto* other : {"other.md", "other.txt"}) {
+            QVERIFY(!w.save_to(dir.filePath(QLatin1String(other))));
+            QVERIFY(!QFileInfo::exists(dir.filePath(QLatin1String(other))));
+        }
 
         // With someone to ask: the question, named for Orca, Cancel first
         // (nothing written), then Save as UTF-8 (the whole file, from then on).
@@ -1021,6 +1102,46 @@ private Q_SLOTS:
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray("one\r\ntwo three\r\n"));
+    }
+
+    // Issue 13 item 4 (session 8): a Markdown file recovered after a crash is
+    // saved in its encoding and with its line ends again (Notepad's UTF-16LE
+    // with a BOM and CRLF), as a text file is.
+    void a_recovered_markdown_file_keeps_its_encoding_and_line_ends() {
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        const auto path = dir.filePath(QStringLiteral("notepad.md"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            // "# Hello 世界\r\n\r\n**bye** now\r\n"
+            f.write(hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00"));
+        }
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(path));
+            QTextCursor c(w.editor()->print_pane()->document()->findBlockByNumber(1));
+            c.movePosition(QTextCursor::EndOfBlock);
+            w.editor()->print_pane()->setTextCursor(c);
+            QTest::keyClicks(w.editor()->print_pane(), "!");
+            QVERIFY(w.autosave_now());
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("UTF-16LE"));
+        QVERIFY(w.save_to(path));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // "# Hello 世界\r\n\r\n**bye** now!\r\n"
+        QCOMPARE(f.readAll(), hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 2100 0d00 0a00"));
     }
 
     void six_key_mapping_comes_from_the_settings() {
