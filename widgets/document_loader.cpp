@@ -74,6 +74,11 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
     // Ready-made braille's sections, volumes, grid and metadata go with its lines (core's one rule).
     auto r = build(edit::render_editor_lines(*doc, edit::Dialect::markdown), tables, options, edit::Dialect::markdown,
                    progress, edit::braille_structure(*doc));
+    // A Markdown file is saved in the encoding it was read in, with its line
+    // end, as a text file is (edit::file_bytes); a DOCX, PEF or BRF has neither
+    // and is saved as UTF-8 with LF.
+    if (r->layout && !doc->encoding.empty()) r->layout->set_encoding(doc->encoding, doc->byte_order_mark);
+    if (r->layout && !doc->line_ending.empty()) r->layout->set_line_ending(doc->line_ending);
     r->path = path;
     return r;
 }

@@ -35,9 +35,12 @@
 #include <QVBoxLayout>
 #include <unistd.h>
 
+#include <algorithm>
+
 #include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
+#include "edit/braille_carrier.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
@@ -699,16 +702,39 @@ bool MainWindow::may_reflow_braille() {
     const auto question = tr("The printer's page is too small for the pages of %1. Lay the braille out again on the "
                              "printer's page?")
                               .arg(name);
-    // The page's own size is said (its lines, its longest row), which is what must fit.
-    const auto detail = tr("Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by "
-                           "%5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on "
-                           "the printer's page, so its lines and pages change. Stop leaves it as it is; choose a "
-                           "printer whose page is large enough.")
-                            .arg(misfit->page)
-                            .arg(misfit->rows)
-                            .arg(misfit->cols)
-                            .arg(misfit->target_cols)
-                            .arg(misfit->target_rows);
+    // The file's own page is said, as it declares it (PEF cols x rows; a
+    // BRF's longest line and page), volume by volume when its volumes differ,
+    // against the printer's page: what the user can compare with a printer.
+    const auto& volumes = misfit->volumes;
+    const bool one_size = std::ranges::all_of(volumes, [&](const layout::VolumePage& v) {
+        return v.cols == volumes.front().cols && v.rows == volumes.front().rows;
+    });
+    QString sizes;
+    if (volumes.empty() || one_size) {
+        const int cols = volumes.empty() ? misfit->file_cols : volumes.front().cols;
+        const int rows = volumes.empty() ? misfit->file_rows : volumes.front().rows;
+        sizes = tr("The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.")
+                    .arg(name)
+                    .arg(cols)
+                    .arg(rows)
+                    .arg(misfit->target_cols)
+                    .arg(misfit->target_rows);
+    } else {
+        QStringList each;
+        for (const auto& v : volumes)
+            each << (v.fits ? tr("volume %1, %2 cells by %3 lines") : tr("volume %1, %2 cells by %3 lines, too large"))
+                        .arg(v.volume)
+                        .arg(v.cols)
+                        .arg(v.rows);
+        sizes = tr("The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.")
+                    .arg(name, each.join(tr("; ")))
+                    .arg(misfit->target_cols)
+                    .arg(misfit->target_rows);
+    }
+    const auto detail = sizes + QLatin1Char(' ') +
+                        tr("Nothing has been embossed or exported. Reflow lays the braille out again on the printer's "
+                           "page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page "
+                           "is large enough.");
     if (!interactive_) {
         report(question + QLatin1Char(' ') + detail, true);
         return false;
@@ -826,17 +852,31 @@ void MainWindow::show_panel(const QString& name) {
 
 bool MainWindow::emboss() {
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
-    // To a CUPS queue: the source document as the editor holds it (Markdown),
-    // laid out by the server with its embosser's profile, in the chosen table.
-    // Else into the spool: the job outlives this window, and waits if the
-    // embosser is unreachable.
+    // To a CUPS queue: the source document, laid out by the server with its
+    // embosser's profile, in the chosen table: ready-made braille with a
+    // PEF's structure as PEF (its pages, sections, volumes, grids and
+    // metadata: edit::structured_braille_pef, the rule the autosave follows
+    // too), anything else as Markdown. Else into the spool: the job outlives
+    // this window, and waits if the embosser is unreachable.
     const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
     // A CUPS queue lays the document out with its own embosser's profile; the
     // spool embosses the pages laid out here, on this profile's page.
-    if (!printer_->selected_is_queue() && !may_reflow_braille()) return false;
-    const bool sent = printer_->selected_is_queue()
-                          ? printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")), tables_->table())
-                          : printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+    const bool to_queue = printer_->selected_is_queue();
+    if (!to_queue && !may_reflow_braille()) return false;
+    bool sent = false;
+    if (to_queue) {
+        const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
+        if (pef && !*pef) {
+            report(tr("Cannot send %1: %2").arg(name, QString::fromStdString(pef->error().to_string())), true);
+            return false;
+        }
+        sent = pef ? printer_->send_to_queue(name, base + QStringLiteral(".pef"), QByteArray::fromStdString(**pef),
+                                             tables_->table())
+                   : printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")),
+                                             tables_->table());
+    } else {
+        sent = printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+    }
     if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.
         show_panel(QStringLiteral("printer"));
@@ -904,8 +944,21 @@ bool MainWindow::autosave_now() {
     QDir().mkpath(autosave_dir());
     if (autosave_path_.isEmpty())
         autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
+    // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
+    // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
+    // the rule a CUPS job follows too); anything else as the editor's lines.
+    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
+    const bool as_pef = pef && pef->has_value();
+    const auto info = QFileInfo(autosave_path_);
+    const auto path = info.path() + QLatin1Char('/') + info.completeBaseName() +
+                      (as_pef ? QStringLiteral(".pef") : QStringLiteral(".md"));
+    if (path != autosave_path_) {
+        remove_autosave();  // the copy in the other format
+        autosave_path_ = path;
+    }
     QString error;
-    if (!write_atomically(autosave_path_, editor_->text().toUtf8(), &error)) {
+    if (!write_atomically(autosave_path_, as_pef ? QByteArray::fromStdString(**pef) : editor_->text().toUtf8(), &error)) {
         message_->show_message(error, 10000);
         return false;
     }
@@ -930,7 +983,8 @@ void MainWindow::remove_autosave() {
 QList<Recovery> MainWindow::pending_recoveries() {
     QList<Recovery> out;
     const QDir dir(autosave_dir());
-    for (const auto& info : dir.entryInfoList({QStringLiteral("*.md.json")}, QDir::Files, QDir::Time)) {
+    for (const auto& info :
+         dir.entryInfoList({QStringLiteral("*.md.json"), QStringLiteral("*.pef.json")}, QDir::Files, QDir::Time)) {
         QFile f(info.absoluteFilePath());
         if (!f.open(QIODevice::ReadOnly)) continue;
         const auto meta = QJsonDocument::fromJson(f.readAll()).object();
@@ -956,19 +1010,32 @@ bool MainWindow::recover(const Recovery& r) {
         report(tr("Cannot read the autosaved copy %1: %2").arg(r.autosave_path, f.errorString()), true);
         return false;
     }
-    std::vector<std::string> lines;
-    for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
     const auto table = r.table.isEmpty() ? editor_->layout().tables() : r.table.toStdString();
-    auto layout = edit::LiveLayout::create(table, editor_->layout().options());
-    if (!layout) {
-        report(QString::fromStdString(layout.error().to_string()), true);
-        return false;
+    if (r.autosave_path.endsWith(QLatin1String(".pef"))) {
+        // Ready-made braille kept as PEF: opened as a PEF is, with its structure.
+        f.close();
+        auto loaded = load_file_now(r.autosave_path, table, editor_->layout().options());
+        if (!loaded->layout) {
+            report(tr("Cannot read the autosaved copy %1: %2")
+                       .arg(r.autosave_path, loaded->error ? QString::fromStdString(loaded->error->to_string()) : QString()),
+                   true);
+            return false;
+        }
+        editor_->adopt(std::move(*loaded->layout));
+    } else {
+        std::vector<std::string> lines;
+        for (const auto& l : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'))) lines.push_back(l.toStdString());
+        auto layout = edit::LiveLayout::create(table, editor_->layout().options());
+        if (!layout) {
+            report(QString::fromStdString(layout.error().to_string()), true);
+            return false;
+        }
+        layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
+        if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
+        if (!r.encoding.isEmpty()) layout->set_encoding(r.encoding.toStdString(), r.byte_order_mark);
+        layout->reset(std::move(lines));
+        editor_->adopt(std::move(*layout));
     }
-    layout->set_dialect(edit::dialect_for(r.document_path.toStdString()));
-    if (!r.line_ending.isEmpty()) layout->set_line_ending(r.line_ending.toStdString());
-    if (!r.encoding.isEmpty()) layout->set_encoding(r.encoding.toStdString(), r.byte_order_mark);
-    layout->reset(std::move(lines));
-    editor_->adopt(std::move(*layout));
     tables_->set_table(QString::fromStdString(table));
     path_ = r.document_path;
     source_name_ = r.document_path.isEmpty() ? tr("Recovered") : QFileInfo(r.document_path).fileName();

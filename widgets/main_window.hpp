@@ -33,7 +33,7 @@ class PreviewPanel;
 class TablePicker;
 
 struct Recovery {
-    QString autosave_path;  // the autosaved Markdown
+    QString autosave_path;  // the autosaved copy: the editor's lines (.md), or PEF for structured braille (.pef)
     QString document_path;  // what it was a copy of ("" when untitled)
     QString table;
     QDateTime saved_at;

@@ -130,13 +130,9 @@ spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, li
             auto spec = transport::parse_device(p.device);
             auto settings = spec ? transport::sim_settings(*spec) : std::unexpected(spec.error());
             if (!settings) return std::unexpected(settings.error());
-            // The built-in simulator speaks protocol 2 unless the device string
-            // asks for 3 (`sim?protocol=3`: the firmware the printer's profile
-            // makes). On protocol 3 a 71-sheet job's strike check disagreed with
-            // the plan (same count, other strikes; accessibility.orca_emboss),
-            // not yet understood, so the app keeps the protocol it was proved on.
-            const auto tables = settings->protocol == 3 ? spool::printer_firmware_tables(p)
-                                                        : std::optional<machine::FirmwareTables>{};
+            // The built-in simulator runs the firmware the printer's profile
+            // makes (protocol 3), unless the device string says protocol=2.
+            const auto tables = spool::printer_firmware_tables(p);
             auto stream = sim->connect(*settings, tables);
             if (!stream) return std::unexpected(stream.error());
             return link::Link::over(std::move(*stream), options);

@@ -100,7 +100,8 @@ void run_firmware_sim(const SimArgs& a) {
 }
 
 // With --mute-after-pass: one line when the controller goes quiet, one when it
-// has come to rest by itself (job ended, or paused by its keep-alive watchdog),
+// has come to rest by itself (job ended, paused by its keep-alive watchdog, or
+// on protocol 3 starved at rest),
 // so a test can kill the host exactly in between.
 struct MuteWatch {
     bool said_muted = false;
@@ -113,8 +114,12 @@ struct MuteWatch {
             std::cout << "muted after pass " << st.ack.executed_passes << std::endl;
         }
         const auto state = st.ack.state;
+        // Protocol 3's firmware does not enforce the keep-alive (firmware/README.md,
+        // "Not done"): with the host gone it runs out its ring and waits at rest
+        // for the next entry, which is where it stays.
+        const bool starved = ctl.protocol() == encode::kProtocolV3 && state == encode::ControllerState::waiting;
         if (!said_rest && (state == encode::ControllerState::idle || state == encode::ControllerState::paused ||
-                           state == encode::ControllerState::fault)) {
+                           state == encode::ControllerState::fault || starved)) {
             said_rest = true;
             std::cout << "at rest: " << encode::state_name(state) << ", job " << st.ack.job_id << ", "
                       << st.ack.executed_passes << " passes executed"

@@ -15,6 +15,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -121,12 +122,24 @@ int bench_pef(const std::string& file) {
         latency.push_back(ms_since(t0) / 2);
     }
     if (!layout.pages_kept()) std::fprintf(stderr, "the pages were laid out again\n");
+    // The autosave of the edited book: PEF (edit::structured_braille_pef), on the GUI thread every 30 s while unsaved.
+    std::vector<double> autosave;
+    for (int k = 0; k < 5; ++k) {
+        const auto t0 = Clock::now();
+        if (!window.autosave_now()) std::fprintf(stderr, "autosave failed\n");
+        autosave.push_back(ms_since(t0));
+    }
+    const bool autosaved_pef = window.autosave_path().endsWith(QLatin1String(".pef"));
+    QFile::remove(window.autosave_path());  // leave no recovery behind
+    QFile::remove(window.autosave_path() + QStringLiteral(".json"));
     std::printf("document: %s, %d editor lines, %zu braille pages, %zu sheets, %zu sections (kept as they are)\n",
                 file.c_str(), print->document()->blockCount(), layout.paged().pages.size(), layout.paged().sheet_count(),
                 layout.paged().sections.size());
     std::printf("braille cell typed -> updated preview: median %.2f ms, p95 %.2f ms, max %.2f ms (goal: median < 16 ms)\n",
                 percentile(latency, 0.5), percentile(latency, 0.95), percentile(latency, 1.0));
     std::printf("open: tactus %.0f ms\n", open_ms);
+    std::printf("autosave%s: median %.1f ms, max %.1f ms\n", autosaved_pef ? " as PEF" : " (not PEF!)",
+                percentile(autosave, 0.5), percentile(autosave, 1.0));
     std::printf("resident memory: %.1f MB with the book open (%.1f MB before opening)\n",
                 static_cast<double>(rss_open) / 1024.0, static_cast<double>(rss_empty) / 1024.0);
     return 0;

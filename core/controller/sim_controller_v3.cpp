@@ -135,6 +135,14 @@ void SimController::v3_frame(const encode::Frame& f, double now) {
 }
 
 void SimController::v3_hello(const encode::Frame& f, double now) {
+    // A HELLO of a new session, whichever version it offers, comes from a
+    // host that replaced the one that died with a reply on the wire
+    // (mute_after_pass): the line back works again. Unmuted only on the v3
+    // HELLO, the refusal of the new host's protocol-2 offer was never heard
+    // and it gave up ("no answer to HELLO").
+    if (f.payload.size() >= 2 &&
+        (!session_ || static_cast<std::uint16_t>((f.payload[0] << 8) | f.payload[1]) != nonce_))
+        muted_ = false;
     if (f.payload.size() != 3 || f.payload[2] != encode::kProtocolV3) {
         nak(NakReason::bad_payload);
         return;

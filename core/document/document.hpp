@@ -91,12 +91,16 @@ struct BrailleGrid {
 };
 
 // A PEF section: its pages start at block `first_block` and on a new sheet.
+// Its grid is the one in force for it (PEF 2008-1: its volume's cols, rows,
+// rowgap and duplex, each overridden by the section's own), so volumes of
+// different page sizes keep theirs.
 struct BrailleSection {
     std::size_t first_block = 0;
     int cols = 0;
     int rows = 0;
     bool duplex = false;
     bool starts_volume = false;
+    int rowgap = 0;
     bool operator==(const BrailleSection&) const = default;
 };
 
@@ -110,9 +114,11 @@ struct MetadataItem {
 struct Document {
     std::vector<Block> blocks;
     std::string source_name;  // file name the document came from, for messages
-    std::string encoding;     // detected or given source encoding (text imports); a
-                              // text file is saved in it again (exporter::encode_text)
+    std::string encoding;     // detected or given source encoding (text and Markdown
+                              // imports); the file is saved in it again (exporter::encode_text)
     bool byte_order_mark = false;  // the source began with one: it is written again
+    std::string line_ending;       // text and Markdown imports: the file's first line end
+                                   // ("\n", "\r\n", "\r"), which it is saved with again
     std::optional<BrailleGrid> braille_grid;     // BRF, PEF: the source's page size
     std::vector<BrailleSection> braille_sections;  // PEF sections, in order
     std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order

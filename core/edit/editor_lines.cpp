@@ -325,12 +325,24 @@ bool risky_start(std::string_view line, document::BlockKind kind) {
     return !t.empty() && std::string_view("#-+*_=>|<`~[0123456789").find(t.front()) != std::string_view::npos;
 }
 
+// A writer's text (each line ended by LF) with `line_ending` instead: the file's own.
+std::string with_line_ending(std::string text, std::string_view line_ending) {
+    if (line_ending == "\n" || line_ending.empty()) return text;
+    std::string out;
+    out.reserve(text.size() + text.size() / 16);
+    for (const char c : text) {
+        if (c == '\n') out += line_ending;
+        else out += c;
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                       std::string_view file_name, std::string_view line_ending) {
     if (dialect_for(file_name) == Dialect::text) {
-        if (dialect == Dialect::markdown) return exporter::to_text(blocks);
+        if (dialect == Dialect::markdown) return with_line_ending(exporter::to_text(blocks), line_ending);
         // A text file's lines are the editor's: written as they are.
         std::string out;
         for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -354,16 +366,17 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
             else
                 kept.push_back(block || is_table_delimiter(l) ? l : std::string());
         }
-        return exporter::join_markdown_lines(kept);
+        return with_line_ending(exporter::join_markdown_lines(kept), line_ending);
     }
-    return exporter::to_markdown(blocks);
+    return with_line_ending(exporter::to_markdown(blocks), line_ending);
 }
 
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                                std::string_view file_name, std::string_view line_ending) {
-    auto text = file_text(lines, dialect, blocks, file_name, line_ending);
-    if (dialect_for(file_name) != Dialect::text) return text;
-    return exporter::encode_text(text, blocks.encoding, blocks.byte_order_mark);
+    // One rule for every print file the editor writes, text or Markdown: the
+    // encoding the document was opened with (issue 13 item 4).
+    return exporter::encode_text(file_text(lines, dialect, blocks, file_name, line_ending), blocks.encoding,
+                                 blocks.byte_order_mark);
 }
 
 std::string editor_line_content(std::string_view line, Dialect dialect) {

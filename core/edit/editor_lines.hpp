@@ -53,16 +53,18 @@ std::string render_editor_line(const document::Block& block, Dialect dialect = D
 // `blocks` are the lines' blocks with their print pages numbered
 // (LiveLayout::document()); when the lines are in the file's own dialect they
 // are written as they are (made whole, for a Markdown table; a text file's
-// lines byte for byte, joined with `line_ending`), else the blocks are written
-// by core's writer for that format.
+// lines byte for byte), else the blocks are written by core's writer for that
+// format; every line ends with `line_ending`, the file's own (a text or
+// Markdown file's first, Document::line_ending).
 std::string file_text(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                       std::string_view file_name, std::string_view line_ending = "\n");
 
-// file_text as the file's bytes: a text file (.txt, .text) in the encoding it
-// was opened with (`blocks.encoding`, with its byte-order mark when
-// `blocks.byte_order_mark`: exporter::encode_text), so a file opened and saved
-// is the same bytes; Markdown as UTF-8. Fails, writing nothing, when the text
-// holds a character that encoding cannot (exporter::is_unrepresentable_error).
+// file_text as the file's bytes, text (.txt, .text) and Markdown alike, in the
+// encoding the document was opened with (`blocks.encoding`, with its
+// byte-order mark when `blocks.byte_order_mark`: exporter::encode_text; empty,
+// as for a new document or a DOCX, is UTF-8), so a file opened and saved is the
+// same bytes. Fails, writing nothing, when the text holds a character that
+// encoding cannot (exporter::is_unrepresentable_error).
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                                std::string_view file_name, std::string_view line_ending = "\n");
 

@@ -647,7 +647,21 @@ bool LiveLayout::kept_row_edit(std::size_t i, std::pair<std::size_t, std::size_t
     auto& e = entries_[i];
     if (!one_row(e) || e.section || !braille_grid_) return false;
     const auto& row = e.block->braille_lines.front();
-    const auto cols = static_cast<std::size_t>(std::min(braille_grid_->cols, requested_.geometry.cells_per_line));
+    // The file's cols for this row: its section's (the nearest mark above it;
+    // the first section's above the first mark), else the file's grid.
+    int file_cols = braille_grid_->cols;
+    std::size_t m = i;
+    while (m > 0 && !entries_[m].section) --m;
+    if (entries_[m].section) {
+        file_cols = entries_[m].section->cols;
+    } else {
+        for (const auto& later : entries_)
+            if (later.section) {
+                file_cols = later.section->cols;
+                break;
+            }
+    }
+    const auto cols = static_cast<std::size_t>(std::min(file_cols, requested_.geometry.cells_per_line));
     const auto eight = [](const document::BrailleLine& r) {
         return std::ranges::any_of(r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
     };

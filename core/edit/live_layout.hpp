@@ -75,8 +75,9 @@ public:
     // "\n" unless set): the text dialect's lines are the file's lines.
     void set_line_ending(std::string ending) { line_ending_ = std::move(ending); }
     [[nodiscard]] const std::string& line_ending() const { return line_ending_; }
-    // The encoding a text file is saved in (import::read_text_file; UTF-8
-    // without a byte-order mark unless set), given to document() as the
+    // The encoding a text or Markdown file is saved in (import::read_text_file,
+    // Document::encoding; UTF-8 without a byte-order mark unless set), given to
+    // document() as the
     // document's own (Document::encoding, byte_order_mark).
     void set_encoding(std::string encoding, bool byte_order_mark) {
         encoding_ = std::move(encoding);

@@ -33,7 +33,12 @@ void put_svar15(std::vector<std::uint8_t>& o, std::int32_t v) {
         o.push_back(static_cast<std::uint8_t>(v & 0x7F));
         return;
     }
-    put_uvar15(o, static_cast<std::uint32_t>(v) & 0x7FFF);
+    // Always the two-byte form: the firmware reads a one-byte svar as 7 bits
+    // signed, so 64..127 written as a one-byte uvar came back as -64..-1 (a
+    // feed of 108 units, after a short last page, ran 20 units backwards).
+    const auto u = static_cast<std::uint32_t>(v) & 0x7FFF;
+    o.push_back(static_cast<std::uint8_t>(0x80 | (u >> 8)));
+    o.push_back(static_cast<std::uint8_t>(u & 0xFF));
 }
 
 // The firmware's model of one axis: its step counter and the direction it last moved.

@@ -39,9 +39,10 @@ PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std:
 // which BRF cannot carry, naming the page and line.
 Result<std::string> to_brf(const layout::PagedDocument& doc);
 
-// PEF 2008-1: one volume of one section with duplex from the geometry, or the
-// source's volumes and sections with their own duplex (ready-made braille,
-// layout::PageSection), every volume with the document's cols and rows.
+// PEF 2008-1: one volume of one section with the geometry's page and duplex,
+// or the source's volumes and sections (ready-made braille,
+// layout::PageSection), each with its own cols, rows, rowgap and duplex: a
+// volume's are its first section's, a section that differs carries its own.
 Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta = {});
 
 // Unicode braille text: LF line ends, a form feed between pages.

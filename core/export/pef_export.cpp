@@ -96,47 +96,67 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
     // inside them (a multi-line dc:description stays as the source had it).
     head.print(out, "  ", pugi::format_indent, pugi::encoding_utf8, 1);
     out << "  <body>\n";
-    // Ready-made braille keeps its volumes, its sections and their duplex (a
-    // volume's duplex is its first section's; a section that differs says so);
-    // laid-out text is one volume of one section whose duplex is the layout's.
-    bool volume_duplex = g.interpoint;
-    const auto open_volume = [&](bool duplex) {
-        volume_duplex = duplex;
-        out << "    <volume cols=\"" << g.cells_per_line << "\" rows=\"" << g.lines_per_page << "\" rowgap=\""
-            << (g.eight_dot ? 1 : 0) << "\" duplex=\"" << (duplex ? "true" : "false") << "\">\n";
+    // Ready-made braille keeps its volumes, its sections and each one's grid:
+    // a volume's cols, rows, rowgap and duplex are its first section's; a
+    // section that differs says so (PEF 2008-1 lets a section override its
+    // volume). Laid-out text is one volume of one section, on the layout's page.
+    struct Grid {
+        int cols = 0, rows = 0, rowgap = 0;
+        bool duplex = false;
+        bool operator==(const Grid&) const = default;
     };
-    const auto open_section = [&](bool duplex) {
-        out << (duplex == volume_duplex ? std::string("      <section>\n")
-                                        : std::string("      <section duplex=\"") + (duplex ? "true" : "false") + "\">\n");
+    const Grid layout_grid{g.cells_per_line, g.lines_per_page, g.eight_dot ? 1 : 0, g.interpoint};
+    const auto grid_of = [&](const layout::PageSection& s) {
+        return s.cols > 0 ? Grid{s.cols, s.rows, s.rowgap, s.duplex} : Grid{layout_grid.cols, layout_grid.rows,
+                                                                           layout_grid.rowgap, s.duplex};
     };
-    open_volume(doc.sections.empty() ? g.interpoint : doc.sections.front().duplex);
-    open_section(volume_duplex);
+    Grid volume = doc.sections.empty() ? layout_grid : grid_of(doc.sections.front());
+    Grid section = volume;
+    const auto open_volume = [&](const Grid& v) {
+        volume = v;
+        out << "    <volume cols=\"" << v.cols << "\" rows=\"" << v.rows << "\" rowgap=\"" << v.rowgap << "\" duplex=\""
+            << (v.duplex ? "true" : "false") << "\">\n";
+    };
+    const auto open_section = [&](const Grid& s) {
+        section = s;
+        out << "      <section";
+        if (s.cols != volume.cols) out << " cols=\"" << s.cols << '"';
+        if (s.rows != volume.rows) out << " rows=\"" << s.rows << '"';
+        if (s.rowgap != volume.rowgap) out << " rowgap=\"" << s.rowgap << '"';
+        if (s.duplex != volume.duplex) out << " duplex=\"" << (s.duplex ? "true" : "false") << '"';
+        out << ">\n";
+    };
+    open_volume(volume);
+    open_section(volume);
     std::string row;
     std::size_t next_section = 0;
     bool section_has_page = false;
     for (std::size_t p = 0; p < doc.pages.size(); ++p) {
         const auto& page = doc.pages[p];
         while (next_section < doc.sections.size() && doc.sections[next_section].first_page == p) {
-            const auto& section = doc.sections[next_section];
+            const auto& s = doc.sections[next_section];
             if (next_section > 0) {
                 if (!section_has_page) out << "        <page />\n";  // a section needs a page
                 out << "      </section>\n";
-                if (section.starts_volume) {
+                if (s.starts_volume) {
                     out << "    </volume>\n";
-                    open_volume(section.duplex);
+                    open_volume(grid_of(s));
                 }
-                open_section(section.duplex);
+                open_section(grid_of(s));
             }
             section_has_page = false;
             ++next_section;
         }
         // Blank backs added for the embosser: PEF's sections and duplex say the same.
         if (page.filler) continue;
-        if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
+        // The rows written (blank ones at the end are the page's padding) fit the section's grid.
+        std::size_t used = page.lines.size();
+        while (used > 0 && page.lines[used - 1].empty()) --used;
+        if (used > static_cast<std::size_t>(section.rows))
             return fail("page has more rows than the volume allows",
                         "page " + std::to_string(page.braille_number));
-        for (std::size_t i = 0; i < page.lines.size(); ++i)
-            if (page.lines[i].size() > static_cast<std::size_t>(g.cells_per_line))
+        for (std::size_t i = 0; i < used; ++i)
+            if (page.lines[i].size() > static_cast<std::size_t>(section.cols))
                 return fail("row longer than cols", "page " + std::to_string(page.braille_number) +
                                                         " row " + std::to_string(i + 1));
         write_page(page, row, out);

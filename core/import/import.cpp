@@ -8,6 +8,7 @@
 #include "common/file_io.hpp"
 #include "import/encoding.hpp"
 #include "import/importers.hpp"
+#include "import/text_lines.hpp"
 
 namespace tactus::import {
 namespace {
@@ -112,6 +113,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
 
     Result<document::Document> doc = document::Document{};
     std::string encoding;
+    std::string line_ending;
     bool byte_order_mark = false;
     switch (format) {
         case SourceFormat::text:
@@ -123,6 +125,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
                                                : detail::import_markdown(text);
             encoding = decoded->encoding;
             byte_order_mark = decoded->byte_order_mark;
+            line_ending = line_ending_of(text);
             break;
         }
         case SourceFormat::docx:
@@ -144,6 +147,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
     doc->source_name = where;
     doc->encoding = std::move(encoding);
     doc->byte_order_mark = byte_order_mark;
+    doc->line_ending = std::move(line_ending);
     return doc;
 }
 

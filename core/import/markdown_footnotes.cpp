@@ -72,16 +72,19 @@ std::optional<std::pair<std::size_t, std::size_t>> read_footnote_marker(std::str
 
 PreparedMarkdown prepare_footnotes(std::string_view md) {
     PreparedMarkdown out;
-    // Split into lines, keeping each line's end.
+    // Split into lines, keeping each line's end: LF, CRLF or CR alone, as md4c
+    // and LineIndex read them (a CR-only file was one line here: no note found).
     std::vector<std::string_view> lines;
     for (std::size_t start = 0; start < md.size();) {
-        const auto nl = md.find('\n', start);
-        const auto end = nl == std::string_view::npos ? md.size() : nl + 1;
+        auto end = md.find_first_of("\r\n", start);
+        if (end == std::string_view::npos) end = md.size();
+        else end += md.substr(end, 2) == "\r\n" ? std::size_t{2} : std::size_t{1};
         lines.push_back(md.substr(start, end - start));
         start = end;
     }
     const auto body = [](std::string_view l) {
-        return l.ends_with('\n') ? l.substr(0, l.size() - 1) : l;
+        while (!l.empty() && (l.back() == '\n' || l.back() == '\r')) l.remove_suffix(1);
+        return l;
     };
     // Pass 1: definitions (and their indented continuation lines) are blanked.
     std::vector<bool> blanked(lines.size(), false);
@@ -112,7 +115,7 @@ PreparedMarkdown prepare_footnotes(std::string_view md) {
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const auto l = lines[i];
         if (blanked[i]) {
-            if (l.ends_with('\n')) out.text += '\n';
+            out.text += l.substr(body(l).size());  // its line end
             continue;
         }
         const auto b = body(l);

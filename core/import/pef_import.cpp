@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // PEF 2008-1: every <page> becomes one verbatim braille block (its <row>s), with
-// a braille page break between pages. The page grid (cols, rows, duplex of each
-// volume and section, sections overriding their volume), the sections
+// a braille page break between pages. The page grid (cols, rows, rowgap, duplex of
+// each volume and section, sections overriding their volume), the sections
 // themselves and the dc: metadata are kept in the document, so the pages can be
 // embossed and exported as they are (layout/braille_pages.hpp). Impossible
 // attribute values (cols="0", rows="-5", duplex="maybe", rowgap="-1") are refused with their line.
@@ -32,6 +32,7 @@ struct Grid {
     int cols = 0;
     int rows = 0;
     bool duplex = false;
+    int rowgap = 0;
 };
 
 class PefReader {
@@ -58,7 +59,7 @@ public:
                 Grid grid = volume_grid;
                 if (auto ok = read_grid(section, grid, false); !ok) return std::unexpected(ok.error());
                 sections_.push_back(document::BrailleSection{builder_.size(), grid.cols, grid.rows, grid.duplex,
-                                                   first_section});
+                                                             first_section, grid.rowgap});
                 first_section = false;
                 max_cols_ = std::max(max_cols_, grid.cols);
                 max_rows_ = std::max(max_rows_, grid.rows);
@@ -108,7 +109,7 @@ private:
                             where);
             *field = value;
         }
-        if (auto ok = read_rowgap(n, required); !ok) return ok;
+        if (auto ok = read_rowgap(n, required, &grid.rowgap); !ok) return ok;
         if (const auto a = n.attribute("duplex")) {
             const auto v = trim(a.value());
             if (v == "true" || v == "1") grid.duplex = true;
@@ -124,7 +125,8 @@ private:
     // rowgap (xsd:nonNegativeInteger) on a volume (required), section, page or
     // row. Tactus writes its own (0, or 1 for 8-dot), but a value the schema
     // forbids marks a broken file, refused like cols="0".
-    Result<void> read_rowgap(const pugi::xml_node& n, bool required) const {
+    // `value`, when given, receives it (a volume's or a section's: kept in the grid).
+    Result<void> read_rowgap(const pugi::xml_node& n, bool required, int* value_out = nullptr) const {
         const auto a = n.attribute("rowgap");
         const auto element = "<" + std::string(local_name(n)) + ">";
         if (!a) {
@@ -138,6 +140,7 @@ private:
         if (v.empty() || ec != std::errc{} || end != v.data() + v.size() || value < 0)
             return fail(element + " rowgap=\"" + std::string(a.value()) + "\" must be a whole number, 0 or more",
                         std::to_string(line_of(n)));
+        if (value_out) *value_out = value;
         return {};
     }
 

@@ -45,6 +45,27 @@ int longest_row(const std::vector<const document::BrailleLine*>& rows) {
     return static_cast<int>(n);
 }
 
+// Each section's page: its own grid (PEF cols/rows in force for it, its
+// volume's unless it overrides them), at least as large as its pages' rows
+// (an edit can make a row longer than the file's cols). Without sections (a
+// BRF) one entry: the file's grid, at least its pages.
+struct SectionPage {
+    int cols = 0;
+    int rows = 0;
+};
+std::vector<SectionPage> section_pages(const document::Document& doc, const std::vector<SourcePage>& pages) {
+    std::vector<SectionPage> out(std::max<std::size_t>(doc.braille_sections.size(), 1));
+    for (std::size_t s = 0; s < doc.braille_sections.size(); ++s)
+        out[s] = {doc.braille_sections[s].cols, doc.braille_sections[s].rows};
+    if (doc.braille_sections.empty() && doc.braille_grid) out[0] = {doc.braille_grid->cols, doc.braille_grid->rows};
+    for (const auto& p : pages) {
+        auto& g = out[std::min(p.section, out.size() - 1)];
+        g.cols = std::max(g.cols, longest_row(p.rows));
+        g.rows = std::max(g.rows, static_cast<int>(p.rows.size()));
+    }
+    return out;
+}
+
 }  // namespace
 
 bool is_ready_braille(const document::Document& doc) {
@@ -62,19 +83,39 @@ bool is_ready_braille(const document::Document& doc) {
 std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& doc, const LayoutOptions& target) {
     const auto& g = target.geometry;
     const auto pages = source_pages(doc);
+    const auto grids = section_pages(doc, pages);
+    const bool sections = !doc.braille_sections.empty();
     for (std::size_t p = 0; p < pages.size(); ++p) {
         const int rows = static_cast<int>(pages[p].rows.size());
         const int cols = longest_row(pages[p].rows);
-        if (rows <= g.lines_per_page && cols <= g.cells_per_line) continue;
-        const auto grid = doc.braille_grid;
-        return BraillePageMisfit{.page = static_cast<int>(p + 1),
-                                 .rows = rows,
-                                 .cols = cols,
-                                 .file_cols = grid ? grid->cols : cols,
-                                 .file_rows = grid ? grid->rows : rows,
-                                 .target_cols = g.cells_per_line,
-                                 .target_rows = g.lines_per_page,
-                                 .source_line = pages[p].source_line};
+        // A PEF page is its section's grid (each page is that size on paper,
+        // keep_braille_pages lays it out so); a BRF page is its rows.
+        const auto& grid = grids[std::min(pages[p].section, grids.size() - 1)];
+        const int need_rows = sections ? grid.rows : rows;
+        const int need_cols = sections ? grid.cols : cols;
+        if (need_rows <= g.lines_per_page && need_cols <= g.cells_per_line) continue;
+        BraillePageMisfit m{.page = static_cast<int>(p + 1),
+                            .rows = rows,
+                            .cols = cols,
+                            .file_cols = sections ? grid.cols : doc.braille_grid ? doc.braille_grid->cols : cols,
+                            .file_rows = sections ? grid.rows : doc.braille_grid ? doc.braille_grid->rows : rows,
+                            .target_cols = g.cells_per_line,
+                            .target_rows = g.lines_per_page,
+                            .source_line = pages[p].source_line,
+                            .volumes = {}};
+        // The file's page, volume by volume: a volume is as large as its largest section.
+        if (!sections) {
+            m.volumes.push_back({1, std::max(grids[0].cols, 1), std::max(grids[0].rows, 1)});
+        } else {
+            for (std::size_t s = 0; s < doc.braille_sections.size(); ++s) {
+                if (s == 0 || doc.braille_sections[s].starts_volume)
+                    m.volumes.push_back({static_cast<int>(m.volumes.size()) + 1, 0, 0});
+                m.volumes.back().cols = std::max(m.volumes.back().cols, grids[s].cols);
+                m.volumes.back().rows = std::max(m.volumes.back().rows, grids[s].rows);
+            }
+        }
+        for (auto& v : m.volumes) v.fits = v.cols <= g.cells_per_line && v.rows <= g.lines_per_page;
+        return m;
     }
     return std::nullopt;
 }
@@ -98,13 +139,16 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
     PagedDocument out;
     out.metadata = doc.metadata;
     out.geometry.interpoint = target.geometry.interpoint;
+    // The sheets' page holds every section's page (the largest of them).
+    const auto grids = section_pages(doc, pages);
     int cols = 0, rows = 0;
     bool eight_dot = false;
-    for (const auto& p : pages) {
-        cols = std::max(cols, longest_row(p.rows));
-        rows = std::max(rows, static_cast<int>(p.rows.size()));
+    for (const auto& p : pages)
         for (const auto* r : p.rows)
             eight_dot = eight_dot || std::ranges::any_of(*r, [](document::Cell c) { return (c.dots & 0xC0) != 0; });
+    for (const auto& grid : grids) {
+        cols = std::max(cols, grid.cols);
+        rows = std::max(rows, grid.rows);
     }
     if (doc.braille_grid) {
         cols = std::max(cols, doc.braille_grid->cols);
@@ -133,7 +177,15 @@ Result<PagedDocument> keep_braille_pages(const document::Document& doc, const La
             // A new section starts on a new sheet: never on the back of the last one.
             if (interpoint && out.pages.size() % 2 == 1) blank_back();
             const bool volume = p.section < doc.braille_sections.size() && doc.braille_sections[p.section].starts_volume;
-            out.sections.push_back(PageSection{out.pages.size(), section_duplex, volume || out.sections.empty()});
+            const auto& grid = grids[std::min(p.section, grids.size() - 1)];
+            out.sections.push_back(PageSection{.first_page = out.pages.size(),
+                                               .duplex = section_duplex,
+                                               .starts_volume = volume || out.sections.empty(),
+                                               .cols = grid.cols,
+                                               .rows = grid.rows,
+                                               .rowgap = p.section < doc.braille_sections.size()
+                                                             ? doc.braille_sections[p.section].rowgap
+                                                             : 0});
         }
         if (places) {
             // The blocks before the page's first row (its page break) land where it does;

@@ -18,21 +18,34 @@ namespace tactus::layout {
 // to translate (what the BRF and PEF importers produce).
 bool is_ready_braille(const document::Document& doc);
 
+// The file's page in one volume: the cols and rows it declares (PEF; the
+// largest of its sections'), or a BRF's longest line and page.
+struct VolumePage {
+    int volume = 0;  // 1-based
+    int cols = 0;
+    int rows = 0;
+    bool fits = false;  // the target's page holds it
+    bool operator==(const VolumePage&) const = default;
+};
+
 // The first source page that the target's page cannot hold, with both sizes.
 struct BraillePageMisfit {
     int page = 0;         // 1-based source page
     int rows = 0;         // its rows
     int cols = 0;         // its longest row, in cells
-    int file_cols = 0;    // the file's own page (PEF cols/rows; else this page's size)
+    int file_cols = 0;    // the file's own page for it (its PEF section's cols/rows; a BRF's grid)
     int file_rows = 0;
     int target_cols = 0;  // the target's page
     int target_rows = 0;
     int source_line = 0;  // where the page starts in the file (0: unknown)
+    std::vector<VolumePage> volumes;  // the file's page, volume by volume (one for a BRF)
 };
 
-// Nothing when every source page fits the target's page (a row no longer than
-// its cells, no more rows than its lines). The one rule the CLI (exit 5) and
-// the app (its question before embossing or exporting) both ask.
+// Nothing when every source page fits the target's page: a PEF page is its
+// section's declared page (cols, rows; at least its rows), each laid out on
+// its own grid, a BRF page its rows (no row longer than the target's cells, no
+// more rows than its lines). The one rule the CLI (exit 5) and the app (its
+// question before embossing or exporting) both ask.
 std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& doc, const LayoutOptions& target);
 
 // Fails, naming the first page that does not fit and both sizes, when a source
@@ -40,7 +53,9 @@ std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& d
 Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target);
 
 // The source pages as they are. The result's cells and lines are the source's
-// own grid (PEF cols/rows; for BRF the longest line and page found); whether
+// own grid (the largest of its PEF sections' cols/rows; for BRF the longest
+// line and page found), each section keeps its own (PageSection: cols, rows,
+// rowgap, written back to PEF volume by volume); whether
 // sheets are interpoint is the target's (the printer's) choice. On interpoint
 // paper a section that would start on a back gets a blank back first, and each
 // page of a single-sided section gets a blank back of its own (`Page::filler`).

@@ -59,6 +59,11 @@ struct PageSection {
     // The section starts a PEF <volume> (the first section always does): the
     // PEF writer writes the volumes back as the source had them.
     bool starts_volume = false;
+    // The section's own page (PEF cols, rows, rowgap), written back to PEF:
+    // volumes of different sizes keep theirs. 0 cols: the geometry's page.
+    int cols = 0;
+    int rows = 0;
+    int rowgap = 0;
     bool operator==(const PageSection&) const = default;
 };
 

@@ -76,15 +76,10 @@ std::optional<machine::FirmwareTables> printer_firmware_tables(const PrinterReco
 }
 
 Result<link::Link> open_printer(const PrinterRecord& p, link::LinkOptions options) {
-    // A simulated printer behind the spool speaks protocol 2 unless its device
-    // string asks for 3: on 3, a long job from the app's spool runner struck as
-    // many strikes as planned but not the planned ones (accessibility.orca_emboss,
-    // session 7), not yet understood. The direct `emboss --device sim` speaks 3.
+    // A simulated printer runs the firmware its profile makes (protocol 3),
+    // unless its device string says protocol=2 (sim_firmware_for).
     const auto spec = transport::parse_device(p.device);
-    if (spec && spec->scheme == "sim") {
-        const auto settings = transport::sim_settings(*spec);
-        if (settings && settings->protocol == 3) options.sim_firmware = printer_firmware_tables(p);
-    }
+    if (spec && spec->scheme == "sim") options.sim_firmware = printer_firmware_tables(p);
     return link::Link::open(p.device, options);
 }
 
@@ -216,10 +211,35 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    auto print = make_print_job(*doc, *profile, printer.device, job.copies);
+    // --- the printer first: connecting settles whatever an earlier run left
+    // behind with the controller's count, and says which protocol it speaks,
+    // so the job is planned once, for that protocol.
+    if (!link_) {
+        if (auto c = connect(); !c) return wait_for_printer(job, c.error().to_string());
+        unreachable_ = 0;
+    }
+    // The reference firmware (protocol 3, as the simulators speak it too) runs
+    // table moves: the job is planned with the tables the profile makes, the
+    // rule the firmware was built with; HELLO_REPLY's table id must be theirs
+    // (use_firmware_tables), or the firmware was built for another profile.
+    const bool v3 = link_->protocol() == encode::kProtocolV3;
+    Result<PrintJob> print = std::unexpected(Error{"not planned", "spool"});
+    if (v3) {
+        auto tables = profile::make_firmware_tables(*profile);
+        print = tables ? make_firmware_print_job(*doc, *profile, *tables, printer.device, job.copies)
+                       : Result<PrintJob>(std::unexpected(tables.error()));
+    } else {
+        print = make_print_job(*doc, *profile, printer.device, job.copies);
+    }
     auto* plan = print ? &print->plan : nullptr;
     if (!print && print.error().where == kPassesWhere) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
+        return RunEnd::failed;
+    }
+    if (!plan && v3) {
+        const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
+                         "cannot emboss with its current profile: " + print.error().to_string();
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
@@ -232,37 +252,18 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
-    if (submitted_profile != printer.profile_json)
-        SPOOL_TRY(s.log(job.id, printer.id, "profile",
-                        "the printer's profile changed since submission; planned with the current one"));
-
-    // --- the printer: connect, which settles whatever an earlier run left
-    // behind with the controller's count, before the plan shape is replaced
-    if (!link_) {
-        if (auto c = connect(); !c) return wait_for_printer(job, c.error().to_string());
-        unreachable_ = 0;
-    }
-    // The reference firmware (protocol 3, as the simulators speak it too)
-    // runs table moves: the job is planned again with the tables the profile
-    // makes, the rule the firmware was built with; HELLO_REPLY's table id must
-    // be theirs (use_firmware_tables), or the firmware was built for another
-    // profile.
-    if (link_->protocol() == encode::kProtocolV3) {
-        auto tables = profile::make_firmware_tables(*profile);
-        auto v3 = tables ? make_firmware_print_job(*doc, *profile, *tables, printer.device, job.copies)
-                         : Result<PrintJob>(std::unexpected(tables.error()));
-        Result<void> checked = v3 ? link_->use_firmware_tables(*v3->firmware, v3->timing)
-                                  : Result<void>(std::unexpected(v3.error()));
-        if (!checked) {
+    if (v3) {
+        if (auto checked = link_->use_firmware_tables(*print->firmware, print->timing); !checked) {
             const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
                              "cannot emboss with its current profile: " + checked.error().to_string();
             SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
             return RunEnd::failed;
         }
-        print = std::move(v3);
-        plan = &print->plan;
     }
+    SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
+    if (submitted_profile != printer.profile_json)
+        SPOOL_TRY(s.log(job.id, printer.id, "profile",
+                        "the printer's profile changed since submission; planned with the current one"));
     std::vector<std::size_t> passes;
     for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
     // The controller gets the configuration of the profile this job was just

@@ -197,16 +197,27 @@ Result<Translator> Translator::open(std::string tables) {
         t.ueb_ = t.system_ == "ueb";
         if (t.ueb_) t.division_.number_continuation = document::Cell{0x10};  // dot 5
         // `compbrl` switches a whole word to computer braille when any of its
-        // characters asks for it (en-us-g2.ctb does so for a word holding a
-        // dot or a slash): how the start of a word is written then depends on
-        // its end.
+        // characters asks for it (en-us-g2.ctb does so for a word holding
+        // "://", ".com", "()" and the like): how the start of a word is written
+        // then depends on its end.
         t.word_wide_rules_ = false;
         for (std::size_t at = 0; at <= t.tables_.size() && !t.word_wide_rules_;) {
             const auto comma = std::min(t.tables_.find(',', at), t.tables_.size());
             t.word_wide_rules_ = table_has_opcode(t.tables_.substr(at, comma - at), "compbrl");
             at = comma + 1;
         }
-        if (t.ueb_ || t.system_ == "ebae") t.note_indicator_.assign(2, document::Cell{0x36});  // dots 2356 2356
+        if (t.ueb_) {
+            // UEB has no note indicator (⠶⠶ is its double prime): a numbered
+            // reference is print's superscript number, the superscript
+            // indicator (dots 35) before it, in grade 1 mode in contracted
+            // braille (Rules of UEB 2013 §3.24.1, "clarion¹" as ;9#a, and
+            // §11.4.2, a footnote "paper⁵⁶" as pap];9#ef), without the grade 1
+            // indicator in a work entirely in grade 1 (§5.11.1).
+            if (table_metadata(first, "contraction") != "no") t.note_indicator_.push_back(document::Cell{0x30});  // dots 56
+            t.note_indicator_.push_back(document::Cell{0x14});  // dots 35
+        } else if (t.system_ == "ebae") {
+            t.note_indicator_.assign(2, document::Cell{0x36});  // dots 2356 2356 (Braille Formats 2011 §16.1.3)
+        }
         louis::take_log();
     }
     if (t.division_.number_continuation) {

@@ -60,16 +60,20 @@ public:
     // from the first table it includes that has one; empty when none says.
     [[nodiscard]] const std::string& braille_system() const { return system_; }
     // The code's note reference indicator, written before a note's reference
-    // number (docs/layout.md, "Notes"): dots 2356 2356 in UEB and in EBAE (BANA
-    // Braille Formats 2011 §16.1.3, "77#a numbered"). Empty for a code Tactus
-    // knows none of (Chinese and the rest): the reference is then written in
-    // parentheses, as print without superscripts does. The one place this rule lives.
+    // number (docs/layout.md, "Notes"): in UEB the superscript indicator, dots
+    // 35, after the grade 1 indicator, dots 56, in contracted braille (print's
+    // superscript number: Rules of Unified English Braille 2013 §3.24.1,
+    // §11.4.2; without it in uncontracted braille, §5.11.1); in EBAE dots 2356
+    // 2356 (BANA Braille Formats 2011 §16.1.3, "77#a numbered"). Empty for a
+    // code Tactus knows none of (Chinese and the rest): the reference is then
+    // written in parentheses, as print without superscripts does. The one place
+    // this rule lives.
     [[nodiscard]] const document::BrailleLine& note_reference_indicator() const { return note_indicator_; }
 
     // True when the table can write the start of a word differently because
-    // of what comes at its far end (a `compbrl` rule: a dot or a slash anywhere
-    // in a word puts the whole word in computer braille, as en-us-g2.ctb
-    // does). Word division then looks four lines ahead, not one
+    // of what comes at its far end (a `compbrl` rule: "://", ".com", "()" and
+    // the like anywhere in a word put the whole word in computer braille, as
+    // en-us-g2.ctb does). Word division then looks four lines ahead, not one
     // (translate/word_division.cpp).
     [[nodiscard]] bool has_word_wide_rules() const { return word_wide_rules_; }
 

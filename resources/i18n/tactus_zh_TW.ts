@@ -763,8 +763,38 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>Braille page %1 has %2 lines of up to %3 cells; the printer&apos;s page holds %4 cells by %5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
-        <translation>點字第 %1 頁有 %2 行，每行最多 %3 方；印表機的頁面只容納每行 %4 方、每頁 %5 行。尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
+        <source>The pages of %1 are %2 cells by %3 lines; the printer&apos;s page holds %4 cells by %5 lines.</source>
+        <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>volume %1, %2 cells by %3 lines</source>
+        <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>volume %1, %2 cells by %3 lines, too large</source>
+        <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>The pages of %1 differ by volume: %2. The printer&apos;s page holds %3 cells by %4 lines.</source>
+        <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Cannot send %1: %2</source>
+        <translation>無法送出 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="0" />
+        <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
+        <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="0" />

@@ -189,7 +189,18 @@ T = {
         "工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。",
     "&Keep embossing": "繼續列印(&K)",
     "The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?": "印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？",
-    "Braille page %1 has %2 lines of up to %3 cells; the printer's page holds %4 cells by %5 lines. Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.": "點字第 %1 頁有 %2 行，每行最多 %3 方；印表機的頁面只容納每行 %4 方、每頁 %5 行。尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。",
+    # The page-too-small question: the file's declared page, volume by volume (issue 13 item 1, session 8).
+    "The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.":
+        "%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。",
+    "volume %1, %2 cells by %3 lines": "第 %1 冊，每行 %2 方、每頁 %3 行",
+    "volume %1, %2 cells by %3 lines, too large": "第 %1 冊，每行 %2 方、每頁 %3 行，太大",
+    "The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.":
+        "%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。",
+    "; ": "；",
+    # A PEF's structure sent to a CUPS queue could not be written (issue 13 item 1, session 8).
+    "Cannot send %1: %2": "無法送出 %1：%2",
+    "Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.":
+        "尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。",
     "The printer's page is too small": "印表機的頁面太小",
     "&Reflow": "重新排版(&R)",
     "&Stop": "停止(&S)",

@@ -234,7 +234,7 @@ def scenario_pagetoosmall(tactus, sample, work):
         s.start()
         s.launch([tactus, "--no-recovery", pef])
         s.step("Ctrl+P asks before embossing", keys=["ctrl+p"],
-               expect=[r"too small", r"25 lines of up to \d+ cells", r"27 cells by 24 lines", r"Stop push button"],
+               expect=[r"too small", r"are 40 cells by 25 lines", r"27 cells by 24 lines", r"Stop push button"],
                once=[r"Nothing has been embossed"])
         s.step("Tab reads the other button", keys=["Tab"], expect=[r"Reflow push button"])
         s.step("Escape stops", keys=["Escape"], expect=[r"Stopped: nothing was embossed"],

@@ -21,7 +21,12 @@
 #include <regex>
 
 #include "cups_rig.hpp"
+#include "import/import.hpp"
 #include "ipp/remote_queues.hpp"
+#include "pipeline/pipeline.hpp"
+#include "profile/page_geometry.hpp"
+#include "profile/profile_json.hpp"
+#include "spool/snapshot.hpp"
 #include "main_window.hpp"
 #include "printer_panel.hpp"
 
@@ -203,6 +208,53 @@ TEST_F(CupsAppE2E, CtrlPToANetworkQueueEmbossesOnTheServerAsPlannedAndTheJobView
     EXPECT_EQ(heard.count(QStringLiteral("Embossed app-lesson.md on EmbosserApp")), 1) << heard.said.join('\n').toStdString();
     EXPECT_EQ(heard.finished.size(), 1u);
     EXPECT_TRUE(panel->jobs().empty());
+}
+
+// Issue 13 item 1: a PEF of volumes with their own page sizes and
+// single-sided sections (volume_grids.pef) sent from the app to a Tactus
+// queue is embossed on the server as the file's own pages: the server's job
+// has exactly the pages tactus-cli lays the file out on for the server's
+// profile (its rows on its pages, each section on a new sheet, a blank back
+// for each page of a single-sided section), and the strikes are that plan.
+// Before, the app sent the editor's Markdown, which has the rows and pages
+// but no sections: the server laid the file's 8 pages out as one stream, 4
+// sheets where the file asks for 7.
+TEST_F(CupsAppE2E, APefSentToANetworkQueueIsEmbossedAsTheFilesOwnPages) {
+    PtySim sim(rig().e.dir.path(), "sim-app-pef");
+    ASSERT_TRUE(rig().add_queue(sim, "EmbosserPef")) << rig().error_log();
+    const std::string file = TACTUS_TEST_DATA "/pef/volume_grids.pef";
+    App app;
+    app.window->set_interactive(false);
+    ASSERT_TRUE(app.window->open_file_now(qs(file)));
+    app.panel->select_device(qs(rig().queue_uri("EmbosserPef")));
+    ASSERT_TRUE(app.window->emboss()) << app.panel->fault_text().toStdString();
+    ASSERT_TRUE(pump_until([&] { return !app.heard.finished.empty(); }))
+        << app.panel->log_text().toStdString() << rig().error_log();
+    EXPECT_TRUE(app.heard.finished.front().first) << app.heard.finished.front().second.toStdString();
+
+    const auto id = rig().newest_spool_job(before_);
+    ASSERT_NE(id, 0) << rig().error_log();
+    ASSERT_TRUE(rig().e.wait_state(id, JobState::completed)) << rig().e.history(id);
+    auto s = rig().e.spool();
+    const auto embossed = spool::from_snapshot(*s.document_snapshot(id));
+    ASSERT_TRUE(embossed) << embossed.error().to_string();
+    const auto profile = profile::parse_profile(*s.profile_snapshot(id));
+    ASSERT_TRUE(profile) << profile.error().to_string();
+    pipeline::PipelineOptions options;
+    options.layout.geometry = profile::page_geometry(*profile);
+    const auto source = import::import_file(file);
+    ASSERT_TRUE(source) << source.error().to_string();
+    const auto expected = pipeline::lay_out(*source, options);
+    ASSERT_TRUE(expected) << expected.error().to_string();
+    ASSERT_TRUE(expected->geometry.interpoint);
+    EXPECT_EQ(embossed->pages.size(), expected->pages.size());
+    EXPECT_EQ(embossed->sheet_count(), expected->sheet_count());
+    EXPECT_EQ(embossed->sheet_count(), 7u);  // 14 pages on interpoint paper, 4 of them blank backs
+    for (std::size_t p = 0; p < std::min(embossed->pages.size(), expected->pages.size()); ++p)
+        EXPECT_EQ(embossed->pages[p].lines, expected->pages[p].lines) << "page " << p + 1;
+    const auto audit = rig().e.audit(id, sim);
+    EXPECT_EQ(audit.problems, "");
+    EXPECT_EQ(audit.sheets_checked, s.job(id)->total_sheets());
 }
 
 TEST_F(CupsAppE2E, AJobCancelledInTheAppIsCancelledOnTheServerAndShownCancelled) {

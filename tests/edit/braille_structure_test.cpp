@@ -271,9 +271,10 @@ TEST(BrailleStructure, PositionsCountBlankBacks) {
 // Random edits (cells typed and erased in rows, rows split, joined, deleted,
 // page breaks typed): after each, the live pages are exactly what the CLI's
 // call, layout::keep_braille_pages, gives for the document the lines stand
-// for (the editor changes a row in place when nothing else can change).
+// for (the editor changes a row in place when nothing else can change; in
+// volume_grids.pef a row is within its own section's cols, not the file's largest).
 TEST(BrailleStructure, RandomEditsGiveTheCoreCallsPages) {
-    for (const auto* name : {"volumes.pef", "real/book.pef", "real/margin-uneven.pef"}) {
+    for (const auto* name : {"volumes.pef", "volume_grids.pef", "real/book.pef", "real/margin-uneven.pef"}) {
         SCOPED_TRACE(name);
         auto live = open(kData + name);
         std::mt19937 rng(13);
@@ -310,4 +311,29 @@ TEST(BrailleStructure, RandomEditsGiveTheCoreCallsPages) {
             ASSERT_EQ(live.paged().metadata, expected->metadata) << "step " << step;
         }
     }
+}
+
+// A row of volume_grids.pef's first volume (12 cols; 8 cells) typed to 13 cells,
+// within the file's largest cols (20): its section's page grows to 13 cells,
+// as keep_braille_pages says, and is written so. Before, the row was changed
+// in place, measured against the file's largest cols, and the section kept
+// 12 cols, so the PEF written from the pages was refused (a row longer than
+// cols).
+TEST(BrailleStructure, ARowTypedPastItsSectionsColsGrowsThatSection) {
+    auto live = open(kData + "volume_grids.pef");
+    std::size_t row = 0;
+    while (row < live.line_count() && live.line(row) != "⠕⠝⠑⠀⠏⠁⠛⠑") ++row;
+    ASSERT_LT(row, live.line_count());
+    auto line = live.line(row);
+    for (const auto* cell : {"⠁", "⠃", "⠉", "⠙", "⠑"}) {
+        line += cell;
+        live.replace(row, 1, {line});
+    }
+    const auto expected = layout::keep_braille_pages(live.document(), big_page());
+    ASSERT_TRUE(expected) << expected.error().to_string();
+    ASSERT_TRUE(live.pages_kept());
+    EXPECT_EQ(expected->sections.front().cols, 13);
+    EXPECT_EQ(live.paged().sections, expected->sections);
+    EXPECT_TRUE(live.paged().pages == expected->pages);
+    EXPECT_TRUE(exporter::to_pef(live.paged(), exporter::pef_metadata(live.paged().metadata, "t", "2030-01-01")));
 }

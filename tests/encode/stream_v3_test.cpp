@@ -101,6 +101,54 @@ TEST(StreamV3, PassRecordMatchesTheFirmwareHost) {
     }
 }
 
+// Every feed a pass can carry, forward and back, across the one-byte and
+// two-byte forms of its svar: the firmware's rules put the strike where the
+// plan does. A feed of 64..127 units (a short last page, then its page number
+// at the foot) was written as one byte and read back as -64..-1.
+TEST(StreamV3, EveryFeedDistanceRoundTrips) {
+    const auto t = tables();
+    const auto timing = profile::strike_timing(profile::default_profile());
+    const std::int32_t grid = static_cast<std::int32_t>(t.feed.grid_steps);
+    const std::int32_t b = static_cast<std::int32_t>(t.carriage.backlash_steps);
+    plan::JobPlan job;
+    plan::SheetPlan sheet;
+    sheet.index = 1;
+    std::int32_t feed_at = 0;
+    bool feed_neg = false;  // the feed's last direction (the sheet starts having moved forward)
+    std::int32_t carriage_at = 0;
+    // Down the sheet and back up again, never past its foot.
+    const std::vector<std::int32_t> feeds{1,   63,  64,   65,   -1,   -63,  -64,  -65, 100, 127, -100, -127,
+                                          108, 128, -128, -108, 129,  100,  -129, -100, 200, -200};
+    for (const auto units : feeds) {
+        plan::Pass pass;
+        pass.sheet = 1;
+        const bool neg = units < 0;
+        std::int32_t steps = units * grid;
+        if (neg != feed_neg) steps += neg ? -static_cast<std::int32_t>(t.feed.backlash_steps)
+                                          : static_cast<std::int32_t>(t.feed.backlash_steps);
+        feed_neg = neg;
+        pass.feed = motion::table_move(t.feed, steps, 0);
+        feed_at += steps;
+        pass.feed_step = feed_at;
+        // One strike a pass, out and back, so the carriage stays on its travel.
+        const std::int32_t out = carriage_at == 0 ? 100 * 20 + b : -(100 * 20 + b);
+        pass.moves.push_back(motion::table_move(t.carriage, out, timing.settle_ticks));
+        carriage_at += out;
+        plan::Strike k;
+        k.carriage_step = carriage_at;
+        pass.strikes.push_back(k);
+        sheet.passes.push_back(pass);
+    }
+    job.sheets.push_back(sheet);
+    auto s = encode_job_v3(job, t, timing, 9, {});
+    ASSERT_TRUE(s) << s.error().to_string();
+    auto fired = execute_v3(s->bytes, t);
+    ASSERT_TRUE(fired) << fired.error().to_string();
+    ASSERT_EQ(fired->size(), feeds.size());
+    for (std::size_t i = 0; i < feeds.size(); ++i)
+        EXPECT_EQ((*fired)[i].feed_step, sheet.passes[i].feed_step) << "a feed of " << feeds[i] << " units";
+}
+
 // Random braille pages, planned for the firmware: the stream executed by the
 // firmware's rules strikes exactly the plan's dots, in order.
 layout::PagedDocument random_doc(unsigned seed, std::size_t pages) {

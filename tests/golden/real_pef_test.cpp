@@ -213,6 +213,26 @@ TEST(MultiVolumePef, KeepsItsVolumes) {
     EXPECT_EQ(again.out, r.out);
 }
 
+// Three volumes of three page sizes (tests/data/pef/volume_grids.pef, valid
+// PEF 2008-1: 12 x 5, 20 x 8 single-sided, 16 x 6 rowgap 1 with a 10 x 4
+// single-sided section): tactus-cli writes the file again byte for byte, each
+// volume and section with its own cols, rows, rowgap and duplex. Before, every
+// volume was written with the file's largest cols/rows (20 x 8) and rowgap 0.
+TEST(MultiVolumePef, EachVolumeKeepsItsOwnGrid) {
+    const std::string file = TACTUS_TEST_DATA "/pef/volume_grids.pef";
+    const auto source = read(file);
+    const auto r = tactus::test::run_captured(tactus::test::cli({"layout", "--to", "pef", file}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, source);
+    // On a printer whose page holds volume 1 and 3 but not volume 2's 20
+    // cells (its longest row is 19): refused, naming the file's page.
+    const auto small = tactus::test::run_captured(
+        tactus::test::cli({"layout", "--to", "pef", "--cells", "19", "--lines", "8", file}));
+    EXPECT_EQ(small.exit_code, 5) << small.err;
+    EXPECT_NE(small.err.find("20 cells x 8 lines"), std::string::npos) << small.err;
+    EXPECT_TRUE(small.out.empty());
+}
+
 INSTANTIATE_TEST_SUITE_P(Files, RealPef,
                          ::testing::Values("book.pef", "butterfly.pef", "8-dot-chart.pef", "margin-uneven.pef",
                                            "flow-in-header-footer4.pef"),

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <tuple>
 
 #include "../export/pef_checks.hpp"
 #include "cells.hpp"
@@ -190,4 +193,62 @@ TEST(BraillePages, ImpossiblePefAttributesAreRefusedWithTheLine) {
     auto rows_over = import_file(kPef / "too_many_rows.pef");
     ASSERT_FALSE(rows_over);
     EXPECT_NE(rows_over.error().message.find("3 rows"), std::string::npos) << rows_over.error().message;
+}
+
+// Volumes of different page sizes (volume_grids.pef: 12 x 5, 20 x 8, 16 x 6
+// with a 10 x 4 section): each section keeps its own grid through
+// keep_braille_pages, and the PEF written from it is the file again, valid
+// PEF with each volume's own cols/rows/rowgap (before: the largest, 20 x 8,
+// rowgap 0, for every volume).
+TEST(BraillePages, EachVolumeKeepsItsOwnGrid) {
+    const auto doc = read_pef("volume_grids.pef");
+    ASSERT_EQ(doc.braille_sections.size(), 5u);
+    EXPECT_EQ(doc.braille_sections[4].cols, 10);
+    EXPECT_EQ(doc.braille_sections[4].rows, 4);
+    EXPECT_EQ(doc.braille_sections[3].rowgap, 1);
+    auto paged = lay_out(doc, a4());
+    ASSERT_TRUE(paged) << paged.error().to_string();
+    EXPECT_EQ(paged->geometry.cells_per_line, 20);  // the sheets hold the largest page
+    EXPECT_EQ(paged->geometry.lines_per_page, 8);
+    ASSERT_EQ(paged->sections.size(), 5u);
+    const auto grid = [](const PageSection& s) { return std::tuple{s.cols, s.rows, s.rowgap, s.duplex, s.starts_volume}; };
+    EXPECT_EQ(grid(paged->sections[0]), std::tuple(12, 5, 0, true, true));
+    EXPECT_EQ(grid(paged->sections[1]), std::tuple(12, 5, 0, false, false));
+    EXPECT_EQ(grid(paged->sections[2]), std::tuple(20, 8, 0, false, true));
+    EXPECT_EQ(grid(paged->sections[3]), std::tuple(16, 6, 1, true, true));
+    EXPECT_EQ(grid(paged->sections[4]), std::tuple(10, 4, 1, false, false));
+    const auto pef = to_pef(*paged, pef_metadata(paged->metadata, "fallback", "2030-01-01"));
+    ASSERT_TRUE(pef) << pef.error().to_string();
+    EXPECT_EQ(validate_pef_schema(*pef), "");
+    EXPECT_EQ(check_pef_schematron(*pef), "");
+    std::ifstream in(kPef / "volume_grids.pef", std::ios::binary);
+    const std::string source((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(*pef, source);
+}
+
+// Each volume's own page is what the printer's page must hold, even where
+// its rows are shorter: volume 2 declares 20 cells (its longest row is 19),
+// so a 19-cell printer cannot emboss it page for page; before, only the rows
+// were measured, so it was kept, on sheets of 20 cells the printer has not.
+// The misfit names the file's page volume by volume.
+TEST(BraillePages, EachVolumesOwnPageIsCheckedAgainstThePrinters) {
+    const auto doc = read_pef("volume_grids.pef");
+    LayoutOptions printer;
+    printer.geometry.cells_per_line = 19;
+    printer.geometry.lines_per_page = 8;
+    const auto m = find_braille_misfit(doc, printer);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->page, 5);  // volume 2's first page
+    EXPECT_EQ(m->cols, 19);
+    EXPECT_EQ(m->file_cols, 20);
+    EXPECT_EQ(m->file_rows, 8);
+    EXPECT_EQ(m->volumes, (std::vector<VolumePage>{{1, 12, 5, true}, {2, 20, 8, false}, {3, 16, 6, true}}));
+    EXPECT_FALSE(keep_braille_pages(doc, printer));
+    printer.geometry.cells_per_line = 20;
+    EXPECT_FALSE(find_braille_misfit(doc, printer));
+    // A BRF (no declared page) is measured by its rows, as before.
+    const auto brf = import_bytes(",A\n,B\f", "two.brf");
+    ASSERT_TRUE(brf) << brf.error().to_string();
+    printer.geometry = {4, 3, false, false};
+    EXPECT_FALSE(find_braille_misfit(*brf, printer));
 }

@@ -108,11 +108,12 @@ TEST(StructureLayout, NoteFollowsItsParagraphInSevenFive) {
                        text_block(BlockKind::note, 0, {reference("1"), Span{" The walk took an hour and more."}}),
                        text_block(BlockKind::paragraph, 0, "Next.")},
                       24);
-    // The reference (dots 2356 2356, then the number) stays on its word; the
-    // note starts in cell 7 with the same reference, its runovers in cell 5.
+    // The reference (UEB's superscript indicator, dots 35, then the number:
+    // uncontracted, no grade 1 indicator) stays on its word; the note starts in
+    // cell 7 with the same reference, its runovers in cell 5.
     ASSERT_GE(lines.size(), 5u);
-    EXPECT_EQ(lines[0], "  ,WE SAW HERONS477#A");
-    EXPECT_EQ(lines[2].substr(0, 10), "      77#A");
+    EXPECT_EQ(lines[0], "  ,WE SAW HERONS49#A");
+    EXPECT_EQ(lines[2].substr(0, 9), "      9#A");
     EXPECT_TRUE(lines[3].starts_with("    ") && lines[3][4] != ' ') << lines[3];
     EXPECT_EQ(lines.back(), "  ,NEXT4");
 }
@@ -238,7 +239,7 @@ TEST(StructureLayout, ATableContinuedOnANewPageRepeatsItsHeadings) {
     EXPECT_EQ(herons, 8);
 }
 
-// The note reference indicator ⠶⠶ is UEB's and EBAE's (see
+// The note reference indicator is UEB's (⠰⠔) and EBAE's (⠶⠶) (see
 // TheNoteReferenceIndicatorIsTheCodesOwn): Chinese writes the number in
 // parentheses as its table writes them (no 8-dot escapes).
 TEST(StructureLayout, ChineseHasNoNoteReferenceIndicator) {
@@ -294,14 +295,19 @@ TEST(StructureLayout, ANoteInsideAListOrAQuoteKeepsTheirBlankLines) {
          text_block(BlockKind::quote, 1, "More."),
          text_block(BlockKind::paragraph, 0, "End.")},
         27, "en-ueb-g1.ctb");
-    EXPECT_EQ(lines, (std::vector<std::string>{"_4 ONE77#A", "      77#A ,NOTE4", "", "  ,AFTER4", "",
-                                               "  ,QUOTED77#B", "      77#B ,SOURCE4", "  ,MORE4", "", "  ,END4"}));
+    EXPECT_EQ(lines, (std::vector<std::string>{"_4 ONE9#A", "      9#A ,NOTE4", "", "  ,AFTER4", "",
+                                               "  ,QUOTED9#B", "      9#B ,SOURCE4", "  ,MORE4", "", "  ,END4"}));
 }
 
 // The note reference indicator is the code's: dots 2356 2356 before the number
-// in EBAE too (BANA Braille Formats 2011 §16.1.3, "77#a numbered"), read from
+// in EBAE (BANA Braille Formats 2011 §16.1.3, "77#a numbered"), read from
 // en-us-g2.ctb, which has no metadata of its own but includes en-us-g1.ctb
-// (#+system:ebae). Chinese has none Tactus knows: the number in parentheses.
+// (#+system:ebae). In UEB ⠶⠶ is the double prime (Rules of UEB 2013 §3.11,
+// §3.15): a note reference is print's superscript number, ⠰⠔ (grade 1 and
+// superscript indicators) before it in contracted braille, ⠔ alone in
+// uncontracted (§3.24.1, §11.4.2, §5.11.1). Issue 13 item 3 (session 8): UEB
+// had ⠶⠶⠼⠁, which a UEB reader reads as ″1. Chinese has none Tactus knows: the
+// number in parentheses.
 TEST(StructureLayout, TheNoteReferenceIndicatorIsTheCodesOwn) {
     const auto blocks = [](const std::string& text) {
         return std::vector<Block>{text_block(BlockKind::paragraph, 0, {Span{text}, reference("1")}),
@@ -316,6 +322,34 @@ TEST(StructureLayout, TheNoteReferenceIndicatorIsTheCodesOwn) {
         ASSERT_GE(lines.size(), 2u);
         EXPECT_TRUE(lines[0].ends_with("477#A")) << lines[0];
         EXPECT_TRUE(lines[1].starts_with("      77#A ")) << lines[1];
+    }
+    for (const auto& [table, reference] : {std::pair<std::string, std::string>{"en-ueb-g2.ctb", ";9#A"},
+                                           {"en-ueb-g1.ctb", "9#A"}}) {
+        SCOPED_TRACE(table);
+        auto tr = translate::Translator::open(table);
+        ASSERT_TRUE(tr);
+        EXPECT_TRUE(tr->is_ueb());
+        const auto lines = lay_out_lines(blocks("We saw herons."), 27, table);
+        ASSERT_GE(lines.size(), 2u);
+        EXPECT_TRUE(lines[0].ends_with("4" + reference)) << lines[0];
+        EXPECT_TRUE(lines[1].starts_with("      " + reference + " ")) << lines[1];
+        // Not the table's double prime, which is ⠶⠶ in UEB.
+        const auto double_prime = tr->translate(U"″");
+        ASSERT_TRUE(double_prime);
+        EXPECT_EQ(brf(*double_prime), "77");
+        EXPECT_EQ(lines[0].find("77"), std::string::npos) << lines[0];
+    }
+    {
+        // liblouis's contracted UEB table writes a superscript two the same way
+        // (en-ueb-chardefs.uti: ² is 56-35-3456-12), an independent source.
+        auto tr = translate::Translator::open("en-ueb-g2.ctb");
+        ASSERT_TRUE(tr);
+        const auto squared = tr->translate(U"²");
+        ASSERT_TRUE(squared);
+        const auto& indicator = tr->note_reference_indicator();
+        ASSERT_GE(squared->size(), indicator.size());
+        EXPECT_TRUE(std::equal(indicator.begin(), indicator.end(), squared->begin()))
+            << brf(*squared) << " / " << brf(indicator);
     }
     for (const std::string table : {"zhcn-g2.ctb", "zh-tw.ctb"}) {
         SCOPED_TRACE(table);

@@ -114,6 +114,32 @@ TEST(SimV3, APlannedDocumentStrikesThePlanAtThePlansTimes) {
             std::printf("%zu pass %u: %+.6f\n", i, got[i].pass_index, got[i].time_s - want[i].time_s - offset);
 }
 
+// A page whose last line stands far below the one before (a short page and
+// its number at the foot): every gap from one line to 23 is fed exactly. A
+// feed of 64..127 grid units went 20 units backwards (a 71-sheet job from
+// the app struck its last page number 50 mm too high).
+TEST(SimV3, EveryGapBetweenTwoLinesIsFedExactly) {
+    const auto prof = profile::default_profile();
+    layout::PagedDocument doc;
+    doc.geometry = profile::page_geometry(prof);
+    const auto rows = static_cast<std::size_t>(doc.geometry.lines_per_page);
+    for (std::size_t last = 1; last < rows; ++last) {
+        layout::Page page;
+        page.lines.resize(last + 1);
+        page.lines.front() = document::BrailleLine(4, document::Cell{0x3F});
+        page.lines.back() = document::BrailleLine(4, document::Cell{0x3F});
+        doc.pages.push_back(std::move(page));
+    }
+    plan::PlanOptions po;
+    po.firmware = tables();
+    auto job = plan::plan_job(doc, prof, po);
+    ASSERT_TRUE(job) << job.error().to_string();
+    auto r = open(115200);
+    const auto out = send(r, *job);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.message;
+    EXPECT_EQ(r.ctl->strike_log(), controller::planned_strikes(*job));
+}
+
 TEST(SimV3, AHandPlanStrikesExactly) {
     for (unsigned seed = 1; seed <= 20; ++seed) {
         const auto plan = hand_plan(seed);
@@ -138,6 +164,54 @@ TEST(SimV3, AWarmResetInTheMiddleOfAPassResumesAtTheExactStrike) {
         EXPECT_EQ(r.ctl->strike_log(), want) << "reset after strike " << nth;
         EXPECT_GE(out.stats.restarts, 1U);
     }
+}
+
+// The operator's pause stops the firmware at rest between two strikes (not at
+// the end of the pass, as protocol 2 does); resumed, the pass goes on with the
+// next strike. For every place in the job a pause can be asked for, the job
+// strikes exactly the plan.
+TEST(SimV3, PauseAndResumeByTheOperatorStrikesExactly) {
+    const auto plan = hand_plan(5);
+    for (std::size_t at = 1; at < 8; ++at) {
+        auto r = open();
+        link::CancelToken cancel;
+        bool paused = false;
+        auto out = r.link->send_job(
+            plan, 1,
+            [&](const link::Progress& p) {
+                if (p.executed && p.executed->passes_done == at) r.link->request_pause();
+                if (p.status.ack.state == encode::ControllerState::paused && !paused) {
+                    paused = true;
+                    r.link->request_resume();
+                }
+            },
+            cancel);
+        ASSERT_TRUE(out) << out.error().to_string();
+        EXPECT_EQ(out->end, link::JobEnd::completed);
+        EXPECT_TRUE(paused) << "pause after pass " << at;
+        EXPECT_EQ(r.ctl->strike_log(), controller::planned_strikes(plan)) << "pause after pass " << at;
+    }
+}
+
+// The host dies with the ACK of a pass on the wire (mute_after_pass: every
+// reply is lost until a new session): a new host's HELLO opens a session, as
+// on protocol 2, and the job's progress is read back.
+TEST(SimV3, AHostThatDiedMidJobIsFollowedByANewSession) {
+    const auto plan = hand_plan(7);
+    auto r = open();
+    r.ctl->mute_after_pass(3);
+    link::CancelToken cancel;
+    auto out = r.link->send_job(plan, 1, {}, cancel);
+    EXPECT_TRUE(!out || out->end != link::JobEnd::completed);
+    EXPECT_TRUE(r.ctl->muted());
+    // A new host on the same controller.
+    auto line = std::make_unique<controller::SimTransport>(r.ctl, controller::SimLineOptions{});
+    line->sleep(std::chrono::seconds(5));
+    auto next = link::Link::over(std::move(line));
+    auto h = next.hello();
+    ASSERT_TRUE(h) << h.error().to_string();
+    EXPECT_EQ(next.protocol(), encode::kProtocolV3);
+    EXPECT_FALSE(r.ctl->muted());
 }
 
 TEST(SimV3, PowerLossFailsWithTheSheetToResumeFrom) {

@@ -17,6 +17,7 @@
 #include "spool/printing.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
+#include "profile/firmware_tables.hpp"
 #include "spool_fixtures.hpp"
 #include "strike_audit.hpp"
 
@@ -29,9 +30,9 @@ public:
     PtySim(const std::filesystem::path& dir, const std::string& name, std::vector<std::string> extra = {},
            double time_scale = 1000)
         : log_(dir / (name + ".strikes")) {
-        // Protocol 2, on request (the simulator's default is 3): the strike
-        // audit (strike_audit.hpp) replays protocol 2's plan.
-        std::vector<std::string> args{kCli, "sim", "--pty", "--protocol", "2", "--time-scale", std::to_string(time_scale),
+        // The simulator's default: protocol 3, the firmware the default
+        // profile makes; the strike audit replays that firmware's plan.
+        std::vector<std::string> args{kCli, "sim", "--pty", "--time-scale", std::to_string(time_scale),
                                       "--baud", "230400",
                                       "--strike-log", log_.string()};
         args.insert(args.end(), extra.begin(), extra.end());
@@ -123,7 +124,9 @@ struct E2E {
     plan::JobPlan plan_of(JobId id) {
         auto s = spool();
         auto doc = from_snapshot(*s.document_snapshot(id));
-        auto plan = plan_copies(*doc, profile::default_profile(), s.job(id)->copies);
+        const auto tables = profile::make_firmware_tables(profile::default_profile());
+        EXPECT_TRUE(tables);
+        auto plan = plan_copies(*doc, profile::default_profile(), s.job(id)->copies, &*tables);
         EXPECT_TRUE(plan);
         return *plan;
     }

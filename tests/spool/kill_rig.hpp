@@ -27,6 +27,7 @@
 #include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
 #include "spool_fixtures.hpp"
+#include "profile/firmware_tables.hpp"
 #include "strike_audit.hpp"
 
 namespace tactus::spool::test {
@@ -100,8 +101,8 @@ inline KillReport kill_loop(const KillOptions& o) {
     while (r.kills < o.kills && Clock::now() - start < o.budget && r.problems.empty()) {
         ++r.rounds;
         const auto log = o.dir / ("round" + std::to_string(r.rounds) + ".strikes");
-        // Protocol 2 on request, as the strike audit replays its plan.
-        Process sim({o.cli, "sim", "--pty", "--protocol", "2", "--time-scale", "1000", "--baud", "230400",
+        // Protocol 3 (the simulator's default): the firmware the default profile makes.
+        Process sim({o.cli, "sim", "--pty", "--time-scale", "1000", "--baud", "230400",
                      "--strike-log", log.string()},
                     (o.dir / "sim.log").string());
         const auto pty = sim.read_line(std::chrono::seconds(10));
@@ -167,8 +168,10 @@ inline KillReport kill_loop(const KillOptions& o) {
         }
         auto snapshot = s->document_snapshot(id);
         auto paged = snapshot ? from_snapshot(*snapshot) : std::unexpected(snapshot.error());
-        auto plan = paged ? plan_copies(*paged, profile::default_profile(), s->job(id)->copies)
-                          : std::unexpected(paged.error());
+        const auto tables = profile::make_firmware_tables(profile::default_profile());
+        auto plan = !paged    ? Result<plan::JobPlan>(std::unexpected(paged.error()))
+                    : !tables ? Result<plan::JobPlan>(std::unexpected(tables.error()))
+                              : plan_copies(*paged, profile::default_profile(), s->job(id)->copies, &*tables);
         if (!plan) {
             problem("plan: " + plan.error().to_string());
             break;

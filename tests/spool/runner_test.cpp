@@ -6,13 +6,21 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <chrono>
 #include <thread>
 
+#include "controller/builtin_sim.hpp"
+#include "import/import.hpp"
 #include "encode/messages.hpp"
+#include "pipeline/pipeline.hpp"
+#include "profile/page_geometry.hpp"
+#include "transport/device.hpp"
 #include "profile/controller_config.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
+#include "spool/print_job.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner.hpp"
 #include "spool/snapshot.hpp"
@@ -369,6 +377,95 @@ TEST(Runner, AProfileChangedWhileConnectedReachesTheControllerWithTheNextJob) {
     };
     EXPECT_EQ(audit(one, profile::default_profile()), "");
     EXPECT_EQ(audit(two, calibrated), "");
+}
+
+// The reference firmware (protocol 3) behind the spool: the runner plans the
+// job with the tables the profile makes, and every sheet of every copy is
+// struck exactly as that plan says.
+TEST(Runner, OnProtocol3EveryCopyIsStruckExactlyAsTheFirmwarePlanSays) {
+    Bench b;
+    auto tables = profile::make_firmware_tables(profile::default_profile());
+    ASSERT_TRUE(tables) << tables.error().to_string();
+    controller::SimOptions options;
+    options.firmware = *tables;
+    SimPrinter printer(options);
+    const JobId id = b.submit(9, 2);  // 5 sheets x 2 copies
+    Runner r(b.db, "lab", printer.connect(), fast_options());
+    ASSERT_TRUE(r.start());
+    EXPECT_EQ(run_next(r, b.stop), RunEnd::completed);
+    EXPECT_EQ(printer.controller->protocol(), encode::kProtocolV3);
+    auto doc = from_snapshot(*b.spool.document_snapshot(id));
+    auto plan = plan_copies(*doc, profile::default_profile(), 2, &*tables);
+    ASSERT_TRUE(plan) << plan.error().to_string();
+    const auto& log = printer.controller->strike_log();
+    EXPECT_EQ(log.size(), plan->strikes);
+    EXPECT_EQ(test::audit_strikes(*plan, log, *b.spool.progress(id)).problems, "");
+}
+
+// As the desktop app embosses: its built-in simulator on `sim?protocol=3`
+// (the firmware the printer's profile makes), a real laid-out multi-sheet
+// document, the operator pausing and resuming through the spool mid-job.
+TEST(Runner, TheBuiltInSimulatorOnProtocol3StrikesAMultiSheetJobExactly) {
+    TempDir dir;
+    const auto db = dir / "spool.db";
+    auto spool = *Spool::open(db);
+    ASSERT_TRUE(spool.add_printer("lab", "sim?protocol=3&speed=max", profile_text()));
+    std::string text;
+    for (int i = 0; i < 300; ++i)
+        text += "Paragraph " + std::to_string(i + 1) + ". " +
+                std::string(3, ' ').replace(0, 3, "") +
+                "The embosser strikes each dot with a small hammer, and the reader feels the raised dots with "
+                "the fingertips. The embosser strikes each dot with a small hammer, and the reader feels the "
+                "raised dots with the fingertips.\n\n";
+    auto imported = import::import_bytes(text, "sheets.md");
+    ASSERT_TRUE(imported) << imported.error().to_string();
+    pipeline::PipelineOptions po;
+    po.layout.geometry = profile::page_geometry(profile::default_profile());
+    po.layout.geometry.interpoint = true;
+    auto laid = pipeline::lay_out(*imported, po);
+    ASSERT_TRUE(laid) << laid.error().to_string();
+    JobSubmission sub;
+    sub.printer = "lab";
+    sub.title = "sheets";
+    sub.document = to_snapshot(*laid);
+    sub.sheets_per_copy = laid->sheet_count();
+    sub.copies = 1;
+    sub.user = "teacher";
+    const JobId id = *spool.submit(sub);
+    ASSERT_GE(laid->sheet_count(), 5u);
+
+    controller::BuiltInSimulator sim;
+    ConnectFn connect = [&sim](const PrinterRecord& p) -> Result<link::Link> {
+        auto spec = transport::parse_device(p.device);
+        auto settings = transport::sim_settings(*spec);
+        auto stream = sim.connect(*settings, printer_firmware_tables(p));
+        if (!stream) return std::unexpected(stream.error());
+        return link::Link::over(std::move(*stream), {});
+    };
+    Runner r(db, "lab", connect, fast_options());
+    ASSERT_TRUE(r.start());
+    std::atomic<bool> stop{false};
+    std::thread op([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        (void)spool.act(id, Action::pause);
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        (void)spool.act(id, Action::resume);
+    });
+    std::optional<RunEnd> end;
+    for (int k = 0; k < 5 && end != RunEnd::completed; ++k) end = run_next(r, stop);
+    op.join();
+    EXPECT_EQ(end, RunEnd::completed);
+    EXPECT_EQ(sim.protocol(), encode::kProtocolV3);
+    const auto firmware = sim.firmware();
+    ASSERT_TRUE(firmware);
+    auto plan = plan_copies(*laid, profile::default_profile(), 1, &*firmware);
+    ASSERT_TRUE(plan);
+    const auto job = *spool.job(id);
+    std::vector<controller::LoggedStrike> got;
+    for (const auto& s : sim.strikes())
+        if (job.link_job && s.job_id == *job.link_job) got.push_back(s);
+    EXPECT_EQ(got.size(), plan->strikes);
+    EXPECT_EQ(test::audit_strikes(*plan, got, *spool.progress(id)).problems, "");
 }
 
 }  // namespace

@@ -140,7 +140,7 @@ private Q_SLOTS:
         QVERIFY(!w.emboss());
         QVERIFY(stop.asked);
         QVERIFY2(stop.text.contains(QStringLiteral("too small")), qPrintable(stop.text));
-        QVERIFY2(stop.text.contains(QStringLiteral("25 lines of up to 40 cells")), qPrintable(stop.text));
+        QVERIFY2(stop.text.contains(QStringLiteral("The pages of wide.pef are 40 cells by 25 lines")), qPrintable(stop.text));
         QVERIFY2(stop.text.contains(QStringLiteral("27 cells by 24 lines")), qPrintable(stop.text));
         QCOMPARE(stop.buttons, QStringLiteral("&Reflow|&Stop|"));
         // What AT-SPI hands Orca: the dialog's name and the whole question, each button by name.

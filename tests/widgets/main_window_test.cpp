@@ -276,8 +276,8 @@ private Q_SLOTS:
         }
     }
 
-    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on a
-    // multi-volume one: opened in the app and exported without an edit, the
+    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on
+    // multi-volume ones (volume_grids.pef: each volume its own page size): opened in the app and exported without an edit, the
     // PEF and BRF are byte for byte what tactus-cli writes for the same file
     // and page (40 x 30, interpoint): the file's own cols/rows, its sections
     // (each on a new sheet) and their duplex (a single-sided section's blank
@@ -290,6 +290,7 @@ private Q_SLOTS:
                                  "flow-in-header-footer4.pef"})
             QTest::newRow(name) << QStringLiteral(TACTUS_TEST_DATA "/pef/real/") + QLatin1String(name);
         QTest::newRow("volumes.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef");
+        QTest::newRow("volume_grids.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef");
         QTest::newRow("single_sided_section.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/single_sided_section.pef");
         QTest::newRow("sections.pef") << QStringLiteral(TACTUS_TEST_DATA "/pef/sections.pef");
     }
@@ -323,8 +324,83 @@ private Q_SLOTS:
             QVERIFY(exported);
             QFile a(app), c(cli);
             QVERIFY(a.open(QIODevice::ReadOnly) && c.open(QIODevice::ReadOnly));
-            QCOMPARE(a.readAll(), c.readAll());
+            const auto app_bytes = a.readAll();
+            QCOMPARE(app_bytes, c.readAll());
+            if (file.endsWith(QLatin1String("volume_grids.pef")) && QLatin1String(format) == QLatin1String("pef")) {
+                // Its volumes' own page sizes (12 x 5, 20 x 8, 16 x 6 with a
+                // 10 x 4 section): the file again, byte for byte.
+                QFile source(file);
+                QVERIFY(source.open(QIODevice::ReadOnly));
+                QCOMPARE(app_bytes, source.readAll());
+            }
         }
+    }
+
+    // Issue 13 item 1: the page-too-small question says the file's declared
+    // page, volume by volume when its volumes differ, against the printer's
+    // (volume_grids.pef: 12 x 5, 20 x 8, 16 x 6, on a 19 x 8 page, where only
+    // volume 2 is too large; its longest row is 19 cells, so the question is
+    // asked only because its declared page is checked). Before, the question
+    // said the first page's own measure ("8 lines of up to 19 cells"), which
+    // fits the printer's 19 x 8, and nothing of the file's volumes. What Orca
+    // reads (the box's name, its labels, the buttons' names and descriptions)
+    // and what a window that cannot ask announces.
+    void the_page_too_small_question_says_each_volumes_declared_page() {
+        MainWindow w;
+        auto options = w.editor()->layout().options();
+        options.geometry.cells_per_line = 19;
+        options.geometry.lines_per_page = 8;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef")));
+        const auto out = dir.filePath(QStringLiteral("grids-small.pef"));
+        const QString sizes = QStringLiteral(
+            "The pages of volume_grids.pef differ by volume: volume 1, 12 cells by 5 lines; volume 2, 20 cells by 8 "
+            "lines, too large; volume 3, 16 cells by 6 lines. The printer's page holds 19 cells by 8 lines.");
+
+        // A window that cannot ask stops, and says why.
+        w.set_interactive(false);
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(sizes), qPrintable(w.announcer()->message()));
+        QVERIFY(!QFile::exists(out));
+
+        w.set_interactive(true);
+        w.show();
+        QString text, name, labels, buttons;
+        QTimer::singleShot(200, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != QLatin1String("pageTooSmallQuestion")) return;
+            text = box->text() + QLatin1Char(' ') + box->informativeText();
+            auto* a = QAccessible::queryAccessibleInterface(box);
+            name = a ? a->text(QAccessible::Name) : QString();
+            for (int i = 0; a && i < a->childCount(); ++i)
+                if (auto* c = a->child(i); c && c->role() == QAccessible::StaticText)
+                    labels += c->text(QAccessible::Name) + QLatin1Char(' ');
+            for (auto* b : box->buttons())
+                if (auto* ba = QAccessible::queryAccessibleInterface(b))
+                    buttons += ba->text(QAccessible::Name) + QLatin1Char(':') + ba->text(QAccessible::Description) +
+                               QLatin1Char('|');
+            box->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
+        });
+        QVERIFY(!w.export_to(out));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY2(text.contains(sizes), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("lines of up to")), qPrintable(text));
+        QCOMPARE(name, QStringLiteral("The printer's page is too small"));
+        QVERIFY2(labels.contains(sizes), qPrintable(labels));
+        QCOMPARE(buttons, QStringLiteral("Reflow:Lay the braille out again on the printer's page and go on|"
+                                         "Stop:Emboss or export nothing|"));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral("Stopped: nothing was embossed or exported")),
+                 qPrintable(w.announcer()->message()));
+
+        // One page size for the whole file: said once.
+        w.set_interactive(false);
+        QVERIFY(w.open_file_now(QStringLiteral(TACTUS_TEST_DATA "/pef/volumes.pef")));
+        options.geometry.cells_per_line = 11;
+        QVERIFY(w.editor()->set_layout_options(options));
+        QVERIFY(!w.export_to(out));
+        QVERIFY2(w.announcer()->message().contains(QStringLiteral(
+                     "The pages of volumes.pef are 12 cells by 5 lines; the printer's page holds 11 cells by 8 lines.")),
+                 qPrintable(w.announcer()->message()));
     }
 
     // A multi-volume PEF through the app: edited (a row changed, a page of
@@ -630,11 +706,88 @@ private Q_SLOTS:
         QCOMPARE(read(), expected);
     }
 
+    // Issue 13 item 4 (session 8): a .md was saved as UTF-8 whatever its
+    // encoding. It follows the text file's rule (edit::file_bytes): opened and
+    // saved it is the same bytes; edited, it is still in its encoding.
+    void a_markdown_file_is_saved_in_its_encoding_data() {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<int>("line");  // where `typed` is typed, at the line's start
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QByteArray>("expected");
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        // "# Café “quoted” costs €5\n\nNaïve résumé, *façade*.\n\n- œuvre, Ærø\n"
+        QTest::newRow("windows-1252")
+            << hex("2320 4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 0a0a 4e61 ef76 6520 72e9 7375 6de9 2c20 2a66 61e7 6164 652a 2e0a 0a2d 209c 7576 7265 2c20 c672 f80a")
+            << 1 << QStringLiteral("\u00FC")
+            << hex("2320 4361 66e9 2093 7175 6f74 6564 9420 636f 7374 7320 8035 0a0a fc4e 61ef 7665 2072 e973 756d e92c 202a 6661 e761 6465 2a2e 0a0a 2d20 9c75 7672 652c 20c6 72f8 0a");
+        // BOM + "# Hello 世界\n\n**bye** now\n"
+        QTest::newRow("UTF-16LE with BOM")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00")
+            << 1 << QStringLiteral("!")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0a00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0a00");
+        // The same as Windows Notepad writes it: with CRLF, which it keeps.
+        QTest::newRow("UTF-16LE with BOM, CRLF")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00")
+            << 1 << QStringLiteral("!")
+            << hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2100 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00");
+        // "## 春曉\n\n春眠不覺曉，處處聞啼鳥。\n\n夜來風雨聲，花落知多少。\n"
+        QTest::newRow("Big5")
+            << hex("2323 20ac 4bbe e50a 0aac 4baf 76a4 a3c4 b1be e5a1 41b3 42b3 42bb 44b3 dab3 bea1 430a 0aa9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a")
+            << 2 << QStringLiteral("\u4E2D")
+            << hex("2323 20ac 4bbe e50a 0aac 4baf 76a4 a3c4 b1be e5a1 41b3 42b3 42bb 44b3 dab3 bea1 430a 0aa4 a4a9 5da8 d3ad b7ab 42c1 6ea1 41aa e1b8 a8aa bea6 68a4 d6a1 430a");
+        // "## 春晓\n\n春眠不觉晓，处处闻啼鸟。\n\n夜来风雨声，花落知多少。\n"
+        QTest::newRow("GB18030")
+            << hex("2323 20b4 bacf fe0a 0ab4 bac3 dfb2 bbbe f5cf fea3 acb4 a6b4 a6ce c5cc e4c4 f1a1 a30a 0ad2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a")
+            << 2 << QStringLiteral("\u4E2D")
+            << hex("2323 20b4 bacf fe0a 0ab4 bac3 dfb2 bbbe f5cf fea3 acb4 a6b4 a6ce c5cc e4c4 f1a1 a30a 0ad6 d0d2 b9c0 b4b7 e7d3 eac9 f9a3 acbb a8c2 e4d6 aab6 e0c9 d9a1 a30a");
+    }
+    void a_markdown_file_is_saved_in_its_encoding() {
+        QFETCH(QByteArray, bytes);
+        QFETCH(int, line);
+        QFETCH(QString, typed);
+        QFETCH(QByteArray, expected);
+        const auto path = dir.filePath(QStringLiteral("encoded.md"));
+        const auto read = [&path] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        const auto save = [&w] { w.findChild<QAction*>(QStringLiteral("fileSave"))->trigger(); };
+        save();
+        QCOMPARE(read(), bytes);
+        auto* print = w.editor()->print_pane();
+        QTextCursor c(print->document()->findBlockByNumber(line));
+        c.insertText(typed);  // keyClicks takes Latin-1 only
+        save();
+        QVERIFY(!w.isWindowModified());
+        QCOMPARE(read(), expected);
+        // Reopened, it is the text as edited, in the same encoding.
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QCOMPARE(again.editor()->text(), w.editor()->text());
+        QCOMPARE(again.editor()->layout().encoding(), w.editor()->layout().encoding());
+    }
+
     // A character the file's encoding cannot hold is never written as a
     // substitute: without an answer (no one to ask) nothing is saved, and the
     // message names the character, its line and the encoding.
+    // Issue 13 item 4 (session 8): a Markdown file the same way, by the same rule.
+    void a_character_the_encoding_cannot_hold_is_not_saved_silently_data() {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("line");  // the editor line of "naïve"
+        QTest::newRow("text") << QStringLiteral("western.txt") << 2;
+        QTest::newRow("Markdown") << QStringLiteral("western.md") << 1;
+    }
     void a_character_the_encoding_cannot_hold_is_not_saved_silently() {
-        const auto path = dir.filePath(QStringLiteral("western.txt"));
+        QFETCH(QString, name);
+        QFETCH(int, line);
+        const auto path = dir.filePath(name);
         const auto bytes = QByteArray::fromHex("4361 66e9 0a0a 6e61 ef76 650a");  // "Café\n\nnaïve\n" in windows-1252
         {
             QFile f(path);
@@ -649,7 +802,7 @@ private Q_SLOTS:
         QVERIFY(w.open_file_now(path));
         QCOMPARE(w.editor()->layout().encoding(), std::string("WINDOWS-1252"));
         auto* print = w.editor()->print_pane();
-        QTextCursor c(print->document()->findBlockByNumber(2));
+        QTextCursor c(print->document()->findBlockByNumber(line));
         c.insertText(QStringLiteral("\u4E2D"));
         QVERIFY(!w.save_to(path));
         QVERIFY(w.isWindowModified());
@@ -660,8 +813,12 @@ private Q_SLOTS:
         QVERIFY2(said.contains(QStringLiteral("U+4E2D")) && said.contains(QStringLiteral("WINDOWS-1252")) &&
                      said.contains(QStringLiteral("3:1")),
                  qPrintable(said));
-        // Saved under another name as Markdown it is UTF-8, which holds it.
-        QVERIFY(w.save_to(dir.filePath(QStringLiteral("western.md"))));
+        // Saved under another name, text or Markdown, it is still in its
+        // encoding (one rule, edit::file_bytes): refused the same way.
+        for (const auto* other : {"other.md", "other.txt"}) {
+            QVERIFY(!w.save_to(dir.filePath(QLatin1String(other))));
+            QVERIFY(!QFileInfo::exists(dir.filePath(QLatin1String(other))));
+        }
 
         // With someone to ask: the question, named for Orca, Cancel first
         // (nothing written), then Save as UTF-8 (the whole file, from then on).
@@ -852,6 +1009,67 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending[0].autosave_path));
     }
 
+    // Issue 13 item 1: a PEF of volumes with their own page sizes and
+    // single-sided sections (volume_grids.pef), edited, is autosaved as PEF;
+    // recovered after a crash it exports (PEF and BRF) the same bytes as the
+    // window that crashed. Before, the autosave was the editor's Markdown
+    // lines: the recovery had the rows and pages but no sections, volumes,
+    // grids or metadata, so its PEF was one volume of one section on one
+    // grid, and its BRF lost the blank backs of the single-sided sections.
+    void a_recovered_pef_exports_what_the_crashed_window_exported() {
+        const QString file = QStringLiteral(TACTUS_TEST_DATA "/pef/volume_grids.pef");
+        QByteArray before_pef, before_brf;
+        const auto read = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(file));
+            // A row of volume 2 changed (a cell typed at its end).
+            auto* print = w.editor()->print_pane();
+            const auto block = print->document()->find(QStringLiteral("⠋⠕⠥⠗"));
+            QVERIFY(!block.isNull());
+            QTextCursor c(block);
+            c.movePosition(QTextCursor::EndOfBlock);
+            c.insertText(QStringLiteral("⠗"));
+            QVERIFY(w.isWindowModified());
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.pef"))));
+            QVERIFY(w.export_to(dir.filePath(QStringLiteral("crashed.brf"))));
+            before_pef = read(dir.filePath(QStringLiteral("crashed.pef")));
+            before_brf = read(dir.filePath(QStringLiteral("crashed.brf")));
+            QVERIFY(before_pef.contains("⠋⠕⠥⠗⠗"));
+            QVERIFY(w.autosave_now());
+            QVERIFY2(w.autosave_path().endsWith(QLatin1String(".pef")), qPrintable(w.autosave_path()));
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;  // its process died
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        QVERIFY(pending[0].autosave_path.endsWith(QLatin1String(".pef")));
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QVERIFY(w.isWindowModified());
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.pef"))));
+        QVERIFY(w.export_to(dir.filePath(QStringLiteral("recovered.brf"))));
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.pef"))), before_pef);
+        QCOMPARE(read(dir.filePath(QStringLiteral("recovered.brf"))), before_brf);
+        // Print typed into it: no longer ready-made braille, autosaved as the editor's lines.
+        auto* print = w.editor()->print_pane();
+        print->moveCursor(QTextCursor::End);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, QStringLiteral("Print words"));
+        QVERIFY(w.autosave_now());
+        QVERIFY2(w.autosave_path().endsWith(QLatin1String(".md")), qPrintable(w.autosave_path()));
+        QVERIFY(!QFile::exists(QFileInfo(w.autosave_path()).path() + QLatin1Char('/') +
+                               QFileInfo(w.autosave_path()).completeBaseName() + QStringLiteral(".pef")));
+    }
+
     // A CRLF text file recovered after a crash is saved with CRLF again.
     void a_recovered_text_file_keeps_its_line_ends() {
         const auto path = dir.filePath(QStringLiteral("dos.txt"));
@@ -884,6 +1102,46 @@ private Q_SLOTS:
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray("one\r\ntwo three\r\n"));
+    }
+
+    // Issue 13 item 4 (session 8): a Markdown file recovered after a crash is
+    // saved in its encoding and with its line ends again (Notepad's UTF-16LE
+    // with a BOM and CRLF), as a text file is.
+    void a_recovered_markdown_file_keeps_its_encoding_and_line_ends() {
+        const auto hex = [](const char* h) { return QByteArray::fromHex(QByteArray(h).replace(' ', "")); };
+        const auto path = dir.filePath(QStringLiteral("notepad.md"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            // "# Hello 世界\r\n\r\n**bye** now\r\n"
+            f.write(hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 0d00 0a00"));
+        }
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(path));
+            QTextCursor c(w.editor()->print_pane()->document()->findBlockByNumber(1));
+            c.movePosition(QTextCursor::EndOfBlock);
+            w.editor()->print_pane()->setTextCursor(c);
+            QTest::keyClicks(w.editor()->print_pane(), "!");
+            QVERIFY(w.autosave_now());
+            QFile meta(w.autosave_path() + QStringLiteral(".json"));
+            QVERIFY(meta.open(QIODevice::ReadOnly));
+            auto json = QJsonDocument::fromJson(meta.readAll()).object();
+            meta.close();
+            json[QStringLiteral("pid")] = 999999999;
+            QVERIFY(meta.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            meta.write(QJsonDocument(json).toJson());
+        }
+        const auto pending = MainWindow::pending_recoveries();
+        QCOMPARE(pending.size(), 1);
+        MainWindow w;
+        QVERIFY(w.recover(pending[0]));
+        QCOMPARE(w.editor()->layout().encoding(), std::string("UTF-16LE"));
+        QVERIFY(w.save_to(path));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // "# Hello 世界\r\n\r\n**bye** now!\r\n"
+        QCOMPARE(f.readAll(), hex("fffe 2300 2000 4800 6500 6c00 6c00 6f00 2000 164e 4c75 0d00 0a00 0d00 0a00 2a00 2a00 6200 7900 6500 2a00 2a00 2000 6e00 6f00 7700 2100 0d00 0a00"));
     }
 
     void six_key_mapping_comes_from_the_settings() {
