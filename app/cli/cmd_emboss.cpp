@@ -109,11 +109,13 @@ spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
 
 // What the job would put on the line. A document is measured a sheet at a
 // time (a book in constant memory); a saved plan is already whole.
-spool::StreamSize dry_run(const EmbossArgs& a) {
-    if (!a.firmware_tables.empty()) {
+// `tables`: the reference firmware's (protocol 3), as `emboss` would send it
+// to the same device; none: protocol 2.
+spool::StreamSize dry_run(const EmbossArgs& a, const std::optional<machine::FirmwareTables>& tables) {
+    if (tables) {
         // The v3 stream for the reference firmware (its payload: 31 bytes of
         // ops and the 2-byte check).
-        const auto job = prepare(a, true);
+        const auto job = prepare(a, true, tables);
         std::size_t first = 0;
         for (const auto& s : job.plan.sheets) {
             if (s.index >= a.start_sheet) break;
@@ -170,9 +172,15 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
         return enqueue_emboss(a.layout, q);
     }
     if (a.dry_run) {
-        const auto m = dry_run(a);
+        // What `emboss` would put on the line: the firmware's protocol 3 for
+        // --firmware-tables or the built-in simulator (unless protocol=2 or a
+        // saved plan), else protocol 2's stream.
+        std::optional<machine::FirmwareTables> tables = sim_tables(a);
+        if (!tables && !a.firmware_tables.empty()) tables = require(profile::load_firmware_tables(a.firmware_tables));
+        const auto m = dry_run(a, tables);
         std::cout << m.stream_bytes << " bytes of job stream in " << m.frames << " frames (" << m.line_bytes
-                  << " bytes on the line) for " << m.sheets << " sheets, " << m.strikes << " strikes\n";
+                  << " bytes on the line) for " << m.sheets << " sheets, " << m.strikes << " strikes (protocol "
+                  << (tables ? 3 : 2) << ")\n";
         return;
     }
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
@@ -251,7 +259,9 @@ void add_emboss_command(CLI::App& app) {
                     "embosser's profile; --table, --cells, --lines, --page-numbers, --no-print-pages, "
                     "--eight-dot, --encoding, --copies and --title go with the job; the command follows "
                     "the job until it ends, Ctrl-C cancels it)");
-    cmd->add_flag("--dry-run", args->dry_run, "Stop after encoding and print the byte count");
+    cmd->add_flag("--dry-run", args->dry_run,
+                  "Stop after encoding and print the byte count: protocol 3 with --firmware-tables or a "
+                  "--device sim (unless protocol=2), else protocol 2");
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
     cmd->add_option("--firmware-tables", args->firmware_tables,
                     "The reference firmware's ramp tables (its build/ramp.json): a controller speaking protocol 3 "

@@ -164,17 +164,29 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
 // writes them (every table Tactus lists knows them; square brackets are unknown
 // to zh-tw), the way print without superscripts marks a note
 // (Translator::note_reference_indicator, docs/layout.md "Notes").
-Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out) {
+// `number_only`: the indicator alone; the number goes in front of the print
+// text that follows it unspaced, translated with it (translate_spans).
+Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out,
+                                      bool indicator_only = false) {
     auto u = utf8_to_utf32(span.text);
     if (!u) return std::unexpected(u.error());
     const auto& indicator = tr.note_reference_indicator();
-    if (indicator.empty()) *u = U"(" + *u + U")";
-    auto cells = tr.translate(*u);
-    if (!cells) return std::unexpected(cells.error());
     out.cells.insert(out.cells.end(), indicator.begin(), indicator.end());
-    out.cells.insert(out.cells.end(), cells->begin(), cells->end());
+    if (!indicator_only) {
+        if (indicator.empty()) *u = U"(" + *u + U")";
+        auto cells = tr.translate(*u);
+        if (!cells) return std::unexpected(cells.error());
+        out.cells.insert(out.cells.end(), cells->begin(), cells->end());
+    }
     out.breaks.resize(out.cells.size(), BreakBefore::never);
     return {};
+}
+
+// Whether print text follows a note reference with no space between: its
+// first character is not a space.
+bool follows_unspaced(std::span<const document::Span> spans, std::size_t i) {
+    return i + 1 < spans.size() && !spans[i + 1].note_reference && !spans[i + 1].text.empty() &&
+           spans[i + 1].text.front() != ' ';
 }
 
 // The spans of a text block: runs of print text translated as one text each,
@@ -182,9 +194,20 @@ Result<void> translate_note_reference(const Translator& tr, const document::Span
 Result<void> translate_spans(const Translator& tr, std::span<const document::Span> spans, std::size_t room,
                              TranslatedBlock& out, const std::function<void(std::size_t)>& progress) {
     std::size_t done = 0;
+    // A note's number whose print text follows unspaced: translated with that
+    // text, so the code's rule for what follows a number holds (UEB's grade 1
+    // indicator before a letter a-j, "clarion¹and" ⠼⠁⠰⠁⠝⠙, which read ⠼⠁⠯
+    // as 1 and a sign when the two were translated apart).
+    std::u32string number;
     for (std::size_t i = 0; i < spans.size();) {
         if (spans[i].note_reference) {
-            if (auto ok = translate_note_reference(tr, spans[i], out); !ok) return ok;
+            const bool joined = !tr.note_reference_indicator().empty() && follows_unspaced(spans, i);
+            if (auto ok = translate_note_reference(tr, spans[i], out, joined); !ok) return ok;
+            if (joined) {
+                auto u = utf8_to_utf32(spans[i].text);
+                if (!u) return std::unexpected(u.error());
+                number = std::move(*u);
+            }
             ++i;
             continue;
         }
@@ -193,6 +216,12 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         std::u32string text;
         std::vector<std::uint8_t> emph;
         if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
+        const std::size_t prefix = number.size();
+        if (prefix) {
+            text.insert(0, number);
+            emph.insert(emph.begin(), prefix, document::emphasis_none);
+            number.clear();
+        }
         // Spaces at a block's ends are print's (a text file's indent, a line
         // kept verbatim), not braille: the layout's formats place the text.
         if (j == spans.size()) {
@@ -214,10 +243,12 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         // first cell, or text going on unspaced after a note reference (a space
         // after it gives a blank break anyway).
         constexpr auto join = BreakBefore::never;
-        const std::function<void(std::size_t)> shifted = [&](std::size_t n) { progress(done + n); };
+        const std::function<void(std::size_t)> shifted = [&](std::size_t n) {
+            progress(done + (n > prefix ? n - prefix : 0));
+        };
         if (auto ok = translate_text(tr, text, emph, room, out, progress ? shifted : progress, join); !ok)
             return ok;
-        done += text.size();
+        done += text.size() - prefix;
         i = j;
     }
     return {};

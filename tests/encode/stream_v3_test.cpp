@@ -14,15 +14,12 @@
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 namespace tactus::encode {
 namespace {
 
-machine::FirmwareTables tables() {
-    auto t = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    EXPECT_TRUE(t) << t.error().to_string();
-    return t ? *t : machine::FirmwareTables{};
-}
+const machine::FirmwareTables& tables() { return test::firmware_tables(); }
 
 std::string hex(std::span<const std::uint8_t> b) {
     std::string s;

@@ -3,6 +3,8 @@
 // docs/layout.md names (BANA Braille Formats), through real liblouis tables.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <random>
 
 #include "../common/layout_options.hpp"
@@ -297,6 +299,34 @@ TEST(StructureLayout, ANoteInsideAListOrAQuoteKeepsTheirBlankLines) {
         27, "en-ueb-g1.ctb");
     EXPECT_EQ(lines, (std::vector<std::string>{"_4 ONE9#A", "      9#A ,NOTE4", "", "  ,AFTER4", "",
                                                "  ,QUOTED9#B", "      9#B ,SOURCE4", "  ,MORE4", "", "  ,END4"}));
+}
+
+// A note reference with print text straight after it ("clarion[^1]and"):
+// the number and that text are translated together, so the code's own rule
+// for what follows a number holds. In UEB a letter a-j after a number takes
+// the grade 1 indicator (liblouis: "1and" is ⠼⠁⠰⠁⠝⠙); translated apart, the
+// text read ⠼⠁⠯, "1" and a sign, and "1b" read as the number 12.
+TEST(StructureLayout, TextStraightAfterANoteReferenceFollowsTheNumbersRule) {
+    for (const auto& [table, text, want] :
+         {std::tuple<std::string, std::string, std::string>{"en-ueb-g2.ctb", "and more", ";9#A;AND M"},
+          {"en-ueb-g1.ctb", "b and c", "9#A;B AND C"},
+          {"en-ueb-g2.ctb", "k", ";9#AK"}}) {
+        SCOPED_TRACE(table + " / " + text);
+        const std::vector<Block> blocks{
+            text_block(BlockKind::paragraph, 0, {Span{"clarion"}, reference("1"), Span{text}}),
+            text_block(BlockKind::note, 0, {reference("1"), Span{" A note."}})};
+        const auto lines = lay_out_lines(blocks, 40, table);
+        ASSERT_FALSE(lines.empty());
+        EXPECT_NE(lines[0].find(want), std::string::npos) << lines[0] << " | " << (lines.size() > 1 ? lines[1] : "");
+        // The same as liblouis writes the number and the text as one.
+        auto tr = translate::Translator::open(table);
+        ASSERT_TRUE(tr);
+        std::u32string joined = U"1";
+        for (const char c : text) joined += static_cast<char32_t>(c);
+        const auto cells = tr->translate(joined);
+        ASSERT_TRUE(cells);
+        EXPECT_NE(lines[0].find(brf(*cells)), std::string::npos) << lines[0] << " / " << brf(*cells);
+    }
 }
 
 // The note reference indicator is the code's: dots 2356 2356 before the number

@@ -297,5 +297,23 @@ TEST(SimDefaultProtocol, EmbossOnTheSimulatorSpeaksProtocol3AndProtocol2OnReques
     fs::remove_all(dir);
 }
 
+// `emboss --dry-run` measures the stream `emboss` would send to the same
+// device: the firmware's protocol 3 on the simulator (it measured protocol
+// 2's whatever the device), protocol 2 on request.
+TEST(SimDefaultProtocol, DryRunMeasuresTheProtocolTheDeviceSpeaks) {
+    const std::string note = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+    const auto line_bytes = [](const std::string& out) {
+        const auto open = out.find(" frames (");
+        return open == std::string::npos ? 0UL : std::stoul(out.substr(open + 9));
+    };
+    auto v3 = test::run_captured({TACTUS_CLI, "emboss", "--dry-run", "--device", "sim?speed=max", note});
+    EXPECT_EQ(v3.exit_code, 0) << v3.err;
+    EXPECT_NE(v3.out.find("(protocol 3)"), std::string::npos) << v3.out;
+    auto v2 = test::run_captured({TACTUS_CLI, "emboss", "--dry-run", "--device", "sim?protocol=2", note});
+    EXPECT_EQ(v2.exit_code, 0) << v2.err;
+    EXPECT_NE(v2.out.find("(protocol 2)"), std::string::npos) << v2.out;
+    EXPECT_LT(line_bytes(v3.out), line_bytes(v2.out) / 4) << v3.out << v2.out;
+}
+
 }  // namespace
 }  // namespace tactus
