@@ -451,8 +451,14 @@ TEST(Runner, TheBuiltInSimulatorOnProtocol3StrikesAMultiSheetJobExactly) {
         std::this_thread::sleep_for(std::chrono::milliseconds(300));
         (void)spool.act(id, Action::resume);
     });
+    // The operator's pause may land before the runner takes the job (it then
+    // waits, paused, for the resume) or while it runs.
     std::optional<RunEnd> end;
-    for (int k = 0; k < 5 && end != RunEnd::completed; ++k) end = run_next(r, stop);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (end != RunEnd::completed && std::chrono::steady_clock::now() < deadline) {
+        end = run_next(r, stop);
+        if (!end) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     op.join();
     EXPECT_EQ(end, RunEnd::completed);
     EXPECT_EQ(sim.protocol(), encode::kProtocolV3);
