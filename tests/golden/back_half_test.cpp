@@ -23,6 +23,7 @@
 #include "plan/planner.hpp"
 #include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 using namespace tactus;
 namespace fs = std::filesystem;
@@ -114,8 +115,7 @@ namespace {
 // at most 2 line bytes per strike on a typical page, every frame byte counted.
 TEST(BackHalfV3, WelcomeSheetOneFramesMatchExpected) {
     const auto prof = profile::default_profile();
-    auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     pipeline::PipelineOptions o;
     o.tables = "en-ueb-g2.ctb";
     o.layout.geometry = profile::page_geometry(prof);

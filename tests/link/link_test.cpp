@@ -9,6 +9,7 @@
 
 #include "controller/sim_controller.hpp"
 #include "link/link.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 #include "../common/test_plans.hpp"
 #include "controller/sim_transport.hpp"
 #include "encode/frame.hpp"
@@ -474,8 +475,7 @@ private:
 };
 
 TEST(LinkNoisySession, ALateSecondRefusalOfVersionTwoDoesNotRefuseVersionThree) {
-    auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     controller::SimOptions so;
     so.firmware = *tables;
     auto ctl = std::make_shared<SimController>(so);
@@ -533,8 +533,7 @@ private:
 };
 
 TEST(LinkNoisySession, ARefusalOfVersionTwoThatComesLaterStillLetsVersionThreeOpen) {
-    auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     controller::SimOptions so;
     so.firmware = *tables;
     auto ctl = std::make_shared<SimController>(so);

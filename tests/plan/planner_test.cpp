@@ -12,6 +12,7 @@
 #include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 using namespace tactus;
 using namespace tactus::plan;
@@ -190,8 +191,7 @@ TEST(Planner, ToleranceUnreachableWhenTheHeadCannotFollow) {
 // Protocol v3: the plan is the firmware's timer schedule (firmware/PROTOCOL-v3.md,
 // "Timing"), and the head model runs on the table moves' real step trains.
 TEST(Planner, FirmwareModeTimesTheFirmwaresScheduleAndEstimatesItsStepTrains) {
-    const auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     ASSERT_GT(tables->start_gap_ticks, 0u);
     const auto prof = profile::default_profile();
     const auto timing = profile::strike_timing(prof);
@@ -287,8 +287,7 @@ std::vector<double> residuals(const FirmwarePlan& plan) {
 // a plan made from the shared cache, cold or warm, is the plan made without
 // it, byte for byte and strike for strike.
 TEST(Planner, FirmwareModeSharedEstimatesGiveTheSamePlan) {
-    const auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     const auto prof = profile::default_profile();
     const auto doc = doc_of({page_of({U"⠉⠀⠁⠿⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠇", U"⠂⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠀⠁"}),
                              page_of({U"⠁⠃⠀⠀⠀⠀⠀⠀⠀⠀⠿"})});
@@ -321,8 +320,7 @@ TEST(Planner, FirmwareModeSharedEstimatesGiveTheSamePlan) {
 // profile whose head model, band or strike timing differs gets its own
 // entry, and its plan is the plan made without the cache.
 TEST(Planner, FirmwareModeSharedEstimatesFollowTheProfile) {
-    const auto tables = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-    ASSERT_TRUE(tables) << tables.error().to_string();
+    const auto* tables = &test::firmware_tables();
     const auto doc = doc_of({page_of({U"⠉⠀⠁⠿⠀⠀⠀⠀⠀⠀⠇", U"⠂⠀⠀⠁"})});
     const auto base = profile::default_profile();
     TableEstimates::clear();

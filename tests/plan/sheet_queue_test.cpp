@@ -20,6 +20,7 @@
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/page_geometry.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 
 namespace tactus::plan {
 namespace {
@@ -166,11 +167,7 @@ profile::PrinterProfile profile_of(const Variant& v) {
 
 PlanOptions options_of(const Variant& v) {
     PlanOptions o;
-    if (v.firmware) {
-        auto t = profile::load_firmware_tables(TACTUS_FIRMWARE_TABLES);
-        EXPECT_TRUE(t) << t.error().to_string();
-        if (t) o.firmware = *t;
-    }
+    if (v.firmware) o.firmware = test::firmware_tables();
     return o;
 }
 
