@@ -222,24 +222,23 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     // table moves: the job is planned with the tables the profile makes, the
     // rule the firmware was built with; HELLO_REPLY's table id must be theirs
     // (use_firmware_tables), or the firmware was built for another profile.
-    const bool v3 = link_->protocol() == encode::kProtocolV3;
-    Result<PrintJob> print = std::unexpected(Error{"not planned", "spool"});
-    if (v3) {
-        auto tables = profile::make_firmware_tables(*profile);
-        print = tables ? make_firmware_print_job(*doc, *profile, *tables, printer.device, job.copies)
-                       : Result<PrintJob>(std::unexpected(tables.error()));
-    } else {
-        print = make_print_job(*doc, *profile, printer.device, job.copies);
+    const auto firmware_refuses = [&](const Error& e) -> Result<RunEnd> {
+        const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
+                         "cannot emboss with its current profile: " + e.to_string();
+        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        return RunEnd::failed;
+    };
+    std::optional<machine::FirmwareTables> tables;
+    if (link_->protocol() == encode::kProtocolV3) {
+        auto t = profile::make_firmware_tables(*profile);
+        if (!t) return firmware_refuses(t.error());
+        tables = std::move(*t);
     }
+    auto print = tables ? make_firmware_print_job(*doc, *profile, *tables, printer.device, job.copies)
+                        : make_print_job(*doc, *profile, printer.device, job.copies);
     auto* plan = print ? &print->plan : nullptr;
     if (!print && print.error().where == kPassesWhere) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
-        return RunEnd::failed;
-    }
-    if (!plan && v3) {
-        const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
-                         "cannot emboss with its current profile: " + print.error().to_string();
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
@@ -252,14 +251,9 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    if (v3) {
-        if (auto checked = link_->use_firmware_tables(*print->firmware, print->timing); !checked) {
-            const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
-                             "cannot emboss with its current profile: " + checked.error().to_string();
-            SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
-            return RunEnd::failed;
-        }
-    }
+    if (tables)
+        if (auto checked = link_->use_firmware_tables(*print->firmware, print->timing); !checked)
+            return firmware_refuses(checked.error());
     SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
     if (submitted_profile != printer.profile_json)
         SPOOL_TRY(s.log(job.id, printer.id, "profile",

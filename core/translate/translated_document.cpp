@@ -164,17 +164,15 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
 // writes them (every table Tactus lists knows them; square brackets are unknown
 // to zh-tw), the way print without superscripts marks a note
 // (Translator::note_reference_indicator, docs/layout.md "Notes").
-// `number_only`: the indicator alone; the number goes in front of the print
-// text that follows it unspaced, translated with it (translate_spans).
-Result<void> translate_note_reference(const Translator& tr, const document::Span& span, TranslatedBlock& out,
-                                      bool indicator_only = false) {
-    auto u = utf8_to_utf32(span.text);
-    if (!u) return std::unexpected(u.error());
+// `number`: the reference's number. Empty: only the indicator is written; the
+// number goes in front of the print text that follows it unspaced, translated
+// with it (translate_spans).
+Result<void> translate_note_reference(const Translator& tr, std::u32string number, TranslatedBlock& out) {
     const auto& indicator = tr.note_reference_indicator();
     out.cells.insert(out.cells.end(), indicator.begin(), indicator.end());
-    if (!indicator_only) {
-        if (indicator.empty()) *u = U"(" + *u + U")";
-        auto cells = tr.translate(*u);
+    if (!number.empty()) {
+        if (indicator.empty()) number = U"(" + number + U")";
+        auto cells = tr.translate(number);
         if (!cells) return std::unexpected(cells.error());
         out.cells.insert(out.cells.end(), cells->begin(), cells->end());
     }
@@ -201,13 +199,11 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
     std::u32string number;
     for (std::size_t i = 0; i < spans.size();) {
         if (spans[i].note_reference) {
+            auto u = utf8_to_utf32(spans[i].text);
+            if (!u) return std::unexpected(u.error());
             const bool joined = !tr.note_reference_indicator().empty() && follows_unspaced(spans, i);
-            if (auto ok = translate_note_reference(tr, spans[i], out, joined); !ok) return ok;
-            if (joined) {
-                auto u = utf8_to_utf32(spans[i].text);
-                if (!u) return std::unexpected(u.error());
-                number = std::move(*u);
-            }
+            if (joined) number = std::move(*u);
+            if (auto ok = translate_note_reference(tr, joined ? std::u32string() : std::move(*u), out); !ok) return ok;
             ++i;
             continue;
         }

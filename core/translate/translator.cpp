@@ -97,14 +97,18 @@ std::string table_info(const std::string& table, const char* key) {
     return s;
 }
 
+// A table's file: a name as liblouis finds it in its data folder, or a path.
+std::filesystem::path table_path(const std::string& table) {
+    return table.find('/') != std::string::npos ? std::filesystem::path(table)
+                                                : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
+}
+
 // A metadata value of a table (liblouis reads a table's own `#+key:` lines
 // only), else of the first table it includes that has one: en-us-g2.ctb has no
 // metadata of its own but includes en-us-g1.ctb (#+system:ebae).
 std::string table_metadata(const std::string& table, const char* key, int depth = 0) {
     if (auto v = table_info(table, key); !v.empty() || depth >= 4) return v;
-    const std::filesystem::path path =
-        table.find('/') != std::string::npos ? std::filesystem::path(table) : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
-    std::ifstream in(path);
+    std::ifstream in(table_path(table));
     std::string line;
     while (std::getline(in, line)) {
         if (!line.starts_with("include")) continue;
@@ -129,9 +133,7 @@ std::string_view next_word(std::string_view line, std::size_t& at) {
 // (`noback`, `nofor`) before the opcode counts.
 bool table_has_opcode(const std::string& table, std::string_view opcode, int depth = 0) {
     if (depth > 8) return false;
-    const std::filesystem::path path =
-        table.find('/') != std::string::npos ? std::filesystem::path(table) : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
-    std::ifstream in(path);
+    std::ifstream in(table_path(table));
     std::string line;
     while (std::getline(in, line)) {
         std::size_t at = 0;

@@ -18,6 +18,7 @@
 #include "import/import.hpp"
 #include "import/text_lines.hpp"
 #include "pipeline/pipeline.hpp"
+#include "../common/hex_bytes.hpp"
 
 using namespace tactus;
 
@@ -846,18 +847,7 @@ TEST(RoundTrip, RandomEditsOfTextFilesAreSavedAsEdited) {
 
 namespace {
 
-std::string from_hex(std::string_view hex) {
-    std::string out;
-    for (std::size_t i = 0; i + 1 < hex.size();) {
-        if (hex[i] == ' ') {
-            ++i;
-            continue;
-        }
-        out += static_cast<char>(std::stoi(std::string(hex.substr(i, 2)), nullptr, 16));
-        i += 2;
-    }
-    return out;
-}
+using tactus::test::from_hex;
 
 struct EncodedMarkdown {
     const char* name;

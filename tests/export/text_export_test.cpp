@@ -9,6 +9,7 @@
 #include <random>
 
 #include "import/import.hpp"
+#include "../common/hex_bytes.hpp"
 
 using namespace tactus;
 
@@ -210,18 +211,7 @@ TEST(MarkdownExport, TextIsEscapedOnlyWhereMarkdownWouldReadIt) {
 
 namespace {
 
-std::string from_hex(std::string_view hex) {
-    std::string out;
-    for (std::size_t i = 0; i + 1 < hex.size();) {
-        if (hex[i] == ' ') {
-            ++i;
-            continue;
-        }
-        out += static_cast<char>(std::stoi(std::string(hex.substr(i, 2)), nullptr, 16));
-        i += 2;
-    }
-    return out;
-}
+using tactus::test::from_hex;
 
 struct EncodedSample {
     const char* name;
