@@ -598,7 +598,7 @@ bool MainWindow::save_to(const QString& path) {
 }
 
 void MainWindow::export_dialog(const QString& format) {
-    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto base = document_base_name();
     const auto filter = format == QLatin1String("pef") ? tr("PEF (*.pef)") : tr("Braille ASCII (*.brf)");
     FocusReturn back(this, editor_->print_pane());
     auto path = QFileDialog::getSaveFileName(this, tr("Export"), base + QLatin1Char('.') + format, filter);
@@ -637,7 +637,7 @@ bool MainWindow::export_to(const QString& path) {
 }
 
 void MainWindow::print_pdf_dialog() {
-    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto base = document_base_name();
     FocusReturn back(this, editor_->print_pane());
     auto path = QFileDialog::getSaveFileName(this, tr("Print preview to PDF"), base + QStringLiteral("-proof.pdf"),
                                              tr("PDF (*.pdf)"));
@@ -850,6 +850,11 @@ void MainWindow::show_panel(const QString& name) {
     }
 }
 
+// The document's name without its extension, for the files made from it.
+QString MainWindow::document_base_name() const {
+    return QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+}
+
 bool MainWindow::emboss() {
     const auto name = source_name_.isEmpty() ? tr("Untitled") : source_name_;
     // To a CUPS queue: the source document, laid out by the server with its
@@ -858,7 +863,7 @@ bool MainWindow::emboss() {
     // metadata: edit::structured_braille_pef, the rule the autosave follows
     // too), anything else as Markdown. Else into the spool: the job outlives
     // this window, and waits if the embosser is unreachable.
-    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto base = document_base_name();
     // A CUPS queue lays the document out with its own embosser's profile; the
     // spool embosses the pages laid out here, on this profile's page.
     const bool to_queue = printer_->selected_is_queue();
@@ -947,7 +952,7 @@ bool MainWindow::autosave_now() {
     // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
     // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
     // the rule a CUPS job follows too); anything else as the editor's lines.
-    const auto base = QFileInfo(source_name_.isEmpty() ? tr("untitled") : source_name_).completeBaseName();
+    const auto base = document_base_name();
     const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
     const bool as_pef = pef && pef->has_value();
     const auto info = QFileInfo(autosave_path_);

@@ -126,6 +126,7 @@ private:
     void add_recent(const QString& path);
     void report(const QString& message, bool error = false);
     [[nodiscard]] QString table_warning(const QString& detail) const;
+    [[nodiscard]] QString document_base_name() const;
     bool maybe_save();
     // Ready-made braille (BRF, PEF) whose page is larger than the printer's:
     // asks before anything is embossed or exported whether to reflow it on the
