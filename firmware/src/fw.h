@@ -62,9 +62,9 @@
 
 /* NAK reasons. */
 #define NAK_OUT_OF_ORDER 1
-#define NAK_NO_SPACE 2
-#define NAK_NO_SESSION 3
-#define NAK_BAD_PAYLOAD 4
+#define NAK_NO_SPACE     2
+#define NAK_NO_SESSION   3
+#define NAK_BAD_PAYLOAD  4
 #define NAK_UNKNOWN_TYPE 5
 
 /* Controller states. */

@@ -63,7 +63,7 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 
         .area CSEG (CODE)
 
-; Latency compensation (issue 12 item 4): every edge (carriage and feed
+; Latency compensation: every edge (carriage and feed
 ; steps, a hammer going down or up) is made by one XRL P1 exactly EDGE_TICKS
 ; machine cycles after its timer event (the overflow), whatever the latency.
 ; The latency is the instruction the interrupt waits for: the rest of the one

@@ -5,7 +5,7 @@
 // far end of the in-process serial line (controller::SimTransport) on virtual
 // time, so the host's real link drives the firmware's real frame decoder,
 // sessions, window, DATA check and executor over a noisy line: hundreds of
-// seeds in seconds, where s51 runs one in real time (issue 12 item 8).
+// seeds in seconds, where s51 runs one in real time.
 //
 // What is the chip's and what is modelled here:
 // * every rule of the link and the executor is the firmware's code;
