@@ -42,7 +42,7 @@
 #define FW_RING_BYTES (FW_BUF_CAP - FW_SLACK)
 /* Largest DATA payload accepted (ops + the 2-byte check): about two thirds of
  * the ring, so the next frame fits while the ring still holds more than the
- * executor uses up during its transmission (PROTOCOL-v3.md, "Window"). */
+ * executor uses up during its transmission (docs/protocol.md, "Reliability"). */
 #define FW_MAX_DATA ((FW_RING_BYTES * 2 / 3 + 2) < 80 ? (FW_RING_BYTES * 2 / 3 + 2) : 80)
 #define FW_WINDOW_FRAMES 4
 

@@ -2,7 +2,7 @@
 ; The step interrupt (timer 2, 16-bit auto-reload, high priority).
 ;
 ; Why assembly: SDCC's C costs 94-99 cycles a step, which saturates the 89C52
-; near 9,600 steps/s (../shared/design/emulator-notes.md). Here a cruise step
+; near 9,600 steps/s (docs/emulator.md). Here a cruise step
 ; costs 15 machine cycles and a ramp step 30, counted from the interrupt's
 ; LCALL to its RETI (bench/firmware measures them).
 ;

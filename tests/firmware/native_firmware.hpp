@@ -12,7 +12,7 @@
 // * the main loop is main.c's (received bytes, compact, exec_poll,
 //   fw_poll_paper, fw_report_room), run after each byte and each event;
 // * the step interrupt and motion.c are modelled: a phase ends when the
-//   firmware's timer schedule says (PROTOCOL-v3.md "Timing": a move's first
+//   firmware's timer schedule says (docs/protocol.md "Timing": a move's first
 //   step start_gap + T[0] after the last timer event, its last step the
 //   table's move time later; the settle, the hammer pulse; a phase the main
 //   loop comes to late starts when given), as controller::SimController does;

@@ -52,7 +52,7 @@ struct PlannedEdge {
 // plan's times: a carriage move's steps are its table intervals, ending its
 // settle before the strike; the hammer goes up its pulse after the strike; a
 // pass's feed starts the firmware's start gap after the event before the pass
-// (firmware/PROTOCOL-v3.md, "Timing").
+// (docs/protocol.md, "Timing").
 std::vector<PlannedEdge> planned_edges(const plan::JobPlan& job, const machine::FirmwareTables& t,
                                        const machine::StrikeTiming& timing) {
     const auto tick = [](double s) { return std::llround(s * machine::kTickHz); };
