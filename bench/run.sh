@@ -21,7 +21,7 @@ if [ -x "$build/bench/gui/bench_gui" ]; then
   QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages" "$build/bench/gui/bench_gui" "$data/kjv.txt"
   QT_QPA_PLATFORM=offscreen run "gui: keystroke to preview, 1,000 pages of hard-wrapped .txt" \
     "$build/bench/gui/bench_gui" "$data/kjv.txt" 1000 --text
-  # Ready-made braille kept page for page (issue 13 item 1): 1,026 pages of 40 x 30.
+  # Ready-made braille kept page for page: 1,026 pages of 40 x 30.
   [ -s "$data/kjv-40x30.pef" ] || { head -c 1300000 "$data/kjv.txt" > "$data/kjv-part.txt" &&
     "$build/app/tactus-cli" layout --cells 40 --lines 30 --to pef "$data/kjv-part.txt" -o "$data/kjv-40x30.pef"; }
   QT_QPA_PLATFORM=offscreen run "gui: braille cell to preview, a 1,026-page PEF kept page for page" \
@@ -30,7 +30,7 @@ fi
 run "firmware: v3 line bytes per strike (host encoder)" "$build/bench/firmware/bench_v3_stream" \
   resources/samples/welcome.md "$data/genesis1-3.txt"
 if command -v s51 >/dev/null && command -v sdcc >/dev/null; then
-  # The reference firmware in s51 (issue 12 item 6; docs/protocol.md, "The firmware's figures").
+  # The reference firmware in s51 (docs/protocol.md, "The firmware's figures").
   make -s -C firmware emu >/dev/null
   run "firmware: interrupt cycles, step rate, edge latency, CPU, link efficiency (s51)" \
     python3 bench/firmware/bench_firmware.py

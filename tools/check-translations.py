@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Fails when the zh_TW interface is incomplete or uses a wrong term (issue 14 item 3).
+"""Fails when the zh_TW interface is incomplete or uses a wrong term.
 
 Runs Qt's lupdate over the same sources the app build translates (widgets/ and
 app/gui/main.cpp) into a scratch copy of resources/i18n/tactus_zh_TW.ts, so a

@@ -21,7 +21,7 @@ public:
         const auto* a = static_cast<const Announcer*>(object());
         if (t == QAccessible::Name) return a->message();
         // No description: screen readers cache it, so Orca spoke each new message
-        // followed by the previous one (issue 14).
+        // followed by the previous one.
         if (t == QAccessible::Description) return {};
         return QAccessibleWidget::text(t);
     }

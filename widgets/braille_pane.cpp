@@ -38,7 +38,7 @@ bool leave_to_window(QEvent* e) {
 BraillePane::BraillePane(QWidget* parent) : QPlainTextEdit(parent) {
     setObjectName(QStringLiteral("braillePane"));
     // Not read-only: a read-only pane is announced "Braille read only text" and
-    // screen readers stop echoing it (issue 14). Every edit still goes through
+    // screen readers stop echoing it. Every edit still goes through
     // cells_typed / erase_*: keys, input methods, cut, paste and drops are
     // intercepted below, so the text is never changed behind the document's back.
     setContextMenuPolicy(Qt::NoContextMenu);  // its Cut and Delete would edit the text directly

@@ -3,7 +3,7 @@
 // Gives the keyboard focus back after a dialog. Under a window manager the main
 // window did not always become active again after File > Open (the file dialog,
 // then a progress dialog that was deleted while shown): Orca then heard no
-// window and the app fell silent for good (issue 14). A FocusReturn made before
+// window and the app fell silent for good. A FocusReturn made before
 // a dialog activates the window again when it goes out of scope and puts the
 // focus back where it was (or on `fallback`).
 #include <QPointer>

@@ -827,7 +827,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
 }
 
 bool MainWindow::focusNextPrevChild(bool next) {
-    // Only the controls on the raised tab of each dock (issue 14).
+    // Only the controls on the raised tab of each dock (widgets/visible_focus.hpp).
     return focus_next_visible(this, next) || QMainWindow::focusNextPrevChild(next);
 }
 

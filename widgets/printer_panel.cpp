@@ -749,7 +749,7 @@ void PrinterPanel::follow_queue_jobs() {
                 show_fault(tr("%1 waits on %2: %3").arg(j.title, j.queue, message_text));
             } else if (!new_state && s.state == ipp::RemoteJobState::processing && s.sheets_completed > 0 &&
                        s.sheets_completed != j.status->sheets_completed) {
-                // A step at most every few seconds, as for local jobs (issue 14).
+                // A step at most every few seconds, as for local jobs, so a screen reader is not flooded.
                 const auto now = ProgressSteps::Clock::now();
                 if (!j.spoken_at || now - *j.spoken_at >= std::chrono::seconds(3)) {
                     Q_EMIT message(tr("%1: %n sheet(s) embossed", nullptr, s.sheets_completed).arg(j.title), false);
@@ -925,7 +925,7 @@ void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t
         w.steps = std::make_unique<ProgressSteps>(std::max<std::size_t>(j.total_sheets(), 1));
     if (j.state == spool::JobState::running && total) {
         // The runner records every pass; the bar, the status and the screen
-        // reader hear only the steps (issue 14: one event per strike flooded Orca).
+        // reader hear only the steps (one event per strike would flood Orca).
         const auto step = w.steps->update(done, total, std::max<std::size_t>(s.sheet, 1));
         if (step && w.steps->speak(ProgressSteps::Clock::now()))
             Q_EMIT message(step->by_sheet ? tr("%1: sheet %2 of %3").arg(title).arg(step->sheet).arg(step->sheets)
@@ -1015,7 +1015,7 @@ void PrinterPanel::show_jobs() {
         set_text(row, col_printer, qs(j.printer));
         set_text(row, col_state, state_text(j.state) + (j.reason.empty() ? QString() : QStringLiteral(": ") + qs(j.reason)));
         set_text(row, col_sheet, s.sheet ? QString::number(s.sheet) : QString());
-        // The bar moves in tenths (issue 14: its value is what a screen reader reads).
+        // The bar moves in tenths: its value is what a screen reader reads.
         bar_at(row, tr("Progress of %1").arg(qs(j.title)), s.percent == 100 ? 100 : s.percent / 10 * 10);
     }
     // Jobs on CUPS queues: the server's state, its printer's message, the

@@ -4,7 +4,7 @@
 // tabs, Qt's focus chain also walked the controls of the tabs that are not
 // raised (about 45 stops for Motion, Vibration, Profile and Printer while the
 // Preview is shown): the focus went where neither a sighted nor a blind user
-// could follow it (issue 14).
+// could follow it.
 class QDockWidget;
 class QWidget;
 

@@ -29,7 +29,7 @@ namespace tactus::cli {
 namespace {
 
 // The reference firmware's DATA payload: 31 bytes of ops and the check
-// (firmware/PROTOCOL-v3.md); the dry run's frame count assumes it.
+// (docs/protocol.md); the dry run's frame count assumes it.
 constexpr std::size_t kFirmwareMaxOps = 31;
 
 link::CancelToken* g_cancel = nullptr;

@@ -298,8 +298,8 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
         for (std::size_t i = lines.size() > 12 ? lines.size() - 12 : 0; i < lines.size(); ++i)
             std::cerr << "sim: s51: " << lines[i] << "\n";
         // A chip that stops by itself crashed (the firmware never ends its
-        // own run): that is a failure, never a quiet end (issue 12: a stack
-        // overflow looked like a run that just ended).
+        // own run): that is a failure, never a quiet end (a stack overflow
+        // must not look like a run that just ended).
         throw CommandFailed(exit_failure, "sim --firmware: the emulated chip stopped by itself after " +
                                               std::to_string(fired) + " strikes: " +
                                               (why.empty() ? "s51 gave no reason" : why));

@@ -4,9 +4,9 @@
 // s51 emulator (an 8052 at 11.0592 MHz, `-t C52`), its UART bridged to a
 // pseudo-terminal, and its port pins traced, so the strikes it fires come
 // back as the strike log the C++ simulated controller writes. The recipe is
-// firmware/tools/run-s51.sh's (../shared/design/emulator-notes.md): two FIFOs
-// for the emulator's serial port (s51's TCP and tty options are not
-// binary-clean), bridged to a raw pty; here this process is the bridge (where
+// firmware/tools/run-s51.sh's (docs/emulator.md): two FIFOs for the
+// emulator's serial port (s51's TCP and tty options are not binary-clean),
+// bridged to a raw pty; here this process is the bridge (where
 // run-s51.sh uses socat), so it can also put noise on the line.
 #include <atomic>
 #include <cstddef>

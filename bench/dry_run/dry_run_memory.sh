@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Peak memory of `tactus-cli emboss --dry-run` against the number of braille
 # pages, with `tactus-cli layout --summary` on the same text as the peer (the
-# layout alone). Issue 16, item 7: 100,000 pages took 2.4 GB. Prints, per
+# layout alone): a dry run must not hold every page (100,000 pages once took
+# 2.4 GB). Prints, per
 # size: pages, peak RSS of each, the ratio, and MB per page.
 #
 #   bench/dry_run/dry_run_memory.sh [TEXT] [COPIES...]

@@ -89,7 +89,7 @@ def run_job(tmp, units, vcd=None, poll=False):
 def windowed_send(link, stream, max_payload, window=4):
     """Sends the stream in DATA frames as the window allows: at most `window`
     frames unacknowledged and never more bytes than the last ACK's free
-    bytes (PROTOCOL-v3.md, "Reliability"). No noise here, so nothing is
+    bytes (docs/protocol.md, "Reliability"). No noise here, so nothing is
     lost; a silence re-sends from the first unacknowledged frame."""
     max_data = max_payload - 2
     chunks = [stream[i:i + max_data] for i in range(0, len(stream), max_data)]

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 12 items 3 and 6 against the firmware's own link code: the host's
+// Link speed against the firmware's own link code: the host's
 // real link sending a planned sheet to the reference firmware's C compiled
 // natively (tests/firmware/native_firmware.hpp), on a clean line at several
 // baud rates, in virtual time. Per rate: the job's time against the plan's,

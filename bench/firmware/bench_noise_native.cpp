@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 12 item 8, the full noise campaign against both controllers on the
+// The full noise campaign against both controllers on the
 // same line: the C++ controller speaking protocol 3 and the reference
 // firmware's own C compiled natively (tests/firmware/native_firmware.hpp),
 // each at the far end of the host's real link, bytes dropped, flipped and

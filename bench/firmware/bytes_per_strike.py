@@ -14,7 +14,7 @@ largest payload, and counts the line bytes. Then it runs the firmware's timing
 (table moves from build-emu/ramp.json, settle, hammer) against a link at a
 given baud: a pass's feed starts once its header is in the ring, each strike
 once its entry is, and bytes free as they are executed. The firmware's
-schedule (PROTOCOL-v3.md, "Timing"): each move START_GAP cycles after the
+schedule (docs/protocol.md, "Timing"): each move START_GAP cycles after the
 event before it, the settle (the plan's) and the hammer pulse. The controller
 "waits" whenever it is ready for the next header or entry and it has not
 arrived. The host sends a frame when the ring has room for a full one.

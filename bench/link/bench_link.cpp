@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Link benchmarks (docs/protocol.md, "Measured"):
+// Link benchmarks (docs/protocol.md, "Measured (version 2, bench/link)"):
 //  1. efficiency = payload bytes / raw line capacity over the pty simulator at
 //     9600..115200 baud, windowed (ours) vs stop-and-wait (Marlin-like senders);
 //  2. does the controller ever wait for data when the link is faster than the

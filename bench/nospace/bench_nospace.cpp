@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 6, session 8: text without spaces. One paragraph of 1 and 4 MB
+// Text without spaces. One paragraph of 1 and 4 MB
 // with no space at all (every line a divided word, or for Chinese a run of
 // characters), laid out to pages, against the same characters with a space
 // every few characters (spaced text of the same size), measured in the same

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13, "big inputs stay linear": one paragraph of 1, 4 and 16 MB (a text
+// Big inputs stay linear: one paragraph of 1, 4 and 16 MB (a text
 // file that is a single line), laid out to pages. Time per MB must stay flat
 // as the size grows; peak resident size is printed too. Two kinds of line:
 // English words (what a converted e-book with lost line ends looks like) and

@@ -8,7 +8,7 @@
 // Which protocol it speaks: version 2 (docs/protocol.md, step segments in the
 // job stream) unless SimOptions::firmware gives the ramp tables of a reference
 // firmware build, when it speaks version 3 exactly as that firmware does
-// (firmware/PROTOCOL-v3.md; firmware/src/link.c and exec.c are the rules it
+// (docs/protocol.md; firmware/src/link.c and exec.c are the rules it
 // follows): HELLO_REPLY with the tables' id, the firmware's ring and window,
 // the DATA check, pass records timed from the tables. One version at a time,
 // as on the chip: a HELLO for the other is refused (NAK bad payload), so the

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The simulated controller speaking protocol 3, as the reference firmware does
-// (firmware/PROTOCOL-v3.md, docs/protocol.md "Version 3"). Each rule here is
+// (docs/protocol.md, "Version 3 on the host"). Each rule here is
 // the firmware's, in the same order: firmware/src/link.c (sessions, window,
 // duplicates, the DATA check, the job-stream check as bytes are copied in)
 // and firmware/src/exec.c (the executor: pass records streamed entry by entry,
@@ -8,7 +8,7 @@
 // conformance suite (tests/link/protocol_conformance_test.cpp) runs the same
 // cases against both, so they cannot drift apart.
 //
-// Times follow the firmware's timer schedule (PROTOCOL-v3.md, "Timing"): every
+// Times follow the firmware's timer schedule (docs/protocol.md, "Timing"): every
 // phase is scheduled from the last timer event before it, a move's first step
 // start_gap + T[0] after it, the hammer the settle after the last step, up the
 // pulse later; a phase the executor comes to late (it waited for data or for

@@ -374,7 +374,7 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
                                std::string_view file_name, std::string_view line_ending) {
     // One rule for every print file the editor writes, text or Markdown: the
-    // encoding the document was opened with (issue 13 item 4).
+    // encoding the document was opened with.
     return exporter::encode_text(file_text(lines, dialect, blocks, file_name, line_ending), blocks.encoding,
                                  blocks.byte_order_mark);
 }

@@ -2,8 +2,8 @@
 #pragma once
 // The print word that produced a cell on paper. The preview said "in the word …"
 // with a back-translation of the braille word, which is not what the author
-// wrote: Chinese came back as unrelated ideographs and "FRIDAY," as "friday,"
-// (issue 14). This finds the editor line the cell came from and the print word
+// wrote: Chinese came back as unrelated ideographs and "FRIDAY," as "friday,".
+// This finds the editor line the cell came from and the print word
 // under it, with the same word-by-word map the cursor uses (cursor_map).
 #include <string>
 

@@ -15,7 +15,7 @@ namespace tactus::encode {
 // DATA payload's ops, appended to them. An error pattern the frame's CCITT CRC
 // misses is a multiple of its generator; the second generator does not divide
 // it for the same reason, so together they act as a 32-bit check
-// (firmware/PROTOCOL-v3.md, "Integrity").
+// (docs/protocol.md, "Integrity").
 [[nodiscard]] std::uint16_t data_check_v3(std::span<const std::uint8_t> ops);
 
 }  // namespace tactus::encode

@@ -16,7 +16,7 @@
 namespace tactus::encode {
 
 inline constexpr std::uint8_t kProtocolVersion = 2;
-// The reference firmware's protocol (firmware/PROTOCOL-v3.md): the same frames,
+// The reference firmware's protocol (docs/protocol.md): the same frames,
 // sessions and window; table moves and dot-grid passes in the job stream
 // (encode/stream_v3.hpp); a DATA check; the ramp table id in HELLO_REPLY.
 inline constexpr std::uint8_t kProtocolV3 = 3;
@@ -96,7 +96,7 @@ struct AckInfo {
     bool operator==(const AckInfo&) const = default;
 };
 
-// The full status (STATUS_REPLY, 24 bytes).
+// The full status (STATUS_REPLY, 25 bytes).
 struct Status {
     AckInfo ack;
     std::uint8_t flags = 0;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Protocol v3's job stream (firmware/PROTOCOL-v3.md, "The job stream"): a pass
+// Protocol v3's job stream (docs/protocol.md, "The job stream (version 3)"): a pass
 // is one record of relative moves in dot-grid units with a hammer flag per
 // strike, the way the original embosser's print plan was written; the
 // controller times every move from the ramp table in its flash. 1 to 2 line

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A text file written back in the encoding it was read in (issue 13): ICU, the
+// A text file written back in the encoding it was read in: ICU, the
 // converter the importer decoded it with, stopping at the first character the
 // encoding cannot hold instead of writing a substitute.
 #include <unicode/ucnv.h>

@@ -34,7 +34,8 @@ std::string markdown_table_row(std::span<const document::Block> cells);
 // as its widest row (cells split at unescaped pipes), delimiter rows not
 // counted (join_markdown_lines writes them anew), at least one. The importer
 // gives every row that many cells; the editor's live layout pads its rows to
-// it the same way (issue 13 item 4: one rule for both).
+// it the same way (one rule for both, so a table opened and saved keeps its
+// columns).
 std::size_t markdown_table_width(std::span<const std::string> lines);
 
 // The column alignments a pipe table's delimiter row gives: "|:--|:-:|--:|---|"

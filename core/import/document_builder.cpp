@@ -212,7 +212,7 @@ Result<document::Document> DocumentBuilder::finish() {
                         " blocks (paragraphs, pages); split the document",
                     overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
     // A print page break after all text is kept: saving and opening again must
-    // not lose it (issue 13), and it adds nothing to the braille (the paginator
+    // not lose it, and it adds nothing to the braille (the paginator
     // draws no separator line for it). An implied braille page break after all
     // text breaks nothing (every BRF page ends with one) and is dropped; one
     // the source writes out (Markdown's <!-- braillepage -->) is kept, as a

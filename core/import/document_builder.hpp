@@ -61,7 +61,7 @@ public:
     // A braille page break the source implies (a BRF form feed, a PEF page)
     // is dropped before any text and after all text, where it breaks nothing;
     // one it writes out (Markdown's <!-- braillepage -->) is kept there too,
-    // so saving and opening again does not lose it (issue 13).
+    // so saving and opening again does not lose it.
     enum class BrailleBreak { implied, written };
     void braille_page_break(int source_line, BrailleBreak kind = BrailleBreak::implied);
     void braille_block(std::vector<document::BrailleLine> lines, int source_line);

@@ -96,8 +96,8 @@ public:
         }
     }
 
-    // Footnotes, then endnotes, that nothing in the text refers to (issue 13,
-    // session 7: they were left out): at the end of the document, in their
+    // Footnotes, then endnotes, that nothing in the text refers to (kept, so
+    // no text of the file is lost): at the end of the document, in their
     // part's order, as notes without a reference. Word's own notes (the
     // separator lines, w:type="separator" and the like) are not notes.
     Result<document::Document> finish() {

@@ -312,8 +312,8 @@ private:
     }
 
 public:
-    // Notes that nothing refers to (issue 13, session 7: they were dropped, so
-    // the editor lost a note line whose reference had been deleted). Each is
+    // Notes that nothing refers to are kept (dropping them would lose a note
+    // line in the editor when its reference is deleted). Each is
     // kept where its definition stands: before the first block that starts
     // after the definition's line (after that block's own notes, never inside
     // a table), or at the end. Numbered on after the referenced notes, in the

@@ -58,8 +58,8 @@ struct Link::Impl {
     double last_rx = 0;
     // When a frame last arrived that failed its CRC: the controller is there
     // (a noisy line garbles its answers), so the silence timeout does not
-    // apply; the give-up still bounds the wait (issue 12 item 8: at 2e-2 per
-    // byte, sessions failed to open after 3 s of garbled answers).
+    // apply; the give-up still bounds the wait (at 2e-2 per byte, a silence
+    // timeout would fail sessions after 3 s of garbled answers).
     double last_garbled = -1e300;
     double last_tx = 0;
     // When the controller last took a frame of ours (or executed a pass: the

@@ -22,7 +22,7 @@ struct RampTable {
     bool operator==(const RampTable&) const = default;
 
     // The interval (ticks) before step k (1-based) of a move of n steps:
-    // T[min(k, n + 2 - k, R + 1) - 1] (firmware/PROTOCOL-v3.md, "Moves").
+    // T[min(k, n + 2 - k, R + 1) - 1] (docs/protocol.md, "Moves").
     [[nodiscard]] std::uint16_t interval(std::uint32_t k, std::uint32_t n) const;
     // From the move's start to its last step, in ticks.
     [[nodiscard]] std::uint64_t move_ticks(std::uint32_t n) const;
@@ -35,7 +35,7 @@ struct FirmwareTables {
     // Machine cycles from the last timer event of one phase (a hammer going
     // up, the feed's last step) to the start of the next move: its first step
     // comes start_gap_ticks + T[0] after that event. The firmware schedules
-    // every phase from its timer (firmware/PROTOCOL-v3.md, "Timing"): the
+    // every phase from its timer (docs/protocol.md, "Timing"): the
     // settle ends settle_ticks after a move's last step, the hammer goes up
     // hammer_ticks after it came down, exactly.
     std::uint32_t start_gap_ticks = 0;

@@ -400,7 +400,7 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
     const auto ticks = [](double n) { return n / machine::kTickHz; };
     // v3: the firmware starts each move START_GAP cycles after the last timer
     // event before it, and times settle and hammer from the timer too
-    // (firmware/PROTOCOL-v3.md, "Timing"), so these sums are its clock.
+    // (docs/protocol.md, "Timing"), so these sums are its clock.
     const double gap = o_.firmware ? ticks(o_.firmware->start_gap_ticks) : 0.0;
     const double dwell = dwell_time();
     std::int32_t feed_pos = 0;  // each sheet starts with its top edge at the hammer line

@@ -17,7 +17,7 @@ namespace tactus::profile {
 
 // The reference firmware's tables for this profile: the S-curve ramp from
 // rest to v_max of each axis as step intervals (timer ticks), integrated as
-// firmware/PROTOCOL-v3.md states it, the dot grids and the backlash in whole
+// docs/protocol.md states it, the dot grids and the backlash in whole
 // steps, and their identity (CRC-32), which HELLO_REPLY reports. Refused
 // (ErrorKind::input) when the firmware could not run the profile: a step
 // rate above what its interrupt sustains, a ramp its tables cannot hold, a
@@ -27,7 +27,7 @@ namespace tactus::profile {
 // with it, the host plans with it.
 Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p);
 
-// The tables' identity: CRC-32 of their text (firmware/PROTOCOL-v3.md).
+// The tables' identity: CRC-32 of their text (docs/protocol.md).
 std::uint32_t table_identity(const machine::FirmwareTables& t);
 // The first carriage entry that the fast (one reload byte) path walks.
 std::uint32_t fast_from(const machine::FirmwareTables& t);

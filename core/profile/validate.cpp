@@ -48,7 +48,7 @@ void check_axis(Checker& c, const Axis& a, const std::string& name) {
     c.positive(a.j_max_mm_s3, 1e11, f[3].c_str(), " mm/s3");
     c.range(a.backlash_mm, 0, 1, f[4].c_str(), " mm");
     // Far slower than any embosser: a move would last days, and the planner
-    // would spend as long timing its steps (issue 16).
+    // would spend as long timing its steps.
     auto at_least = [&](double v, double lo, const char* field, const char* unit) {
         c.require(!std::isfinite(v) || v <= 0 || v >= lo, field,
                   "is " + num(v) + unit + ", below " + num(lo) + unit +

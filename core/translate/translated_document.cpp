@@ -16,9 +16,8 @@ constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 // Joins spans into one string with an emphasis mark per code point. Line breaks
 // and tabs inside a block become spaces: layout decides where braille lines end;
 // a soft line break with the spaces around it is one space (document/soft_break.hpp).
-// Decoded straight into `text`, reserved once (issue 13 item 6: a 50 MB
-// paragraph was decoded into a copy and then pushed code point by code point,
-// 720 MB at the peak for 50 MB of text).
+// Decoded straight into `text`, reserved once: decoding a 50 MB paragraph into
+// a copy and then pushing it code point by code point peaked at 720 MB.
 Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph) {
     std::size_t bytes = 0;
     for (const auto& span : spans) bytes += span.text.size();

@@ -36,7 +36,7 @@ public:
             // through a window just long enough for the line's cells and
             // `kLookahead` characters after them, not through a fixed window
             // of four lines: a text without spaces is a divided word from end
-            // to end, and that window was most of its cost (issue 13 item 6).
+            // to end, and a fixed window would be most of its cost.
             MappedBraille rest;
             std::size_t end = 0;
             std::size_t window = first_window();

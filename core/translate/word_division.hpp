@@ -33,7 +33,7 @@ Result<std::vector<document::BrailleLine>> divide_word(const Translator& transla
 
 // The same, each line handed to `sink` as it is made, so a word of many
 // megabytes (a text without spaces) is not held twice, once as its lines
-// (issue 13 item 6: 140 MB of lines for 50 MB).
+// (a 50 MB word held as lines takes 140 MB).
 using PieceSink = std::function<void(document::BrailleLine&&)>;
 Result<void> divide_word(const Translator& translator, std::u32string_view word, std::span<const std::uint8_t> emphasis,
                          std::size_t room, const PieceSink& sink);

@@ -11,7 +11,7 @@ static FW_BIT rx_sync; /* a SYNC was seen: collecting a candidate frame */
  * frame ends, they took about 10,000 machine cycles of one main-loop pass,
  * long enough to make the executor late for a phase (the schedule is the
  * timer's only if the main loop starts each phase within a few thousand
- * cycles; PROTOCOL-v3.md, "Timing"). */
+ * cycles; docs/protocol.md, "Timing"). */
 static uint16_t rx_crc, rx_chk;
 /* Read from the candidate's header when its TYPE is stored: where the frame
  * CRC ends (LEN + 3) and whether it is DATA, so that a payload byte takes the

@@ -19,7 +19,7 @@ void exec_drop_pass(void);
 void fw_strike_fired(void);
 #endif
 
-/* The job-stream ops (PROTOCOL-v3.md). */
+/* The job-stream ops (docs/protocol.md). */
 #define OP_JOB_BEGIN 0x10
 #define OP_JOB_END 0x11
 #define OP_SHEET_BEGIN 0x12

@@ -42,7 +42,7 @@
 #define FW_RING_BYTES (FW_BUF_CAP - FW_SLACK)
 /* Largest DATA payload accepted (ops + the 2-byte check): about two thirds of
  * the ring, so the next frame fits while the ring still holds more than the
- * executor uses up during its transmission (PROTOCOL-v3.md, "Window"). */
+ * executor uses up during its transmission (docs/protocol.md, "Reliability"). */
 #define FW_MAX_DATA ((FW_RING_BYTES * 2 / 3 + 2) < 80 ? (FW_RING_BYTES * 2 / 3 + 2) : 80)
 #define FW_WINDOW_FRAMES 4
 
@@ -62,9 +62,9 @@
 
 /* NAK reasons. */
 #define NAK_OUT_OF_ORDER 1
-#define NAK_NO_SPACE 2
-#define NAK_NO_SESSION 3
-#define NAK_BAD_PAYLOAD 4
+#define NAK_NO_SPACE     2
+#define NAK_NO_SESSION   3
+#define NAK_BAD_PAYLOAD  4
 #define NAK_UNKNOWN_TYPE 5
 
 /* Controller states. */

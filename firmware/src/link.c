@@ -327,7 +327,7 @@ static uint8_t check_ops(FW_IDATA uint8_t *f, uint8_t len) {
     return 0;
 }
 
-/* The DATA check (PROTOCOL-v3.md): CRC-16 with poly 0x8BB7 over the ops,
+/* The DATA check (docs/protocol.md): CRC-16 with poly 0x8BB7 over the ops,
  * nibble table. A polynomial other than the frame's, so an error pattern the
  * frame CRC misses is caught here: together about a 32-bit check. */
 static FW_CODE uint16_t chk_nib[16] = {

@@ -4,7 +4,7 @@
 #include "fw.h"
 
 /* The link layer: sessions, the sliding window over the job ring, duplicates,
- * ACK/NAK, and the job-stream check done as DATA is copied in (PROTOCOL-v3.md).
+ * ACK/NAK, and the job-stream check done as DATA is copied in (docs/protocol.md).
  *
  * The ring is linear: ops occupy fw_buf[fw_ops_head, fw_ops_end); what follows
  * is the receive area. fw_ops_done marks the end of the last op that is
@@ -54,7 +54,7 @@ uint8_t fw_paper_present(void);
 /* Platform: the generated ramp table's identity (HELLO_REPLY). */
 extern FW_CODE uint8_t fw_table_id[4];
 
-/* The DATA check (PROTOCOL-v3.md): CRC-16 with poly 0x8BB7, init 0xFFFF,
+/* The DATA check (docs/protocol.md): CRC-16 with poly 0x8BB7, init 0xFFFF,
  * over a DATA payload's ops; a polynomial other than the frame's, so an error
  * the frame CRC misses is not missed by this one for the same reason. */
 uint16_t pass_crc_update(uint16_t c, uint8_t b);

@@ -31,7 +31,7 @@ unsigned char _sdcc_external_startup(void) {
 uint8_t fw_paper_present(void) { return PAPER; }
 
 /* Stack high-water mark: the stack is painted at boot, and STATUS_REPLY
- * reports how many of its bytes were ever used (PROTOCOL-v3.md), so the
+ * reports how many of its bytes were ever used (docs/protocol.md), so the
  * emulator measures the real worst case instead of an estimate. */
 #define PAINT 0xA5
 static void paint_stack(void) {

@@ -72,7 +72,7 @@ void motion_stop(void) {
 }
 
 /* A table move, split into phases. Before step k the interval is
- * T[min(k, n + 2 - k, R + 1) - 1] (PROTOCOL-v3.md); the interrupt for step k
+ * T[min(k, n + 2 - k, R + 1) - 1] (docs/protocol.md); the interrupt for step k
  * writes the interval of step k + 2, so the phases cover steps 3..n and end
  * with the last two steps, which write nothing. Indices are 8-bit (R < 256);
  * only the step count and the cruise are 16-bit. The feed's table is all

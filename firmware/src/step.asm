@@ -2,7 +2,7 @@
 ; The step interrupt (timer 2, 16-bit auto-reload, high priority).
 ;
 ; Why assembly: SDCC's C costs 94-99 cycles a step, which saturates the 89C52
-; near 9,600 steps/s (../shared/design/emulator-notes.md). Here a cruise step
+; near 9,600 steps/s (docs/emulator.md). Here a cruise step
 ; costs 15 machine cycles and a ramp step 30, counted from the interrupt's
 ; LCALL to its RETI (bench/firmware measures them).
 ;
@@ -63,7 +63,7 @@ LIMIT   = 0xB3          ; bit P3.3: limit switch, low when reached
 
         .area CSEG (CODE)
 
-; Latency compensation (issue 12 item 4): every edge (carriage and feed
+; Latency compensation: every edge (carriage and feed
 ; steps, a hammer going down or up) is made by one XRL P1 exactly EDGE_TICKS
 ; machine cycles after its timer event (the overflow), whatever the latency.
 ; The latency is the instruction the interrupt waits for: the rest of the one

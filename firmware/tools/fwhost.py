@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
 """A minimal protocol-v3 host for the emulated firmware: frames, replies, the
-job-stream encoding of PROTOCOL-v3.md, and a VCD reader for the pins. Used by
+job-stream encoding of docs/protocol.md, and a VCD reader for the pins. Used by
 tests/firmware/emu_test.py and bench/firmware. (The real host is tactus-cli;
 this is the firmware's own test harness, kept small and independent of it.)"""
 import os
@@ -41,7 +41,7 @@ def frame(seq, typ, payload=b""):
     return bytes([SYNC]) + body + bytes([c >> 8, c & 0xFF])
 
 
-# --- job stream (PROTOCOL-v3.md)
+# --- job stream (docs/protocol.md)
 def uvar(v):
     if not 0 <= v < 0x8000:
         raise ValueError(f"uvar out of range: {v}")

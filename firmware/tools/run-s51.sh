@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the firmware in s51 (an emulated 8052 at 11.0592 MHz) with its UART on a
-# pseudo-terminal, as ../shared/design/emulator-notes.md found works here:
+# pseudo-terminal, the way docs/emulator.md explains:
 # two FIFOs for the emulator's serial port, bridged by socat to a raw pty (the
 # TCP and tty options of s51 are not binary-clean).
 #

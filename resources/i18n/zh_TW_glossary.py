@@ -10,7 +10,7 @@ T = {
     "typing": "輸入",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
-    # A text file saved in its own encoding (issue 13, session 7).
+    # A text file saved in its own encoding.
     "Cannot save %1: %2": "無法儲存 %1：%2",
     "%1 cannot be saved in its encoding, %2. Save it as UTF-8?": "%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？",
     "At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.":
@@ -137,7 +137,7 @@ T = {
     "%1 strikes on %2 planned sheets: worst case %3 \u00b5m at %4 (tolerance %5 \u00b5m) \u2014 %6.":
         "已規劃 %2 張共 %1 個擊點：最差 %3 \u00b5m，位於%4（容許 %5 \u00b5m）\u2014 %6。",
     "within tolerance": "在容許範圍內", "OVER TOLERANCE": "超出容許範圍",
-    # Printer panel, six-key entry, table names (session 2).
+    # Printer panel, six-key entry, table names.
     "waiting": "等待中", "embossing": "列印中", "paused": "已暫停", "done": "已完成", "stopped": "已停止",
     "cancelled": "已取消",
     "Emboss the file on the last used embosser once it is open.": "檔案開啟後，以上次使用的點字印表機列印。",
@@ -182,14 +182,14 @@ T = {
     "Taiwanese braille (bopomofo)": "台灣國語點字（注音）", "current Chinese braille": "現行中文點字",
     "two-cell Chinese braille": "雙拼中文點字", "uncontracted": "未縮寫", "partly contracted": "部分縮寫",
     "contracted": "縮寫", "grade %1": "第 %1 級", ", ": "，",
-    # The printer panel as a spool client (session 2, appspool).
+    # The printer panel as a spool client.
     "all %1 strikes of sheets %2 to %3 checked against the plan": "第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對",
     "%1 is being embossed. Quit anyway?": "%1 正在列印。仍要結束嗎？",
     "The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.":
         "工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。",
     "&Keep embossing": "繼續列印(&K)",
     "The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?": "印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？",
-    # The page-too-small question: the file's declared page, volume by volume (issue 13 item 1, session 8).
+    # The page-too-small question: the file's declared page, volume by volume.
     "The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.":
         "%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。",
     "volume %1, %2 cells by %3 lines": "第 %1 冊，每行 %2 方、每頁 %3 行",
@@ -197,7 +197,7 @@ T = {
     "The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.":
         "%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。",
     "; ": "；",
-    # A PEF's structure sent to a CUPS queue could not be written (issue 13 item 1, session 8).
+    # A PEF's structure sent to a CUPS queue could not be written.
     "Cannot send %1: %2": "無法送出 %1：%2",
     "Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.":
         "尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。",
@@ -248,7 +248,7 @@ T = {
     "%1 stopped: %2. The job is kept; fix the problem, then resume it.": "%1 已停止：%2。工作已保留；排除問題後請繼續。",
     "job %1": "工作 %1", "%1 The printer is running again.": "%1 印表機已恢復運作。",
     "%1 goes on: the printer is running again": "%1 繼續進行：印表機已恢復運作",
-    # Printing to a CUPS queue (issue 15 item 3): 網路佇列 network queue, 伺服器 server.
+    # Printing to a CUPS queue: 網路佇列 network queue, 伺服器 server.
     "held": "保留中", "aborted": "已中止", "sending": "傳送中", "not sent": "未送出", "cancelling": "取消中",
     "The built-in simulated embosser, on this computer": "內建的模擬點字印表機，在本電腦上",
     "An embosser on a cable to this computer": "以纜線連接本電腦的點字印表機",

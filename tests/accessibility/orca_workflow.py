@@ -17,10 +17,10 @@ works the app by keyboard only, asserting after every key what Orca says:
           opens the menus; Ctrl+P puts the focus on the printer panel.
   formfeed  a text file with a form feed: the cursor coming to that line says
           "Print page break, page 2" (the form feed itself has no glyph), and
-          the next line is read as text again (issue 13).
+          the next line is read as text again.
   pagetoosmall  a 40 x 25 PEF on the default 27 x 24 profile: Ctrl+P reads the
           question with both sizes and the focused Stop button, Tab reads
-          Reflow, Escape stops and says nothing was embossed (issue 13 item 1).
+          Reflow, Escape stops and says nothing was embossed.
 
 usage: orca_workflow.py SCENARIO TACTUS SAMPLE
 Exit 0 pass, 1 fail (with the transcript), 77 skipped (no Orca / window manager).
@@ -55,7 +55,7 @@ def scenario_open(tactus, sample, work):
         # follows every key): not the app's doing, so not held against it.
         s.step("type the path", type_text=sample, allow_silent=True, allow_deluge=True)
         s.step("Enter opens the file", keys=["Return"], expect=[r"Opened welcome\.md"], once=[r"Opened welcome\.md"])
-        # Item 2: the main window must be active again after the dialog.
+        # The main window must be active again after the dialog (widgets/focus_return.hpp).
         s.step("Tab after the dialog speaks", keys=["Tab"])
         s.step("Ctrl+1 speaks the print text", keys=["ctrl+1"], expect=[r"Print text"])
         s.step("Ctrl+Home, Down reads the next print line", keys=["ctrl+Home", "Down"],
@@ -64,7 +64,7 @@ def scenario_open(tactus, sample, work):
                forbid=[r"read only"])
         s.step("Down reads a braille line", keys=["Down"], expect=[r"[\u2800-\u28ff]|dots? \d"])
         # Six-key entry (xdotool holds F and D together: dots 1 and 2) is echoed
-        # once with its dots and its print letter (issue 14 items 1 and 5).
+        # once with its dots and its print letter.
         s.step("a six-key chord is echoed", keys=["f+d"], expect=[r"dots 1 2, \w+"], once=[r"dots 1 2"])
         s.step("Ctrl+Z takes the cell back", keys=["ctrl+z"], allow_silent=True, quiet=0.8)
         s.step("Ctrl+T opens the table list", keys=["ctrl+t"], expect=[r"Table: combo box"])

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Issue 12 item 8, "never a wrong dot, whatever the line does": the noise
+// "Never a wrong dot, whatever the line does": the noise
 // campaign, one rule for every controller at the far end of the in-process
 // line. Per seed, a plan, the host's real link against a fresh controller
 // over a line that drops, bit-flips and duplicates bytes (each at the rate,

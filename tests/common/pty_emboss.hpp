@@ -5,7 +5,7 @@
 // --pty`) prints its /dev/pts/N, `tactus-cli emboss --device pty:...`
 // embosses through it, and the strike log the sim wrote is read back. One
 // helper for tests/link/emboss_pty_e2e_test.cpp and
-// firmware_emulator_e2e_test.cpp (issue 12, duplicates D6/D7), and the plan
+// firmware_emulator_e2e_test.cpp, and the plan
 // the CLI makes for a document with the firmware's tables.
 #include <chrono>
 #include <filesystem>

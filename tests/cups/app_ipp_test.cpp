@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The desktop app prints to a Tactus CUPS queue (issue 15 item 3), against a
+// The desktop app prints to a Tactus CUPS queue, against a
 // real private cupsd on loopback (cups_rig.hpp): the printer picker lists the
 // server's Tactus queues as network queues, beside the cables, and no other
 // queue; Ctrl+P to one sends the document over IPP, the server embosses it
@@ -210,7 +210,7 @@ TEST_F(CupsAppE2E, CtrlPToANetworkQueueEmbossesOnTheServerAsPlannedAndTheJobView
     EXPECT_TRUE(panel->jobs().empty());
 }
 
-// Issue 13 item 1: a PEF of volumes with their own page sizes and
+// A PEF of volumes with their own page sizes and
 // single-sided sections (volume_grids.pef) sent from the app to a Tactus
 // queue is embossed on the server as the file's own pages: the server's job
 // has exactly the pages tactus-cli lays the file out on for the server's

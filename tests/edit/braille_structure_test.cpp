@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 1 in the editor: a PEF opened in the editor keeps what its
+// Ready-made braille in the editor: a PEF opened in the editor keeps what its
 // lines do not carry (edit::BrailleStructure: sections, volumes, the file's
 // grid, its dc: metadata), lays out through the CLI's own call
 // (layout::keep_braille_pages), and keeps the structure of the pages that are

@@ -78,7 +78,7 @@ TEST(EditorLines, PrintThatLooksLikeMarkdownIsEscaped) {
     }
 }
 
-// Issue 13: block quotes, notes, note references and bullets are lines of the
+// Block quotes, notes, note references and bullets are lines of the
 // dialect, and survive parse -> render and save -> reopen.
 TEST(EditorLines, QuotesNotesAndBulletsRoundTrip) {
     const std::vector<std::string> lines{"Our trip[^1] was long.", "[^1]: It took an *hour*.", "> Quoted *words*.",

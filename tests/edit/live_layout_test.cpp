@@ -169,7 +169,7 @@ TEST(LiveLayout, BadTableIsAnErrorNotACrash) {
     ASSERT_EQ(ok.paged().pages.size(), std::size_t{1});
 }
 
-// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4): text
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen: text
 // typed after a braille page break at the end lost its print page (the page
 // it starts was not made yet, and the restart began with no print page), and a
 // table left last on a page after an edit lost its page (it was still open in
@@ -201,7 +201,7 @@ TEST(LiveLayout, ALineInsertedBeforeThePageBreaksAtAPageTopKeepsItsPrintPage) {
     EXPECT_TRUE(live.paged().pages == make(lines_of(live)).paged().pages);
 }
 
-// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4, seed
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (seed
 // 62): a row narrower than its table (here than the empty header's two
 // columns) laid out as a one-column table in the editor, as a simple table,
 // and as a two-column one after saving and reopening (the importer gives the

@@ -38,7 +38,7 @@ TEST(MarkdownWriter, ANumberedListGoesOnAcrossALineThatWritesNothing) {
     EXPECT_EQ(edit::render_editor_lines(*reopened), (std::vector<std::string>{"5. five", "10. ten"})) << md;
 }
 
-// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4, seed
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (seed
 // 69): raw HTML in a heading, "# \&  # <b>", reads "&  # " (the tag dropped,
 // the space before it kept). Written again from that text, the heading lost
 // the escape that keeps its last "#" (the space after it hid it), so the file
@@ -121,7 +121,7 @@ TEST(MarkdownWriter, RandomDocumentsSurviveSaveAndReopen) {
             if (b.kind == document::BlockKind::list_item) {
                 // Bullets only: numbered items are not yet one dialect (Markdown
                 // counts on from a list's first number, and nests under "6." at
-                // three spaces, not two); issue 13 item 4 is open for them.
+                // three spaces, not two); they are not handled yet.
                 b.spans.insert(b.spans.begin(), document::Span{"\u2022 "});
             }
             list_level = b.kind == document::BlockKind::list_item ? std::min(b.level, 3) : 0;

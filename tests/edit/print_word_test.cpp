@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The print word that produced a cell (the preview says "in the word ..."): the
 // word as the author wrote it, never a back-translation of its braille, which
-// read "FRIDAY," as "friday," and Chinese as unrelated ideographs (issue 14).
+// read "FRIDAY," as "friday," and Chinese as unrelated ideographs.
 #include "edit/print_word.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// One document model, one dialect (issue 13 item 4): the editor shows a text
+// One document model, one dialect: the editor shows a text
 // file as its text and a table as a table, numbers print pages as the importer
 // does, and saving (Markdown or text) and opening again changes nothing, after
 // any edits: the same blocks, the same print pages, the same braille pages.
@@ -143,7 +143,7 @@ void expect_round_trip(const edit::LiveLayout& live, const std::string& name) {
     const auto before = live.document();
     const auto bytes = edit::file_text(lines, live.dialect(), before, name);
     const auto reopened = import_as(bytes, name);
-    // A text file keeps the spaces at a paragraph's ends (issue 13: they were lost).
+    // A text file keeps the spaces at a paragraph's ends (a .txt is verbatim).
     const bool verbatim = edit::dialect_for(name) == edit::Dialect::text;
     ASSERT_EQ(without_lines(reopened.blocks, verbatim), without_lines(before.blocks, verbatim)) << bytes;
     const auto dialect = edit::dialect_for(name);
@@ -192,7 +192,7 @@ void expect_round_trip(const edit::LiveLayout& live, const std::string& name) {
 
 }  // namespace
 
-// Issue 13: english.txt's "& and # and *" appeared as "\& and # and \*".
+// english.txt's "& and # and *" must not appear as "\& and # and \*".
 TEST(RoundTrip, ATextFileShowsItsTextAndIsSavedUnchanged) {
     const std::string text = "Hello *world*.\n\n& and # and *\n\n# not a heading, - not a list\n\f\n1. as typed <b>\n";
     const auto doc = import_as(text, "english.txt");
@@ -221,7 +221,7 @@ TEST(RoundTrip, ATableShowsAsATableAndIsSavedAsOne) {
         "Plants:\n\n| Plant | Where it grows |\n|:--|--:|\n| Willow | by the *river* |\n| Fern | in a \\| shade |\n\nAfter.\n";
     const auto doc = import_as(text, "plants.md");
     const auto lines = edit::render_editor_lines(doc, edit::Dialect::markdown);
-    // (The columns' alignment is kept: issue 13 item 4.)
+    // (The columns' alignment is kept.)
     EXPECT_EQ(lines, (std::vector<std::string>{"Plants:", "| Plant | Where it grows |", "| :-- | --: |",
                                                "| Willow | by the *river* |", "| Fern | in a \\| shade |",
                                                "After."}));
@@ -238,8 +238,8 @@ TEST(RoundTrip, ATableShowsAsATableAndIsSavedAsOne) {
     EXPECT_TRUE(live.paged().pages == pages_of(doc));
 }
 
-// Issue 13: "---" after <!-- pagebreak 10 --> was page 11 in the editor and 3
-// after saving and reopening.
+// "---" after <!-- pagebreak 10 --> is page 11 in the editor and after saving
+// and reopening (not 3: the importer's own count).
 TEST(RoundTrip, TheEditorAndTheImporterNumberPrintPagesAlike) {
     const std::vector<std::string> lines{"one", "<!-- pagebreak 10 -->", "two", "---", "three", "---", "four"};
     const auto live = make(lines, edit::Dialect::markdown);
@@ -254,8 +254,8 @@ TEST(RoundTrip, TheEditorAndTheImporterNumberPrintPagesAlike) {
     expect_round_trip(live, "book.md");
 }
 
-// Issue 13: the spaces at the ends of a text file's paragraph were lost on
-// saving and reopening. A .txt is verbatim: they are kept (braille leaves them
+// The spaces at the ends of a text file's paragraph survive saving and
+// reopening. A .txt is verbatim: they are kept (braille leaves them
 // out). In Markdown they are not text (CommonMark strips a paragraph's), so a
 // Markdown file is written without them.
 TEST(RoundTrip, SpacesAtAParagraphsEndsStayInATextFile) {
@@ -273,8 +273,8 @@ TEST(RoundTrip, SpacesAtAParagraphsEndsStayInATextFile) {
     EXPECT_EQ(text_of(live.paged().pages),
               text_of(make({"indented", "", "kept", "", "Tabbed"}, edit::Dialect::text).paged().pages));
     // A hard-wrapped paragraph keeps its lines as written (a soft line break
-    // between them), in the document and in the editor (issue 13 item 4: the
-    // editor showed it as one line, its lines joined with one space).
+    // between them), in the document and in the editor (not as one line, its
+    // lines joined with one space).
     const auto wrapped = import_as("  one  \n  two  \n\nthree\n", "w.txt");
     ASSERT_EQ(wrapped.blocks.size(), 2u);
     EXPECT_EQ(wrapped.blocks[0].text(), "  one  \n  two  ");
@@ -283,7 +283,7 @@ TEST(RoundTrip, SpacesAtAParagraphsEndsStayInATextFile) {
               (std::vector<std::string>{"  one  ", "  two  ", "", "three", ""}));
 }
 
-// Issue 13 item 4: a hard-wrapped text (a Project Gutenberg book) reflows in
+// A hard-wrapped text (a Project Gutenberg book) reflows in
 // braille: its braille is that of its paragraphs on one line each.
 TEST(RoundTrip, AHardWrappedTextReflowsInBraille) {
     const auto wrapped = import_as("It was the best  \n  of times,\nit was\tthe worst.\n\nThe end.\n", "book.txt");
@@ -292,8 +292,8 @@ TEST(RoundTrip, AHardWrappedTextReflowsInBraille) {
     EXPECT_TRUE(pages_of(wrapped) == pages_of(joined));
 }
 
-// Issue 13: a page break with nothing after it was dropped on saving and
-// reopening (the importer dropped it as an empty page). It is kept, in the
+// A page break with nothing after it is not dropped on saving and reopening
+// (as an empty page would be). It is kept, in the
 // file and the document, and adds no line to the braille.
 TEST(RoundTrip, APageBreakAtTheEndIsKept) {
     const auto text = make({"one", "\f"}, edit::Dialect::text);
@@ -317,9 +317,9 @@ TEST(RoundTrip, APageBreakAtTheEndIsKept) {
     }
 }
 
-// Issue 13 item 4: a <!-- braillepage --> before all text or after it was
-// dropped on opening the saved file (the importer dropped it as it drops a
-// BRF's last form feed). The user wrote it: it is kept, and adds no page.
+// A <!-- braillepage --> before all text or after it is not dropped on
+// opening the saved file (as a BRF's last form feed is). The user wrote it:
+// it is kept, and adds no page.
 TEST(RoundTrip, ABraillePageBreakAtEitherEndIsKept) {
     const std::vector<std::string> lines{"<!-- braillepage -->", "one", "<!-- braillepage -->", "two",
                                          "<!-- braillepage -->"};
@@ -340,9 +340,9 @@ TEST(RoundTrip, ABraillePageBreakAtEitherEndIsKept) {
     EXPECT_EQ(brf.blocks.front().kind, document::BlockKind::braille);
 }
 
-// Issue 13 item 4: a "---" after <!-- pagebreak 10 --> opened as
-// "<!-- pagebreak 11 -->": the count was frozen into a label, so after the
-// user changed 10 to 20 the next page stayed 11. The count is kept a count.
+// A "---" after <!-- pagebreak 10 --> must not open as "<!-- pagebreak 11 -->":
+// a count frozen into a label would stay 11 after the user changed 10 to 20.
+// The count is kept a count.
 TEST(RoundTrip, ACountedPrintPageStaysCountedAfterSaving) {
     const auto doc = import_as("one\n\n<!-- pagebreak 10 -->\n\ntwo\n\n---\n\nthree\n", "book.md");
     const auto lines = edit::render_editor_lines(doc);
@@ -362,7 +362,7 @@ TEST(RoundTrip, ACountedPrintPageStaysCountedAfterSaving) {
     EXPECT_EQ(exporter::to_markdown(text), "one\n\n<!-- pagebreak -->\n\ntwo\n\n<!-- pagebreak -->\n\nthree\n");
 }
 
-// Found by RoundTrip.RandomEditsSurviveSaveAndReopen (issue 13 item 4): notes
+// Found by RoundTrip.RandomEditsSurviveSaveAndReopen: notes
 // and their references read differently in the editor and in the saved file.
 TEST(RoundTrip, NotesAndReferencesReadAlikeInTheEditorAndTheFile) {
     const auto parsed = [](const std::string& line) { return without_lines({*edit::parse_editor_line(line)}); };
@@ -391,9 +391,8 @@ TEST(RoundTrip, NotesAndReferencesReadAlikeInTheEditorAndTheFile) {
     EXPECT_EQ(parsed("[^1]: <b> x"), "7/0 [^0:1] [0: x]\n");
 }
 
-// Issue 13 (session 7) item 2: a note that nothing refers to (its reference
-// deleted, or never written) was dropped when the file was opened again. It
-// stays where its line is, numbered on after the referenced notes, and the
+// A note that nothing refers to (its reference deleted, or never written) is
+// not dropped when the file is opened again. It stays where its line is, numbered on after the referenced notes, and the
 // braille shows it there (docs/layout.md "Notes").
 TEST(RoundTrip, ANoteNothingRefersToIsKept) {
     const std::vector<std::string> lines = {"# Title", "Intro[^1] text.", "[^1]: First note.", "Middle.",
@@ -460,7 +459,7 @@ struct Editor {
             case 0: return "\f";
             case 1: return "";
             default: {
-                // Spaces or a tab at either end now and then (issue 13: they were lost).
+                // Spaces or a tab at either end now and then (they must survive).
                 static const std::vector<std::string> edges{"", "", "", " ", "  ", "\t", "    "};
                 std::string t = edges[pick(edges.size())];
                 for (const auto& s : spans()) t += s.text;
@@ -507,7 +506,7 @@ struct Editor {
                 return exporter::markdown_table_row(cells);
             }
             case 7: {
-                // A delimiter row, its columns aligned or not (issue 13: alignment was lost).
+                // A delimiter row, its columns aligned or not (the alignment must survive).
                 static const std::vector<std::string> delimiters{"| --- | --- |", "|:--|:-:|", "| --: | --- |",
                                                                  "|:---:|---:|", "| :-- | --- | --: |"};
                 return delimiters[pick(delimiters.size())];
@@ -534,11 +533,11 @@ struct Editor {
         }
     }
 
-    // A document's lines; one in three ends in a page break (issue 13: a break
-    // with nothing after it was lost on saving).
+    // A document's lines; one in three ends in a page break (a break with
+    // nothing after it must survive saving).
     std::vector<std::string> document() {
         std::vector<std::string> lines;
-        // A braille page break before all text now and then (issue 13: it was lost on saving).
+        // A braille page break before all text now and then (it must survive saving).
         if (dialect == edit::Dialect::markdown && pick(4) == 0) lines.push_back("<!-- braillepage -->");
         for (auto n = 1 + pick(10); n > 0; --n) lines.push_back(line());
         if (dialect == edit::Dialect::markdown && pick(3) == 0) add_note(lines);
@@ -757,8 +756,8 @@ void expect_as_imported(const edit::LiveLayout& live, const std::string& bytes) 
 
 }  // namespace
 
-// Issue 13 item 4: a text file opened and saved without edits is the same
-// file, byte for byte (before: a hard-wrapped paragraph was one editor line
+// A text file opened and saved without edits is the same file, byte for
+// byte (what could go wrong: a hard-wrapped paragraph was one editor line
 // and saved as one, lines of spaces were written empty, runs of blank lines
 // as one, CRLF as LF, a form feed before any text was dropped).
 TEST(RoundTrip, RandomTextFilesAreSavedByteForByte) {
@@ -840,10 +839,9 @@ TEST(RoundTrip, RandomEditsOfTextFilesAreSavedAsEdited) {
     }
 }
 
-// ---- Issue 13 item 4 (session 8): a Markdown file keeps its encoding ----
-// A .md in Windows-1252, UTF-16LE with a byte-order mark, Big5 or GB18030 was
-// saved as UTF-8: saving and reopening changed every byte outside ASCII. It is
-// saved by the text file's rule (edit::file_bytes, exporter::encode_text).
+// ---- A Markdown file keeps its encoding ----
+// A .md in Windows-1252, UTF-16LE with a byte-order mark, Big5 or GB18030
+// saved as UTF-8 would change every byte outside ASCII. It is saved by the text file's rule (edit::file_bytes, exporter::encode_text).
 
 namespace {
 

@@ -36,7 +36,7 @@ document::Block text_block(document::BlockKind kind, int level, std::string text
 
 }  // namespace
 
-// Issue 13 item 4: english.txt's "& and # and *" came back as "\& and # and \*".
+// english.txt's "& and # and *" must not come back as "\& and # and \*".
 TEST(TextExport, ATextFileIsWrittenBackUnchanged) {
     for (const std::string text : {
              "Hello.\n\n& and # and *\n",                       // paragraphs a blank line apart
@@ -74,8 +74,8 @@ TEST(MarkdownExport, ATableIsWrittenAsAPipeTableAndReadBack) {
     EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
 }
 
-// Issue 13 item 4: a table's column alignment ("|:--|:-:|--:|---|") was lost
-// on saving: the document model did not hold it. Each cell now holds its
+// A table's column alignment ("|:--|:-:|--:|---|") is kept on saving: the
+// document model holds it. Each cell now holds its
 // column's (Block::align), the importer reads it, the writer writes it, and
 // the editor's own delimiter row is kept when its lines are saved.
 TEST(MarkdownExport, ATablesColumnAlignmentIsKept) {
@@ -131,7 +131,7 @@ TEST(MarkdownExport, PageLabelsAreKept) {
     EXPECT_EQ(without_lines(import_as(md, "saved.md").blocks), without_lines(doc.blocks));
 }
 
-// Issue 13: a merged cell (DOCX, ODT) has no Markdown form. Each cell keeps its
+// A merged cell (DOCX, ODT) has no Markdown form. Each cell keeps its
 // column: the columns a merged cell covers, and a row's skipped ones, are
 // empty entries (before, the next cell was written into the column after the
 // merged one's first).
@@ -156,9 +156,9 @@ TEST(MarkdownExport, MergedCellsKeepTheirColumnsAsEmptyEntries) {
 
 // Property: a random text file of hard-wrapped paragraphs (lines with spaces or
 // a tab at their ends, any characters), a blank line between paragraphs, and
-// form feeds, is written back byte for byte after it was opened (issue 13
-// item 4: the lines of a paragraph were joined into one, the file changed
-// although nothing was edited).
+// form feeds, is written back byte for byte after it was opened (joining
+// the lines of a paragraph into one would change a file nothing was done
+// to).
 TEST(TextExport, RandomHardWrappedTextFilesAreWrittenBackUnchanged) {
     static const std::vector<std::string> words{"word", "*", "_x_", "#", "&", "<b>", "[a]", "\\", "`c`", "1.", "-",
                                                 "42", "\u4eca\u5929", "a*b", "|", "**b**", "x", "Gutenberg,"};
@@ -183,7 +183,7 @@ TEST(TextExport, RandomHardWrappedTextFilesAreWrittenBackUnchanged) {
     }
 }
 
-// Issue 13 item 4: the editor shows a Markdown document's text as its author
+// The editor shows a Markdown document's text as its author
 // wrote it: the writer escapes a character only where Markdown would read it
 // as something else ("5 \\* 3 \\& co." was shown for "5 * 3 & co.").
 TEST(MarkdownExport, TextIsEscapedOnlyWhereMarkdownWouldReadIt) {
@@ -207,7 +207,7 @@ TEST(MarkdownExport, TextIsEscapedOnlyWhereMarkdownWouldReadIt) {
     }
 }
 
-// ---- Issue 13 (session 7) item 1: a text file is saved in its own encoding ----
+// ---- A text file is saved in its own encoding ----
 
 namespace {
 

@@ -8,7 +8,7 @@ its port pins (VCD) must be the ones the job asks for.
 
 Checks: every hammer edge at the carriage and feed step the job implies
 (counted from the step and direction pins, backlash included); every
-step and hammer edge on the firmware's schedule (firmware/PROTOCOL-v3.md,
+step and hammer edge on the firmware's schedule (docs/protocol.md,
 "Timing": table moves, the start gap, settle and hammer from the timer), to
 within the instruction the interrupt waits for; the controller's counts
 (executed passes, state) as ACKs report them; paper out reported as a fault;
@@ -118,7 +118,7 @@ def table_interval(k, n):
 
 def schedule(passes, settle, hammer):
     """The timer events of the job on the firmware's schedule
-    (firmware/PROTOCOL-v3.md, "Timing"): ("C"/"F" step, "H" hammer down),
+    (docs/protocol.md, "Timing"): ("C"/"F" step, "H" hammer down),
     in machine cycles from the event before the first pass."""
     c, f, gap = RAMP["carriage"], RAMP["feed"], RAMP["start_gap_ticks"]
     ev, t = [], 0

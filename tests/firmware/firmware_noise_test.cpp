@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 12 item 8 against the firmware itself: the reference firmware's own
+// The noise campaign against the firmware itself: the reference firmware's own
 // C (link.c, decoder.c, crc16.c, exec.c: native_firmware.hpp) at the far end
 // of the host's real link over a noisy line, on virtual time. The same
 // campaign as the C++ controller's (tests/common/noise_campaign.hpp): every

@@ -5,14 +5,14 @@
 // far end of the in-process serial line (controller::SimTransport) on virtual
 // time, so the host's real link drives the firmware's real frame decoder,
 // sessions, window, DATA check and executor over a noisy line: hundreds of
-// seeds in seconds, where s51 runs one in real time (issue 12 item 8).
+// seeds in seconds, where s51 runs one in real time.
 //
 // What is the chip's and what is modelled here:
 // * every rule of the link and the executor is the firmware's code;
 // * the main loop is main.c's (received bytes, compact, exec_poll,
 //   fw_poll_paper, fw_report_room), run after each byte and each event;
 // * the step interrupt and motion.c are modelled: a phase ends when the
-//   firmware's timer schedule says (PROTOCOL-v3.md "Timing": a move's first
+//   firmware's timer schedule says (docs/protocol.md "Timing": a move's first
 //   step start_gap + T[0] after the last timer event, its last step the
 //   table's move time later; the settle, the hammer pulse; a phase the main
 //   loop comes to late starts when given), as controller::SimController does;

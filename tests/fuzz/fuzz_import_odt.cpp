@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// libFuzzer target: the ODT importer (LibreOffice documents; issue 13) (see import_fuzz.hpp for what must hold).
+// libFuzzer target: the ODT importer (LibreOffice documents) (see import_fuzz.hpp for what must hold).
 #include "import_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes plan files (`tactus-cli emboss --plan`): any text is a plan or an
-// error naming the field, never an abort (issue 16: a side given as a number
+// error naming the field, never an abort (a side given as a number once
 // aborted the process). A plan that loads saves and loads back to itself.
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes printer profiles: any text is a valid profile or an error naming the
 // field, never an abort; a profile that is accepted plans a small page in
-// bounded time (issue 16: v_max 1e-6 or a/j 1e-300 passed validation and the
+// bounded time (v_max 1e-6 or a/j 1e-300 once passed validation and the
 // planner never returned; libFuzzer's -timeout catches a hang).
 #include <algorithm>
 #include <cstddef>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the spool's stored document (the snapshot every `serve` start reads
 // back): any text must come back as a document or an error, never an abort
-// (issue 16: a wrong JSON type stopped every printer). A document that loads
+// (a wrong JSON type once stopped every printer). A document that loads
 // must survive a second round trip unchanged.
 #include <cstddef>
 #include <cstdint>

@@ -111,7 +111,7 @@ namespace {
 // Protocol v3 (the reference firmware): welcome.md's first sheet planned with
 // the firmware's ramp tables for the bundled profile, as the DATA frames the
 // firmware receives (31 bytes of ops and the 2-byte check each, SEQ from 1).
-// Pins the planner's table moves and the v3 encoder; also the bar of issue 12:
+// Pins the planner's table moves and the v3 encoder; also the protocol's bar:
 // at most 2 line bytes per strike on a typical page, every frame byte counted.
 TEST(BackHalfV3, WelcomeSheetOneFramesMatchExpected) {
     const auto prof = profile::default_profile();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 through the real tactus-cli: ready-made braille page for page, a
+// Through the real tactus-cli: ready-made braille page for page, a
 // page that does not fit is refused before anything happens, the defaults say
 // what the help says, an empty document is an error, and a table that does not
 // suit the text is named.

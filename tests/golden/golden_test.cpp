@@ -80,16 +80,15 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"structure-docx.brf", "structure.docx", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"structure-odt.brf", "structure.odt", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"structure-md.pef", "structure.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
-        // A table over two pages: its headings repeated on the second (issue 13).
+        // A table over two pages: its headings repeated on the second.
         GoldenCase{"structure-long-table.brf", "structure-long-table.md", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         // A listed table over three pages: its headings (the header row, listed)
-        // repeated at the top of each page it runs on to, rows kept whole
-        // (issue 13, session 7: they were not repeated).
+        // repeated at the top of each page it runs on to, rows kept whole.
         GoldenCase{"structure-long-listed-table.brf", "structure-long-listed-table.md", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         // Merged cells: a simple table with headings over two rows and two
-        // columns, and a listed one (issue 13). The two files are one document.
+        // columns, and a listed one. The two files are one document.
         GoldenCase{"structure-spans-docx.brf", "structure-spans.docx", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         GoldenCase{"structure-spans-odt.brf", "structure-spans.odt", "en-ueb-g2.ctb", true,
@@ -98,7 +97,7 @@ INSTANTIATE_TEST_SUITE_P(
         // right under a cell-5 or cell-7 heading, a table after a blank line),
         // notes inside a quote and a list; the note reference indicator of UEB
         // and of EBAE (en-us-g2.ctb), and the parentheses of a code without
-        // one (zh-tw.ctb) (issue 13).
+        // one (zh-tw.ctb).
         GoldenCase{"structure-formats.brf", "structure-formats.md", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         GoldenCase{"structure-formats-ebae.brf", "structure-formats.md", "en-us-g2.ctb", true,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 1 on real PEF files (tests/data/pef/real, see its README):
+// Ready-made braille on real PEF files (tests/data/pef/real, see its README):
 // files published with the PEF specification's examples and by Dotify, each
 // read and written again by the real tactus-cli, compared structurally with
 // the input (both parsed with pugixml): the same rows on the same pages, the

@@ -90,8 +90,8 @@ TEST(DocxImport, EmptyAndNonZipInputsAreErrors) {
 }  // namespace
 }  // namespace tactus::test
 
-// Issue 13 (session 7) item 2: a footnote or endnote nothing refers to (its
-// reference deleted in Word) was left out. It is kept, at the end of the
+// A footnote or endnote nothing refers to (its reference deleted in Word)
+// is kept, at the end of the
 // document (a notes part gives it no place in the text), numbered on after the
 // referenced notes, footnotes before endnotes; Word's separators are not notes.
 TEST(DocxImport, NotesNothingRefersToAreKeptAtTheEnd) {

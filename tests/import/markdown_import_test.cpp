@@ -23,7 +23,7 @@ TEST(MarkdownImport, LessonFileGivesTheExpectedBlocks) {
                     {", and the water cycle & more."}},
                    3),
         text_block(H, 2, {{"Kinds of clouds"}}, 6),
-        // Bullets are kept as the bullet sign (issue 13: BANA keeps print's bullets).
+        // Bullets are kept as the bullet sign (BANA keeps print's bullets).
         text_block(LI, 1, {{"\u2022 Cumulus"}}, 8),
         text_block(LI, 1, {{"\u2022 Stratus"}}, 9),
         text_block(LI, 2, {{"\u2022 Nimbostratus"}}, 10),
@@ -49,7 +49,7 @@ TEST(MarkdownImport, PageBreakCommentMayCarryThePrintedLabel) {
     EXPECT_EQ(doc.blocks, expected);
 }
 
-// Issue 13 item 4: "---" after <!-- pagebreak 10 --> is page 11, as the editor
+// "---" after <!-- pagebreak 10 --> is page 11, as the editor
 // numbers it (one rule: document/print_page.hpp), not the importer's own count 3.
 TEST(MarkdownImport, AnUnlabelledBreakCountsOnFromTheLabelBeforeIt) {
     const auto doc = md("one\n\n---\n\ntwo\n\n<!-- pagebreak 10 -->\n\nthree\n\n---\n\nfour\n\n"

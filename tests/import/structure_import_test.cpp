@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 3: lists (bullets kept), tables, notes and block quotes carried
+// Lists (bullets kept), tables, notes and block quotes carried
 // from Markdown, DOCX and ODT. The three files of tests/golden/structure hold
 // one document; each importer must give the same blocks.
 #include "import_test_util.hpp"
@@ -118,7 +118,7 @@ std::string table_cells(const Document& d) {
 
 }  // namespace
 
-// Issue 13: merged cells. Every cell keeps its column (a merged cell's columns
+// Merged cells. Every cell keeps its column (a merged cell's columns
 // are its own, a row's skipped columns hold no cell), and a cell merged across
 // columns says how many; before, the cells after a merged one moved left into
 // the wrong columns.

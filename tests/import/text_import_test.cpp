@@ -63,7 +63,7 @@ TEST(TextImport, FormFeedInsideALineSplitsTheParagraphAndPagesAreNumbered) {
 }
 
 // Before any content an unlabelled break would only add an empty page; after
-// all of it a break is kept, so saving and reopening loses none (issue 13).
+// all of it a break is kept, so saving and reopening loses none.
 TEST(TextImport, PageBreaksBeforeAllContentAreDroppedAndAfterItKept) {
     const auto doc = import::import_bytes("\f\fbody\n\f\n\f", "x.txt");
     ASSERT_TRUE(doc);
@@ -74,7 +74,7 @@ TEST(TextImport, PageBreaksBeforeAllContentAreDroppedAndAfterItKept) {
 }
 
 // A paragraph's spaces at its ends are kept as written: a .txt is verbatim
-// (issue 13; braille leaves them out, the translator's rule).
+// (braille leaves them out, the translator's rule).
 TEST(TextImport, WhitespaceOnlyLinesSeparateParagraphsAndEdgeSpacesAreKept) {
     const auto doc = import::import_bytes("   first\t \n  \t \n\tsecond  \n", "x.txt");
     ASSERT_TRUE(doc);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13, "braille in, braille out": BRF and PEF keep their own pages, rows,
+// "Braille in, braille out": BRF and PEF keep their own pages, rows,
 // page numbers, duplex and sections; a page the target cannot hold is refused
 // unless the user asks for a reflow.
 #include <gtest/gtest.h>

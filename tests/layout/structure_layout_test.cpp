@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 3: lists, tables, notes and block quotes laid out by the rules
+// Lists, tables, notes and block quotes laid out by the rules
 // docs/layout.md names (BANA Braille Formats), through real liblouis tables.
 #include <gtest/gtest.h>
 
@@ -335,8 +335,8 @@ TEST(StructureLayout, TextStraightAfterANoteReferenceFollowsTheNumbersRule) {
 // (#+system:ebae). In UEB ⠶⠶ is the double prime (Rules of UEB 2013 §3.11,
 // §3.15): a note reference is print's superscript number, ⠰⠔ (grade 1 and
 // superscript indicators) before it in contracted braille, ⠔ alone in
-// uncontracted (§3.24.1, §11.4.2, §5.11.1). Issue 13 item 3 (session 8): UEB
-// had ⠶⠶⠼⠁, which a UEB reader reads as ″1. Chinese has none Tactus knows: the
+// uncontracted (§3.24.1, §11.4.2, §5.11.1). Not ⠶⠶⠼⠁ for
+// UEB, which a UEB reader reads as ″1. Chinese has none Tactus knows: the
 // number in parentheses.
 TEST(StructureLayout, TheNoteReferenceIndicatorIsTheCodesOwn) {
     const auto blocks = [](const std::string& text) {

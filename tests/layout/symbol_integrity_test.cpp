@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13, "never break inside a symbol": line breaks only where the print text
+// "Never break inside a symbol": line breaks only where the print text
 // allows them (a space, after a hyphen, between Chinese characters), checked
 // against liblouis's own input positions; overlong words divided with a hyphen
 // (UEB 10.13) or, inside a number, the line continuation indicator (UEB 6.10).

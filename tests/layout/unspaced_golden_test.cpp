@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 6, session 8: text without spaces is laid out several times
+// Text without spaces is laid out several times
 // faster (word division translates one line ahead instead of four), and its
 // lines must stay exactly what they were. The expected file was written by the
 // division as it was before the change (commit 7c54b89) and is compared line

@@ -166,7 +166,7 @@ TEST(BuiltInSimulator, SpeaksProtocol3WithThePrintersTablesAndProtocol2OnlyOnReq
 // printer panel's Noise button, and a noisy `sim?noise=` line): every job
 // either completes with exactly the planned strikes, or fails cleanly, having
 // struck a prefix of them and nothing else. Never a wrong or a missing dot in
-// a completed job (issue 12 item 8).
+// a completed job.
 TEST(BuiltInSimulator, UnderNoiseAProtocol3JobCompletesExactlyOrFailsCleanly) {
     const auto prof = profile::default_profile();
     const auto tables = profile::make_firmware_tables(prof);

@@ -113,7 +113,7 @@ TEST_F(PtyEndToEnd, PowerLossFailsWithResumeHint) {
     EXPECT_TRUE(std::equal(r.log.begin(), r.log.begin() + 60, planned.begin()));
 }
 
-// Issue 12 item 8: the line goes dead mid-job and stays dead. The CLI gives
+// The line goes dead mid-job and stays dead. The CLI gives
 // up after --give-up-after seconds without acknowledged progress, exits with
 // the device code (4) and says which sheet to resume from. (The old CLI had
 // no such option and, without it, never gave up.)

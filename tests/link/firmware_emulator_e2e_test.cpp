@@ -52,7 +52,7 @@ struct PlannedEdge {
 // plan's times: a carriage move's steps are its table intervals, ending its
 // settle before the strike; the hammer goes up its pulse after the strike; a
 // pass's feed starts the firmware's start gap after the event before the pass
-// (firmware/PROTOCOL-v3.md, "Timing").
+// (docs/protocol.md, "Timing").
 std::vector<PlannedEdge> planned_edges(const plan::JobPlan& job, const machine::FirmwareTables& t,
                                        const machine::StrikeTiming& timing) {
     const auto tick = [](double s) { return std::llround(s * machine::kTickHz); };
@@ -277,7 +277,7 @@ TEST_F(FirmwareEndToEnd, AResetInTheMiddleOfAPassResumesAtTheExactStrike) {
 // A chip that stops by itself crashed, and `sim --firmware` says so and
 // fails: s51 stops on a stack overflow (SP past the top of internal RAM), and
 // under line noise the firmware's deepest call chain with both interrupts
-// nested on it once did (issue 12; firmware/README.md, "Stack"). The run then
+// nested on it once did (firmware/README.md, "Stack"). The run then
 // ended like a finished one: exit 0, the reason only in a log. Here a
 // three-instruction image overflows at once (mov SP,#0xF0; push ACC;
 // sjmp back to the push), beside a map naming the one symbol sim reads.

@@ -308,7 +308,7 @@ TEST(Link, DeviceThatNeverAnswersGivesABoundedError) {
     EXPECT_LT(rig.line->now(), 10.0);  // bounded: the silence timeout, not forever
 }
 
-// Issue 12 item 8, a session on a very noisy line: at 2e-2 per byte a
+// A session on a very noisy line: at 2e-2 per byte a
 // quarter of the runs failed before the session opened, "no answer to HELLO
 // within 3000 ms", although the controller answered every HELLO: the line
 // garbled each answer. A garbled frame shows the controller is there: the
@@ -388,7 +388,7 @@ TEST(LinkNoisySession, AControllerWhoseAnswersNeverGetThroughFailsAtTheGiveUpNam
     EXPECT_LT(garbled->now(), 13.0);
 }
 
-// Issue 12 item 8, a session at 9600 baud on a very noisy line: the
+// A session at 9600 baud on a very noisy line: the
 // controller says nothing to a frame it cannot read, and 3 s there is 7
 // HELLOs (a 24-byte CONFIGURE at 2e-2 per byte is lost 7 times running in 1
 // session of 6): a request is given 12 retransmission timeouts (5.3 s at 9600)
@@ -445,7 +445,7 @@ TEST(LinkNoisySession, AtNineThousandSixHundredBaudADeadLineStillFailsWithinSixS
     EXPECT_LT(l.stream().now(), 6.0);
 }
 
-// Issue 12 item 8: the host offers protocol 2 first; a v3 controller refuses
+// The host offers protocol 2 first; a v3 controller refuses
 // it. When the line duplicated that HELLO, the second refusal arrived while
 // version 3 was offered and was taken as refusing it too: "the controller
 // refused HELLO for protocol 2 and 3" (1 run in 1,500 at 2e-2). Here the
@@ -555,7 +555,7 @@ TEST(LinkNoisySession, AControllerThatRefusesEveryVersionIsStillAnError) {
     EXPECT_NE(h.error().message.find("refused HELLO for protocol 3"), std::string::npos) << h.error().message;
 }
 
-// Issue 12 item 8, the bounded give-up. On the old code these jobs never
+// The bounded give-up. Without it these jobs never
 // ended (a 28 s job was still running after 2 million simulated seconds): the
 // watchdog cancels them after a few wall seconds, so the test fails there
 // (cancelled) instead of hanging.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 12 item 8, "never a wrong dot, whatever the line does": hundreds of
+// "Never a wrong dot, whatever the line does": hundreds of
 // seeds at three per-byte noise rates (bytes dropped, bit-flipped and
 // duplicated, each at the rate, both ways, 57,600 baud), the host link
 // against the C++ controller on virtual time (tests/common/noise_campaign.hpp
@@ -54,8 +54,8 @@ void campaign(double rate, bool v3) {
     // At 1e-3 every job gets through; on the noisier lines most do (the frame
     // size follows the line), the others end cleanly at the give-up. At 2e-2
     // a quarter of the v3 runs (a third of v2's) once failed at the session's
-    // open, 3 s into a line that garbled the controller's answers (issue 12
-    // item 8; link_impl.hpp silent_too_long): 151 of 200 v3 runs and 138 of
+    // open, 3 s into a line that garbled the controller's answers
+    // (link_impl.hpp silent_too_long): 151 of 200 v3 runs and 138 of
     // v2's completed then, 198 and 182 now.
     if (rate <= 1e-3)
         EXPECT_EQ(t.completed, kSeeds);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One protocol-conformance suite, run against both controllers over a real
-// pty, so the two can never drift apart (issue 12 item 5): the C++ simulated
+// pty, so the two can never drift apart: the C++ simulated
 // controller speaking protocol 3 (`tactus-cli sim --pty --firmware-tables`,
 // given the tables the firmware was built with) and the reference firmware in
 // s51 (`tactus-cli sim --firmware --pty`). Every case runs against both:

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The built-in simulator (device `sim`) runs a job in the time the machine
 // would take, so a technician can reach Pause while a sheet is embossed
-// (issue 16, item 5: it ran about 100 times faster than the plan);
+// (unpaced it would run about 100 times faster than the plan);
 // `sim?speed=N` runs it at most N times faster and `sim?speed=max` as fast as
 // the computer can. The checks are lower bounds the pacing guarantees (the
 // wall clock never falls behind simulated time / speed), not timings.

@@ -2,9 +2,9 @@
 // A saved plan encodes to the same bytes as the plan it came from:
 // encode(plan) == encode(load(save(plan))), byte for byte, over random plans
 // (random settles, both hammers, both sweep directions) and real ones
-// (welcome.md and a Chinese sample with the bundled profile). Issue 16: plan
-// files dropped settle_ticks, so for welcome.md all 1,584 non-zero settles
-// were lost and the stream differed.
+// (welcome.md and a Chinese sample with the bundled profile). A plan file
+// that dropped settle_ticks would lose all 1,584 non-zero settles of
+// welcome.md, and the stream would differ.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Plan files with a wrong JSON type: an error naming the field, never an
-// abort (issue 16, item 7: a side given as a number ended the process with
-// SIGABRT, exit 134).
+// abort (a side given as a number once ended the process with SIGABRT,
+// exit 134).
 #include <gtest/gtest.h>
 
 #include <functional>

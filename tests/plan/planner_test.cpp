@@ -188,7 +188,7 @@ TEST(Planner, ToleranceUnreachableWhenTheHeadCannotFollow) {
     EXPECT_NE(r.error().message.find("unreachable at any speed"), std::string::npos);
 }
 
-// Protocol v3: the plan is the firmware's timer schedule (firmware/PROTOCOL-v3.md,
+// Protocol v3: the plan is the firmware's timer schedule (docs/protocol.md,
 // "Timing"), and the head model runs on the table moves' real step trains.
 TEST(Planner, FirmwareModeTimesTheFirmwaresScheduleAndEstimatesItsStepTrains) {
     const auto* tables = &test::firmware_tables();

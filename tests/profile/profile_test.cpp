@@ -138,7 +138,7 @@ TEST(Profile, ImpossibleDynamicsAndPitches) {
 }
 
 TEST(Profile, MotionSoSlowThePlannerWouldNeverFinishIsRefused) {
-    // Accepted before issue 16, and planning never returned.
+    // Were it accepted, planning would never return.
     expect_error(edited([](json& j) { j["carriage"]["v_max_mm_s"] = 1e-6; }), "field carriage.v_max_mm_s",
                  "would take days");
     expect_error(edited([](json& j) { j["feed"]["a_max_mm_s2"] = 1e-300; }), "field feed.a_max_mm_s2",

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The app as a spool client, end to end (issue 16): `tactus --emboss` (offscreen)
+// The app as a spool client, end to end: `tactus --emboss` (offscreen)
 // queues a document on a printer it sets up for the device, its own runner
 // starts embossing it over a real pseudo-terminal to `tactus-cli sim --pty`,
 // the app is told to quit mid-job, and `tactus-cli serve` finishes the job.

@@ -10,7 +10,7 @@
 //
 // Round 1 always kills at the last pass of the job's last sheet: the
 // controller then finishes the job by itself, and a runner that only read the
-// count of a job still active (the bug of issue 16) embossed that sheet again.
+// count of a job still active would emboss that sheet again.
 #include <gtest/gtest.h>
 
 #include <random>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// One PrintJob (issue 16, item 2): the plan and the controller configuration
+// One PrintJob: the plan and the controller configuration
 // come from the same profile on every road -- a document, a saved plan, the
 // runner -- and `plan --json` is the file `emboss --plan` reads. A plan from
 // another profile or protocol version is refused with the reason (exit 3),
@@ -109,7 +109,7 @@ TEST(PrintJob, ASavedPlanConfiguresWithItsOwnProfileAndRefusesAnother) {
 }
 
 // A job the controller cannot count (over 65,535 passes) is refused as soon as
-// that is known, not after the whole book is planned (issue 16, item 7: a
+// that is known, not after the whole book is planned (planning first, a
 // dry run of 100,000 pages took gigabytes before failing).
 TEST(PrintJob, AJobTooLongForTheControllerIsRefusedBeforeItIsAllPlanned) {
     const auto doc = test::make_document(40, true);

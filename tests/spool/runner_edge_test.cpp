@@ -128,7 +128,7 @@ INSTANTIATE_TEST_SUITE_P(LastPassOfEachSheet, PassEdge, ::testing::Range(1, 7));
 
 // The id the spool records for a stream is the one JOB_BEGIN carries, written
 // before the first DATA frame: an ACK of the previous job still on the line
-// when the stream starts must not be taken for the new one's (issue 16, 7).
+// when the stream starts must not be taken for the new one's.
 TEST(RunnerEdge, TheRunRecordNamesTheStreamBeforeItsFirstDataFrame) {
     Edge e;
     const auto a = *e.spool.submit(test::submission("lab", 3, 1));

@@ -223,7 +223,7 @@ TEST(Runner, AnUnpluggedCableIsRetriedAndNothingIsLostOrRepeated) {
     EXPECT_EQ(b.audit(id, printer), "");
 }
 
-// Issue 16, item 5: a job for an embosser that cannot be reached waits in the
+// A job for an embosser that cannot be reached waits in the
 // queue as it would for a busy one, however many attempts that takes; it is
 // not paused as if the job were at fault (it used to be, after the retry limit).
 TEST(Runner, AJobForAnUnreachablePrinterWaitsInTheQueueUntilItIsBack) {
@@ -251,7 +251,7 @@ TEST(Runner, AJobForAnUnreachablePrinterWaitsInTheQueueUntilItIsBack) {
     EXPECT_EQ(b.audit(id, printer), "");
 }
 
-// Issue 12 item 8: a printer that stops answering mid-job (the line goes
+// A printer that stops answering mid-job (the line goes
 // silent for good). The link gives up after 30 s without acknowledged
 // progress, and the job waits in the queue for the printer (not a retry of
 // the job, not a fault for the operator). On the old code the link never gave
@@ -337,7 +337,7 @@ TEST(Runner, OperatorCanRestartFromAChosenSheet) {
     EXPECT_NE(std::find(kinds.begin(), kinds.end(), "resume-point"), kinds.end());
 }
 
-// Issue 16: the controller is configured from each job's own PrintJob. The
+// The controller is configured from each job's own PrintJob. The
 // printer's profile changes while the runner stays connected (a technician's
 // new calibration): the next job's CONFIGURE carries it, without a reconnect.
 // (The runner used to configure only when it connected: the second job was

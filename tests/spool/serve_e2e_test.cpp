@@ -31,7 +31,7 @@ TEST(ServeE2E, QueuedJobIsEmbossedExactlyOnceAndServeStopsCleanly) {
     EXPECT_NE(shown.find("state:      completed"), std::string::npos) << shown;
 }
 
-// Issue 16, item 5: a job for an embosser that is not there is queued and
+// A job for an embosser that is not there is queued and
 // waits, as it would for a busy one; once the printer is reachable (here: its
 // device set to a running simulator) it is embossed, exactly once, without
 // anyone resuming it.

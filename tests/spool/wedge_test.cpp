@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A spool that cannot be wedged (issue 16, item 7): a stored job with a wrong
+// A spool that cannot be wedged: a stored job with a wrong
 // JSON type fails that job with a reason instead of aborting the process; a
 // job longer than the controller can count is failed, not retried forever;
 // `queue recover` moves aside only what is damaged, never a healthy spool

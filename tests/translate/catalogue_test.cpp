@@ -27,7 +27,7 @@ TEST(Catalogue, NamesTheSpecifiedTablesByLanguage) {
     EXPECT_GT(tables.size(), 50u);  // Debian's liblouis-data ships about 200
 }
 
-// Issue 14 item 3: a Chinese interface names languages in Chinese (from ICU),
+// A Chinese interface names languages in Chinese (from ICU),
 // and the metadata a translated name is built from is there.
 TEST(Catalogue, NamesLanguagesInTheReadersLocale) {
     const auto tables = translate::table_catalogue("zh-TW");

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The word division of core/translate/word_division.cpp as it was at commit
-// 7c54b89 (session 8, before issue 13 item 6's speed-up for text without
-// spaces), copied unchanged but for its namespace. Test-only: the equivalence
+// 7c54b89 (before the speed-up for text without spaces), copied unchanged
+// but for its namespace. Test-only: the equivalence
 // test checks that the faster division gives the same lines.
 #include <algorithm>
 #include <optional>
@@ -161,7 +161,7 @@ private:
 
 }  // namespace detail
 
-// The division of issue 13 as it was before the speed-up of session 8: the
+// The division as it was before the speed-up for text without spaces: the
 // rest of the word translated through a window of 4 * room + 16 characters for
 // every line. Kept as the reference the new division must equal, line for line.
 inline Result<std::vector<document::BrailleLine>> divide_word(const Translator& translator, std::u32string_view word,

@@ -181,7 +181,7 @@ TEST(Translator, EnglishWordsHaveSyllableBreaksFromLiblouisDictionary) {
     EXPECT_EQ(marked, "hy-phen-ation");
 }
 
-// Issue 13 item 6: a paragraph is decoded straight into the translator's text
+// A paragraph is decoded straight into the translator's text
 // (no whole copy on the side); a bad byte leaves what was there.
 TEST(Utf8, AppendUtf32AddsToTheEndOrNothing) {
     std::u32string text = U"ab";
@@ -193,7 +193,7 @@ TEST(Utf8, AppendUtf32AddsToTheEndOrNothing) {
     EXPECT_EQ(text, U"abc\u4E2D\U0001F600");
 }
 
-// Issue 13 item 6, session 8: word division looks one line ahead instead of
+// Word division looks one line ahead instead of
 // four only in tables that write a word locally. en-us-g2.ctb (through
 // en-us-g1.ctb) has `compbrl`, which puts a whole word in computer braille when
 // "://", ".com", "()" and the like appear anywhere in it; the UEB and Chinese

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 13 item 6, session 8: word division translates a window of about one
+// Word division translates a window of about one
 // line (and a lookahead) for each line instead of four lines, so text without
 // spaces lays out several times faster. The lines must not change: the same
 // cells, the same break points. Checked against the division as it was

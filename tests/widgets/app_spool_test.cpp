@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The main window over the spool (issue 16): Connect configures the controller
+// The main window over the spool: Connect configures the controller
 // with the profile being edited (the simulator's CONFIGURE checked byte for
 // byte), Ctrl+P stores the job in the spool, and quitting while it embosses
 // asks first, in a dialog a keyboard answers; the job is still in the spool
@@ -75,9 +75,9 @@ private Q_SLOTS:
         QCOMPARE(printer->profile_json, profile::to_json(edited).dump());
     }
 
-    // Issue 13 item 1: a PEF whose page (40 cells x 25 lines) is larger than
-    // the printer profile's (27 x 24 by default). Before, the app laid it out
-    // on the profile's page and queued it without a word. Now it asks first,
+    // A PEF whose page (40 cells x 25 lines) is larger than the printer
+    // profile's (27 x 24 by default) is not laid out on the profile's page
+    // and queued without a word: the app asks first,
     // in a dialog a screen reader reads (question, sizes, both buttons), with
     // the same rule as the CLI's exit 5 (layout::find_braille_misfit): Stop
     // queues nothing, Reflow queues the braille laid out on the printer's page.
@@ -186,7 +186,7 @@ private Q_SLOTS:
         QVERIFY(paged.pages.size() > 2);  // 50 long rows do not fit on 2 pages of 24 lines
     }
 
-    // Issue 13 item 1: a PEF of a duplex section of three pages, then a
+    // A PEF of a duplex section of three pages, then a
     // single-sided section of two, embossed from the app on interpoint paper,
     // goes through the spool as the file's pages: the second section starts
     // on a new sheet (sheet 2's back is blank), each page of the single-sided

@@ -167,7 +167,7 @@ private Q_SLOTS:
         QVERIFY(fresh->paged().pages == editor->layout().paged().pages);
     }
 
-    // Issue 13: a text file's form feed showed nothing and said nothing. Its
+    // A text file's form feed must not show and say nothing. Its
     // line is drawn as a page break with its print page, and the cursor coming
     // to it says "Print page break, page 2"; the text saved is unchanged.
     void a_form_feed_line_is_shown_and_spoken_as_a_page_break() {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Nothing a user reads is cut off (issue 14 item 4): every main view, in
+// Nothing a user reads is cut off: every main view, in
 // English and in zh_TW, at 1280 x 800 and 1920 x 1080. Each visible label,
 // button, tab and header is checked against the room it was given, and a
 // screenshot of each view is saved for CI's artefacts

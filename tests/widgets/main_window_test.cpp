@@ -111,7 +111,7 @@ private Q_SLOTS:
         QCOMPARE(w.recent_files().value(0), QFileInfo(test::sample("welcome.md")).absoluteFilePath());
     }
 
-    // Issue 13 "Bad input": a text whose script does not suit the table is
+    // A text whose script does not suit the table is
     // warned about in the app as in the CLI, naming the better table (the app
     // showed only the 8-dot escape warning, which names none).
     void a_script_that_does_not_suit_the_table_names_the_better_one() {
@@ -155,9 +155,9 @@ private Q_SLOTS:
         QCOMPARE(w.preview_panel()->preview()->cursor_line(), pos.line);
     }
 
-    // Issue 14: a long message ran into the position indicator and was cut
+    // A long message must not run into the position indicator and be cut
     // (QStatusBar paints one line under its permanent widgets). The message
-    // is now a label beside the position that wraps and is as tall as it needs.
+    // is a label beside the position that wraps and is as tall as it needs.
     void a_long_message_is_shown_whole_beside_the_position() {
         MainWindow w;
         w.set_interactive(false);
@@ -228,7 +228,7 @@ private Q_SLOTS:
         QVERIFY(back.has_value());
     }
 
-    // Issue 13 item 5: the app and the CLI give the same bytes for the same
+    // The app and the CLI give the same bytes for the same
     // document, table and (default) format, compared with the real tactus-cli:
     // Markdown structure (notes, quotes, lists, a table), a Chinese text file, a
     // plain English text file.
@@ -277,7 +277,7 @@ private Q_SLOTS:
         w.set_table(QStringLiteral("en-ueb-g2.ctb"));
     }
 
-    // Issue 13 item 1 in the app: ready-made braille opened and exported again
+    // In the app, ready-made braille opened and exported again
     // is page for page, as the CLI does it; the app added its own braille page
     // numbers, so a full BRF page ran over and its pages doubled.
     void ready_braille_is_exported_page_for_page_data() {
@@ -308,7 +308,7 @@ private Q_SLOTS:
         }
     }
 
-    // Issue 13 item 1 on real PEF files (tests/data/pef/real) and on
+    // Real PEF files (tests/data/pef/real) and
     // multi-volume ones (volume_grids.pef: each volume its own page size): opened in the app and exported without an edit, the
     // PEF and BRF are byte for byte what tactus-cli writes for the same file
     // and page (40 x 30, interpoint): the file's own cols/rows, its sections
@@ -368,7 +368,7 @@ private Q_SLOTS:
         }
     }
 
-    // Issue 13 item 1: the page-too-small question says the file's declared
+    // The page-too-small question says the file's declared
     // page, volume by volume when its volumes differ, against the printer's
     // (volume_grids.pef: 12 x 5, 20 x 8, 16 x 6, on a 19 x 8 page, where only
     // volume 2 is too large; its longest row is 19 cells, so the question is
@@ -563,7 +563,7 @@ private Q_SLOTS:
         QVERIFY(again.editor()->print_pane()->accessibleDescription().startsWith(QStringLiteral("One paragraph per line")));
     }
 
-    // Issue 13 item 4: a text file is its text in the editor (no Markdown
+    // A text file is its text in the editor (no Markdown
     // escapes), is saved in place as text, and comes back unchanged.
     void a_text_file_is_shown_and_saved_as_it_is() {
         const QByteArray text = "Hello *world*.\n\n& and # and *\n\n- not a list\n";
@@ -603,7 +603,7 @@ private Q_SLOTS:
         QVERIFY(again.editor()->layout().paged().pages == w.editor()->layout().paged().pages);
     }
 
-    // Issue 13 item 4, as a user meets it: a .txt opened, one character typed,
+    // As a user meets it: a .txt opened, one character typed,
     // saved; the file differs from the original by that character only. The
     // texts hold what was lost before: a hard-wrapped paragraph's lines (the
     // editor showed them joined, saving wrote the joined line), lines of
@@ -685,8 +685,7 @@ private Q_SLOTS:
         QVERIFY(paged->pages == w.editor()->layout().paged().pages);
     }
 
-    // Issue 13 (session 7) item 1: a .txt was saved as UTF-8 whatever its
-    // encoding. Opened and saved it is the same bytes; edited, it is still in
+    // A .txt is saved in its own encoding, not as UTF-8. Opened and saved it is the same bytes; edited, it is still in
     // its encoding (the bytes another program would write).
     void a_text_file_is_saved_in_its_encoding_data() {
         QTest::addColumn<QByteArray>("bytes");
@@ -715,8 +714,7 @@ private Q_SLOTS:
         open_edit_and_save(w, QStringLiteral("encoded.txt"));
     }
 
-    // Issue 13 item 4 (session 8): a .md was saved as UTF-8 whatever its
-    // encoding. It follows the text file's rule (edit::file_bytes): opened and
+    // A .md is saved in its own encoding, not as UTF-8. It follows the text file's rule (edit::file_bytes): opened and
     // saved it is the same bytes; edited, it is still in its encoding.
     void a_markdown_file_is_saved_in_its_encoding_data() {
         QTest::addColumn<QByteArray>("bytes");
@@ -764,7 +762,7 @@ private Q_SLOTS:
     // A character the file's encoding cannot hold is never written as a
     // substitute: without an answer (no one to ask) nothing is saved, and the
     // message names the character, its line and the encoding.
-    // Issue 13 item 4 (session 8): a Markdown file the same way, by the same rule.
+    // A Markdown file the same way, by the same rule.
     void a_character_the_encoding_cannot_hold_is_not_saved_silently_data() {
         QTest::addColumn<QString>("name");
         QTest::addColumn<int>("line");  // the editor line of "naïve"
@@ -996,7 +994,7 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(pending[0].autosave_path));
     }
 
-    // Issue 13 item 1: a PEF of volumes with their own page sizes and
+    // A PEF of volumes with their own page sizes and
     // single-sided sections (volume_grids.pef), edited, is autosaved as PEF;
     // recovered after a crash it exports (PEF and BRF) the same bytes as the
     // window that crashed. Before, the autosave was the editor's Markdown
@@ -1091,7 +1089,7 @@ private Q_SLOTS:
         QCOMPARE(f.readAll(), QByteArray("one\r\ntwo three\r\n"));
     }
 
-    // Issue 13 item 4 (session 8): a Markdown file recovered after a crash is
+    // A Markdown file recovered after a crash is
     // saved in its encoding and with its line ends again (Notepad's UTF-16LE
     // with a BOM and CRLF), as a text file is.
     void a_recovered_markdown_file_keeps_its_encoding_and_line_ends() {
@@ -1141,7 +1139,7 @@ private Q_SLOTS:
         QCOMPARE(m[5], int(Qt::Key_L));
     }
 
-    // Issue 14 item 5: a chord speaks the cell it typed and the print letter,
+    // A chord speaks the cell it typed and the print letter,
     // and the status bar and the preview's cell cursor stay on the new cell.
     void a_chord_is_echoed_and_the_cursor_stays_on_it() {
         MainWindow w;

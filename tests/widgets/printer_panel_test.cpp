@@ -115,7 +115,7 @@ private Q_SLOTS:
         QVERIFY(panel.log_text().contains(QStringLiteral("completed: all")));
     }
 
-    // Issue 14: the State column read "done: all 1453 strikes check…". Every
+    // The State column must not read "done: all 1453 strikes check…". Every
     // cell but the stretched title is as wide as its text.
     void the_job_queue_shows_each_state_whole() {
         const auto file = (dir_.path() + QStringLiteral("/whole.txt")).toStdString();
@@ -151,8 +151,8 @@ private Q_SLOTS:
         }
     }
 
-    // Issue 14 item 7: a job that stops is announced once (the fault label and
-    // the message each announced it, so Orca said it twice).
+    // A job that stops is announced once (were the fault label and the
+    // message each to announce it, Orca would say it twice).
     void a_stopped_job_is_announced_once() {
         const auto file = (dir_.path() + QStringLiteral("/stop.txt")).toStdString();
         std::ofstream(file) << "A job that stops.\n";
@@ -337,8 +337,8 @@ private Q_SLOTS:
         const auto press = [&](const char* name) { panel.findChild<QPushButton*>(QString::fromLatin1(name))->click(); };
         press("injectPaperOut");
         QVERIFY2(wait_until([&] { return history(id).find("paper out") != std::string::npos; }), history(id).c_str());
-        // The user hears it, once, and hears the job go on (issue 14: a fault the
-        // runner rode through in a blink was never said at all).
+        // The user hears it, once, and hears the job go on (a fault the runner
+        // rides through in a blink must still be said).
         const auto said = [&](const QString& what) {
             int n = 0;
             for (const auto& m : messages)
@@ -363,8 +363,8 @@ private Q_SLOTS:
         QVERIFY2(finished[0][2].toString().contains(QStringLiteral("strikes checked against the plan")),
                  qPrintable(finished[0][2].toString()));
     }
-    // Issue 16 item 5: the app's simulator ran about 100 times faster than the
-    // plan, so Pause was barely reachable. By default a job now takes at least
+    // Unpaced, the app's simulator runs about 100 times faster than the
+    // plan, so Pause is barely reachable. By default a job takes at least
     // the plan's own time (a lower bound the pacing guarantees, not a timing);
     // `sim?speed=max`, chosen in the panel, lets the simulated clock run ahead
     // of the wall clock.

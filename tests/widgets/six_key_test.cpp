@@ -91,7 +91,7 @@ private Q_SLOTS:
         QCOMPARE(editor.text(), QStringLiteral("\u2813\u2811\u2800\u2801"));
     }
 
-    // Issue 14 item 5: a chord inserts its one cell into the braille pane, so a
+    // A chord inserts its one cell into the braille pane, so a
     // screen reader echoes that cell; it used to replace the whole paragraph
     // (Orca echoed nothing), and the caret, the status and the preview cursor
     // jumped to cell 1.

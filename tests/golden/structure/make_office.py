@@ -199,7 +199,7 @@ write("table_break.docx", [docx[0], docx[1],
                             f'<?xml version="1.0" encoding="UTF-8"?><w:document {W} {R}><w:body>{break_body}'
                             '</w:body></w:document>')])
 
-# Merged cells (issue 13): a table whose first heading is merged down over two
+# Merged cells: a table whose first heading is merged down over two
 # header rows and whose second heading is merged across two columns, with a
 # body row merged across them too (a simple table: it fits the line); and a
 # table too wide for the line (listed format) with a merged entry and a row
