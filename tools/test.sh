@@ -1,44 +1,92 @@
 #!/usr/bin/env bash
-# Set up, build and run every test: the default build (warnings are errors),
-# an AddressSanitizer/UBSan build of the tests, and each fuzz target for a
-# bounded time.
+# Set up, build and run every test: the default build (GCC, warnings are
+# errors, every test), then one clang build with AddressSanitizer and UBSan
+# that runs core's tests and the fuzz targets (libFuzzer, each for a bounded
+# time). Each stage's wall time is printed as it ends and in a table at the
+# end (bench/ci/RESULTS.md keeps the figures of cold runs).
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/install-deps.sh
 jobs=$(nproc)
+# The fuzz stage's whole budget in seconds, shared by the targets (at least
+# 10 s each), two at a time on a machine with two cores or more.
+fuzz_total=${TACTUS_FUZZ_SECONDS_TOTAL:-240}
 
-echo "== architecture (stage order, declared includes, no cycles)"
+stages=()
+stage_start=0
+stage() {
+  stage_end
+  stage_name=$1
+  stage_start=$(date +%s)
+  echo "== $1"
+}
+stage_end() {
+  if [ "$stage_start" -gt 0 ]; then
+    local took=$(( $(date +%s) - stage_start ))
+    stages+=("$(printf '%5d s  %s' "$took" "$stage_name")")
+    echo "-- $stage_name: ${took} s"
+  fi
+  stage_start=0
+}
+report() {
+  stage_end
+  echo "== stage times (wall, $(nproc) cores)"
+  printf '%s\n' "${stages[@]}"
+  echo "$(printf '%5d s' $(( $(date +%s) - run_start )))  total"
+}
+run_start=$(date +%s)
+trap report EXIT
+
+stage "dependencies (tools/install-deps.sh)"
+tools/install-deps.sh
+
+stage "architecture (stage order, declared includes, no cycles)"
 python3 tools/check-architecture.py
 
-echo "== 89C52 firmware: build, fit in 8 KB flash and 256 B RAM, native link tests"
+stage "89C52 firmware: build, fit in 8 KB flash and 256 B RAM, native link tests"
 make -C firmware clean >/dev/null 2>&1 || true
 make -C firmware
 make -C firmware test
 
-echo "== default build (warnings are errors)"
+stage "default build (warnings are errors)"
 cmake --preset default >/dev/null
 cmake --build build/default -j"$jobs"
+
+stage "default tests"
 ctest --preset default -j"$jobs"
 
-echo "== AddressSanitizer + UBSan build"
+stage "AddressSanitizer + UBSan build (clang; core, its tests, the fuzz targets)"
 cmake --preset asan >/dev/null
 cmake --build build/asan -j"$jobs"
+
+stage "AddressSanitizer + UBSan tests"
 ctest --preset asan -j"$jobs"
 
-echo "== fuzz targets (libFuzzer, ${TACTUS_FUZZ_SECONDS:-30} s each)"
-cmake --preset fuzz >/dev/null
-cmake --build build/fuzz -j"$jobs"
-for target in build/fuzz/tests/fuzz/fuzz_*; do
-  [ -x "$target" ] || continue
+stage "fuzz targets (libFuzzer, ${fuzz_total} s in all)"
+targets=()
+for target in build/asan/tests/fuzz/fuzz_*; do
+  [ -x "$target" ] && targets+=("$target")
+done
+parallel=$(( jobs >= 2 ? 2 : 1 ))
+per_target=$(( fuzz_total * parallel / (${#targets[@]} > 0 ? ${#targets[@]} : 1) ))
+[ "$per_target" -ge 10 ] || per_target=10
+echo "${#targets[@]} targets, ${per_target} s each, ${parallel} at a time"
+fuzz_one() {
+  local target=$1 seconds=$2 name corpus work log rc=0
   name=$(basename "$target")
   corpus=tests/fuzz/corpus/${name#fuzz_}
   [ -d "$corpus" ] || corpus=tests/fuzz/corpus/$name
   work=$(mktemp -d)
+  log=$(mktemp)
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
-  echo "-- $name"
-  "$target" -max_total_time="${TACTUS_FUZZ_SECONDS:-30}" -rss_limit_mb=2048 -timeout=10 \
-    -print_final_stats=1 "$work" 2>&1 | tail -n 3
-  rm -rf "$work"
-done
+  "$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
+    -print_final_stats=1 "$work" >"$log" 2>&1 || rc=$?
+  echo "-- $name (exit $rc)"
+  if [ "$rc" -ne 0 ]; then cat "$log"; else tail -n 3 "$log"; fi
+  rm -rf "$work" "$log"
+  return "$rc"
+}
+export -f fuzz_one
+printf '%s\n' "${targets[@]}" | xargs -P "$parallel" -I{} bash -c 'fuzz_one "$1" "$2"' _ {} "$per_target"
+
 echo "== all tests passed"
