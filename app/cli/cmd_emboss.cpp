@@ -19,18 +19,16 @@
 #include "ipp/queue_uri.hpp"
 #include "layout_args.hpp"
 #include "link/link.hpp"
+#include "machine/reference_firmware.hpp"
 #include "plan/plan_file.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
+#include "protocol_choice.hpp"
 #include "spool/print_job.hpp"
 #include "transport/device.hpp"
 
 namespace tactus::cli {
 namespace {
-
-// The reference firmware's DATA payload: 31 bytes of ops and the check
-// (docs/protocol.md); the dry run's frame count assumes it.
-constexpr std::size_t kFirmwareMaxOps = 31;
 
 link::CancelToken* g_cancel = nullptr;
 extern "C" void on_interrupt(int) {
@@ -65,15 +63,24 @@ machine::FirmwareTables firmware_tables(const EmbossArgs& a, const profile::Prin
     return *t;
 }
 
+// A saved plan (`--plan`), read once: its protocol decides the simulator's
+// and is checked against the embosser's.
+std::optional<plan::PlanFile> saved_plan(const EmbossArgs& a) {
+    if (!a.plan_file) return std::nullopt;
+    return require(plan::load_plan(a.layout.file));
+}
+
 // The tables the built-in simulator (`--device sim...`) runs: the profile's,
-// so it speaks protocol 3 as the firmware built from the profile does; none
-// (protocol 2) for `sim?protocol=2`, for a saved plan (protocol 2), and, with
-// a one-line notice, for a profile the firmware cannot run.
-std::optional<machine::FirmwareTables> sim_tables(const EmbossArgs& a) {
+// so it speaks protocol 3 as the firmware built from the profile does; a
+// saved plan's own (none for a legacy protocol-2 plan); none (protocol 2) for
+// `sim?protocol=2`, and, with a one-line notice, for a profile the firmware
+// cannot run.
+std::optional<machine::FirmwareTables> sim_tables(const EmbossArgs& a, const std::optional<plan::PlanFile>& saved) {
     auto spec = transport::parse_device(a.device);
     if (!spec || spec->scheme != "sim") return std::nullopt;
     auto settings = transport::sim_settings(*spec);
-    if (!settings || settings->protocol == 2 || a.plan_file) return std::nullopt;
+    if (!settings || settings->protocol == 2) return std::nullopt;
+    if (saved) return saved->firmware;
     if (!a.firmware_tables.empty()) return require(profile::load_firmware_tables(a.firmware_tables));
     auto t = profile::make_firmware_tables(load_profile_arg(a.profile));
     if (t) return *t;
@@ -85,19 +92,33 @@ std::optional<machine::FirmwareTables> sim_tables(const EmbossArgs& a) {
     return std::nullopt;
 }
 
-// The print job, from a saved plan or from the document; the controller is
-// configured from the profile the plan was made with, either way.
+// A saved plan as the job for an embosser speaking `protocol`: the plan's
+// own protocol must be the embosser's (a plan is not converted: its moves are
+// the protocol's own), and with --firmware-tables, its tables those.
+spool::PrintJob saved_plan_job(const EmbossArgs& a, plan::PlanFile file, int protocol) {
+    if (file.protocol != protocol)
+        throw CommandFailed(
+            exit_bad_input,
+            "emboss: the plan was made for protocol " + std::to_string(file.protocol) +
+                (file.protocol == encode::kProtocolVersion ? " (legacy)" : "") + ", but the embosser speaks protocol " +
+                std::to_string(protocol) + ": plan the document again" +
+                (protocol == encode::kProtocolVersion ? " with --protocol 2" : " without --protocol 2"));
+    if (file.firmware && !a.firmware_tables.empty()) {
+        const auto given = require(profile::load_firmware_tables(a.firmware_tables));
+        if (given.table_id != file.firmware->table_id)
+            throw CommandFailed(exit_bad_input, "emboss: the plan was made with other ramp tables than --firmware-tables "
+                                                "gives: plan the document again with --firmware-tables");
+    }
+    std::optional<profile::PrinterProfile> printer;
+    if (!a.profile.empty()) printer = load_profile_arg(a.profile);
+    return require(spool::make_print_job(std::move(file), a.device, printer ? &*printer : nullptr));
+}
+
+// The print job from the document; the controller is configured from the
+// same profile. `for_firmware`: planned with the reference firmware's tables
+// (protocol 3), `known_tables` when already made.
 spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
                         const std::optional<machine::FirmwareTables>& known_tables = std::nullopt) {
-    if (a.plan_file && for_firmware)
-        throw CommandFailed(exit_usage, "emboss: a saved plan is for protocol 2; the reference firmware (protocol 3) "
-                                        "is planned for with its own tables: give the document, not --plan");
-    if (a.plan_file) {
-        auto file = require(plan::load_plan(a.layout.file));
-        std::optional<profile::PrinterProfile> printer;
-        if (!a.profile.empty()) printer = load_profile_arg(a.profile);
-        return require(spool::make_print_job(std::move(file), a.device, printer ? &*printer : nullptr));
-    }
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
     const auto doc = lay_out_for_cli(a.layout, options);
@@ -107,43 +128,39 @@ spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
     return require(spool::make_print_job(doc, profile, a.device));
 }
 
-// What the job would put on the line. A document is measured a sheet at a
-// time (a book in constant memory); a saved plan is already whole.
-// `tables`: the reference firmware's (protocol 3), as `emboss` would send it
-// to the same device; none: protocol 2.
-spool::StreamSize dry_run(const EmbossArgs& a, const std::optional<machine::FirmwareTables>& tables) {
-    if (tables) {
-        // The v3 stream for the reference firmware (its payload: 31 bytes of
-        // ops and the 2-byte check).
-        const auto job = prepare(a, true, tables);
-        std::size_t first = 0;
-        for (const auto& s : job.plan.sheets) {
-            if (s.index >= a.start_sheet) break;
-            first += s.passes.size();
-        }
-        const auto stream = require(encode::encode_job_v3(job.plan, *job.firmware, job.timing, 1, {first, 0, false}));
-        spool::StreamSize m{.stream_bytes = stream.bytes.size(), .sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
-        for (const auto& [b, e] : encode::chunk_stream_v3(stream, kFirmwareMaxOps)) {
-            ++m.frames;
-            m.line_bytes += e - b + encode::kFrameOverhead + 2;
-        }
-        return m;
-    }
-    if (!a.plan_file) {
+// What the job would put on the line. A protocol-2 document is measured a
+// sheet at a time (a book in constant memory); a protocol-3 job and a saved
+// plan are measured whole.
+spool::StreamSize dry_run(const EmbossArgs& a, std::optional<plan::PlanFile> saved,
+                          const std::optional<machine::FirmwareTables>& tables) {
+    const int saved_protocol = saved ? saved->protocol : 0;
+    const auto job = saved ? saved_plan_job(a, std::move(*saved), saved_protocol)
+                           : (tables ? prepare(a, true, tables) : spool::PrintJob{});
+    if (!saved && !tables) {
         const auto profile = load_profile_arg(a.profile);
         const auto options = a.layout.pipeline_options(profile);
         const auto doc = lay_out_for_cli(a.layout, options);
         warn_about_conflicts(doc, profile);
         return require(spool::measure_print_job(doc, profile, a.start_sheet));
     }
-    const auto job = prepare(a);
     std::size_t first = 0;
     for (const auto& s : job.plan.sheets) {
         if (s.index >= a.start_sheet) break;
         first += s.passes.size();
     }
+    spool::StreamSize m{.sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
+    if (job.firmware) {
+        // The v3 stream for the reference firmware (its payload: the ops and the check).
+        const auto stream = require(encode::encode_job_v3(job.plan, *job.firmware, job.timing, 1, {first, 0, false}));
+        m.stream_bytes = stream.bytes.size();
+        for (const auto& [b, e] : encode::chunk_stream_v3(stream, machine::reference_firmware::kMaxOps)) {
+            ++m.frames;
+            m.line_bytes += e - b + encode::kFrameOverhead + machine::reference_firmware::kDataCheckBytes;
+        }
+        return m;
+    }
     const auto stream = require(encode::encode_job(job.plan, 1, {first, 0, false}));
-    spool::StreamSize m{.stream_bytes = stream.bytes.size(), .sheets = job.plan.sheets.size(), .strikes = job.plan.strikes};
+    m.stream_bytes = stream.bytes.size();
     for (const auto& [b, e] : encode::chunk_stream(stream, encode::kMaxPayload)) {
         ++m.frames;
         m.line_bytes += e - b + encode::kFrameOverhead;
@@ -171,16 +188,21 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
         q.device = a.device;  // --device with --queue: the queue printer on that device
         return enqueue_emboss(a.layout, q);
     }
+    auto saved = saved_plan(a);
     if (a.dry_run) {
-        // What `emboss` would put on the line: the firmware's protocol 3 for
-        // --firmware-tables or the built-in simulator (unless protocol=2 or a
-        // saved plan), else protocol 2's stream.
-        std::optional<machine::FirmwareTables> tables = sim_tables(a);
-        if (!tables && !a.firmware_tables.empty()) tables = require(profile::load_firmware_tables(a.firmware_tables));
-        const auto m = dry_run(a, tables);
+        // What `emboss` would put on the line: a saved plan's own protocol;
+        // for a document, protocol 3 (the simulator's tables, --firmware-tables
+        // or the profile's) unless the device is `sim?protocol=2`.
+        std::optional<machine::FirmwareTables> tables = sim_tables(a, saved);
+        const auto spec = transport::parse_device(a.device);
+        const bool legacy_sim = spec && spec->scheme == "sim" && !tables;
+        if (!saved && !tables && !legacy_sim)
+            tables = protocol_tables("emboss", {0, a.firmware_tables}, load_profile_arg(a.profile));
+        const int protocol = saved ? saved->protocol : (tables ? 3 : 2);
+        const auto m = dry_run(a, std::move(saved), tables);
         std::cout << m.stream_bytes << " bytes of job stream in " << m.frames << " frames (" << m.line_bytes
                   << " bytes on the line) for " << m.sheets << " sheets, " << m.strikes << " strikes (protocol "
-                  << (tables ? 3 : 2) << ")\n";
+                  << protocol << ")\n";
         return;
     }
     if (a.device.empty()) throw CommandFailed(exit_usage, "emboss: --device is required (try --device sim)");
@@ -188,12 +210,13 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     // that is not there (device).
     link::LinkOptions options;
     options.give_up_after = std::chrono::milliseconds(static_cast<std::int64_t>(a.give_up_after_s * 1000));
-    options.sim_firmware = sim_tables(a);
+    options.sim_firmware = sim_tables(a, saved);
     auto link = require(link::Link::open(a.device, options));
     // HELLO_REPLY says which controller answered: the reference firmware
     // (protocol 3) is planned for with its own tables.
     require(link.hello());
-    const auto job = prepare(a, link.protocol() == encode::kProtocolV3, options.sim_firmware);
+    const auto job = saved ? saved_plan_job(a, std::move(*saved), link.protocol())
+                           : prepare(a, link.protocol() == encode::kProtocolV3, options.sim_firmware);
 
     const bool tty = isatty(STDERR_FILENO) != 0;
     link::CancelToken cancel;
@@ -260,8 +283,9 @@ void add_emboss_command(CLI::App& app) {
                     "--eight-dot, --encoding, --copies and --title go with the job; the command follows "
                     "the job until it ends, Ctrl-C cancels it)");
     cmd->add_flag("--dry-run", args->dry_run,
-                  "Stop after encoding and print the byte count: protocol 3 with --firmware-tables or a "
-                  "--device sim (unless protocol=2), else protocol 2");
+                  "Stop after encoding and print the byte count of what emboss would send: protocol 3 (the "
+                  "reference firmware's), a saved plan's own protocol, or protocol 2 for --device "
+                  "'sim?protocol=2'");
     cmd->add_flag("--plan", args->plan_file, "FILE is a saved plan (JSON), not a document");
     cmd->add_option("--firmware-tables", args->firmware_tables,
                     "The reference firmware's ramp tables (its build/ramp.json): a controller speaking protocol 3 "
@@ -269,7 +293,7 @@ void add_emboss_command(CLI::App& app) {
                     "the profile makes, as make -C firmware PROFILE=... builds them)")
         ->check(CLI::ExistingFile);
     cmd->add_option("--start-sheet", args->start_sheet, "Resume from this sheet (1-based)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number_from_one());
     cmd->add_option("--give-up-after", args->give_up_after_s,
                     "Seconds without any acknowledged progress before the job stops with 'the embosser stopped "
                     "answering' (exit 4) and the sheet to resume from (default 30)")

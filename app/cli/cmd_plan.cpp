@@ -19,6 +19,7 @@
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
+#include "protocol_choice.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -34,7 +35,7 @@ struct PlanArgs {
     LayoutArgs layout;
     std::string profile;
     bool json = false;
-    std::string firmware_tables;  // the reference firmware's build/ramp.json: plan its table moves (protocol 3)
+    ProtocolArgs protocol;
 };
 
 // What `plan --json` adds to a pass of the plan file.
@@ -76,16 +77,18 @@ void run_plan(const PlanArgs& a) {
     const auto options = a.layout.pipeline_options(prof);
     const auto doc = lay_out_for_cli(a.layout, options);
     warn_about_conflicts(doc, prof);
-    // With the firmware's tables, the plan `emboss --firmware-tables` makes
-    // (spool::make_firmware_print_job): its table moves, timed as it runs them.
+    // Protocol 3: the plan `emboss` makes for the reference firmware
+    // (spool::make_firmware_print_job), its table moves timed as it runs them.
     plan::PlanOptions options_plan;
-    if (!a.firmware_tables.empty()) options_plan.firmware = require(profile::load_firmware_tables(a.firmware_tables));
+    options_plan.firmware = protocol_tables("plan", a.protocol, prof);
+    // A plan file's tables must be its profile's (plan_from_json checks them).
+    if (options_plan.firmware) require(profile::check_firmware_tables(*options_plan.firmware, prof), exit_bad_input);
     const bool firmware = options_plan.firmware.has_value();
     auto planner = require(plan::Planner::create(prof, options_plan));
     auto& out = std::cout;
     if (a.json) {
         // The plan file's head, then its sheets one at a time.
-        auto head = plan::plan_file_head(prof, firmware ? encode::kProtocolV3 : encode::kProtocolVersion).dump();
+        auto head = plan::plan_file_head(prof, options_plan.firmware).dump();
         head.pop_back();  // the closing brace: the sheets follow
         out << head << ",\"sheets\":[";
     }
@@ -169,10 +172,7 @@ void add_plan_command(CLI::App& app) {
     a.layout.add_to(*cmd, /*with_interpoint=*/false);
     cmd->add_option("--profile,-p", a.profile, "Printer profile JSON (default: the bundled one)");
     cmd->add_flag("--json", a.json, "Print the plan as JSON");
-    cmd->add_option("--firmware-tables", a.firmware_tables,
-                    "Plan for the reference firmware (protocol 3) with the ramp tables it was built with "
-                    "(firmware/build/ramp.json): the plan emboss --firmware-tables sends")
-        ->check(CLI::ExistingFile);
+    add_protocol_options(*cmd, a.protocol, ": the plan emboss sends to a firmware built with them");
     cmd->callback([] { run_plan(a); });
 }
 

@@ -13,6 +13,8 @@
 #include "firmware_emulator.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
+#include "protocol_choice.hpp"
+#include "transport/device.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -36,8 +38,7 @@ struct SimArgs {
     std::string firmware;  // an .ihx: the reference firmware in s51 instead of the C++ model
     std::string profile;   // the ramp tables of protocol 3; --firmware: steps/mm for the log's millimetres
     std::string pin_trace; // --firmware: keep the pin trace (VCD) here
-    std::string firmware_tables;  // a firmware build's ramp.json: the C++ model speaks protocol 3
-    int protocol = 0;             // 0: 3 with the profile's tables when it has them, else 2
+    ProtocolArgs protocol;  // the C++ model's protocol and tables
 };
 
 // One strike as a JSON line, flushed: a reader sees every strike at once. The
@@ -60,7 +61,7 @@ void log_strike(std::ofstream& log, const controller::LoggedStrike& s) {
 std::ofstream open_log(const std::string& path) {
     std::ofstream log;
     if (path.empty()) return log;
-    log.open(path, std::ios::trunc);
+    log.open(path, std::ios::app);
     if (!log) throw CommandFailed(exit_bad_input, path + ": cannot write the strike log");
     return log;
 }
@@ -137,20 +138,7 @@ void run_sim(const SimArgs& a) {
     auto options = a.server;
     // Protocol 3 by default, as the reference firmware built from the profile
     // speaks it (the same tables: profile::make_firmware_tables).
-    if (!a.firmware_tables.empty() && a.protocol == 2)
-        throw CommandFailed(exit_usage, "sim: --firmware-tables is protocol 3; leave it out for --protocol 2");
-    if (!a.firmware_tables.empty()) {
-        options.sim.firmware = require(profile::load_firmware_tables(a.firmware_tables));
-    } else if (a.protocol != 2) {
-        auto t = profile::make_firmware_tables(load_profile_arg(a.profile));
-        if (t) options.sim.firmware = *t;
-        else if (a.protocol == 3)
-            throw CommandFailed(exit_bad_input, "sim: --protocol 3: the reference firmware cannot run this profile: " +
-                                                    t.error().to_string());
-        else
-            std::cerr << "sim: speaking protocol 2, since the reference firmware cannot run this profile ("
-                      << t.error().to_string() << ")" << std::endl;
-    }
+    options.sim.firmware = protocol_tables("sim", a.protocol, load_profile_arg(a.profile));
     auto server = controller::PtyServer::open(options);
     if (!server) fail_with(server.error());
     auto& ctl = server->controller();
@@ -204,25 +192,25 @@ void add_sim_command(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(0.01, 1e6));
     cmd->add_option("--noise", args->server.noise,
                     "Per-byte rate of dropped, flipped and duplicated bytes (each)")
-        ->check(CLI::Range(0.0, 0.5));
+        ->check(CLI::Range(0.0, transport::kMaxSimNoise));
     cmd->add_option("--seed", args->server.seed, "Noise seed");
     cmd->add_option("--disconnect-at", args->server.disconnect_at_s,
                     "Kill the line this many seconds after the host's first byte ...");
     cmd->add_option("--disconnect-for", args->server.disconnect_for_s, "... for this many seconds");
-    cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(CLI::PositiveNumber);
+    cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(whole_number_from_one(std::numeric_limits<int>::max()));
     cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,
                     "Seconds (simulated) until the operator loads paper after a paper-out");
     cmd->add_option("--paper-reload-reads", args->paper_reload_reads,
                     "With --firmware and --paper-out-at 1: the operator loads paper at the firmware's Nth read of "
                     "its paper sensor (an s51 breakpoint; it reads it once per main-loop pass while paper is out)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number_from_one(std::numeric_limits<int>::max()));
     cmd->add_option("--reset-at-strike", args->reset_at_strike,
                     "Watchdog reset right after strike N (with --firmware: an s51 breakpoint resets the emulated "
-                    "chip, RAM kept)")->check(CLI::PositiveNumber);
+                    "chip, RAM kept)")->check(whole_number_from_one(std::numeric_limits<int>::max()));
     cmd->add_option("--power-loss-at-strike", args->power_loss_at_strike,
-                    "Power loss right after strike N")->check(CLI::PositiveNumber);
+                    "Power loss right after strike N")->check(whole_number_from_one(std::numeric_limits<int>::max()));
     cmd->add_option("--limit-at-strike", args->limit_at_strike,
-                    "Limit switch trips before strike N")->check(CLI::PositiveNumber);
+                    "Limit switch trips before strike N")->check(whole_number_from_one(std::numeric_limits<int>::max()));
     cmd->add_option("--mute-after-pass", args->mute_after_pass,
                     "Stop replying once N passes of the job are executed, until the host opens a new session "
                     "(the ACK is lost with the host); says \"muted\" and then \"at rest\" on stdout")
@@ -234,14 +222,7 @@ void add_sim_command(CLI::App& app) {
                     "Run the reference firmware (make -C firmware emu: firmware/build-emu/tactus-fw.ihx) in the s51 "
                     "emulator instead of the C++ model; strikes are read from its pins")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--firmware-tables", args->firmware_tables,
-                    "Speak protocol 3 as the reference firmware built with these ramp tables does (its "
-                    "build/ramp.json; HELLO_REPLY reports their id); without it, with the tables the profile makes")
-        ->check(CLI::ExistingFile);
-    cmd->add_option("--protocol", args->protocol,
-                    "2: speak the older protocol 2; 3: protocol 3 or fail (default: 3 when the reference firmware "
-                    "can run the profile, else 2 with a notice)")
-        ->check(CLI::IsMember({2, 3}));
+    add_protocol_options(*cmd, args->protocol, "; HELLO_REPLY reports their id");
     cmd->add_option("--profile,-p", args->profile,
                     "The printer profile whose ramp tables protocol 3 runs (default: the bundled one); with "
                     "--firmware: whose steps/mm the log's mm use");

@@ -26,6 +26,7 @@
 
 #include "controller/line_end.hpp"
 #include "machine/firmware_tables.hpp"
+#include "machine/reference_firmware.hpp"
 #include "machine/ram_budget.hpp"
 #include "encode/frame.hpp"
 #include "encode/messages.hpp"
@@ -76,17 +77,8 @@ struct SimOptions {
     std::optional<machine::FirmwareTables> firmware;
 };
 
-// The reference firmware's sizes (firmware/src/fw.h: a 64-byte buffer, 17 of
-// it kept for a control frame): what a v3 controller reports in HELLO_REPLY.
-namespace v3 {
-inline constexpr std::size_t kBufferBytes = 64;
-inline constexpr std::size_t kSlack = 17;
-inline constexpr std::size_t kRingBytes = kBufferBytes - kSlack;         // 47
-inline constexpr std::size_t kMaxPayload = kRingBytes * 2 / 3 + 2;       // 33: 31 bytes of ops and the check
-inline constexpr std::size_t kWindowFrames = 4;
-inline constexpr std::uint8_t kFirmwareMajor = 1;
-inline constexpr std::uint8_t kFirmwareMinor = 0;
-}  // namespace v3
+// The reference firmware's sizes, what a v3 controller reports in HELLO_REPLY.
+namespace v3 = machine::reference_firmware;
 
 class SimController final : public LineEnd {
 public:

@@ -12,14 +12,16 @@
 
 #include "common/result.hpp"
 #include "machine/controller_config.hpp"
+#include "machine/reference_firmware.hpp"
 
 namespace tactus::encode {
 
-inline constexpr std::uint8_t kProtocolVersion = 2;
+// Protocol 2 (legacy): step schedules in the job stream (encode/stream.hpp).
+inline constexpr std::uint8_t kProtocolVersion = machine::reference_firmware::kLegacyProtocol;
 // The reference firmware's protocol (docs/protocol.md): the same frames,
 // sessions and window; table moves and dot-grid passes in the job stream
 // (encode/stream_v3.hpp); a DATA check; the ramp table id in HELLO_REPLY.
-inline constexpr std::uint8_t kProtocolV3 = 3;
+inline constexpr std::uint8_t kProtocolV3 = machine::reference_firmware::kProtocol;
 
 // Frame types. Host-to-controller types are below 0x80, replies have the top bit.
 enum class FrameType : std::uint8_t {

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "common/file_io.hpp"
+#include "machine/reference_firmware.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
 
 namespace tactus::plan {
@@ -83,8 +85,12 @@ Result<motion::StepMove> move_from(const json& j, const std::string& where) {
 
 }  // namespace
 
-json plan_file_head(const profile::PrinterProfile& profile, int protocol) {
-    return {{"tactus_plan", kPlanFileFormat}, {"protocol", protocol}, {"profile", profile::to_json(profile)}};
+json plan_file_head(const profile::PrinterProfile& profile, const std::optional<machine::FirmwareTables>& firmware) {
+    json head = {{"tactus_plan", kPlanFileFormat},
+                 {"protocol", firmware ? machine::reference_firmware::kProtocol : machine::reference_firmware::kLegacyProtocol},
+                 {"profile", profile::to_json(profile)}};
+    if (firmware) head["firmware_tables"] = json::parse(profile::ramp_json(*firmware));
+    return head;
 }
 
 json sheet_to_json(const SheetPlan& sh) {
@@ -113,7 +119,7 @@ json sheet_to_json(const SheetPlan& sh) {
 }
 
 json plan_to_json(const PlanFile& file) {
-    json out = plan_file_head(file.profile, file.protocol);
+    json out = plan_file_head(file.profile, file.firmware);
     json sheets = json::array();
     for (const auto& sh : file.plan.sheets) sheets.push_back(sheet_to_json(sh));
     out["duration_s"] = file.plan.duration_s;
@@ -137,13 +143,29 @@ Result<PlanFile> plan_from_json(const json& j) {
     auto protocol = get<std::uint8_t>(j, "protocol", "plan");
     if (!protocol) return std::unexpected(protocol.error());
     file.protocol = *protocol;
+    if (file.protocol != machine::reference_firmware::kLegacyProtocol && file.protocol != machine::reference_firmware::kProtocol)
+        return fail("link protocol " + std::to_string(file.protocol) + " is not one this Tactus speaks (2 or 3)",
+                    "plan.protocol");
     if (!j.contains("profile")) return fail("missing field", "plan.profile");
     auto prof = profile::from_json(j["profile"]);
     if (!prof) return std::unexpected(located(prof.error(), "plan.profile"));
     file.profile = std::move(*prof);
+    if (file.protocol == machine::reference_firmware::kProtocol) {
+        if (!j.contains("firmware_tables"))
+            return fail("a protocol-3 plan carries the ramp tables its moves are made of; this one has none",
+                        "plan.firmware_tables");
+        auto tables = profile::parse_firmware_tables(j["firmware_tables"].dump());
+        if (!tables) return std::unexpected(located(tables.error(), "plan.firmware_tables"));
+        if (auto c = profile::check_firmware_tables(*tables, file.profile); !c)
+            return std::unexpected(located(c.error(), "plan.firmware_tables"));
+        file.firmware = std::move(*tables);
+    } else if (j.contains("firmware_tables")) {
+        return fail("a protocol-2 plan has no ramp tables (its moves are step schedules)", "plan.firmware_tables");
+    }
     plan::JobPlan& out = file.plan;
     if (auto d = get<double>(j, "duration_s", "plan")) out.duration_s = *d;
     if (!j.contains("sheets") || !j["sheets"].is_array()) return fail("missing sheets", "plan.sheets");
+    if (j["sheets"].empty()) return fail("the plan has no sheets", "plan.sheets");
     for (std::size_t si = 0; si < j["sheets"].size(); ++si) {
         const auto& js = j["sheets"][si];
         const auto ws = "plan.sheets[" + std::to_string(si) + "]";
@@ -151,6 +173,12 @@ Result<PlanFile> plan_from_json(const json& j) {
         auto idx = get<std::uint16_t>(js, "index", ws);
         if (!idx) return std::unexpected(idx.error());
         sheet.index = *idx;
+        const std::size_t previous = out.sheets.empty() ? 0 : out.sheets.back().index;
+        if (sheet.index <= previous)
+            return fail(sheet.index == 0 ? std::string("sheets are numbered from 1")
+                                         : "sheet " + std::to_string(sheet.index) + " comes after sheet " +
+                                               std::to_string(previous) + " (sheets are in order, each once)",
+                        ws + ".index");
         if (!js.contains("passes") || !js["passes"].is_array()) return fail("missing passes", ws + ".passes");
         for (std::size_t pi = 0; pi < js["passes"].size(); ++pi) {
             const auto& jp = js["passes"][pi];

@@ -41,6 +41,9 @@ struct GeneratedFile {
     std::string text;
 };
 std::vector<GeneratedFile> firmware_build_files(const machine::FirmwareTables& t, std::string_view profile_file);
+// ramp.json's text: the host's copy of a firmware build's tables, and what a
+// protocol-3 plan file carries (parse_firmware_tables reads it back).
+std::string ramp_json(const machine::FirmwareTables& t);
 // One line: ramp lengths, cruise rates, grids and id.
 std::string describe_firmware_tables(const machine::FirmwareTables& t, const PrinterProfile& p);
 

@@ -65,11 +65,13 @@ Result<PrintJob> make_firmware_print_job(const layout::PagedDocument& document, 
 
 Result<PrintJob> make_print_job(plan::PlanFile file, std::string_view device,
                                 const profile::PrinterProfile* printer_profile) {
-    if (file.protocol != encode::kProtocolVersion)
+    if (file.protocol != encode::kProtocolVersion && file.protocol != encode::kProtocolV3)
         return fail("the plan was made for link protocol version " + std::to_string(file.protocol) +
-                        "; this Tactus speaks version " + std::to_string(encode::kProtocolVersion) +
-                        ": plan the document again (`tactus-cli plan --json`)",
+                        "; this Tactus speaks versions " + std::to_string(encode::kProtocolVersion) + " and " +
+                        std::to_string(encode::kProtocolV3) + ": plan the document again (`tactus-cli plan --json`)",
                     "plan.protocol");
+    if (file.protocol == encode::kProtocolV3 && !file.firmware)
+        return fail("a protocol-3 plan needs the ramp tables it was made with", "plan.firmware_tables");
     if (printer_profile) {
         const auto diff = first_difference(file.profile, *printer_profile);
         if (!diff.empty())
@@ -79,11 +81,16 @@ Result<PrintJob> make_print_job(plan::PlanFile file, std::string_view device,
                             "without --profile (the controller is then configured with the plan's own)",
                         "plan.profile");
     }
-    return assemble(std::move(file.plan), std::move(file.profile), file.protocol, device);
+    auto job = assemble(std::move(file.plan), std::move(file.profile), file.protocol, device);
+    if (file.firmware) {
+        job.firmware = std::move(file.firmware);
+        job.timing = profile::strike_timing(job.profile);
+    }
+    return job;
 }
 
 plan::PlanFile to_plan_file(const PrintJob& job) {
-    return plan::PlanFile{job.plan, job.profile, job.protocol};
+    return plan::PlanFile{job.plan, job.profile, job.protocol, job.firmware};
 }
 
 Result<link::JobOutcome> send_print_job(link::Link& link, const PrintJob& job, std::size_t start_sheet,

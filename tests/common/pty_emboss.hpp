@@ -63,6 +63,8 @@ struct PtyEmboss {
 // and reads what it logged.
 inline PtyRun emboss_through_pty(const PtyEmboss& e) {
     auto sim = e.sim;
+    // The sim appends to its log: each run reads only its own strikes.
+    std::filesystem::remove(e.strike_log);
     sim.insert(sim.end(), {"--strike-log", e.strike_log.string()});
     Process server(sim, e.sim_stderr);
     const std::string pty = server.read_line(std::chrono::seconds(30));

@@ -315,5 +315,99 @@ TEST(SimDefaultProtocol, DryRunMeasuresTheProtocolTheDeviceSpeaks) {
     EXPECT_LT(line_bytes(v3.out), line_bytes(v2.out) / 4) << v3.out << v2.out;
 }
 
+// The "N passes on DEVICE: B bytes sent, R frames resent" line without the
+// device (a pty's name differs from run to run).
+std::string embossed_line(const std::string& out) {
+    const auto at = out.find("embossed ");
+    if (at == std::string::npos) return {};
+    const auto end = out.find('\n', at);
+    std::string line = out.substr(at, end - at);
+    const auto on = line.find(" on "), colon = line.find(": ", on);
+    if (on != std::string::npos && colon != std::string::npos) line.erase(on, colon - on);
+    return line;
+}
+
+// A saved plan embosses exactly as its document: `plan --json` plans for
+// protocol 3 by default and the file carries the profile's ramp tables, so
+// `emboss --plan` sends the same bytes and strikes the same dots as `emboss
+// DOC`, on the simulator over a pty and in process. (A protocol-2 plan file
+// sent 36 times the bytes, and a protocol-3 one was refused.)
+TEST(SavedPlan, EmbossesExactlyLikeItsDocumentOnTheSimulator) {
+    const std::string note = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+    const auto dir = fs::temp_directory_path() / ("tactus-saved-plan-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const auto plan_path = (dir / "note.plan.json").string();
+    const auto planned = test::run_captured({TACTUS_CLI, "plan", "--json", note});
+    ASSERT_EQ(planned.exit_code, 0) << planned.err;
+    std::ofstream(plan_path) << planned.out;
+    const auto j = nlohmann::json::parse(planned.out);
+    EXPECT_EQ(j["protocol"], 3);
+    EXPECT_EQ(j["firmware_tables"]["table_id"], [] {
+        char id[16];
+        std::snprintf(id, sizeof id, "%08x", test::firmware_tables().table_id);
+        return std::string(id);
+    }());
+
+    test::PtyEmboss e;
+    e.sim = {TACTUS_CLI, "sim", "--pty", "--baud", "115200", "--time-scale", "40"};
+    e.baud = "115200";
+    e.merge_output = false;
+    e.emboss = {TACTUS_CLI, "emboss", note};
+    e.strike_log = dir / "document.jsonl";
+    const auto from_document = test::emboss_through_pty(e);
+    e.emboss = {TACTUS_CLI, "emboss", "--plan", plan_path};
+    e.strike_log = dir / "plan.jsonl";
+    const auto from_plan = test::emboss_through_pty(e);
+    EXPECT_EQ(from_document.exit_code, 0) << from_document.output;
+    EXPECT_EQ(from_plan.exit_code, 0) << from_plan.output;
+    EXPECT_NE(from_plan.output.find("(protocol 3)"), std::string::npos) << from_plan.output;
+    EXPECT_EQ(embossed_line(from_plan.output), embossed_line(from_document.output));
+    EXPECT_FALSE(from_document.log.empty());
+    EXPECT_EQ(from_plan.log, from_document.log);
+
+    // In process, and measured by the dry run: the same figures.
+    for (const auto* extra : {"", "--dry-run"}) {
+        std::vector<std::string> doc_cmd{TACTUS_CLI, "emboss", "--device", "sim?speed=max", note};
+        std::vector<std::string> plan_cmd{TACTUS_CLI, "emboss", "--device", "sim?speed=max", "--plan", plan_path};
+        if (*extra) doc_cmd.push_back(extra), plan_cmd.push_back(extra);
+        const auto a = test::run_captured(doc_cmd);
+        const auto b = test::run_captured(plan_cmd);
+        EXPECT_EQ(a.exit_code, 0) << a.err;
+        EXPECT_EQ(b.exit_code, 0) << b.err;
+        EXPECT_NE(a.out.find("(protocol 3)"), std::string::npos) << a.out;
+        EXPECT_EQ(b.out, a.out) << extra;
+    }
+    fs::remove_all(dir);
+}
+
+// Protocol 2 is legacy, planned only on request, and a plan is never sent to
+// an embosser speaking the other protocol: the refusal says how to plan again.
+TEST(SavedPlan, ALegacyPlanIsMadeOnRequestAndRefusedByAProtocol3Embosser) {
+    const std::string note = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
+    const auto dir = fs::temp_directory_path() / ("tactus-legacy-plan-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const auto v2 = test::run_captured({TACTUS_CLI, "plan", "--json", "--protocol", "2", note});
+    ASSERT_EQ(v2.exit_code, 0) << v2.err;
+    EXPECT_EQ(nlohmann::json::parse(v2.out)["protocol"], 2);
+    std::ofstream(dir / "v2.json") << v2.out;
+    auto r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max", "--plan", (dir / "v2.json").string()});
+    EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+    EXPECT_NE(r.err.find("the plan was made for protocol 2 (legacy), but the embosser speaks protocol 3"),
+              std::string::npos)
+        << r.err;
+    r = test::run_captured(
+        {TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=2", "--plan", (dir / "v2.json").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("(protocol 2)"), std::string::npos) << r.out;
+    // A protocol-3 plan on a protocol-2 embosser: refused the other way round.
+    const auto v3 = test::run_captured({TACTUS_CLI, "plan", "--json", note});
+    std::ofstream(dir / "v3.json") << v3.out;
+    r = test::run_captured(
+        {TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=2", "--plan", (dir / "v3.json").string()});
+    EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+    EXPECT_NE(r.err.find("plan the document again with --protocol 2"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tactus

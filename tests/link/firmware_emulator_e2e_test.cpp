@@ -113,6 +113,27 @@ protected:
     fs::path dir_;
 };
 
+// A plan saved by `plan --json` (protocol 3, the build's tables in the file)
+// strikes on the firmware exactly what its document's plan says: the file
+// carries every field the encoder reads, and the tables its moves are made of.
+TEST_F(FirmwareEndToEnd, ASavedPlanStrikesWhatItsDocumentPlans) {
+    const auto saved = test::run_captured(
+        {TACTUS_CLI, "plan", "--json", "--firmware-tables", TACTUS_FIRMWARE_EMU_TABLES, kNote});
+    ASSERT_EQ(saved.exit_code, 0) << saved.err;
+    std::ofstream(dir_ / "note.plan.json") << saved.out;
+    test::PtyEmboss e;
+    e.sim = {TACTUS_CLI, "sim", "--firmware", TACTUS_FIRMWARE_IHX, "--pty"};
+    e.emboss = {TACTUS_CLI, "emboss", "--plan", (dir_ / "note.plan.json").string()};
+    e.strike_log = dir_ / "strikes.jsonl";
+    e.sim_stderr = (dir_ / "sim.err").string();
+    const auto r = test::emboss_through_pty(e);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("(protocol 3)"), std::string::npos) << r.output;
+    const auto want = controller::planned_strikes(planned());
+    ASSERT_FALSE(want.empty());
+    EXPECT_EQ(r.log, want);
+}
+
 // The strikes the pins show are the plan's, and every step and hammer edge
 // (down and up) comes at the plan's time, to the machine cycle: the step
 // interrupt compensates its own latency, so each edge comes

@@ -14,11 +14,13 @@
 
 #include "encode/messages.hpp"
 #include "encode/stream.hpp"
+#include "encode/stream_v3.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/plan_file.hpp"
 #include "plan/planner.hpp"
 #include "profile/page_geometry.hpp"
 #include "profile/profile.hpp"
+#include "../common/firmware_tables_fixture.hpp"
 #include "../common/test_plans.hpp"
 
 namespace tactus::plan {
@@ -125,6 +127,71 @@ TEST(PlanFileRoundTrip, FormatOneIsRefusedWithTheReason) {
     const auto no_profile = plan_from_json(j);
     ASSERT_FALSE(no_profile);
     EXPECT_EQ(no_profile.error().where, "plan.profile");
+}
+
+// A protocol-3 plan (the reference firmware's table moves) carries the ramp
+// tables it was made with, and encodes to the same v3 stream after a round
+// trip through a file; a file whose tables are not its profile's is refused.
+TEST(PlanFileRoundTrip, AProtocol3PlanCarriesItsTablesAndEncodesToTheSameBytes) {
+    const auto prof = profile::default_profile();
+    const auto& tables = test::firmware_tables();
+    pipeline::PipelineOptions o;
+    o.layout.geometry = profile::page_geometry(prof);
+    auto doc = pipeline::lay_out_file(fs::path(TACTUS_RESOURCES_DIR) / "samples" / "firmware-note.md", o);
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    PlanOptions po;
+    po.firmware = tables;
+    auto plan = plan_job(*doc, prof, po);
+    ASSERT_TRUE(plan) << plan.error().to_string();
+    const PlanFile file{*plan, prof, encode::kProtocolV3, tables};
+    const auto j = plan_to_json(file);
+    EXPECT_EQ(j["protocol"], 3);
+    auto back = plan_from_json(nlohmann::json::parse(j.dump()));
+    ASSERT_TRUE(back) << back.error().to_string();
+    EXPECT_EQ(back->protocol, encode::kProtocolV3);
+    ASSERT_TRUE(back->firmware.has_value());
+    EXPECT_EQ(*back->firmware, tables);
+    const auto timing = profile::strike_timing(prof);
+    const auto a = encode::encode_job_v3(*plan, tables, timing, 7, {});
+    const auto b = encode::encode_job_v3(back->plan, *back->firmware, timing, 7, {});
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(b->bytes, a->bytes);
+
+    auto no_tables = j;
+    no_tables.erase("firmware_tables");
+    auto bad = plan_from_json(no_tables);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "plan.firmware_tables");
+    auto other_profile = j;
+    other_profile["profile"]["carriage"]["v_max_mm_s"] = 40.0;
+    bad = plan_from_json(other_profile);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where.rfind("plan.firmware_tables", 0), 0U) << bad.error().to_string();
+}
+
+// The sheets of a plan file are its job: at least one, numbered from 1 in
+// order, each once. (An empty list or a sheet 0 used to fail later with
+// "start_sheet: sheet 1 is not in the plan", and two sheets of one number
+// were embossed.)
+TEST(PlanFileRoundTrip, SheetsAreAtLeastOneAndNumberedInOrderEachOnce) {
+    const auto j = plan_to_json({test::make_plan(2, 1, 2), profile::default_profile(), encode::kProtocolVersion});
+    ASSERT_TRUE(plan_from_json(j));
+    auto empty = j;
+    empty["sheets"] = nlohmann::json::array();
+    auto bad = plan_from_json(empty);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "plan.sheets");
+    auto zero = j;
+    zero["sheets"][0]["index"] = 0;
+    bad = plan_from_json(zero);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "plan.sheets[0].index");
+    EXPECT_EQ(bad.error().message, "sheets are numbered from 1");
+    auto twice = j;
+    twice["sheets"][1]["index"] = twice["sheets"][0]["index"];
+    bad = plan_from_json(twice);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "plan.sheets[1].index");
 }
 
 }  // namespace
