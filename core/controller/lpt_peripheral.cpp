@@ -99,9 +99,14 @@ void LptPeripheral::tick() {
             return;
         case Mode::high_shown:
             if (ctl_.n_auto_fd) {
+                // The byte is over: nDataAvail for the next, XFlag (Select),
+                // PError and Busy low, as after the negotiation (the firmware
+                // sets all four status lines at once: firmware/src/lpt.c).
                 outgoing_.pop_front();
                 st_.n_ack = true;
                 st_.busy = false;
+                st_.paper_error = false;
+                st_.select = false;
                 st_.n_fault = outgoing_.empty();
                 mode_ = Mode::idle;
             }
