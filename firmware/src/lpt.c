@@ -24,8 +24,10 @@ static void fill(void) {
 }
 
 /* The status lines P2.0-P2.3 (nFault, Select, PError, Busy) to v's low
- * bits, P2's upper half kept: two single-instruction writes (ORL, ANL), so
- * the strobe interrupt's Busy is never overwritten with a stale copy. */
+ * bits, P2's upper half kept: two single-instruction writes (ORL, ANL, which
+ * read the latches, not the pins), so the strobe interrupt's Busy is never
+ * overwritten with a stale copy, and the input pins' latches stay 1. Never
+ * with a constant 0 (see LM_TERM_DONE). */
 #define LINES(v, keep)                       \
     do {                                     \
         P2 |= (v);                           \
@@ -142,7 +144,9 @@ void lpt_poll(void) {
     if (!LPT_HOSTBUSY) return;
     if (m == LM_TERM_DONE) { /* event 28: back in compatibility mode */
         lpt_mode = LM_COMPAT;
-        LINES(0, 0xF7); /* Busy low */
+        LPT_BUSY = 0; /* not LINES(0, ...): SDCC writes P2 |= 0 as MOV P2,P2,
+                       * which copies the pins (the host's inputs, low) into
+                       * the latches and holds them low for good */
         show_condition();
         return;
     }
