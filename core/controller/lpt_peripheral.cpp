@@ -118,7 +118,10 @@ void LptPeripheral::tick() {
             }
             return;
         case Mode::term_done:
-            if (ctl_.n_auto_fd) {  // event 28: back in compatibility mode
+            // Event 28 (HostBusy high): back in compatibility mode. The host
+            // may already be negotiating again (nSelectIn high, nAutoFd low):
+            // the event has no answer from this side, and a poll can miss it.
+            if (ctl_.n_auto_fd || ctl_.n_select_in) {
                 mode_ = Mode::compat;
                 st_.busy = false;
                 show_condition();

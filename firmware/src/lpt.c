@@ -141,8 +141,11 @@ void lpt_poll(void) {
         }
         return;
     }
-    if (!LPT_HOSTBUSY) return;
-    if (m == LM_TERM_DONE) { /* event 28: back in compatibility mode */
+    if (m == LM_TERM_DONE) {
+        /* Event 28 (HostBusy high): back in compatibility mode. The host may
+         * already be negotiating again (1284 Active high, HostBusy low): the
+         * event has no answer from this side, and a poll can miss it. */
+        if (!LPT_HOSTBUSY && !LPT_ACTIVE) return;
         lpt_mode = LM_COMPAT;
         LPT_BUSY = 0; /* not LINES(0, ...): SDCC writes P2 |= 0 as MOV P2,P2,
                        * which copies the pins (the host's inputs, low) into
@@ -150,6 +153,7 @@ void lpt_poll(void) {
         show_condition();
         return;
     }
+    if (!LPT_HOSTBUSY) return;
     if (m == LM_LOW_SHOWN) { /* event 10 */
         LPT_ACK = 1;         /* event 11 */
         lpt_mode = LM_LOW_DONE;

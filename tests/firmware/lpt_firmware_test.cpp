@@ -18,7 +18,7 @@
 #include "transport/lpt_port.hpp"
 
 extern "C" {
-#include "8052.h"
+#include "board.h"
 #include "fw.h"
 #include "lpt.h"
 #include "uart.h"
@@ -88,7 +88,8 @@ class FirmwareSide final : public Side {
 public:
     FirmwareSide() {
         g_replies.clear();
-        rx_w = rx_r = 0;
+        rx_w = 0;
+        rx_r = 0;
         fw_faults = 0;
         fw_state = ST_IDLE;
         native_p2.byte = 0xFF;  // the port's reset state
@@ -110,7 +111,7 @@ public:
             if (LPT_BUSY && lpt_mode == LM_COMPAT) LPT_BUSY = 0;  // io_rx: room again
         } else {
             received_.push_back(rxq[rx_r & (RXQ - 1)]);
-            ++rx_r;
+            rx_r = static_cast<std::uint8_t>(rx_r + 1);
         }
         lpt_poll();
     }
@@ -207,7 +208,9 @@ TEST_P(LptBothSides, NibbleModeReadsTheControllersBytesAndReturnsToCompatibility
     auto n = port_->read(buf, std::chrono::milliseconds(2));
     ASSERT_TRUE(n) << n.error().to_string();
     EXPECT_EQ(*n, 0U);
-    // A reply that comes while the host is away is read at its next poll.
+    // A reply that comes while the host is away is read at its next poll,
+    // which negotiates again at once after the last termination (the
+    // controller must not wait for HostBusy high there).
     side_->send({0x42, 0x43});
     EXPECT_EQ(read_all(2), (std::vector<std::uint8_t>{0x42, 0x43}));
 }
@@ -224,9 +227,11 @@ TEST_P(LptBothSides, StatusLinesCarryTheCondition) {
     ASSERT_TRUE(c);
     EXPECT_FALSE(c->paper_out);
     EXPECT_TRUE(c->fault);
-    // The condition is shown again after a nibble-mode read.
+    // The condition is shown again after a nibble-mode read (once the
+    // controller has seen the end of it: one poll).
     side_->send({0x00});
     EXPECT_EQ(read_all(1), (std::vector<std::uint8_t>{0x00}));
+    side_->tick();
     c = port_->condition();
     ASSERT_TRUE(c);
     EXPECT_FALSE(c->paper_out);
