@@ -99,9 +99,14 @@ void LptPeripheral::tick() {
             return;
         case Mode::high_shown:
             if (ctl_.n_auto_fd) {
+                // The byte is over: nDataAvail for the next, XFlag (Select),
+                // PError and Busy low, as after the negotiation (the firmware
+                // sets all four status lines at once: firmware/src/lpt.c).
                 outgoing_.pop_front();
                 st_.n_ack = true;
                 st_.busy = false;
+                st_.paper_error = false;
+                st_.select = false;
                 st_.n_fault = outgoing_.empty();
                 mode_ = Mode::idle;
             }
@@ -113,7 +118,10 @@ void LptPeripheral::tick() {
             }
             return;
         case Mode::term_done:
-            if (ctl_.n_auto_fd) {  // event 28: back in compatibility mode
+            // Event 28 (HostBusy high): back in compatibility mode. The host
+            // may already be negotiating again (nSelectIn high, nAutoFd low):
+            // the event has no answer from this side, and a poll can miss it.
+            if (ctl_.n_auto_fd || ctl_.n_select_in) {
                 mode_ = Mode::compat;
                 st_.busy = false;
                 show_condition();

@@ -5,6 +5,8 @@
 // fault and online on the status lines, and answer IEEE 1284 nibble-mode
 // negotiation to send its reply frames back four bits at a time.
 // tick() is one pass of the firmware's port poll: it reacts to the host's lines.
+// The reference firmware runs the same state machine (firmware/src/lpt.c);
+// tests/firmware/lpt_firmware_test.cpp drives both with the host's LptPort.
 #include <cstdint>
 #include <deque>
 #include <span>

@@ -13,14 +13,21 @@
 #define MOTOR_EN P1_6 /* stepper drivers enable, active low */
 #define LED P1_7      /* status LED, active low */
 #define LIMIT P3_3    /* INT1: carriage limit (home) switch, low when closed */
-#define LPT_BUSY P3_4 /* Centronics BUSY, high = busy */
 #define LPT_ACK P3_5  /* Centronics nACK, low pulse after each byte */
 #define PAPER P3_6    /* paper sensor, high = paper present */
 #define HAM_SENSE P3_7 /* hammer-home sensor, high = both hammers back */
-/* P3.2 (INT0) is Centronics nSTROBE; P0 is the Centronics data byte (with
- * pull-ups); P2.0 nFAULT, P2.1 PERROR, P2.2 SELECT toward the PC. */
+/* P0 is the Centronics data byte (with pull-ups). Toward the PC, P2.0-P2.3:
+ * nFAULT, SELECT, PERROR, BUSY, the order of the bits they carry in IEEE 1284
+ * nibble mode (0-3), so a nibble or the condition is one write to P2; nACK
+ * (P3.5) is PtrClk there. From the PC: P3.2 (INT0) nSTROBE, P2.4 nAUTOFD
+ * (HostBusy in nibble mode), P2.5 nSELECTIN (1284 Active).
+ * firmware/README.md, "Pin map". */
 #define LPT_NFAULT P2_0
-#define LPT_PERROR P2_1
-#define LPT_SELECT P2_2
+#define LPT_SELECT P2_1
+#define LPT_PERROR P2_2
+#define LPT_BUSY P2_3
+#define LPT_HOSTBUSY P2_4
+#define LPT_ACTIVE P2_5
+#define LPT_STROBE P3_2
 
 #endif

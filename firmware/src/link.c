@@ -105,8 +105,9 @@ static void nak(uint8_t why) {
     due();
 }
 
-/* Only the serial interrupt calls what follows (SDCC's functions are not
- * reentrant: nothing here is shared with the main loop). */
+/* Only the main loop calls what follows, for the UART (io_tx_pump) or the
+ * parallel port (lpt.c), never both at once: SDCC's functions are not
+ * reentrant. */
 static uint8_t hi_of(uint16_t v) {
     rp_stash = v;
     return (uint8_t)(v >> 8);
@@ -115,11 +116,7 @@ static uint8_t hi_of(uint16_t v) {
 /* Byte k of the 8-byte short status every ACK, NAK and STATUS_REPLY starts with. */
 static uint8_t ack_field(uint8_t k) {
     switch (k) {
-        case 0: {
-            uint8_t used = (uint8_t)(fw_ops_end - fw_ops_head);
-            reported = used >= FW_RING_BYTES ? 0 : (uint8_t)(FW_RING_BYTES - used);
-            return reported;
-        }
+        case 0: return reported = fw_ring_free();
         case 1: return hi_of(fw_executed);
         case 3: return fw_state;
         case 4: return fw_faults;
@@ -137,7 +134,10 @@ static uint8_t payload_byte(uint8_t k) {
         case T_STATUS_REPLY:
             if (k < 8) return ack_field(k);
             switch (k) {
-                case 8: return (uint8_t)(fw_flags | (fw_paper_present() ? FL_PAPER : 0));
+                case 8:
+                    k = fw_flags;
+                    if (fw_paper_present()) k |= FL_PAPER;
+                    return k;
                 case 9: return hi_of(fw_job_id);
                 case 11: return hi_of(fw_sheet);
                 case 13: return hi_of(fw_pass_index);
@@ -179,12 +179,7 @@ static uint8_t payload_byte(uint8_t k) {
 }
 
 static uint8_t rp_crc_byte(uint8_t b) {
-    uint8_t i;
-    rp_crc ^= (uint16_t)((uint16_t)b << 8);
-    for (i = 0; i < 8; ++i) {
-        if (rp_crc & 0x8000) rp_crc = (uint16_t)((uint16_t)(rp_crc << 1) ^ 0x1021U);
-        else rp_crc = (uint16_t)(rp_crc << 1);
-    }
+    rp_crc = crc16_update(rp_crc, b); /* the frame CRC's own routine (crc16.c) */
     return b;
 }
 
@@ -425,6 +420,15 @@ uint16_t pass_crc_update(uint16_t c, uint8_t b) {
 
 static void accept(void) { ++expected; }
 
+/* PAUSE, or a new session in the middle of a job: a job under way pauses,
+ * at once or (a phase under way) at its next safe point. */
+static void hold_still(void) {
+    if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
+        if (exec_busy()) fw_pause_req = 1;
+        else fw_state = ST_PAUSED;
+    }
+}
+
 static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
     uint16_t n;
     if (len != 3 || p[2] != FW_PROTOCOL) {
@@ -438,12 +442,7 @@ static void on_hello(const FW_IDATA uint8_t *p, uint8_t len, uint8_t seq) {
         /* A new session: the host re-sends the job from the progress it is
          * told, so whatever is buffered is dropped and the job holds still. */
         fw_flush();
-        if (fw_flags & FL_JOB_ACTIVE) {
-            if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
-                if (exec_busy()) fw_pause_req = 1;
-                else fw_state = ST_PAUSED;
-            }
-        }
+        if (fw_flags & FL_JOB_ACTIVE) hold_still();
         /* The rest of a pass under way was in the ring: without this the
          * executor took the new host's stream as that pass's strikes. */
         exec_drop_pass();
@@ -495,15 +494,19 @@ static void on_data(FW_IDATA uint8_t *frame, uint8_t len) {
     fw_ack();
 }
 
-#define BE16(p, i) ((uint16_t)(((uint16_t)(p)[i] << 8) | (p)[(i) + 1]))
+static uint16_t cfg_be16(const FW_IDATA uint8_t *p) {
+    return (uint16_t)(((uint16_t)p[0] << 8) | p[1]);
+}
+
 static uint8_t on_configure(const FW_IDATA uint8_t *p, uint8_t len) {
-    /* A homing interval below what the step interrupt can keep up with, or a
-     * hammer pulse of zero, would silently misbehave: refuse it. */
-    if (len != 10 || BE16(p, 0) == 0 || BE16(p, 2) < 64 || BE16(p, 4) == 0) return 0;
-    cfg_travel = BE16(p, 0);
-    cfg_home_iv = BE16(p, 2);
-    cfg_hammer = BE16(p, 4);
-    cfg_settle = BE16(p, 6);
+    /* A homing interval below what the step interrupt can keep up with (64),
+     * or a travel or hammer time of zero, would silently misbehave: refuse
+     * it (big-endian fields, tested byte by byte). */
+    if (len != 10 || !(p[0] | p[1]) || (!p[2] && p[3] < 64) || !(p[4] | p[5])) return 0;
+    cfg_travel = cfg_be16(p);
+    cfg_home_iv = cfg_be16(p + 2);
+    cfg_hammer = cfg_be16(p + 4);
+    cfg_settle = cfg_be16(p + 6);
     /* p[8..9], the keep-alive, is accepted but not enforced yet (README, "Not done"). */
     fw_flags |= FL_CONFIGURED;
     return 1;
@@ -553,12 +556,7 @@ void fw_frame(FW_IDATA uint8_t *f) {
     }
     accept();
     switch (type) {
-        case T_PAUSE:
-            if (fw_state == ST_RUNNING || fw_state == ST_WAITING || fw_state == ST_HOMING) {
-                if (exec_busy()) fw_pause_req = 1;
-                else fw_state = ST_PAUSED;
-            }
-            break;
+        case T_PAUSE: hold_still(); break;
         case T_RESUME:
             fw_pause_req = 0;
             fw_faults &= (uint8_t) ~(F_HOST_TIMEOUT | F_LIMIT | F_HAMMER | F_STREAM | F_UNDERRUN);

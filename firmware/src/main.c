@@ -4,6 +4,7 @@
 #include "decoder.h"
 #include "exec.h"
 #include "link.h"
+#include "lpt.h"
 #include "motion.h"
 #include "uart.h"
 
@@ -89,6 +90,7 @@ void main(void) {
     exec_init();
     motion_init();
     io_init();
+    lpt_init();
     EA = 1;
     for (;;) {
 #ifdef FW_DIAG_RX
@@ -106,6 +108,7 @@ void main(void) {
         fw_poll_paper();
         fw_report_room();
         io_tx_pump();
+        lpt_poll();
 #if defined(FW_DIAG_RX)
 #elif defined(FW_DIAG_PASS)
         LED = !LED; /* diagnostic: P1.7 toggles once a main-loop pass */

@@ -3,6 +3,7 @@
 
 #include "board.h"
 #include "link.h"
+#include "lpt.h"
 
 /* Baud from timer 1 in mode 2 with SMOD=1: 11.0592 MHz / (16 x 12 x (256 - TH1)).
  * SMOD=1 is also what s51 honours (it ignores SMOD=0). */
@@ -11,9 +12,11 @@
 #endif
 #define TH1_RELOAD (256 - (11059200UL / (16UL * 12UL * FW_BAUD)))
 
-#define RXQ 8 /* power of two; the main loop drains it every few hundred cycles */
-static __idata uint8_t rxq[RXQ];
-static volatile uint8_t rx_w, rx_r;
+__idata uint8_t rxq[RXQ];
+volatile uint8_t rx_w, rx_r;
+#ifdef FW_EMU
+uint8_t fw_rx_dropped;
+#endif
 /* One byte handed from the main loop to the transmitter: the serial
  * interrupt calls nothing, so it needs little stack (check-size.py). */
 static volatile uint8_t tx_next;
@@ -24,6 +27,7 @@ void io_init(void) {
 #ifdef FW_EMU
     fw_rx_dropped = 0;
 #endif
+    fw_via_lpt = 0;
     tx_busy = 0;
     tx_have = 0;
     TMOD = (TMOD & 0x0F) | 0x20; /* timer 1: 8-bit auto-reload */
@@ -39,34 +43,10 @@ void io_init(void) {
     EX0 = 1;
 }
 
-/* A byte that finds the queue full is dropped: the frame it belongs to fails
- * its CRC and the host sends it again. The emulator build counts them
- * (STATUS_REPLY's byte 23, saturating): the main loop must never let the
- * queue fill (firmware/README.md, "Main loop"). */
-#ifdef FW_EMU
-uint8_t fw_rx_dropped;
-#define RX_DROPPED() \
-    do {             \
-        if (++fw_rx_dropped == 0) fw_rx_dropped = 255; \
-    } while (0)
-#else
-#define RX_DROPPED() \
-    do {             \
-    } while (0)
-#endif
-#define RX_PUT(b)                                  \
-    do {                                           \
-        if ((uint8_t)(rx_w - rx_r) < RXQ) {        \
-            rxq[rx_w & (RXQ - 1)] = (b);           \
-            ++rx_w;                                \
-        } else {                                   \
-            RX_DROPPED();                          \
-        }                                          \
-    } while (0)
-
 void uart_isr(void) __interrupt(SI0_VECTOR) {
     if (RI) {
         RI = 0;
+        fw_via_lpt = 0; /* replies go back the way the bytes came */
         RX_PUT(SBUF);
     }
     if (TI) {
@@ -80,24 +60,11 @@ void uart_isr(void) __interrupt(SI0_VECTOR) {
     }
 }
 
-/* Centronics strobe: latch the byte, acknowledge, and stay busy while the
- * queue is nearly full (the PC waits on BUSY before the next strobe). */
-void strobe_isr(void) __interrupt(IE0_VECTOR) {
-    LPT_BUSY = 1;
-    RX_PUT(P0);
-    LPT_ACK = 0;
-    __asm nop __endasm;
-    __asm nop __endasm;
-    __asm nop __endasm;
-    __asm nop __endasm;
-    LPT_ACK = 1;
-    if ((uint8_t)(rx_w - rx_r) < RXQ - 2) LPT_BUSY = 0;
-}
-
 int16_t io_rx(void) {
     uint8_t b;
     if (rx_r == rx_w) {
-        if (LPT_BUSY) LPT_BUSY = 0; /* room again */
+        /* Room again (in compatibility mode: in nibble mode Busy is a data line). */
+        if (LPT_BUSY && lpt_mode == LM_COMPAT) LPT_BUSY = 0;
         return -1;
     }
     b = rxq[rx_r & (RXQ - 1)];
@@ -109,7 +76,7 @@ int16_t io_rx(void) {
  * loop hands over the next byte whenever the last one has gone. */
 void io_tx_pump(void) {
     int16_t b;
-    if (tx_have) return;
+    if (tx_have || fw_via_lpt) return; /* the parallel port takes them (lpt.c) */
     b = fw_reply_byte();
     if (b < 0) return;
     tx_next = (uint8_t)b;

@@ -33,6 +33,12 @@ unsigned char _sdcc_external_startup(void) {
 }
 uint8_t fw_paper_present(void) { return 1; }
 uint8_t fw_stack_used(void) { return 0; }
+/* What motion.c, uart.c and lpt.c take from the link layer, which the probe
+ * leaves out (the whole firmware and this main would not fit in 8 KB): no
+ * replies, an idle controller, the configuration set below. */
+int16_t fw_reply_byte(void) { return -1; }
+uint8_t fw_state, fw_faults;
+uint16_t cfg_travel, cfg_home_iv, cfg_hammer, cfg_settle;
 
 __data uint8_t pr_k;    /* the delay, 0..127 cycles */
 __data uint8_t pr_t;    /* TL2 last read */

@@ -22,8 +22,9 @@ void exec_init(void);
 void exec_poll(void);
 
 volatile uint8_t P1_0, P1_1, P1_2, P1_3, P1_4, P1_5, P1_6, P1_7;
-volatile uint8_t P2_0, P2_1, P2_2;
-volatile uint8_t P3_3, P3_4, P3_5, P3_6, P3_7;
+volatile union native_port native_p2;
+volatile uint8_t P0;
+volatile uint8_t P3_2, P3_3, P3_4, P3_5, P3_6, P3_7;
 volatile uint8_t mv_done, mv_limit;
 }
 
