@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Set up, build and run every test: the default build (GCC, warnings are
-# errors, every test), then one clang build with AddressSanitizer and UBSan
-# that runs core's tests and the fuzz targets (libFuzzer, each for a bounded
-# time). Each stage's wall time is printed as it ends and in a table at the
+# errors, every test), an AddressSanitizer/UBSan build of core, the CLI and
+# their tests, and the fuzz targets (clang, libFuzzer: only they are built
+# there, each run for its share of a bounded time). Each stage's wall time is printed as it ends and in a table at the
 # end (bench/ci/RESULTS.md keeps the figures of cold runs).
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
@@ -55,16 +55,20 @@ cmake --build build/default -j"$jobs"
 stage "default tests"
 ctest --preset default -j"$jobs"
 
-stage "AddressSanitizer + UBSan build (clang; core, its tests, the fuzz targets)"
+stage "AddressSanitizer + UBSan build (core, the CLI, their tests)"
 cmake --preset asan >/dev/null
 cmake --build build/asan -j"$jobs"
 
 stage "AddressSanitizer + UBSan tests"
 ctest --preset asan -j"$jobs"
 
+stage "fuzz build (clang, libFuzzer: core and the fuzz targets)"
+cmake --preset fuzz >/dev/null
+cmake --build build/fuzz -j"$jobs" --target fuzz_targets
+
 stage "fuzz targets (libFuzzer, ${fuzz_total} s in all)"
 targets=()
-for target in build/asan/tests/fuzz/fuzz_*; do
+for target in build/fuzz/tests/fuzz/fuzz_*; do
   [ -x "$target" ] && targets+=("$target")
 done
 parallel=$(( jobs >= 2 ? 2 : 1 ))
