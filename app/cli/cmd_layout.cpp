@@ -19,6 +19,7 @@ struct LayoutCommandArgs {
     std::string to;
     std::string output;
     bool summary = false;
+    std::string brf_volumes = "breaks";
 };
 
 std::string today() {
@@ -52,6 +53,9 @@ void print_summary(std::ostream& out, const layout::PagedDocument& doc, const pi
         << "pages:      " << doc.pages.size() << " braille pages on " << doc.sheet_count()
         << " sheets\n"
         << "content:    " << lines << " lines, " << cells << " cells, " << dots << " dots\n";
+    std::size_t volumes = 0;
+    for (const auto& s : doc.sections) volumes += s.starts_volume ? 1 : 0;
+    if (volumes > 1) out << "volumes:    " << volumes << '\n';
     for (const auto& w : doc.warnings) out << "warning:    " << w << '\n';
 }
 
@@ -73,6 +77,26 @@ void run_layout(const LayoutCommandArgs& a) {
         require(exporter::write_document(doc, format, meta, std::cout));
         return;
     }
+    if (a.brf_volumes == "files" && format == exporter::ExportFormat::brf) {
+        // One BRF per volume: NAME-1.brf, NAME-2.brf, ... beside the output name.
+        std::vector<std::size_t> starts;
+        for (const auto& s : doc.sections)
+            if (s.starts_volume) starts.push_back(s.first_page);
+        if (starts.empty() || starts.front() != 0) starts.insert(starts.begin(), 0);
+        const std::filesystem::path out(a.output);
+        for (std::size_t v = 0; v < starts.size(); ++v) {
+            layout::PagedDocument part;
+            part.geometry = doc.geometry;
+            const auto end = v + 1 < starts.size() ? starts[v + 1] : doc.pages.size();
+            part.pages.assign(doc.pages.begin() + static_cast<std::ptrdiff_t>(starts[v]),
+                              doc.pages.begin() + static_cast<std::ptrdiff_t>(end));
+            const auto name = (out.parent_path() / (out.stem().string() + "-" + std::to_string(v + 1) + out.extension().string())).string();
+            require(exporter::export_to_file(part, format, meta, name), exit_failure);
+            std::cerr << "wrote " << name << ": volume " << v + 1 << " of " << starts.size() << ", "
+                      << part.pages.size() << " pages\n";
+        }
+        return;
+    }
     require(exporter::export_to_file(doc, format, meta, a.output), exit_failure);
     std::cerr << "wrote " << a.output << ": " << doc.pages.size() << " pages on "
               << doc.sheet_count() << " sheets (" << doc.geometry.cells_per_line << "x"
@@ -89,6 +113,10 @@ void add_layout_command(CLI::App& app) {
     cmd->add_option("--to", args->to, "Output format: brf, pef or unicode")
         ->check(CLI::IsMember({"brf", "pef", "unicode"}));
     cmd->add_option("-o,--output", args->output, "Output file (written atomically); default stdout");
+    cmd->add_option("--brf-volumes", args->brf_volumes,
+                    "With --volumes and --to brf: 'breaks' (one file, volumes one after another on new sheets) "
+                    "or 'files' (one file per volume: NAME-1.brf, NAME-2.brf, ...)")
+        ->check(CLI::IsMember({"breaks", "files"}))->capture_default_str();
     cmd->add_flag("--summary", args->summary, "Print a summary of the pages instead of (or before) the output");
     cmd->callback([args] { run_layout(*args); });
 }

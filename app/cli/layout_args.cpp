@@ -13,7 +13,7 @@
 namespace tactus::cli {
 
 void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
-    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .brf or .pef")->required();
+    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf or .pef")->required();
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
     std::string presets;
@@ -42,8 +42,25 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--margin-right", margin_right, "Right margin in cells");
     cmd.add_option("--margin-top", margin_top, "Top margin in lines");
     cmd.add_option("--margin-bottom", margin_bottom, "Bottom margin in lines");
-    cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, brf, pef")
+    cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, html, epub, dtbook, brf, pef")
         ->capture_default_str();
+    cmd.add_flag("--volumes", volumes,
+                 "Lay out as a braille book (BANA Braille Formats): volumes split at chapters, a title page, "
+                 "contents with print and braille page numbers, running heads, p-numbered preliminary pages");
+    cmd.add_option("--sheets-per-volume", book.sheets_per_volume, "With --volumes: sheets per volume, about")
+        ->capture_default_str()->check(CLI::Range(2, 100000));
+    cmd.add_option("--contents-depth", book.contents_depth, "With --volumes: heading levels in the contents")
+        ->capture_default_str()->check(CLI::Range(1, 6));
+    cmd.add_option("--split-level", book.split_level, "With --volumes: heading levels a volume may start at")
+        ->capture_default_str()->check(CLI::Range(1, 6));
+    cmd.add_flag("--no-title-page", no_title_page, "With --volumes: no title page");
+    cmd.add_flag("--no-contents", no_contents, "With --volumes: no contents pages");
+    cmd.add_flag("--no-running-heads", no_running_heads, "With --volumes: no running heads");
+    cmd.add_option("--book-title", book.title, "With --volumes: the title (default: the document's)");
+    cmd.add_option("--book-author", book.author, "With --volumes: the author (default: the document's)");
+    cmd.add_option("--book-publisher", book.publisher, "With --volumes: the publisher (default: the document's)");
+    cmd.add_option("--book-year", book.year, "With --volumes: the year (default: the document's date)");
+    cmd.add_option("--transcriber", book.transcriber, "With --volumes: \"Transcribed by\" on the title page");
     cmd.add_option("--encoding", encoding,
                    "Text encoding override (e.g. UTF-8, Big5, GB18030, windows-1252); default: detect");
 }
@@ -74,6 +91,13 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     o.layout.top_margin = margin_top;
     o.layout.bottom_margin = margin_bottom;
     require(validate(o.layout), exit_usage);
+    if (volumes) {
+        auto b = book;
+        b.title_page = !no_title_page;
+        b.contents = !no_contents;
+        b.running_heads = !no_running_heads;
+        o.book = b;
+    }
     return o;
 }
 

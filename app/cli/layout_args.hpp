@@ -28,6 +28,10 @@ struct LayoutArgs {
     bool no_print_pages = false;
     int indent = 2;
     int margin_left = 0, margin_right = 0, margin_top = 0, margin_bottom = 0;
+    // Book layout (pipeline/book_layout.hpp): --volumes and its rules.
+    bool volumes = false;
+    pipeline::BookOptions book;
+    bool no_title_page = false, no_contents = false, no_running_heads = false;
 
     void add_to(CLI::App& cmd, bool with_interpoint = true);
     // Validated options; a bad value ends the command with a usage error.

@@ -26,6 +26,10 @@ struct Span {
     // The text is a note's reference ("1"): the translator writes it with the
     // note reference indicator in front (docs/formats.md, "Notes").
     bool note_reference = false;
+    // The passage's language as the source marks it (BCP 47, from HTML lang,
+    // xml:lang); empty = the document's own. Kept for choosing a table per
+    // passage; the translator does not act on it yet.
+    std::string language = {};
     bool operator==(const Span&) const = default;
 };
 
@@ -121,7 +125,11 @@ struct Document {
                                    // ("\n", "\r\n", "\r"), which it is saved with again
     std::optional<BrailleGrid> braille_grid;     // BRF, PEF: the source's page size
     std::vector<BrailleSection> braille_sections;  // PEF sections, in order
-    std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order
+    std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order;
+                                                   // EPUB, DTBook: the book's title, creator, ...
+    // What the import left out or could not keep (an image with no
+    // description, a video), as "where: what"; layout reports them on.
+    std::vector<std::string> warnings;
     bool operator==(const Document&) const = default;
 };
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
 #include <pugixml.hpp>
 
 #include <cstdint>
@@ -75,10 +76,34 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
     if (!meta.source.empty()) {
         // The source's own metadata, in its order; an identifier is required.
         bool has_identifier = false;
+        bool has_date = false;
+        std::vector<std::string_view> once_written;
         for (const auto& item : meta.source) {
             if (item.name == "format") continue;
+            // PEF allows one identifier, title and description (an EPUB may
+            // have a subtitle as a second dc:title): the first is kept.
+            if (item.name == "identifier" || item.name == "title" || item.name == "description") {
+                if (std::ranges::find(once_written, item.name) != once_written.end()) continue;
+                once_written.push_back(item.name);
+            }
             has_identifier = has_identifier || item.name == "identifier";
-            m.append_child(("dc:" + item.name).c_str()).text() = item.value.c_str();
+            std::string value = item.value;
+            if (item.name == "date") {
+                // PEF allows one dc:date, YYYY-MM-DD; an EPUB's is often a
+                // timestamp ("2015-05-12T00:01:00Z") or a year: the day is
+                // kept, anything else is left out.
+                const auto digits = [&value](std::size_t from, std::size_t n) {
+                    for (std::size_t i = from; i < from + n; ++i)
+                        if (i >= value.size() || value[i] < '0' || value[i] > '9') return false;
+                    return true;
+                };
+                const bool day = digits(0, 4) && value.size() >= 10 && value[4] == '-' && digits(5, 2) &&
+                                 value[7] == '-' && digits(8, 2) && (value.size() == 10 || value[10] == 'T');
+                if (!day || has_date) continue;
+                value.resize(10);
+                has_date = true;
+            }
+            m.append_child(("dc:" + item.name).c_str()).text() = value.c_str();
         }
         if (!has_identifier) m.append_child("dc:identifier").text() = content_id(doc).c_str();
     } else {

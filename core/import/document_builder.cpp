@@ -39,7 +39,7 @@ void DocumentBuilder::note_line(int source_line) {
     if (open_ && current_.source_line == 0) current_.source_line = source_line;
 }
 
-void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
+void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, std::string_view language) {
     if (utf8.empty()) return;
     if (!open_) begin(document::BlockKind::paragraph, 0, 0);
     auto& spans = current_.spans;
@@ -49,10 +49,11 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis) {
         if (text == std::string_view::npos) return;
         utf8.remove_prefix(text);
     }
-    if (!spans.empty() && spans.back().emphasis == emphasis && !spans.back().note_reference)
+    if (!spans.empty() && spans.back().emphasis == emphasis && !spans.back().note_reference &&
+        spans.back().language == language)
         spans.back().text.append(utf8);
     else
-        spans.push_back(document::Span{std::string(utf8), emphasis});
+        spans.push_back(document::Span{std::string(utf8), emphasis, false, std::string(language)});
 }
 
 void DocumentBuilder::trim_end() {

@@ -32,7 +32,9 @@ public:
     // Sets the source line of the open block if it is still unknown.
     void note_line(int source_line);
     // Appends text to the open block; opens a paragraph if none is open.
-    void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none);
+    // `language`: the passage's language when the source marks one (Span::language).
+    void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none,
+                  std::string_view language = {});
     // Drops spaces and tabs at the end of the open block's text.
     void trim_end();
     // Ends the open block; it is kept only if it contains visible text.

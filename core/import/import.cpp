@@ -33,26 +33,37 @@ std::optional<SourceFormat> format_from_extension(const std::string& ext) {
     if (ext == "odt") return SourceFormat::odt;
     if (ext == "brf" || ext == "brl") return SourceFormat::brf;
     if (ext == "pef") return SourceFormat::pef;
+    if (ext == "html" || ext == "htm" || ext == "xhtml" || ext == "xht") return SourceFormat::html;
+    if (ext == "epub") return SourceFormat::epub;
+    if (ext == "dtbook") return SourceFormat::dtbook;
     return std::nullopt;
 }
 
-// An XML document whose root element is <pef> (any prefix). Looks only at the
-// start: the root comes after at most a declaration, comments and a doctype.
-bool looks_like_pef(std::string_view bytes) {
+// The root element's local name of an XML or HTML document ("pef", "dtbook",
+// "html"), lower-cased; empty when the bytes do not start like markup. Looks
+// only at the start: the root comes after at most a declaration, comments
+// and a doctype.
+std::string root_element(std::string_view bytes) {
     auto head = bytes.substr(0, 4096);
     if (head.starts_with("\xEF\xBB\xBF")) head.remove_prefix(3);
     const auto first = head.find_first_not_of(" \t\r\n");
-    if (first == std::string_view::npos || head[first] != '<') return false;
+    if (first == std::string_view::npos || head[first] != '<') return {};
     for (std::size_t at = head.find('<'); at != std::string_view::npos; at = head.find('<', at + 1)) {
         const auto next = head.substr(at + 1);
+        if (next.starts_with("!--")) {
+            const auto end = head.find("-->", at);
+            if (end == std::string_view::npos) return {};
+            at = end;
+            continue;
+        }
         if (next.starts_with('?') || next.starts_with('!')) continue;
         const auto name_end = next.find_first_of(" \t\r\n/>");
         auto name = next.substr(0, name_end);
         if (const auto colon = name.find(':'); colon != std::string_view::npos)
             name = name.substr(colon + 1);
-        return name == "pef";
+        return lower(name);
     }
-    return false;
+    return {};
 }
 
 }  // namespace
@@ -63,7 +74,7 @@ Result<SourceFormat> parse_source_format(std::string_view name) {
     // The format names are the extensions (plus their long forms).
     if (const auto f = format_from_extension(n)) return *f;
     return fail("unknown input format '" + std::string(name) +
-                    "' (expected auto, txt, md, docx, odt, brf or pef)",
+                    "' (expected auto, txt, md, docx, odt, html, epub, dtbook, brf or pef)",
                 "format");
 }
 
@@ -76,6 +87,9 @@ std::string_view source_format_name(SourceFormat format) {
         case SourceFormat::odt: return "odt";
         case SourceFormat::brf: return "brf";
         case SourceFormat::pef: return "pef";
+        case SourceFormat::html: return "html";
+        case SourceFormat::epub: return "epub";
+        case SourceFormat::dtbook: return "dtbook";
     }
     return "auto";
 }
@@ -83,13 +97,19 @@ std::string_view source_format_name(SourceFormat format) {
 SourceFormat detect_source_format(std::string_view bytes, std::string_view name) {
     if (const auto f = format_from_extension(extension_of(name))) return *f;
     if (bytes.starts_with("PK\x03\x04")) {
-        // An OpenDocument package stores its type, uncompressed, as the first entry.
+        // OpenDocument and EPUB packages store their type, uncompressed, as the first entry.
         if (bytes.substr(30, 8) == "mimetype" &&
             bytes.substr(38).starts_with("application/vnd.oasis.opendocument.text"))
             return SourceFormat::odt;
+        if (bytes.substr(30, 8) == "mimetype" && bytes.substr(38).starts_with("application/epub+zip"))
+            return SourceFormat::epub;
         return SourceFormat::docx;
     }
-    if (looks_like_pef(bytes)) return SourceFormat::pef;
+    // An .xml file is told by its root element: DTBook (NIMAS), XHTML, PEF.
+    const auto root = root_element(bytes);
+    if (root == "pef") return SourceFormat::pef;
+    if (root == "dtbook") return SourceFormat::dtbook;
+    if (root == "html") return SourceFormat::html;
     // Braille ASCII cannot be told from upper-case English by content, and
     // Markdown is valid plain text: both need their extension or an explicit format.
     return SourceFormat::text;
@@ -140,6 +160,15 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
         case SourceFormat::pef:
             if (bytes.empty()) return fail("empty file is not a PEF document", where);
             doc = detail::import_pef(bytes);
+            break;
+        case SourceFormat::html: doc = detail::import_html(bytes); break;
+        case SourceFormat::epub:
+            if (bytes.empty()) return fail("empty file is not an EPUB", where);
+            doc = detail::import_epub(bytes);
+            break;
+        case SourceFormat::dtbook:
+            if (bytes.empty()) return fail("empty file is not a DTBook document", where);
+            doc = detail::import_dtbook(bytes);
             break;
         case SourceFormat::automatic: break;  // resolved above
     }

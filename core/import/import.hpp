@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The import stage: turns a teacher's file (plain text, Markdown, DOCX, BRF, PEF)
+// The import stage: turns a teacher's file (plain text, Markdown, DOCX, ODT, HTML,
+// EPUB, DTBook, BRF, PEF)
 // into the document model. Policies (encodings, page-break conventions, lists,
 // limits) are described in docs/import.md.
 #include <cstddef>
@@ -13,7 +14,7 @@
 
 namespace tactus::import {
 
-enum class SourceFormat { automatic, text, markdown, docx, odt, brf, pef };
+enum class SourceFormat { automatic, text, markdown, docx, odt, brf, pef, html, epub, dtbook };
 
 struct ImportOptions {
     SourceFormat format = SourceFormat::automatic;
@@ -40,7 +41,8 @@ struct TextFile {
 };
 Result<TextFile> read_text_file(const std::filesystem::path& path, const ImportOptions& options = {});
 
-// "txt"/"text", "md"/"markdown", "docx", "brf", "pef", "auto"/"automatic"; case-insensitive.
+// "txt"/"text", "md"/"markdown", "docx", "odt", "brf", "pef", "html"/"htm"/"xhtml",
+// "epub", "dtbook", "auto"/"automatic"; case-insensitive.
 Result<SourceFormat> parse_source_format(std::string_view name);
 // The canonical short name ("txt", "md", ...), for messages and the CLI.
 std::string_view source_format_name(SourceFormat format);

@@ -86,11 +86,21 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
         return layout::keep_braille_pages(document, options.layout);
     auto translator = translate::Translator::open(options.tables);
     if (!translator) return std::unexpected(translator.error());
+    if (options.book) {
+        auto book = lay_out_book(document, options.layout, *options.book, *translator);
+        if (!book) return std::unexpected(book.error());
+        auto doc = std::move(book->pages);
+        doc.metadata = document.metadata;
+        std::vector<std::string> first = document.warnings;
+        if (auto w = translate::check_script(document, options.tables)) first.push_back(*w);
+        doc.warnings.insert(doc.warnings.begin(), first.begin(), first.end());
+        return doc;
+    }
     const auto room = [&options](const document::Block& b) { return layout::word_room(options.layout, b.kind, b.level); };
     std::size_t total = 0;
     if (options.progress)
         for (const auto& b : document.blocks) total += text_size(b);
-    std::vector<std::string> script_warnings;
+    std::vector<std::string> script_warnings = document.warnings;
     if (auto w = translate::check_script(document, options.tables)) script_warnings.push_back(*w);
 
     std::unordered_map<int, document::BrailleLine> numbers;

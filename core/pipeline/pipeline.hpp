@@ -7,6 +7,7 @@
 // worker processes instead (pipeline/translation_workers.hpp).
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "common/result.hpp"
@@ -14,6 +15,7 @@
 #include "import/import.hpp"
 #include "layout/layout_options.hpp"
 #include "layout/page.hpp"
+#include "pipeline/book_layout.hpp"
 #include "translate/catalogue.hpp"
 
 namespace tactus::pipeline {
@@ -30,6 +32,10 @@ struct PipelineOptions {
     bool reflow_braille = false;
     // An empty document is an error unless the user asks for one blank page.
     bool allow_empty = false;
+    // Lay the document out as a braille book: volumes, title and contents
+    // pages, running heads (pipeline/book_layout.hpp). Text only: ready-made
+    // braille keeps its own pages.
+    std::optional<BookOptions> book;
     // Hears (code points done, code points in all) as translation goes on, from
     // the translating thread; for a terminal's progress line.
     std::function<void(std::size_t, std::size_t)> progress;

@@ -58,6 +58,22 @@ TEST(PefExport, ValidatesAgainstTheSchemaAndSchematronRules) {
     }
 }
 
+// A book's own metadata (EPUB, DTBook) as it comes: two titles (a subtitle),
+// a timestamp and a bare year as dates. PEF allows one title and one
+// YYYY-MM-DD date: the first title and the timestamp's day are written.
+TEST(PefExport, SourceMetadataKeepsTheSchemasSingleElementsSingle) {
+    exporter::PefMetadata meta;
+    meta.source = {{"title", "Frankenstein"}, {"title", "Or, The Modern Prometheus"}, {"creator", "Mary Shelley"},
+                   {"date", "2015-05-12T00:01:00Z"}, {"date", "1818"}, {"language", "en-GB"}};
+    const auto pef = exporter::to_pef(two_pages(true), meta);
+    ASSERT_TRUE(pef);
+    EXPECT_EQ(validate_pef_schema(*pef), "");
+    EXPECT_NE(pef->find("<dc:title>Frankenstein</dc:title>"), std::string::npos);
+    EXPECT_EQ(pef->find("Prometheus"), std::string::npos);
+    EXPECT_NE(pef->find("<dc:date>2015-05-12</dc:date>"), std::string::npos);
+    EXPECT_EQ(pef->find("1818"), std::string::npos);
+}
+
 TEST(PefExport, IdentifierIsStableAndContentDerived) {
     const auto a = exporter::to_pef(two_pages(true));
     const auto b = exporter::to_pef(two_pages(true));

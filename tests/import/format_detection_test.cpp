@@ -20,7 +20,8 @@ TEST(FormatDetection, ContentWhenTheExtensionSaysNothing) {
     EXPECT_EQ(import::detect_source_format(read_data("lesson.pef"), "upload.xml"), import::SourceFormat::pef);
     EXPECT_EQ(import::detect_source_format("\xEF\xBB\xBF<!-- c --><x:pef xmlns:x='y'>", "f"),
               import::SourceFormat::pef);
-    EXPECT_EQ(import::detect_source_format("<html><pef/></html>", "f"), import::SourceFormat::text);
+    // The root decides: a <pef> inside <html> is an HTML page, not PEF.
+    EXPECT_EQ(import::detect_source_format("<html><pef/></html>", "f"), import::SourceFormat::html);
     EXPECT_EQ(import::detect_source_format("hello", "README"), import::SourceFormat::text);
 }
 

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// EPUB 3 and EPUB 2 (a ZIP package): META-INF/container.xml names the package
+// document (OPF); its spine gives the reading order of the content documents
+// (XHTML, or HTML when not well-formed; EPUB 2's DTBook), which are walked as
+// one book (markup_walk.hpp), so a note reference in one chapter finds its note
+// in the endnotes. The package's Dublin Core metadata (title, creator,
+// publisher, date, language, ...) becomes the document's metadata, for the
+// title page and the PEF head. Spine items of other types (images) are named
+// in a warning. The navigation document and NCX are not read: the contents
+// are generated from the headings.
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "import/encoding.hpp"
+#include "import/importers.hpp"
+#include "import/markup_document.hpp"
+#include "import/markup_walk.hpp"
+#include "import/xml_util.hpp"
+#include "import/zip_archive.hpp"
+
+namespace tactus::import::detail {
+namespace {
+
+// One content document unpacks to at most this; the whole book to at most
+// twice the import limit (text compresses well, markup more so).
+constexpr std::size_t max_part_bytes = std::size_t{64} << 20;
+constexpr std::size_t max_book_bytes = std::size_t{512} << 20;
+
+Result<std::unique_ptr<MarkupDocument>> read_xml(const ZipArchive& zip, const std::string& part) {
+    auto bytes = zip.read(part, max_part_bytes);
+    if (!bytes) return std::unexpected(bytes.error());
+    auto text = markup_text(*bytes);
+    if (!text) return std::unexpected(located(text.error(), part));
+    return parse_xml_markup(std::move(*text), part);
+}
+
+struct ManifestItem {
+    std::string path;
+    std::string media_type;
+};
+
+}  // namespace
+
+Result<document::Document> import_epub(std::string_view bytes) {
+    auto zip = ZipArchive::open(bytes);
+    if (!zip) return fail("not an EPUB: " + zip.error().message, zip.error().where);
+    if (zip->contains("mimetype")) {
+        auto type = zip->read("mimetype", 1024);
+        if (type && type->find("application/epub+zip") == std::string::npos)
+            return fail("not an EPUB: its mimetype is '" + *type + "'", "mimetype");
+    }
+    if (!zip->contains("META-INF/container.xml"))
+        return fail("not an EPUB: missing part META-INF/container.xml", "META-INF/container.xml");
+    auto container = read_xml(*zip, "META-INF/container.xml");
+    if (!container) return std::unexpected(container.error());
+    std::string opf_path;
+    for (const auto& r : child((*container)->xml.document_element(), "rootfiles").children()) {
+        if (local_name(r) != "rootfile") continue;
+        const std::string_view type = r.attribute("media-type").value();
+        if (type.empty() || type == "application/oebps-package+xml") {
+            opf_path = r.attribute("full-path").value();
+            break;
+        }
+    }
+    if (opf_path.empty())
+        return fail("not an EPUB: container.xml names no package document (rootfile full-path)", "META-INF/container.xml");
+    opf_path = resolve_path("", opf_path);
+    auto opf = read_xml(*zip, opf_path);
+    if (!opf) return std::unexpected(opf.error());
+    const auto package = (*opf)->xml.document_element();
+    if (local_name(package) != "package")
+        return fail("not an EPUB package document: the root element is <" + std::string(package.name()) + ">", opf_path);
+
+    std::map<std::string, ManifestItem> manifest;
+    for (const auto& item : child(package, "manifest").children()) {
+        if (local_name(item) != "item") continue;
+        manifest[item.attribute("id").value()] =
+            ManifestItem{resolve_path(opf_path, item.attribute("href").value()), item.attribute("media-type").value()};
+    }
+    std::vector<std::string> warnings;
+    std::vector<std::unique_ptr<MarkupDocument>> trees;
+    std::vector<MarkupPart> parts;
+    std::size_t total = 0;
+    for (const auto& ref : child(package, "spine").children()) {
+        if (local_name(ref) != "itemref") continue;
+        const std::string idref = ref.attribute("idref").value();
+        const auto found = manifest.find(idref);
+        if (found == manifest.end()) {
+            warnings.push_back(opf_path + ": the spine names '" + idref + "', which the manifest does not list; left out");
+            continue;
+        }
+        const auto& [path, type] = found->second;
+        const bool xhtml = type == "application/xhtml+xml" || type == "text/html";
+        const bool dtbook = type == "application/x-dtbook+xml";
+        if (!xhtml && !dtbook) {
+            warnings.push_back(path + ": a spine item of type " + (type.empty() ? std::string("(none)") : type) +
+                               " left out (only XHTML and DTBook are read)");
+            continue;
+        }
+        auto raw = zip->read(path, max_part_bytes);
+        if (!raw) return std::unexpected(raw.error());
+        total += raw->size();
+        if (total > max_book_bytes)
+            return fail("the book unpacks to more than " + std::to_string(max_book_bytes) + " bytes of text", path);
+        auto text = markup_text(*raw);
+        if (!text) return std::unexpected(located(text.error(), path));
+        auto tree = dtbook ? parse_xml_markup(std::move(*text), path) : parse_xhtml_or_html(std::move(*text), path);
+        if (!tree) return std::unexpected(tree.error());
+        parts.push_back(MarkupPart{path, (*tree)->xml, (*tree)->lines()});
+        trees.push_back(std::move(*tree));
+    }
+    if (parts.empty()) return fail("the EPUB's spine lists no content document (XHTML)", opf_path);
+    auto doc = MarkupWalk(std::move(parts)).run();
+    if (!doc) return doc;
+    doc->warnings.insert(doc->warnings.begin(), warnings.begin(), warnings.end());
+    // Dublin Core, in the package's order; PEF names the same elements.
+    static constexpr std::string_view kept[] = {"title", "creator", "contributor", "publisher", "date",
+                                                "language", "identifier", "source", "rights", "subject", "description"};
+    for (const auto& m : child(package, "metadata").children()) {
+        const auto name = local_name(m);
+        if (std::find(std::begin(kept), std::end(kept), name) == std::end(kept)) continue;
+        const auto value = text_of(m);
+        if (!value.empty()) doc->metadata.push_back({std::string(name), value});
+    }
+    return doc;
+}
+
+}  // namespace tactus::import::detail
