@@ -10,6 +10,8 @@
 #include "document/cell.hpp"
 #include "six_key.hpp"
 
+class QAccessibleInterface;
+
 namespace tactus::gui {
 
 class BraillePane : public QPlainTextEdit {
@@ -37,6 +39,9 @@ protected:
 private:
     SixKeyChord chord_;
 };
+
+// Its accessible interface, for the app's accessibility factory.
+QAccessibleInterface* make_accessible_braille_pane(BraillePane* pane);
 
 // The print side: forwards dropped files to the window instead of pasting their
 // names, and leaves undo/redo to the window's undo stack.

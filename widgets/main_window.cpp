@@ -241,6 +241,11 @@ void MainWindow::build_actions() {
     redo_ = editor_->undo_stack()->createRedoAction(this, tr("&Redo"));
     redo_->setShortcut(QKeySequence::Redo);
     redo_->setObjectName(QStringLiteral("editRedo"));
+    // The text comes back without a word from the screen reader: say what was undone.
+    connect(undo_, &QAction::triggered, this,
+            [this] { announcer_->announce(tr("Undone: %1").arg(editor_->undo_stack()->redoText())); });
+    connect(redo_, &QAction::triggered, this,
+            [this] { announcer_->announce(tr("Redone: %1").arg(editor_->undo_stack()->undoText())); });
     addActions({undo_, redo_});
     find_action_ = make(tr("&Find and Replace..."), QKeySequence::Find, QStringLiteral("editFind"), [this] {
         find_->set_find_text(editor_->print_pane()->textCursor().selectedText());
@@ -526,6 +531,9 @@ void MainWindow::update_title() {
     const auto name = !source_name_.isEmpty() ? source_name_ : tr("Untitled");
     setWindowTitle(QStringLiteral("%1[*] \u2014 Tactus").arg(name));
     setWindowModified(!editor_->undo_stack()->isClean());
+    // The frame's name is what a screen reader says on coming back to the window:
+    // the document's name, not only the program's.
+    setAccessibleName(tr("%1 \u2014 Tactus").arg(name));
 }
 
 void MainWindow::report(const QString& message, bool error) {

@@ -282,6 +282,9 @@ T = {
     "The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job":
         "內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效",
     "%1 times faster": "快 %1 倍",
+    "Undone: %1": "已復原：%1", "Redone: %1": "已重做：%1", "%1 \u2014 Tactus": "%1 \u2014 Tactus",
+    "%1 paused": "%1 已暫停", "%1 resumed": "%1 已繼續",
+    "Invalid: %1. %2": "無效：%1。%2", "Profile is valid again.": "設定檔又有效了。",
 }
 
 

@@ -243,7 +243,64 @@ def scenario_pagetoosmall(tactus, sample, work):
     return 0
 
 
-SCENARIOS = {"open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
+def braille_run(phrases):
+    """The longest run of braille cells in what was heard (a word read out)."""
+    best = ""
+    for t in phrases:
+        for run_ in re.findall(r"[\u2800-\u28ff]+", t):
+            if len(run_) > len(best):
+                best = run_
+    return best
+
+
+def scenario_corners(tactus, sample, work):
+    """Corners a keyboard user reaches early: the preview at its first cell, on
+    every line and back (a text read there once never returned and froze the
+    app); word by word in the braille and print panes; every menu of the bar,
+    which once read the document instead of the next menu."""
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", sample])
+        s.step("Ctrl+3 speaks the preview", keys=["ctrl+3"], expect=[r"Interpoint preview"])
+        s.step("Home goes to cell 1", keys=["Home"], expect=[r"line 1, cell 1\b"], quiet=0.4)
+        lines = 24  # the default profile's lines a page
+        for line in range(2, lines + 1):
+            s.step(f"Down to line {line}, cell 1", keys=["Down"], expect=[rf"line {line}, cell 1\b"], quiet=0.3)
+        s.step("End goes to the last cell", keys=["End"], expect=[rf"line {lines}, cell 27\b"], quiet=0.3)
+        for line in range(lines - 1, 0, -1):
+            s.step(f"Up to line {line}, last cell", keys=["Up"], expect=[rf"line {line}, cell 27\b"], quiet=0.3)
+        s.step("Home back to cell 1", keys=["Home"], expect=[r"line 1, cell 1\b"], quiet=0.4)
+
+        # Word by word: a braille word is the cells up to a blank cell, not the paragraph.
+        s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"])
+        s.step("Ctrl+Home", keys=["ctrl+Home"], allow_silent=True, quiet=0.5)
+        s.step("Down to the first paragraph", keys=["Down", "Down"], allow_silent=True, quiet=0.5)
+        for i in range(3):
+            rec = s.step(f"Ctrl+Right {i + 1} reads a braille word", keys=["ctrl+Right"],
+                         expect=[r"[\u2800-\u28ff]"], quiet=0.5)
+            word = braille_run(rec.phrases)
+            if not 1 <= len(word) <= 20:
+                raise StepFailed(f"Ctrl+Right in the braille pane read {len(word)} cells, not one word: {rec.phrases}")
+        for i in range(2):
+            rec = s.step(f"Ctrl+Left {i + 1} reads a braille word", keys=["ctrl+Left"],
+                         expect=[r"[\u2800-\u28ff]"], quiet=0.5)
+            if not 1 <= len(braille_run(rec.phrases)) <= 20:
+                raise StepFailed(f"Ctrl+Left in the braille pane did not read one word: {rec.phrases}")
+
+        # Every menu of the bar: each Right names the next menu's item, never the document.
+        document = r"Print text|Welcome|Braille is a tactile|[\u2800-\u28ff]"
+        s.step("F10 opens the menu bar", keys=["F10"], expect=[r"File"], forbid=[document])
+        s.step("Down opens File", keys=["Down"], expect=[r"New"], forbid=[document])
+        for menu, item in (("Edit", r"Undo"), ("View", r"Go to print text"), ("Help", r"Keyboard Shortcuts"),
+                           ("File", r"New")):
+            s.step(f"Right opens {menu}", keys=["Right"], expect=[item], forbid=[document], quiet=0.8)
+        s.step("Escape closes the menus", keys=["Escape", "Escape"], allow_silent=True, quiet=0.8)
+        print(s.summary())
+    return 0
+
+
+SCENARIOS = {"corners": scenario_corners, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
              "formfeed": scenario_formfeed, "pagetoosmall": scenario_pagetoosmall}
 
 
