@@ -60,6 +60,7 @@
 #include "table_picker.hpp"
 #include "visible_focus.hpp"
 #include "translate/catalogue.hpp"
+#include "translate/script_check.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -376,8 +377,19 @@ void MainWindow::set_table(const QString& table) {
 }
 
 QString MainWindow::table_warning(const QString& detail) const {
+    // The core words a script mismatch for the command line (with --table); here
+    // it is a sentence in the interface's language.
+    QString said = detail;
+    if (const auto m = translate::find_script_mismatch(editor_->layout().document(), editor_->layout().tables())) {
+        const auto better = QString::fromStdString(m->better);
+        said = !m->chinese_text ? tr("the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it")
+                                      .arg(better)
+               : m->traditional ? tr("the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it").arg(better)
+                                : tr("the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it")
+                                      .arg(better);
+    }
     return tr("Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.")
-        .arg(tables_->currentText(), detail);
+        .arg(tables_->currentText(), said);
 }
 
 void MainWindow::new_document() {

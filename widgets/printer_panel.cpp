@@ -385,7 +385,9 @@ void PrinterPanel::refresh_devices() {
     const auto found = controller::list_devices(&problems);
     devices_->clear();
     for (const auto& d : found) {
-        devices_->addItem(QStringLiteral("%1 [%2]").arg(qs(d.description), qs(d.device)), qs(d.device));
+        // The core names devices in English; the simulator, always listed, in the interface's language.
+        const auto description = d.device == kSim ? tr("Built-in simulated embosser") : qs(d.description);
+        devices_->addItem(QStringLiteral("%1 [%2]").arg(description, qs(d.device)), qs(d.device));
         devices_->setItemData(devices_->count() - 1,
                               d.device == kSim ? tr("The built-in simulated embosser, on this computer")
                                                : tr("An embosser on a cable to this computer"),

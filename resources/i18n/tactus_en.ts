@@ -15,7 +15,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="475"/>
+        <location filename="../../widgets/main_window.cpp" line="492"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -23,7 +23,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="480"/>
+        <location filename="../../widgets/main_window.cpp" line="497"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -31,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="635"/>
+        <location filename="../../widgets/main_window.cpp" line="655"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>

@@ -8,12 +8,12 @@
         <translation>輸入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="77" />
+        <location filename="../../widgets/main_window.cpp" line="78" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="81" />
+        <location filename="../../widgets/main_window.cpp" line="82" />
         <source>Saving %1 failed: %2</source>
         <translation>儲存 %1 失敗：%2</translation>
     </message>
@@ -303,723 +303,738 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="93" />
-        <location filename="../../widgets/main_window.cpp" line="544" />
-        <location filename="../../widgets/main_window.cpp" line="697" />
-        <location filename="../../widgets/main_window.cpp" line="751" />
-        <location filename="../../widgets/main_window.cpp" line="785" />
-        <location filename="../../widgets/main_window.cpp" line="807" />
+        <location filename="../../widgets/main_window.cpp" line="94" />
+        <location filename="../../widgets/main_window.cpp" line="556" />
+        <location filename="../../widgets/main_window.cpp" line="709" />
+        <location filename="../../widgets/main_window.cpp" line="763" />
+        <location filename="../../widgets/main_window.cpp" line="797" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="103" />
+        <location filename="../../widgets/main_window.cpp" line="104" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="110" />
+        <location filename="../../widgets/main_window.cpp" line="111" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="111" />
+        <location filename="../../widgets/main_window.cpp" line="112" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="112" />
+        <location filename="../../widgets/main_window.cpp" line="113" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="117" />
+        <location filename="../../widgets/main_window.cpp" line="118" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="148" />
+        <location filename="../../widgets/main_window.cpp" line="149" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="150" />
+        <location filename="../../widgets/main_window.cpp" line="151" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="151" />
+        <location filename="../../widgets/main_window.cpp" line="152" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="158" />
+        <location filename="../../widgets/main_window.cpp" line="159" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="163" />
+        <location filename="../../widgets/main_window.cpp" line="164" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="227" />
+        <location filename="../../widgets/main_window.cpp" line="228" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230" />
+        <location filename="../../widgets/main_window.cpp" line="231" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="231" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="233" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="233" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="235" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="235" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
-        <location filename="../../widgets/main_window.cpp" line="813" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="825" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="239" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="242" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="248" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="250" />
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="256" />
+        <location filename="../../widgets/main_window.cpp" line="257" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="260" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="260" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="267" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="267" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="271" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="271" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="275" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="275" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="279" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="279" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="283" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="283" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="288" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="288" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="290" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="290" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="291" />
+        <location filename="../../widgets/main_window.cpp" line="292" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="291" />
+        <location filename="../../widgets/main_window.cpp" line="292" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="295" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="301" />
+        <location filename="../../widgets/main_window.cpp" line="302" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="303" />
+        <location filename="../../widgets/main_window.cpp" line="304" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="310" />
+        <location filename="../../widgets/main_window.cpp" line="311" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="315" />
+        <location filename="../../widgets/main_window.cpp" line="316" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="322" />
+        <location filename="../../widgets/main_window.cpp" line="323" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="363" />
+        <location filename="../../widgets/main_window.cpp" line="364" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="370" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="374" />
-        <location filename="../../widgets/main_window.cpp" line="491" />
+        <location filename="../../widgets/main_window.cpp" line="375" />
+        <location filename="../../widgets/main_window.cpp" line="503" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="379" />
+        <location filename="../../widgets/main_window.cpp" line="385" />
+        <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
+        <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="387" />
+        <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
+        <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="388" />
+        <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
+        <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="391" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="396" />
+        <location filename="../../widgets/main_window.cpp" line="408" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="397" />
+        <location filename="../../widgets/main_window.cpp" line="409" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="403" />
+        <location filename="../../widgets/main_window.cpp" line="415" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="418" />
+        <location filename="../../widgets/main_window.cpp" line="430" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="426" />
+        <location filename="../../widgets/main_window.cpp" line="438" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="453" />
+        <location filename="../../widgets/main_window.cpp" line="465" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="458" />
+        <location filename="../../widgets/main_window.cpp" line="470" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459" />
+        <location filename="../../widgets/main_window.cpp" line="471" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="480" />
+        <location filename="../../widgets/main_window.cpp" line="492" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="485" />
+        <location filename="../../widgets/main_window.cpp" line="497" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="517" />
+        <location filename="../../widgets/main_window.cpp" line="529" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="520" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="520" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="531" />
-        <location filename="../../widgets/main_window.cpp" line="698" />
-        <location filename="../../widgets/main_window.cpp" line="709" />
-        <location filename="../../widgets/main_window.cpp" line="867" />
+        <location filename="../../widgets/main_window.cpp" line="543" />
+        <location filename="../../widgets/main_window.cpp" line="710" />
+        <location filename="../../widgets/main_window.cpp" line="721" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="536" />
+        <location filename="../../widgets/main_window.cpp" line="548" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="555" />
+        <location filename="../../widgets/main_window.cpp" line="567" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="556" />
+        <location filename="../../widgets/main_window.cpp" line="568" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="558" />
+        <location filename="../../widgets/main_window.cpp" line="570" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="604" />
+        <location filename="../../widgets/main_window.cpp" line="616" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="863" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="610" />
+        <location filename="../../widgets/main_window.cpp" line="622" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="610" />
+        <location filename="../../widgets/main_window.cpp" line="622" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="612" />
+        <location filename="../../widgets/main_window.cpp" line="624" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="646" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="643" />
+        <location filename="../../widgets/main_window.cpp" line="655" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="650" />
+        <location filename="../../widgets/main_window.cpp" line="662" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="651" />
+        <location filename="../../widgets/main_window.cpp" line="663" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="662" />
+        <location filename="../../widgets/main_window.cpp" line="674" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="697" />
+        <location filename="../../widgets/main_window.cpp" line="709" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="808" />
+        <location filename="../../widgets/main_window.cpp" line="820" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="810" />
+        <location filename="../../widgets/main_window.cpp" line="822" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="814" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="710" />
+        <location filename="../../widgets/main_window.cpp" line="722" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="724" />
+        <location filename="../../widgets/main_window.cpp" line="736" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="733" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="733" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="737" />
+        <location filename="../../widgets/main_window.cpp" line="749" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="895" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="738" />
+        <location filename="../../widgets/main_window.cpp" line="750" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="743" />
+        <location filename="../../widgets/main_window.cpp" line="755" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="135" />
+        <location filename="../../widgets/main_window.cpp" line="136" />
         <source>The document cannot be laid out for this printer's page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="589" />
+        <location filename="../../widgets/main_window.cpp" line="601" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="775" />
+        <location filename="../../widgets/main_window.cpp" line="787" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="776" />
+        <location filename="../../widgets/main_window.cpp" line="788" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="789" />
+        <location filename="../../widgets/main_window.cpp" line="801" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="790" />
+        <location filename="../../widgets/main_window.cpp" line="802" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="793" />
+        <location filename="../../widgets/main_window.cpp" line="805" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="794" />
+        <location filename="../../widgets/main_window.cpp" line="806" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="799" />
+        <location filename="../../widgets/main_window.cpp" line="811" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="757" />
+        <location filename="../../widgets/main_window.cpp" line="769" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="758" />
+        <location filename="../../widgets/main_window.cpp" line="770" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="759" />
+        <location filename="../../widgets/main_window.cpp" line="771" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="762" />
+        <location filename="../../widgets/main_window.cpp" line="774" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="763" />
+        <location filename="../../widgets/main_window.cpp" line="775" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="768" />
+        <location filename="../../widgets/main_window.cpp" line="780" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="503" />
+        <location filename="../../widgets/main_window.cpp" line="515" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="504" />
+        <location filename="../../widgets/main_window.cpp" line="516" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="950" />
+        <location filename="../../widgets/main_window.cpp" line="962" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1023" />
-        <location filename="../../widgets/main_window.cpp" line="1032" />
+        <location filename="../../widgets/main_window.cpp" line="1035" />
+        <location filename="../../widgets/main_window.cpp" line="1044" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1054" />
+        <location filename="../../widgets/main_window.cpp" line="1066" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1060" />
+        <location filename="../../widgets/main_window.cpp" line="1072" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1066" />
+        <location filename="../../widgets/main_window.cpp" line="1078" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1068" />
+        <location filename="../../widgets/main_window.cpp" line="1080" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1069" />
+        <location filename="../../widgets/main_window.cpp" line="1081" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1088" />
+        <location filename="../../widgets/main_window.cpp" line="1100" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1092" />
+        <location filename="../../widgets/main_window.cpp" line="1104" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1094" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1094" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1123" />
+        <location filename="../../widgets/main_window.cpp" line="1135" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1123" />
+        <location filename="../../widgets/main_window.cpp" line="1135" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1124" />
+        <location filename="../../widgets/main_window.cpp" line="1136" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1124" />
+        <location filename="../../widgets/main_window.cpp" line="1136" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1125" />
+        <location filename="../../widgets/main_window.cpp" line="1137" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1125" />
+        <location filename="../../widgets/main_window.cpp" line="1137" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1126" />
+        <location filename="../../widgets/main_window.cpp" line="1138" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1126" />
+        <location filename="../../widgets/main_window.cpp" line="1138" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1127" />
+        <location filename="../../widgets/main_window.cpp" line="1139" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1127" />
+        <location filename="../../widgets/main_window.cpp" line="1139" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1128" />
+        <location filename="../../widgets/main_window.cpp" line="1140" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1128" />
+        <location filename="../../widgets/main_window.cpp" line="1140" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1134" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1135" />
+        <location filename="../../widgets/main_window.cpp" line="1147" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1356,14 +1371,14 @@
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="231" />
-        <location filename="../../widgets/printer_panel.cpp" line="638" />
-        <location filename="../../widgets/printer_panel.cpp" line="831" />
+        <location filename="../../widgets/printer_panel.cpp" line="640" />
+        <location filename="../../widgets/printer_panel.cpp" line="833" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="233" />
-        <location filename="../../widgets/printer_panel.cpp" line="1152" />
+        <location filename="../../widgets/printer_panel.cpp" line="1154" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
@@ -1533,324 +1548,329 @@
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="390" />
+        <location filename="../../widgets/printer_panel.cpp" line="389" />
+        <source>Built-in simulated embosser</source>
+        <translation>內建模擬點字印表機</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="392" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="391" />
+        <location filename="../../widgets/printer_panel.cpp" line="393" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="394" />
+        <location filename="../../widgets/printer_panel.cpp" line="396" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="409" />
+        <location filename="../../widgets/printer_panel.cpp" line="411" />
         <source>Listing CUPS queues: %1</source>
         <translation>列出 CUPS 佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="415" />
+        <location filename="../../widgets/printer_panel.cpp" line="417" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="420" />
+        <location filename="../../widgets/printer_panel.cpp" line="422" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="423" />
+        <location filename="../../widgets/printer_panel.cpp" line="425" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="430" />
+        <location filename="../../widgets/printer_panel.cpp" line="432" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="464" />
+        <location filename="../../widgets/printer_panel.cpp" line="466" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="476" />
+        <location filename="../../widgets/printer_panel.cpp" line="478" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="499" />
+        <location filename="../../widgets/printer_panel.cpp" line="501" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="504" />
+        <location filename="../../widgets/printer_panel.cpp" line="506" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="514" />
+        <location filename="../../widgets/printer_panel.cpp" line="516" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="525" />
+        <location filename="../../widgets/printer_panel.cpp" line="527" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="529" />
+        <location filename="../../widgets/printer_panel.cpp" line="531" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="536" />
+        <location filename="../../widgets/printer_panel.cpp" line="538" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="540" />
+        <location filename="../../widgets/printer_panel.cpp" line="542" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="556" />
+        <location filename="../../widgets/printer_panel.cpp" line="558" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="567" />
+        <location filename="../../widgets/printer_panel.cpp" line="569" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="579" />
+        <location filename="../../widgets/printer_panel.cpp" line="581" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="589" />
+        <location filename="../../widgets/printer_panel.cpp" line="591" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="594" />
+        <location filename="../../widgets/printer_panel.cpp" line="596" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="607" />
+        <location filename="../../widgets/printer_panel.cpp" line="609" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="619" />
+        <location filename="../../widgets/printer_panel.cpp" line="621" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="672" />
+        <location filename="../../widgets/printer_panel.cpp" line="674" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="684" />
+        <location filename="../../widgets/printer_panel.cpp" line="686" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="711" />
+        <location filename="../../widgets/printer_panel.cpp" line="713" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="712" />
+        <location filename="../../widgets/printer_panel.cpp" line="714" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="739" />
+        <location filename="../../widgets/printer_panel.cpp" line="741" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="746" />
+        <location filename="../../widgets/printer_panel.cpp" line="748" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="749" />
+        <location filename="../../widgets/printer_panel.cpp" line="751" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="755" />
+        <location filename="../../widgets/printer_panel.cpp" line="757" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="760" />
+        <location filename="../../widgets/printer_panel.cpp" line="762" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="773" />
+        <location filename="../../widgets/printer_panel.cpp" line="775" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="774" />
+        <location filename="../../widgets/printer_panel.cpp" line="776" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="787" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel.cpp" line="791" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="790" />
+        <location filename="../../widgets/printer_panel.cpp" line="792" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="792" />
+        <location filename="../../widgets/printer_panel.cpp" line="794" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="925" />
+        <location filename="../../widgets/printer_panel.cpp" line="927" />
         <source>%1 paused</source>
         <translation>%1 已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="927" />
+        <location filename="../../widgets/printer_panel.cpp" line="929" />
         <source>%1 resumed</source>
         <translation>%1 已繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1036" />
-        <location filename="../../widgets/printer_panel.cpp" line="1039" />
+        <location filename="../../widgets/printer_panel.cpp" line="1038" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1039" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1040" />
+        <location filename="../../widgets/printer_panel.cpp" line="1042" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1049" />
+        <location filename="../../widgets/printer_panel.cpp" line="1051" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1108" />
-        <location filename="../../widgets/printer_panel.cpp" line="1145" />
+        <location filename="../../widgets/printer_panel.cpp" line="1110" />
+        <location filename="../../widgets/printer_panel.cpp" line="1147" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1113" />
+        <location filename="../../widgets/printer_panel.cpp" line="1115" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1121" />
+        <location filename="../../widgets/printer_panel.cpp" line="1123" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1145" />
+        <location filename="../../widgets/printer_panel.cpp" line="1147" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1156" />
+        <location filename="../../widgets/printer_panel.cpp" line="1158" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1159" />
+        <location filename="../../widgets/printer_panel.cpp" line="1161" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1160" />
+        <location filename="../../widgets/printer_panel.cpp" line="1162" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1165" />
+        <location filename="../../widgets/printer_panel.cpp" line="1167" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1168" />
+        <location filename="../../widgets/printer_panel.cpp" line="1170" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1219" />
+        <location filename="../../widgets/printer_panel.cpp" line="1221" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1244" />
+        <location filename="../../widgets/printer_panel.cpp" line="1246" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1245" />
+        <location filename="../../widgets/printer_panel.cpp" line="1247" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1263" />
+        <location filename="../../widgets/printer_panel.cpp" line="1265" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1267" />
+        <location filename="../../widgets/printer_panel.cpp" line="1269" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1273" />
+        <location filename="../../widgets/printer_panel.cpp" line="1275" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1277" />
+        <location filename="../../widgets/printer_panel.cpp" line="1279" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1281" />
+        <location filename="../../widgets/printer_panel.cpp" line="1283" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1285" />
+        <location filename="../../widgets/printer_panel.cpp" line="1287" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="580" />
+        <location filename="../../widgets/printer_panel.cpp" line="582" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
@@ -1860,115 +1880,115 @@
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="628" />
+        <location filename="../../widgets/printer_panel.cpp" line="630" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="623" />
+        <location filename="../../widgets/printer_panel.cpp" line="625" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="635" />
+        <location filename="../../widgets/printer_panel.cpp" line="637" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="655" />
+        <location filename="../../widgets/printer_panel.cpp" line="657" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="659" />
+        <location filename="../../widgets/printer_panel.cpp" line="661" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="678" />
+        <location filename="../../widgets/printer_panel.cpp" line="680" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="832" />
+        <location filename="../../widgets/printer_panel.cpp" line="834" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="861" />
+        <location filename="../../widgets/printer_panel.cpp" line="863" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="915" />
+        <location filename="../../widgets/printer_panel.cpp" line="917" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="922" />
-        <location filename="../../widgets/printer_panel.cpp" line="1117" />
+        <location filename="../../widgets/printer_panel.cpp" line="924" />
+        <location filename="../../widgets/printer_panel.cpp" line="1119" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="929" />
+        <location filename="../../widgets/printer_panel.cpp" line="931" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="966" />
+        <location filename="../../widgets/printer_panel.cpp" line="968" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="968" />
+        <location filename="../../widgets/printer_panel.cpp" line="970" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1029" />
+        <location filename="../../widgets/printer_panel.cpp" line="1031" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="660" />
+        <location filename="../../widgets/printer_panel.cpp" line="662" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="938" />
+        <location filename="../../widgets/printer_panel.cpp" line="940" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="939" />
-        <location filename="../../widgets/printer_panel.cpp" line="943" />
+        <location filename="../../widgets/printer_panel.cpp" line="941" />
+        <location filename="../../widgets/printer_panel.cpp" line="945" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="916" />
+        <location filename="../../widgets/printer_panel.cpp" line="918" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="958" />
-        <location filename="../../widgets/printer_panel.cpp" line="988" />
+        <location filename="../../widgets/printer_panel.cpp" line="960" />
+        <location filename="../../widgets/printer_panel.cpp" line="990" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="966" />
+        <location filename="../../widgets/printer_panel.cpp" line="968" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1224" />
+        <location filename="../../widgets/printer_panel.cpp" line="1226" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1234" />
+        <location filename="../../widgets/printer_panel.cpp" line="1236" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
