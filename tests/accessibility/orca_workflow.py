@@ -261,12 +261,13 @@ def braille_run(phrases):
 
 
 # What the corners scenario hears, in each interface language (Orca's own words,
-# such as role names, stay in its language).
+# such as role names, stay in its language). A menu opened by Right has its
+# first enabled item current (Undo is disabled in a fresh document).
 CORNER_WORDS = {
     "en": {"preview": r"Interpoint preview", "braille": r"Braille", "cell": r"line {line}, cell {cell}\b",
-           "menus": [r"File", r"New", r"Undo", r"Go to print text", r"Keyboard Shortcuts"]},
+           "menus": [r"File", r"New", r"Find and Replace", r"Go to print text", r"Keyboard Shortcuts"]},
     "zh_TW": {"preview": r"雙面點字預覽", "braille": r"點字", "cell": r"第 {line} 行，第 {cell} 方",
-              "menus": [r"檔案", r"新增", r"復原", r"移到明眼字", r"鍵盤快速鍵"]},
+              "menus": [r"檔案", r"新增", r"尋找與取代", r"移到明眼字", r"鍵盤快速鍵"]},
 }
 
 
