@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QSplitterHandle>
 
 #include "announcer.hpp"
@@ -117,8 +118,7 @@ public:
 // at the end of the text by word ("1" in the Sheet box hung the app).
 class AccessibleLineText : public QAccessibleWidget, public QAccessibleTextInterface, public QAccessibleValueInterface {
 public:
-    AccessibleLineText(QWidget* w, QLineEdit* edit, QAccessible::Role role)
-        : QAccessibleWidget(w, role), edit_(edit) {}
+    AccessibleLineText(QWidget* w, QAccessible::Role role) : QAccessibleWidget(w, role) {}
 
     void* interface_cast(QAccessible::InterfaceType t) override {
         if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
@@ -127,13 +127,13 @@ public:
     }
     QAccessible::State state() const override {
         auto s = QAccessibleWidget::state();
-        s.editable = !edit_->isReadOnly();
-        s.readOnly = edit_->isReadOnly();
+        s.editable = !edit()->isReadOnly();
+        s.readOnly = edit()->isReadOnly();
         s.selectableText = true;
         return s;
     }
     QString text(QAccessible::Text t) const override {
-        if (t == QAccessible::Value) return edit_->text();
+        if (t == QAccessible::Value) return edit()->text();
         return QAccessibleWidget::text(t);
     }
     QStringList actionNames() const override {
@@ -156,23 +156,23 @@ public:
 
     // QAccessibleTextInterface
     void selection(int index, int* start, int* end) const override {
-        if (index != 0 || !edit_->hasSelectedText()) {
+        if (index != 0 || !edit()->hasSelectedText()) {
             *start = *end = 0;
             return;
         }
-        *start = edit_->selectionStart();
-        *end = *start + static_cast<int>(edit_->selectedText().size());
+        *start = edit()->selectionStart();
+        *end = *start + static_cast<int>(edit()->selectedText().size());
     }
-    int selectionCount() const override { return edit_->hasSelectedText() ? 1 : 0; }
+    int selectionCount() const override { return edit()->hasSelectedText() ? 1 : 0; }
     void addSelection(int start, int end) override { setSelection(0, start, end); }
-    void removeSelection(int) override { edit_->deselect(); }
-    void setSelection(int, int start, int end) override { edit_->setSelection(start, end - start); }
-    int cursorPosition() const override { return edit_->cursorPosition(); }
-    void setCursorPosition(int position) override { edit_->setCursorPosition(position); }
-    QString text(int start, int end) const override { return edit_->text().mid(start, end - start); }
-    int characterCount() const override { return static_cast<int>(edit_->text().size()); }
+    void removeSelection(int) override { edit()->deselect(); }
+    void setSelection(int, int start, int end) override { edit()->setSelection(start, end - start); }
+    int cursorPosition() const override { return edit()->cursorPosition(); }
+    void setCursorPosition(int position) override { edit()->setCursorPosition(position); }
+    QString text(int start, int end) const override { return edit()->text().mid(start, end - start); }
+    int characterCount() const override { return static_cast<int>(edit()->text().size()); }
     QRect characterRect(int) const override { return rect(); }
-    int offsetAtPoint(const QPoint& point) const override { return edit_->cursorPositionAt(edit_->mapFromGlobal(point)); }
+    int offsetAtPoint(const QPoint& point) const override { return edit()->cursorPositionAt(edit()->mapFromGlobal(point)); }
     void scrollToSubstring(int, int) override {}
     QString attributes(int, int* start, int* end) const override {
         *start = 0;
@@ -180,18 +180,24 @@ public:
         return {};
     }
     QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_at_offset(edit_->text(), offset, b, start, end);
+        return text_at_offset(edit()->text(), offset, b, start, end);
     }
     QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_before_offset(edit_->text(), offset, b, start, end);
+        return text_before_offset(edit()->text(), offset, b, start, end);
     }
     QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_after_offset(edit_->text(), offset, b, start, end);
+        return text_after_offset(edit()->text(), offset, b, start, end);
     }
 
 private:
     QAbstractSpinBox* spin() const { return qobject_cast<QAbstractSpinBox*>(widget()); }
-    QLineEdit* edit_;
+    // A spin box may be asked for while it is built, before its line edit exists.
+    QLineEdit* edit() const {
+        if (auto* e = qobject_cast<QLineEdit*>(widget())) return e;
+        if (auto* e = widget()->findChild<QLineEdit*>()) return e;
+        static auto* none = new QLineEdit;  // never shown, never freed: an empty text until the line edit exists
+        return none;
+    }
 };
 
 QAccessibleInterface* factory(const QString& classname, QObject* object) {
@@ -201,14 +207,17 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (classname == QLatin1String("tactus::gui::SheetPreview"))
         return make_accessible_sheet_preview(static_cast<SheetPreview*>(w));
     if (classname == QLatin1String("tactus::gui::BraillePane"))
-        return make_accessible_braille_pane(static_cast<BraillePane*>(w));
+        return make_accessible_plain_text(static_cast<BraillePane*>(w));
+    // A read-only log: Qt's interface answers a word read at a word's edge with
+    // the unit before the offset.
+    if (auto* log = qobject_cast<QPlainTextEdit*>(w); log && log->isReadOnly() && classname == QLatin1String("QPlainTextEdit"))
+        return make_accessible_plain_text(log);
     if (classname == QLatin1String("QSplitterHandle")) return new AccessibleSplitterHandle(w);
     // Asked first for the most derived class (QSpinBox, QDoubleSpinBox), which
     // Qt's own factory would answer.
     if (auto* edit = qobject_cast<QLineEdit*>(w); edit && edit->echoMode() == QLineEdit::Normal)
-        return new AccessibleLineText(w, edit, QAccessible::EditableText);
-    if (auto* spin = qobject_cast<QAbstractSpinBox*>(w))
-        if (auto* edit = spin->findChild<QLineEdit*>(); edit) return new AccessibleLineText(w, edit, QAccessible::SpinBox);
+        return new AccessibleLineText(w, QAccessible::EditableText);
+    if (qobject_cast<QAbstractSpinBox*>(w)) return new AccessibleLineText(w, QAccessible::SpinBox);
     // An editable combo box keeps Qt's interface: its line edit is its text.
     if (classname == QLatin1String("QComboBox"))
         if (auto* box = static_cast<QComboBox*>(w); !box->isEditable()) return new AccessibleComboBox(box);

@@ -184,12 +184,13 @@ void BraillePane::insertFromMimeData(const QMimeData* source) {
 
 namespace {
 
-// The braille pane for a screen reader: Qt's text interface for a plain text
-// edit, but with words that end at blank cells (text_units.hpp).
-class AccessibleBraillePane : public QAccessibleWidget, public QAccessibleTextInterface {
+// The braille pane (or a read-only log) for a screen reader: Qt's text interface
+// for a plain text edit, but with the units of text_units.hpp: words that end at
+// blank cells, and a unit that always holds the offset asked about.
+class AccessiblePlainText : public QAccessibleWidget, public QAccessibleTextInterface {
 public:
-    explicit AccessibleBraillePane(BraillePane* w) : QAccessibleWidget(w, QAccessible::EditableText) {}
-    BraillePane* pane() const { return static_cast<BraillePane*>(widget()); }
+    explicit AccessiblePlainText(QPlainTextEdit* w) : QAccessibleWidget(w, QAccessible::EditableText) {}
+    QPlainTextEdit* pane() const { return static_cast<QPlainTextEdit*>(widget()); }
 
     void* interface_cast(QAccessible::InterfaceType t) override {
         if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
@@ -197,7 +198,8 @@ public:
     }
     QAccessible::State state() const override {
         auto s = QAccessibleWidget::state();
-        s.editable = true;
+        s.editable = !pane()->isReadOnly();
+        s.readOnly = pane()->isReadOnly();
         s.multiLine = true;
         s.selectableText = true;
         return s;
@@ -285,7 +287,7 @@ private:
 
 }  // namespace
 
-QAccessibleInterface* make_accessible_braille_pane(BraillePane* pane) { return new AccessibleBraillePane(pane); }
+QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane) { return new AccessiblePlainText(pane); }
 
 PrintPane::PrintPane(QWidget* parent) : QPlainTextEdit(parent) {
     setObjectName(QStringLiteral("printPane"));

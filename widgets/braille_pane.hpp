@@ -40,8 +40,9 @@ private:
     SixKeyChord chord_;
 };
 
-// Its accessible interface, for the app's accessibility factory.
-QAccessibleInterface* make_accessible_braille_pane(BraillePane* pane);
+// The accessible interface of the braille pane and of read-only plain texts,
+// for the app's accessibility factory.
+QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane);
 
 // The print side: forwards dropped files to the window instead of pasting their
 // names, and leaves undo/redo to the window's undo stack.
