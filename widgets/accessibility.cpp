@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Accessible interfaces for widgets Qt leaves without one: the announcer
 // (Notification role), the sheet preview (a graphic with a text caret), and
-// splitter handles, which otherwise show up with no role at all; and for combo
-// boxes, whose value Qt's own interface does not let a screen reader find.
-#include <QAbstractItemView>
+// splitter handles, which otherwise show up with no role at all; and text
+// interfaces that answer every read (Qt's fallback loops on some).
 #include <QAccessible>
 #include <QApplication>
 #include <QAccessibleWidget>
 #include <QAbstractSpinBox>
-#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QSplitterHandle>
 
@@ -42,74 +41,6 @@ public:
     QString text(QAccessible::Text t) const override {
         if (t == QAccessible::Name) return QObject::tr("Divider between print and braille");
         return QAccessibleWidget::text(t);
-    }
-};
-
-// A closed combo box. Orca reads a combo box's value from its selected child or
-// its text; Qt's interface (Qt 6.4) has neither, so Orca said "Speed: combo box"
-// with no value. Here the value is the box's text, and a change made with the
-// arrows while it is closed, which Orca does not speak from Qt's events, is said
-// through the window's announcer (unless the box's owner announces its own
-// changes: property "announcesChanges").
-class AccessibleComboBox : public QAccessibleWidget, public QAccessibleTextInterface {
-public:
-    explicit AccessibleComboBox(QComboBox* box) : QAccessibleWidget(box, QAccessible::ComboBox) {
-        QObject::connect(box, &QComboBox::currentIndexChanged, box, [box] {
-            if (!box->hasFocus() || box->view()->isVisible() || box->property("announcesChanges").toBool()) return;
-            if (auto* a = box->window()->findChild<Announcer*>()) a->announce(box->currentText());
-        });
-    }
-    QComboBox* box() const { return static_cast<QComboBox*>(widget()); }
-
-    void* interface_cast(QAccessible::InterfaceType t) override {
-        if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
-        return QAccessibleWidget::interface_cast(t);
-    }
-    QString text(QAccessible::Text t) const override {
-        if (t == QAccessible::Value) return box()->currentText();
-        if (t == QAccessible::Name && box()->accessibleName().isEmpty()) return box()->currentText();
-        return QAccessibleWidget::text(t);
-    }
-    QAccessible::State state() const override {
-        auto s = QAccessibleWidget::state();
-        s.expandable = true;
-        s.hasPopup = true;
-        s.expanded = box()->view()->isVisible();
-        s.collapsed = !s.expanded;
-        return s;
-    }
-    QStringList actionNames() const override { return {showMenuAction(), pressAction()}; }
-    void doAction(const QString& name) override {
-        if (name == showMenuAction() || name == pressAction()) box()->showPopup();
-    }
-    QStringList keyBindingsForAction(const QString&) const override { return {}; }
-
-    // QAccessibleTextInterface: the value, read-only.
-    void selection(int, int* start, int* end) const override { *start = *end = 0; }
-    int selectionCount() const override { return 0; }
-    void addSelection(int, int) override {}
-    void removeSelection(int) override {}
-    void setSelection(int, int, int) override {}
-    int cursorPosition() const override { return 0; }
-    void setCursorPosition(int) override {}
-    QString text(int start, int end) const override { return box()->currentText().mid(start, end - start); }
-    int characterCount() const override { return static_cast<int>(box()->currentText().size()); }
-    QRect characterRect(int) const override { return rect(); }
-    int offsetAtPoint(const QPoint&) const override { return 0; }
-    void scrollToSubstring(int, int) override {}
-    QString attributes(int, int* start, int* end) const override {
-        *start = 0;
-        *end = characterCount();
-        return {};
-    }
-    QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_at_offset(box()->currentText(), offset, b, start, end);
-    }
-    QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_before_offset(box()->currentText(), offset, b, start, end);
-    }
-    QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_after_offset(box()->currentText(), offset, b, start, end);
     }
 };
 
@@ -218,23 +149,22 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (auto* edit = qobject_cast<QLineEdit*>(w); edit && edit->echoMode() == QLineEdit::Normal)
         return new AccessibleLineText(w, QAccessible::EditableText);
     if (qobject_cast<QAbstractSpinBox*>(w)) return new AccessibleLineText(w, QAccessible::SpinBox);
-    // An editable combo box keeps Qt's interface: its line edit is its text.
-    if (classname == QLatin1String("QComboBox"))
-        if (auto* box = static_cast<QComboBox*>(w); !box->isEditable()) return new AccessibleComboBox(box);
     if (classname == QLatin1String("QLabel"))
         if (auto* l = static_cast<QLabel*>(w); !status_caption(l).isEmpty()) return make_accessible_status(l);
     return nullptr;
 }
 
-// The main window loses its activation to each popup it opens (a menu, a combo
-// box's list) and gets it back when the popup closes; walking the menu bar by
+// The main window loses its activation to each popup menu it opens and gets it
+// back when the menu closes; walking the menu bar by
 // Right even re-activates it, and moves the focus back to the text, between two
 // menus. Orca takes each return for coming back to the window and reads it
 // again ("Tactus frame", then the print text), so Right read the document
 // instead of the next menu. The popups belong to the window: while one is open,
 // the window's activation changes and the focus of widgets outside the popup
 // are not passed to the screen reader. Leaving for another program still is.
-bool popup_open() { return QApplication::activePopupWidget() != nullptr; }
+// Only menus: a combo box's list opened by a key is announced with the box it
+// belongs to, which a held-back focus event silenced.
+bool popup_open() { return qobject_cast<QMenu*>(QApplication::activePopupWidget()) != nullptr; }
 
 class PopupActivationFilter : public QObject {
 public:

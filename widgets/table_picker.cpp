@@ -33,7 +33,6 @@ TablePicker::TablePicker(QWidget* parent) : QComboBox(parent) {
     setAccessibleName(tr("Braille table"));
     setAccessibleDescription(tr("The language and braille code the print is translated with"));
     setToolTip(accessibleDescription());
-    setProperty("announcesChanges", true);  // the window says "Braille table: ..." on a change
     const QLocale ui;  // the interface language (main sets it as the default)
     const bool english = ui.language() == QLocale::English || ui.language() == QLocale::C;
     for (const auto& t : translate::table_catalogue(ui.bcp47Name().toStdString())) {
