@@ -1,15 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Accessible interfaces for widgets Qt leaves without one: the announcer
 // (Notification role), the sheet preview (a graphic with a text caret), and
-// splitter handles, which otherwise show up with no role at all.
+// splitter handles, which otherwise show up with no role at all; and text
+// interfaces that answer every read (Qt's fallback loops on some).
 #include <QAccessible>
+#include <QApplication>
 #include <QAccessibleWidget>
+#include <QAbstractSpinBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QPlainTextEdit>
 #include <QSplitterHandle>
 
 #include "announcer.hpp"
+#include "braille_pane.hpp"
 #include "sheet_preview.hpp"
 #include "status_label.hpp"
+#include "text_units.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -36,20 +44,192 @@ public:
     }
 };
 
+// A line edit, or a spin box through its line edit. Qt's interfaces for both
+// take textAtOffset from QAccessibleTextInterface's fallback, which never returns
+// at the end of the text by word ("1" in the Sheet box hung the app).
+class AccessibleLineText : public QAccessibleWidget, public QAccessibleTextInterface, public QAccessibleValueInterface {
+public:
+    AccessibleLineText(QWidget* w, QAccessible::Role role) : QAccessibleWidget(w, role) {}
+
+    void* interface_cast(QAccessible::InterfaceType t) override {
+        if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
+        if (t == QAccessible::ValueInterface && spin()) return static_cast<QAccessibleValueInterface*>(this);
+        return QAccessibleWidget::interface_cast(t);
+    }
+    QAccessible::State state() const override {
+        auto s = QAccessibleWidget::state();
+        s.editable = !edit()->isReadOnly();
+        s.readOnly = edit()->isReadOnly();
+        s.selectableText = true;
+        return s;
+    }
+    QString text(QAccessible::Text t) const override {
+        if (t == QAccessible::Value) return edit()->text();
+        return QAccessibleWidget::text(t);
+    }
+    QStringList actionNames() const override {
+        auto names = QAccessibleWidget::actionNames();
+        if (spin()) names << increaseAction() << decreaseAction();
+        return names;
+    }
+    void doAction(const QString& name) override {
+        if (spin() && name == increaseAction()) spin()->stepUp();
+        else if (spin() && name == decreaseAction()) spin()->stepDown();
+        else QAccessibleWidget::doAction(name);
+    }
+
+    // QAccessibleValueInterface (spin boxes): Qt's value, minimum, maximum and step properties.
+    QVariant currentValue() const override { return widget()->property("value"); }
+    void setCurrentValue(const QVariant& v) override { widget()->setProperty("value", v); }
+    QVariant maximumValue() const override { return widget()->property("maximum"); }
+    QVariant minimumValue() const override { return widget()->property("minimum"); }
+    QVariant minimumStepSize() const override { return widget()->property("singleStep"); }
+
+    // QAccessibleTextInterface
+    void selection(int index, int* start, int* end) const override {
+        if (index != 0 || !edit()->hasSelectedText()) {
+            *start = *end = 0;
+            return;
+        }
+        *start = edit()->selectionStart();
+        *end = *start + static_cast<int>(edit()->selectedText().size());
+    }
+    int selectionCount() const override { return edit()->hasSelectedText() ? 1 : 0; }
+    void addSelection(int start, int end) override { setSelection(0, start, end); }
+    void removeSelection(int) override { edit()->deselect(); }
+    void setSelection(int, int start, int end) override { edit()->setSelection(start, end - start); }
+    int cursorPosition() const override { return edit()->cursorPosition(); }
+    void setCursorPosition(int position) override { edit()->setCursorPosition(position); }
+    QString text(int start, int end) const override { return edit()->text().mid(start, end - start); }
+    int characterCount() const override { return static_cast<int>(edit()->text().size()); }
+    QRect characterRect(int) const override { return rect(); }
+    int offsetAtPoint(const QPoint& point) const override { return edit()->cursorPositionAt(edit()->mapFromGlobal(point)); }
+    void scrollToSubstring(int, int) override {}
+    QString attributes(int, int* start, int* end) const override {
+        *start = 0;
+        *end = characterCount();
+        return {};
+    }
+    QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_at_offset(edit()->text(), offset, b, start, end);
+    }
+    QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_before_offset(edit()->text(), offset, b, start, end);
+    }
+    QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_after_offset(edit()->text(), offset, b, start, end);
+    }
+
+private:
+    QAbstractSpinBox* spin() const { return qobject_cast<QAbstractSpinBox*>(widget()); }
+    // A spin box may be asked for while it is built, before its line edit exists.
+    QLineEdit* edit() const {
+        if (auto* e = qobject_cast<QLineEdit*>(widget())) return e;
+        if (auto* e = widget()->findChild<QLineEdit*>()) return e;
+        static auto* none = new QLineEdit;  // never shown, never freed: an empty text until the line edit exists
+        return none;
+    }
+};
+
 QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (!object || !object->isWidgetType()) return nullptr;
     auto* w = static_cast<QWidget*>(object);
     if (classname == QLatin1String("tactus::gui::Announcer")) return new AccessibleAnnouncer(static_cast<Announcer*>(w));
     if (classname == QLatin1String("tactus::gui::SheetPreview"))
         return make_accessible_sheet_preview(static_cast<SheetPreview*>(w));
+    if (classname == QLatin1String("tactus::gui::BraillePane"))
+        return make_accessible_plain_text(static_cast<BraillePane*>(w));
+    // A read-only log: Qt's interface answers a word read at a word's edge with
+    // the unit before the offset.
+    if (auto* log = qobject_cast<QPlainTextEdit*>(w); log && log->isReadOnly() && classname == QLatin1String("QPlainTextEdit"))
+        return make_accessible_plain_text(log);
     if (classname == QLatin1String("QSplitterHandle")) return new AccessibleSplitterHandle(w);
+    // Asked first for the most derived class (QSpinBox, QDoubleSpinBox), which
+    // Qt's own factory would answer.
+    if (auto* edit = qobject_cast<QLineEdit*>(w); edit && edit->echoMode() == QLineEdit::Normal)
+        return new AccessibleLineText(w, QAccessible::EditableText);
+    if (qobject_cast<QAbstractSpinBox*>(w)) return new AccessibleLineText(w, QAccessible::SpinBox);
     if (classname == QLatin1String("QLabel"))
         if (auto* l = static_cast<QLabel*>(w); !status_caption(l).isEmpty()) return make_accessible_status(l);
     return nullptr;
 }
 
+// The main window loses its activation to each popup menu it opens and gets it
+// back when the menu closes; walking the menu bar by
+// Right even re-activates it, and moves the focus back to the text, between two
+// menus. Orca takes each return for coming back to the window and reads it
+// again ("Tactus frame", then the print text), so Right read the document
+// instead of the next menu. The popups belong to the window: while one is open,
+// the window's activation changes and the focus of widgets outside the popup
+// are not passed to the screen reader. Leaving for another program still is.
+// Only menus: a combo box's list opened by a key is announced with the box it
+// belongs to, which a held-back focus event silenced.
+bool popup_open() { return qobject_cast<QMenu*>(QApplication::activePopupWidget()) != nullptr; }
+
+class PopupActivationFilter : public QObject {
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject* target, QEvent* e) override {
+        const auto type = e->type();
+        if (type == QEvent::Show && target->isWidgetType() &&
+            static_cast<QWidget*>(target)->windowType() == Qt::Popup) {
+            // Stay the first application filter, before the AT-SPI bridge's,
+            // which is installed once the screen reader's bus answers.
+            QMetaObject::invokeMethod(this, [this] {
+                qApp->removeEventFilter(this);
+                qApp->installEventFilter(this);
+            }, Qt::QueuedConnection);
+            return false;
+        }
+        if ((type != QEvent::WindowActivate && type != QEvent::WindowDeactivate) || !e->spontaneous() ||
+            !target->isWidgetType())
+            return false;
+        auto* w = static_cast<QWidget*>(target);
+        if (!w->isWindow() || w->windowType() == Qt::Popup) return false;
+        if (type == QEvent::WindowDeactivate) {
+            if (!popup_open()) return false;
+            hid_deactivation_ = true;
+            return true;
+        }
+        if (popup_open()) return true;
+        if (!hid_deactivation_) return false;
+        hid_deactivation_ = false;
+        return true;
+    }
+
+private:
+    bool hid_deactivation_ = false;
+};
+
+QAccessible::UpdateHandler qt_handler = nullptr;
+
+void pass_on(QAccessibleEvent* e) {
+    if (qt_handler) {
+        qt_handler(e);
+        return;
+    }
+    // No handler before this one: Qt's own delivery, which runs without one.
+    auto* mine = QAccessible::installUpdateHandler(nullptr);
+    QAccessible::updateAccessibility(e);
+    QAccessible::installUpdateHandler(mine);
+}
+
+void update_handler(QAccessibleEvent* e) {
+    if (e->type() == QAccessible::Focus && popup_open()) {
+        auto* o = e->object();
+        if (o && o->isWidgetType() && static_cast<QWidget*>(o)->window()->windowType() != Qt::Popup) return;
+    }
+    pass_on(e);
+}
+
 }  // namespace
 
-void install_accessibility() { QAccessible::installFactory(factory); }
+void install_accessibility() {
+    QAccessible::installFactory(factory);
+    qt_handler = QAccessible::installUpdateHandler(update_handler);
+    qApp->installEventFilter(new PopupActivationFilter(qApp));
+}
 
 }  // namespace tactus::gui

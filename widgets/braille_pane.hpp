@@ -10,6 +10,8 @@
 #include "document/cell.hpp"
 #include "six_key.hpp"
 
+class QAccessibleInterface;
+
 namespace tactus::gui {
 
 class BraillePane : public QPlainTextEdit {
@@ -37,6 +39,10 @@ protected:
 private:
     SixKeyChord chord_;
 };
+
+// The accessible interface of the braille pane and of read-only plain texts,
+// for the app's accessibility factory.
+QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane);
 
 // The print side: forwards dropped files to the window instead of pasting their
 // names, and leaves undo/redo to the window's undo stack.

@@ -60,6 +60,7 @@
 #include "table_picker.hpp"
 #include "visible_focus.hpp"
 #include "translate/catalogue.hpp"
+#include "translate/script_check.hpp"
 
 namespace tactus::gui {
 namespace {
@@ -241,6 +242,11 @@ void MainWindow::build_actions() {
     redo_ = editor_->undo_stack()->createRedoAction(this, tr("&Redo"));
     redo_->setShortcut(QKeySequence::Redo);
     redo_->setObjectName(QStringLiteral("editRedo"));
+    // The text comes back without a word from the screen reader: say what was undone.
+    connect(undo_, &QAction::triggered, this,
+            [this] { announcer_->announce(tr("Undone: %1").arg(editor_->undo_stack()->redoText())); });
+    connect(redo_, &QAction::triggered, this,
+            [this] { announcer_->announce(tr("Redone: %1").arg(editor_->undo_stack()->undoText())); });
     addActions({undo_, redo_});
     find_action_ = make(tr("&Find and Replace..."), QKeySequence::Find, QStringLiteral("editFind"), [this] {
         find_->set_find_text(editor_->print_pane()->textCursor().selectedText());
@@ -371,8 +377,19 @@ void MainWindow::set_table(const QString& table) {
 }
 
 QString MainWindow::table_warning(const QString& detail) const {
+    // The core words a script mismatch for the command line (with --table); here
+    // it is a sentence in the interface's language.
+    QString said = detail;
+    if (const auto m = translate::find_script_mismatch(editor_->layout().document(), editor_->layout().tables())) {
+        const auto better = QString::fromStdString(m->better);
+        said = !m->chinese_text ? tr("the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it")
+                                      .arg(better)
+               : m->traditional ? tr("the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it").arg(better)
+                                : tr("the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it")
+                                      .arg(better);
+    }
     return tr("Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.")
-        .arg(tables_->currentText(), detail);
+        .arg(tables_->currentText(), said);
 }
 
 void MainWindow::new_document() {
@@ -526,6 +543,9 @@ void MainWindow::update_title() {
     const auto name = !source_name_.isEmpty() ? source_name_ : tr("Untitled");
     setWindowTitle(QStringLiteral("%1[*] \u2014 Tactus").arg(name));
     setWindowModified(!editor_->undo_stack()->isClean());
+    // The frame's name is what a screen reader says on coming back to the window:
+    // the document's name, not only the program's.
+    setAccessibleName(tr("%1 \u2014 Tactus").arg(name));
 }
 
 void MainWindow::report(const QString& message, bool error) {

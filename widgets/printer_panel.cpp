@@ -385,7 +385,9 @@ void PrinterPanel::refresh_devices() {
     const auto found = controller::list_devices(&problems);
     devices_->clear();
     for (const auto& d : found) {
-        devices_->addItem(QStringLiteral("%1 [%2]").arg(qs(d.description), qs(d.device)), qs(d.device));
+        // The core names devices in English; the simulator, always listed, in the interface's language.
+        const auto description = d.device == kSim ? tr("Built-in simulated embosser") : qs(d.description);
+        devices_->addItem(QStringLiteral("%1 [%2]").arg(description, qs(d.device)), qs(d.device));
         devices_->setItemData(devices_->count() - 1,
                               d.device == kSim ? tr("The built-in simulated embosser, on this computer")
                                                : tr("An embosser on a cable to this computer"),
@@ -907,6 +909,7 @@ void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t
     const auto before = w.state;
     w.state = j.state;
     const bool reason_changed = w.reason != j.reason;
+    const bool operator_pause_before = before == spool::JobState::paused && w.reason == "paused by the operator";
     w.reason = j.reason;
     if (before != j.state) {
         if (j.state == spool::JobState::running && before == spool::JobState::queued) {
@@ -919,6 +922,11 @@ void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t
     if (j.state == spool::JobState::paused && reason_changed && !j.reason.empty() &&
         j.reason != "paused by the operator")
         announce_fault(j.id, tr("%1 paused: %2").arg(title, qs(j.reason)));
+    // Alt+P says "Pausing" at once; the job reaching the state is said too.
+    if (before != j.state && j.state == spool::JobState::paused && j.reason == "paused by the operator")
+        Q_EMIT message(tr("%1 paused").arg(title), false);
+    if (operator_pause_before && j.state == spool::JobState::running)
+        Q_EMIT message(tr("%1 resumed").arg(title), false);
     if (j.state == spool::JobState::queued && reason_changed && !j.reason.empty())
         show_fault(tr("%1 waits: %2").arg(title, qs(j.reason)));
     if (j.state == spool::JobState::running && !w.steps)
@@ -926,11 +934,15 @@ void PrinterPanel::follow(const spool::JobRecord& j, const Shown& s, std::size_t
     if (j.state == spool::JobState::running && total) {
         // The runner records every pass; the bar, the status and the screen
         // reader hear only the steps (one event per strike would flood Orca).
+        const auto now = ProgressSteps::Clock::now();
         const auto step = w.steps->update(done, total, std::max<std::size_t>(s.sheet, 1));
-        if (step && w.steps->speak(ProgressSteps::Clock::now()))
+        if (step && w.steps->speak(now))
             Q_EMIT message(step->by_sheet ? tr("%1: sheet %2 of %3").arg(title).arg(step->sheet).arg(step->sheets)
                                           : tr("%1: %2 percent, sheet %3 of %4")
                                                 .arg(title).arg(step->percent / 10 * 10).arg(step->sheet).arg(step->sheets),
+                           false);
+        else if (const auto beat = w.steps->overdue(now))  // a slow job is heard every half minute
+            Q_EMIT message(tr("%1: %2 percent, sheet %3 of %4").arg(title).arg(beat->percent).arg(beat->sheet).arg(beat->sheets),
                            false);
     }
 }

@@ -96,9 +96,16 @@ void ProfileEditor::add(QFormLayout* form, const QString& name, const QString& l
     box->setAccessibleName(unit.isEmpty() ? label : tr("%1 in %2").arg(label, unit));
     box->setAccessibleDescription(tr("Range %1; profile field %2").arg(range, name));
     box->setToolTip(box->accessibleDescription());
+    box->setProperty("usualDescription", box->accessibleDescription());
     form->addRow(label + QLatin1Char(':'), box);
     connect(box, &QDoubleSpinBox::valueChanged, this, &ProfileEditor::edited);
     fields_.push_back({name, box, std::move(ref)});
+}
+
+void ProfileEditor::mark_invalid(QDoubleSpinBox* box, const QString& problem) {
+    const auto usual = box->property("usualDescription").toString();
+    const auto wanted = problem.isEmpty() ? usual : tr("Invalid: %1. %2").arg(problem, usual);
+    if (box->accessibleDescription() != wanted) box->setAccessibleDescription(wanted);
 }
 
 QDoubleSpinBox* ProfileEditor::field(const QString& name) const {
@@ -134,16 +141,23 @@ void ProfileEditor::edited() {
         }
         const auto text = tr("%1 %2. The plan and preview keep the last valid profile.")
                               .arg(label, QString::fromStdString(ok.error().message));
+        // Back on the field later, the screen reader says it is invalid and why.
+        for (auto& f : fields_) mark_invalid(f.box, f.name == field ? QString::fromStdString(ok.error().message) : QString());
         status_->setText(text);
         status_->setProperty("error", true);
         Q_EMIT message(text, true);
         return;
     }
-    for (auto& f : fields_) f.box->setStyleSheet(QString());
-    const bool changed = !(candidate == valid_) || status_->property("error").toBool();
+    for (auto& f : fields_) {
+        f.box->setStyleSheet(QString());
+        mark_invalid(f.box, {});
+    }
+    const bool was_error = status_->property("error").toBool();
+    const bool changed = !(candidate == valid_) || was_error;
     valid_ = candidate;
     status_->setText(tr("Profile is valid."));
     status_->setProperty("error", false);
+    if (was_error) Q_EMIT message(tr("Profile is valid again."), false);  // the fix is heard, as the error was
     if (changed) Q_EMIT profile_changed(valid_);
 }
 

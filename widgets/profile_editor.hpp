@@ -40,6 +40,8 @@ private:
     void add(QFormLayout* form, const QString& name, const QString& label, const QString& unit, double lo,
              double hi, int decimals, std::function<double&(profile::PrinterProfile&)> ref);
     void edited();
+    // Puts a problem in the field's accessible description, or takes it out.
+    static void mark_invalid(QDoubleSpinBox* box, const QString& problem);
 
     std::vector<Field> fields_;
     profile::PrinterProfile valid_;

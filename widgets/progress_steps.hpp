@@ -17,7 +17,8 @@ public:
     using Clock = std::chrono::steady_clock;
     // `sheets`: the sheets the job embosses. `min_gap`: the least time between
     // two spoken steps.
-    explicit ProgressSteps(std::size_t sheets, std::chrono::milliseconds min_gap = std::chrono::seconds(3));
+    explicit ProgressSteps(std::size_t sheets, std::chrono::milliseconds min_gap = std::chrono::seconds(3),
+                           std::chrono::milliseconds heartbeat = std::chrono::seconds(30));
 
     struct Step {
         int percent = 0;         // whole percent of the passes done
@@ -34,6 +35,10 @@ public:
     // last spoken one is at least min_gap old). A step not spoken is said with a
     // later one; the job's end is announced by its own message.
     bool speak(Clock::time_point now);
+    // When nothing was said for `heartbeat` while the job moved on: the step to
+    // say now. At the plan's own speed a sheet takes minutes, and minutes of
+    // silence sound like a stalled job. The first call starts the clock.
+    std::optional<Step> overdue(Clock::time_point now);
 
     [[nodiscard]] int shown_percent() const { return shown_; }
 
@@ -42,6 +47,10 @@ private:
 
     std::size_t sheets_;
     std::chrono::milliseconds gap_;
+    std::chrono::milliseconds heartbeat_;
+    int latest_ = 0;  // the last reported progress, moved to a step or not
+    std::size_t latest_sheet_ = 1;
+    int spoken_percent_ = 0;
     int shown_ = -1;
     int shown_tenth_ = -1;
     std::size_t shown_sheet_ = 0;

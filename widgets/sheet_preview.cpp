@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "text_units.hpp"
+
 namespace tactus::gui {
 namespace {
 
@@ -403,6 +405,16 @@ public:
         *start = offset;
         *end = offset + 1;
         return {};
+    }
+    // Qt's fallback for these loops for ever on a line of braille cells.
+    QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_at_offset(line_text(), offset, b, start, end);
+    }
+    QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_before_offset(line_text(), offset, b, start, end);
+    }
+    QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_after_offset(line_text(), offset, b, start, end);
     }
 };
 

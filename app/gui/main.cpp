@@ -95,7 +95,10 @@ int main(int argc, char** argv) {
     if (qt_translator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QApplication::installTranslator(&qt_translator);
-    if (translator.load(locale, QStringLiteral("tactus"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+    // Without a translation for the language the English source strings are
+    // shown, with their English plural forms ("1 sheet", not "1 sheet(s)").
+    if (translator.load(locale, QStringLiteral("tactus"), QStringLiteral("_"), QStringLiteral(":/i18n")) ||
+        translator.load(QStringLiteral("tactus_en"), QStringLiteral(":/i18n")))
         QApplication::installTranslator(&translator);
 
     install_accessibility();

@@ -77,23 +77,30 @@ ScriptCounts count_scripts(const document::Document& document) {
     return counts;
 }
 
-std::optional<std::string> check_script(const document::Document& document, const std::string& tables) {
+std::optional<ScriptMismatch> find_script_mismatch(const document::Document& document, const std::string& tables) {
     const auto counts = count_scripts(document);
     const auto language = table_language(tables);
     if (counts.han >= kEnough && counts.han > counts.latin && !chinese_language(language)) {
         const bool traditional = counts.traditional_only * 20 >= counts.han;  // 5% or more
-        const std::string better = traditional ? "zh-tw.ctb" : "zhcn-g2.ctb";
-        return "the text is mostly Chinese (" + std::string(traditional ? "Traditional" : "Simplified") +
-               ") but " + tables + " is not a Chinese table; " + better +
-               (traditional ? " (Taiwanese bopomofo braille)" : " (Chinese double-phonic braille; or zhcn-g1.ctb)") +
-               " suits it: --table " + better;
+        return ScriptMismatch{true, traditional, tables, traditional ? "zh-tw.ctb" : "zhcn-g2.ctb"};
     }
     if (counts.latin >= kEnough && counts.latin > counts.han && chinese_language(language) &&
         !english_language(language))
-        return "the text is mostly in Latin letters but " + tables +
-               " is a Chinese table; for English en-ueb-g2.ctb (Unified English Braille) suits it:"
-               " --table en-ueb-g2.ctb";
+        return ScriptMismatch{false, false, tables, "en-ueb-g2.ctb"};
     return std::nullopt;
+}
+
+std::optional<std::string> check_script(const document::Document& document, const std::string& tables) {
+    const auto m = find_script_mismatch(document, tables);
+    if (!m) return std::nullopt;
+    if (m->chinese_text)
+        return "the text is mostly Chinese (" + std::string(m->traditional ? "Traditional" : "Simplified") +
+               ") but " + tables + " is not a Chinese table; " + m->better +
+               (m->traditional ? " (Taiwanese bopomofo braille)" : " (Chinese double-phonic braille; or zhcn-g1.ctb)") +
+               " suits it: --table " + m->better;
+    return "the text is mostly in Latin letters but " + tables +
+           " is a Chinese table; for English en-ueb-g2.ctb (Unified English Braille) suits it:"
+           " --table en-ueb-g2.ctb";
 }
 
 }  // namespace tactus::translate

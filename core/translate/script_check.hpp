@@ -19,8 +19,19 @@ struct ScriptCounts {
 };
 ScriptCounts count_scripts(const document::Document& document);
 
-// A warning naming a better table, or nothing when the table suits the text.
-// `tables` is the liblouis table list in use (its first table decides).
+// How the text and the table disagree, and the table that suits the text.
+struct ScriptMismatch {
+    bool chinese_text = false;  // Chinese under a table that is not Chinese; else Latin letters under a Chinese table
+    bool traditional = false;   // the Chinese is Traditional
+    std::string table;          // the table list in use
+    std::string better;         // the table that suits the text, e.g. "zh-tw.ctb"
+};
+// `tables` is the liblouis table list in use (its first table decides); nothing
+// when the table suits the text.
+std::optional<ScriptMismatch> find_script_mismatch(const document::Document& document, const std::string& tables);
+
+// The mismatch as a warning for the command line, naming its --table option
+// (the desktop app words it in its own language, without command-line syntax).
 std::optional<std::string> check_script(const document::Document& document, const std::string& tables);
 
 }  // namespace tactus::translate

@@ -8,52 +8,52 @@
         <translation>輸入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="71" />
+        <location filename="../../widgets/main_window.cpp" line="78" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="75" />
+        <location filename="../../widgets/main_window.cpp" line="82" />
         <source>Saving %1 failed: %2</source>
         <translation>儲存 %1 失敗：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="78" />
+        <location filename="../../widgets/sheet_preview.cpp" line="80" />
         <source>front</source>
         <translation>正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="79" />
+        <location filename="../../widgets/sheet_preview.cpp" line="81" />
         <source>back, as read after turning the sheet</source>
         <translation>背面（翻頁後閱讀的方向）</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="80" />
+        <location filename="../../widgets/sheet_preview.cpp" line="82" />
         <source>front and back</source>
         <translation>正面與背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="82" />
+        <location filename="../../widgets/sheet_preview.cpp" line="84" />
         <source>Sheet %1 (%2) - pages %3 / %4</source>
         <translation>第 %1 張（%2）－ 第 %3 / %4 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="418" />
+        <location filename="../../widgets/sheet_preview.cpp" line="430" />
         <source>Tactus interpoint proof</source>
         <translation>Tactus 雙面點字校稿</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="425" />
+        <location filename="../../widgets/sheet_preview.cpp" line="437" />
         <source>Cannot write %1</source>
         <translation>無法寫入 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="436" />
+        <location filename="../../widgets/sheet_preview.cpp" line="448" />
         <source>Cannot finish %1</source>
         <translation>無法完成 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/accessibility.cpp" line="34" />
+        <location filename="../../widgets/accessibility.cpp" line="39" />
         <source>Divider between print and braille</source>
         <translation>明眼字與點字的分隔線</translation>
     </message>
@@ -73,62 +73,62 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="72" />
-        <location filename="../../widgets/printer_panel.cpp" line="85" />
+        <location filename="../../widgets/printer_panel.cpp" line="73" />
+        <location filename="../../widgets/printer_panel.cpp" line="86" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="74" />
-        <location filename="../../widgets/printer_panel.cpp" line="86" />
+        <location filename="../../widgets/printer_panel.cpp" line="75" />
+        <location filename="../../widgets/printer_panel.cpp" line="87" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="87" />
+        <location filename="../../widgets/printer_panel.cpp" line="88" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="78" />
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="79" />
+        <location filename="../../widgets/printer_panel.cpp" line="89" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="73" />
+        <location filename="../../widgets/printer_panel.cpp" line="74" />
         <source>held</source>
         <translation>保留中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="75" />
-        <location filename="../../widgets/printer_panel.cpp" line="89" />
+        <location filename="../../widgets/printer_panel.cpp" line="76" />
+        <location filename="../../widgets/printer_panel.cpp" line="90" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="76" />
-        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <location filename="../../widgets/printer_panel.cpp" line="77" />
+        <location filename="../../widgets/printer_panel.cpp" line="91" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="77" />
+        <location filename="../../widgets/printer_panel.cpp" line="78" />
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="155" />
+        <location filename="../../widgets/printer_panel.cpp" line="163" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="157" />
+        <location filename="../../widgets/printer_panel.cpp" line="165" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="159" />
+        <location filename="../../widgets/printer_panel.cpp" line="167" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -194,12 +194,12 @@
 <context>
     <name>tactus::gui::BraillePane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="42" />
+        <location filename="../../widgets/braille_pane.cpp" line="50" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="44" />
+        <location filename="../../widgets/braille_pane.cpp" line="52" />
         <source>The braille of each paragraph. Type with S D F J K L as dots 3 2 1 4 5 6; space, backspace and delete edit cells</source>
         <translation>每一段的點字。以 S D F J K L 輸入第 3 2 1 4 5 6 點；空白鍵、退格鍵與刪除鍵編輯點字方</translation>
     </message>
@@ -207,17 +207,17 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="342" />
+        <location filename="../../widgets/editor_widget.cpp" line="382" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="114" />
+        <location filename="../../widgets/editor_widget.cpp" line="116" />
         <source>Print page break</source>
         <translation>原書換頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="114" />
+        <location filename="../../widgets/editor_widget.cpp" line="116" />
         <source>Print page break, page %1</source>
         <translation>原書換頁，第 %1 頁</translation>
     </message>
@@ -303,711 +303,738 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="87" />
-        <location filename="../../widgets/main_window.cpp" line="501" />
-        <location filename="../../widgets/main_window.cpp" line="634" />
-        <location filename="../../widgets/main_window.cpp" line="645" />
+        <location filename="../../widgets/main_window.cpp" line="94" />
+        <location filename="../../widgets/main_window.cpp" line="556" />
+        <location filename="../../widgets/main_window.cpp" line="709" />
+        <location filename="../../widgets/main_window.cpp" line="763" />
+        <location filename="../../widgets/main_window.cpp" line="797" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="97" />
+        <location filename="../../widgets/main_window.cpp" line="104" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="104" />
+        <location filename="../../widgets/main_window.cpp" line="111" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="105" />
+        <location filename="../../widgets/main_window.cpp" line="112" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="106" />
+        <location filename="../../widgets/main_window.cpp" line="113" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="111" />
+        <location filename="../../widgets/main_window.cpp" line="118" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="131" />
+        <location filename="../../widgets/main_window.cpp" line="149" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="133" />
+        <location filename="../../widgets/main_window.cpp" line="151" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="134" />
+        <location filename="../../widgets/main_window.cpp" line="152" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="141" />
+        <location filename="../../widgets/main_window.cpp" line="159" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="146" />
+        <location filename="../../widgets/main_window.cpp" line="164" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="206" />
+        <location filename="../../widgets/main_window.cpp" line="228" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="209" />
+        <location filename="../../widgets/main_window.cpp" line="231" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="210" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="211" />
+        <location filename="../../widgets/main_window.cpp" line="233" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="211" />
+        <location filename="../../widgets/main_window.cpp" line="233" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="212" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="212" />
+        <location filename="../../widgets/main_window.cpp" line="234" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="214" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="214" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="216" />
-        <location filename="../../widgets/main_window.cpp" line="651" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="825" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="216" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="217" />
+        <location filename="../../widgets/main_window.cpp" line="239" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="220" />
+        <location filename="../../widgets/main_window.cpp" line="242" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="224" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
+        <source>Undone: %1</source>
+        <translation>已復原：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="249" />
+        <source>Redone: %1</source>
+        <translation>已重做：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230" />
+        <location filename="../../widgets/main_window.cpp" line="257" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="259" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="234" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="234" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="290" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="290" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265" />
+        <location filename="../../widgets/main_window.cpp" line="292" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265" />
+        <location filename="../../widgets/main_window.cpp" line="292" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="295" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="275" />
+        <location filename="../../widgets/main_window.cpp" line="302" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="277" />
+        <location filename="../../widgets/main_window.cpp" line="304" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="311" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="316" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="296" />
+        <location filename="../../widgets/main_window.cpp" line="323" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="364" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="344" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="348" />
-        <location filename="../../widgets/main_window.cpp" line="464" />
+        <location filename="../../widgets/main_window.cpp" line="375" />
+        <location filename="../../widgets/main_window.cpp" line="503" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="353" />
+        <location filename="../../widgets/main_window.cpp" line="385" />
+        <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
+        <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="387" />
+        <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
+        <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="388" />
+        <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
+        <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="391" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="370" />
+        <location filename="../../widgets/main_window.cpp" line="408" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="371" />
+        <location filename="../../widgets/main_window.cpp" line="409" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="377" />
+        <location filename="../../widgets/main_window.cpp" line="415" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="392" />
+        <location filename="../../widgets/main_window.cpp" line="430" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="400" />
+        <location filename="../../widgets/main_window.cpp" line="438" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="427" />
+        <location filename="../../widgets/main_window.cpp" line="465" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="432" />
+        <location filename="../../widgets/main_window.cpp" line="470" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="433" />
+        <location filename="../../widgets/main_window.cpp" line="471" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="453" />
+        <location filename="../../widgets/main_window.cpp" line="492" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="458" />
+        <location filename="../../widgets/main_window.cpp" line="497" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="477" />
+        <location filename="../../widgets/main_window.cpp" line="529" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="480" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="480" />
+        <location filename="../../widgets/main_window.cpp" line="532" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="491" />
-        <location filename="../../widgets/main_window.cpp" line="635" />
-        <location filename="../../widgets/main_window.cpp" line="700" />
+        <location filename="../../widgets/main_window.cpp" line="543" />
+        <location filename="../../widgets/main_window.cpp" line="710" />
+        <location filename="../../widgets/main_window.cpp" line="721" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="512" />
+        <location filename="../../widgets/main_window.cpp" line="548" />
+        <source>%1 — Tactus</source>
+        <translation>%1 — Tactus</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="567" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="513" />
+        <location filename="../../widgets/main_window.cpp" line="568" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="515" />
+        <location filename="../../widgets/main_window.cpp" line="570" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="542" />
+        <location filename="../../widgets/main_window.cpp" line="616" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="547" />
-        <location filename="../../widgets/main_window.cpp" line="585" />
-        <location filename="../../widgets/main_window.cpp" line="705" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="548" />
+        <location filename="../../widgets/main_window.cpp" line="622" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="548" />
+        <location filename="../../widgets/main_window.cpp" line="622" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="550" />
+        <location filename="../../widgets/main_window.cpp" line="624" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="571" />
+        <location filename="../../widgets/main_window.cpp" line="646" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="580" />
+        <location filename="../../widgets/main_window.cpp" line="655" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="587" />
+        <location filename="../../widgets/main_window.cpp" line="662" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="588" />
+        <location filename="../../widgets/main_window.cpp" line="663" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="599" />
+        <location filename="../../widgets/main_window.cpp" line="674" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="709" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="646" />
+        <location filename="../../widgets/main_window.cpp" line="820" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="648" />
+        <location filename="../../widgets/main_window.cpp" line="822" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="652" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The printer&apos;s page is too small for the pages of %1. Lay the braille out again on the printer&apos;s page?</source>
+        <location filename="../../widgets/main_window.cpp" line="722" />
+        <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The pages of %1 are %2 cells by %3 lines; the printer&apos;s page holds %4 cells by %5 lines.</source>
+        <location filename="../../widgets/main_window.cpp" line="736" />
+        <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The pages of %1 differ by volume: %2. The printer&apos;s page holds %3 cells by %4 lines.</source>
+        <location filename="../../widgets/main_window.cpp" line="749" />
+        <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="895" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="750" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
+        <location filename="../../widgets/main_window.cpp" line="755" />
+        <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
-        <translation>無法依這台點字印表機的頁面排版此文件：%1</translation>
+        <location filename="../../widgets/main_window.cpp" line="136" />
+        <source>The document cannot be laid out for this printer's page: %1</source>
+        <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="601" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="787" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="788" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>A character does not fit the file&apos;s encoding</source>
+        <location filename="../../widgets/main_window.cpp" line="801" />
+        <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="802" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="805" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="806" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="811" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The printer&apos;s page is too small</source>
+        <location filename="../../widgets/main_window.cpp" line="769" />
+        <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="770" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="771" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>Lay the braille out again on the printer&apos;s page and go on</source>
+        <location filename="../../widgets/main_window.cpp" line="774" />
+        <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
+        <location filename="../../widgets/main_window.cpp" line="775" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>Stopped: nothing was embossed or exported (the printer&apos;s page is too small for %1)</source>
+        <location filename="../../widgets/main_window.cpp" line="780" />
+        <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The document cannot be laid out for this printer&apos;s page: %1</source>
-        <translation>無法依此印表機的頁面排版文件：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The braille&apos;s own pages, sections and volumes are kept again</source>
+        <location filename="../../widgets/main_window.cpp" line="515" />
+        <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="0" />
-        <source>The braille is laid out again on the printer&apos;s page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
+        <location filename="../../widgets/main_window.cpp" line="516" />
+        <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="766" />
+        <location filename="../../widgets/main_window.cpp" line="962" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="1035" />
+        <location filename="../../widgets/main_window.cpp" line="1044" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="835" />
+        <location filename="../../widgets/main_window.cpp" line="1066" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="841" />
+        <location filename="../../widgets/main_window.cpp" line="1072" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="847" />
+        <location filename="../../widgets/main_window.cpp" line="1078" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="1080" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="850" />
+        <location filename="../../widgets/main_window.cpp" line="1081" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="869" />
+        <location filename="../../widgets/main_window.cpp" line="1100" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="873" />
+        <location filename="../../widgets/main_window.cpp" line="1104" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="875" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="875" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="904" />
+        <location filename="../../widgets/main_window.cpp" line="1135" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="904" />
+        <location filename="../../widgets/main_window.cpp" line="1135" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="1136" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="1136" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="1137" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="1137" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="907" />
+        <location filename="../../widgets/main_window.cpp" line="1138" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="907" />
+        <location filename="../../widgets/main_window.cpp" line="1138" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="908" />
+        <location filename="../../widgets/main_window.cpp" line="1139" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="908" />
+        <location filename="../../widgets/main_window.cpp" line="1139" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="909" />
+        <location filename="../../widgets/main_window.cpp" line="1140" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="909" />
+        <location filename="../../widgets/main_window.cpp" line="1140" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="915" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="916" />
+        <location filename="../../widgets/main_window.cpp" line="1147" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1310,17 +1337,17 @@
 <context>
     <name>tactus::gui::PrintPane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="165" />
+        <location filename="../../widgets/braille_pane.cpp" line="292" />
         <source>Print text</source>
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="167" />
+        <location filename="../../widgets/braille_pane.cpp" line="301" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="175" />
+        <location filename="../../widgets/braille_pane.cpp" line="300" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>
@@ -1328,624 +1355,640 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="215" />
+        <location filename="../../widgets/printer_panel.cpp" line="223" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="217" />
+        <location filename="../../widgets/printer_panel.cpp" line="225" />
         <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser</source>
         <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="222" />
+        <location filename="../../widgets/printer_panel.cpp" line="230" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="223" />
-        <location filename="../../widgets/printer_panel.cpp" line="622" />
-        <location filename="../../widgets/printer_panel.cpp" line="815" />
+        <location filename="../../widgets/printer_panel.cpp" line="231" />
+        <location filename="../../widgets/printer_panel.cpp" line="640" />
+        <location filename="../../widgets/printer_panel.cpp" line="833" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="225" />
-        <location filename="../../widgets/printer_panel.cpp" line="1126" />
+        <location filename="../../widgets/printer_panel.cpp" line="233" />
+        <location filename="../../widgets/printer_panel.cpp" line="1154" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="227" />
+        <location filename="../../widgets/printer_panel.cpp" line="235" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="237" />
+        <location filename="../../widgets/printer_panel.cpp" line="245" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="238" />
+        <location filename="../../widgets/printer_panel.cpp" line="246" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="247" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="249" />
+        <location filename="../../widgets/printer_panel.cpp" line="257" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="250" />
+        <location filename="../../widgets/printer_panel.cpp" line="258" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="251" />
+        <location filename="../../widgets/printer_panel.cpp" line="259" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="257" />
+        <location filename="../../widgets/printer_panel.cpp" line="265" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="258" />
+        <location filename="../../widgets/printer_panel.cpp" line="266" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="262" />
+        <location filename="../../widgets/printer_panel.cpp" line="270" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="267" />
+        <location filename="../../widgets/printer_panel.cpp" line="275" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="277" />
+        <location filename="../../widgets/printer_panel.cpp" line="285" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="278" />
+        <location filename="../../widgets/printer_panel.cpp" line="286" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="280" />
+        <location filename="../../widgets/printer_panel.cpp" line="288" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="281" />
+        <location filename="../../widgets/printer_panel.cpp" line="289" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="282" />
+        <location filename="../../widgets/printer_panel.cpp" line="290" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="283" />
+        <location filename="../../widgets/printer_panel.cpp" line="291" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="285" />
+        <location filename="../../widgets/printer_panel.cpp" line="293" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="286" />
+        <location filename="../../widgets/printer_panel.cpp" line="294" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="292" />
+        <location filename="../../widgets/printer_panel.cpp" line="300" />
         <source>The plan's own speed</source>
         <translation>依列印計畫的實際速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="293" />
+        <location filename="../../widgets/printer_panel.cpp" line="301" />
         <source>10 times faster</source>
         <translation>快 10 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="294" />
+        <location filename="../../widgets/printer_panel.cpp" line="302" />
         <source>As fast as the computer can</source>
         <translation>以電腦能達到的最快速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="295" />
+        <location filename="../../widgets/printer_panel.cpp" line="303" />
         <source>Simulator speed</source>
         <translation>模擬器速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="297" />
+        <location filename="../../widgets/printer_panel.cpp" line="305" />
         <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
         <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="299" />
+        <location filename="../../widgets/printer_panel.cpp" line="307" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="306" />
+        <location filename="../../widgets/printer_panel.cpp" line="314" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="326" />
+        <location filename="../../widgets/printer_panel.cpp" line="334" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="374" />
+        <location filename="../../widgets/printer_panel.cpp" line="389" />
+        <source>Built-in simulated embosser</source>
+        <translation>內建模擬點字印表機</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="392" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="375" />
+        <location filename="../../widgets/printer_panel.cpp" line="393" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="378" />
+        <location filename="../../widgets/printer_panel.cpp" line="396" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="393" />
+        <location filename="../../widgets/printer_panel.cpp" line="411" />
         <source>Listing CUPS queues: %1</source>
         <translation>列出 CUPS 佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="399" />
+        <location filename="../../widgets/printer_panel.cpp" line="417" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="404" />
+        <location filename="../../widgets/printer_panel.cpp" line="422" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="407" />
+        <location filename="../../widgets/printer_panel.cpp" line="425" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="414" />
+        <location filename="../../widgets/printer_panel.cpp" line="432" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="448" />
+        <location filename="../../widgets/printer_panel.cpp" line="466" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="460" />
+        <location filename="../../widgets/printer_panel.cpp" line="478" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="483" />
+        <location filename="../../widgets/printer_panel.cpp" line="501" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="488" />
+        <location filename="../../widgets/printer_panel.cpp" line="506" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="498" />
+        <location filename="../../widgets/printer_panel.cpp" line="516" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="509" />
+        <location filename="../../widgets/printer_panel.cpp" line="527" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="513" />
+        <location filename="../../widgets/printer_panel.cpp" line="531" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="520" />
+        <location filename="../../widgets/printer_panel.cpp" line="538" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="524" />
+        <location filename="../../widgets/printer_panel.cpp" line="542" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="540" />
+        <location filename="../../widgets/printer_panel.cpp" line="558" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="551" />
+        <location filename="../../widgets/printer_panel.cpp" line="569" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="563" />
+        <location filename="../../widgets/printer_panel.cpp" line="581" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="573" />
+        <location filename="../../widgets/printer_panel.cpp" line="591" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="578" />
+        <location filename="../../widgets/printer_panel.cpp" line="596" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="591" />
+        <location filename="../../widgets/printer_panel.cpp" line="609" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="603" />
+        <location filename="../../widgets/printer_panel.cpp" line="621" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="656" />
+        <location filename="../../widgets/printer_panel.cpp" line="674" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="668" />
+        <location filename="../../widgets/printer_panel.cpp" line="686" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="695" />
+        <location filename="../../widgets/printer_panel.cpp" line="713" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="696" />
+        <location filename="../../widgets/printer_panel.cpp" line="714" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="723" />
+        <location filename="../../widgets/printer_panel.cpp" line="741" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="730" />
+        <location filename="../../widgets/printer_panel.cpp" line="748" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="733" />
+        <location filename="../../widgets/printer_panel.cpp" line="751" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="739" />
+        <location filename="../../widgets/printer_panel.cpp" line="757" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="744" />
+        <location filename="../../widgets/printer_panel.cpp" line="762" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="757" />
+        <location filename="../../widgets/printer_panel.cpp" line="775" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="758" />
+        <location filename="../../widgets/printer_panel.cpp" line="776" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="771" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="773" />
+        <location filename="../../widgets/printer_panel.cpp" line="791" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="774" />
+        <location filename="../../widgets/printer_panel.cpp" line="792" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="776" />
+        <location filename="../../widgets/printer_panel.cpp" line="794" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1010" />
-        <location filename="../../widgets/printer_panel.cpp" line="1013" />
+        <location filename="../../widgets/printer_panel.cpp" line="927" />
+        <source>%1 paused</source>
+        <translation>%1 已暫停</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="929" />
+        <source>%1 resumed</source>
+        <translation>%1 已繼續</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="1038" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1013" />
+        <location filename="../../widgets/printer_panel.cpp" line="1041" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1014" />
+        <location filename="../../widgets/printer_panel.cpp" line="1042" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1023" />
+        <location filename="../../widgets/printer_panel.cpp" line="1051" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1082" />
-        <location filename="../../widgets/printer_panel.cpp" line="1119" />
+        <location filename="../../widgets/printer_panel.cpp" line="1110" />
+        <location filename="../../widgets/printer_panel.cpp" line="1147" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1087" />
+        <location filename="../../widgets/printer_panel.cpp" line="1115" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1095" />
+        <location filename="../../widgets/printer_panel.cpp" line="1123" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1119" />
+        <location filename="../../widgets/printer_panel.cpp" line="1147" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1130" />
+        <location filename="../../widgets/printer_panel.cpp" line="1158" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1133" />
+        <location filename="../../widgets/printer_panel.cpp" line="1161" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1134" />
+        <location filename="../../widgets/printer_panel.cpp" line="1162" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1139" />
+        <location filename="../../widgets/printer_panel.cpp" line="1167" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1142" />
+        <location filename="../../widgets/printer_panel.cpp" line="1170" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1193" />
+        <location filename="../../widgets/printer_panel.cpp" line="1221" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1218" />
+        <location filename="../../widgets/printer_panel.cpp" line="1246" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1219" />
+        <location filename="../../widgets/printer_panel.cpp" line="1247" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1237" />
+        <location filename="../../widgets/printer_panel.cpp" line="1265" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1241" />
+        <location filename="../../widgets/printer_panel.cpp" line="1269" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1247" />
+        <location filename="../../widgets/printer_panel.cpp" line="1275" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1251" />
+        <location filename="../../widgets/printer_panel.cpp" line="1279" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1255" />
+        <location filename="../../widgets/printer_panel.cpp" line="1283" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1259" />
+        <location filename="../../widgets/printer_panel.cpp" line="1287" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="564" />
+        <location filename="../../widgets/printer_panel.cpp" line="582" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="221" />
+        <location filename="../../widgets/printer_panel.cpp" line="229" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="612" />
+        <location filename="../../widgets/printer_panel.cpp" line="630" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="607" />
+        <location filename="../../widgets/printer_panel.cpp" line="625" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="619" />
+        <location filename="../../widgets/printer_panel.cpp" line="637" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="639" />
+        <location filename="../../widgets/printer_panel.cpp" line="657" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="643" />
+        <location filename="../../widgets/printer_panel.cpp" line="661" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="662" />
+        <location filename="../../widgets/printer_panel.cpp" line="680" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="816" />
+        <location filename="../../widgets/printer_panel.cpp" line="834" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="845" />
+        <location filename="../../widgets/printer_panel.cpp" line="863" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="898" />
+        <location filename="../../widgets/printer_panel.cpp" line="917" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="905" />
-        <location filename="../../widgets/printer_panel.cpp" line="1091" />
+        <location filename="../../widgets/printer_panel.cpp" line="924" />
+        <location filename="../../widgets/printer_panel.cpp" line="1119" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="907" />
+        <location filename="../../widgets/printer_panel.cpp" line="931" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="940" />
+        <location filename="../../widgets/printer_panel.cpp" line="968" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="942" />
+        <location filename="../../widgets/printer_panel.cpp" line="970" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1003" />
+        <location filename="../../widgets/printer_panel.cpp" line="1031" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="644" />
+        <location filename="../../widgets/printer_panel.cpp" line="662" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="915" />
+        <location filename="../../widgets/printer_panel.cpp" line="940" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="916" />
+        <location filename="../../widgets/printer_panel.cpp" line="941" />
+        <location filename="../../widgets/printer_panel.cpp" line="945" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="899" />
+        <location filename="../../widgets/printer_panel.cpp" line="918" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="932" />
-        <location filename="../../widgets/printer_panel.cpp" line="962" />
+        <location filename="../../widgets/printer_panel.cpp" line="960" />
+        <location filename="../../widgets/printer_panel.cpp" line="990" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="940" />
+        <location filename="../../widgets/printer_panel.cpp" line="968" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1198" />
+        <location filename="../../widgets/printer_panel.cpp" line="1226" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1208" />
+        <location filename="../../widgets/printer_panel.cpp" line="1236" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
@@ -2194,32 +2237,42 @@
         <translation>範圍 %1；設定檔欄位 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="135" />
+        <location filename="../../widgets/profile_editor.cpp" line="107" />
+        <source>Invalid: %1. %2</source>
+        <translation>無效：%1。%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="142" />
         <source>%1 %2. The plan and preview keep the last valid profile.</source>
         <translation>%1 %2。規劃與預覽仍使用上一個有效的設定檔。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="145" />
+        <location filename="../../widgets/profile_editor.cpp" line="158" />
         <source>Profile is valid.</source>
         <translation>設定檔有效。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="153" />
+        <location filename="../../widgets/profile_editor.cpp" line="160" />
+        <source>Profile is valid again.</source>
+        <translation>設定檔又有效了。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="167" />
         <source>Cannot load %1: %2</source>
         <translation>無法載入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="159" />
+        <location filename="../../widgets/profile_editor.cpp" line="173" />
         <source>Loaded profile %1</source>
         <translation>已載入設定檔 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="165" />
+        <location filename="../../widgets/profile_editor.cpp" line="179" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="168" />
+        <location filename="../../widgets/profile_editor.cpp" line="182" />
         <source>Saved profile to %1</source>
         <translation>已將設定檔儲存到 %1</translation>
     </message>
@@ -2227,64 +2280,64 @@
 <context>
     <name>tactus::gui::SheetPreview</name>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="125" />
+        <location filename="../../widgets/sheet_preview.cpp" line="127" />
         <source>Interpoint preview</source>
         <translation>雙面點字預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="126" />
+        <location filename="../../widgets/sheet_preview.cpp" line="128" />
         <source>Arrow keys move between cells; Page Up and Page Down change sheet</source>
         <translation>方向鍵在點字方之間移動；Page Up 與 Page Down 換頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="226" />
+        <location filename="../../widgets/sheet_preview.cpp" line="228" />
         <source>Sheet %1 %2, line %3, cell %4</source>
         <translation>第 %1 張%2，第 %3 行，第 %4 方</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="228" />
+        <location filename="../../widgets/sheet_preview.cpp" line="230" />
         <source>back</source>
         <translation>背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="228" />
+        <location filename="../../widgets/sheet_preview.cpp" line="230" />
         <source>front</source>
         <translation>正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="231" />
+        <location filename="../../widgets/sheet_preview.cpp" line="233" />
         <source>: no page</source>
         <translation>：沒有這一頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="235" />
+        <location filename="../../widgets/sheet_preview.cpp" line="237" />
         <source>: blank</source>
         <translation>：空方</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="237" />
+        <location filename="../../widgets/sheet_preview.cpp" line="239" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="242" />
-        <location filename="../../widgets/sheet_preview.cpp" line="250" />
+        <location filename="../../widgets/sheet_preview.cpp" line="244" />
+        <location filename="../../widgets/sheet_preview.cpp" line="252" />
         <source>, in the word “%1”</source>
         <translation>，在「%1」中</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="256" />
-        <location filename="../../widgets/sheet_preview.cpp" line="344" />
+        <location filename="../../widgets/sheet_preview.cpp" line="258" />
+        <location filename="../../widgets/sheet_preview.cpp" line="346" />
         <source>No document</source>
         <translation>沒有文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="257" />
+        <location filename="../../widgets/sheet_preview.cpp" line="259" />
         <source>Sheet %1 of %2</source>
         <translation>第 %1 張，共 %2 張</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/sheet_preview.cpp" line="259" />
+        <location filename="../../widgets/sheet_preview.cpp" line="261" />
         <source>; %n front and back dots too close</source>
         <translation><numerusform>；有 %n 組正背面點距離過近</numerusform></translation>
     </message>

@@ -281,7 +281,16 @@ T = {
         "內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10",
     "The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job":
         "內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效",
-    "%1 times faster": "快 %1 倍",
+    "%1 times faster": "快 %1 倍", "Built-in simulated embosser": "內建模擬點字印表機",
+    "Undone: %1": "已復原：%1", "Redone: %1": "已重做：%1", "%1 \u2014 Tactus": "%1 \u2014 Tactus",
+    "%1 paused": "%1 已暫停", "%1 resumed": "%1 已繼續",
+    "Invalid: %1. %2": "無效：%1。%2",
+    "the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it":
+        "文字大多是拉丁字母；英文適合用統一英文點字（%1）",
+    "the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it":
+        "文字大多是繁體中文；適合用台灣注音點字（%1）",
+    "the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it":
+        "文字大多是簡體中文；適合用中文雙拼點字（%1）", "Profile is valid again.": "設定檔又有效了。",
 }
 
 

@@ -68,6 +68,39 @@ private Q_SLOTS:
         }
     }
 
+    void a_slow_job_is_heard_at_least_every_heartbeat() {
+        // The plan's own speed: three sheets of about 147 s, a pass a second.
+        ProgressSteps steps(3, 3s, 30s);
+        auto now = ProgressSteps::Clock::time_point{};
+        const std::size_t passes = 147, total = 3 * passes;
+        auto last_said = now;
+        std::chrono::milliseconds longest{0};
+        int said = 0;
+        for (std::size_t done = 1; done < total; ++done) {
+            now += 1s;
+            const auto sheet = done / passes + 1;
+            const auto step = steps.update(done, total, sheet);
+            bool spoken = step && steps.speak(now);
+            if (!spoken) {
+                if (const auto beat = steps.overdue(now)) {
+                    spoken = true;
+                    QVERIFY(beat->percent > 0 && beat->percent < 100);
+                    QCOMPARE(beat->sheet, std::min<std::size_t>(sheet, 3));
+                }
+            }
+            if (spoken) {
+                longest = std::max(longest, std::chrono::duration_cast<std::chrono::milliseconds>(now - last_said));
+                last_said = now;
+                ++said;
+            }
+        }
+        QVERIFY2(longest <= 31s, qPrintable(QStringLiteral("%1 ms of silence").arg(longest.count())));
+        QVERIFY(said >= 14 && said <= 16);  // 441 s: one every 30 s, no more
+        // Paused: nothing moves, nothing is said however long it lasts.
+        (void)steps.overdue(now + 31s);
+        QVERIFY(!steps.overdue(now + 10min));
+    }
+
     void speech_waits_for_the_gap_then_says_the_latest_step() {
         // A fast job: every tenth passes in less than the 3 s gap.
         const auto c = run(100, 10, 1ms);  // 1 s in all

@@ -1,0 +1,72 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>tactus::gui::FindReplaceDialog</name>
+    <message numerus="yes">
+        <location filename="../../widgets/find_replace.cpp" line="114"/>
+        <source>%n replaced</source>
+        <translation>
+            <numerusform>%n replaced</numerusform>
+            <numerusform>%n replaced</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tactus::gui::MainWindow</name>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="492"/>
+        <source>Opened %1: %n sheet(s)</source>
+        <translation>
+            <numerusform>Opened %1: %n sheet</numerusform>
+            <numerusform>Opened %1: %n sheets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="497"/>
+        <source>%n line(s) could not be translated; they are left out of the braille</source>
+        <translation>
+            <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
+            <numerusform>%n lines could not be translated; they are left out of the braille</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="655"/>
+        <source>Exported %1 (%n sheet(s))</source>
+        <translation>
+            <numerusform>Exported %1 (%n sheet)</numerusform>
+            <numerusform>Exported %1 (%n sheets)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tactus::gui::PrinterPanel</name>
+    <message numerus="yes">
+        <location filename="../../widgets/printer_panel.cpp" line="430"/>
+        <source>%n Tactus queue(s) found on CUPS servers</source>
+        <translation>
+            <numerusform>%n Tactus queue found on CUPS servers</numerusform>
+            <numerusform>%n Tactus queues found on CUPS servers</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/printer_panel.cpp" line="755"/>
+        <source>%1: %n sheet(s) embossed</source>
+        <translation>
+            <numerusform>%1: %n sheet embossed</numerusform>
+            <numerusform>%1: %n sheets embossed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tactus::gui::SheetPreview</name>
+    <message numerus="yes">
+        <location filename="../../widgets/sheet_preview.cpp" line="261"/>
+        <source>; %n front and back dots too close</source>
+        <translation>
+            <numerusform>; %n front and back dot too close</numerusform>
+            <numerusform>; %n front and back dots too close</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
