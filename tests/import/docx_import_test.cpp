@@ -109,3 +109,16 @@ TEST(DocxImport, NotesNothingRefersToAreKeptAtTheEnd) {
               "7:[2] A footnote whose reference was deleted.\n"
               "7:[3] An endnote nothing refers to.\n");
 }
+
+// pandoc's own test file: a link's underline (Word's Hyperlink style) is how
+// print shows a link, not emphasis, and braille leaves it out (BANA).
+TEST(DocxImport, LinksAreNotUnderlined) {
+    const auto doc = tactus::test::import_data_file("pandoc_links.docx");
+    std::string text;
+    for (const auto& b : doc.blocks)
+        for (const auto& s : b.spans) {
+            text += s.text;
+            EXPECT_EQ(s.emphasis & tactus::document::emphasis_underline, 0) << s.text;
+        }
+    EXPECT_NE(text.find("external link to a popular website."), std::string::npos) << text;
+}
