@@ -42,7 +42,7 @@ TEST(DocxImport, StylesNumberingBreaksAndRevisions) {
     const std::vector<document::Block> expected = {
         text_block(H, 1, {{"The Title"}}),  // bold of the Title style is not emphasis
         text_block(P, 0, {{"Tab\tand\nline kept"}}),  // lastRenderedPageBreak is no break
-        text_block(P, 0, {{"styled", I | U}, {"link", B | U}}),
+        text_block(P, 0, {{"styled", I | U}, {"link", B}}),  // a link's underline is print's, not emphasis
         text_block(LI, 1, {{"III. first"}}),
         text_block(LI, 2, {{"III.a) sub"}}),
         page_break("2"),
