@@ -29,6 +29,16 @@ bool is_digit_cell(Cell c) {
     return std::ranges::find(digits, c.dots) != std::end(digits);
 }
 
+// a-z (the braille letters, whatever the code): a hyphen between two letters
+// joins the parts of a word ("well-known"); elsewhere it may be a minus sign
+// in a formula, a dash or part of an indicator, where no line may break.
+bool is_letter_cell(Cell c) {
+    static constexpr std::uint8_t letters[] = {0x01, 0x03, 0x09, 0x19, 0x11, 0x0B, 0x1B, 0x13, 0x0A,
+                                               0x1A, 0x05, 0x07, 0x0D, 0x1D, 0x15, 0x0F, 0x1F, 0x17,
+                                               0x0E, 0x1E, 0x25, 0x27, 0x3A, 0x2D, 0x3D, 0x35};
+    return std::ranges::find(letters, c.dots) != std::end(letters);
+}
+
 bool is_blank(const BrailleLine& l) {
     return std::ranges::all_of(l, [](Cell c) { return c.blank(); });
 }
@@ -186,7 +196,8 @@ private:
             translate::BreakBefore b = translate::BreakBefore::never;
             if (out.empty()) b = translate::BreakBefore::never;
             else if (c.blank()) b = translate::BreakBefore::blank;
-            else if (after_hyphen || (out.back().dots == kHyphen && out.size() >= 2 && !out[out.size() - 2].blank()))
+            else if (is_letter_cell(c) && (after_hyphen || (out.back().dots == kHyphen && out.size() >= 2 &&
+                                                            is_letter_cell(out[out.size() - 2]))))
                 b = translate::BreakBefore::allowed;
             after_hyphen = false;
             out.push_back(c);

@@ -20,19 +20,33 @@ namespace {
 const std::string kBook = std::string(TACTUS_TEST_DATA) + "/layout/aata-chapter-1.brf";
 
 // The braille words (runs of non-blank cells) of some lines, as BRF.
+// A compound broken after its hyphen at a line end ("well-" "known") is one word.
 std::vector<std::string> words(const std::vector<document::BrailleLine>& lines) {
     std::vector<std::string> out;
+    bool joined = false;  // the last word ended its line with a hyphen
     for (const auto& line : lines) {
+        bool first = true;
         std::string word;
         for (const auto c : line) {
             if (c.blank()) {
-                if (!word.empty()) out.push_back(word);
+                if (!word.empty()) {
+                    if (first && joined) out.back() += word;
+                    else out.push_back(word);
+                    first = false;
+                    joined = false;
+                }
                 word.clear();
             } else {
                 word.push_back(document::cell_to_brf(c));
             }
         }
-        if (!word.empty()) out.push_back(word);
+        if (!word.empty()) {
+            if (first && joined) out.back() += word;
+            else out.push_back(word);
+            joined = word.back() == '-';
+        } else if (!first || !line.empty()) {
+            joined = false;
+        }
     }
     return out;
 }

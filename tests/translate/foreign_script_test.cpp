@@ -60,7 +60,7 @@ TEST(ForeignScript, WholeTranslationWithAndWithoutEmphasis) {
         auto tr = translate::Translator::open(table);
         ASSERT_TRUE(tr) << table;
         for (const auto& text : foreign_texts()) {
-            for (const auto [emph, form] : {std::pair{document::emphasis_none, plain_text},
+            for (const auto& [emph, form] : {std::pair{document::emphasis_none, static_cast<formtype>(plain_text)},
                                             std::pair{document::emphasis_bold, static_cast<formtype>(bold)},
                                             std::pair{document::emphasis_italic, static_cast<formtype>(italic)}}) {
                 const std::vector<std::uint8_t> marks(text.size(), emph);
