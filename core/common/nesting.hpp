@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // How deep an input may nest (XML elements, tables in tables, lists in lists)
-// before it is refused. Importers walk nested structures by recursion, each
+// before it is refused, checked where a tree is parsed (import/xml_util.cpp). Importers walk nested structures by recursion, each
 // level a few stack frames; a file nested thousands of levels deep (made by a
 // program, or hostile) would exhaust the stack and crash. No document a person
 // wrote nests this deep: Word's own limit for nested tables is 63.
@@ -19,19 +19,5 @@ inline Error too_deeply_nested(std::string what, std::string where) {
                      " levels deep: refused, as no document needs that and reading it could exhaust the stack",
                  std::move(where)};
 }
-
-// One level of a recursive walk: counts the depth while it lives.
-// `if (NestingLevel level(depth_); level.too_deep()) return fail(...)`.
-class NestingLevel {
-public:
-    explicit NestingLevel(int& depth) : depth_(depth) { ++depth_; }
-    ~NestingLevel() { --depth_; }
-    NestingLevel(const NestingLevel&) = delete;
-    NestingLevel& operator=(const NestingLevel&) = delete;
-    [[nodiscard]] bool too_deep() const { return depth_ > max_nesting_depth; }
-
-private:
-    int& depth_;
-};
 
 }  // namespace tactus
