@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli translate: line-by-line liblouis translation, no layout; each output
 // line is exactly what liblouis gives for the input line.
-#include <fstream>
+#include <algorithm>
 #include <iostream>
 #include <iterator>
 
 #include "command.hpp"
+#include "common/file_io.hpp"
 #include "common/utf8.hpp"
+#include "import/import.hpp"
 #include "translate/catalogue.hpp"
 #include "translate/translator.hpp"
 
@@ -20,45 +22,96 @@ struct TranslateArgs {
     bool back = false;
 };
 
-void run_translate(const TranslateArgs& a) {
+// A line of braille (Unicode braille or Braille ASCII) as cells.
+document::BrailleLine braille_cells(std::u32string_view text, const std::string& where) {
+    document::BrailleLine cells;
+    for (char32_t c : text) {
+        document::Cell cell;
+        if (document::Cell::is_unicode_braille(c)) cell = document::Cell::from_unicode(c);
+        else if (c > 0x7F || !document::cell_from_brf(static_cast<char>(c), cell))
+            fail_with(exit_bad_input, Error{"not braille (Unicode braille or Braille ASCII expected)", where});
+        cells.push_back(cell);
+    }
+    return cells;
+}
+
+// One line of input, translated or back-translated. A form feed (a BRF's page
+// break) is kept where it is: each piece between form feeds is translated by
+// itself, so the output has its lines and pages where the input has them.
+std::string translate_line(const translate::Translator& translator, const TranslateArgs& a, std::string_view line,
+                           const std::string& where) {
+    auto text = utf8_to_utf32(line);
+    if (!text) fail_with(exit_bad_input, located(text.error(), where));
     const auto display = a.to == "brf" ? "en-us-brf.dis" : "unicode.dis";
-    const auto translator = require(translate::Translator::open(a.tables));
-    std::ifstream file;
-    if (a.file != "-") {
-        file.open(a.file, std::ios::binary);
-        if (!file) fail_with(exit_bad_input, Error{"cannot open file", a.file});
-    }
-    std::istream& in = a.file == "-" ? std::cin : file;
-    const std::string name = a.file == "-" ? "<stdin>" : a.file;
-    std::string line;
     std::string out;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        const auto where = name + ":" + std::to_string(number);
-        auto text = utf8_to_utf32(line);
-        if (!text) fail_with(exit_bad_input, located(text.error(), where));
-        Result<std::u32string> braille;
-        if (a.back) {
-            document::BrailleLine cells;
-            for (char32_t c : *text) {
-                document::Cell cell;
-                if (document::Cell::is_unicode_braille(c)) cell = document::Cell::from_unicode(c);
-                else if (c > 0x7F || !document::cell_from_brf(static_cast<char>(c), cell))
-                    fail_with(exit_bad_input, Error{"not braille (Unicode braille or Braille ASCII expected)", where});
-                cells.push_back(cell);
-            }
-            braille = translator.back_translate(cells);
-        } else {
-            braille = translator.translate_with_display(*text, display);
-        }
-        if (!braille) fail_with(exit_bad_input, located(braille.error(), where));
-        out = utf32_to_utf8(*braille);
-        out += '\n';
-        std::cout << out;
+    std::size_t from = 0;
+    for (;;) {
+        const auto feed = std::min(text->find(U'\f', from), text->size());
+        const std::u32string_view piece = std::u32string_view(*text).substr(from, feed - from);
+        const auto braille = a.back ? translator.back_translate(braille_cells(piece, where))
+                                    : translator.translate_with_display(piece, display);
+        if (!braille) fail_with(located(braille.error(), where));
+        out += utf32_to_utf8(*braille);
+        if (feed == text->size()) break;
+        out += '\f';
+        from = feed + 1;
     }
-    if (in.bad()) fail_with(exit_bad_input, Error{"read error", name});
+    return out;
+}
+
+// A PEF's pages back-translated row for row, a form feed between pages.
+void back_translate_pef(const translate::Translator& translator, const std::string& bytes, const std::string& name) {
+    import::ImportOptions options;
+    options.format = import::SourceFormat::pef;
+    const auto doc = import::import_bytes(bytes, name, options);
+    if (!doc) fail_with(doc.error());
+    for (const auto& block : doc->blocks) {
+        if (block.kind == document::BlockKind::braille_page_break) {
+            std::cout << '\f';
+            continue;
+        }
+        for (const auto& row : block.braille_lines) {
+            const auto where = name + ":" + std::to_string(block.source_line);
+            auto text = translator.back_translate(row);
+            if (!text) fail_with(located(text.error(), where));
+            std::cout << utf32_to_utf8(*text) << '\n';
+        }
+    }
+}
+
+void run_translate(const TranslateArgs& a) {
+    const auto translator = require(translate::Translator::open(a.tables));
+    const std::string name = a.file == "-" ? "<stdin>" : a.file;
+    int number = 0;
+    if (a.file == "-" && !a.back) {
+        // Line by line as it comes, never all of a pipe held at once.
+        std::string line;
+        while (std::getline(std::cin, line)) {
+            if (!line.empty() && line.back() == '\r') line.pop_back();
+            std::cout << translate_line(translator, a, line, name + ":" + std::to_string(++number)) << '\n';
+        }
+        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name});
+        return;
+    }
+    std::string bytes;
+    if (a.file == "-") {
+        bytes.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name});
+    } else {
+        // A regular file only: a named pipe with no writer would wait for ever.
+        bytes = require(read_file(a.file), exit_bad_input);
+    }
+    if (a.back && import::detect_source_format(bytes, name) == import::SourceFormat::pef) {
+        back_translate_pef(translator, bytes, name);
+        return;
+    }
+    for (std::size_t from = 0; from < bytes.size();) {
+        const auto end = std::min(bytes.find('\n', from), bytes.size());
+        std::string_view line(bytes.data() + from, end - from);
+        from = end + 1;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        std::cout << translate_line(translator, a, line, name + ":" + std::to_string(++number)) << '\n';
+    }
 }
 
 }  // namespace

@@ -20,6 +20,8 @@ enum ExitCode : int {
     exit_device = 4,     // device missing, busy or gone
     exit_page_too_small = 5,  // ready-made braille (BRF, PEF) has pages larger than the
                               // target page; nothing was embossed (--reflow lays it out again)
+    exit_internal = 6,   // a bug in Tactus (or liblouis): a broken invariant, a translation
+                         // worker that crashed; never the input's fault
 };
 
 // The one table from a core error's kind to the exit code.
@@ -29,8 +31,8 @@ enum ExitCode : int {
         case ErrorKind::input: return exit_bad_input;
         case ErrorKind::device: return exit_device;
         case ErrorKind::io:
-        case ErrorKind::protocol:
-        case ErrorKind::internal: return exit_failure;
+        case ErrorKind::protocol: return exit_failure;
+        case ErrorKind::internal: return exit_internal;
     }
     return exit_failure;
 }

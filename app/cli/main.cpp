@@ -8,6 +8,11 @@ int main(int argc, char** argv) {
     CLI::App app{"Tactus: translate, lay out and emboss braille", "tactus-cli"};
     app.set_version_flag("--version", "tactus-cli 0.1.0");
     app.require_subcommand(1);
+    app.footer(
+        "Exit status: 0 success, 1 the job did not complete, 2 usage error, 3 bad input\n"
+        "(file:line: reason on stderr), 4 device error, 5 ready-made braille with pages\n"
+        "larger than the target page (--reflow lays it out again), 6 internal error (a bug\n"
+        "in Tactus or liblouis, e.g. a translation worker that crashed; never the input).");
     add_translate_command(app);
     add_layout_command(app);
     add_tables_command(app);

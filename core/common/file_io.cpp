@@ -2,6 +2,7 @@
 #include "common/file_io.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,23 +13,56 @@
 
 namespace tactus {
 
+namespace {
+
+// What a file that is not a regular file is, in words a user knows.
+std::string not_regular(mode_t mode) {
+    if (S_ISDIR(mode)) return "is a directory, not a file";
+    if (S_ISFIFO(mode)) return "is a named pipe (FIFO), not a regular file: save what it carries to a file first";
+    if (S_ISCHR(mode) || S_ISBLK(mode)) return "is a device, not a regular file";
+    if (S_ISSOCK(mode)) return "is a socket, not a regular file";
+    return "is not a regular file";
+}
+
+}  // namespace
+
 Result<std::string> read_file(const std::filesystem::path& path, std::size_t max_bytes) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        return fail("is a directory, not a file", path.string());
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return fail(std::string("cannot open: ") + std::strerror(errno), path.string());
-    in.seekg(0, std::ios::end);
-    const auto size = in.tellg();
-    if (size < 0) return fail("cannot determine file size", path.string());
-    if (static_cast<std::size_t>(size) > max_bytes)
-        return fail("file is " + std::to_string(static_cast<long long>(size)) +
-                        " bytes, above the limit of " + std::to_string(max_bytes),
+    // Opened without blocking and checked before reading: a named pipe with no
+    // writer would block open() and read() for ever, a device could give bytes
+    // without end.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) return fail(std::string("cannot open: ") + std::strerror(errno), path.string());
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        const std::string why = std::strerror(errno);
+        ::close(fd);
+        return fail("cannot examine: " + why, path.string());
+    }
+    if (!S_ISREG(st.st_mode)) {
+        ::close(fd);
+        return fail(not_regular(st.st_mode), path.string());
+    }
+    const auto size = static_cast<std::size_t>(st.st_size);
+    if (size > max_bytes) {
+        ::close(fd);
+        return fail("file is " + std::to_string(size) + " bytes, above the limit of " + std::to_string(max_bytes),
                     path.string());
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.seekg(0, std::ios::beg);
-    in.read(bytes.data(), size);
-    if (!in) return fail("read error", path.string());
+    }
+    std::string bytes(size, '\0');
+    std::size_t done = 0;
+    while (done < size) {
+        const auto n = ::read(fd, bytes.data() + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            const std::string why = std::strerror(errno);
+            ::close(fd);
+            return fail("read error: " + why, path.string());
+        }
+        if (n == 0) break;  // shrank while read: what is there
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+    bytes.resize(done);
     return bytes;
 }
 

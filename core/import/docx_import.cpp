@@ -184,8 +184,12 @@ private:
                      name == "AlternateContent" || name == "drawing" || name == "pict" ||
                      name == "object")
                 continue;  // properties, deleted text, graphics
-            else
-                inline_content(c);  // hyperlink, ins, smartTag, fldSimple, sdt, math...
+            else if (name == "hyperlink") {
+                ++in_hyperlink_;
+                inline_content(c);
+                --in_hyperlink_;
+            } else
+                inline_content(c);  // ins, smartTag, fldSimple, sdt, math...
         }
     }
 
@@ -196,7 +200,12 @@ private:
         RunFormat format;
         format.apply(styles_.character(attribute(child(rPr, "rStyle"), "val")));
         format.apply(read_run_format(rPr));
-        const auto emphasis = format.emphasis();
+        auto emphasis = format.emphasis();
+        // A link's underline is print's way of showing a link, not emphasis
+        // the author chose: BANA's guidance is not to show it in braille (a
+        // typeform indicator there would tell the reader of emphasis that is not).
+        if (in_hyperlink_ > 0 || attribute(child(rPr, "rStyle"), "val") == "Hyperlink")
+            emphasis = static_cast<std::uint8_t>(emphasis & ~document::emphasis_underline);
         for (const auto& c : r.children()) {
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
@@ -249,6 +258,7 @@ private:
     pugi::xml_node footnotes_root_, endnotes_root_;
     std::unordered_set<std::string> referenced_;  // "footnote:2", "endnote:1"
     OfficeText out_;
+    int in_hyperlink_ = 0;  // inside w:hyperlink (nested ones count)
 };
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "import/document_builder.hpp"
 #include "import/importers.hpp"
 #include "import/markdown_footnotes.hpp"
+#include "import/markdown_front_matter.hpp"
 #include "import/text_position.hpp"
 
 namespace tactus::import::detail {
@@ -431,6 +432,15 @@ private:
 }  // namespace
 
 Result<document::Document> import_markdown(std::string_view source) {
+    // Front matter is metadata: left out of the text, its lines kept as blank
+    // lines so every line after it keeps its number in messages.
+    const auto front = front_matter(source);
+    std::string without_front;
+    if (front) {
+        without_front.assign(static_cast<std::size_t>(front->lines), '\n');
+        without_front.append(source.substr(front->length));
+        source = without_front;
+    }
     const auto prepared = prepare_footnotes(source);
     const std::string_view utf8 = prepared.text;
     const LineIndex lines(utf8);
@@ -451,6 +461,7 @@ Result<document::Document> import_markdown(std::string_view source) {
     }
     auto doc = reader.builder().finish();
     if (doc) reader.place_unreferenced_notes(*doc);
+    if (doc && front) doc->metadata = front->metadata;
     return doc;
 }
 

@@ -174,6 +174,10 @@ private:
         line.reserve(decoded->size());
         for (std::size_t i = 0; i < decoded->size(); ++i) {
             const char32_t c = (*decoded)[i];
+            // XML white space in a row is the file's layout (a row broken over
+            // lines, indented), not cells: PEF readers skip it, and so does
+            // Tactus. A blank cell is U+2800.
+            if (c == U' ' || c == U'\n' || c == U'\r' || c == U'\t') continue;
             if (!document::Cell::is_unicode_braille(c)) {
                 std::array<char, 64> what{};
                 std::snprintf(what.data(), what.size(), "row character %zu is U+%04X", i + 1,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/xml_util.hpp"
 
+#include "common/nesting.hpp"
+
 #include <charconv>
 #include <string>
 
@@ -13,7 +15,29 @@ Result<void> parse_xml(pugi::xml_document& doc, std::string_view bytes, std::str
     const auto result = doc.load_buffer(bytes.data(), bytes.size(),
                                         pugi::parse_default | pugi::parse_ws_pcdata,
                                         pugi::encoding_auto);
-    if (result) return {};
+    if (result) {
+        // Walked without recursion: the importers that read the tree next recurse.
+        int depth = 0;
+        for (auto n = doc.first_child(); n;) {
+            if (n.type() == pugi::node_element && depth + 1 > max_nesting_depth) {
+                const auto at = position_at(bytes, static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0)));
+                return std::unexpected(too_deeply_nested(
+                    "XML elements", part.empty() ? at.to_string() : std::string(part) + ":" + at.to_string()));
+            }
+            if (n.first_child()) {
+                n = n.first_child();
+                ++depth;
+                continue;
+            }
+            while (n && !n.next_sibling()) {
+                n = n.parent();
+                --depth;
+                if (n == doc) return {};
+            }
+            if (n) n = n.next_sibling();
+        }
+        return {};
+    }
     const auto pos = position_at(bytes, static_cast<std::size_t>(std::max<std::ptrdiff_t>(result.offset, 0)));
     std::string where = part.empty() ? pos.to_string() : std::string(part) + ":" + pos.to_string();
     return fail(std::string("invalid XML: ") + result.description(), std::move(where));

@@ -69,17 +69,28 @@ void Paginator::add_line(document::BrailleLine line, int source_line) {
                 stripped = true;
             }
         }
-        if (stripped) {
-            // Once for a source line, however many braille lines it makes.
-            auto w = (source_line > 0 ? "line " + std::to_string(source_line) + ": " : std::string{}) +
-                     "cells with dots 7-8 (often a character the table does not know) shown as 6-dot;"
-                     " use 8-dot layout to keep them";
-            if (doc_.warnings.empty() || doc_.warnings.back() != w) doc_.warnings.push_back(std::move(w));
-        }
+        if (stripped) note_dots_78(source_line);
     }
     trim_right(line);
     if (body_.empty()) page_top_print_page_ = print_page_;
     body_.push_back(std::move(line));
+}
+
+void Paginator::note_dots_78(int source_line) {
+    // One warning for the whole document, however many lines have such cells:
+    // where they are first, and on how many source lines in all.
+    if (dots_78_.warning && source_line == dots_78_.last_line) return;
+    ++dots_78_.lines;
+    dots_78_.last_line = source_line;
+    if (!dots_78_.warning) {
+        dots_78_.warning = doc_.warnings.size();
+        dots_78_.first = source_line > 0 ? "line " + std::to_string(source_line) + ": " : std::string{};
+        doc_.warnings.emplace_back();
+    }
+    doc_.warnings[*dots_78_.warning] =
+        dots_78_.first + "cells with dots 7-8 (often a character the table does not know) shown as 6-dot;"
+                         " use 8-dot layout to keep them" +
+        (dots_78_.lines > 1 ? " (on " + std::to_string(dots_78_.lines) + " lines; the first named)" : std::string{});
 }
 
 void Paginator::add_blank_line() {

@@ -54,6 +54,7 @@ private:
     [[nodiscard]] int body_capacity() const;
     [[nodiscard]] int width() const;
     void add_line(document::BrailleLine line, int source_line);
+    void note_dots_78(int source_line);
     void add_blank_line();
     void break_page();
     void close_page();
@@ -78,6 +79,13 @@ private:
     LayoutOptions o_;
     std::function<document::BrailleLine(int)> number_cells_;
     PagedDocument doc_;
+    // The one warning for cells with dots 7-8 in a six-dot layout.
+    struct Dots78 {
+        std::optional<std::size_t> warning;  // its index in doc_.warnings
+        std::string first;                   // "line N: " of the first source line with such cells
+        int last_line = 0;
+        std::size_t lines = 0;
+    } dots_78_;
     std::vector<document::BrailleLine> body_;  // body lines of the page being filled
     std::string print_page_;         // print page label in effect (UTF-8 of the label cells)
     std::string page_top_print_page_;

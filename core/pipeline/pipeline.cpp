@@ -10,6 +10,7 @@
 
 #include "common/utf8.hpp"
 #include "layout/braille_pages.hpp"
+#include "layout/braille_reflow.hpp"
 #include "layout/paginator.hpp"
 #include "translate/script_check.hpp"
 #include "pipeline/translation_workers.hpp"
@@ -116,6 +117,14 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
         return numbers.emplace(n, std::move(*cells)).first->second;
     };
     layout::Paginator paginator(options.layout, number_cells);
+
+    if (layout::is_ready_braille(document)) {
+        // --reflow: the old pages' numbers and running heads out, paragraphs
+        // joined and broken again only where braille may break.
+        for (const auto& block : layout::reflow_braille(document)) paginator.add(block);
+        if (number_error) return std::unexpected(*number_error);
+        return finish(std::move(paginator), std::move(script_warnings), document);
+    }
 
     const unsigned workers = options.translation_workers != 0
                                  ? options.translation_workers

@@ -157,25 +157,33 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
         int status = 0;
         ::waitpid(pids_[worker], &status, 0);
         pids_.erase(pids_.begin() + static_cast<std::ptrdiff_t>(worker));
+        // Not the document's fault: a worker that dies is a bug in Tactus or
+        // liblouis (a crash), or the system's (out of memory), never bad input.
         const auto why = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
                                              : "exit status " + std::to_string(WEXITSTATUS(status));
-        return fail("translation worker ended unexpectedly (" + why + ")", document_->source_name);
+        return fail(ErrorKind::internal,
+                    "translation worker ended unexpectedly (" + why + ") while translating from line " +
+                        std::to_string(blocks[i].source_line),
+                    document_->source_name);
     }
     if (header & kErrorBit) {
         std::string msg(header & ~kErrorBit, '\0');
-        if (read_all(fd, msg.data(), msg.size()) != 1) return fail("translation worker failed");
+        if (read_all(fd, msg.data(), msg.size()) != 1)
+            return fail(ErrorKind::internal, "translation worker ended in the middle of an error report",
+                        document_->source_name);
         const auto nul = msg.find('\0');
         return fail(msg.substr(nul + 1), msg.substr(0, nul));
     }
     document::BrailleLine cells(header);
     if (read_all(fd, cells.data(), cells.size()) != 1)
-        return fail("translation worker ended in the middle of a block");
+        return fail(ErrorKind::internal, "translation worker ended in the middle of a block", document_->source_name);
     const document::Block& b = blocks[i];
     translate::LineBreaks breaks;
     if (document::is_text_kind(b.kind)) {
         breaks.resize(cells.size());
         if (read_all(fd, breaks.data(), breaks.size()) != 1)
-            return fail("translation worker ended in the middle of a block");
+            return fail(ErrorKind::internal, "translation worker ended in the middle of a block",
+                        document_->source_name);
     }
     translate::TranslatedBlock tb;
     tb.kind = b.kind;

@@ -31,8 +31,33 @@ formtype to_typeform(std::uint8_t e) {
 
 enum class Direction { forward, backward };
 
-// One liblouis call with a growing output buffer: liblouis stops silently when the
-// buffer is full, so a short `inlen` afterwards means "try again with more room".
+// The output room for one liblouis call, and how much of it a complete result
+// leaves unused. liblouis (3.24) does not report a full output buffer reliably:
+// an escape code for a character the table does not know (`'\x0440'`, up to 12
+// cells) or a rule's dots that do not fit are dropped while the whole input is
+// still reported as read ("Привет мир" with room for 52 cells gives the first
+// word, 49 cells, and inlen 10 of 10). What it drops is at most one write, so a
+// result is complete when it ends further from the end of the buffer than any
+// one write reaches: a result closer to the end, or one that did not read the
+// whole input, is translated again with four times the room. The headroom
+// (64 cells and a quarter of the buffer) is well above the longest escape code
+// and the longest rule in the installed tables.
+constexpr std::size_t first_capacity(std::size_t in) { return in * 3 + 128; }
+constexpr std::size_t headroom(std::size_t capacity) { return 64 + capacity / 4; }
+
+// The typeform array liblouis reads for the input and writes for the output:
+// lou_translate copies it in for `inlen` characters and, on success, writes a
+// '0' or '8' (dots 7-8 or not) per output cell into it, so it must be as long
+// as the output buffer and filled afresh for every call.
+void fill_typeform(std::vector<formtype>& typeform, std::span<const std::uint8_t> emphasis,
+                   std::size_t in_size, std::size_t capacity) {
+    typeform.assign(std::max(in_size, capacity), plain_text);
+    for (std::size_t i = 0; i < in_size && i < emphasis.size(); ++i) typeform[i] = to_typeform(emphasis[i]);
+}
+
+// One liblouis call, again with more room until the result is known whole
+// (first_capacity(), headroom()). Every buffer liblouis may write (output,
+// typeform, inputPos) is as long as the output length it is told.
 Result<std::u32string> run(const std::string& table_list, std::u32string_view in,
                            std::span<const std::uint8_t> emphasis, Direction dir,
                            std::vector<int>* input_pos = nullptr) {
@@ -43,31 +68,21 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
     if (in.size() > 1u << 24) return fail("text block too long for one translation");
     const auto* inbuf = reinterpret_cast<const widechar*>(in.data());
     std::vector<formtype> typeform;
-    if (!emphasis.empty()) {
-        typeform.resize(in.size() * 4 + 16, plain_text);
-        for (std::size_t i = 0; i < in.size() && i < emphasis.size(); ++i)
-            typeform[i] = to_typeform(emphasis[i]);
-    }
-    std::size_t capacity = in.size() * 2 + 32;
+    std::size_t capacity = first_capacity(in.size());
     for (int attempt = 0; attempt < 6; ++attempt, capacity *= 4) {
         std::u32string out(capacity, U'\0');
         if (input_pos) input_pos->assign(capacity, 0);
+        if (!emphasis.empty()) fill_typeform(typeform, emphasis, in.size(), capacity);
         int inlen = static_cast<int>(in.size());
         int outlen = static_cast<int>(capacity);
         int ok = 0;
         std::string log;
         {
             std::lock_guard guard(louis::lock());
-            if (dir == Direction::forward && input_pos) {
-                ok = lou_translate(table_list.c_str(), inbuf, &inlen,
-                                   reinterpret_cast<widechar*>(out.data()), &outlen,
-                                   typeform.empty() ? nullptr : typeform.data(), nullptr, nullptr,
-                                   input_pos->data(), nullptr, 0);
-            } else if (dir == Direction::forward) {
-                ok = lou_translateString(table_list.c_str(), inbuf, &inlen,
-                                         reinterpret_cast<widechar*>(out.data()), &outlen,
-                                         typeform.empty() ? nullptr : typeform.data(), nullptr,
-                                         0);
+            if (dir == Direction::forward) {
+                ok = lou_translate(table_list.c_str(), inbuf, &inlen, reinterpret_cast<widechar*>(out.data()),
+                                   &outlen, typeform.empty() ? nullptr : typeform.data(), nullptr, nullptr,
+                                   input_pos ? input_pos->data() : nullptr, nullptr, 0);
             } else {
                 ok = lou_backTranslateString(table_list.c_str(), inbuf, &inlen,
                                              reinterpret_cast<widechar*>(out.data()), &outlen,
@@ -78,15 +93,15 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
         if (!ok)
             return fail("liblouis could not translate with '" + table_list + "'" +
                         (log.empty() ? std::string{} : ": " + log));
-        if (static_cast<std::size_t>(inlen) >= in.size() &&
-            static_cast<std::size_t>(outlen) < capacity) {
-            out.resize(static_cast<std::size_t>(outlen));
-            if (input_pos) input_pos->resize(static_cast<std::size_t>(outlen));
+        const auto produced = static_cast<std::size_t>(std::max(outlen, 0));
+        if (static_cast<std::size_t>(inlen) >= in.size() && produced + headroom(capacity) <= capacity) {
+            out.resize(produced);
+            if (input_pos) input_pos->resize(produced);
             return out;
         }
-        if (!typeform.empty()) typeform.resize(capacity * 4, plain_text);
     }
-    return fail("translation output kept overflowing its buffer");
+    return fail(ErrorKind::internal, "liblouis did not finish the translation of " + std::to_string(in.size()) +
+                                         " characters in " + std::to_string(capacity / 4) + " cells");
 }
 
 std::string table_info(const std::string& table, const char* key) {

@@ -5,6 +5,8 @@
 // suit the text is named.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -136,4 +138,63 @@ TEST(BrailleCli, TableThatDoesNotSuitTheScriptIsNamed) {
     EXPECT_NE(en.err.find("en-ueb-g2.ctb"), std::string::npos) << en.err;
     const auto fine = run_cli(("layout --table zh-tw.ctb --to brf " TACTUS_RESOURCES_DIR "/samples/chinese-tw.txt"));
     EXPECT_EQ(fine.err.find("warning"), std::string::npos) << fine.err;
+}
+
+// Bold text in a script the table does not know crashed the CLI (heap
+// corruption: liblouis wrote the typeform for every output cell into a buffer
+// sized for the input); the same with Arabic and with the Chinese table.
+TEST(BrailleCli, EmphasisInAnUnknownScriptIsTranslatedWhole) {
+    for (const auto& [text, table] : {std::pair{"**Привет**\n", "en-ueb-g2.ctb"}, std::pair{"*مرحبا بالعالم*\n", "en-ueb-g2.ctb"},
+                                      std::pair{"**Привет**\n", "zh-tw.ctb"}}) {
+        const auto md = temp_file("foreign.md", text);
+        const auto r = run_cli("layout --to brf -t " + std::string(table) + " '" + md.string() + "'");
+        EXPECT_EQ(r.exit_code, 0) << table << ": " << r.err;
+        EXPECT_GE(count(r.out, '\\'), 6u) << table << ": one escape per letter\n" << r.out;
+    }
+}
+
+// Text cut short with exit 0: liblouis drops escape codes that do not fit and
+// still reports the whole input read.
+TEST(BrailleCli, TranslateGivesEveryWord) {
+    const auto r = tactus::test::run_captured(tactus::test::cli({"translate", "--to", "brf", "-"}), "Привет мир\n");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(count(r.out, '\\'), 9u) << r.out;  // nine letters, nine escape codes
+    EXPECT_EQ(count(r.out, ' '), 1u) << r.out;
+}
+
+// Tactus's own multi-page BRF and PEF back-translate page after page, line for
+// line, a form feed between pages (it stopped at the first form feed).
+TEST(BrailleCli, BackTranslationGoesAcrossPages) {
+    std::string text;
+    for (int i = 1; i <= 60; ++i) text += "Line number " + std::to_string(i) + " of the lesson.\n\n";
+    const auto md = temp_file("pages.md", text);
+    for (const char* to : {"brf", "pef"}) {
+        const auto out = fs::temp_directory_path() / (std::string("tactus-braille-cli-pages.") + to);
+        const auto made = run_cli("layout -t en-ueb-g1.ctb --to " + std::string(to) + " -o '" + out.string() + "' '" +
+                                  md.string() + "'");
+        ASSERT_EQ(made.exit_code, 0) << made.err;
+        const auto back = run_cli("translate --back -t en-ueb-g1.ctb '" + out.string() + "'");
+        ASSERT_EQ(back.exit_code, 0) << to << ": " << back.err;
+        EXPECT_GE(count(back.out, '\f'), 2u) << to;
+        EXPECT_NE(back.out.find("Line number 1 of the"), std::string::npos) << to << "\n" << back.out;
+        EXPECT_NE(back.out.find("Line number 60 of the"), std::string::npos) << to << "\n" << back.out;
+    }
+}
+
+// A named pipe nobody writes to is refused at once, by every command that reads a file.
+TEST(BrailleCli, NamedPipeIsRefusedNotWaitedOn) {
+    const auto fifo = fs::temp_directory_path() / "tactus-braille-cli-fifo.md";
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const char* command : {"layout --to brf ", "translate "}) {
+        const auto r = run_cli(command + ("'" + fifo.string() + "'"));
+        EXPECT_EQ(r.exit_code, 3) << command;
+        EXPECT_NE(r.err.find("named pipe"), std::string::npos) << command << r.err;
+    }
+    fs::remove(fifo);
+}
+
+TEST(BrailleCli, HelpListsEveryExitStatus) {
+    const auto r = run_cli("--help");
+    EXPECT_NE(r.out.find("6 internal error"), std::string::npos) << r.out;
 }

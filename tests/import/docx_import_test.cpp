@@ -42,7 +42,7 @@ TEST(DocxImport, StylesNumberingBreaksAndRevisions) {
     const std::vector<document::Block> expected = {
         text_block(H, 1, {{"The Title"}}),  // bold of the Title style is not emphasis
         text_block(P, 0, {{"Tab\tand\nline kept"}}),  // lastRenderedPageBreak is no break
-        text_block(P, 0, {{"styled", I | U}, {"link", B | U}}),
+        text_block(P, 0, {{"styled", I | U}, {"link", B}}),  // a link's underline is print's, not emphasis
         text_block(LI, 1, {{"III. first"}}),
         text_block(LI, 2, {{"III.a) sub"}}),
         page_break("2"),
@@ -108,4 +108,17 @@ TEST(DocxImport, NotesNothingRefersToAreKeptAtTheEnd) {
               "1:Last paragraph.\n"
               "7:[2] A footnote whose reference was deleted.\n"
               "7:[3] An endnote nothing refers to.\n");
+}
+
+// pandoc's own test file: a link's underline (Word's Hyperlink style) is how
+// print shows a link, not emphasis, and braille leaves it out (BANA).
+TEST(DocxImport, LinksAreNotUnderlined) {
+    const auto doc = tactus::test::import_data_file("pandoc_links.docx");
+    std::string text;
+    for (const auto& b : doc.blocks)
+        for (const auto& s : b.spans) {
+            text += s.text;
+            EXPECT_EQ(s.emphasis & tactus::document::emphasis_underline, 0) << s.text;
+        }
+    EXPECT_NE(text.find("external link to a popular website."), std::string::npos) << text;
 }

@@ -147,3 +147,35 @@ TEST(MarkdownImport, LegacyEncodedMarkdownIsDecodedFirst) {
 
 }  // namespace
 }  // namespace tactus::test
+
+// YAML front matter (pandoc, Jekyll) is the document's metadata, not a heading
+// and a paragraph; the text after it keeps its line numbers.
+TEST(MarkdownImport, YamlFrontMatterIsMetadata) {
+    const auto doc = tactus::import::import_bytes("---\n"
+                                                  "title: \"Photosynthesis\"\n"
+                                                  "author:\n"
+                                                  "  - Ms. Lin\n"
+                                                  "  - Mr. Chen\n"
+                                                  "date: 2024-09-01\n"
+                                                  "tags: [biology]\n"
+                                                  "---\n"
+                                                  "# Light\n"
+                                                  "\n"
+                                                  "Plants use light.\n",
+                                                  "lesson.md");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    ASSERT_EQ(doc->blocks.size(), 2u);
+    EXPECT_EQ(doc->blocks[0].kind, tactus::document::BlockKind::heading);
+    EXPECT_EQ(doc->blocks[0].spans.at(0).text, "Light");
+    EXPECT_EQ(doc->blocks[0].source_line, 9);
+    EXPECT_EQ(doc->blocks[1].source_line, 11);
+    EXPECT_EQ(doc->metadata, (std::vector<tactus::document::MetadataItem>{{"title", "Photosynthesis"},
+                                                                          {"creator", "Ms. Lin"},
+                                                                          {"creator", "Mr. Chen"},
+                                                                          {"date", "2024-09-01"}}));
+    // A rule at the top followed by Markdown is not front matter.
+    const auto rule = tactus::import::import_bytes("---\nJust text.\n\n---\n", "rule.md");
+    ASSERT_TRUE(rule);
+    EXPECT_TRUE(rule->metadata.empty());
+    EXPECT_FALSE(rule->blocks.empty());
+}

@@ -56,6 +56,20 @@ TEST(PefImport, PrefixedNamespaceIsAccepted) {
     EXPECT_EQ(unicode_lines(doc->blocks[0]), std::vector<std::string>{"⠁"});
 }
 
+// A row broken over lines and indented, as a pretty-printing XML writer
+// leaves it: the white space is layout, the cells are the braille characters.
+TEST(PefImport, WhiteSpaceInsideARowIsLayout) {
+    const auto doc = import::import_bytes(
+        "<pef xmlns='http://www.daisy.org/ns/2008/pef' version='2008-1'><head/>"
+        "<body><volume cols='4' rows='2' rowgap='0' duplex='false'><section><page>"
+        "<row>\n      \u2801\u2803\n      \u2800\u2809\r\n    </row><row>\t\u2811 </row>"
+        "</page></section></volume></body></pef>",
+        "pretty.pef");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    ASSERT_EQ(doc->blocks.size(), 1u);
+    EXPECT_EQ(unicode_lines(doc->blocks[0]), (std::vector<std::string>{"⠁⠃⠀⠉", "⠑"}));
+}
+
 TEST(PefImport, MissingBodyAndEmptyInput) {
     const auto nobody = import::import_bytes("<pef xmlns='http://www.daisy.org/ns/2008/pef'/>", "n.pef");
     ASSERT_FALSE(nobody);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "export/export.hpp"
 #include "pipeline/pipeline.hpp"
@@ -101,6 +103,33 @@ TEST(Pipeline, WorkerErrorNamesTheBlockLine) {
     EXPECT_EQ(pipeline::lay_out(doc, o).error().where, "generated.txt:line 451:byte 7");
 }
 
+// A worker that crashes is Tactus's fault, not the document's: an internal
+// error (its own exit code in the CLI), with the place it was working on.
+TEST(Pipeline, WorkerCrashIsAnInternalError) {
+    const auto doc = many_blocks(600);
+    auto translator = translate::Translator::open("en-ueb-g2.ctb");
+    ASSERT_TRUE(translator);
+    // The word-room callback runs inside the worker: block 300 kills it.
+    const auto crash_at_300 = [&doc](const document::Block& b) -> std::size_t {
+        if (&b == &doc.blocks[300]) ::kill(::getpid(), SIGKILL);
+        return 0;
+    };
+    auto pool = pipeline::TranslationWorkers::start(doc, *translator, 2, 16, crash_at_300);
+    ASSERT_TRUE(pool);
+    Error error;
+    for (;;) {
+        auto block = pool->next();
+        if (!block) {
+            error = block.error();
+            break;
+        }
+        ASSERT_TRUE(block->has_value()) << "the crash went unnoticed";
+    }
+    EXPECT_EQ(error.kind, ErrorKind::internal) << error.to_string();
+    EXPECT_NE(error.message.find("killed by signal 9"), std::string::npos) << error.message;
+    EXPECT_NE(error.message.find("line 301"), std::string::npos) << error.message;  // the block it died on
+}
+
 TEST(Pipeline, WorkersStoppedEarlyLeaveNoProcessBehind) {
     const auto doc = many_blocks(3000);
     auto translator = translate::Translator::open("en-ueb-g2.ctb");
@@ -129,4 +158,27 @@ TEST(Pipeline, UnknownTableIsAnError) {
     pipeline::PipelineOptions o;
     o.tables = "nope.ctb";
     EXPECT_FALSE(pipeline::lay_out(many_blocks(3), o));
+}
+
+// Cells with dots 7-8 on many lines of a six-dot layout: one warning, naming
+// the first line and how many there are, not one per paragraph.
+TEST(Pipeline, DotsSevenEightWarningOncePerDocument) {
+    document::Document doc;
+    doc.source_name = "letters.txt";
+    for (int i = 0; i < 170; ++i) {
+        document::Block b;
+        b.source_line = 2 * i + 3;
+        b.spans = {document::Span{"Dear Пётр, number " + std::to_string(i), document::emphasis_none}};
+        doc.blocks.push_back(std::move(b));
+    }
+    pipeline::PipelineOptions o;
+    o.translation_workers = 1;
+    const auto paged = pipeline::lay_out(doc, o);
+    ASSERT_TRUE(paged) << paged.error().to_string();
+    std::vector<std::string> dots;
+    for (const auto& w : paged->warnings)
+        if (w.find("dots 7-8") != std::string::npos) dots.push_back(w);
+    ASSERT_EQ(dots.size(), 1u) << (dots.empty() ? "" : dots[1]);
+    EXPECT_TRUE(dots[0].starts_with("line 3: ")) << dots[0];
+    EXPECT_NE(dots[0].find("on 170 lines"), std::string::npos) << dots[0];
 }
