@@ -218,7 +218,7 @@ void add_queue_command(CLI::App& app) {
     l->callback([a] { list(*a); });
 
     auto* sh = q->add_subcommand("show", "One job: state, progress, recent events");
-    sh->add_option("job", a->job, "Job number")->required();
+    sh->add_option("job", a->job, "Job number")->required()->check(whole_number_from_one());
     sh->callback([a] { show(*a); });
 
     struct Act {
@@ -231,20 +231,20 @@ void add_queue_command(CLI::App& app) {
                          Act{"cancel", "Cancel a job (a printing one is aborted on the controller)", spool::Action::cancel},
                          Act{"retry", "Queue a failed or cancelled job again from its first unfinished sheet", spool::Action::retry}}) {
         auto* c = q->add_subcommand(x.name, x.help);
-        c->add_option("job", a->job, "Job number")->required();
+        c->add_option("job", a->job, "Job number")->required()->check(whole_number_from_one());
         if (x.action == spool::Action::resume || x.action == spool::Action::retry) {
             c->add_option("--from-sheet", a->from_sheet,
                           "Start again at this sheet (1-based over all copies) instead of the first unfinished one")
-                ->check(CLI::PositiveNumber);
+                ->check(whole_number_from_one());
             c->add_option("--from-page", a->from_page, "Start again at the sheet carrying this braille page (first copy)")
-                ->check(CLI::PositiveNumber);
+                ->check(whole_number_from_one());
         }
         const auto action = x.action;
         c->callback([a, action] { act(*a, action); });
     }
 
     auto* h = q->add_subcommand("history", "The event log of one job, or of the whole spool");
-    h->add_option("job", a->job, "Job number (default: all jobs)");
+    h->add_option("job", a->job, "Job number (default: all jobs)")->check(whole_number_from_one());
     h->add_option("--limit,-n", a->limit, "Newest events to show")->capture_default_str();
     h->callback([a] { history(*a); });
 

@@ -2,6 +2,9 @@
 #pragma once
 // The edge between the command line and core: commands turn core errors into
 // exit codes and "where: why" lines on stderr.
+#include <charconv>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -63,6 +66,21 @@ template <typename T>
 T require(Result<T> r, int code) {
     if (!r) fail_with(code, r.error());
     if constexpr (!std::is_void_v<T>) return std::move(*r);
+}
+
+// A whole number from 1 to `max`, checked on the text as typed: CLI11's
+// PositiveNumber names a range of doubles (up to 1.8e308) and its integer
+// conversion clamps an overflowing number to the type's largest.
+inline CLI::Validator whole_number_from_one(std::uint64_t max = std::numeric_limits<std::int64_t>::max()) {
+    return CLI::Validator(
+        [max](std::string& text) -> std::string {
+            std::uint64_t v = 0;
+            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+            if (ec != std::errc{} || end != text.data() + text.size() || v < 1 || v > max)
+                return "\"" + text + "\" is not a whole number from 1 to " + std::to_string(max);
+            return {};
+        },
+        "N");
 }
 
 // Each command file provides one of these; main.cpp calls them all.

@@ -69,11 +69,6 @@ Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOpti
     return Planner(p, o);
 }
 
-struct Planner::MoveCache {
-    std::mutex mutex;
-    std::unordered_map<std::uint32_t, motion::StepMove> moves;  // by carriage steps
-};
-
 Result<motion::StepMove> Planner::carriage_steps(std::uint32_t steps, const motion::MoveShape& shape) {
     if (steps >= carriage_cache_.size()) carriage_cache_.resize(steps + 1);
     auto& known = carriage_cache_[steps];

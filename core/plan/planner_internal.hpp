@@ -4,6 +4,8 @@
 // table of every dot position of the profile's page, the sheet's dots in
 // striking order, and the carriage's reversal rule.
 #include <cstdint>
+#include <mutex>
+#include <unordered_map>
 #include <vector>
 
 #include "common/result.hpp"
@@ -37,6 +39,12 @@ struct Planner::HitTable {
         return &hits[side == Side::front ? 0 : 1][(line * static_cast<std::size_t>(cells) + cell) * 8 +
                                                   static_cast<std::size_t>(dot - 1)];
     }
+};
+
+// The carriage moves a SheetQueue's planners share (thread-safe).
+struct Planner::MoveCache {
+    std::mutex mutex;
+    std::unordered_map<std::uint32_t, motion::StepMove> moves;  // by carriage steps
 };
 
 // Every dot of one sheet, sorted by feed position then carriage position.

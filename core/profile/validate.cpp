@@ -32,6 +32,13 @@ struct Checker {
                 v <= 0 ? "is " + num(v) + unit + ", must be above 0"
                        : "is " + num(v) + unit + ", must not exceed " + num(hi) + unit);
     }
+    // Above 0 and at least `lo`: a physical quantity whose tiny values pass
+    // "above 0" yet make the models' numbers overflow (a 1e-300 kg head rings
+    // at a frequency whose square is infinite, and the residual is NaN).
+    void physical(double v, double lo, double hi, const char* field, const char* unit = "") {
+        if (!(std::isfinite(v) && v > 0 && v <= hi)) return positive(v, hi, field, unit);
+        require(v >= lo, field, "is " + num(v) + unit + ", below the physical minimum of " + num(lo) + unit);
+    }
 };
 
 void check_axis(Checker& c, const Axis& a, const std::string& name) {
@@ -120,20 +127,23 @@ Result<void> validate(const PrinterProfile& p) {
               "head.concave_offset_mm",
               "is " + num(p.head.concave_offset_mm) + " mm, wider than the paper (" +
                   num(pa.width_mm) + " mm): one hammer could never reach it");
-    c.positive(p.head.dwell_s, 10, "head.dwell_s", " s");
+    c.physical(p.head.dwell_s, 1e-5, 10, "head.dwell_s", " s");
 
     c.range(p.motion.step_tolerance, 0, 0.5, "motion.step_tolerance");
     check_axis(c, p.carriage, "carriage");
     check_axis(c, p.feed, "feed");
 
     const auto& d = p.dynamics;
-    c.positive(d.head_mass_kg, 1000, "dynamics.head_mass_kg", " kg");
-    c.positive(d.belt_stiffness_n_m, 1e9, "dynamics.belt_stiffness_n_m", " N/m");
+    // The bounds are physical for a desktop embosser's head and drive, with
+    // room on both sides; within them every estimate is a finite number.
+    c.physical(d.head_mass_kg, 1e-3, 1000, "dynamics.head_mass_kg", " kg");
+    c.physical(d.belt_stiffness_n_m, 1, 1e9, "dynamics.belt_stiffness_n_m", " N/m");
     c.range(d.damping_ratio, 0, 0.99, "dynamics.damping_ratio");
     c.range(d.rotor_inertia_kg_m2, 0, 1, "dynamics.rotor_inertia_kg_m2", " kg m2");
     if (d.rotor_inertia_kg_m2 > 0) {
-        c.positive(d.pulley_radius_m, 1, "dynamics.pulley_radius_m", " m");
-        c.positive(d.motor_stiffness_nm_rad, 1e6, "dynamics.motor_stiffness_nm_rad", " N m/rad");
+        c.physical(d.rotor_inertia_kg_m2, 1e-9, 1, "dynamics.rotor_inertia_kg_m2", " kg m2");
+        c.physical(d.pulley_radius_m, 1e-4, 1, "dynamics.pulley_radius_m", " m");
+        c.physical(d.motor_stiffness_nm_rad, 1e-3, 1e6, "dynamics.motor_stiffness_nm_rad", " N m/rad");
     }
 
     const auto& v = p.vibration;

@@ -107,7 +107,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         if (path.has_parent_path()) {
             std::filesystem::create_directories(path.parent_path(), ec);
             if (ec)
-                return fail("cannot create the spool folder: " + ec.message(),
+                return fail(ErrorKind::io, "cannot create the spool folder: " + ec.message(),
                             path.parent_path().string());
         }
     }
@@ -134,6 +134,10 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     auto version = db.prepare("PRAGMA user_version");
     if (!version) return std::unexpected(version.error());
     auto has_row = version->step();
+    if (!has_row && has_row.error().kind == ErrorKind::io)
+        // The disk failed the read (full, or an I/O error): the file is not
+        // shown to be damaged, and `queue recover` would find nothing wrong.
+        return fail(ErrorKind::io, "cannot read the spool database: " + has_row.error().message, path.string());
     if (!has_row)
         return fail("not a usable spool database: " + has_row.error().message +
                         "; it was left untouched (move it aside with `tactus-cli queue "

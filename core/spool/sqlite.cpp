@@ -32,6 +32,17 @@ std::string explain(int code, const char* message) {
     }
 }
 
+// What kind of failure an SQLite code is, for the exit code: a disk that is
+// full or failing is an I/O failure (exit 1, the job waits for room), not a
+// damaged or unusable database (bad input, exit 3).
+ErrorKind kind_of(int code) {
+    switch (code & 0xFF) {
+    case SQLITE_FULL:
+    case SQLITE_IOERR: return ErrorKind::io;
+    default: return ErrorKind::input;
+    }
+}
+
 }  // namespace
 
 Result<Database> Database::open(const std::filesystem::path& path, bool create,
@@ -43,7 +54,7 @@ Result<Database> Database::open(const std::filesystem::path& path, bool create,
     if (rc != SQLITE_OK) {
         std::string why = explain(rc, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
         sqlite3_close_v2(db);
-        return fail("cannot open the spool database: " + why, path.string());
+        return fail(kind_of(rc), "cannot open the spool database: " + why, path.string());
     }
     sqlite3_busy_timeout(db, busy_timeout_ms);
     sqlite3_extended_result_codes(db, 1);
@@ -58,7 +69,7 @@ Result<Database> Database::open_immutable(const std::filesystem::path& path) {
     if (rc != SQLITE_OK) {
         std::string why = explain(rc, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
         sqlite3_close_v2(db);
-        return fail("cannot open the spool database: " + why, path.string());
+        return fail(kind_of(rc), "cannot open the spool database: " + why, path.string());
     }
     sqlite3_extended_result_codes(db, 1);
     return Database(db, path);
@@ -79,9 +90,8 @@ Database& Database::operator=(Database&& o) noexcept {
 Database::~Database() { sqlite3_close_v2(db_); }
 
 Error Database::error(std::string_view doing) const {
-    return Error{std::string(doing) + ": " +
-                     explain(sqlite3_extended_errcode(db_), sqlite3_errmsg(db_)),
-                 path_.string()};
+    const int code = sqlite3_extended_errcode(db_);
+    return Error{std::string(doing) + ": " + explain(code, sqlite3_errmsg(db_)), path_.string(), kind_of(code)};
 }
 
 Result<void> Database::exec(std::string_view sql) {
@@ -91,7 +101,7 @@ Result<void> Database::exec(std::string_view sql) {
     if (rc != SQLITE_OK) {
         std::string why = explain(rc, message ? message : sqlite3_errmsg(db_));
         sqlite3_free(message);
-        return fail(why, path_.string());
+        return fail(kind_of(rc), why, path_.string());
     }
     return {};
 }

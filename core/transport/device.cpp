@@ -2,6 +2,7 @@
 #include "transport/device.hpp"
 
 #include <charconv>
+#include <cmath>
 
 #include "transport/hid_uart.hpp"
 #include "transport/lpt_port.hpp"
@@ -13,7 +14,8 @@ namespace tactus::transport {
 std::optional<double> option_number(const std::string& s) {
     double v = 0;
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+    // NaN and infinity are no setting of a line or a simulator.
+    if (ec != std::errc{} || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
     return v;
 }
 
@@ -72,7 +74,12 @@ Result<SimSettings> sim_settings(const DeviceSpec& spec) {
         const auto d = option_number(v);
         if (!d || *d < 0) return fail(ErrorKind::usage, "\"" + v + "\" is not a non-negative number", where);
         if (k == "baud") s.baud = *d;
-        else if (k == "noise") s.noise = *d;
+        else if (k == "noise") {
+            // The same cap as `sim --noise`: beyond it no frame gets through.
+            if (*d > kMaxSimNoise)
+                return fail(ErrorKind::usage, "\"" + v + "\" is above the highest noise rate, 0.5 per byte", where);
+            s.noise = *d;
+        }
         else if (k == "seed") s.seed = static_cast<std::uint64_t>(*d);
         else if (k == "paper-reload") s.paper_reload_s = *d;
         else if (k == "protocol") {

@@ -47,6 +47,10 @@ Result<UartSettings> uart_settings(const DeviceSpec& spec);
 // The simulator's options (`sim?...`, docs/transports.md), read in one place
 // for `tactus-cli` (controller::open_device), the desktop app's built-in
 // simulator and the spool's check of a printer's device string.
+// The highest per-byte noise rate a simulated line takes (`sim --noise` and
+// `sim?noise=`): at 0.5 each of loss, flip and duplicate no frame arrives whole.
+inline constexpr double kMaxSimNoise = 0.5;
+
 struct SimSettings {
     double baud = 115200;
     double noise = 0;             // per byte: lost, flipped, doubled

@@ -71,9 +71,10 @@ Result<std::unique_ptr<ByteStream>> open_hid(const DeviceSpec& spec) {
         pid = static_cast<unsigned>(std::stoul(pid_text, &used, 16));
         if (used != pid_text.size()) throw std::invalid_argument("");
     } catch (const std::exception&) {
-        return fail(ErrorKind::device, "expected hid:VID:PID[:serial] with hexadecimal ids", where);
+        // A malformed device string is the user's to fix (usage), not a device that is missing.
+        return fail(ErrorKind::usage, "expected hid:VID:PID[:serial] with hexadecimal ids", where);
     }
-    if (vid > 0xFFFF || pid > 0xFFFF) return fail(ErrorKind::device, "USB ids are 16-bit", where);
+    if (vid > 0xFFFF || pid > 0xFFFF) return fail(ErrorKind::usage, "USB ids are 16-bit", where);
     if (c2 != std::string::npos) serial = spec.path.substr(c2 + 1);
     const auto bridge = bridge_for(static_cast<std::uint16_t>(vid), static_cast<std::uint16_t>(pid));
     if (!bridge)

@@ -96,6 +96,20 @@ TEST(Profile, NegativeMassNamesTheField) {
                  "field dynamics.head_mass_kg", "must be above 0");
 }
 
+// A quantity above 0 but far below anything physical is refused with its
+// field: a 1e-300 kg head passed the check, and the vibration estimate then
+// printed NaN and the plan a 0.00 um residual.
+TEST(Profile, TinyPhysicalQuantitiesAreRefused) {
+    for (const auto& [section, field] : {std::pair{"dynamics", "head_mass_kg"}, std::pair{"dynamics", "belt_stiffness_n_m"},
+                                         std::pair{"dynamics", "rotor_inertia_kg_m2"},
+                                         std::pair{"dynamics", "pulley_radius_m"},
+                                         std::pair{"dynamics", "motor_stiffness_nm_rad"}, std::pair{"head", "dwell_s"}}) {
+        SCOPED_TRACE(field);
+        const std::string name = std::string(section) + "." + field;
+        expect_error(edited([&](json& j) { j[section][field] = 1e-300; }), "field " + name, "physical minimum");
+    }
+}
+
 TEST(Profile, ZeroStepsPerMmNamesTheField) {
     expect_error(edited([](json& j) { j["carriage"]["steps_per_mm"] = 0; }),
                  "field carriage.steps_per_mm", "must be above 0");

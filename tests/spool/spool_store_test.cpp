@@ -68,6 +68,17 @@ TEST(SpoolStore, CreatesItsFolderAndKeepsJobsAcrossReopen) {
     EXPECT_EQ(events->front().kind, "submitted");
 }
 
+// A folder that cannot be made is an I/O failure (exit 1 in the CLI), not bad
+// input (exit 3, which said the user's file was at fault).
+TEST(SpoolStore, AFolderThatCannotBeMadeIsAnIoFailure) {
+    TempDir dir;
+    std::ofstream(dir / "plain-file").flush();
+    const auto s = Spool::open(dir / "plain-file/spool/spool.db");
+    ASSERT_FALSE(s);
+    EXPECT_EQ(s.error().kind, ErrorKind::io) << s.error().to_string();
+    EXPECT_NE(s.error().message.find("cannot create the spool folder"), std::string::npos) << s.error().to_string();
+}
+
 // The CUPS backend (user lp) creates the shared spool; SQLite makes the empty
 // file before the schema. A reader that may not create (a root `queue list`,
 // the CUPS test rig polling) used to write the schema into that empty file

@@ -387,7 +387,10 @@ TEST(Device, SimulatorOptionsAreCheckedAsTheyAreRead) {
     EXPECT_EQ(sim_settings(*spec)->speed, 1.0);  // the plan's own speed
     spec = parse_device("sim?speed=max");
     EXPECT_EQ(sim_settings(*spec)->speed, 0.0);  // as fast as the computer can
-    for (const char* bad : {"sim?speed=0", "sim?speed=fast", "sim?volume=3", "sim?baud=100"}) {
+    // NaN and infinity are no speed or rate, and the noise stops where `sim
+    // --noise` stops (they were accepted, and `noise=2` ran a line no frame crosses).
+    for (const char* bad : {"sim?speed=0", "sim?speed=fast", "sim?volume=3", "sim?baud=100", "sim?speed=nan",
+                            "sim?speed=inf", "sim?noise=nan", "sim?noise=2", "sim?baud=inf"}) {
         auto c = check_device(bad);
         ASSERT_FALSE(c) << bad;
         EXPECT_EQ(c.error().kind, ErrorKind::usage) << bad;
@@ -401,6 +404,12 @@ TEST(Device, AbsentDevicesGiveTheDocumentedErrors) {
         ASSERT_FALSE(s) << dev;
         EXPECT_NE(s.error().message.find("no such device"), std::string::npos) << dev << ": " << s.error().message;
         EXPECT_FALSE(s.error().where.empty());
+    }
+    // A malformed HID string is a usage error (exit 2), not a missing device (4).
+    for (const char* dev : {"hid:zz:yy", "hid:10c4", "hid:10000:ea80"}) {
+        auto s = open_device(dev);
+        ASSERT_FALSE(s) << dev;
+        EXPECT_EQ(s.error().kind, ErrorKind::usage) << dev << ": " << s.error().message;
     }
     auto notty = open_device("pty:/dev/null");
     ASSERT_FALSE(notty);
