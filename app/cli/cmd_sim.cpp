@@ -197,20 +197,20 @@ void add_sim_command(CLI::App& app) {
     cmd->add_option("--disconnect-at", args->server.disconnect_at_s,
                     "Kill the line this many seconds after the host's first byte ...");
     cmd->add_option("--disconnect-for", args->server.disconnect_for_s, "... for this many seconds");
-    cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(whole_number_from_one(std::numeric_limits<int>::max()));
+    cmd->add_option("--paper-out-at", args->paper_out_at, "Sheet N finds no paper")->check(whole_number_from_one(kMaxInt));
     cmd->add_option("--paper-reload", args->server.sim.reload_paper_after_s,
                     "Seconds (simulated) until the operator loads paper after a paper-out");
     cmd->add_option("--paper-reload-reads", args->paper_reload_reads,
                     "With --firmware and --paper-out-at 1: the operator loads paper at the firmware's Nth read of "
                     "its paper sensor (an s51 breakpoint; it reads it once per main-loop pass while paper is out)")
-        ->check(whole_number_from_one(std::numeric_limits<int>::max()));
+        ->check(whole_number_from_one(kMaxInt));
     cmd->add_option("--reset-at-strike", args->reset_at_strike,
                     "Watchdog reset right after strike N (with --firmware: an s51 breakpoint resets the emulated "
-                    "chip, RAM kept)")->check(whole_number_from_one(std::numeric_limits<int>::max()));
+                    "chip, RAM kept)")->check(whole_number_from_one(kMaxInt));
     cmd->add_option("--power-loss-at-strike", args->power_loss_at_strike,
-                    "Power loss right after strike N")->check(whole_number_from_one(std::numeric_limits<int>::max()));
+                    "Power loss right after strike N")->check(whole_number_from_one(kMaxInt));
     cmd->add_option("--limit-at-strike", args->limit_at_strike,
-                    "Limit switch trips before strike N")->check(whole_number_from_one(std::numeric_limits<int>::max()));
+                    "Limit switch trips before strike N")->check(whole_number_from_one(kMaxInt));
     cmd->add_option("--mute-after-pass", args->mute_after_pass,
                     "Stop replying once N passes of the job are executed, until the host opens a new session "
                     "(the ACK is lost with the host); says \"muted\" and then \"at rest\" on stdout")

@@ -68,10 +68,14 @@ T require(Result<T> r, int code) {
     if constexpr (!std::is_void_v<T>) return std::move(*r);
 }
 
+// The largest value of an int option, as whole_number_from_one's bound.
+inline constexpr std::uint64_t kMaxInt = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+
 // A whole number from 1 to `max`, checked on the text as typed: CLI11's
 // PositiveNumber names a range of doubles (up to 1.8e308) and its integer
 // conversion clamps an overflowing number to the type's largest.
-inline CLI::Validator whole_number_from_one(std::uint64_t max = std::numeric_limits<std::int64_t>::max()) {
+inline CLI::Validator whole_number_from_one(
+    std::uint64_t max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
     return CLI::Validator(
         [max](std::string& text) -> std::string {
             std::uint64_t v = 0;
