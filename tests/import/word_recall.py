@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import unicodedata
 
 THRESHOLD = 0.95
 MIN_WORDS = 20
@@ -24,7 +25,14 @@ TABLE = "en-ueb-g1.ctb"
 WORD = re.compile(r"[^\W_]+", re.UNICODE)
 
 
+# liblouis's back-translation writes a braille indicator it has no print for
+# (UEB's level indicators ⠔ ⠢, dots 35 and 26) as an escape, "\\35/".
+ESCAPE = re.compile(r"\\\d+/")
+
+
 def words(text):
+    # NFKC: print's m² is the word m2, as the braille's level indicator and 2.
+    text = unicodedata.normalize("NFKC", ESCAPE.sub("", text))
     return collections.Counter(w.lower() for w in WORD.findall(text))
 
 
