@@ -27,6 +27,7 @@ WORD = re.compile(r"[^\W_]+", re.UNICODE)
 
 # liblouis's back-translation writes a braille indicator it has no print for
 # (UEB's level indicators ⠔ ⠢, dots 35 and 26) as an escape, "\\35/".
+LIST_MARKER = re.compile(r"(?m)^[ \t]*(?:\d+|[A-Za-z]|[ivxlcdmIVXLCDM]+)[.)][ \t]+")
 ESCAPE = re.compile(r"\\\d+/")
 
 
@@ -41,7 +42,10 @@ def pandoc_words(path):
                          capture_output=True, text=True, timeout=120)
     if out.returncode != 0:
         raise RuntimeError(f"pandoc failed on {path}: {out.stderr.strip()}")
-    return words(out.stdout)
+    # pandoc's plain writer numbers every ordered list from its own start
+    # (a continued ODT list starts again at 1): its list markers are not the
+    # document's words, so they are left out of the count.
+    return words(LIST_MARKER.sub("", out.stdout))
 
 
 def tactus_words(cli, path, tmp):
