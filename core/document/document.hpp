@@ -29,14 +29,14 @@ enum class Position : std::uint8_t { baseline, superscript, subscript };
 struct Span {
     std::string text;  // UTF-8
     std::uint8_t emphasis = emphasis_none;
+    // The text is a note's reference ("1"): the translator writes it with the
+    // note reference indicator in front (docs/formats.md, "Notes").
+    bool note_reference = false;
     Position position = Position::baseline;
     // Text the transcriber adds, not print's (an image's description, a
     // ruby guide): written between the code's transcriber's note indicators
     // (docs/layout.md, "Transcriber's notes").
     bool transcriber_note = false;
-    // The text is a note's reference ("1"): the translator writes it with the
-    // note reference indicator in front (docs/formats.md, "Notes").
-    bool note_reference = false;
     bool operator==(const Span&) const = default;
 };
 

@@ -74,7 +74,7 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, doc
         !spans.back().note_reference && !spans.back().transcriber_note)
         spans.back().text.append(utf8);
     else
-        spans.push_back(document::Span{std::string(utf8), emphasis, position});
+        spans.push_back(document::Span{std::string(utf8), emphasis, false, position});
 }
 
 void DocumentBuilder::trim_end() {
