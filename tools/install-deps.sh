@@ -16,6 +16,8 @@ packages=(
   qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools libgl-dev
   libxml2-utils bible-kjv time
+  # The word-recall check of DOCX and ODT import (tests/import/word_recall.py).
+  pandoc
   cups-daemon cups-client cups-bsd libcups2-dev
   help2man desktop-file-utils appstream appstream-util lintian dpkg-dev file man-db
   # The .deb test installs the package into a clean Debian 12 chroot.

@@ -63,12 +63,17 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--transcriber", book.transcriber, "With --volumes: \"Transcribed by\" on the title page");
     cmd.add_option("--encoding", encoding,
                    "Text encoding override (e.g. UTF-8, Big5, GB18030, windows-1252); default: detect");
+    cmd.add_option("--ruby", ruby,
+                   "Ruby (phonetic guide) in DOCX/ODT: after (the guide after its base, as a transcriber's note) "
+                   "or omit (the base only)")
+        ->capture_default_str();
 }
 
 pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     pipeline::PipelineOptions o;
     o.tables = tables;
     o.import.encoding = encoding;
+    o.import.ruby = require(import::parse_ruby_guide(ruby), exit_usage);
     o.import.format = require(import::parse_source_format(format), exit_usage);
     if (!preset.empty()) {
         const auto p = layout::find_layout_preset(preset);

@@ -17,6 +17,7 @@ struct LayoutArgs {
     std::string preset;
     std::string format = "auto";
     std::string encoding;
+    std::string ruby = "after";
     std::string page_numbers = "bottom-right";
     int cells = 0;  // 0: from the preset
     int lines = 0;

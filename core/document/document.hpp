@@ -20,12 +20,23 @@ enum Emphasis : std::uint8_t {
     emphasis_underline = 1u << 2,
 };
 
+// Where print sets a run of text: on the line, raised (superscript) or
+// lowered (subscript); DOCX w:vertAlign, ODT style:text-position. The
+// translator writes the code's level indicator before a raised or lowered
+// run (docs/layout.md, "Superscript and subscript").
+enum class Position : std::uint8_t { baseline, superscript, subscript };
+
 struct Span {
     std::string text;  // UTF-8
     std::uint8_t emphasis = emphasis_none;
     // The text is a note's reference ("1"): the translator writes it with the
     // note reference indicator in front (docs/formats.md, "Notes").
     bool note_reference = false;
+    Position position = Position::baseline;
+    // Text the transcriber adds, not print's (an image's description, a
+    // ruby guide): written between the code's transcriber's note indicators
+    // (docs/layout.md, "Transcriber's notes").
+    bool transcriber_note = false;
     // The passage's language as the source marks it (BCP 47, from HTML lang,
     // xml:lang); empty = the document's own. Kept for choosing a table per
     // passage; the translator does not act on it yet.
@@ -77,6 +88,10 @@ struct Block {
     int source_line = 0;                     // 1-based line in the source, 0 if unknown
     int span = 1;                            // table_cell: columns covered, from `level` on
     Align align = Align::none;               // table_cell: its column's alignment
+    // Boxed material (a DOCX text box, an ODT frame): blocks with the same
+    // non-zero number are one box, drawn between box lines (docs/layout.md,
+    // "Boxed material"); 0 = not in a box.
+    int box = 0;
     bool operator==(const Block&) const = default;
 
     // The plain text of all spans, for display and tests.
@@ -127,8 +142,9 @@ struct Document {
     std::vector<BrailleSection> braille_sections;  // PEF sections, in order
     std::vector<MetadataItem> metadata;            // PEF dc: elements, in document order;
                                                    // EPUB, DTBook: the book's title, creator, ...
-    // What the import left out or could not keep (an image with no
-    // description, a video), as "where: what"; layout reports them on.
+    // What the importer left out on purpose or could not keep (a picture with
+    // no description, a video): what, how many and where (the first); layout
+    // reports them on.
     std::vector<std::string> warnings;
     bool operator==(const Document&) const = default;
 };

@@ -39,7 +39,29 @@ void DocumentBuilder::note_line(int source_line) {
     if (open_ && current_.source_line == 0) current_.source_line = source_line;
 }
 
-void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, std::string_view language) {
+void DocumentBuilder::add_transcriber_note(std::string_view utf8) {
+    if (utf8.empty()) return;
+    if (!open_) begin(document::BlockKind::paragraph, 0, 0);
+    document::Span span;
+    span.text = std::string(utf8);
+    span.transcriber_note = true;
+    current_.spans.push_back(std::move(span));
+}
+
+void DocumentBuilder::begin_box() {
+    if (box_depth_++ > 0) return;
+    end();
+    box_ = ++boxes_;
+}
+
+void DocumentBuilder::end_box() {
+    if (box_depth_ == 0 || --box_depth_ > 0) return;
+    end();
+    box_ = 0;
+}
+
+void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, document::Position position,
+                               std::string_view language) {
     if (utf8.empty()) return;
     if (!open_) begin(document::BlockKind::paragraph, 0, 0);
     auto& spans = current_.spans;
@@ -49,15 +71,17 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, std
         if (text == std::string_view::npos) return;
         utf8.remove_prefix(text);
     }
-    if (!spans.empty() && spans.back().emphasis == emphasis && !spans.back().note_reference &&
-        spans.back().language == language)
+    if (!spans.empty() && spans.back().emphasis == emphasis && spans.back().position == position &&
+        !spans.back().note_reference && !spans.back().transcriber_note && spans.back().language == language)
         spans.back().text.append(utf8);
     else
-        spans.push_back(document::Span{std::string(utf8), emphasis, false, std::string(language)});
+        spans.push_back(document::Span{std::string(utf8), emphasis, false, position, false, std::string(language)});
 }
 
 void DocumentBuilder::trim_end() {
-    if (!open_ || current_.spans.empty() || current_.spans.back().note_reference) return;
+    if (!open_ || current_.spans.empty() || current_.spans.back().note_reference ||
+        current_.spans.back().transcriber_note)
+        return;
     auto& t = current_.spans.back().text;
     t.erase(std::min(t.size(), t.find_last_not_of(" \t\v") + 1));
     if (t.empty()) current_.spans.pop_back();
@@ -201,6 +225,7 @@ void DocumentBuilder::push(document::Block block) {
         blocks_ = {};  // give the memory back now; the import has failed
         return;
     }
+    if (box_ != 0 && block.box == 0) block.box = box_;
     if (!is_page_break(block)) has_content_ = true;
     blocks_.push_back(std::move(block));
 }
@@ -223,6 +248,7 @@ Result<document::Document> DocumentBuilder::finish() {
         blocks_.pop_back();
     document::Document doc;
     doc.blocks = std::move(blocks_);
+    doc.warnings = std::move(warnings_);
     blocks_ = {};
     return doc;
 }

@@ -34,7 +34,17 @@ public:
     // Appends text to the open block; opens a paragraph if none is open.
     // `language`: the passage's language when the source marks one (Span::language).
     void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none,
-                  std::string_view language = {});
+                  document::Position position = document::Position::baseline, std::string_view language = {});
+    // Appends a transcriber's note (document::Span::transcriber_note) to the
+    // open block; opens a paragraph if none is open.
+    void add_transcriber_note(std::string_view utf8);
+    // Boxed material (document::Block::box): the blocks kept between
+    // begin_box and end_box are one box. A box in a box is part of it.
+    void begin_box();
+    void end_box();
+    // What the importer left out on purpose: one line per kind in
+    // Document::warnings.
+    void warn(std::string line) { warnings_.push_back(std::move(line)); }
     // Drops spaces and tabs at the end of the open block's text.
     void trim_end();
     // Ends the open block; it is kept only if it contains visible text.
@@ -91,6 +101,10 @@ private:
     bool set_aside_open_ = false;
     bool in_note_ = false;
     bool in_table_ = false;
+    int box_ = 0;        // the box being read, 0 = none
+    int box_depth_ = 0;
+    int boxes_ = 0;      // boxes numbered so far
+    std::vector<std::string> warnings_;
 };
 
 }  // namespace tactus::import::detail

@@ -8,9 +8,18 @@
 // <w:br w:type="page"/>, pageBreakBefore and section breaks.
 // <w:lastRenderedPageBreak/> only records where the last layout happened to
 // break, so it is not a break.
+// Content controls (w:sdt) around blocks, rows, cells and runs are read
+// through, placeholder text included ("Choose an item."). Text boxes
+// (wps:txbx, or v:textbox in the VML fallback; one of the two, never both)
+// are boxed material after the paragraph they are anchored in; a picture's
+// description (wp:docPr descr, else title) is a transcriber's note where the
+// picture is, and a picture without one is named in a warning. Ruby
+// (w:ruby) keeps its base and, by choice, its guide as a transcriber's note;
+// w:vertAlign raises and lowers runs; equations (m:oMath) are linear text
+// (office_math.hpp).
 // Not imported, deliberately: headers and footers (braille pages carry their
 // own numbers, and a running head repeated on every print page is not text),
-// comments, text boxes and images.
+// comments.
 #include <pugixml.hpp>
 
 #include <unordered_map>
@@ -19,7 +28,9 @@
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "import/text_position.hpp"
 #include "import/xml_util.hpp"
 
 namespace tactus::import::detail {
@@ -79,9 +90,10 @@ std::unordered_map<std::string, pugi::xml_node> notes_by_id(const pugi::xml_node
 class BodyReader {
 public:
     BodyReader(const DocxStyles& styles, DocxNumbering& numbering, const pugi::xml_node& footnotes,
-               const pugi::xml_node& endnotes)
+               const pugi::xml_node& endnotes, RubyGuide ruby, std::string_view part, std::string_view bytes)
         : styles_(styles), numbering_(numbering), footnotes_(notes_by_id(footnotes)),
-          endnotes_(notes_by_id(endnotes)), footnotes_root_(footnotes), endnotes_root_(endnotes) {}
+          endnotes_(notes_by_id(endnotes)), footnotes_root_(footnotes), endnotes_root_(endnotes),
+          ruby_(ruby), part_(part), bytes_(bytes) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
@@ -120,15 +132,30 @@ private:
     // <w:gridBefore> columns hold no cell, so every cell keeps its column. A
     // cell merged down (<w:vMerge/>) is the cells the file has: the first holds
     // the text, the ones under it are empty.
+    // The children of a table or row, with content controls (w:sdt around
+    // rows or cells) and custom XML read through.
+    static void controlled(const pugi::xml_node& node, std::string_view want, std::vector<pugi::xml_node>& out,
+                           int depth = 0) {
+        for (const auto& c : node.children()) {
+            const auto name = local_name(c);
+            if (name == want)
+                out.push_back(c);
+            else if ((name == "sdt" || name == "sdtContent" || name == "customXml") && depth < 64)
+                controlled(c, want, out, depth + 1);
+        }
+    }
+
     void table(const pugi::xml_node& tbl) {
         out_.begin_table();
-        for (const auto& row : tbl.children()) {
-            if (local_name(row) != "tr") continue;
+        std::vector<pugi::xml_node> rows;
+        controlled(tbl, "tr", rows);
+        for (const auto& row : rows) {
             const auto trPr = child(row, "trPr");
             out_.begin_row(read_toggle(child(trPr, "tblHeader")).value_or(false));
             out_.skip_columns(whole_number(attribute(child(trPr, "gridBefore"), "val"), 0));
-            for (const auto& cell : row.children()) {
-                if (local_name(cell) != "tc") continue;
+            std::vector<pugi::xml_node> cells;
+            controlled(row, "tc", cells);
+            for (const auto& cell : cells) {
                 // The alignment of the cell's first paragraph (<w:jc w:val="center"/>);
                 // left is the default (LibreOffice writes it in every cell), so none.
                 const auto jc = attribute(child(child(child(cell, "p"), "pPr"), "jc"), "val");
@@ -163,8 +190,12 @@ private:
                                        : document::BlockKind::paragraph;
         const int level = heading > 0 ? heading : numbering ? numbering->ilvl + 1 : style.quote ? 1 : 0;
         out_.begin_paragraph(kind, level, numbering ? numbering_.next_label(*numbering) : std::string{});
+        std::vector<pugi::xml_node> boxes;
+        std::swap(boxes, boxes_);
         inline_content(p);
         out_.end_paragraph();
+        std::swap(boxes, boxes_);
+        text_boxes(boxes);
 
         // A section break in the paragraph properties ends the section here; all
         // kinds except "continuous" (and column breaks) start a new page.
@@ -174,27 +205,115 @@ private:
         }
     }
 
-    void inline_content(const pugi::xml_node& node) {
+    // The text boxes anchored in a paragraph, after it, each a box.
+    void text_boxes(const std::vector<pugi::xml_node>& boxes) {
+        for (const auto& content : boxes) {
+            if (out_.full()) return;
+            out_.begin_box();
+            if (++box_depth_ < 16) container(content);  // a box in a box in ... is read flat
+            --box_depth_;
+            out_.end_box();
+        }
+    }
+
+    [[nodiscard]] std::string where(const pugi::xml_node& n) const {
+        return std::string(part_) + ":" +
+               position_at(bytes_, static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0))).to_string();
+    }
+
+    void inline_content(const pugi::xml_node& node, int depth = 0) {
         for (const auto& c : node.children()) {
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
             if (name == "r")
                 run(c);
-            else if (name == "pPr" || name == "rPr" || name == "del" || name == "moveFrom" ||
-                     name == "AlternateContent" || name == "drawing" || name == "pict" ||
-                     name == "object")
-                continue;  // properties, deleted text, graphics
-            else if (name == "hyperlink") {
+            else if (name == "pPr" || name == "rPr" || name == "del" || name == "moveFrom" || name == "object")
+                continue;  // properties, deleted text, embedded objects
+            else if (name == "AlternateContent")
+                alternate(c);
+            else if (name == "drawing")
+                drawing(c);
+            else if (name == "pict")
+                vml(c);
+            else if (name == "oMath" || name == "oMathPara")
+                math(c);
+            else if (name == "ruby")
+                ruby(c);
+            else if (name == "hyperlink" && depth < 64) {
                 ++in_hyperlink_;
-                inline_content(c);
+                inline_content(c, depth + 1);
                 --in_hyperlink_;
-            } else
-                inline_content(c);  // ins, smartTag, fldSimple, sdt, math...
+            } else if (depth < 64)
+                inline_content(c, depth + 1);  // ins, smartTag, fldSimple, sdt...
         }
+    }
+
+    void math(const pugi::xml_node& m) {
+        omml_linear(m, [&](std::string_view t, document::Position p) { out_.text(t, document::emphasis_none, p); });
+    }
+
+    // Word's Phonetic Guide: the base always, the guide after it by choice.
+    void ruby(const pugi::xml_node& r) {
+        inline_content(child(r, "rubyBase"));
+        if (ruby_ == RubyGuide::omit) return;
+        std::string guide;
+        for (const auto& t : child(r, "rt").select_nodes(".//*[local-name()='t']")) guide += t.node().child_value();
+        out_.transcriber_note(guide);
+    }
+
+    // Markup compatibility: the first choice this reader knows (DrawingML
+    // text boxes and pictures, wps:), else the fallback (VML), never both.
+    void alternate(const pugi::xml_node& ac) {
+        for (const auto& c : ac.children())
+            if (local_name(c) == "Choice") {
+                inline_content(c);
+                return;
+            }
+        inline_content(child(ac, "Fallback"));
+    }
+
+    // A DrawingML object: a text box (its w:txbxContent) or a picture (its
+    // description). A group holds several.
+    void drawing(const pugi::xml_node& d) {
+        for (const auto& anchor : d.children()) {
+            const auto docPr = child(anchor, "docPr");
+            if (!docPr) continue;
+            const auto boxes = anchor.select_nodes(".//*[local-name()='txbxContent']");
+            for (const auto& b : boxes) boxes_.push_back(b.node());
+            if (!boxes.empty()) continue;
+            picture(attribute(docPr, "descr"), attribute(docPr, "title"), anchor);
+        }
+    }
+
+    // VML (Word 2007's, and the fallback of later files): v:textbox, or an
+    // image (v:imagedata o:title, the shape's alt).
+    void vml(const pugi::xml_node& pict) {
+        const auto boxes = pict.select_nodes(".//*[local-name()='txbxContent']");
+        for (const auto& b : boxes) boxes_.push_back(b.node());
+        if (!boxes.empty()) return;
+        for (const auto& shape : pict.children()) {
+            if (shape.type() != pugi::node_element) continue;
+            const auto image = shape.select_node(".//*[local-name()='imagedata']").node();
+            if (!image) continue;
+            picture(attribute(shape, "alt"), attribute(image, "title"), shape);
+        }
+    }
+
+    void picture(std::string_view description, std::string_view title, const pugi::xml_node& where_node) {
+        const auto text = description.find_first_not_of(" \t\r\n") != std::string_view::npos ? description : title;
+        if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+            out_.picture_without_description(where(where_node));
+            return;
+        }
+        out_.transcriber_note(text);
     }
 
     void run(const pugi::xml_node& r) {
         const auto rPr = child(r, "rPr");
+        const auto align = attribute(child(rPr, "vertAlign"), "val");
+        const auto position = align == "superscript" ? document::Position::superscript
+                              : align == "subscript" ? document::Position::subscript
+                                                     : document::Position::baseline;
         // Only character styles and direct formatting are emphasis: the bold of a
         // heading style or the italic of a quote style is the paragraph's typeface.
         RunFormat format;
@@ -210,7 +329,15 @@ private:
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
             if (name == "t")
-                out_.text(c.child_value(), emphasis);
+                out_.text(c.child_value(), emphasis, position);
+            else if (name == "drawing")
+                drawing(c);
+            else if (name == "pict")
+                vml(c);
+            else if (name == "AlternateContent")
+                alternate(c);
+            else if (name == "ruby")
+                ruby(c);
             else if (name == "tab")
                 out_.text("\t", emphasis);
             else if (name == "cr")
@@ -257,13 +384,17 @@ private:
     std::unordered_map<std::string, pugi::xml_node> footnotes_, endnotes_;
     pugi::xml_node footnotes_root_, endnotes_root_;
     std::unordered_set<std::string> referenced_;  // "footnote:2", "endnote:1"
+    RubyGuide ruby_;
+    std::string_view part_, bytes_;     // the main part, for the places warnings name
+    std::vector<pugi::xml_node> boxes_;  // text boxes met in the paragraph being read
+    int box_depth_ = 0;
     OfficeText out_;
     int in_hyperlink_ = 0;  // inside w:hyperlink (nested ones count)
 };
 
 }  // namespace
 
-Result<document::Document> import_docx(std::string_view bytes) {
+Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
     auto package = XmlPackage::open(bytes, "a Word document");
     if (!package) return std::unexpected(package.error());
 
@@ -289,7 +420,8 @@ Result<document::Document> import_docx(std::string_view bytes) {
     const auto body = child(document_xml.root(), "body");
     if (local_name(document_xml.root()) != "document" || !body)
         return fail("not a Word document: no <w:document>/<w:body>", *main_part);
-    BodyReader reader(styles, numbering, footnotes_xml.root(), endnotes_xml.root());
+    BodyReader reader(styles, numbering, footnotes_xml.root(), endnotes_xml.root(), ruby, *main_part,
+                      document_xml.bytes);
     reader.container(body);
     return reader.finish();
 }

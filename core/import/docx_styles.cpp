@@ -185,8 +185,16 @@ DocxNumbering::DocxNumbering(const pugi::xml_node& root) {
             }
             abstracts_[std::string(attribute(n, "abstractNumId"))] = std::move(levels);
         } else if (local_name(n) == "num") {
-            abstract_of_num_[std::string(attribute(n, "numId"))] =
-                attribute(child(n, "abstractNumId"), "val");
+            const std::string id(attribute(n, "numId"));
+            abstract_of_num_[id] = attribute(child(n, "abstractNumId"), "val");
+            // <w:lvlOverride w:ilvl="0"><w:startOverride w:val="4"/>: this
+            // list restarts the shared counter at 4 where it begins.
+            for (const auto& o : n.children()) {
+                if (local_name(o) != "lvlOverride") continue;
+                const auto i = to_int(attribute(o, "ilvl")).value_or(-1);
+                const auto start = to_int(attribute(child(o, "startOverride"), "val"));
+                if (i >= 0 && i <= 8 && start) start_overrides_[id][static_cast<std::size_t>(i)] = *start;
+            }
         }
     }
 }
@@ -208,7 +216,11 @@ std::string DocxNumbering::next_label(const NumberingRef& ref) {
     auto [it, fresh] = counters_.try_emplace(a->second);
     auto& counters = it->second;
     if (fresh) counters.fill(unset);
-    counters[ilvl] = counters[ilvl] == unset ? levels[ilvl].start : counters[ilvl] + 1;
+    const auto over = start_overrides_.find(ref.num_id);
+    if (over != start_overrides_.end() && over->second[ilvl] && overridden_.insert(ref.num_id + ":" + std::to_string(ilvl)).second)
+        counters[ilvl] = *over->second[ilvl];
+    else
+        counters[ilvl] = counters[ilvl] == unset ? levels[ilvl].start : counters[ilvl] + 1;
     for (std::size_t deeper = ilvl + 1; deeper < counters.size(); ++deeper) counters[deeper] = unset;
 
     std::string label;

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "document/document.hpp"
 
@@ -83,6 +84,9 @@ private:
     std::unordered_map<std::string, std::string> abstract_of_num_;
     std::unordered_map<std::string, Levels> abstracts_;
     std::unordered_map<std::string, std::array<int, 9>> counters_;  // per abstract list
+    // w:num's startOverride per level, and the (num, level) pairs already restarted.
+    std::unordered_map<std::string, std::array<std::optional<int>, 9>> start_overrides_;
+    std::unordered_set<std::string> overridden_;
 };
 
 }  // namespace tactus::import::detail

@@ -78,6 +78,13 @@ Result<SourceFormat> parse_source_format(std::string_view name) {
                 "format");
 }
 
+Result<RubyGuide> parse_ruby_guide(std::string_view name) {
+    const auto n = lower(name);
+    if (n == "after") return RubyGuide::after;
+    if (n == "omit") return RubyGuide::omit;
+    return fail("unknown ruby choice '" + std::string(name) + "' (expected after or omit)", "ruby");
+}
+
 std::string_view source_format_name(SourceFormat format) {
     switch (format) {
         case SourceFormat::automatic: return "auto";
@@ -150,11 +157,11 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
         }
         case SourceFormat::docx:
             if (bytes.empty()) return fail("empty file is not a DOCX document", where);
-            doc = detail::import_docx(bytes);
+            doc = detail::import_docx(bytes, options.ruby);
             break;
         case SourceFormat::odt:
             if (bytes.empty()) return fail("empty file is not an ODT document", where);
-            doc = detail::import_odt(bytes);
+            doc = detail::import_odt(bytes, options.ruby);
             break;
         case SourceFormat::brf: doc = detail::import_brf(bytes); break;
         case SourceFormat::pef:

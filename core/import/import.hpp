@@ -16,10 +16,19 @@ namespace tactus::import {
 
 enum class SourceFormat { automatic, text, markdown, docx, odt, brf, pef, html, epub, dtbook };
 
+// A ruby (DOCX w:ruby, Word's Phonetic Guide; ODT text:ruby) always keeps
+// its base text; its guide (注音, furigana) is the transcriber's choice
+// (docs/import.md, "Ruby"): after the base as a transcriber's note, or left out.
+enum class RubyGuide { after, omit };
+
 struct ImportOptions {
     SourceFormat format = SourceFormat::automatic;
     std::string encoding;  // text and Markdown only; empty = detect
+    RubyGuide ruby = RubyGuide::after;  // DOCX and ODT
 };
+
+// "after", "omit".
+Result<RubyGuide> parse_ruby_guide(std::string_view name);
 
 // Inputs above this are refused before anything is decoded, so a mistaken
 // argument (a disk image, a video) fails fast instead of exhausting memory.

@@ -7,16 +7,17 @@
 
 #include "common/result.hpp"
 #include "document/document.hpp"
+#include "import/import.hpp"
 
 namespace tactus::import::detail {
 
 // `utf8` is already decoded and validated (see encoding.hpp).
 Result<document::Document> import_text(std::string_view utf8);
 Result<document::Document> import_markdown(std::string_view utf8);
-Result<document::Document> import_docx(std::string_view bytes);
+Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby = RubyGuide::after);
 Result<document::Document> import_brf(std::string_view bytes);
 Result<document::Document> import_pef(std::string_view bytes);
-Result<document::Document> import_odt(std::string_view bytes);
+Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby = RubyGuide::after);
 // HTML5 or XHTML (markup_import.cpp), EPUB 2/3 (epub_import.cpp), DTBook/NIMAS.
 Result<document::Document> import_html(std::string_view bytes);
 Result<document::Document> import_epub(std::string_view bytes);

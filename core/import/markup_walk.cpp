@@ -337,7 +337,7 @@ void MarkupWalk::text(std::string_view raw, const Context& ctx) {
         run += c;
     }
     if (run.empty()) return;
-    builder_.add_text(run, ctx.emphasis, ctx.language);
+    builder_.add_text(run, ctx.emphasis, document::Position::baseline, ctx.language);
     last_emphasis_ = ctx.emphasis;
     last_language_ = ctx.language;
 }
@@ -345,7 +345,7 @@ void MarkupWalk::text(std::string_view raw, const Context& ctx) {
 void MarkupWalk::pending_space(const Context& ctx) {
     // A space between two runs is emphasised only as both are ("<b>clouds</b>
     // and": not bold), and in the language of the text before it.
-    builder_.add_text(" ", static_cast<std::uint8_t>(last_emphasis_ & ctx.emphasis), last_language_);
+    builder_.add_text(" ", static_cast<std::uint8_t>(last_emphasis_ & ctx.emphasis), document::Position::baseline, last_language_);
 }
 
 Result<void> MarkupWalk::walk_children(const pugi::xml_node& node, const Context& ctx, int depth) {
@@ -468,7 +468,7 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
             const auto line_text = all.substr(0, nl);
             if (!trim(line_text).empty()) {
                 builder_.begin(ctx.kind, ctx.level, current_line_);
-                builder_.add_text(line_text, ctx.emphasis, ctx.language);
+                builder_.add_text(line_text, ctx.emphasis, document::Position::baseline, ctx.language);
                 builder_.trim_end();
                 builder_.end();
             }
@@ -729,14 +729,14 @@ void MarkupWalk::image(const pugi::xml_node& node, const Context& ctx) {
     const std::string note = "Image: " + description;
     if (ctx.inline_only || (builder_.is_open() && !block_fresh_)) {
         if (!builder_.is_open()) open(ctx);
-        builder_.add_text(std::string(block_fresh_ ? "" : " ") + "[" + note + "]", ctx.emphasis, ctx.language);
+        builder_.add_text(std::string(block_fresh_ ? "" : " ") + "[" + note + "]", ctx.emphasis, document::Position::baseline, ctx.language);
         block_fresh_ = false;
         space_pending_ = true;
         return;
     }
     close();
     builder_.begin(BlockKind::paragraph, 0, line(node));
-    builder_.add_text(note, document::emphasis_none, ctx.language);
+    builder_.add_text(note, document::emphasis_none, document::Position::baseline, ctx.language);
     builder_.end();
     block_fresh_ = true;
     space_pending_ = false;
@@ -749,7 +749,7 @@ void MarkupWalk::math(const pugi::xml_node& node, const Context& ctx) {
     if (linear.empty()) return;
     if (!builder_.is_open()) open(ctx);
     if (!block_fresh_ && space_pending_) pending_space(ctx);
-    builder_.add_text(linear, ctx.emphasis, ctx.language);
+    builder_.add_text(linear, ctx.emphasis, document::Position::baseline, ctx.language);
     last_emphasis_ = ctx.emphasis;
     last_language_ = ctx.language;
     block_fresh_ = false;

@@ -10,11 +10,22 @@
 // where the last layout happened to break, so it is not a break (like DOCX's
 // lastRenderedPageBreak). Sections are read paragraph by paragraph. The
 // package and the paragraph walk are shared with DOCX (office_package.hpp).
+// Frames (draw:frame) are read where they stand: a text box
+// (draw:text-box) is boxed material after its paragraph, an image's title
+// or description (svg:title, svg:desc) a transcriber's note (an image
+// without either is named in a warning), a formula object (draw:object) its
+// StarMath annotation, else its MathML as linear text (office_math.hpp).
+// Raised and lowered text from style:text-position; ruby (text:ruby) as for
+// DOCX. List labels follow the list style's number format (1, i, I, a, A),
+// start values (the level's text:start-value, an item's text:start-value)
+// and continued numbering (text:continue-numbering, text:continue-list).
 // Not imported: headers and footers (in styles.xml, as for DOCX), annotations,
-// frames (text boxes, images), change-tracked deletions.
+// change-tracked deletions.
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -23,7 +34,9 @@
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "import/text_position.hpp"
 #include "import/xml_util.hpp"
 
 namespace tactus::import::detail {
@@ -60,6 +73,7 @@ struct OdtStyle {
     bool break_before = false;
     bool break_after = false;
     bool quote = false;  // "Quotations" (by name or display name)
+    document::Position position = document::Position::baseline;
 };
 
 // Paragraph and text styles by name (automatic styles in content.xml, common
@@ -80,6 +94,14 @@ public:
             const auto italic = attribute(text, "font-style");
             if (italic == "italic" || italic == "oblique") style.emphasis |= emphasis_italic;
             else if (italic == "normal") style.cleared |= emphasis_italic;
+            // style:text-position: "super", "sub", or a percentage raised
+            // (positive) or lowered (negative), then the font size.
+            if (const auto pos = attribute(text, "text-position"); !pos.empty()) {
+                if (pos.starts_with("super") || (pos[0] >= '1' && pos[0] <= '9'))
+                    style.position = document::Position::superscript;
+                else if (pos.starts_with("sub") || pos.starts_with("-"))
+                    style.position = document::Position::subscript;
+            }
             const auto underline = attribute(text, "text-underline-style");
             if (!underline.empty() && underline != "none") style.emphasis |= emphasis_underline;
             else if (underline == "none") style.cleared |= emphasis_underline;
@@ -101,6 +123,13 @@ public:
             e |= (*it)->emphasis;
         }
         return e;
+    }
+    // The nearest position a style or its parents set; baseline when none.
+    [[nodiscard]] document::Position position(std::string_view name) const {
+        int depth = 0;
+        for (auto s = find(name); s && depth < 16; s = find(s->parent), ++depth)
+            if (s->position != document::Position::baseline) return s->position;
+        return document::Position::baseline;
     }
     [[nodiscard]] bool break_before(std::string_view name) const {
         const auto* s = find(name);
@@ -127,7 +156,32 @@ private:
     std::map<std::string, OdtStyle> styles_;
 };
 
-// Which list levels are numbered, per list style (text:list-style).
+// A number in a list style's format (style:num-format): "1" decimal, "i"/"I"
+// roman, "a"/"A" letters (a..z, aa..zz, as word processors count on).
+std::string format_number(std::string_view format, int n) {
+    if (n < 1 || format.empty() || format == "1") return std::to_string(n);
+    if (format == "i" || format == "I") {
+        if (n >= 4000) return std::to_string(n);
+        static constexpr std::pair<int, const char*> numerals[] = {{1000, "m"}, {900, "cm"}, {500, "d"}, {400, "cd"},
+                                                                   {100, "c"},  {90, "xc"},  {50, "l"},  {40, "xl"},
+                                                                   {10, "x"},   {9, "ix"},   {5, "v"},   {4, "iv"},
+                                                                   {1, "i"}};
+        std::string out;
+        for (const auto& [value, text] : numerals)
+            for (; n >= value; n -= value) out += text;
+        if (format == "I")
+            for (auto& c : out) c = static_cast<char>(c - 'a' + 'A');
+        return out;
+    }
+    if (format == "a" || format == "A") {
+        const char base = format == "A" ? 'A' : 'a';
+        return std::string(static_cast<std::size_t>((n - 1) / 26 + 1), static_cast<char>(base + (n - 1) % 26));
+    }
+    return std::to_string(n);
+}
+
+// List styles (text:list-style): per level, numbered (format, prefix,
+// suffix, start value) or a bullet.
 class OdtListStyles {
 public:
     void read(const pugi::xml_node& styles_parent) {
@@ -136,38 +190,54 @@ public:
             auto& levels = lists_[std::string(attribute(s, "name"))];
             for (const auto& l : s.children()) {
                 const auto name = local_name(l);
-                const auto level = std::atoi(std::string(attribute(l, "level")).c_str());
+                const auto level = whole_number(attribute(l, "level"), 0);
                 if (level < 1 || level > 10) continue;
                 if (name == "list-level-style-number")
-                    levels[level] = {std::string(attribute(l, "num-prefix")), std::string(attribute(l, "num-suffix")), false};
+                    levels[level] = {std::string(attribute(l, "num-prefix")), std::string(attribute(l, "num-suffix")),
+                                     l.attribute("style:num-format") ? std::string(attribute(l, "num-format")) : "1",
+                                     whole_number(attribute(l, "start-value"), 1), false};
                 else if (name == "list-level-style-bullet")
-                    levels[level] = {{}, {}, true};
+                    levels[level] = {{}, {}, {}, 1, true};
             }
         }
     }
-    // The label of item `number` at this level: prefix, number and suffix
-    // ("3."), the UEB bullet sign "•" for a bullet level (whatever glyph the
-    // style draws), or nothing for a level the style leaves unnumbered.
+    // The label of item `number` at this level: prefix, number in the
+    // level's format and suffix ("iii)"), the UEB bullet sign "•" for a
+    // bullet level (whatever glyph the style draws), or nothing for a level
+    // the style leaves unnumbered (num-format empty) or does not define.
     [[nodiscard]] std::string label(std::string_view style, int level, int number) const {
-        const auto it = lists_.find(std::string(style));
-        if (it == lists_.end()) return {};
-        const auto l = it->second.find(level);
-        if (l == it->second.end()) return {};
-        if (l->second.bullet) return "\u2022";
-        return l->second.prefix + std::to_string(number) + l->second.suffix;
+        const auto* l = find(style, level);
+        if (!l) return {};
+        if (l->bullet) return "\u2022";
+        if (l->format.empty()) return l->prefix + l->suffix;  // num-format="": no number
+        return l->prefix + format_number(l->format, number) + l->suffix;
+    }
+    // The number a level starts at (text:start-value, 1 by default).
+    [[nodiscard]] int start(std::string_view style, int level) const {
+        const auto* l = find(style, level);
+        return l ? l->start : 1;
     }
 
 private:
     struct Level {
-        std::string prefix, suffix;
+        std::string prefix, suffix, format;
+        int start = 1;
         bool bullet = false;
     };
+    [[nodiscard]] const Level* find(std::string_view style, int level) const {
+        const auto it = lists_.find(std::string(style));
+        if (it == lists_.end()) return nullptr;
+        const auto l = it->second.find(level);
+        return l == it->second.end() ? nullptr : &l->second;
+    }
     std::map<std::string, std::map<int, Level>> lists_;
 };
 
 class OdtReader {
 public:
-    OdtReader(const OdtStyles& styles, const OdtListStyles& lists) : styles_(styles), lists_(lists) {}
+    OdtReader(const OdtStyles& styles, const OdtListStyles& lists, const XmlPackage& package, RubyGuide ruby,
+              std::string_view content)
+        : styles_(styles), lists_(lists), package_(package), ruby_(ruby), content_(content) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
@@ -182,6 +252,10 @@ public:
                 table(c);
             else if (name == "section" || name == "index-body")
                 container(c);
+            else if (name == "frame") {  // anchored to the page
+                frame(c);
+                text_boxes();
+            }
         }
     }
 
@@ -234,20 +308,51 @@ private:
         return std::clamp(whole_number(attribute(cell, "number-columns-repeated"), 1), 1, 1024);
     }
 
-    void list(const pugi::xml_node& l, int level, std::string style) {
+    // A list's item numbers, per level; nested lists share their top
+    // list's, and a list that continues another (text:continue-numbering,
+    // text:continue-list) shares that one's.
+    struct Counters {
+        std::array<int, 12> at{};
+    };
+
+    // text:continue-numbering continues the last list of the same list
+    // style (as LibreOffice reads it); text:continue-list the list with that
+    // xml:id.
+    std::shared_ptr<Counters> counters_for(const pugi::xml_node& l, const std::string& style) {
+        std::shared_ptr<Counters> c;
+        if (const auto id = attribute(l, "continue-list"); !id.empty()) {
+            if (const auto it = lists_by_id_.find(std::string(id)); it != lists_by_id_.end()) c = it->second;
+        } else if (attribute(l, "continue-numbering") == "true") {
+            if (const auto it = last_of_style_.find(style); it != last_of_style_.end()) c = it->second;
+        }
+        if (!c) c = std::make_shared<Counters>();
+        if (const auto id = l.attribute("xml:id"); id) lists_by_id_[id.value()] = c;
+        last_of_style_[style] = c;
+        return c;
+    }
+
+    void list(const pugi::xml_node& l, int level, std::string style, std::shared_ptr<Counters> counters = {}) {
         if (const auto own = attribute(l, "style-name"); !own.empty()) style = own;
-        int number = 0;
-        if (const auto start = attribute(l, "start-value"); !start.empty()) number = std::atoi(std::string(start).c_str()) - 1;
+        if (!counters) counters = counters_for(l, style);
+        const auto at = static_cast<std::size_t>(std::clamp(level, 1, 11));
         for (const auto& item : l.children()) {
             const auto name = local_name(item);
             if (name != "list-item" && name != "list-header") continue;
-            ++number;
+            const bool has_text = child(item, "p") || child(item, "h");
+            int& number = counters->at[at];
+            if (name == "list-item" && has_text) {
+                if (const auto start = whole_number(attribute(item, "start-value"), 0); start > 0)
+                    number = start;
+                else
+                    number = number == 0 ? lists_.start(style, level) : number + 1;
+                std::fill(counters->at.begin() + static_cast<std::ptrdiff_t>(at) + 1, counters->at.end(), 0);
+            }
             bool first = true;
             for (const auto& c : item.children()) {
                 if (out_.full()) return;
                 const auto cname = local_name(c);
                 if (cname == "list") {
-                    list(c, level + 1, style);
+                    list(c, level + 1, style, counters);
                 } else if (cname == "p" || cname == "h") {
                     const bool labelled = first && name == "list-item";
                     paragraph(c, cname == "h", level, labelled ? lists_.label(style, level, number) : std::string{});
@@ -273,22 +378,96 @@ private:
         out_.begin_paragraph(kind, heading ? level : list_level ? list_level : quote ? 1 : 0, std::move(label));
         // Only text (span) styles are emphasis: a paragraph style's bold is the
         // paragraph's typeface (a heading, a quote), as for DOCX.
+        std::vector<pugi::xml_node> boxes;
+        std::swap(boxes, boxes_);
         inline_content(p, emphasis_none);
         out_.end_paragraph();
+        std::swap(boxes, boxes_);
+        text_boxes(std::move(boxes));
         if (styles_.break_after(style)) out_.page_break();
     }
 
-    void inline_content(const pugi::xml_node& node, std::uint8_t emphasis) {
+    // The text boxes met in a paragraph, after it, each a box.
+    void text_boxes(std::vector<pugi::xml_node> boxes = {}) {
+        if (boxes.empty()) std::swap(boxes, boxes_);
+        for (const auto& b : boxes) {
+            if (out_.full()) return;
+            out_.begin_box();
+            if (++box_depth_ < 16) container(b);  // a box in a box in ... is read flat
+            --box_depth_;
+            out_.end_box();
+        }
+    }
+
+    [[nodiscard]] std::string where(const pugi::xml_node& n) const {
+        return "content.xml:" +
+               position_at(content_, static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0))).to_string();
+    }
+
+    // draw:frame: a text box, a formula object or an image.
+    void frame(const pugi::xml_node& f) {
+        if (const auto box = child(f, "text-box")) {
+            boxes_.push_back(box);
+            return;
+        }
+        if (const auto object = child(f, "object"); object && formula(object)) return;
+        if (!child(f, "image") && !child(f, "object") && !child(f, "object-ole")) return;
+        std::string description = child(f, "desc").child_value();
+        if (description.find_first_not_of(" \t\r\n") == std::string::npos) description = child(f, "title").child_value();
+        if (description.find_first_not_of(" \t\r\n") == std::string::npos) {
+            out_.picture_without_description(where(f));
+            return;
+        }
+        out_.transcriber_note(collapse_white_space(description));
+    }
+
+    // A formula object (LibreOffice Math): its MathML as linear text, else
+    // its StarMath annotation. The object is inline in a flat ODT, else its
+    // own part ("./Object 1" -> "Object 1/content.xml"). False when it holds
+    // no formula.
+    bool formula(const pugi::xml_node& object) {
+        XmlPart part;
+        auto math = child(object, "math");
+        if (!math) {
+            std::string href(attribute(object, "href"));
+            if (href.starts_with("./")) href.erase(0, 2);
+            if (href.empty() || href.find("..") != std::string::npos) return false;
+            auto loaded = package_.load(href + "/content.xml", part, false);
+            if (!loaded || !*loaded) return false;
+            math = part.root();
+            if (local_name(math) != "math") return false;
+        }
+        std::vector<std::pair<std::string, document::Position>> pieces;
+        mathml_linear(math, [&](std::string_view t, document::Position p) { pieces.emplace_back(std::string(t), p); });
+        if (pieces.empty()) {
+            const std::string annotation = math.select_node(".//*[local-name()='annotation']").node().child_value();
+            if (annotation.find_first_not_of(" \t\r\n") == std::string::npos) return false;
+            pieces.emplace_back(collapse_white_space(annotation), document::Position::baseline);
+        }
+        for (const auto& [t, p] : pieces) out_.text(t, emphasis_none, p);
+        return true;
+    }
+
+    void inline_content(const pugi::xml_node& node, std::uint8_t emphasis,
+                        document::Position position = document::Position::baseline, int depth = 0) {
         for (const auto& c : node.children()) {
             if (c.type() == pugi::node_pcdata) {
-                out_.text(collapse_white_space(c.value()), emphasis);
+                out_.text(collapse_white_space(c.value()), emphasis, position);
                 continue;
             }
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
+            if (depth > 64) continue;  // a hostile nesting of spans
             if (name == "span") {
                 const auto own = styles_.emphasis(attribute(c, "style-name"));
-                inline_content(c, static_cast<std::uint8_t>(emphasis | own));
+                const auto raised = styles_.position(attribute(c, "style-name"));
+                inline_content(c, static_cast<std::uint8_t>(emphasis | own),
+                               raised == document::Position::baseline ? position : raised, depth + 1);
+            } else if (name == "frame") {
+                frame(c);
+            } else if (name == "ruby") {
+                inline_content(child(c, "ruby-base"), emphasis, position, depth + 1);
+                if (ruby_ == RubyGuide::after) out_.transcriber_note(collapse_white_space(child(c, "ruby-text").child_value()));
             } else if (name == "s") {
                 const auto n = attribute(c, "c");
                 const int count = n.empty() ? 1 : std::clamp(std::atoi(std::string(n).c_str()), 1, 1000);
@@ -299,12 +478,12 @@ private:
                 out_.text("\n", emphasis);
             } else if (name == "note") {
                 note(c);
-            } else if (name == "annotation" || name == "frame" || name == "tracked-changes" ||
+            } else if (name == "annotation" || name == "tracked-changes" ||
                        name == "soft-page-break" || name == "bookmark" || name == "bookmark-start" ||
                        name == "bookmark-end" || name == "reference-mark") {
                 continue;
             } else {
-                inline_content(c, emphasis);  // text:a (links), fields, ruby, meta
+                inline_content(c, emphasis, position, depth + 1);  // text:a, draw:a (links), fields, meta
             }
         }
     }
@@ -326,12 +505,19 @@ private:
 
     const OdtStyles& styles_;
     const OdtListStyles& lists_;
+    const XmlPackage& package_;
+    RubyGuide ruby_;
+    std::string_view content_;  // content.xml, for the places warnings name
+    std::vector<pugi::xml_node> boxes_;  // text boxes met in the paragraph being read
+    int box_depth_ = 0;
+    std::map<std::string, std::shared_ptr<Counters>> lists_by_id_;
+    std::map<std::string, std::shared_ptr<Counters>> last_of_style_;
     OfficeText out_;
 };
 
 }  // namespace
 
-Result<document::Document> import_odt(std::string_view bytes) {
+Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
     auto package = XmlPackage::open(bytes, "an OpenDocument text");
     if (!package) return std::unexpected(package.error());
     if (package->contains("mimetype")) {
@@ -356,7 +542,7 @@ Result<document::Document> import_odt(std::string_view bytes) {
     const auto text = child(child(top, "body"), "text");
     if (local_name(top) != "document-content" || !text)
         return fail("not an OpenDocument text: no <office:body>/<office:text>", "content.xml");
-    OdtReader reader(styles, lists);
+    OdtReader reader(styles, lists, *package, ruby, content_xml.bytes);
     reader.container(text);
     return reader.finish();
 }

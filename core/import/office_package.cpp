@@ -41,7 +41,8 @@ void OfficeText::begin_paragraph(document::BlockKind kind, int level, std::strin
         return;
     }
     if (table_depth_ > 0) {
-        if (cell_has_text_) builder_.add_text(" ");
+        // A cell's paragraphs stay apart: a line break between them.
+        if (cell_has_text_) builder_.add_text("\n");
         return;
     }
     kind_ = kind;
@@ -49,15 +50,52 @@ void OfficeText::begin_paragraph(document::BlockKind kind, int level, std::strin
     builder_.begin(kind_, level_, 0);
 }
 
-void OfficeText::text(std::string_view s, std::uint8_t emphasis) {
+void OfficeText::text(std::string_view s, std::uint8_t emphasis, document::Position position) {
     if (s.empty()) return;
     if (!builder_.is_open() && note_depth_ == 0 && table_depth_ == 0) builder_.begin(kind_, level_, 0);
     if (!label_.empty()) {
         builder_.add_text(label_);
         label_.clear();
     }
-    builder_.add_text(s, emphasis);
+    builder_.add_text(s, emphasis, position);
     cell_has_text_ = true;
+}
+
+void OfficeText::transcriber_note(std::string_view s) {
+    if (s.find_first_not_of(" \t\n") == std::string_view::npos) return;
+    if (!builder_.is_open() && note_depth_ == 0 && table_depth_ == 0) builder_.begin(kind_, level_, 0);
+    if (!label_.empty()) {
+        builder_.add_text(label_);
+        label_.clear();
+    }
+    builder_.add_transcriber_note(s);
+    cell_has_text_ = true;
+}
+
+void OfficeText::begin_box() {
+    if (note_depth_ > 0 || table_depth_ > 0) {
+        if (cell_has_text_) builder_.add_text(note_depth_ > 0 ? " " : "\n");
+        return;
+    }
+    builder_.begin_box();
+}
+
+void OfficeText::end_box() {
+    if (note_depth_ > 0 || table_depth_ > 0) return;
+    builder_.end_box();
+}
+
+void OfficeText::picture_without_description(std::string where) {
+    if (undescribed_pictures_++ == 0) first_undescribed_ = std::move(where);
+}
+
+Result<document::Document> OfficeText::finish() {
+    if (undescribed_pictures_ > 0)
+        builder_.warn(std::to_string(undescribed_pictures_) +
+                      (undescribed_pictures_ == 1 ? " picture has" : " pictures have") +
+                      " no description (alt text) and " + (undescribed_pictures_ == 1 ? "is" : "are") +
+                      " left out; the first is at " + first_undescribed_);
+    return builder_.finish();
 }
 
 void OfficeText::end_paragraph() {

@@ -44,13 +44,26 @@ private:
 
 // The paragraph walk of a word-processor document. A paragraph's list label
 // waits for its first text (an empty item leaves no label behind); paragraphs
-// inside a table cell run on into the cell, a space apart; a table inside a
+// inside a table cell run on into the cell, a line break apart; a table inside a
 // cell is read as the cell's text; notes are numbered 1, 2, 3 in the order of
 // their references; a page break inside a table or a note comes after it.
 class OfficeText {
 public:
     void begin_paragraph(document::BlockKind kind, int level, std::string label);
-    void text(std::string_view utf8, std::uint8_t emphasis);
+    void text(std::string_view utf8, std::uint8_t emphasis,
+              document::Position position = document::Position::baseline);
+    // Text the transcriber adds (an image's description, a ruby guide): a
+    // transcriber's note at this place in the text.
+    void transcriber_note(std::string_view utf8);
+    // A text box or frame: its paragraphs are boxed material, blocks of their
+    // own after the paragraph it is anchored in (the importer calls this once
+    // that paragraph has ended). In a table cell or a note its text runs on
+    // in the cell or note.
+    void begin_box();
+    void end_box();
+    // A picture with no description: nothing to put in braille, so it is
+    // counted and named in one warning (`where`: the first one's place).
+    void picture_without_description(std::string where);
     void end_paragraph();
     // A print page break between paragraphs, or inside one (the paragraph goes
     // on after it as a block of the same kind).
@@ -76,7 +89,7 @@ public:
     void begin_unreferenced_note();
 
     [[nodiscard]] bool full() const { return builder_.full(); }
-    Result<document::Document> finish() { return builder_.finish(); }
+    Result<document::Document> finish();
 
 private:
     void flush_page_break();
@@ -91,6 +104,8 @@ private:
     int notes_ = 0;
     int note_depth_ = 0;
     int pending_breaks_ = 0;  // page breaks met inside a table or a note
+    int undescribed_pictures_ = 0;
+    std::string first_undescribed_;
 };
 
 }  // namespace tactus::import::detail

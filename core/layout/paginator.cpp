@@ -12,6 +12,8 @@ namespace {
 constexpr document::Cell kGuideDots{0x24};  // dots 3-6: the print-page separator line
 constexpr document::Cell kTableGuideDot{0x10};   // dot 5: guide dots between table columns
 constexpr document::Cell kSeparationLine{0x12};  // dots 2-5: the line under column headings
+constexpr document::Cell kTopBoxLine{0x36};     // dots 2356: the line above boxed material
+constexpr document::Cell kBottomBoxLine{0x1B};  // dots 1245: the line below it
 constexpr int kColumnGap = 2;                    // blank cells between two columns, at least
 
 bool is_blank(const document::BrailleLine& l) { return std::ranges::all_of(l, &document::Cell::blank); }
@@ -72,6 +74,7 @@ void Paginator::add_line(document::BrailleLine line, int source_line) {
         if (stripped) note_dots_78(source_line);
     }
     trim_right(line);
+    under_box_line_ = false;
     if (body_.empty()) page_top_print_page_ = print_page_;
     body_.push_back(std::move(line));
 }
@@ -94,8 +97,9 @@ void Paginator::note_dots_78(int source_line) {
 }
 
 void Paginator::add_blank_line() {
-    // Never at the top of a page, never two in a row, never as the last body line.
-    if (body_.empty() || is_blank(body_.back())) return;
+    // Never at the top of a page, never two in a row, never as the last body
+    // line, never under a top box line.
+    if (body_.empty() || is_blank(body_.back()) || under_box_line_) return;
     if (static_cast<int>(body_.size()) + 1 >= body_capacity()) {
         close_page();
         return;
@@ -353,8 +357,37 @@ void Paginator::lay_out_listed_table() {
     }
 }
 
+// Boxed material (BANA Braille Formats 2016 §7, "Boxed Material"): a full
+// line of dots 2356 above the box and of dots 1245 below it, no blank line
+// after the top line or before the bottom one, and a blank line between two
+// boxes that follow each other.
+void Paginator::enter_box(int box) {
+    if (box == box_) return;
+    const auto w = static_cast<std::size_t>(width());
+    if (box_ != 0) {
+        while (!body_.empty() && is_blank(body_.back())) body_.pop_back();
+        add_line(document::BrailleLine(w, kBottomBoxLine), 0);
+    }
+    if (box != 0) {
+        if (box_ != 0) add_blank_line();
+        // A top box line as a page's last line would head nothing.
+        if (!body_.empty() && static_cast<int>(body_.size()) + 2 > body_capacity()) close_page();
+        add_line(document::BrailleLine(w, kTopBoxLine), 0);
+        under_box_line_ = true;
+    }
+    box_ = box;
+}
+
 void Paginator::add(const translate::TranslatedBlock& b) {
     if (b.kind != document::BlockKind::print_page_break) trailing_separators_ = 0;
+    if (b.box != box_ && (document::is_text_kind(b.kind) || b.kind == document::BlockKind::braille ||
+                          b.kind == document::BlockKind::table_row)) {
+        if (!table_.empty()) {
+            flush_table();
+            last_kind_ = document::BlockKind::table_row;
+        }
+        enter_box(b.box);
+    }
     if (document::is_table_kind(b.kind)) {
         add_table_block(b);
         return;
@@ -425,6 +458,7 @@ void Paginator::add(const translate::TranslatedBlock& b) {
 
 PagedDocument Paginator::finish() && {
     flush_table();
+    enter_box(0);
     // Print page breaks after all text start no print page: their separator
     // lines would separate nothing.
     for (; trailing_separators_ > 0 && !body_.empty(); --trailing_separators_) body_.pop_back();

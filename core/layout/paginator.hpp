@@ -59,6 +59,7 @@ private:
     void break_page();
     void close_page();
     void add_wrapped(const translate::TranslatedBlock& block, const BlockIndents& indents);
+    void enter_box(int box);
     void add_table_block(const translate::TranslatedBlock& block);
     void flush_table();
     bool lay_out_simple_table();
@@ -91,6 +92,8 @@ private:
     std::string page_top_print_page_;
     std::vector<TableRow> table_;  // the table being read, laid out at its end
     std::optional<document::BlockKind> last_kind_;  // of the last block, page breaks aside
+    int box_ = 0;
+    bool under_box_line_ = false;  // the last body line is a top box line  // the box being drawn (document::Block::box), 0 = none
     int trailing_separators_ = 0;  // separator lines at the body's end with only print page breaks after the text
 };
 

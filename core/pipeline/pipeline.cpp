@@ -80,9 +80,17 @@ layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::strin
 
 Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options) {
     if (auto ok = validate(options.layout); !ok) return std::unexpected(ok.error());
-    if (document.blocks.empty() && !options.allow_empty)
+    if (document.blocks.empty() && !options.allow_empty) {
+        // Pictures without a description, say, are not nothing: the reader
+        // learns what was there and could not be put in braille.
+        if (!document.warnings.empty()) {
+            std::string what;
+            for (const auto& w : document.warnings) what += (what.empty() ? "" : "; ") + w;
+            return fail("no text to emboss: " + what, document.source_name);
+        }
         return fail("the document is empty: there is nothing to emboss (ask for a blank page to get one)",
                     document.source_name);
+    }
     if (layout::is_ready_braille(document) && !options.reflow_braille)
         return layout::keep_braille_pages(document, options.layout);
     auto translator = translate::Translator::open(options.tables);

@@ -2,6 +2,7 @@
 #include "translate/translated_document.hpp"
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "common/utf8.hpp"
@@ -179,11 +180,96 @@ Result<void> translate_note_reference(const Translator& tr, std::u32string numbe
     return {};
 }
 
+// Spans written by a rule of their own rather than as running print text.
+bool is_marked(const document::Span& s) {
+    return s.note_reference || s.transcriber_note || s.position != document::Position::baseline;
+}
+
 // Whether print text follows a note reference with no space between: its
 // first character is not a space.
 bool follows_unspaced(std::span<const document::Span> spans, std::size_t i) {
-    return i + 1 < spans.size() && !spans[i + 1].note_reference && !spans[i + 1].text.empty() &&
+    return i + 1 < spans.size() && !is_marked(spans[i + 1]) && !spans[i + 1].text.empty() &&
            spans[i + 1].text.front() != ' ';
+}
+
+constexpr document::Cell kSuperscript{0x14};    // dots 35: UEB superscript indicator
+constexpr document::Cell kSubscript{0x22};      // dots 26: UEB subscript indicator
+constexpr document::Cell kOpenGroup{0x23};      // dots 126: UEB grouping indicators
+constexpr document::Cell kCloseGroup{0x1C};     // dots 345
+
+// UEB is the code whose note reference indicator is its superscript
+// indicator (Translator::note_reference_indicator: ⠔, after ⠰ in
+// contracted braille).
+bool is_ueb(const Translator& tr) {
+    const auto& n = tr.note_reference_indicator();
+    return !n.empty() && n.back() == kSuperscript;
+}
+
+void attach(TranslatedBlock& out, std::span<const document::Cell> cells) {
+    out.cells.insert(out.cells.end(), cells.begin(), cells.end());
+    out.breaks.resize(out.cells.size(), BreakBefore::never);
+}
+
+Result<void> translate_run(const Translator& tr, std::string_view utf8, std::uint8_t emphasis,
+                           std::size_t room, TranslatedBlock& out, BreakBefore join) {
+    auto u = utf8_to_utf32(utf8);
+    if (!u) return std::unexpected(u.error());
+    std::vector<std::uint8_t> emph(u->size(), emphasis);
+    return translate_text(tr, *u, emph, room, out, {}, join);
+}
+
+// One item after a level indicator needs no grouping (UEB §3.24: the
+// indicator applies to the next symbol, number or group): a number, or one
+// print character.
+bool is_one_item(std::u32string_view t) {
+    if (t.size() == 1) return true;
+    return !t.empty() && std::ranges::all_of(t, [](char32_t c) { return (c >= U'0' && c <= U'9') || c == U'.' || c == U','; }) &&
+           t.front() >= U'0' && t.front() <= U'9';
+}
+
+// A raised or lowered run (UEB §3.24, Rules of Unified English Braille 2013):
+// the level indicator, ⠔ superscript or ⠢ subscript (after ⠰, grade 1 mode,
+// in contracted braille, as the code's note reference indicator has it),
+// then the run; more than one item is enclosed in grouping indicators ⠣ ⠜.
+// Other codes: Tactus knows no level indicators of theirs; the run is
+// written as running text.
+Result<void> translate_positioned(const Translator& tr, const document::Span& s, std::size_t room,
+                                  TranslatedBlock& out) {
+    if (!is_ueb(tr)) return translate_run(tr, s.text, s.emphasis, room, out, BreakBefore::never);
+    auto u = utf8_to_utf32(s.text);
+    if (!u) return std::unexpected(u.error());
+    const auto first = u->find_first_not_of(U' ');
+    const auto last = u->find_last_not_of(U' ');
+    if (first == std::u32string::npos) return translate_run(tr, s.text, s.emphasis, room, out, BreakBefore::never);
+    const std::u32string_view item = std::u32string_view(*u).substr(first, last - first + 1);
+    document::BrailleLine indicator = tr.note_reference_indicator();
+    indicator.back() = s.position == document::Position::superscript ? kSuperscript : kSubscript;
+    const bool group = !is_one_item(item);
+    if (group) indicator.push_back(kOpenGroup);
+    attach(out, indicator);
+    std::vector<std::uint8_t> emph(item.size(), s.emphasis);
+    if (auto ok = translate_text(tr, item, emph, room, out, {}, BreakBefore::never); !ok) return ok;
+    if (group) attach(out, std::array{kCloseGroup});
+    return {};
+}
+
+// Transcriber's note indicators (Braille Formats 2016 §2.3, UEB §3.27):
+// ⠈⠨⠣ before the note, ⠈⠨⠜ after it. Other codes: in parentheses.
+Result<void> translate_transcriber_note(const Translator& tr, const document::Span& s, std::size_t room,
+                                        TranslatedBlock& out) {
+    const bool ueb = is_ueb(tr);
+    const auto open_at = out.cells.size();
+    if (ueb) {
+        attach(out, std::array{document::Cell{0x08}, document::Cell{0x28}, kOpenGroup});
+        if (auto ok = translate_run(tr, s.text, s.emphasis, room, out, BreakBefore::never); !ok) return ok;
+        attach(out, std::array{document::Cell{0x08}, document::Cell{0x28}, kCloseGroup});
+    } else if (auto ok = translate_run(tr, "(" + s.text + ")", s.emphasis, room, out, BreakBefore::never); !ok) {
+        return ok;
+    }
+    // The note starts a word of its own when a space comes before it.
+    if (open_at > 0 && open_at < out.breaks.size() && out.cells[open_at - 1].blank())
+        out.breaks[open_at] = BreakBefore::allowed;
+    return {};
 }
 
 // The spans of a text block: runs of print text translated as one text each,
@@ -197,6 +283,13 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
     // as 1 and a sign when the two were translated apart).
     std::u32string number;
     for (std::size_t i = 0; i < spans.size();) {
+        if (spans[i].transcriber_note || (spans[i].position != document::Position::baseline && !spans[i].note_reference)) {
+            auto ok = spans[i].transcriber_note ? translate_transcriber_note(tr, spans[i], room, out)
+                                                : translate_positioned(tr, spans[i], room, out);
+            if (!ok) return ok;
+            ++i;
+            continue;
+        }
         if (spans[i].note_reference) {
             auto u = utf8_to_utf32(spans[i].text);
             if (!u) return std::unexpected(u.error());
@@ -207,7 +300,7 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
             continue;
         }
         std::size_t j = i;
-        while (j < spans.size() && !spans[j].note_reference) ++j;
+        while (j < spans.size() && !is_marked(spans[j])) ++j;
         std::u32string text;
         std::vector<std::uint8_t> emph;
         if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
@@ -259,6 +352,7 @@ Result<TranslatedBlock> translate_block(const document::Block& block, const Tran
     tb.level = block.level;
     tb.source_line = block.source_line;
     tb.span = std::max(1, block.span);
+    tb.box = block.box;
     const auto where = block.source_line > 0 ? "line " + std::to_string(block.source_line)
                                              : std::string{};
     switch (block.kind) {

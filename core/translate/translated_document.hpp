@@ -22,6 +22,7 @@ struct TranslatedBlock {
     document::BrailleLine label;               // print_page_break: the page number in braille
     int source_line = 0;
     int span = 1;  // table_cell: the columns it covers (document::Block::span)
+    int box = 0;   // document::Block::box: the box it is in, 0 = none
 };
 
 // Translates one block. Long paragraphs are cut at spaces into pieces liblouis
