@@ -33,8 +33,6 @@ public:
     void note_line(int source_line);
     // Appends text to the open block; opens a paragraph if none is open.
     void add_text(std::string_view utf8, std::uint8_t emphasis = document::emphasis_none);
-    // Drops spaces and tabs at the end of the open block's text.
-    void trim_end();
     // Ends the open block; it is kept only if it contains visible text.
     void end();
 
