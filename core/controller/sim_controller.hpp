@@ -152,23 +152,32 @@ public:
     [[nodiscard]] bool configured() const { return configured_; }
 
 private:
-    void on_frame(const encode::Frame& f, double now);
+    // --- the session layer, both protocols (sim_controller.cpp)
     void reply(encode::FrameType type, std::span<const std::uint8_t> payload);
     void ack();
     void nak(encode::NakReason why);
+    // A wedged receive path answers NAK out of order; false then.
+    [[nodiscard]] bool receiving(double now);
+    // No session, a duplicate, a gap: answered here; true for the frame expected next.
+    [[nodiscard]] bool in_sequence(const encode::Frame& f);
+    void boot(double now, bool keep_ram);
+    void power_on_ram();
+    void set_waiting(bool waiting, double now);
+    [[nodiscard]] double ticks_to_s(std::uint64_t ticks) const;
+    [[nodiscard]] encode::AckInfo ack_info() const;
+    [[nodiscard]] std::size_t ring_free() const;
+
+    // --- protocol 2 (sim_controller_v2.cpp): its frames, reset and executor
+    void v2_frame(const encode::Frame& f, double now);
+    void v2_boot(double now, bool keep_ram);
+    void v2_advance(double t);
     void immediate(const encode::Frame& f, double now);
     bool start_next_op(double now);
     void finish_op();
     void interrupt_op(double now);
     void stop_job(std::uint8_t fault_bits, double now);
-    void boot(double now, bool keep_ram);
-    void power_on_ram();
     void maybe_report_space();
-    void set_waiting(bool waiting, double now);
-    [[nodiscard]] double ticks_to_s(std::uint64_t ticks) const;
     [[nodiscard]] std::optional<double> keepalive_deadline() const;
-    [[nodiscard]] encode::AckInfo ack_info() const;
-    [[nodiscard]] std::size_t ring_free() const;
 
     static constexpr double kIdleGap = 0.1;  // s; one 86-byte frame at 9600 baud
     SimOptions options_;
@@ -236,9 +245,9 @@ private:
     double starved_s_ = 0;
     std::vector<Wait> waits_;
 
-    // --- protocol 3 (sim_controller_v3.cpp): the reference firmware's link
-    // and executor (firmware/src/link.c, exec.c), in the same RAM / register
-    // split as above.
+    // --- protocol 3: the reference firmware's link (firmware/src/link.c,
+    // sim_controller_v3.cpp) and executor (exec.c, sim_controller_v3_exec.cpp),
+    // in the same RAM / register split as above.
     [[nodiscard]] bool v3_mode() const { return options_.firmware.has_value(); }
     void v3_frame(const encode::Frame& f, double now);
     void v3_hello(const encode::Frame& f, double now);

@@ -60,24 +60,6 @@ bool is_known_type(std::uint8_t t) {
     return (t >= 0x01 && t <= 0x08) || (t >= 0x81 && t <= 0x84);
 }
 
-const char* type_name(FrameType t) {
-    switch (t) {
-        case FrameType::hello: return "HELLO";
-        case FrameType::configure: return "CONFIGURE";
-        case FrameType::data: return "DATA";
-        case FrameType::pause: return "PAUSE";
-        case FrameType::resume: return "RESUME";
-        case FrameType::abort: return "ABORT";
-        case FrameType::status: return "STATUS";
-        case FrameType::keepalive: return "KEEPALIVE";
-        case FrameType::hello_reply: return "HELLO_REPLY";
-        case FrameType::ack: return "ACK";
-        case FrameType::nak: return "NAK";
-        case FrameType::status_reply: return "STATUS_REPLY";
-    }
-    return "?";
-}
-
 const char* state_name(ControllerState s) {
     switch (s) {
         case ControllerState::idle: return "idle";

@@ -39,7 +39,6 @@ enum class FrameType : std::uint8_t {
     status_reply = 0x84,
 };
 [[nodiscard]] bool is_known_type(std::uint8_t type);
-[[nodiscard]] const char* type_name(FrameType t);
 
 enum class ControllerState : std::uint8_t {
     idle = 0,     // no job, or job finished

@@ -78,15 +78,6 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, doc
         spans.push_back(document::Span{std::string(utf8), emphasis, false, position, false, std::string(language)});
 }
 
-void DocumentBuilder::trim_end() {
-    if (!open_ || current_.spans.empty() || current_.spans.back().note_reference ||
-        current_.spans.back().transcriber_note)
-        return;
-    auto& t = current_.spans.back().text;
-    t.erase(std::min(t.size(), t.find_last_not_of(" \t\v") + 1));
-    if (t.empty()) current_.spans.pop_back();
-}
-
 void DocumentBuilder::end() {
     if (!open_ || in_note_) return;  // end_note() ends a note
     open_ = false;

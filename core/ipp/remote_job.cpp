@@ -124,12 +124,6 @@ Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
     return id;
 }
 
-Result<RemoteJobStatus> job_status(const QueueUri& queue, int job_id) {
-    auto http = detail::connect(queue.host, queue.port, queue.tls);
-    if (!http) return std::unexpected(http.error());
-    return status_on(http->get(), queue, job_id);
-}
-
 Result<void> cancel_job(const QueueUri& queue, int job_id) {
     auto http = detail::connect(queue.host, queue.port, queue.tls);
     if (!http) return std::unexpected(http.error());

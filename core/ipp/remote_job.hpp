@@ -50,7 +50,6 @@ struct RemoteJobRequest {
 
 // Print-Job: the job's id on the server.
 Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request);
-Result<RemoteJobStatus> job_status(const QueueUri& queue, int job_id);
 Result<void> cancel_job(const QueueUri& queue, int job_id);
 
 // Polls the job every `poll` until it ends, calling `on_change` with each

@@ -55,7 +55,7 @@ void campaign(double rate, bool v3) {
     // size follows the line), the others end cleanly at the give-up. At 2e-2
     // a quarter of the v3 runs (a third of v2's) once failed at the session's
     // open, 3 s into a line that garbled the controller's answers
-    // (link_impl.hpp silent_too_long): 151 of 200 v3 runs and 138 of
+    // (link_session.cpp silent_too_long): 151 of 200 v3 runs and 138 of
     // v2's completed then, 198 and 182 now.
     if (rate <= 1e-3)
         EXPECT_EQ(t.completed, kSeeds);
