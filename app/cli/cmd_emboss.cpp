@@ -74,12 +74,17 @@ std::optional<plan::PlanFile> saved_plan(const EmbossArgs& a) {
 // so it speaks protocol 3 as the firmware built from the profile does; a
 // saved plan's own (none for a legacy protocol-2 plan); none (protocol 2) for
 // `sim?protocol=2`, and, with a one-line notice, for a profile the firmware
-// cannot run.
+// cannot run. With a saved plan it speaks the plan's protocol (a legacy plan:
+// 2), unless `protocol=` says otherwise.
 std::optional<machine::FirmwareTables> sim_tables(const EmbossArgs& a, const std::optional<plan::PlanFile>& saved) {
     auto spec = transport::parse_device(a.device);
     if (!spec || spec->scheme != "sim") return std::nullopt;
     auto settings = transport::sim_settings(*spec);
     if (!settings || settings->protocol == 2) return std::nullopt;
+    // The simulator follows a saved plan's protocol unless told one.
+    if (saved && settings->protocol == 3 && !saved->firmware)
+        throw CommandFailed(exit_bad_input, "emboss: the plan was made for protocol 2 (legacy), but the embosser speaks "
+                                            "protocol 3: plan the document again without --protocol 2");
     if (saved) return saved->firmware;
     if (!a.firmware_tables.empty()) return require(profile::load_firmware_tables(a.firmware_tables));
     auto t = profile::make_firmware_tables(load_profile_arg(a.profile));

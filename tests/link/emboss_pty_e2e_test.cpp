@@ -382,6 +382,7 @@ TEST(SavedPlan, EmbossesExactlyLikeItsDocumentOnTheSimulator) {
 
 // Protocol 2 is legacy, planned only on request, and a plan is never sent to
 // an embosser speaking the other protocol: the refusal says how to plan again.
+// (The built-in simulator, which can speak both, speaks the plan's.)
 TEST(SavedPlan, ALegacyPlanIsMadeOnRequestAndRefusedByAProtocol3Embosser) {
     const std::string note = std::string(TACTUS_RESOURCES_DIR) + "/samples/firmware-note.md";
     const auto dir = fs::temp_directory_path() / ("tactus-legacy-plan-" + std::to_string(getpid()));
@@ -390,15 +391,18 @@ TEST(SavedPlan, ALegacyPlanIsMadeOnRequestAndRefusedByAProtocol3Embosser) {
     ASSERT_EQ(v2.exit_code, 0) << v2.err;
     EXPECT_EQ(nlohmann::json::parse(v2.out)["protocol"], 2);
     std::ofstream(dir / "v2.json") << v2.out;
-    auto r = test::run_captured({TACTUS_CLI, "emboss", "--device", "sim?speed=max", "--plan", (dir / "v2.json").string()});
+    auto r = test::run_captured(
+        {TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=3", "--plan", (dir / "v2.json").string()});
     EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
     EXPECT_NE(r.err.find("the plan was made for protocol 2 (legacy), but the embosser speaks protocol 3"),
               std::string::npos)
         << r.err;
-    r = test::run_captured(
-        {TACTUS_CLI, "emboss", "--device", "sim?speed=max&protocol=2", "--plan", (dir / "v2.json").string()});
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    EXPECT_NE(r.out.find("(protocol 2)"), std::string::npos) << r.out;
+    // The built-in simulator follows the saved plan's protocol when not told one.
+    for (const char* device : {"sim?speed=max", "sim?speed=max&protocol=2"}) {
+        r = test::run_captured({TACTUS_CLI, "emboss", "--device", device, "--plan", (dir / "v2.json").string()});
+        EXPECT_EQ(r.exit_code, 0) << device << r.out << r.err;
+        EXPECT_NE(r.out.find("(protocol 2)"), std::string::npos) << device << r.out;
+    }
     // A protocol-3 plan on a protocol-2 embosser: refused the other way round.
     const auto v3 = test::run_captured({TACTUS_CLI, "plan", "--json", note});
     std::ofstream(dir / "v3.json") << v3.out;
