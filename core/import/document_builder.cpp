@@ -39,6 +39,15 @@ void DocumentBuilder::note_line(int source_line) {
     if (open_ && current_.source_line == 0) current_.source_line = source_line;
 }
 
+void DocumentBuilder::trim_end() {
+    if (!open_ || current_.spans.empty() || current_.spans.back().note_reference ||
+        current_.spans.back().transcriber_note)
+        return;
+    auto& t = current_.spans.back().text;
+    t.erase(std::min(t.size(), t.find_last_not_of(" \t\v") + 1));
+    if (t.empty()) current_.spans.pop_back();
+}
+
 void DocumentBuilder::add_transcriber_note(std::string_view utf8) {
     if (utf8.empty()) return;
     if (!open_) begin(document::BlockKind::paragraph, 0, 0);

@@ -45,6 +45,8 @@ public:
     // What the importer left out on purpose: one line per kind in
     // Document::warnings.
     void warn(std::string line) { warnings_.push_back(std::move(line)); }
+    // Drops spaces and tabs at the end of the open block's text.
+    void trim_end();
     // Ends the open block; it is kept only if it contains visible text.
     void end();
 
