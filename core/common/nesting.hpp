@@ -20,4 +20,10 @@ inline Error too_deeply_nested(std::string what, std::string where) {
                  std::move(where)};
 }
 
+// An error made by too_deeply_nested: a file refused for its depth is not
+// read again by a more lenient parser (it would fail deeper, and say less).
+inline bool is_too_deeply_nested(const Error& e) {
+    return e.message.find(" levels deep: refused, as no document needs that") != std::string::npos;
+}
+
 }  // namespace tactus

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <vector>
 
+#include "common/nesting.hpp"
 #include "import/markup_walk.hpp"
 #include "import/xml_util.hpp"
 
@@ -155,8 +156,10 @@ bool has_html_entity(std::string_view text) {
 }  // namespace
 
 Result<std::unique_ptr<MarkupDocument>> parse_xhtml_or_html(std::string text, std::string_view part) {
-    if (!has_html_entity(text))
-        if (auto xml = parse_xml_markup(text, part)) return xml;
+    if (!has_html_entity(text)) {
+        auto xml = parse_xml_markup(text, part);
+        if (xml || is_too_deeply_nested(xml.error())) return xml;
+    }
     return parse_html_markup(std::move(text), part);
 }
 

@@ -97,7 +97,10 @@ TEST(HtmlImport, NestingDeeperThanTheLimitIsAnErrorNamingWhere) {
     xhtml += "</body></html>";
     const auto x = import::import_bytes(xhtml, "deep.xhtml");
     ASSERT_FALSE(x);
-    EXPECT_THAT(x.error().to_string(), ::testing::HasSubstr("deep.xhtml:1: elements nested more than"));
+    // Refused by the XML parser's depth limit (common/nesting.hpp), with its
+    // line, and not read again as HTML.
+    EXPECT_THAT(x.error().to_string(), ::testing::StartsWith("deep.xhtml:1"));
+    EXPECT_THAT(x.error().message, ::testing::HasSubstr("nested more than"));
 }
 
 TEST(HtmlImport, AMillionOpenTagsAreRefusedBeforeParsing) {

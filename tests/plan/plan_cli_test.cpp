@@ -53,9 +53,11 @@ TEST(PlanCli, ProfileDefaultHasTheGeometryObject) {
 TEST(PlanCli, PlanJsonForASmallDocument) {
     const auto file = temp("doc.txt");
     ASSERT_TRUE(tactus::write_file_atomic(file, "abc\n").has_value());
-    const auto r = run("plan --json " + file.string());
+    // The legacy protocol's plan: its moves are tuned step schedules.
+    const auto r = run("plan --json --protocol 2 " + file.string());
     ASSERT_EQ(r.code, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("protocol"), 2);
     ASSERT_EQ(j.at("sheets").size(), 1u);
     EXPECT_EQ(j["sheets"][0]["index"], 1);
     const auto& passes = j["sheets"][0]["passes"];
@@ -132,10 +134,12 @@ TEST(PlanCli, WarnsAboutFrontAndBackDotsThatCrushEachOther) {
 TEST(PlanCli, FirmwareTablesPlanTheFirmwaresMoves) {
     const auto file = temp("fw-doc.txt");
     ASSERT_TRUE(tactus::write_file_atomic(file, "abc def\nghi\n").has_value());
-    const auto v2 = run("plan --json " + file.string());
+    const auto v2 = run("plan --json --protocol 2 " + file.string());
     const auto v3 = run("plan --json --firmware-tables " + std::string(TACTUS_FIRMWARE_TABLES) + " " + file.string());
     ASSERT_EQ(v2.code, 0) << v2.out;
     ASSERT_EQ(v3.code, 0) << v3.out;
+    // Protocol 3 is the default: the tables the profile makes are the build's.
+    EXPECT_EQ(run("plan --json " + file.string()).out, v3.out);
     const auto j2 = nlohmann::json::parse(v2.out), j3 = nlohmann::json::parse(v3.out);
     EXPECT_EQ(j3.at("protocol"), 3);
     EXPECT_EQ(j3["totals"]["strikes"], j2["totals"]["strikes"]);
