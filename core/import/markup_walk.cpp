@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// One walk for HTML, EPUB's content documents and DTBook (docs/import.md,
+// "HTML, EPUB and DTBook"). Over 700 lines because the three vocabularies map
+// onto one set of block rules, kept together so a rule (notes, page breaks,
+// lists) is written once for all three.
 #include "import/markup_walk.hpp"
 
 #include <algorithm>

@@ -1,4 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The spool's store: every statement on the jobs, printers and events tables.
+// Over 700 lines because each operator action and runner step is one SQL
+// transaction written next to the others it must agree with (the job state
+// machine in job_state.cpp decides; this file records). Splitting it by
+// action (submission, operator requests, runner progress) is a move still to do.
 #include "spool/spool.hpp"
 
 #include <sqlite3.h>
