@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Set up, build and run every test: the default build (GCC, warnings are
-# errors, every test), an AddressSanitizer/UBSan build of core, the CLI and
-# their tests, and the fuzz targets (clang, libFuzzer: only they are built
-# there, each run for its share of a bounded time). Each stage's wall time is printed as it ends and in a table at the
-# end (bench/ci/RESULTS.md keeps the figures of cold runs).
+# errors, every test), then one clang build with AddressSanitizer and UBSan of
+# core, the CLI, their tests and the libFuzzer targets (core is compiled once
+# for both: its tests run under the sanitizers, then each fuzz target runs for
+# its share of a bounded time). Each stage's wall time is printed as it ends
+# and in a table at the end (bench/ci/RESULTS.md keeps the figures of cold runs).
 # SPDX-License-Identifier: GPL-3.0-or-later
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -55,20 +56,16 @@ cmake --build build/default -j"$jobs"
 stage "default tests"
 ctest --preset default -j"$jobs"
 
-stage "AddressSanitizer + UBSan build (core, the CLI, their tests)"
-cmake --preset asan >/dev/null
-cmake --build build/asan -j"$jobs"
+stage "AddressSanitizer + UBSan build (clang: core, the CLI, their tests, the fuzz targets)"
+cmake --preset sanitize >/dev/null
+cmake --build build/sanitize -j"$jobs"
 
 stage "AddressSanitizer + UBSan tests"
-ctest --preset asan -j"$jobs"
-
-stage "fuzz build (clang, libFuzzer: core and the fuzz targets)"
-cmake --preset fuzz >/dev/null
-cmake --build build/fuzz -j"$jobs" --target fuzz_targets
+ctest --preset sanitize -j"$jobs"
 
 stage "fuzz targets (libFuzzer, ${fuzz_total} s in all)"
 targets=()
-for target in build/fuzz/tests/fuzz/fuzz_*; do
+for target in build/sanitize/tests/fuzz/fuzz_*; do
   [ -x "$target" ] && targets+=("$target")
 done
 parallel=$(( jobs >= 2 ? 2 : 1 ))
