@@ -237,7 +237,7 @@ std::string random_english(std::mt19937& rng) {
         if (kind == 0) {  // a number
             const int digits = std::uniform_int_distribution<int>(1, 4)(rng);
             for (int d = 0; d < digits; ++d) out += static_cast<char>('0' + std::uniform_int_distribution<int>(0, 9)(rng));
-            if (out.size() >= 2 && out[out.size() - 1 - static_cast<std::size_t>(digits)] == '-')
+            if (out.size() > static_cast<std::size_t>(digits) && out[out.size() - 1 - static_cast<std::size_t>(digits)] == '-')
                 out[out.size() - 1 - static_cast<std::size_t>(digits)] = ' ';  // "-5" is a minus sign
             continue;
         }
