@@ -39,6 +39,7 @@
 #include "spool/printer_setup.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner.hpp"
+#include "spool/strike_check.hpp"
 #include "spool/runner_token.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
@@ -115,10 +116,7 @@ QString with_speed(const QString& device, const QString& speed) {
     if (!spec) return device;
     if (speed.isEmpty()) spec->options.erase("speed");
     else spec->options["speed"] = speed.toStdString();
-    QString out = qs(spec->scheme) + (spec->path.empty() ? QString() : QStringLiteral(":") + qs(spec->path));
-    QStringList options;
-    for (const auto& [k, v] : spec->options) options << qs(k) + QLatin1Char('=') + qs(v);
-    return options.isEmpty() ? out : out + QLatin1Char('?') + options.join(QLatin1Char('&'));
+    return qs(transport::format_device(*spec));
 }
 
 // Opens the printer's device: the app's one built-in simulator for any `sim`
@@ -141,30 +139,17 @@ spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, li
     };
 }
 
-// The strikes of a job's last stream as the built-in simulator logged them,
-// against the plan (planned again with the printer's profile, as the runner did).
-// `firmware`: the tables the simulator ran the job with (protocol 3).
-QString strike_check(const std::string& document, const std::string& profile_json, const spool::JobRecord& job,
-                     const std::vector<controller::LoggedStrike>& logged,
-                     const std::optional<machine::FirmwareTables>& firmware) {
-    auto doc = spool::from_snapshot(document);
-    auto prof = profile::parse_profile(profile_json);
-    if (!doc || !prof) return {};
-    auto plan = spool::plan_copies(*doc, *prof, job.copies, firmware ? &*firmware : nullptr);
-    if (!plan || !job.link_job) return {};
-    const auto from = std::max<std::size_t>(job.run_start_sheet, 1);
-    std::vector<controller::LoggedStrike> expected;
-    for (const auto& s : controller::planned_strikes(*plan))
-        if (s.sheet >= from) expected.push_back(s);
-    std::vector<controller::LoggedStrike> got;
-    for (const auto& s : logged)
-        if (s.job_id == *job.link_job) got.push_back(s);
-    if (got != expected)
+// What the app says of a finished job on its built-in simulator: the
+// strikes the simulated controller logged against the plan (core's check).
+QString strike_check_text(const Result<spool::StrikeCheck>& check) {
+    if (!check) return QObject::tr("the strikes could not be checked: %1").arg(qs(check.error().to_string()));
+    if (!check->agrees)
         return QObject::tr("%1 strikes embossed but %2 planned: the simulator disagrees with the plan")
-            .arg(got.size()).arg(expected.size());
-    return from > 1 ? QObject::tr("all %1 strikes of sheets %2 to %3 checked against the plan")
-                          .arg(got.size()).arg(from).arg(job.total_sheets())
-                    : QObject::tr("all %1 strikes checked against the plan").arg(got.size());
+            .arg(check->embossed).arg(check->planned);
+    return check->first_sheet > 1
+               ? QObject::tr("all %1 strikes of sheets %2 to %3 checked against the plan")
+                     .arg(check->embossed).arg(check->first_sheet).arg(check->last_sheet)
+               : QObject::tr("all %1 strikes checked against the plan").arg(check->embossed);
 }
 
 }  // namespace
@@ -994,7 +979,8 @@ void PrinterPanel::check_strikes(const spool::JobRecord& j) {
     });
     watcher->setFuture(QtConcurrent::run(
         [document = *doc, profile = printer->profile_json, j, strikes = sim_->strikes(), fw = sim_->firmware()] {
-            return strike_check(document, profile, j, strikes, fw);
+            return strike_check_text(
+                spool::check_strikes(j, document, profile, strikes, fw ? &*fw : nullptr));
         }));
 }
 
