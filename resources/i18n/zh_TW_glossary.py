@@ -170,6 +170,7 @@ T = {
     "Link: %1 frames sent, %2 resent, %3 bytes, %4 NAKs, %5 timeouts, %6 reconnects, %7 restarts":
         "連線：已傳送 %1 個訊框，重送 %2 個，%3 位元組，%4 次 NAK，%5 次逾時，%6 次重新連線，%7 次重新啟動",
     "all %1 strikes checked against the plan": "全部 %1 個擊點均已與規劃核對",
+    "the strikes could not be checked: %1": "無法核對擊點：%1",
     "%1 strikes embossed but %2 planned: the simulator disagrees with the plan": "已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符",
     "Embossed %1": "已列印 %1", "%1 cancelled; resume from sheet %2": "%1 已取消；可從第 %2 張繼續",
     "%1 stopped at sheet %2: %3. The queue is kept; fix the problem, then resume from sheet %2.":
