@@ -145,5 +145,65 @@ TEST(SvgImport, ShapesBecomeTheirOutlines) {
     EXPECT_NEAR(length(flatten(d->shapes[3].subpaths, 1e-5)[0]), 20 + std::sqrt(200.0), 1e-9);
 }
 
+
+// The W3C test suite's quadratic curves: the smooth (T) curves pass through
+// the marked points, their control points the reflections SVG defines.
+TEST(SvgImport, W3cQuadraticCurvesPassThroughTheirMarkers) {
+    const auto d = load_svg(std::string(TACTUS_TEST_DATA) + "/graphics/w3c/paths-data-02-t.svg");
+    ASSERT_TRUE(d) << d.error().to_string();
+    const double px = 25.4 / 96;  // width="100%": the viewBox's 480 x 360 CSS pixels
+    EXPECT_NEAR(d->width_mm, 480 * px, 1e-9);
+    std::vector<const Shape*> paths;
+    for (const auto& s : d->shapes)
+        if (s.element == "path") paths.push_back(&s);
+    ASSERT_EQ(paths.size(), 7U);
+    // "M240 296q25-100 47 0t47 0t47 0t47 0t47 0z": ends on the markers 47 apart.
+    const auto& sine = paths[5]->subpaths.at(0).segments;
+    ASSERT_EQ(sine.size(), 6U);  // five curves and the closing line
+    for (std::size_t i = 0; i < 5; ++i) {
+        EXPECT_NEAR(sine[i].p[2].x / px, 287 + 47.0 * static_cast<double>(i), 1e-9);
+        EXPECT_NEAR(sine[i].p[2].y / px, 296, 1e-9);
+    }
+    // The first t's control point is q's (265,196) reflected about (287,296): (309,396).
+    EXPECT_NEAR(sine[1].p[0].x / px, 287 + 2.0 / 3 * 22, 1e-9);
+    EXPECT_NEAR(sine[1].p[0].y / px, 296 + 2.0 / 3 * 100, 1e-9);
+    // Two subpaths where the data has two movetos; the relative m after z starts from the closed subpath's start.
+    EXPECT_EQ(paths[1]->subpaths.size(), 2U);
+    EXPECT_NEAR(paths[1]->subpaths[1].start.x / px, 442, 1e-9);
+    EXPECT_NEAR(paths[1]->subpaths[1].start.y / px, 130, 1e-9);
+    // Its test-description elements are named, not silently skipped.
+    ASSERT_FALSE(d->warnings.empty());
+    EXPECT_NE(d->warnings[0].find("<SVGTestCase> is not embossed"), std::string::npos) << d->warnings[0];
+    EXPECT_EQ(d->labels.size(), 9U);
+}
+
+// The W3C test suite's nested transforms: each rectangle's far corner lands in its marker square.
+TEST(SvgImport, W3cNestedTransformsLandOnTheirMarkers) {
+    const auto d = load_svg(std::string(TACTUS_TEST_DATA) + "/graphics/w3c/coords-trans-02-t.svg");
+    ASSERT_TRUE(d) << d.error().to_string();
+    ASSERT_EQ(d->shapes.size(), 11U);  // four bars, six markers, the frame
+    const auto corners = [](const Shape& s) {
+        std::vector<Point> v{s.subpaths.at(0).start};
+        for (const auto& seg : s.subpaths[0].segments) v.push_back(seg.p[2]);
+        return v;
+    };
+    const auto inside = [&](Point p, const Shape& marker) {
+        double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
+        for (const auto& c : corners(marker)) {
+            x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
+        }
+        return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+    };
+    // Bars 0-3 (blue, red; then blue, red rotated -90°), markers 4-9 (black, blue, red twice).
+    const std::pair<std::size_t, std::size_t> bar_marker[] = {{0, 5}, {1, 6}, {2, 8}, {3, 9}};
+    for (const auto& [bar, marker] : bar_marker) {
+        std::size_t hits = 0;
+        for (const auto& c : corners(d->shapes[bar])) hits += inside(c, d->shapes[marker]) ? 1U : 0U;
+        EXPECT_GE(hits, 1U) << "bar " << bar << " misses its marker " << marker;
+        std::size_t origin = 0;
+        for (const auto& c : corners(d->shapes[bar])) origin += inside(c, d->shapes[bar < 2 ? 4 : 7]) ? 1U : 0U;
+        EXPECT_GE(origin, 1U) << "bar " << bar << " does not start on its black marker";
+    }
+}
 }  // namespace
 }  // namespace tactus::graphic
