@@ -3,7 +3,7 @@
 // for protocol 3 (the reference firmware's tables and grid) and protocol 2
 // (every motor step addressable). Figures per drawing: dots, passes, the
 // embossing time the plan takes against its lower bound (time-optimal
-// jerk-limited moves with the same limits, dwell and feed), and the CPU time
+// jerk-limited moves with the same limits, dwell and feed), and the wall time
 // of reading, placing and planning.
 // Usage: bench_graphic FIRMWARE_TABLES.json DRAWING.svg...
 #include <chrono>
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     const auto table = translate::Translator::open(translate::kDefaultTable);
     if (!table) return 1;
     std::printf("%-28s %-9s %6s %6s %10s %10s %7s %9s\n", "drawing", "protocol", "dots", "passes", "plan s",
-                "bound s", "ratio", "cpu ms");
+                "bound s", "ratio", "wall ms");
     for (int i = 2; i < argc; ++i) {
         for (const bool v3 : {true, false}) {
             const auto t0 = Clock::now();
