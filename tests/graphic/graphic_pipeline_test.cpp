@@ -15,6 +15,8 @@
 #include "controller/sim_transport.hpp"
 #include "graphic/graphic_page.hpp"
 #include "graphic/svg_import.hpp"
+#include "import/import.hpp"
+#include "spool/snapshot.hpp"
 #include "link/link.hpp"
 #include "plan/planner.hpp"
 #include "profile/controller_config.hpp"
@@ -174,5 +176,36 @@ TEST(GraphicPipeline, TheCliLaysOutPlansAndEmbossesAnSvg) {
     EXPECT_NE(bad.out.find("broken.svg:line 4: attribute d"), std::string::npos) << bad.out;
 }
 
+
+// A queued job keeps the graphic: the spool's snapshot of the pages holds its dots.
+TEST(GraphicPipeline, TheSpoolSnapshotKeepsTheGraphicsDots) {
+    const auto g = shapes_layout(profile::default_profile());
+    const auto text = spool::to_snapshot(g.document);
+    const auto back = spool::from_snapshot(text);
+    ASSERT_TRUE(back) << back.error().to_string();
+    ASSERT_EQ(back->pages.size(), g.document.pages.size());
+    EXPECT_EQ(back->pages[0].graphic, g.document.pages[0].graphic);
+    // A text page's snapshot has no graphic field at all (snapshots of text are as before).
+    layout::PagedDocument plain;
+    plain.pages.emplace_back();
+    EXPECT_EQ(spool::to_snapshot(plain).find("graphic"), std::string::npos);
+    const auto bad = spool::from_snapshot(R"({"format":"tactus-paged-1","geometry":{"cells_per_line":27,)"
+                                          R"("lines_per_page":24,"interpoint":true,"eight_dot":false},)"
+                                          R"("pages":[{"number":1,"print_page":"","lines":[],"graphic":[[1]]}]})");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().where, "page 1");
+}
+
+// Where a document's text is imported (the app, a queued file), an SVG is
+// refused with the reason, not read as text.
+TEST(GraphicPipeline, TheTextImporterRefusesAnSvg) {
+    const auto r = import::import_file(kShapes, {});
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().kind, ErrorKind::input);
+    EXPECT_NE(r.error().message.find("SVG drawing"), std::string::npos) << r.error().message;
+    const auto by_content = import::import_bytes("<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"/>",
+                                                 "drawing.xml", {});
+    EXPECT_FALSE(by_content);
+}
 }  // namespace
 }  // namespace tactus
