@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 namespace tactus::graphic {
@@ -11,6 +12,13 @@ namespace tactus::graphic {
 namespace {
 
 double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// "1.25", not "1.250000".
+std::string mm(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
 
 // The dots placed so far, in 2 mm buckets: "is any dot of these kinds within r?" in O(1).
 class DotIndex {
@@ -311,8 +319,9 @@ Result<GraphicDots> place_dots(const Drawing& drawing, const Area& area, const D
     if (outside > 0)
         g.warnings.push_back(std::to_string(outside) + " line dots fall outside the page area and are left out");
     if (crowded > 0)
-        g.warnings.push_back(std::to_string(crowded) + " line dots where lines meet or bend sharply are left out: "
-                             "they would fall closer than " + std::to_string(o.min_distance_mm) + " mm to another dot");
+        g.warnings.push_back(std::to_string(crowded) + " line dots are left out where lines meet, bend sharply or "
+                             "round onto the grid together: each would fall closer than " + mm(o.min_distance_mm) +
+                             " mm to another dot");
     return g;
 }
 
