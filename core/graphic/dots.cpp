@@ -122,6 +122,39 @@ std::vector<double> pattern(double L, bool closed, LineStyle style, const DotOpt
     return at;
 }
 
+// The polyline moved sideways by d (left of its direction when d > 0): each
+// vertex along the mean of its edges' normals, as far as keeps both edges d
+// away, at most 2 d (a mitre limit, so a sharp corner does not shoot out).
+Polyline offset(const Polyline& pl, double d) {
+    Polyline out;
+    out.closed = pl.closed;
+    const auto n = pl.points.size();
+    if (n < 2) {
+        out.points = pl.points;
+        return out;
+    }
+    const auto normal = [&](std::size_t i, std::size_t j) {
+        const double dx = pl.points[j].x - pl.points[i].x, dy = pl.points[j].y - pl.points[i].y;
+        const double len = std::hypot(dx, dy);
+        return len > 0 ? Point{-dy / len, dx / len} : Point{0, 0};
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool has_prev = i > 0 || pl.closed, has_next = i + 1 < n || pl.closed;
+        const Point a = has_prev ? normal(i == 0 ? n - 1 : i - 1, i) : Point{0, 0};
+        const Point b = has_next ? normal(i, (i + 1) % n) : Point{0, 0};
+        Point m{a.x + b.x, a.y + b.y};
+        const double len = std::hypot(m.x, m.y);
+        double scale = d;
+        if (len > 1e-12) {
+            m = {m.x / len, m.y / len};
+            const double cos_half = has_prev && has_next ? m.x * b.x + m.y * b.y : 1.0;
+            scale = d / std::max(cos_half, 0.5);
+        }
+        out.points.push_back({pl.points[i].x + m.x * scale, pl.points[i].y + m.y * scale});
+    }
+    return out;
+}
+
 bool inside(Point p, const std::vector<Polyline>& rings, bool even_odd) {
     int winding = 0, crossings = 0;
     for (const auto& r : rings) {
@@ -214,7 +247,18 @@ Result<GraphicDots> place_dots(const Drawing& drawing, const Area& area, const D
     for (std::size_t si = 0; si < drawing.shapes.size(); ++si) {
         const auto& shape = drawing.shapes[si];
         if (!shape.stroked) continue;
+        std::vector<Polyline> rows;
         for (auto& pl : flatten(shape.subpaths, o.flatness_mm)) {
+            if (shape.stroke_width_mm >= o.bold_width_mm) {
+                // A bold line: two rows of dots, one either side of the centre line.
+                const double half = o.bold_row_gap_mm / 2;
+                rows.push_back(offset(pl, half));
+                rows.push_back(offset(pl, -half));
+            } else {
+                rows.push_back(std::move(pl));
+            }
+        }
+        for (auto& pl : rows) {
             StrokeTrace trace{static_cast<int>(si), pl, {}};
             const Walker w(pl);
             for (double s : pattern(w.length(), pl.closed, shape.style, o)) {

@@ -25,6 +25,9 @@ struct DotOptions {
     double dotted_spacing_mm = 3.0;
     // A dashed line: dashes of three dots (two spacings long), gaps about this long.
     double dash_gap_mm = 4.5;
+    // A stroke at least this wide is bold: two rows of dots this far apart.
+    double bold_width_mm = 1.5;
+    double bold_row_gap_mm = 1.5;
     // No two dots closer: the hammer would strike into the last dot's crater.
     double min_distance_mm = 1.25;
     // The machine's addressable grid: one carriage step across, one feed step down.
@@ -59,7 +62,8 @@ struct Dot {
     int source = 0;  // index of its shape (line, texture) or label in the drawing
 };
 
-// One stroked polyline and its dots in order along it (indices into GraphicDots::dots).
+// One row of dots along a stroke (the stroke's centre line; one of a bold
+// stroke's two rows) and its dots in order (indices into GraphicDots::dots).
 struct StrokeTrace {
     int shape = 0;
     Polyline line;

@@ -49,7 +49,8 @@ std::string random_svg(std::mt19937& rng, int shapes, int labels) {
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"150mm\" height=\"230mm\" viewBox=\"0 0 150 230\">\n";
     const char* dashes[] = {"", " stroke-dasharray=\"4 3\"", " stroke-dasharray=\"0.3 2\""};
     for (int i = 0; i < shapes; ++i) {
-        const std::string style = std::string(" stroke=\"black\" stroke-width=\"0.5\"") + dashes[rng() % 3] +
+        const std::string style = std::string(" stroke=\"black\" stroke-width=\"") + (rng() % 4 == 0 ? "2" : "0.5") +
+                                  "\"" + dashes[rng() % 3] +
                                   (u(rng) < 0.2 ? " fill=\"#" + std::to_string(100000 + rng() % 4) + "\"" : " fill=\"none\"");
         switch (rng() % 6) {
             case 0: s << "<line x1=\"" << x(rng) << "\" y1=\"" << y(rng) << "\" x2=\"" << x(rng) << "\" y2=\"" << y(rng) << "\"" << style << "/>\n"; break;
@@ -110,10 +111,15 @@ void check_random_drawings(const DotOptions& o) {
             for (auto i : t.dots) ASSERT_LE(distance_to(t.line, dots[i].at), snap_error + 1e-9) << "seed " << seed;
         for (const auto& d : dots) {
             if (d.kind != DotKind::line) continue;
-            const auto lines = flatten(placed.drawing.shapes[static_cast<std::size_t>(d.source)].subpaths, o.flatness_mm);
+            const auto& shape = placed.drawing.shapes[static_cast<std::size_t>(d.source)];
+            const auto lines = flatten(shape.subpaths, o.flatness_mm);
             double best = 1e18;
             for (const auto& l : lines) best = std::min(best, distance_to(l, d.at));
-            EXPECT_LE(best, snap_error + 1e-9);
+            // A bold stroke's rows stand half their gap off the centre line (twice that at a sharp corner's mitre).
+            const double reach = shape.stroke_width_mm >= o.bold_width_mm
+                                     ? std::max(shape.stroke_width_mm / 2, o.bold_row_gap_mm)
+                                     : 0.0;
+            EXPECT_LE(best, reach + snap_error + 1e-9);
         }
         // No two dots closer than the hammer allows; label dots clear of line dots.
         for (std::size_t i = 0; i < dots.size(); ++i)
@@ -202,6 +208,33 @@ TEST(GraphicDots, LineStylesAreDistinct) {
     EXPECT_GT(counts[0], counts[2]);
     EXPECT_GT(counts[2], 0U);
     EXPECT_NE(counts[1], counts[0]);
+}
+
+// A bold stroke is two rows of dots, either side of its centre line.
+TEST(GraphicDots, ABoldStrokeIsTwoRows) {
+    const DotOptions o = dot_options(kMachine);
+    const Area area = page_area(kMachine);
+    const double snap_error = std::hypot(o.x_step_mm, o.y_step_mm) / 2;
+    std::vector<std::size_t> counts;
+    for (const char* width : {"0.5", "2"}) {
+        const auto placed = place(std::string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"150mm\" height=\"150mm\" "
+                                              "viewBox=\"0 0 150 150\"><circle cx=\"70\" cy=\"70\" r=\"40\" fill=\"none\" "
+                                              "stroke=\"black\" stroke-width=\"") + width + "\"/></svg>",
+                                  o, area);
+        counts.push_back(placed.dots.dots.size());
+        if (std::string(width) == "0.5") continue;
+        ASSERT_EQ(placed.dots.strokes.size(), 2U);
+        std::size_t inner = 0, outer = 0;
+        for (const auto& d : placed.dots.dots) {
+            const double r = dist(d.at, {area.left + 70, area.top + 70});
+            if (std::abs(r - (40 - o.bold_row_gap_mm / 2)) <= snap_error + 0.01) ++inner;
+            else if (std::abs(r - (40 + o.bold_row_gap_mm / 2)) <= snap_error + 0.01) ++outer;
+            else ADD_FAILURE() << "a dot " << r << " mm from the centre, on neither row";
+        }
+        EXPECT_GT(inner, 100U);
+        EXPECT_GT(outer, inner);  // the outer row is longer
+    }
+    EXPECT_GT(counts[1], 2 * counts[0] - 10);
 }
 
 // Different fill paints get different textures; textures stay off the outline.
