@@ -126,10 +126,11 @@ spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
                         const std::optional<machine::FirmwareTables>& known_tables = std::nullopt) {
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
-    const auto doc = lay_out_for_cli(a.layout, options);
+    std::optional<machine::FirmwareTables> tables;
+    if (for_firmware) tables = firmware_tables(a, profile, known_tables);
+    const auto doc = lay_out_for_cli(a.layout, options, &profile, tables, !for_firmware);
     warn_about_conflicts(doc, profile);
-    if (for_firmware)
-        return require(spool::make_firmware_print_job(doc, profile, firmware_tables(a, profile, known_tables), a.device));
+    if (tables) return require(spool::make_firmware_print_job(doc, profile, *tables, a.device));
     return require(spool::make_print_job(doc, profile, a.device));
 }
 
@@ -144,7 +145,7 @@ spool::StreamSize dry_run(const EmbossArgs& a, std::optional<plan::PlanFile> sav
     if (!saved && !tables) {
         const auto profile = load_profile_arg(a.profile);
         const auto options = a.layout.pipeline_options(profile);
-        const auto doc = lay_out_for_cli(a.layout, options);
+        const auto doc = lay_out_for_cli(a.layout, options, &profile, std::nullopt, true);
         warn_about_conflicts(doc, profile);
         return require(spool::measure_print_job(doc, profile, a.start_sheet));
     }
