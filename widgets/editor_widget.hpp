@@ -38,7 +38,26 @@ public:
     Result<void> set_tables(const std::string& tables);
     Result<void> set_layout_options(const layout::LayoutOptions& options);
 
-    [[nodiscard]] QString text() const;  // the editor's lines, one block each (layout().dialect())
+    // The editor's lines, one per print block (layout().dialect()): the model's
+    // lines, whatever the print pane shows.
+    [[nodiscard]] QString text() const;
+    // "Show codes": the print pane shows the lines' Markdown instead of their
+    // structure (a .txt is always its own lines).
+    void set_codes_shown(bool codes);
+    [[nodiscard]] bool codes_shown() const { return codes_; }
+    // The print pane shows structure (a Markdown-dialect document, codes hidden).
+    [[nodiscard]] bool structured() const;
+
+    // Styles, as a word processor's (the Format menu): on the paragraphs the
+    // print cursor's selection touches. Each is one step of undo. In the codes
+    // view and in a text file they do nothing (the marks are typed there).
+    enum class ParagraphStyle { body, heading, bulleted, numbered, quotation };
+    void set_paragraph_style(ParagraphStyle style, int level = 1);
+    // Bold, italic or underline (document::Emphasis) on the selection, or off
+    // when all of it has it already.
+    void toggle_emphasis(std::uint8_t emphasis);
+    // A print page break as a paragraph of its own before the cursor's paragraph.
+    void insert_page_break();
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
@@ -67,8 +86,18 @@ Q_SIGNALS:
     // (a text file's form feed shows nothing a screen reader could read).
     void page_break_reached(const QString& spoken);
 
+protected:
+    // Return at the end of a heading, a break or a rule starts body text, as in a word processor.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void refresh_braille();
+    void show_lines(const QStringList& lines);
+    // The editor line a print block stands for now.
+    [[nodiscard]] std::string line_text(const QTextBlock& block) const;
+    // A position in a print block <-> the braille cell it maps to on its line.
+    [[nodiscard]] std::size_t cell_at(const QTextBlock& block, int position) const;
+    [[nodiscard]] int position_at(const QTextBlock& block, std::size_t cell) const;
     void on_contents_change(int position, int removed, int added);
     void replace_braille_blocks(int first, int removed, int count);
     // Replaces a braille paragraph's text by changing only the cells that differ.
@@ -87,6 +116,7 @@ private:
     int known_blocks_ = 1;
     int cursor_line_ = -1;  // the print cursor's line when it last moved
     bool syncing_ = false;
+    bool codes_ = false;
     edit::RelayoutStats last_stats_;
 };
 
