@@ -308,9 +308,7 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     if (!structured() || !layout_) return;
     auto c = print_->textCursor();
     const auto has = [emphasis](const QTextCharFormat& f) {
-        return emphasis == document::emphasis_bold     ? structured::is_bold(f)
-               : emphasis == document::emphasis_italic ? f.fontItalic()
-                                                       : f.fontUnderline();
+        return emphasis == document::emphasis_bold ? structured::is_bold(f) : f.fontItalic();
     };
     // On when any of the selection lacks it (as word processors do).
     bool all = c.hasSelection();
@@ -329,10 +327,8 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     if (emphasis == document::emphasis_bold) {
         const bool heading = structured::style_of(c.block()) == structured::Style::heading;
         f.setFontWeight(all ? (heading ? QFont::DemiBold : QFont::Normal) : QFont::Bold);
-    } else if (emphasis == document::emphasis_italic) {
-        f.setFontItalic(!all);
     } else {
-        f.setFontUnderline(!all);
+        f.setFontItalic(!all);
     }
     if (c.hasSelection()) c.mergeCharFormat(f);
     else print_->mergeCurrentCharFormat(f);  // what is typed next

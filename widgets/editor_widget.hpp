@@ -53,8 +53,9 @@ public:
     // view and in a text file they do nothing (the marks are typed there).
     enum class ParagraphStyle { body, heading, bulleted, numbered, quotation };
     void set_paragraph_style(ParagraphStyle style, int level = 1);
-    // Bold, italic or underline (document::Emphasis) on the selection, or off
-    // when all of it has it already.
+    // Bold or italic (document::Emphasis) on the selection, or off when all
+    // of it has it already. (The editor's Markdown lines have no underline:
+    // docs/editor.md.)
     void toggle_emphasis(std::uint8_t emphasis);
     // A print page break as a paragraph of its own before the cursor's paragraph.
     void insert_page_break();

@@ -327,8 +327,6 @@ void MainWindow::build_format_actions() {
          [this] { editor_->toggle_emphasis(document::emphasis_bold); });
     make(tr("&Italic"), tr("Ctrl+I"), QStringLiteral("formatItalic"),
          [this] { editor_->toggle_emphasis(document::emphasis_italic); });
-    make(tr("Unde&rline"), tr("Ctrl+U"), QStringLiteral("formatUnderline"),
-         [this] { editor_->toggle_emphasis(document::emphasis_underline); });
     show_codes_ = new QAction(tr("Show &codes"), this);
     show_codes_->setObjectName(QStringLiteral("viewShowCodes"));
     show_codes_->setCheckable(true);

@@ -416,11 +416,7 @@ std::string line_of(const QTextBlock& block) {
             b.kind = BlockKind::paragraph;
             break;
     }
-    if (b.kind == BlockKind::paragraph) {
-        // A paragraph's text is read back as Markdown: a reference without its note stays text.
-        for (auto& s : b.spans) s.note_reference = false;
-        if (b.spans.empty()) return {};
-    }
+    if (b.kind == BlockKind::paragraph && b.spans.empty()) return {};
     return exporter::markdown_line(b);
 }
 
