@@ -123,6 +123,49 @@ QString EditorWidget::page_break_text(int line) const {
     return page.isEmpty() ? tr("Print page break") : tr("Print page break, page %1").arg(page);
 }
 
+QString EditorWidget::structure_text(int line) const {
+    if (!structured() || !layout_) return {};
+    const auto block = print_->document()->findBlockByNumber(line);
+    if (!block.isValid()) return {};
+    using structured::Style;
+    switch (structured::style_of(block)) {
+        case Style::heading:
+            return tr("Heading level %1").arg(block.blockFormat().headingLevel());
+        case Style::bullet_item:
+        case Style::number_item:
+            if (const auto* list = block.textList())
+                return list->format().style() == QTextListFormat::ListDecimal
+                           ? tr("List item %1").arg(list->itemText(block))
+                           : tr("List item");
+            return block.blockFormat().boolProperty(structured::kNumberText) ? tr("List item") : QString();
+        case Style::quote:
+            return tr("Quotation");
+        case Style::note:
+            return tr("Note");
+        case Style::table_row: {
+            // Its place among the table's rows (the rule under the header is no row).
+            int row = 1, rows = 0;
+            for (auto b = block.previous(); b.isValid(); b = b.previous()) {
+                const auto s = structured::style_of(b);
+                if (s == Style::table_row) ++row;
+                else if (s != Style::table_delimiter) break;
+            }
+            rows = row;
+            for (auto b = block.next(); b.isValid(); b = b.next()) {
+                const auto s = structured::style_of(b);
+                if (s == Style::table_row) ++rows;
+                else if (s != Style::table_delimiter) break;
+            }
+            const auto next = block.next();
+            const bool header = next.isValid() && structured::style_of(next) == Style::table_delimiter;
+            return header ? tr("Table header row, %1 columns").arg(block.text().count(QLatin1Char('\t')) + 1)
+                          : tr("Table row %1 of %2").arg(row).arg(rows);
+        }
+        default:
+            return {};
+    }
+}
+
 EditorWidget::~EditorWidget() = default;
 
 QString EditorWidget::braille_text(std::size_t line) const {
@@ -496,6 +539,7 @@ void EditorWidget::sync_from_print() {
     if (line != cursor_line_) {
         cursor_line_ = line;
         if (const auto spoken = page_break_text(line); !spoken.isEmpty()) Q_EMIT page_break_reached(spoken);
+        else if (const auto said = structure_text(line); !said.isEmpty()) Q_EMIT structure_reached(said);
     }
 }
 

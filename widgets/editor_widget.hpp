@@ -72,6 +72,9 @@ public:
     // What a print page break line says, drawn on it and spoken when the cursor
     // comes to it ("Print page break, page 5"); empty for any other line.
     [[nodiscard]] QString page_break_text(int line) const;
+    // What a structured paragraph is, in words ("Heading level 2"); empty for
+    // body text and in the codes view (the marks are read there).
+    [[nodiscard]] QString structure_text(int line) const;
 
     // Cell edits on line `line`: replace cells [from, to) with `cells`.
     void edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells);
@@ -86,6 +89,10 @@ Q_SIGNALS:
     // The print cursor came to a print page break line: what to say for it
     // (a text file's form feed shows nothing a screen reader could read).
     void page_break_reached(const QString& spoken);
+    // The print cursor came to a paragraph with a structure the screen reader
+    // cannot hear from the text (Qt's text accessibility has no heading level
+    // or list number): "Heading level 2", "List item 3.", "Table row 2 of 4".
+    void structure_reached(const QString& spoken);
 
 protected:
     // Return at the end of a heading, a break or a rule starts body text, as in a word processor.

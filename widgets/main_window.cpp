@@ -188,6 +188,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(editor_, &EditorWidget::page_break_reached, this, [this](const QString& spoken) {
         if (editor_->print_pane()->hasFocus()) announcer_->announce(spoken);
     });
+    connect(editor_, &EditorWidget::structure_reached, this, [this](const QString& spoken) {
+        if (editor_->print_pane()->hasFocus()) announcer_->announce(spoken);
+    });
     connect(sp, &SheetPreview::cursor_moved, this, [this, sp](const QString& text) {
         if (sp->hasFocus()) announcer_->announce(text);
     });

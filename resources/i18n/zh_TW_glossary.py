@@ -63,6 +63,9 @@ T = {
     "The print text with its styles: headings, lists, tables, emphasis; Format menu to change them":
         "帶樣式的明眼字：標題、清單、表格、強調；用「格式」功能表變更",
     "Braille page break": "點字分頁",
+    "Heading level %1": "標題層級 %1", "List item %1": "清單項目 %1", "List item": "清單項目",
+    "Quotation": "引文", "Note": "註解", "Table header row, %1 columns": "表格標題列，%1 欄",
+    "Table row %1 of %2": "表格第 %1 列，共 %2 列",
     "Translating with %1": "正在以 %1 轉譯", "Cannot use table %1: %2": "無法使用點字表 %1：%2", "Braille table: %1": "點字表：%1",
     "Open or import": "開啟或匯入",
     "Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)",

@@ -5,7 +5,10 @@
 // the view read back gives the same document model; styles set from the
 // Format menu change the model, keep the braille pane in step and undo.
 #include <QAction>
+#include <QSignalSpy>
 #include <QTextList>
+#include <algorithm>
+#include <cctype>
 #include <QtTest>
 
 #include "braille_pane.hpp"
@@ -251,6 +254,49 @@ private Q_SLOTS:
         QVERIFY(print->toPlainText().startsWith(QLatin1Char('#')));
         QVERIFY(!w.findChild<QAction*>(QStringLiteral("formatHeading1"))->isEnabled());
         QCOMPARE(e->text(), before);
+    }
+
+    // A screen reader hears what a paragraph is as the cursor comes to it:
+    // Qt's text interface gives a heading's font, not its level.
+    void the_cursor_says_what_a_paragraph_is() {
+        open(data("lesson.docx"));
+        editor->show();
+        QVERIFY(QTest::qWaitForWindowExposed(editor.get()));
+        QSignalSpy said(editor.get(), &EditorWidget::structure_reached);
+        QSignalSpy broke(editor.get(), &EditorWidget::page_break_reached);
+        auto* print = editor->print_pane();
+        const auto lines = model_lines(*editor);
+        QStringList heard;
+        for (int i = static_cast<int>(lines.size()) - 1; i >= 0; --i) {  // from the end: the first line is a change too
+            print->setTextCursor(QTextCursor(block(i)));
+            heard << (said.isEmpty() ? QString() : said.takeFirst().at(0).toString());
+        }
+        std::reverse(heard.begin(), heard.end());
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const auto p = edit::parse_editor_line(lines[i]);
+            const auto why = QString::fromStdString(lines[i]) + QStringLiteral(" -> ") + heard[static_cast<int>(i)];
+            if (!p) continue;
+            if (p->kind == document::BlockKind::heading)
+                QVERIFY2(heard[static_cast<int>(i)] == QStringLiteral("Heading level %1").arg(p->level), qPrintable(why));
+            if (p->kind == document::BlockKind::list_item) {
+                QVERIFY2(heard[static_cast<int>(i)].startsWith(QStringLiteral("List item")), qPrintable(why));
+                if (const auto n = lines[i].find_first_not_of(' '); std::isdigit(static_cast<unsigned char>(lines[i][n])))
+                    QVERIFY2(heard[static_cast<int>(i)] ==
+                                 QStringLiteral("List item ") + QString::fromStdString(lines[i].substr(n, lines[i].find(' ', n) - n)),
+                             qPrintable(why));
+            }
+            if (p->kind == document::BlockKind::table_row)
+                QVERIFY2(heard[static_cast<int>(i)].startsWith(QStringLiteral("Table")), qPrintable(why));
+            if (p->kind == document::BlockKind::paragraph) QVERIFY2(heard[static_cast<int>(i)].isEmpty(), qPrintable(why));
+        }
+        QVERIFY(heard.contains(QStringLiteral("Heading level 1")));
+        QVERIFY(!broke.isEmpty());  // the page break says itself, as before
+        // With the codes shown the marks are read: nothing more is said.
+        editor->set_codes_shown(true);
+        said.clear();
+        print->setTextCursor(QTextCursor(block(2)));
+        print->setTextCursor(QTextCursor(block(0)));
+        QVERIFY(said.isEmpty());
     }
 
     // Cursor and selection map through the structure: a numbered item's text
