@@ -314,7 +314,7 @@ void PrintPane::describe() {
     setAccessibleDescription(
         text_file_ ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
         : codes_   ? tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**")
-                   : tr("The print text with its styles: headings, lists, tables, emphasis; Format menu to change them"));
+                   : tr("The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them"));
 }
 
 bool PrintPane::event(QEvent* e) {

@@ -423,7 +423,9 @@ void EditorWidget::on_contents_change(int position, int removed, int added) {
     Q_UNUSED(removed);
     auto* doc = print_->document();
     int first = doc->findBlock(position).blockNumber();
-    int last = doc->findBlock(position + added).blockNumber();
+    // A format change reports the block's end too: past the last block at the document's end.
+    const auto end_block = doc->findBlock(position + added);
+    int last = end_block.isValid() ? end_block.blockNumber() : doc->lastBlock().blockNumber();
     if (structured()) {
         // A list's numbers follow its items: every item of a list the edit touched is written again.
         for (const int n : {first, last}) {

@@ -48,7 +48,7 @@ public:
     // The print pane shows structure (a Markdown-dialect document, codes hidden).
     [[nodiscard]] bool structured() const;
 
-    // Styles, as a word processor's (the Format menu): on the paragraphs the
+    // Styles, as a word processor's (the Styles menu): on the paragraphs the
     // print cursor's selection touches. Each is one step of undo. In the codes
     // view and in a text file they do nothing (the marks are typed there).
     enum class ParagraphStyle { body, heading, bulleted, numbered, quotation };

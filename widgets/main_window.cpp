@@ -358,7 +358,7 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     edit->addActions({find_action_, find_next_});
     editor_->print_pane()->addActions({undo_, redo_, find_action_});
-    auto* format = menuBar()->addMenu(tr("F&ormat"));
+    auto* format = menuBar()->addMenu(tr("St&yles"));
     format->addActions(format_actions_);
     editor_->print_pane()->addActions(format_actions_);
     auto* view = menuBar()->addMenu(tr("&View"));

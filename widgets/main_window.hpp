@@ -173,7 +173,7 @@ private:
     QTimer plan_timer_;
     QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
     QAction *focus_motion_, *focus_vibration_, *focus_profile_, *focus_printer_ = nullptr, *emboss_ = nullptr;
-    // The Format menu's styles and emphasis, and View's "Show codes".
+    // The Styles menu's styles and emphasis, and View's "Show codes".
     QList<QAction*> format_actions_;
     QAction* show_codes_ = nullptr;
     void build_format_actions();

@@ -207,7 +207,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="612" />
+        <location filename="../../widgets/editor_widget.cpp" line="614" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -715,11 +715,6 @@
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="361" />
-        <source>F&amp;ormat</source>
-        <translation>格式(&amp;O)</translation>
-    </message>
-    <message>
         <location filename="../../widgets/main_window.cpp" line="364" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
@@ -1047,6 +1042,11 @@
         <location filename="../../widgets/main_window.cpp" line="566" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="361" />
+        <source>St&amp;yles</source>
+        <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="567" />
@@ -1489,8 +1489,8 @@
     </message>
     <message>
         <location filename="../../widgets/braille_pane.cpp" line="317" />
-        <source>The print text with its styles: headings, lists, tables, emphasis; Format menu to change them</source>
-        <translation>帶樣式的明眼字：標題、清單、表格、強調；用「格式」功能表變更</translation>
+        <source>The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them</source>
+        <translation>帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更</translation>
     </message>
     <message>
         <location filename="../../widgets/braille_pane.cpp" line="315" />

@@ -3,7 +3,7 @@
 // (pandoc's test suite, LibreOffice's own output): no Markdown markup is
 // shown, headings have their level, lists their numbers, tables their cells;
 // the view read back gives the same document model; styles set from the
-// Format menu change the model, keep the braille pane in step and undo.
+// Styles menu change the model, keep the braille pane in step and undo.
 #include <QAction>
 #include <QSignalSpy>
 #include <QTextList>
@@ -170,7 +170,7 @@ private Q_SLOTS:
         QCOMPARE(model_lines(*editor), lines);
     }
 
-    // The Format menu's styles change the model's lines, the braille follows
+    // The Styles menu's styles change the model's lines, the braille follows
     // them, and undo takes each back.
     void styles_change_the_model_and_undo() {
         MainWindow w;
