@@ -422,19 +422,12 @@ void EditorWidget::on_contents_change(int position, int removed, int added) {
     if (!layout_) return;
     Q_UNUSED(removed);
     auto* doc = print_->document();
-    int first = doc->findBlock(position).blockNumber();
+    const int first = doc->findBlock(position).blockNumber();
     // A format change reports the block's end too: past the last block at the document's end.
     const auto end_block = doc->findBlock(position + added);
-    int last = end_block.isValid() ? end_block.blockNumber() : doc->lastBlock().blockNumber();
-    if (structured()) {
-        // A list's numbers follow its items: every item of a list the edit touched is written again.
-        for (const int n : {first, last}) {
-            if (const auto* list = doc->findBlockByNumber(n).textList(); list && list->count() > 0) {
-                first = std::min(first, list->item(0).blockNumber());
-                last = std::max(last, list->item(list->count() - 1).blockNumber());
-            }
-        }
-    }
+    const int last = end_block.isValid() ? end_block.blockNumber() : doc->lastBlock().blockNumber();
+    // A list's items renumbered by an edit are reported with it (QTextList
+    // marks them changed), so their lines are written again with their numbers.
     const int now = doc->blockCount();
     const int count = std::max(0, last - first + 1);
     const int old_count = count - (now - known_blocks_);

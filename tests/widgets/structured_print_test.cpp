@@ -299,6 +299,43 @@ private Q_SLOTS:
         QVERIFY(said.isEmpty());
     }
 
+    // A new item in a numbered list: the items after it are numbered on, in
+    // the model as on screen.
+    void a_new_list_item_renumbers_the_items_after_it() {
+        open(data("public/pandoc-lists.docx"));
+        editor->show();
+        auto* print = editor->print_pane();
+        int first = -1;
+        for (int i = 0; i + 1 < print->document()->blockCount() && first < 0; ++i) {
+            const auto* list = block(i).textList();
+            if (list && list->format().style() == QTextListFormat::ListDecimal && block(i + 1).textList() == list)
+                first = i;
+        }
+        QVERIFY(first >= 0);
+        const auto* list = block(first).textList();
+        const auto count = list->count();
+        const auto lines = model_lines(*editor);
+        QTextCursor c(block(first));
+        c.movePosition(QTextCursor::EndOfBlock);
+        print->setTextCursor(c);
+        QTest::keyClick(print, Qt::Key_Return);
+        QTest::keyClicks(print, "New");
+        const auto now = model_lines(*editor);
+        QCOMPARE(now.size(), lines.size() + 1);
+        QCOMPARE(block(first).textList()->count(), count + 1);
+        for (int k = 0; k <= count; ++k) {
+            const auto& line = now[static_cast<std::size_t>(first + k)];
+            const auto number = std::to_string(k + 1) + ". ";
+            QVERIFY2(line.substr(line.find_first_not_of(' ')).starts_with(number), line.c_str());
+        }
+        QVERIFY(now[static_cast<std::size_t>(first + 1)].ends_with(" New"));
+        // The item after it is the old second item, numbered 3 now.
+        const auto old_second = lines[static_cast<std::size_t>(first + 1)];
+        QCOMPARE(now[static_cast<std::size_t>(first + 2)].substr(now[static_cast<std::size_t>(first + 2)].find(". ")),
+                 old_second.substr(old_second.find(". ")));
+        QCOMPARE(editor->braille_pane()->document()->blockCount(), print->document()->blockCount());
+    }
+
     // Cursor and selection map through the structure: a numbered item's text
     // (its number drawn by the list) to its braille.
     void the_cursor_maps_through_a_list_number() {
