@@ -3,7 +3,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="18" />
+        <location filename="../../widgets/editor_widget.cpp" line="21" />
         <source>typing</source>
         <translation>輸入</translation>
     </message>
@@ -199,12 +199,12 @@
 <context>
     <name>tactus::gui::BraillePane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="50" />
+        <location filename="../../widgets/braille_pane.cpp" line="52" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="52" />
+        <location filename="../../widgets/braille_pane.cpp" line="54" />
         <source>The braille of each paragraph. Type with S D F J K L as dots 3 2 1 4 5 6; space, backspace and delete edit cells</source>
         <translation>每一段的點字。以 S D F J K L 輸入第 3 2 1 4 5 6 點；空白鍵、退格鍵與刪除鍵編輯點字方</translation>
     </message>
@@ -212,19 +212,60 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="382" />
+        <location filename="../../widgets/editor_widget.cpp" line="607" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="116" />
+        <location filename="../../widgets/editor_widget.cpp" line="123" />
         <source>Print page break</source>
         <translation>原書換頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="116" />
+        <location filename="../../widgets/editor_widget.cpp" line="109" />
+        <source>Braille page break</source>
+        <translation>點字分頁</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="123" />
         <source>Print page break, page %1</source>
         <translation>原書換頁，第 %1 頁</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="133" />
+        <source>Heading level %1</source>
+        <translation>標題層級 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="138" />
+        <source>List item %1</source>
+        <translation>清單項目 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="139" />
+        <location filename="../../widgets/editor_widget.cpp" line="140" />
+        <source>List item</source>
+        <translation>清單項目</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="142" />
+        <source>Quotation</source>
+        <translation>引文</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="144" />
+        <source>Note</source>
+        <translation>註解</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="161" />
+        <source>Table header row, %1 columns</source>
+        <translation>表格標題列，%1 欄</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="162" />
+        <source>Table row %1 of %2</source>
+        <translation>表格第 %1 列，共 %2 列</translation>
     </message>
 </context>
 <context>
@@ -309,11 +350,11 @@
     <name>tactus::gui::MainWindow</name>
     <message>
         <location filename="../../widgets/main_window.cpp" line="94" />
-        <location filename="../../widgets/main_window.cpp" line="556" />
-        <location filename="../../widgets/main_window.cpp" line="709" />
-        <location filename="../../widgets/main_window.cpp" line="763" />
-        <location filename="../../widgets/main_window.cpp" line="797" />
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="607" />
+        <location filename="../../widgets/main_window.cpp" line="760" />
+        <location filename="../../widgets/main_window.cpp" line="814" />
+        <location filename="../../widgets/main_window.cpp" line="848" />
+        <location filename="../../widgets/main_window.cpp" line="870" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -368,467 +409,562 @@
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228" />
+        <location filename="../../widgets/main_window.cpp" line="232" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="231" />
+        <location filename="../../widgets/main_window.cpp" line="235" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="236" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="237" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="237" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="234" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="234" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="240" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="240" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="876" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="242" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="239" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="246" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="247" />
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="251" />
+        <location filename="../../widgets/main_window.cpp" line="255" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="259" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="259" />
+        <location filename="../../widgets/main_window.cpp" line="263" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="265" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="265" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="267" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="267" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
+        <location filename="../../widgets/main_window.cpp" line="276" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="276" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="276" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="280" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="280" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="288" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="288" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="290" />
+        <location filename="../../widgets/main_window.cpp" line="294" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="290" />
+        <location filename="../../widgets/main_window.cpp" line="294" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="292" />
+        <location filename="../../widgets/main_window.cpp" line="296" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="292" />
+        <location filename="../../widgets/main_window.cpp" line="296" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="295" />
+        <location filename="../../widgets/main_window.cpp" line="299" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="302" />
+        <location filename="../../widgets/main_window.cpp" line="317" />
+        <source>&amp;Body text</source>
+        <translation>內文(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="317" />
+        <source>Ctrl+Alt+0</source>
+        <translation>Ctrl+Alt+0</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="320" />
+        <source>Heading &amp;%1</source>
+        <translation>標題 %1(&amp;%1)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="320" />
+        <source>Ctrl+Alt+%1</source>
+        <translation>Ctrl+Alt+%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="322" />
+        <source>B&amp;ulleted list</source>
+        <translation>項目符號清單(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="322" />
+        <source>Ctrl+Alt+L</source>
+        <translation>Ctrl+Alt+L</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="324" />
+        <source>&amp;Numbered list</source>
+        <translation>編號清單(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="324" />
+        <source>Ctrl+Alt+N</source>
+        <translation>Ctrl+Alt+N</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="326" />
+        <source>&amp;Quotation</source>
+        <translation>引文(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="326" />
+        <source>Ctrl+Alt+Q</source>
+        <translation>Ctrl+Alt+Q</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="328" />
+        <source>&amp;Page break</source>
+        <translation>分頁(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="328" />
+        <source>Ctrl+Return</source>
+        <translation>Ctrl+Return</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="329" />
+        <source>Bol&amp;d</source>
+        <translation>粗體(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="329" />
+        <source>Ctrl+B</source>
+        <translation>Ctrl+B</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="331" />
+        <source>&amp;Italic</source>
+        <translation>斜體(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="331" />
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="333" />
+        <source>Show &amp;codes</source>
+        <translation>顯示代碼(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="336" />
+        <source>Ctrl+Alt+C</source>
+        <translation>Ctrl+Alt+C</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="337" />
+        <source>Show the print text's Markdown codes instead of its styles</source>
+        <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="347" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="304" />
+        <location filename="../../widgets/main_window.cpp" line="349" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="311" />
+        <location filename="../../widgets/main_window.cpp" line="356" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="316" />
+        <location filename="../../widgets/main_window.cpp" line="364" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="323" />
+        <location filename="../../widgets/main_window.cpp" line="373" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="364" />
+        <location filename="../../widgets/main_window.cpp" line="415" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="371" />
+        <location filename="../../widgets/main_window.cpp" line="422" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="375" />
-        <location filename="../../widgets/main_window.cpp" line="503" />
+        <location filename="../../widgets/main_window.cpp" line="426" />
+        <location filename="../../widgets/main_window.cpp" line="554" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="385" />
+        <location filename="../../widgets/main_window.cpp" line="436" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="387" />
+        <location filename="../../widgets/main_window.cpp" line="438" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="388" />
+        <location filename="../../widgets/main_window.cpp" line="439" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="391" />
+        <location filename="../../widgets/main_window.cpp" line="442" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="408" />
+        <location filename="../../widgets/main_window.cpp" line="459" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="409" />
+        <location filename="../../widgets/main_window.cpp" line="460" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="415" />
+        <location filename="../../widgets/main_window.cpp" line="466" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="430" />
+        <location filename="../../widgets/main_window.cpp" line="481" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="438" />
+        <location filename="../../widgets/main_window.cpp" line="489" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="465" />
+        <location filename="../../widgets/main_window.cpp" line="516" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="521" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="471" />
+        <location filename="../../widgets/main_window.cpp" line="522" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="492" />
+        <location filename="../../widgets/main_window.cpp" line="543" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="497" />
+        <location filename="../../widgets/main_window.cpp" line="548" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
+        <location filename="../../widgets/main_window.cpp" line="580" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="532" />
+        <location filename="../../widgets/main_window.cpp" line="583" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="532" />
+        <location filename="../../widgets/main_window.cpp" line="583" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="543" />
-        <location filename="../../widgets/main_window.cpp" line="710" />
-        <location filename="../../widgets/main_window.cpp" line="721" />
-        <location filename="../../widgets/main_window.cpp" line="879" />
+        <location filename="../../widgets/main_window.cpp" line="594" />
+        <location filename="../../widgets/main_window.cpp" line="761" />
+        <location filename="../../widgets/main_window.cpp" line="772" />
+        <location filename="../../widgets/main_window.cpp" line="930" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="548" />
+        <location filename="../../widgets/main_window.cpp" line="599" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="567" />
+        <location filename="../../widgets/main_window.cpp" line="618" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="568" />
+        <location filename="../../widgets/main_window.cpp" line="619" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="570" />
+        <location filename="../../widgets/main_window.cpp" line="621" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="667" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="875" />
+        <location filename="../../widgets/main_window.cpp" line="926" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="622" />
+        <location filename="../../widgets/main_window.cpp" line="673" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="622" />
+        <location filename="../../widgets/main_window.cpp" line="673" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="624" />
+        <location filename="../../widgets/main_window.cpp" line="675" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="646" />
+        <location filename="../../widgets/main_window.cpp" line="697" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="655" />
+        <location filename="../../widgets/main_window.cpp" line="706" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="662" />
+        <location filename="../../widgets/main_window.cpp" line="713" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="663" />
+        <location filename="../../widgets/main_window.cpp" line="714" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="674" />
+        <location filename="../../widgets/main_window.cpp" line="725" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="709" />
+        <location filename="../../widgets/main_window.cpp" line="760" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="820" />
+        <location filename="../../widgets/main_window.cpp" line="871" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="822" />
+        <location filename="../../widgets/main_window.cpp" line="873" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="826" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="722" />
+        <location filename="../../widgets/main_window.cpp" line="773" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="736" />
+        <location filename="../../widgets/main_window.cpp" line="787" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="745" />
+        <location filename="../../widgets/main_window.cpp" line="796" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="745" />
+        <location filename="../../widgets/main_window.cpp" line="796" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="749" />
+        <location filename="../../widgets/main_window.cpp" line="800" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="895" />
+        <location filename="../../widgets/main_window.cpp" line="946" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="750" />
+        <location filename="../../widgets/main_window.cpp" line="801" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="755" />
+        <location filename="../../widgets/main_window.cpp" line="806" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -838,208 +974,213 @@
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="601" />
+        <location filename="../../widgets/main_window.cpp" line="652" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="787" />
+        <location filename="../../widgets/main_window.cpp" line="838" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="788" />
+        <location filename="../../widgets/main_window.cpp" line="839" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="801" />
+        <location filename="../../widgets/main_window.cpp" line="852" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="802" />
+        <location filename="../../widgets/main_window.cpp" line="853" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="805" />
+        <location filename="../../widgets/main_window.cpp" line="856" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="806" />
+        <location filename="../../widgets/main_window.cpp" line="857" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="811" />
+        <location filename="../../widgets/main_window.cpp" line="862" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="769" />
+        <location filename="../../widgets/main_window.cpp" line="820" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="770" />
+        <location filename="../../widgets/main_window.cpp" line="821" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="771" />
+        <location filename="../../widgets/main_window.cpp" line="822" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="774" />
+        <location filename="../../widgets/main_window.cpp" line="825" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="775" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="780" />
+        <location filename="../../widgets/main_window.cpp" line="831" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="515" />
+        <location filename="../../widgets/main_window.cpp" line="566" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="516" />
+        <location filename="../../widgets/main_window.cpp" line="361" />
+        <source>St&amp;yles</source>
+        <translation>樣式(&amp;Y)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="567" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="962" />
+        <location filename="../../widgets/main_window.cpp" line="1013" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1035" />
-        <location filename="../../widgets/main_window.cpp" line="1044" />
+        <location filename="../../widgets/main_window.cpp" line="1086" />
+        <location filename="../../widgets/main_window.cpp" line="1095" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1066" />
+        <location filename="../../widgets/main_window.cpp" line="1117" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1072" />
+        <location filename="../../widgets/main_window.cpp" line="1123" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1078" />
+        <location filename="../../widgets/main_window.cpp" line="1129" />
         <source>an untitled document</source>
         <translation>未命名文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1080" />
+        <location filename="../../widgets/main_window.cpp" line="1131" />
         <source>Recover unsaved work</source>
         <translation>復原未儲存的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1081" />
+        <location filename="../../widgets/main_window.cpp" line="1132" />
         <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
         <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1100" />
+        <location filename="../../widgets/main_window.cpp" line="1151" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1104" />
+        <location filename="../../widgets/main_window.cpp" line="1155" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1106" />
+        <location filename="../../widgets/main_window.cpp" line="1157" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1106" />
+        <location filename="../../widgets/main_window.cpp" line="1157" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1135" />
+        <location filename="../../widgets/main_window.cpp" line="1186" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1135" />
+        <location filename="../../widgets/main_window.cpp" line="1186" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1136" />
+        <location filename="../../widgets/main_window.cpp" line="1187" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1136" />
+        <location filename="../../widgets/main_window.cpp" line="1187" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1137" />
+        <location filename="../../widgets/main_window.cpp" line="1188" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1137" />
+        <location filename="../../widgets/main_window.cpp" line="1188" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1138" />
+        <location filename="../../widgets/main_window.cpp" line="1189" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1138" />
+        <location filename="../../widgets/main_window.cpp" line="1189" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1139" />
+        <location filename="../../widgets/main_window.cpp" line="1190" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1139" />
+        <location filename="../../widgets/main_window.cpp" line="1190" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1140" />
+        <location filename="../../widgets/main_window.cpp" line="1191" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1140" />
+        <location filename="../../widgets/main_window.cpp" line="1191" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1146" />
+        <location filename="../../widgets/main_window.cpp" line="1197" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1147" />
+        <location filename="../../widgets/main_window.cpp" line="1198" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1342,17 +1483,22 @@
 <context>
     <name>tactus::gui::PrintPane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="294" />
+        <location filename="../../widgets/braille_pane.cpp" line="296" />
         <source>Print text</source>
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="303" />
+        <location filename="../../widgets/braille_pane.cpp" line="316" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="302" />
+        <location filename="../../widgets/braille_pane.cpp" line="317" />
+        <source>The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them</source>
+        <translation>帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/braille_pane.cpp" line="315" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>

@@ -18,6 +18,9 @@ works the app by keyboard only, asserting after every key what Orca says:
   formfeed  a text file with a form feed: the cursor coming to that line says
           "Print page break, page 2" (the form feed itself has no glyph), and
           the next line is read as text again.
+  structure  a Markdown file in the structured print pane: the cursor coming to
+          a heading says its level, to a numbered item its number, to body text
+          nothing more (Qt's text interface has neither: docs/editor.md).
   pagetoosmall  a 40 x 25 PEF on the default 27 x 24 profile: Ctrl+P reads the
           question with both sizes and the focused Stop button, Tab reads
           Reflow, Escape stops and says nothing was embossed.
@@ -237,6 +240,25 @@ def scenario_formfeed(tactus, sample, work):
     return 0
 
 
+def scenario_structure(tactus, sample, work):
+    doc = os.path.join(work, "lesson.md")
+    with open(doc, "w", encoding="utf-8") as f:
+        f.write("# Weather\n\nToday we learn.\n\n## Kinds of clouds\n\n1. Look at the sky.\n2. Write what you see.\n")
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", doc])
+        s.step("Ctrl+Home goes to the first line", keys=["ctrl+Home"], allow_silent=True, quiet=0.8)
+        s.step("Down reads body text as text", keys=["Down"], expect=[r"Today we learn"],
+               forbid=[r"Heading level", r"List item"])
+        s.step("Down to a heading says its level", keys=["Down"], expect=[r"Kinds of clouds", r"Heading level 2"],
+               forbid=[r"#"])
+        s.step("Down to a numbered item says its number", keys=["Down"], expect=[r"Look at the sky", r"List item 1"])
+        s.step("Down to the next item says the next number", keys=["Down"], expect=[r"List item 2"])
+        print(s.summary())
+    return 0
+
+
 def scenario_pagetoosmall(tactus, sample, work):
     root = os.path.dirname(os.path.dirname(os.path.dirname(sample)))  # resources/samples/welcome.md
     pef = os.path.join(root, "tests", "data", "pef", "us_braille_40x25.pef")
@@ -331,7 +353,7 @@ def scenario_corners_zh(tactus, sample, work):
 
 
 SCENARIOS = {"corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
-             "formfeed": scenario_formfeed, "pagetoosmall": scenario_pagetoosmall}
+             "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall}
 
 
 def main():
