@@ -11,18 +11,12 @@ namespace {
 
 HANDLE handle_of(std::intptr_t h) { return reinterpret_cast<HANDLE>(h); }
 
-// A named pipe with no client yet, or one whose client left: nothing moves,
-// as on a serial line with no cable. A server end listens again for the next.
-bool no_peer(DWORD code) {
-    return code == ERROR_PIPE_LISTENING || code == ERROR_NO_DATA || code == ERROR_BROKEN_PIPE ||
-           code == ERROR_PIPE_NOT_CONNECTED;
-}
-
-void listen_again(HANDLE h, DWORD code) {
-    if (code == ERROR_BROKEN_PIPE || code == ERROR_NO_DATA) {
-        DisconnectNamedPipe(h);
-        ConnectNamedPipe(h, nullptr);  // PIPE_NOWAIT: returns at once
-    }
+// A named pipe's server end whose client left: it disconnects and listens for
+// the next client (PIPE_NOWAIT: ConnectNamedPipe returns at once), as a
+// serial line takes the next cable.
+void listen_again(HANDLE h) {
+    DisconnectNamedPipe(h);
+    ConnectNamedPipe(h, nullptr);
 }
 
 }  // namespace
@@ -44,24 +38,27 @@ OsResult<std::size_t> Channel::read_some(std::span<std::uint8_t> buffer) {
     const HANDLE h = handle_of(handle_);
     DWORD got = 0;
     if (ReadFile(h, buffer.data(), static_cast<DWORD>(buffer.size()), &got, nullptr)) return std::size_t{got};
-    const DWORD code = GetLastError();
-    if (no_peer(code)) {
-        listen_again(h, code);
-        return std::size_t{0};
+    switch (const DWORD code = GetLastError()) {
+        case ERROR_NO_DATA:           // nothing waiting (a PIPE_NOWAIT pipe)
+        case ERROR_PIPE_LISTENING:    // no client yet
+        case ERROR_PIPE_NOT_CONNECTED: return std::size_t{0};
+        case ERROR_BROKEN_PIPE: listen_again(h); return std::size_t{0};
+        default: return std::unexpected(os_error_from_code(code));
     }
-    return std::unexpected(os_error_from_code(code));
 }
 
 OsResult<std::size_t> Channel::write_some(std::span<const std::uint8_t> bytes) {
     const HANDLE h = handle_of(handle_);
     DWORD wrote = 0;
     if (WriteFile(h, bytes.data(), static_cast<DWORD>(bytes.size()), &wrote, nullptr)) return std::size_t{wrote};
-    const DWORD code = GetLastError();
-    if (no_peer(code)) {
-        listen_again(h, code);
-        return std::size_t{0};
+    // No client: the bytes are lost, as on a line with no cable.
+    switch (const DWORD code = GetLastError()) {
+        case ERROR_PIPE_LISTENING:
+        case ERROR_PIPE_NOT_CONNECTED: return std::size_t{0};
+        case ERROR_NO_DATA:  // on a write: the client is closing its end
+        case ERROR_BROKEN_PIPE: listen_again(h); return std::size_t{0};
+        default: return std::unexpected(os_error_from_code(code));
     }
-    return std::unexpected(os_error_from_code(code));
 }
 
 OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, std::chrono::nanoseconds timeout) {
@@ -75,7 +72,11 @@ OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, st
             const HANDLE h = handle_of(channels[i]->native());
             ConnectNamedPipe(h, nullptr);  // a server end waiting for its client
             DWORD avail = 0;
-            if (PeekNamedPipe(h, nullptr, 0, nullptr, &avail, nullptr) && avail > 0) ready[i] = any = true;
+            if (PeekNamedPipe(h, nullptr, 0, nullptr, &avail, nullptr)) {
+                if (avail > 0) ready[i] = any = true;
+            } else if (GetLastError() == ERROR_BROKEN_PIPE) {
+                listen_again(h);
+            }
         }
         if (any || std::chrono::steady_clock::now() >= until) return ready;
         Sleep(1);

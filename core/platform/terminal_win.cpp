@@ -77,12 +77,16 @@ std::size_t waiting(HANDLE h, bool pipe) {
 
 OsResult<Terminal> Terminal::open(const std::string& path, const LineSettings& line) {
     // No sharing: the port is this program's alone while it is open.
-    const HANDLE h = CreateFileW(widen(device_name(path)).c_str(), GENERIC_READ | GENERIC_WRITE, 0, nullptr,
-                                 OPEN_EXISTING, 0, nullptr);
-    if (h == INVALID_HANDLE_VALUE) {
-        const DWORD code = GetLastError();
-        return os_fail(open_error(code), os_error_from_code(code).kind);
+    const std::wstring name = widen(device_name(path));
+    HANDLE h = CreateFileW(name.c_str(), GENERIC_READ | GENERIC_WRITE, 0, nullptr, OPEN_EXISTING, 0, nullptr);
+    DWORD code = h == INVALID_HANDLE_VALUE ? GetLastError() : ERROR_SUCCESS;
+    // The simulator's pipe takes its next client once it has seen the last
+    // one leave; still taken after a second, it is busy.
+    if (code == ERROR_PIPE_BUSY && is_pipe_name(path) && WaitNamedPipeW(name.c_str(), 1000)) {
+        h = CreateFileW(name.c_str(), GENERIC_READ | GENERIC_WRITE, 0, nullptr, OPEN_EXISTING, 0, nullptr);
+        code = h == INVALID_HANDLE_VALUE ? GetLastError() : ERROR_SUCCESS;
     }
+    if (h == INVALID_HANDLE_VALUE) return os_fail(open_error(code), os_error_from_code(code).kind);
     Terminal t(reinterpret_cast<std::intptr_t>(h));
     if (!is_pipe_name(path)) {
         if (auto r = configure(h, line); !r) return std::unexpected(r.error());

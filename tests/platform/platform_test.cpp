@@ -248,6 +248,24 @@ TEST(SimEndpoint, TheLineIsOneClientsAtATime) {
     EXPECT_NE(second.error().what.find("busy"), std::string::npos) << second.error().what;
 }
 
+TEST(SimEndpoint, AClientThatLeavesMakesRoomForTheNext) {
+    auto ep = SimEndpoint::open(true);
+    ASSERT_TRUE(ep);
+    {
+        auto first = Terminal::open(ep->path(), LineSettings{});
+        ASSERT_TRUE(first) << first.error().what;
+        ASSERT_TRUE(first->write_all(bytes_of("one")));
+        EXPECT_EQ(read_channel(ep->line(), 3), "one");
+    }
+    // The simulator notices the client gone as it waits for the next bytes.
+    Channel* const line[] = {&ep->line()};
+    ASSERT_TRUE(wait_readable(line, std::chrono::milliseconds(5)));
+    auto second = Terminal::open(ep->path(), LineSettings{});
+    ASSERT_TRUE(second) << second.error().what;
+    ASSERT_TRUE(second->write_all(bytes_of("two")));
+    EXPECT_EQ(read_channel(ep->line(), 3), "two");
+}
+
 TEST(Terminal, RefusesWhatIsNotThereAndWhatIsNotATerminal) {
     TempDir dir;
     const auto missing = Terminal::open((dir.path / "ttyNONE").string(), LineSettings{});
