@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "platform/process_info.hpp"
 #include "platform/sim_endpoint.hpp"
 #include "platform/terminal.hpp"
+#include "platform/user_dirs.hpp"
 #include "platform/worker_process.hpp"
 
 namespace fs = std::filesystem;
@@ -304,3 +306,30 @@ TEST(Channel, AFifoCarriesBytesOrIsRefusedWhereThereIsNone) {
     EXPECT_FALSE((*ready)[0]);
 #endif
 }
+
+#ifndef _WIN32
+// The XDG base directory rules: an absolute $XDG_DATA_HOME, else ~/.local/share.
+TEST(UserDirs, DataHomeFollowsXdg) {
+    const auto keep = [](const char* name) -> std::optional<std::string> {
+        const char* v = std::getenv(name);
+        return v ? std::optional<std::string>(v) : std::nullopt;
+    };
+    const auto xdg = keep("XDG_DATA_HOME"), home = keep("HOME");
+    setenv("HOME", "/home/reader", 1);
+    setenv("XDG_DATA_HOME", "/data/xdg", 1);
+    EXPECT_EQ(user_data_home(), fs::path("/data/xdg"));
+    setenv("XDG_DATA_HOME", "relative/is/ignored", 1);
+    EXPECT_EQ(user_data_home(), fs::path("/home/reader/.local/share"));
+    unsetenv("XDG_DATA_HOME");
+    unsetenv("HOME");
+    EXPECT_EQ(user_data_home(), std::nullopt);
+    for (const auto& [name, value] : {std::pair{"XDG_DATA_HOME", xdg}, std::pair{"HOME", home}})
+        if (value) setenv(name, value->c_str(), 1);
+}
+#else
+TEST(UserDirs, DataHomeIsTheLocalAppDataFolder) {
+    const auto d = user_data_home();
+    ASSERT_TRUE(d);
+    EXPECT_TRUE(fs::is_directory(*d)) << d->string();
+}
+#endif
