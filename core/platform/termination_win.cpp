@@ -11,8 +11,9 @@ namespace {
 
 std::atomic<TerminationHandler> g_handler{nullptr};
 
-// Ctrl-C, Ctrl-Break and the console window closing come on a thread of
-// their own: the handler sets its flag and the console waits for the process.
+// Ctrl-C and Ctrl-Break come on a thread of their own: the handler sets its
+// flag and the process stops in its own time. When the console window closes,
+// Windows ends the process once the handler returns (or after 5 s).
 BOOL WINAPI on_console_event(DWORD event) {
     const auto handler = g_handler.load();
     if (!handler) return FALSE;
