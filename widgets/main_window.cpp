@@ -33,7 +33,6 @@
 #include <QTableWidget>
 #include <QToolBar>
 #include <QVBoxLayout>
-#include <unistd.h>
 
 #include <algorithm>
 
@@ -46,6 +45,7 @@
 #include "export/export.hpp"
 #include "export/text_export.hpp"
 #include "layout/braille_pages.hpp"
+#include "platform/process_info.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
@@ -85,7 +85,7 @@ bool write_atomically(const QString& path, const QByteArray& bytes, QString* err
     return true;
 }
 
-bool process_alive(qint64 pid) { return pid > 0 && QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid)); }
+bool process_alive(qint64 pid) { return tactus::platform::process_alive(pid); }
 
 }  // namespace
 
@@ -1019,7 +1019,7 @@ void MainWindow::show_plan(const DocumentPlanPtr& plan) {
 bool MainWindow::autosave_now() {
     QDir().mkpath(autosave_dir());
     if (autosave_path_.isEmpty())
-        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
+        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(static_cast<qint64>(tactus::platform::current_process_id())).arg(QDateTime::currentMSecsSinceEpoch());
     // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
     // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
     // the rule a CUPS job follows too); anything else as the editor's lines.
@@ -1038,7 +1038,7 @@ bool MainWindow::autosave_now() {
         message_->show_message(error, 10000);
         return false;
     }
-    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(::getpid())},
+    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(tactus::platform::current_process_id())},
                      {QStringLiteral("path"), path_},
                      {QStringLiteral("name"), source_name_},
                      {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
@@ -1065,7 +1065,7 @@ QList<Recovery> MainWindow::pending_recoveries() {
         if (!f.open(QIODevice::ReadOnly)) continue;
         const auto meta = QJsonDocument::fromJson(f.readAll()).object();
         const auto pid = meta.value(QStringLiteral("pid")).toInteger();
-        if (pid == ::getpid() || process_alive(pid)) continue;  // that Tactus is still running
+        if (pid == tactus::platform::current_process_id() || process_alive(pid)) continue;  // that Tactus is still running
         Recovery r;
         r.autosave_path = info.absoluteFilePath().chopped(5);
         if (!QFileInfo::exists(r.autosave_path)) continue;

@@ -1,12 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli emboss: lay out, plan, encode and send a document to the embosser.
 // Exit 0 only when the controller has confirmed executing every pass.
-#include <unistd.h>
-
 #include <chrono>
-#include <csignal>
 #include <iostream>
-
 #include <optional>
 
 #include "command.hpp"
@@ -21,6 +17,8 @@
 #include "link/link.hpp"
 #include "machine/reference_firmware.hpp"
 #include "plan/plan_file.hpp"
+#include "platform/console.hpp"
+#include "platform/termination.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 #include "protocol_choice.hpp"
@@ -224,11 +222,10 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     const auto job = saved ? saved_plan_job(a, std::move(*saved), link.protocol())
                            : prepare(a, link.protocol() == encode::kProtocolV3, options.sim_firmware);
 
-    const bool tty = isatty(STDERR_FILENO) != 0;
+    const bool tty = platform::stderr_is_terminal();
     link::CancelToken cancel;
     g_cancel = &cancel;
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
+    platform::on_termination(on_interrupt);
     bool bar_drawn = false;
     auto out = spool::send_print_job(
         link, job, a.start_sheet,

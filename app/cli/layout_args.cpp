@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "layout_args.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <iostream>
 
@@ -10,6 +8,7 @@
 #include "graphic/graphic_page.hpp"
 #include "graphic/svg_import.hpp"
 #include "layout/braille_pages.hpp"
+#include "platform/console.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/page_geometry.hpp"
 
@@ -126,7 +125,7 @@ namespace {
 // nothing when stderr is a file or a pipe (scripts read it).
 class ProgressLine {
 public:
-    ProgressLine() : tty_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+    ProgressLine() : tty_(platform::stderr_is_terminal()), start_(std::chrono::steady_clock::now()) {}
     ~ProgressLine() {
         if (shown_) std::cerr << "\r                         \r" << std::flush;
     }
