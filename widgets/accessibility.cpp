@@ -241,6 +241,34 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
 // belongs to, which a held-back focus event silenced.
 bool popup_open() { return qobject_cast<QMenu*>(QApplication::activePopupWidget()) != nullptr; }
 
+// A combo box's list is a popup window of its own (Qt's private container).
+QComboBox* combo_of_popup(QObject* popup) {
+    if (!popup || !popup->inherits("QComboBoxPrivateContainer")) return nullptr;
+    return qobject_cast<QComboBox*>(popup->parent());
+}
+
+// Opening a combo box's list moves the focus into the list before the list's
+// current item is set as the focused child, so Orca said "List with 201
+// items." and never which item was current. Told once the list is shown.
+void announce_current_item(QComboBox* box) {
+    auto* view = box->view();
+    if (!view || !view->isVisible() || !view->currentIndex().isValid()) return;
+    QAccessibleEvent focus(view, QAccessible::Focus);
+    focus.setChild(view->currentIndex().row());
+    QAccessible::updateAccessibility(&focus);
+}
+
+// Up and Down on a closed combo box change its value, which Qt 6.4 tells only
+// by a name change and a selection change of the box; Orca 43 ignores a combo
+// box's name changes and reads its selection through an interface Qt 6.4 does
+// not bridge, so the new value was silent. The window's announcer says it.
+// A box whose change the window words itself (the braille table says
+// "Braille table: ...") sets the property "announcesChange".
+void announce_closed_change(QComboBox* box) {
+    if (!box->hasFocus() || box->view()->isVisible() || box->property("announcesChange").toBool()) return;
+    if (auto* a = box->window()->findChild<Announcer*>()) a->announce(box->currentText());
+}
+
 class PopupActivationFilter : public QObject {
 public:
     using QObject::QObject;
@@ -250,6 +278,8 @@ protected:
         const auto type = e->type();
         if (type == QEvent::Show && target->isWidgetType() &&
             static_cast<QWidget*>(target)->windowType() == Qt::Popup) {
+            if (auto* box = combo_of_popup(target))
+                QMetaObject::invokeMethod(box, [box] { announce_current_item(box); }, Qt::QueuedConnection);
             // Stay the first application filter, before the AT-SPI bridge's,
             // which is installed once the screen reader's bus answers.
             QMetaObject::invokeMethod(this, [this] {
@@ -263,12 +293,16 @@ protected:
             return false;
         auto* w = static_cast<QWidget*>(target);
         if (!w->isWindow() || w->windowType() == Qt::Popup) return false;
+        // A combo box's list takes the activation too: "Tactus frame." was said
+        // again at each list's opening or closing. Its focus events pass (see
+        // popup_open).
+        const bool any_popup = popup_open() || combo_of_popup(QApplication::activePopupWidget());
         if (type == QEvent::WindowDeactivate) {
-            if (!popup_open()) return false;
+            if (!any_popup) return false;
             hid_deactivation_ = true;
             return true;
         }
-        if (popup_open()) return true;
+        if (any_popup) return true;
         if (!hid_deactivation_) return false;
         hid_deactivation_ = false;
         return true;
@@ -292,6 +326,11 @@ void pass_on(QAccessibleEvent* e) {
 }
 
 void update_handler(QAccessibleEvent* e) {
+    if (e->type() == QAccessible::ValueChanged)
+        // Only a change made in the closed box: one chosen in the open list is
+        // heard as the list item, then as the box when the focus returns.
+        if (auto* box = qobject_cast<QComboBox*>(e->object()); box && !box->isEditable() && !box->view()->isVisible())
+            QMetaObject::invokeMethod(box, [box] { announce_closed_change(box); }, Qt::QueuedConnection);
     if (e->type() == QAccessible::Focus && popup_open()) {
         auto* o = e->object();
         if (o && o->isWidgetType() && static_cast<QWidget*>(o)->window()->windowType() != Qt::Popup) return;
