@@ -325,7 +325,32 @@ void pass_on(QAccessibleEvent* e) {
     QAccessible::installUpdateHandler(mine);
 }
 
+// Opening a combo box's list makes Qt tell the screen reader that the main
+// window stopped being active and the list's window became so, and the reverse
+// on closing, as accessible state changes (not window events, which the filter
+// above sees). Orca took each return for coming back to the window and said
+// "Tactus frame." again at every list. The list belongs to the window: these
+// changes are not passed on, the window's one change after the list closes
+// included.
+bool hid_window_activation = false;
+
+bool hide_combo_activation(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::StateChanged || !static_cast<QAccessibleStateChangeEvent*>(e)->changedStates().active)
+        return false;
+    auto* o = e->object();
+    if (!o || !o->isWidgetType() || !static_cast<QWidget*>(o)->isWindow()) return false;
+    if (combo_of_popup(o)) return true;
+    if (combo_of_popup(QApplication::activePopupWidget())) {
+        hid_window_activation = true;
+        return true;
+    }
+    if (!hid_window_activation) return false;
+    hid_window_activation = false;
+    return true;
+}
+
 void update_handler(QAccessibleEvent* e) {
+    if (hide_combo_activation(e)) return;
     if (e->type() == QAccessible::ValueChanged)
         // Only a change made in the closed box: one chosen in the open list is
         // heard as the list item, then as the box when the focus returns.
