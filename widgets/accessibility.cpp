@@ -349,8 +349,21 @@ bool hide_combo_activation(QAccessibleEvent* e) {
     return true;
 }
 
+// A line edit (a spin box's too) drops its selection when the focus leaves it,
+// after the focus has moved: Orca, still on the old field, said "Text
+// unselected." before the next control. Nothing the user did is unselected
+// there, so the change is not passed on; the same change in the focused field
+// (Shift+arrow, a click) still is.
+bool selection_dropped_on_leaving(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::TextSelectionChanged) return false;
+    auto* edit = qobject_cast<QLineEdit*>(e->object());
+    if (!edit || edit->hasFocus()) return false;
+    const auto* change = static_cast<QAccessibleTextSelectionEvent*>(e);
+    return change->selectionStart() == change->selectionEnd();
+}
+
 void update_handler(QAccessibleEvent* e) {
-    if (hide_combo_activation(e)) return;
+    if (hide_combo_activation(e) || selection_dropped_on_leaving(e)) return;
     if (e->type() == QAccessible::ValueChanged)
         // Only a change made in the closed box: one chosen in the open list is
         // heard as the list item, then as the box when the focus returns.

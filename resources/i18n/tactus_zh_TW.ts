@@ -53,7 +53,7 @@
         <translation>無法完成 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/accessibility.cpp" line="39" />
+        <location filename="../../widgets/accessibility.cpp" line="44" />
         <source>Divider between print and braille</source>
         <translation>明眼字與點字的分隔線</translation>
     </message>
@@ -207,7 +207,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="382" />
+        <location filename="../../widgets/editor_widget.cpp" line="385" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -220,6 +220,11 @@
         <location filename="../../widgets/editor_widget.cpp" line="116" />
         <source>Print page break, page %1</source>
         <translation>原書換頁，第 %1 頁</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="381" />
+        <source>blank cell</source>
+        <translation>空方</translation>
     </message>
 </context>
 <context>
@@ -1337,17 +1342,17 @@
 <context>
     <name>tactus::gui::PrintPane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="292" />
+        <location filename="../../widgets/braille_pane.cpp" line="294" />
         <source>Print text</source>
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="301" />
+        <location filename="../../widgets/braille_pane.cpp" line="303" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="300" />
+        <location filename="../../widgets/braille_pane.cpp" line="302" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>

@@ -8,6 +8,8 @@ import xml.etree.ElementTree as ET
 
 T = {
     "typing": "輸入",
+    # Space in the braille pane, echoed as a typed chord is.
+    "blank cell": "空方",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
     # A text file saved in its own encoding.
