@@ -73,62 +73,62 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="73" />
-        <location filename="../../widgets/printer_panel.cpp" line="86" />
+        <location filename="../../widgets/printer_panel.cpp" line="82" />
+        <location filename="../../widgets/printer_panel.cpp" line="95" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="75" />
-        <location filename="../../widgets/printer_panel.cpp" line="87" />
+        <location filename="../../widgets/printer_panel.cpp" line="84" />
+        <location filename="../../widgets/printer_panel.cpp" line="96" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="97" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="79" />
-        <location filename="../../widgets/printer_panel.cpp" line="89" />
+        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="98" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="74" />
+        <location filename="../../widgets/printer_panel.cpp" line="83" />
         <source>held</source>
         <translation>保留中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="76" />
-        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <location filename="../../widgets/printer_panel.cpp" line="85" />
+        <location filename="../../widgets/printer_panel.cpp" line="99" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="77" />
-        <location filename="../../widgets/printer_panel.cpp" line="91" />
+        <location filename="../../widgets/printer_panel.cpp" line="86" />
+        <location filename="../../widgets/printer_panel.cpp" line="100" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="78" />
+        <location filename="../../widgets/printer_panel.cpp" line="87" />
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="163" />
+        <location filename="../../widgets/printer_panel.cpp" line="172" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="165" />
+        <location filename="../../widgets/printer_panel.cpp" line="174" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="167" />
+        <location filename="../../widgets/printer_panel.cpp" line="176" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -1360,640 +1360,646 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="223" />
+        <location filename="../../widgets/printer_panel.cpp" line="232" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="225" />
+        <location filename="../../widgets/printer_panel.cpp" line="234" />
         <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser</source>
         <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="230" />
+        <location filename="../../widgets/printer_panel.cpp" line="239" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="231" />
-        <location filename="../../widgets/printer_panel.cpp" line="640" />
-        <location filename="../../widgets/printer_panel.cpp" line="833" />
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
+        <location filename="../../widgets/printer_panel.cpp" line="654" />
+        <location filename="../../widgets/printer_panel.cpp" line="845" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="233" />
-        <location filename="../../widgets/printer_panel.cpp" line="1154" />
+        <location filename="../../widgets/printer_panel.cpp" line="242" />
+        <location filename="../../widgets/printer_panel.cpp" line="1166" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="235" />
+        <location filename="../../widgets/printer_panel.cpp" line="244" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="240" />
+        <location filename="../../widgets/printer_panel.cpp" line="249" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="245" />
+        <location filename="../../widgets/printer_panel.cpp" line="254" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="246" />
+        <location filename="../../widgets/printer_panel.cpp" line="255" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="256" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="257" />
+        <location filename="../../widgets/printer_panel.cpp" line="266" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="258" />
+        <location filename="../../widgets/printer_panel.cpp" line="267" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="259" />
+        <location filename="../../widgets/printer_panel.cpp" line="268" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="265" />
+        <location filename="../../widgets/printer_panel.cpp" line="274" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="266" />
+        <location filename="../../widgets/printer_panel.cpp" line="275" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="270" />
+        <location filename="../../widgets/printer_panel.cpp" line="279" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="275" />
+        <location filename="../../widgets/printer_panel.cpp" line="284" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="285" />
+        <location filename="../../widgets/printer_panel.cpp" line="294" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="286" />
+        <location filename="../../widgets/printer_panel.cpp" line="295" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="288" />
+        <location filename="../../widgets/printer_panel.cpp" line="297" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="289" />
+        <location filename="../../widgets/printer_panel.cpp" line="298" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="290" />
+        <location filename="../../widgets/printer_panel.cpp" line="299" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="291" />
+        <location filename="../../widgets/printer_panel.cpp" line="300" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="293" />
+        <location filename="../../widgets/printer_panel.cpp" line="302" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="294" />
+        <location filename="../../widgets/printer_panel.cpp" line="303" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="300" />
+        <location filename="../../widgets/printer_panel.cpp" line="309" />
         <source>The plan's own speed</source>
         <translation>依列印計畫的實際速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="301" />
+        <location filename="../../widgets/printer_panel.cpp" line="310" />
         <source>10 times faster</source>
         <translation>快 10 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="302" />
+        <location filename="../../widgets/printer_panel.cpp" line="311" />
         <source>As fast as the computer can</source>
         <translation>以電腦能達到的最快速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="303" />
+        <location filename="../../widgets/printer_panel.cpp" line="312" />
         <source>Simulator speed</source>
         <translation>模擬器速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="305" />
+        <location filename="../../widgets/printer_panel.cpp" line="314" />
         <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
         <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="307" />
+        <location filename="../../widgets/printer_panel.cpp" line="316" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="314" />
+        <location filename="../../widgets/printer_panel.cpp" line="323" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="334" />
+        <location filename="../../widgets/printer_panel.cpp" line="343" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="389" />
+        <location filename="../../widgets/printer_panel.cpp" line="398" />
         <source>Built-in simulated embosser</source>
         <translation>內建模擬點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="392" />
+        <location filename="../../widgets/printer_panel.cpp" line="401" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="393" />
+        <location filename="../../widgets/printer_panel.cpp" line="402" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="396" />
+        <location filename="../../widgets/printer_panel.cpp" line="405" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="411" />
-        <source>Listing CUPS queues: %1</source>
-        <translation>列出 CUPS 佇列：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="417" />
+        <location filename="../../widgets/printer_panel.cpp" line="427" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="422" />
+        <location filename="../../widgets/printer_panel.cpp" line="432" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="425" />
+        <location filename="../../widgets/printer_panel.cpp" line="435" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="432" />
+        <location filename="../../widgets/printer_panel.cpp" line="442" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="466" />
+        <location filename="../../widgets/printer_panel.cpp" line="480" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="478" />
+        <location filename="../../widgets/printer_panel.cpp" line="492" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="501" />
+        <location filename="../../widgets/printer_panel.cpp" line="515" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="506" />
+        <location filename="../../widgets/printer_panel.cpp" line="520" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="516" />
+        <location filename="../../widgets/printer_panel.cpp" line="530" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="527" />
+        <location filename="../../widgets/printer_panel.cpp" line="541" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="531" />
+        <location filename="../../widgets/printer_panel.cpp" line="545" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="538" />
+        <location filename="../../widgets/printer_panel.cpp" line="552" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="542" />
+        <location filename="../../widgets/printer_panel.cpp" line="556" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="558" />
+        <location filename="../../widgets/printer_panel.cpp" line="572" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="569" />
+        <location filename="../../widgets/printer_panel.cpp" line="583" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="581" />
+        <location filename="../../widgets/printer_panel.cpp" line="595" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="591" />
+        <location filename="../../widgets/printer_panel.cpp" line="605" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="596" />
+        <location filename="../../widgets/printer_panel.cpp" line="610" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="609" />
+        <location filename="../../widgets/printer_panel.cpp" line="623" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="621" />
+        <location filename="../../widgets/printer_panel.cpp" line="635" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="674" />
+        <location filename="../../widgets/printer_panel.cpp" line="688" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="686" />
+        <location filename="../../widgets/printer_panel.cpp" line="700" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="713" />
+        <location filename="../../widgets/printer_panel.cpp" line="727" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="714" />
+        <location filename="../../widgets/printer_panel.cpp" line="728" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="741" />
+        <location filename="../../widgets/printer_panel.cpp" line="755" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="748" />
+        <location filename="../../widgets/printer_panel.cpp" line="762" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="751" />
+        <location filename="../../widgets/printer_panel.cpp" line="765" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="757" />
+        <location filename="../../widgets/printer_panel.cpp" line="771" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="762" />
+        <location filename="../../widgets/printer_panel.cpp" line="776" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="775" />
+        <location filename="../../widgets/printer_panel.cpp" line="787" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="776" />
+        <location filename="../../widgets/printer_panel.cpp" line="788" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel.cpp" line="801" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="791" />
+        <location filename="../../widgets/printer_panel.cpp" line="803" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="792" />
+        <location filename="../../widgets/printer_panel.cpp" line="804" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="794" />
+        <location filename="../../widgets/printer_panel.cpp" line="806" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="927" />
+        <location filename="../../widgets/printer_panel.cpp" line="939" />
         <source>%1 paused</source>
         <translation>%1 已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="929" />
+        <location filename="../../widgets/printer_panel.cpp" line="941" />
         <source>%1 resumed</source>
         <translation>%1 已繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1038" />
-        <location filename="../../widgets/printer_panel.cpp" line="1041" />
+        <location filename="../../widgets/printer_panel.cpp" line="1050" />
+        <location filename="../../widgets/printer_panel.cpp" line="1053" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1041" />
+        <location filename="../../widgets/printer_panel.cpp" line="1053" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1042" />
+        <location filename="../../widgets/printer_panel.cpp" line="1054" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1051" />
+        <location filename="../../widgets/printer_panel.cpp" line="1063" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1110" />
-        <location filename="../../widgets/printer_panel.cpp" line="1147" />
+        <location filename="../../widgets/printer_panel.cpp" line="1122" />
+        <location filename="../../widgets/printer_panel.cpp" line="1159" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1115" />
+        <location filename="../../widgets/printer_panel.cpp" line="1127" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1123" />
+        <location filename="../../widgets/printer_panel.cpp" line="1135" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1147" />
+        <location filename="../../widgets/printer_panel.cpp" line="1159" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1158" />
+        <location filename="../../widgets/printer_panel.cpp" line="1170" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1161" />
+        <location filename="../../widgets/printer_panel.cpp" line="1173" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1162" />
+        <location filename="../../widgets/printer_panel.cpp" line="1174" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1167" />
+        <location filename="../../widgets/printer_panel.cpp" line="1179" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1170" />
+        <location filename="../../widgets/printer_panel.cpp" line="1182" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1221" />
+        <location filename="../../widgets/printer_panel.cpp" line="1233" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1246" />
+        <location filename="../../widgets/printer_panel.cpp" line="1258" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1247" />
+        <location filename="../../widgets/printer_panel.cpp" line="1259" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1265" />
+        <location filename="../../widgets/printer_panel.cpp" line="1277" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1269" />
+        <location filename="../../widgets/printer_panel.cpp" line="1281" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1275" />
+        <location filename="../../widgets/printer_panel.cpp" line="1287" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1279" />
+        <location filename="../../widgets/printer_panel.cpp" line="1291" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1283" />
+        <location filename="../../widgets/printer_panel.cpp" line="1295" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1287" />
+        <location filename="../../widgets/printer_panel.cpp" line="1299" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="582" />
+        <location filename="../../widgets/printer_panel.cpp" line="596" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="229" />
+        <location filename="../../widgets/printer_panel.cpp" line="238" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="630" />
+        <location filename="../../widgets/printer_panel.cpp" line="644" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="625" />
+        <location filename="../../widgets/printer_panel.cpp" line="639" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="637" />
+        <location filename="../../widgets/printer_panel.cpp" line="66" />
+        <source>%1: %2</source>
+        <comment>a message and its detail</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="421" />
+        <source>Cannot list the CUPS queues on %1: %2</source>
+        <translation>無法列出 CUPS 伺服器 %1 上的佇列：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="651" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="657" />
+        <location filename="../../widgets/printer_panel.cpp" line="671" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="661" />
+        <location filename="../../widgets/printer_panel.cpp" line="675" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="680" />
+        <location filename="../../widgets/printer_panel.cpp" line="694" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="834" />
+        <location filename="../../widgets/printer_panel.cpp" line="846" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="863" />
+        <location filename="../../widgets/printer_panel.cpp" line="875" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="917" />
+        <location filename="../../widgets/printer_panel.cpp" line="929" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="924" />
-        <location filename="../../widgets/printer_panel.cpp" line="1119" />
+        <location filename="../../widgets/printer_panel.cpp" line="936" />
+        <location filename="../../widgets/printer_panel.cpp" line="1131" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="931" />
+        <location filename="../../widgets/printer_panel.cpp" line="943" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="968" />
+        <location filename="../../widgets/printer_panel.cpp" line="980" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="970" />
+        <location filename="../../widgets/printer_panel.cpp" line="982" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1031" />
+        <location filename="../../widgets/printer_panel.cpp" line="1043" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="662" />
+        <location filename="../../widgets/printer_panel.cpp" line="676" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="940" />
+        <location filename="../../widgets/printer_panel.cpp" line="952" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="941" />
-        <location filename="../../widgets/printer_panel.cpp" line="945" />
+        <location filename="../../widgets/printer_panel.cpp" line="953" />
+        <location filename="../../widgets/printer_panel.cpp" line="957" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="918" />
+        <location filename="../../widgets/printer_panel.cpp" line="930" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="960" />
-        <location filename="../../widgets/printer_panel.cpp" line="990" />
+        <location filename="../../widgets/printer_panel.cpp" line="972" />
+        <location filename="../../widgets/printer_panel.cpp" line="1002" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="968" />
+        <location filename="../../widgets/printer_panel.cpp" line="980" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1226" />
+        <location filename="../../widgets/printer_panel.cpp" line="1238" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1236" />
+        <location filename="../../widgets/printer_panel.cpp" line="1248" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
@@ -2323,6 +2329,12 @@
         <location filename="../../widgets/sheet_preview.cpp" line="239" />
         <source>dots %1</source>
         <translation>點 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/sheet_preview.cpp" line="239" />
+        <source>%1: %2</source>
+        <comment>a cell's place and its dots</comment>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <location filename="../../widgets/sheet_preview.cpp" line="244" />

@@ -10,6 +10,9 @@ T = {
     "typing": "輸入",
     # Space in the braille pane, echoed as a typed chord is.
     "blank cell": "空方",
+    # A message and its detail, a place and what is there: the full-width colon.
+    "%1: %2": "%1：%2",
+    "Cannot list the CUPS queues on %1: %2": "無法列出 CUPS 伺服器 %1 上的佇列：%2",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
     # A text file saved in its own encoding.
@@ -254,7 +257,6 @@ T = {
     "held": "保留中", "aborted": "已中止", "sending": "傳送中", "not sent": "未送出", "cancelling": "取消中",
     "The built-in simulated embosser, on this computer": "內建的模擬點字印表機，在本電腦上",
     "An embosser on a cable to this computer": "以纜線連接本電腦的點字印表機",
-    "Listing CUPS queues: %1": "列出 CUPS 佇列：%1",
     "Network queue %1 on %2": "網路佇列 %1（位於 %2）",
     "Network queue %1 on the CUPS server %2": "網路佇列 %1，位於 CUPS 伺服器 %2",
     "A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile":
