@@ -2007,283 +2007,371 @@
 <context>
     <name>tactus::gui::ProfileEditor</name>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="30" />
+        <location filename="../../widgets/profile_editor.cpp" line="78" />
         <source>Paper</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="31" />
+        <location filename="../../widgets/profile_editor.cpp" line="79" />
         <source>Width</source>
         <translation>寬度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="31" />
-        <location filename="../../widgets/profile_editor.cpp" line="32" />
-        <location filename="../../widgets/profile_editor.cpp" line="33" />
-        <location filename="../../widgets/profile_editor.cpp" line="34" />
-        <location filename="../../widgets/profile_editor.cpp" line="36" />
-        <location filename="../../widgets/profile_editor.cpp" line="37" />
-        <location filename="../../widgets/profile_editor.cpp" line="38" />
-        <location filename="../../widgets/profile_editor.cpp" line="39" />
-        <location filename="../../widgets/profile_editor.cpp" line="40" />
-        <location filename="../../widgets/profile_editor.cpp" line="42" />
-        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <location filename="../../widgets/profile_editor.cpp" line="79" />
+        <location filename="../../widgets/profile_editor.cpp" line="80" />
+        <location filename="../../widgets/profile_editor.cpp" line="81" />
+        <location filename="../../widgets/profile_editor.cpp" line="82" />
+        <location filename="../../widgets/profile_editor.cpp" line="84" />
+        <location filename="../../widgets/profile_editor.cpp" line="85" />
+        <location filename="../../widgets/profile_editor.cpp" line="86" />
+        <location filename="../../widgets/profile_editor.cpp" line="87" />
+        <location filename="../../widgets/profile_editor.cpp" line="88" />
+        <location filename="../../widgets/profile_editor.cpp" line="90" />
+        <location filename="../../widgets/profile_editor.cpp" line="96" />
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="32" />
+        <location filename="../../widgets/profile_editor.cpp" line="80" />
         <source>Height</source>
         <translation>高度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="33" />
+        <location filename="../../widgets/profile_editor.cpp" line="81" />
         <source>Left margin</source>
         <translation>左邊界</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="34" />
+        <location filename="../../widgets/profile_editor.cpp" line="82" />
         <source>Top margin</source>
         <translation>上邊界</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="35" />
+        <location filename="../../widgets/profile_editor.cpp" line="83" />
         <source>Braille geometry</source>
         <translation>點字幾何</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="36" />
+        <location filename="../../widgets/profile_editor.cpp" line="84" />
         <source>Dot pitch</source>
         <translation>點距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="37" />
+        <location filename="../../widgets/profile_editor.cpp" line="85" />
         <source>Cell pitch</source>
         <translation>方距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="38" />
+        <location filename="../../widgets/profile_editor.cpp" line="86" />
         <source>Line pitch</source>
         <translation>行距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="39" />
+        <location filename="../../widgets/profile_editor.cpp" line="87" />
         <source>Back offset across</source>
         <translation>背面水平偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="40" />
+        <location filename="../../widgets/profile_editor.cpp" line="88" />
         <source>Back offset down</source>
         <translation>背面垂直偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="41" />
+        <location filename="../../widgets/profile_editor.cpp" line="89" />
         <source>Head and carriage</source>
         <translation>打點頭與字車</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="42" />
+        <location filename="../../widgets/profile_editor.cpp" line="90" />
         <source>Concave hammer offset</source>
         <translation>凹錘偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="43" />
+        <location filename="../../widgets/profile_editor.cpp" line="91" />
         <source>Hammer dwell</source>
         <translation>擊錘停留</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="43" />
+        <location filename="../../widgets/profile_editor.cpp" line="24" />
+        <location filename="../../widgets/profile_editor.cpp" line="91" />
         <source>s</source>
         <translation>秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="44" />
+        <location filename="../../widgets/profile_editor.cpp" line="25" />
+        <source>steps/s</source>
+        <translation>步/秒</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="32" />
+        <source>%1 %2</source>
+        <comment>a number and its unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <source>is %1, must be between %2 and %3</source>
+        <translation>為 %1，必須介於 %2 與 %3 之間</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <source>is %1, must be above 0</source>
+        <translation>為 %1，必須大於 0</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <source>is %1, must not exceed %2</source>
+        <translation>為 %1，不可超過 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <source>is %1, below the physical minimum of %2</source>
+        <translation>為 %1，低於物理下限 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <source>is %1, below %2: motion that slow would take days to plan and to emboss</source>
+        <translation>為 %1，低於 %2：這麼慢的運動要花好幾天規劃與列印</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <source>needs %1, more than the controller can time (%2, 8 timer ticks per step)</source>
+        <translation>需要 %1，超過控制器能計時的上限（%2，每步 8 個計時器刻度）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <source>is %1, must exceed the dot pitch (%2) so neighbouring cells stay apart</source>
+        <translation>為 %1，必須大於點距（%2），相鄰的點字方才不會相連</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="53" />
+        <source>is %1, must exceed the cell height (%2)</source>
+        <translation>為 %1，必須大於點字方的高度（%2）</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="55" />
+        <source>%n cell(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation><numerusform>%n 方需要 %1，但紙張在邊界之間只有 %2</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="57" />
+        <source>%n line(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation><numerusform>%n 行需要 %1，但紙張在邊界之間只有 %2</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="58" />
+        <source>is %1, which puts back-side dots off the paper</source>
+        <translation>為 %1，背面的點會落在紙張之外</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="59" />
+        <source>is %1, wider than the paper (%2): one hammer could never reach it</source>
+        <translation>為 %1，比紙張（%2）還寬：有一支擊錘永遠打不到</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="61" />
+        <source>is %1, finer than half a carriage step (%2): unreachable at any speed</source>
+        <translation>為 %1，小於字車半步（%2）：任何速度都達不到</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="63" />
+        <source>is %1</source>
+        <translation>為 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="92" />
         <source>Carriage steps</source>
         <translation>字車步數</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="44" />
+        <location filename="../../widgets/profile_editor.cpp" line="92" />
         <source>steps/mm</source>
         <translation>步/mm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <location filename="../../widgets/profile_editor.cpp" line="93" />
         <source>Carriage top speed</source>
         <translation>字車最高速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <location filename="../../widgets/profile_editor.cpp" line="93" />
         <source>mm/s</source>
         <translation>mm/s</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <location filename="../../widgets/profile_editor.cpp" line="94" />
         <source>Carriage acceleration</source>
         <translation>字車加速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <location filename="../../widgets/profile_editor.cpp" line="94" />
         <source>mm/s²</source>
         <translation>mm/s²</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <location filename="../../widgets/profile_editor.cpp" line="95" />
         <source>Carriage jerk</source>
         <translation>字車加加速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <location filename="../../widgets/profile_editor.cpp" line="95" />
         <source>mm/s³</source>
         <translation>mm/s³</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <location filename="../../widgets/profile_editor.cpp" line="96" />
         <source>Carriage backlash</source>
         <translation>字車背隙</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <location filename="../../widgets/profile_editor.cpp" line="97" />
         <source>Step timing tolerance</source>
         <translation>步進時間容許誤差</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <location filename="../../widgets/profile_editor.cpp" line="97" />
         <source>of a step interval</source>
         <translation>個步進間隔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="50" />
+        <location filename="../../widgets/profile_editor.cpp" line="98" />
         <source>Dynamics and vibration</source>
         <translation>動態與振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <location filename="../../widgets/profile_editor.cpp" line="99" />
         <source>Head mass</source>
         <translation>打點頭質量</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <location filename="../../widgets/profile_editor.cpp" line="99" />
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <location filename="../../widgets/profile_editor.cpp" line="100" />
         <source>Belt stiffness</source>
         <translation>皮帶剛性</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <location filename="../../widgets/profile_editor.cpp" line="100" />
         <source>N/m</source>
         <translation>N/m</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="53" />
+        <location filename="../../widgets/profile_editor.cpp" line="101" />
         <source>Damping ratio</source>
         <translation>阻尼比</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="54" />
+        <location filename="../../widgets/profile_editor.cpp" line="102" />
         <source>Position tolerance at the strike</source>
         <translation>擊點時的位置容許誤差</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="54" />
+        <location filename="../../widgets/profile_editor.cpp" line="102" />
         <source>µm</source>
         <translation>µm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="59" />
+        <location filename="../../widgets/profile_editor.cpp" line="107" />
         <source>Profile fields</source>
         <translation>設定檔欄位</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="63" />
+        <location filename="../../widgets/profile_editor.cpp" line="111" />
         <source>Profile check</source>
         <translation>設定檔檢查</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="64" />
+        <location filename="../../widgets/profile_editor.cpp" line="112" />
         <source>&amp;Load profile...</source>
         <translation>載入設定檔(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="65" />
+        <location filename="../../widgets/profile_editor.cpp" line="113" />
         <source>Save pr&amp;ofile...</source>
         <translation>儲存設定檔(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="66" />
+        <location filename="../../widgets/profile_editor.cpp" line="114" />
         <source>&amp;Defaults</source>
         <translation>預設值(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="68" />
+        <location filename="../../widgets/profile_editor.cpp" line="116" />
         <source>Load printer profile</source>
         <translation>載入印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="68" />
-        <location filename="../../widgets/profile_editor.cpp" line="72" />
+        <location filename="../../widgets/profile_editor.cpp" line="116" />
+        <location filename="../../widgets/profile_editor.cpp" line="120" />
         <source>Profiles (*.json)</source>
         <translation>設定檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="72" />
+        <location filename="../../widgets/profile_editor.cpp" line="120" />
         <source>Save printer profile</source>
         <translation>儲存印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="95" />
+        <location filename="../../widgets/profile_editor.cpp" line="143" />
         <source>%1 to %2 %3</source>
         <translation>%1 到 %2 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="96" />
+        <location filename="../../widgets/profile_editor.cpp" line="144" />
         <source>%1 in %2</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="97" />
+        <location filename="../../widgets/profile_editor.cpp" line="145" />
         <source>Range %1; profile field %2</source>
         <translation>範圍 %1；設定檔欄位 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="107" />
+        <location filename="../../widgets/profile_editor.cpp" line="148" />
+        <source>%1:</source>
+        <comment>a form field's label</comment>
+        <translation>%1：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="155" />
         <source>Invalid: %1. %2</source>
         <translation>無效：%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="142" />
+        <location filename="../../widgets/profile_editor.cpp" line="190" />
         <source>%1 %2. The plan and preview keep the last valid profile.</source>
         <translation>%1 %2。規劃與預覽仍使用上一個有效的設定檔。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="158" />
+        <location filename="../../widgets/profile_editor.cpp" line="205" />
         <source>Profile is valid.</source>
         <translation>設定檔有效。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="160" />
+        <location filename="../../widgets/profile_editor.cpp" line="207" />
         <source>Profile is valid again.</source>
         <translation>設定檔又有效了。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="167" />
+        <location filename="../../widgets/profile_editor.cpp" line="214" />
         <source>Cannot load %1: %2</source>
         <translation>無法載入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="173" />
+        <location filename="../../widgets/profile_editor.cpp" line="220" />
         <source>Loaded profile %1</source>
         <translation>已載入設定檔 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="179" />
+        <location filename="../../widgets/profile_editor.cpp" line="226" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="182" />
+        <location filename="../../widgets/profile_editor.cpp" line="229" />
         <source>Saved profile to %1</source>
         <translation>已將設定檔儲存到 %1</translation>
     </message>
