@@ -345,14 +345,14 @@ def scenario_controls(tactus, sample, work):
         s.launch([tactus, "--no-recovery", sample])
         # Space in the braille pane types a blank cell, echoed as a chord is
         # (Orca says nothing for the blank braille pattern itself).
-        s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"])
-        s.step("Space echoes the blank cell", keys=["space"], expect=[r"blank cell"], once=[r"blank cell"])
-        s.step("Ctrl+Z takes it back", keys=["ctrl+z"], expect=[r"Undone"])
+        s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"], quiet=0.8)
+        s.step("Space echoes the blank cell", keys=["space"], expect=[r"blank cell"], once=[r"blank cell"], quiet=0.8)
+        s.step("Ctrl+Z takes it back", keys=["ctrl+z"], expect=[r"Undone"], quiet=0.8)
         # The braille table: its list opens on the current table.
         s.step("Ctrl+T opens the table list at the current table", keys=["ctrl+t"],
-               expect=[r"Table: combo box", table], forbid=[frame])
+               expect=[r"Table: combo box", table], forbid=[frame], quiet=0.8)
         s.step("Escape closes the list and says the value", keys=["Escape"], expect=[r"Table: combo box", table],
-               forbid=[frame])
+               forbid=[frame], quiet=0.8)
         # The simulator's speed, a combo box the window says nothing about itself.
         s.key("ctrl+7")
         for i in range(16):
@@ -364,23 +364,23 @@ def scenario_controls(tactus, sample, work):
         if not any(re.search(r"As fast as the computer can", p) for p in rec.phrases):
             raise StepFailed(f"the Speed box was reached without its value: {rec.phrases}")
         s.step("Up in the closed box says the new value", keys=["Up"], expect=[r"10 times faster"],
-               once=[r"10 times faster"])
-        s.step("F4 opens the list at the current value", keys=["F4"], expect=[r"10 times faster"], forbid=[frame])
-        s.step("Escape closes the list", keys=["Escape"], expect=[r"Speed: combo box", r"10 times faster"], forbid=[frame])
+               once=[r"10 times faster"], quiet=0.8)
+        s.step("F4 opens the list at the current value", keys=["F4"], expect=[r"10 times faster"], forbid=[frame], quiet=0.8)
+        s.step("Escape closes the list", keys=["Escape"], expect=[r"Speed: combo box", r"10 times faster"], forbid=[frame], quiet=0.8)
         # A profile error: the bad field (the left margin, once the paper is
         # 1 mm wide) is said to be invalid when the focus comes back to it.
-        s.step("Ctrl+6 goes to the paper width", keys=["ctrl+6"], expect=[r"Width in mm"])
+        s.step("Ctrl+6 goes to the paper width", keys=["ctrl+6"], expect=[r"Width in mm"], quiet=0.8)
         s.step("a 1 mm wide paper is an error", keys=["ctrl+a"], type_text="1",
-               expect=[r"Left margin in mm is 25 mm, must be between 0 and 1 mm"])
+               expect=[r"Left margin in mm is 25 mm, must be between 0 and 1 mm"], quiet=0.8)
         # Leaving a field drops its selection, which is not the user's doing:
         # Orca once said "Text unselected." before each next field.
-        s.step("Tab to the height", keys=["Tab"], expect=[r"Height in mm"], forbid=[r"Invalid", r"unselected"])
+        s.step("Tab to the height", keys=["Tab"], expect=[r"Height in mm"], forbid=[r"Invalid", r"unselected"], quiet=0.8)
         s.step("Tab to the left margin says it is invalid", keys=["Tab"], expect=[r"Left margin in mm", r"Invalid"],
-               forbid=[r"unselected"])
-        s.step("back to the width", keys=["shift+Tab", "shift+Tab"], expect=[r"Width in mm"])
-        s.step("the fix is heard", keys=["ctrl+a"], type_text="210", expect=[r"Profile is valid again"])
+               forbid=[r"unselected"], quiet=0.8)
+        s.step("back to the width", keys=["shift+Tab", "shift+Tab"], expect=[r"Width in mm"], quiet=0.8)
+        s.step("the fix is heard", keys=["ctrl+a"], type_text="210", expect=[r"Profile is valid again"], quiet=0.8)
         s.step("the left margin is no longer invalid", keys=["Tab", "Tab"], expect=[r"Left margin in mm"],
-               forbid=[r"Invalid"])
+               forbid=[r"Invalid"], quiet=0.8)
         print(s.summary())
     return 0
 
