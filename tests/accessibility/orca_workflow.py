@@ -316,7 +316,10 @@ def scenario_corners(tactus, sample, work, language="en", lines=24):
         # Orca 43 reads a single cell after a word move here even though the pane
         # answers word reads with the whole braille word (atspi_text_walk.py and
         # text_units_test check the units); what is held here is that every move
-        # is heard and never the paragraph.
+        # is heard and never the paragraph. The cause is Orca's: its debug log
+        # shows the caret move handled between the Control press and the Right
+        # press, so Orca takes the move for a plain Right and reads the character
+        # at the caret. The print text shows the same (a letter, not the word).
         print(f"braille words heard: {words}", flush=True)
 
         # Every menu of the bar: each Right names the next menu's item, never the document.
