@@ -293,16 +293,17 @@ protected:
             return false;
         auto* w = static_cast<QWidget*>(target);
         if (!w->isWindow() || w->windowType() == Qt::Popup) return false;
-        // A combo box's list takes the activation too: "Tactus frame." was said
-        // again at each list's opening or closing. Its focus events pass (see
-        // popup_open).
-        const bool any_popup = popup_open() || combo_of_popup(QApplication::activePopupWidget());
+        // Menus only: a combo box's list deactivates the window but its closing
+        // sends no activation back, so hiding the one would hide the next
+        // window's activation (a dialog's, which then flooded Orca). The list's
+        // activation changes are held back as accessible state changes instead
+        // (hide_combo_activation).
         if (type == QEvent::WindowDeactivate) {
-            if (!any_popup) return false;
+            if (!popup_open()) return false;
             hid_deactivation_ = true;
             return true;
         }
-        if (any_popup) return true;
+        if (popup_open()) return true;
         if (!hid_deactivation_) return false;
         hid_deactivation_ = false;
         return true;
@@ -349,15 +350,17 @@ bool hide_combo_activation(QAccessibleEvent* e) {
     return true;
 }
 
-// A line edit (a spin box's too) drops its selection when the focus leaves it,
+// A spin box's line edit drops its selection when the focus leaves it,
 // after the focus has moved: Orca, still on the old field, said "Text
 // unselected." before the next control. Nothing the user did is unselected
 // there, so the change is not passed on; the same change in the focused field
 // (Shift+arrow, a click) still is.
 bool selection_dropped_on_leaving(QAccessibleEvent* e) {
     if (e->type() != QAccessible::TextSelectionChanged) return false;
+    // Spin boxes only, where the stray phrase was heard: held back for every
+    // line edit, opening the export dialog flooded Orca (orca_open).
     auto* edit = qobject_cast<QLineEdit*>(e->object());
-    if (!edit || edit->hasFocus()) return false;
+    if (!edit || edit->hasFocus() || !qobject_cast<QAbstractSpinBox*>(edit->parentWidget())) return false;
     const auto* change = static_cast<QAccessibleTextSelectionEvent*>(e);
     return change->selectionStart() == change->selectionEnd();
 }
