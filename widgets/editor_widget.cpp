@@ -601,6 +601,9 @@ void EditorWidget::braille_typed(const document::BrailleLine& cells) {
     const auto to = end_block == start_block ? static_cast<std::size_t>(c.selectionEnd() - start_block.position())
                                              : static_cast<std::size_t>(start_block.length() - 1);
     edit_braille(line, from, to, cells);
+    // Space types a blank cell: echoed as a chord is, since a screen reader
+    // says nothing for the blank braille pattern.
+    if (cells.size() == 1 && cells.front().blank()) Q_EMIT cell_entered(tr("blank cell"));
     if (cells.size() == 1 && !cells.front().blank() && layout_) {
         // "dots 1 2", not "1-2": a screen reader reads the dash as "minus" or a range.
         const auto dots = QString::fromStdString(document::dot_numbers(cells.front())).replace(QLatin1Char('-'), QLatin1Char(' '));

@@ -61,10 +61,19 @@ QString qs(const std::string& s) { return QString::fromStdString(s); }
 // Item data of the device picker: a CUPS queue rather than a cable.
 constexpr int kNetworkRole = Qt::UserRole + 1;
 
-// What discovery of the CUPS queues brings back to the GUI thread.
+// A message and its detail ("Embossed a.md: all 120 strikes checked"), joined
+// the interface language's way: Chinese takes a full-width colon and no space.
+QString joined(const QString& head, const QString& detail) {
+    return detail.isEmpty() ? head : PrinterPanel::tr("%1: %2", "a message and its detail").arg(head, detail);
+}
+
+// What discovery of the CUPS queues brings back to the GUI thread: the queues,
+// or the server that did not answer and CUPS's reason (worded in the panel).
 struct Discovered {
     std::vector<ipp::RemoteQueue> queues;
-    std::string error;
+    bool failed = false;
+    std::string server;
+    std::string reason;
 };
 
 // A job on a CUPS queue in the words of the job view (the local ones where
@@ -393,7 +402,8 @@ void PrinterPanel::discover_queues() {
         watcher->deleteLater();
         discovering_ = false;
         const auto found = watcher->result();
-        if (!found.error.empty()) log(tr("Listing CUPS queues: %1").arg(qs(found.error)));
+        if (found.failed)
+            log(tr("Cannot list the CUPS queues on %1: %2").arg(qs(found.server), qs(found.reason)));
         const auto current = selected_device();
         for (int i = devices_->count() - 1; i >= 0; --i)
             if (devices_->itemData(i, kNetworkRole).toBool()) devices_->removeItem(i);
@@ -413,13 +423,17 @@ void PrinterPanel::discover_queues() {
             devices_->setItemData(i, qs(q.uri), Qt::ToolTipRole);
         }
         if (!current.isEmpty()) select_device(current);
-        if (found.error.empty())
+        if (!found.failed)
             log(tr("%n Tactus queue(s) found on CUPS servers", nullptr, static_cast<int>(found.queues.size())));
     });
     watcher->setFuture(QtConcurrent::run([] {
         Discovered d;
         if (auto q = ipp::visible_tactus_queues()) d.queues = std::move(*q);
-        else d.error = q.error().to_string();
+        else {
+            d.failed = true;
+            d.server = q.error().where;
+            d.reason = q.error().message;
+        }
         return d;
     }));
 }
@@ -744,9 +758,7 @@ void PrinterPanel::follow_queue_jobs() {
                 }
             }
             if (s.state != ipp::RemoteJobState::processing || s.message != (j.status ? j.status->message : ""))
-                log(tr("Job %1 on %2: %3").arg(j.id).arg(j.queue, remote_state_text(s.state) +
-                                                                 (message_text.isEmpty() ? QString()
-                                                                                         : QStringLiteral(": ") + message_text)) +
+                log(tr("Job %1 on %2: %3").arg(j.id).arg(j.queue, joined(remote_state_text(s.state), message_text)) +
                     (s.reasons.empty() ? QString() : QStringLiteral(" (%1)").arg(qs(s.reasons))));
             j.status = s;
             changed = true;
@@ -972,7 +984,7 @@ void PrinterPanel::check_strikes(const spool::JobRecord& j) {
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, title, id] {
         const auto check = watcher->result();
         watcher->deleteLater();
-        const auto text = tr("Embossed %1").arg(title) + (check.isEmpty() ? QString() : QStringLiteral(": ") + check);
+        const auto text = joined(tr("Embossed %1").arg(title), check);
         log(text);
         Q_EMIT message(text, false);
         Q_EMIT job_finished(id, true, text);
@@ -1011,7 +1023,7 @@ void PrinterPanel::show_jobs() {
         set_text(row, col_job, QString::number(j.id));
         set_text(row, col_document, qs(j.title));
         set_text(row, col_printer, qs(j.printer));
-        set_text(row, col_state, state_text(j.state) + (j.reason.empty() ? QString() : QStringLiteral(": ") + qs(j.reason)));
+        set_text(row, col_state, joined(state_text(j.state), qs(j.reason)));
         set_text(row, col_sheet, s.sheet ? QString::number(s.sheet) : QString());
         // The bar moves in tenths: its value is what a screen reader reads.
         bar_at(row, tr("Progress of %1").arg(qs(j.title)), s.percent == 100 ? 100 : s.percent / 10 * 10);
@@ -1028,7 +1040,7 @@ void PrinterPanel::show_jobs() {
         if (j.cancelling && st && !st->ended()) state = tr("cancelling");
         const auto said = st ? (st->ended() ? st->why_ended() : st->message) : std::string();
         const auto why = !said.empty() ? qs(said) : j.error;
-        set_text(row, col_state, why.isEmpty() ? state : state + QStringLiteral(": ") + why);
+        set_text(row, col_state, joined(state, why));
         const bool processing = st && st->state == ipp::RemoteJobState::processing;
         set_text(row, col_sheet, processing ? QString::number(std::max(st->sheets_completed, 0) + 1) : QString());
         const int pct = st && st->state == ipp::RemoteJobState::completed ? 100
@@ -1098,7 +1110,7 @@ void PrinterPanel::append_events() {
     for (const auto& e : *events) {
         if (e.id <= last_event_) continue;
         last_event_ = e.id;
-        log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + qs(e.kind) + QStringLiteral(": ") + qs(e.message));
+        log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + joined(qs(e.kind), qs(e.message)));
         if (!e.job || !news) continue;
         if (e.kind == "fault") {
             if (!faults.count(*e.job)) order.push_back(*e.job);
@@ -1153,7 +1165,7 @@ void PrinterPanel::update_status() {
                 doing = tr("%1 %2").arg(state_text(j.state), qs(j.title));
                 break;
             }
-        text = tr("Printer %1, %2").arg(qs(printer_), who) + (doing.isEmpty() ? QString() : QStringLiteral(": ") + doing);
+        text = joined(tr("Printer %1, %2").arg(qs(printer_), who), doing);
         if (!status_.isEmpty() && doing.isEmpty()) text += QStringLiteral(". ") + status_;
     }
     if (status_label_->text() != text) status_label_->setText(text);  // an unchanged text sends no event

@@ -53,7 +53,7 @@
         <translation>無法完成 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/accessibility.cpp" line="42" />
+        <location filename="../../widgets/accessibility.cpp" line="44" />
         <source>Divider between print and braille</source>
         <translation>明眼字與點字的分隔線</translation>
     </message>
@@ -73,67 +73,67 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="74" />
-        <location filename="../../widgets/printer_panel.cpp" line="87" />
+        <location filename="../../widgets/printer_panel.cpp" line="83" />
+        <location filename="../../widgets/printer_panel.cpp" line="96" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="76" />
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel.cpp" line="85" />
+        <location filename="../../widgets/printer_panel.cpp" line="97" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="89" />
+        <location filename="../../widgets/printer_panel.cpp" line="98" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="80" />
-        <location filename="../../widgets/printer_panel.cpp" line="90" />
+        <location filename="../../widgets/printer_panel.cpp" line="89" />
+        <location filename="../../widgets/printer_panel.cpp" line="99" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="75" />
+        <location filename="../../widgets/printer_panel.cpp" line="84" />
         <source>held</source>
         <translation>保留中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="77" />
-        <location filename="../../widgets/printer_panel.cpp" line="91" />
+        <location filename="../../widgets/printer_panel.cpp" line="86" />
+        <location filename="../../widgets/printer_panel.cpp" line="100" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="78" />
-        <location filename="../../widgets/printer_panel.cpp" line="92" />
+        <location filename="../../widgets/printer_panel.cpp" line="87" />
+        <location filename="../../widgets/printer_panel.cpp" line="101" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="79" />
+        <location filename="../../widgets/printer_panel.cpp" line="88" />
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="145" />
+        <location filename="../../widgets/printer_panel.cpp" line="154" />
         <source>the strikes could not be checked: %1</source>
         <translation>無法核對擊點：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="147" />
+        <location filename="../../widgets/printer_panel.cpp" line="156" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="150" />
+        <location filename="../../widgets/printer_panel.cpp" line="159" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="152" />
+        <location filename="../../widgets/printer_panel.cpp" line="161" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -141,57 +141,57 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/gui/main.cpp" line="57" />
+        <location filename="../../app/gui/main.cpp" line="47" />
         <source>Braille editor and embosser print manager: edit print and braille side by side, preview interpoint sheets, emboss.</source>
         <translation>點字編輯器與點字印表機管理：並排編輯明眼字與點字、預覽雙面點字、送印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="63" />
+        <location filename="../../app/gui/main.cpp" line="53" />
         <source>Document to open (Markdown, text, DOCX, BRF, PEF).</source>
         <translation>要開啟的文件（Markdown、純文字、DOCX、BRF、PEF）。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="66" />
+        <location filename="../../app/gui/main.cpp" line="56" />
         <source>liblouis table, e.g. en-ueb-g2.ctb or zh-tw.ctb.</source>
         <translation>liblouis 點字表，例如 en-ueb-g2.ctb 或 zh-tw.ctb。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="69" />
+        <location filename="../../app/gui/main.cpp" line="59" />
         <source>Preview side: front, back or both.</source>
         <translation>預覽面：front、back 或 both。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="71" />
+        <location filename="../../app/gui/main.cpp" line="61" />
         <source>Sheet to preview.</source>
         <translation>要預覽的紙張。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="74" />
+        <location filename="../../app/gui/main.cpp" line="64" />
         <source>User interface language, e.g. zh_TW.</source>
         <translation>介面語言，例如 zh_TW。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="77" />
+        <location filename="../../app/gui/main.cpp" line="67" />
         <source>Save a picture of the window and quit.</source>
         <translation>儲存視窗畫面後結束。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="80" />
+        <location filename="../../app/gui/main.cpp" line="70" />
         <source>Panel to show: preview, motion, vibration, profile, printer.</source>
         <translation>要顯示的面板：preview、motion、vibration、profile、printer。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="83" />
+        <location filename="../../app/gui/main.cpp" line="73" />
         <source>Emboss the file on the last used embosser once it is open.</source>
         <translation>檔案開啟後，以上次使用的點字印表機列印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="85" />
+        <location filename="../../app/gui/main.cpp" line="75" />
         <source>Do not offer to recover autosaved work.</source>
         <translation>不要詢問是否復原自動儲存的內容。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="87" />
+        <location filename="../../app/gui/main.cpp" line="77" />
         <source>Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser.</source>
         <translation>Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0、pty:/dev/pts/3 或 CUPS 佇列 ipp://server/printers/Embosser。</translation>
     </message>
@@ -212,7 +212,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="607" />
+        <location filename="../../widgets/editor_widget.cpp" line="610" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -266,6 +266,11 @@
         <location filename="../../widgets/editor_widget.cpp" line="162" />
         <source>Table row %1 of %2</source>
         <translation>表格第 %1 列，共 %2 列</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="606" />
+        <source>blank cell</source>
+        <translation>空方</translation>
     </message>
 </context>
 <context>
@@ -720,6 +725,11 @@
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
+        <location filename="../../widgets/main_window.cpp" line="361" />
+        <source>St&amp;yles</source>
+        <translation>樣式(&amp;Y)</translation>
+    </message>
+    <message>
         <location filename="../../widgets/main_window.cpp" line="364" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
@@ -1047,11 +1057,6 @@
         <location filename="../../widgets/main_window.cpp" line="566" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="361" />
-        <source>St&amp;yles</source>
-        <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="567" />
@@ -1506,640 +1511,646 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="208" />
+        <location filename="../../widgets/printer_panel.cpp" line="217" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="210" />
+        <location filename="../../widgets/printer_panel.cpp" line="219" />
         <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser</source>
         <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="215" />
+        <location filename="../../widgets/printer_panel.cpp" line="224" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="216" />
-        <location filename="../../widgets/printer_panel.cpp" line="625" />
-        <location filename="../../widgets/printer_panel.cpp" line="818" />
+        <location filename="../../widgets/printer_panel.cpp" line="225" />
+        <location filename="../../widgets/printer_panel.cpp" line="639" />
+        <location filename="../../widgets/printer_panel.cpp" line="830" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="218" />
-        <location filename="../../widgets/printer_panel.cpp" line="1140" />
+        <location filename="../../widgets/printer_panel.cpp" line="227" />
+        <location filename="../../widgets/printer_panel.cpp" line="1152" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="220" />
+        <location filename="../../widgets/printer_panel.cpp" line="229" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="225" />
+        <location filename="../../widgets/printer_panel.cpp" line="234" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="230" />
+        <location filename="../../widgets/printer_panel.cpp" line="239" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="231" />
+        <location filename="../../widgets/printer_panel.cpp" line="240" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="232" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="242" />
+        <location filename="../../widgets/printer_panel.cpp" line="251" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="243" />
+        <location filename="../../widgets/printer_panel.cpp" line="252" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="244" />
+        <location filename="../../widgets/printer_panel.cpp" line="253" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="250" />
+        <location filename="../../widgets/printer_panel.cpp" line="259" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="251" />
+        <location filename="../../widgets/printer_panel.cpp" line="260" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="255" />
+        <location filename="../../widgets/printer_panel.cpp" line="264" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="260" />
+        <location filename="../../widgets/printer_panel.cpp" line="269" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="270" />
+        <location filename="../../widgets/printer_panel.cpp" line="279" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="271" />
+        <location filename="../../widgets/printer_panel.cpp" line="280" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="273" />
+        <location filename="../../widgets/printer_panel.cpp" line="282" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="274" />
+        <location filename="../../widgets/printer_panel.cpp" line="283" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="275" />
+        <location filename="../../widgets/printer_panel.cpp" line="284" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="276" />
+        <location filename="../../widgets/printer_panel.cpp" line="285" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="278" />
+        <location filename="../../widgets/printer_panel.cpp" line="287" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="279" />
+        <location filename="../../widgets/printer_panel.cpp" line="288" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="285" />
+        <location filename="../../widgets/printer_panel.cpp" line="294" />
         <source>The plan's own speed</source>
         <translation>依列印計畫的實際速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="286" />
+        <location filename="../../widgets/printer_panel.cpp" line="295" />
         <source>10 times faster</source>
         <translation>快 10 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="287" />
+        <location filename="../../widgets/printer_panel.cpp" line="296" />
         <source>As fast as the computer can</source>
         <translation>以電腦能達到的最快速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="288" />
+        <location filename="../../widgets/printer_panel.cpp" line="297" />
         <source>Simulator speed</source>
         <translation>模擬器速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="290" />
+        <location filename="../../widgets/printer_panel.cpp" line="299" />
         <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
         <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="292" />
+        <location filename="../../widgets/printer_panel.cpp" line="301" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="299" />
+        <location filename="../../widgets/printer_panel.cpp" line="308" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="319" />
+        <location filename="../../widgets/printer_panel.cpp" line="328" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="374" />
+        <location filename="../../widgets/printer_panel.cpp" line="383" />
         <source>Built-in simulated embosser</source>
         <translation>內建模擬點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="377" />
+        <location filename="../../widgets/printer_panel.cpp" line="386" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="378" />
+        <location filename="../../widgets/printer_panel.cpp" line="387" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="381" />
+        <location filename="../../widgets/printer_panel.cpp" line="390" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="396" />
-        <source>Listing CUPS queues: %1</source>
-        <translation>列出 CUPS 佇列：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/printer_panel.cpp" line="402" />
+        <location filename="../../widgets/printer_panel.cpp" line="412" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="407" />
+        <location filename="../../widgets/printer_panel.cpp" line="417" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="410" />
+        <location filename="../../widgets/printer_panel.cpp" line="420" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="417" />
+        <location filename="../../widgets/printer_panel.cpp" line="427" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="451" />
+        <location filename="../../widgets/printer_panel.cpp" line="465" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="463" />
+        <location filename="../../widgets/printer_panel.cpp" line="477" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="486" />
+        <location filename="../../widgets/printer_panel.cpp" line="500" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="491" />
+        <location filename="../../widgets/printer_panel.cpp" line="505" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="501" />
+        <location filename="../../widgets/printer_panel.cpp" line="515" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="512" />
+        <location filename="../../widgets/printer_panel.cpp" line="526" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="516" />
+        <location filename="../../widgets/printer_panel.cpp" line="530" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="523" />
+        <location filename="../../widgets/printer_panel.cpp" line="537" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="527" />
+        <location filename="../../widgets/printer_panel.cpp" line="541" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="543" />
+        <location filename="../../widgets/printer_panel.cpp" line="557" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="554" />
+        <location filename="../../widgets/printer_panel.cpp" line="568" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="566" />
+        <location filename="../../widgets/printer_panel.cpp" line="580" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="576" />
+        <location filename="../../widgets/printer_panel.cpp" line="590" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="581" />
+        <location filename="../../widgets/printer_panel.cpp" line="595" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="594" />
+        <location filename="../../widgets/printer_panel.cpp" line="608" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="606" />
+        <location filename="../../widgets/printer_panel.cpp" line="620" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="659" />
+        <location filename="../../widgets/printer_panel.cpp" line="673" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="671" />
+        <location filename="../../widgets/printer_panel.cpp" line="685" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="698" />
+        <location filename="../../widgets/printer_panel.cpp" line="712" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="699" />
+        <location filename="../../widgets/printer_panel.cpp" line="713" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="726" />
+        <location filename="../../widgets/printer_panel.cpp" line="740" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="733" />
+        <location filename="../../widgets/printer_panel.cpp" line="747" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="736" />
+        <location filename="../../widgets/printer_panel.cpp" line="750" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="742" />
+        <location filename="../../widgets/printer_panel.cpp" line="756" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="747" />
+        <location filename="../../widgets/printer_panel.cpp" line="761" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="760" />
+        <location filename="../../widgets/printer_panel.cpp" line="772" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="761" />
+        <location filename="../../widgets/printer_panel.cpp" line="773" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="774" />
+        <location filename="../../widgets/printer_panel.cpp" line="786" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="776" />
+        <location filename="../../widgets/printer_panel.cpp" line="788" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="777" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="779" />
+        <location filename="../../widgets/printer_panel.cpp" line="791" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="912" />
+        <location filename="../../widgets/printer_panel.cpp" line="924" />
         <source>%1 paused</source>
         <translation>%1 已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="914" />
+        <location filename="../../widgets/printer_panel.cpp" line="926" />
         <source>%1 resumed</source>
         <translation>%1 已繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1024" />
-        <location filename="../../widgets/printer_panel.cpp" line="1027" />
+        <location filename="../../widgets/printer_panel.cpp" line="1036" />
+        <location filename="../../widgets/printer_panel.cpp" line="1039" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1027" />
+        <location filename="../../widgets/printer_panel.cpp" line="1039" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1028" />
+        <location filename="../../widgets/printer_panel.cpp" line="1040" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1037" />
+        <location filename="../../widgets/printer_panel.cpp" line="1049" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1096" />
-        <location filename="../../widgets/printer_panel.cpp" line="1133" />
+        <location filename="../../widgets/printer_panel.cpp" line="1108" />
+        <location filename="../../widgets/printer_panel.cpp" line="1145" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1101" />
+        <location filename="../../widgets/printer_panel.cpp" line="1113" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1109" />
+        <location filename="../../widgets/printer_panel.cpp" line="1121" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1133" />
+        <location filename="../../widgets/printer_panel.cpp" line="1145" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1144" />
+        <location filename="../../widgets/printer_panel.cpp" line="1156" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1147" />
+        <location filename="../../widgets/printer_panel.cpp" line="1159" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1148" />
+        <location filename="../../widgets/printer_panel.cpp" line="1160" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1153" />
+        <location filename="../../widgets/printer_panel.cpp" line="1165" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1156" />
+        <location filename="../../widgets/printer_panel.cpp" line="1168" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1207" />
+        <location filename="../../widgets/printer_panel.cpp" line="1219" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1232" />
+        <location filename="../../widgets/printer_panel.cpp" line="1244" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1233" />
+        <location filename="../../widgets/printer_panel.cpp" line="1245" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1251" />
+        <location filename="../../widgets/printer_panel.cpp" line="1263" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1255" />
+        <location filename="../../widgets/printer_panel.cpp" line="1267" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1261" />
+        <location filename="../../widgets/printer_panel.cpp" line="1273" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1265" />
+        <location filename="../../widgets/printer_panel.cpp" line="1277" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1269" />
+        <location filename="../../widgets/printer_panel.cpp" line="1281" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1273" />
+        <location filename="../../widgets/printer_panel.cpp" line="1285" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="567" />
+        <location filename="../../widgets/printer_panel.cpp" line="581" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="214" />
+        <location filename="../../widgets/printer_panel.cpp" line="223" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="615" />
+        <location filename="../../widgets/printer_panel.cpp" line="629" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="610" />
+        <location filename="../../widgets/printer_panel.cpp" line="624" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="622" />
+        <location filename="../../widgets/printer_panel.cpp" line="67" />
+        <source>%1: %2</source>
+        <comment>a message and its detail</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="406" />
+        <source>Cannot list the CUPS queues on %1: %2</source>
+        <translation>無法列出 CUPS 伺服器 %1 上的佇列：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/printer_panel.cpp" line="636" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="642" />
+        <location filename="../../widgets/printer_panel.cpp" line="656" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="646" />
+        <location filename="../../widgets/printer_panel.cpp" line="660" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="665" />
+        <location filename="../../widgets/printer_panel.cpp" line="679" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="819" />
+        <location filename="../../widgets/printer_panel.cpp" line="831" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="848" />
+        <location filename="../../widgets/printer_panel.cpp" line="860" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="902" />
+        <location filename="../../widgets/printer_panel.cpp" line="914" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="909" />
-        <location filename="../../widgets/printer_panel.cpp" line="1105" />
+        <location filename="../../widgets/printer_panel.cpp" line="921" />
+        <location filename="../../widgets/printer_panel.cpp" line="1117" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="916" />
+        <location filename="../../widgets/printer_panel.cpp" line="928" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="953" />
+        <location filename="../../widgets/printer_panel.cpp" line="965" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="955" />
+        <location filename="../../widgets/printer_panel.cpp" line="967" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1017" />
+        <location filename="../../widgets/printer_panel.cpp" line="1029" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="647" />
+        <location filename="../../widgets/printer_panel.cpp" line="661" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="925" />
+        <location filename="../../widgets/printer_panel.cpp" line="937" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="926" />
-        <location filename="../../widgets/printer_panel.cpp" line="930" />
+        <location filename="../../widgets/printer_panel.cpp" line="938" />
+        <location filename="../../widgets/printer_panel.cpp" line="942" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="903" />
+        <location filename="../../widgets/printer_panel.cpp" line="915" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="945" />
-        <location filename="../../widgets/printer_panel.cpp" line="975" />
+        <location filename="../../widgets/printer_panel.cpp" line="957" />
+        <location filename="../../widgets/printer_panel.cpp" line="987" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="953" />
+        <location filename="../../widgets/printer_panel.cpp" line="965" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1212" />
+        <location filename="../../widgets/printer_panel.cpp" line="1224" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1222" />
+        <location filename="../../widgets/printer_panel.cpp" line="1234" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
@@ -2147,283 +2158,371 @@
 <context>
     <name>tactus::gui::ProfileEditor</name>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="30" />
+        <location filename="../../widgets/profile_editor.cpp" line="78" />
         <source>Paper</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="31" />
+        <location filename="../../widgets/profile_editor.cpp" line="79" />
         <source>Width</source>
         <translation>寬度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="31" />
-        <location filename="../../widgets/profile_editor.cpp" line="32" />
-        <location filename="../../widgets/profile_editor.cpp" line="33" />
-        <location filename="../../widgets/profile_editor.cpp" line="34" />
-        <location filename="../../widgets/profile_editor.cpp" line="36" />
-        <location filename="../../widgets/profile_editor.cpp" line="37" />
-        <location filename="../../widgets/profile_editor.cpp" line="38" />
-        <location filename="../../widgets/profile_editor.cpp" line="39" />
-        <location filename="../../widgets/profile_editor.cpp" line="40" />
-        <location filename="../../widgets/profile_editor.cpp" line="42" />
-        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <location filename="../../widgets/profile_editor.cpp" line="79" />
+        <location filename="../../widgets/profile_editor.cpp" line="80" />
+        <location filename="../../widgets/profile_editor.cpp" line="81" />
+        <location filename="../../widgets/profile_editor.cpp" line="82" />
+        <location filename="../../widgets/profile_editor.cpp" line="84" />
+        <location filename="../../widgets/profile_editor.cpp" line="85" />
+        <location filename="../../widgets/profile_editor.cpp" line="86" />
+        <location filename="../../widgets/profile_editor.cpp" line="87" />
+        <location filename="../../widgets/profile_editor.cpp" line="88" />
+        <location filename="../../widgets/profile_editor.cpp" line="90" />
+        <location filename="../../widgets/profile_editor.cpp" line="96" />
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="32" />
+        <location filename="../../widgets/profile_editor.cpp" line="80" />
         <source>Height</source>
         <translation>高度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="33" />
+        <location filename="../../widgets/profile_editor.cpp" line="81" />
         <source>Left margin</source>
         <translation>左邊界</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="34" />
+        <location filename="../../widgets/profile_editor.cpp" line="82" />
         <source>Top margin</source>
         <translation>上邊界</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="35" />
+        <location filename="../../widgets/profile_editor.cpp" line="83" />
         <source>Braille geometry</source>
         <translation>點字幾何</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="36" />
+        <location filename="../../widgets/profile_editor.cpp" line="84" />
         <source>Dot pitch</source>
         <translation>點距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="37" />
+        <location filename="../../widgets/profile_editor.cpp" line="85" />
         <source>Cell pitch</source>
         <translation>方距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="38" />
+        <location filename="../../widgets/profile_editor.cpp" line="86" />
         <source>Line pitch</source>
         <translation>行距</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="39" />
+        <location filename="../../widgets/profile_editor.cpp" line="87" />
         <source>Back offset across</source>
         <translation>背面水平偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="40" />
+        <location filename="../../widgets/profile_editor.cpp" line="88" />
         <source>Back offset down</source>
         <translation>背面垂直偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="41" />
+        <location filename="../../widgets/profile_editor.cpp" line="89" />
         <source>Head and carriage</source>
         <translation>打點頭與字車</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="42" />
+        <location filename="../../widgets/profile_editor.cpp" line="90" />
         <source>Concave hammer offset</source>
         <translation>凹錘偏移</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="43" />
+        <location filename="../../widgets/profile_editor.cpp" line="91" />
         <source>Hammer dwell</source>
         <translation>擊錘停留</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="43" />
+        <location filename="../../widgets/profile_editor.cpp" line="24" />
+        <location filename="../../widgets/profile_editor.cpp" line="91" />
         <source>s</source>
         <translation>秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="44" />
+        <location filename="../../widgets/profile_editor.cpp" line="25" />
+        <source>steps/s</source>
+        <translation>步/秒</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="32" />
+        <source>%1 %2</source>
+        <comment>a number and its unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <source>is %1, must be between %2 and %3</source>
+        <translation>為 %1，必須介於 %2 與 %3 之間</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <source>is %1, must be above 0</source>
+        <translation>為 %1，必須大於 0</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <source>is %1, must not exceed %2</source>
+        <translation>為 %1，不可超過 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <source>is %1, below the physical minimum of %2</source>
+        <translation>為 %1，低於物理下限 %2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <source>is %1, below %2: motion that slow would take days to plan and to emboss</source>
+        <translation>為 %1，低於 %2：這麼慢的運動要花好幾天規劃與列印</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <source>needs %1, more than the controller can time (%2, 8 timer ticks per step)</source>
+        <translation>需要 %1，超過控制器能計時的上限（%2，每步 8 個計時器刻度）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <source>is %1, must exceed the dot pitch (%2) so neighbouring cells stay apart</source>
+        <translation>為 %1，必須大於點距（%2），相鄰的點字方才不會相連</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="53" />
+        <source>is %1, must exceed the cell height (%2)</source>
+        <translation>為 %1，必須大於點字方的高度（%2）</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="55" />
+        <source>%n cell(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation><numerusform>%n 方需要 %1，但紙張在邊界之間只有 %2</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="57" />
+        <source>%n line(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation><numerusform>%n 行需要 %1，但紙張在邊界之間只有 %2</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="58" />
+        <source>is %1, which puts back-side dots off the paper</source>
+        <translation>為 %1，背面的點會落在紙張之外</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="59" />
+        <source>is %1, wider than the paper (%2): one hammer could never reach it</source>
+        <translation>為 %1，比紙張（%2）還寬：有一支擊錘永遠打不到</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="61" />
+        <source>is %1, finer than half a carriage step (%2): unreachable at any speed</source>
+        <translation>為 %1，小於字車半步（%2）：任何速度都達不到</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="63" />
+        <source>is %1</source>
+        <translation>為 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="92" />
         <source>Carriage steps</source>
         <translation>字車步數</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="44" />
+        <location filename="../../widgets/profile_editor.cpp" line="92" />
         <source>steps/mm</source>
         <translation>步/mm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <location filename="../../widgets/profile_editor.cpp" line="93" />
         <source>Carriage top speed</source>
         <translation>字車最高速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="45" />
+        <location filename="../../widgets/profile_editor.cpp" line="93" />
         <source>mm/s</source>
         <translation>mm/s</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <location filename="../../widgets/profile_editor.cpp" line="94" />
         <source>Carriage acceleration</source>
         <translation>字車加速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="46" />
+        <location filename="../../widgets/profile_editor.cpp" line="94" />
         <source>mm/s²</source>
         <translation>mm/s²</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <location filename="../../widgets/profile_editor.cpp" line="95" />
         <source>Carriage jerk</source>
         <translation>字車加加速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="47" />
+        <location filename="../../widgets/profile_editor.cpp" line="95" />
         <source>mm/s³</source>
         <translation>mm/s³</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="48" />
+        <location filename="../../widgets/profile_editor.cpp" line="96" />
         <source>Carriage backlash</source>
         <translation>字車背隙</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <location filename="../../widgets/profile_editor.cpp" line="97" />
         <source>Step timing tolerance</source>
         <translation>步進時間容許誤差</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="49" />
+        <location filename="../../widgets/profile_editor.cpp" line="97" />
         <source>of a step interval</source>
         <translation>個步進間隔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="50" />
+        <location filename="../../widgets/profile_editor.cpp" line="98" />
         <source>Dynamics and vibration</source>
         <translation>動態與振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <location filename="../../widgets/profile_editor.cpp" line="99" />
         <source>Head mass</source>
         <translation>打點頭質量</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="51" />
+        <location filename="../../widgets/profile_editor.cpp" line="99" />
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <location filename="../../widgets/profile_editor.cpp" line="100" />
         <source>Belt stiffness</source>
         <translation>皮帶剛性</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="52" />
+        <location filename="../../widgets/profile_editor.cpp" line="100" />
         <source>N/m</source>
         <translation>N/m</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="53" />
+        <location filename="../../widgets/profile_editor.cpp" line="101" />
         <source>Damping ratio</source>
         <translation>阻尼比</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="54" />
+        <location filename="../../widgets/profile_editor.cpp" line="102" />
         <source>Position tolerance at the strike</source>
         <translation>擊點時的位置容許誤差</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="54" />
+        <location filename="../../widgets/profile_editor.cpp" line="102" />
         <source>µm</source>
         <translation>µm</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="59" />
+        <location filename="../../widgets/profile_editor.cpp" line="107" />
         <source>Profile fields</source>
         <translation>設定檔欄位</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="63" />
+        <location filename="../../widgets/profile_editor.cpp" line="111" />
         <source>Profile check</source>
         <translation>設定檔檢查</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="64" />
+        <location filename="../../widgets/profile_editor.cpp" line="112" />
         <source>&amp;Load profile...</source>
         <translation>載入設定檔(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="65" />
+        <location filename="../../widgets/profile_editor.cpp" line="113" />
         <source>Save pr&amp;ofile...</source>
         <translation>儲存設定檔(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="66" />
+        <location filename="../../widgets/profile_editor.cpp" line="114" />
         <source>&amp;Defaults</source>
         <translation>預設值(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="68" />
+        <location filename="../../widgets/profile_editor.cpp" line="116" />
         <source>Load printer profile</source>
         <translation>載入印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="68" />
-        <location filename="../../widgets/profile_editor.cpp" line="72" />
+        <location filename="../../widgets/profile_editor.cpp" line="116" />
+        <location filename="../../widgets/profile_editor.cpp" line="120" />
         <source>Profiles (*.json)</source>
         <translation>設定檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="72" />
+        <location filename="../../widgets/profile_editor.cpp" line="120" />
         <source>Save printer profile</source>
         <translation>儲存印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="95" />
+        <location filename="../../widgets/profile_editor.cpp" line="143" />
         <source>%1 to %2 %3</source>
         <translation>%1 到 %2 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="96" />
+        <location filename="../../widgets/profile_editor.cpp" line="144" />
         <source>%1 in %2</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="97" />
+        <location filename="../../widgets/profile_editor.cpp" line="145" />
         <source>Range %1; profile field %2</source>
         <translation>範圍 %1；設定檔欄位 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="107" />
+        <location filename="../../widgets/profile_editor.cpp" line="148" />
+        <source>%1:</source>
+        <comment>a form field's label</comment>
+        <translation>%1：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="155" />
         <source>Invalid: %1. %2</source>
         <translation>無效：%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="142" />
+        <location filename="../../widgets/profile_editor.cpp" line="190" />
         <source>%1 %2. The plan and preview keep the last valid profile.</source>
         <translation>%1 %2。規劃與預覽仍使用上一個有效的設定檔。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="158" />
+        <location filename="../../widgets/profile_editor.cpp" line="205" />
         <source>Profile is valid.</source>
         <translation>設定檔有效。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="160" />
+        <location filename="../../widgets/profile_editor.cpp" line="207" />
         <source>Profile is valid again.</source>
         <translation>設定檔又有效了。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="167" />
+        <location filename="../../widgets/profile_editor.cpp" line="214" />
         <source>Cannot load %1: %2</source>
         <translation>無法載入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="173" />
+        <location filename="../../widgets/profile_editor.cpp" line="220" />
         <source>Loaded profile %1</source>
         <translation>已載入設定檔 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="179" />
+        <location filename="../../widgets/profile_editor.cpp" line="226" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="182" />
+        <location filename="../../widgets/profile_editor.cpp" line="229" />
         <source>Saved profile to %1</source>
         <translation>已將設定檔儲存到 %1</translation>
     </message>
@@ -2469,6 +2568,12 @@
         <location filename="../../widgets/sheet_preview.cpp" line="239" />
         <source>dots %1</source>
         <translation>點 %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/sheet_preview.cpp" line="239" />
+        <source>%1: %2</source>
+        <comment>a cell's place and its dots</comment>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <location filename="../../widgets/sheet_preview.cpp" line="244" />

@@ -8,6 +8,28 @@ import xml.etree.ElementTree as ET
 
 T = {
     "typing": "輸入",
+    # Space in the braille pane, echoed as a typed chord is.
+    "blank cell": "空方",
+    # A message and its detail, a place and what is there: the full-width colon.
+    "%1: %2": "%1：%2",
+    # The profile's problems (core/profile/profile_problem.hpp), worded in the panel.
+    "steps/s": "步/秒",
+    "is %1, must be between %2 and %3": "為 %1，必須介於 %2 與 %3 之間",
+    "is %1, must be above 0": "為 %1，必須大於 0",
+    "is %1, must not exceed %2": "為 %1，不可超過 %2",
+    "is %1, below the physical minimum of %2": "為 %1，低於物理下限 %2",
+    "is %1, below %2: motion that slow would take days to plan and to emboss": "為 %1，低於 %2：這麼慢的運動要花好幾天規劃與列印",
+    "needs %1, more than the controller can time (%2, 8 timer ticks per step)": "需要 %1，超過控制器能計時的上限（%2，每步 8 個計時器刻度）",
+    "is %1, must exceed the dot pitch (%2) so neighbouring cells stay apart": "為 %1，必須大於點距（%2），相鄰的點字方才不會相連",
+    "is %1, must exceed the cell height (%2)": "為 %1，必須大於點字方的高度（%2）",
+    "%n cell(s) need %1 but the paper leaves %2 between the margins": "%n 方需要 %1，但紙張在邊界之間只有 %2",
+    "%n line(s) need %1 but the paper leaves %2 between the margins": "%n 行需要 %1，但紙張在邊界之間只有 %2",
+    "is %1, which puts back-side dots off the paper": "為 %1，背面的點會落在紙張之外",
+    "is %1, wider than the paper (%2): one hammer could never reach it": "為 %1，比紙張（%2）還寬：有一支擊錘永遠打不到",
+    "is %1, finer than half a carriage step (%2): unreachable at any speed": "為 %1，小於字車半步（%2）：任何速度都達不到",
+    "is %1": "為 %1",
+    "%1:": "%1：",
+    "Cannot list the CUPS queues on %1: %2": "無法列出 CUPS 伺服器 %1 上的佇列：%2",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
     # A text file saved in its own encoding.
@@ -264,7 +286,6 @@ T = {
     "held": "保留中", "aborted": "已中止", "sending": "傳送中", "not sent": "未送出", "cancelling": "取消中",
     "The built-in simulated embosser, on this computer": "內建的模擬點字印表機，在本電腦上",
     "An embosser on a cable to this computer": "以纜線連接本電腦的點字印表機",
-    "Listing CUPS queues: %1": "列出 CUPS 佇列：%1",
     "Network queue %1 on %2": "網路佇列 %1（位於 %2）",
     "Network queue %1 on the CUPS server %2": "網路佇列 %1，位於 CUPS 伺服器 %2",
     "A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile":
