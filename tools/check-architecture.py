@@ -8,6 +8,14 @@ graph has no cycles. Every `#include "<stage>/..."` in a stage must name the
 stage itself or one it reaches through USES. core/ never includes Qt or
 widgets/. Within widgets/, the include graph has no cycles.
 
+Only core/platform/ includes an operating system's headers (unistd.h, sys/*,
+termios.h, windows.h, io.h, ...): everything else in core/, app/ and widgets/
+reaches the system through its interfaces, so the same sources build for
+POSIX and for Windows (docs/windows.md). There, each concern's POSIX and
+Windows implementations come in pairs (x_posix.cpp beside x_win.cpp).
+
+Usage: check-architecture.py [ROOT]   (ROOT: the source tree; this script's by default)
+
 The build already refuses an include that a stage does not link; this check
 also refuses the link itself when it points up the order, and says why.
 """
@@ -15,7 +23,7 @@ import pathlib
 import re
 import sys
 
-root = pathlib.Path(__file__).resolve().parent.parent
+root = pathlib.Path(sys.argv[1]).resolve() if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent
 core = root / "core"
 errors = []
 
@@ -113,10 +121,59 @@ for n in sorted(graph):
     if n not in state:
         visit(n, [n])
 
+# The operating system only behind core/platform/.
+PLATFORM = "platform"
+OS_HEADERS = {
+    # POSIX and its usual companions
+    "unistd.h", "fcntl.h", "termios.h", "poll.h", "pty.h", "dirent.h", "pwd.h", "grp.h", "signal.h",
+    "csignal", "spawn.h", "dlfcn.h", "syslog.h", "libgen.h", "utmp.h", "semaphore.h", "netdb.h",
+    "ifaddrs.h", "glob.h", "fnmatch.h", "wordexp.h", "termio.h", "sgtty.h", "utime.h", "pthread.h",
+    # Windows
+    "windows.h", "winsock2.h", "ws2tcpip.h", "winbase.h", "winioctl.h", "io.h", "process.h", "direct.h",
+    "conio.h", "shlobj.h", "shellapi.h", "setupapi.h", "tlhelp32.h", "psapi.h", "aclapi.h", "winerror.h",
+    "winreg.h", "winuser.h", "objbase.h", "combaseapi.h", "knownfolders.h",
+}
+OS_HEADER_DIRS = ("sys/", "arpa/", "netinet/", "net/", "linux/", "mach/", "asm/", "bits/")
+angle_include_re = re.compile(r'^\s*#\s*include\s*<([^>]+)>', re.M)
+
+
+def os_header(inc):
+    low = inc.lower()
+    return low in OS_HEADERS or low.startswith(OS_HEADER_DIRS)
+
+
+platform_dir = core / PLATFORM
+if PLATFORM not in rank:
+    errors.append(f"core/{PLATFORM}: the platform layer is missing from the stage list of core/CMakeLists.txt")
+elif order[0] != PLATFORM:
+    errors.append(f"core/{PLATFORM} must be the lowest stage (first in core/CMakeLists.txt): every stage may use it")
+for top in ("core", "app", "widgets"):
+    base = root / top
+    if not base.is_dir():
+        continue
+    for f in sorted(base.rglob("*")):
+        if f.suffix not in (".cpp", ".hpp", ".h", ".c", ".cc") or not f.is_file():
+            continue
+        if platform_dir in f.parents:
+            continue
+        for inc in angle_include_re.findall(f.read_text(errors="replace")):
+            if os_header(inc):
+                errors.append(f"{f.relative_to(root)}: includes <{inc}>, an operating system header: only "
+                              f"core/{PLATFORM}/ may; call or add an interface there (docs/windows.md)")
+if platform_dir.is_dir():
+    for f in sorted(platform_dir.glob("*_posix.cpp")):
+        twin = f.with_name(f.name[: -len("_posix.cpp")] + "_win.cpp")
+        if not twin.exists():
+            errors.append(f"{f.relative_to(root)}: no Windows twin {twin.name}")
+    for f in sorted(platform_dir.glob("*_win.cpp")):
+        twin = f.with_name(f.name[: -len("_win.cpp")] + "_posix.cpp")
+        if not twin.exists():
+            errors.append(f"{f.relative_to(root)}: no POSIX twin {twin.name}")
+
 if errors:
     print("check-architecture: dependencies that go the wrong way:", file=sys.stderr)
     for e in errors:
         print("  " + e, file=sys.stderr)
     sys.exit(1)
 print(f"check-architecture: {len(order)} stages, {sum(len(v) for v in uses.values())} edges, "
-      "no upward edge, no cycle, every include declared")
+      "no upward edge, no cycle, every include declared, OS headers only in core/platform")

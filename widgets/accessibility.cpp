@@ -6,7 +6,9 @@
 #include <QAccessible>
 #include <QApplication>
 #include <QAccessibleWidget>
+#include <QAbstractItemView>
 #include <QAbstractSpinBox>
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -131,6 +133,78 @@ private:
     }
 };
 
+// A combo box that is not editable. Qt 6.4 names it by its current item only
+// when it has no accessible name, and gives it no text: Orca 43 takes a combo
+// box's value from its text (or a selection interface, which Qt 6.4 does not
+// bridge), so it said "Table: combo box." with no value, on focus and after
+// Up/Down. Here the current item is the box's read-only text; the list stays
+// its one child, as in Qt's own interface.
+class AccessibleComboBox : public QAccessibleWidget, public QAccessibleTextInterface {
+public:
+    explicit AccessibleComboBox(QComboBox* box) : QAccessibleWidget(box, QAccessible::ComboBox) {
+        addControllingSignal(QStringLiteral("activated(int)"));
+    }
+    void* interface_cast(QAccessible::InterfaceType t) override {
+        if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
+        return QAccessibleWidget::interface_cast(t);
+    }
+    int childCount() const override { return 1; }
+    QAccessibleInterface* child(int index) const override {
+        return index == 0 ? QAccessible::queryAccessibleInterface(box()->view()) : nullptr;
+    }
+    int indexOfChild(const QAccessibleInterface* child) const override {
+        return child && child->object() == box()->view() ? 0 : -1;
+    }
+    QAccessible::State state() const override {
+        auto s = QAccessibleWidget::state();
+        s.expandable = true;
+        s.expanded = box()->view()->isVisible();
+        s.collapsed = !s.expanded;
+        return s;
+    }
+    QString text(QAccessible::Text t) const override {
+        if (t == QAccessible::Value) return value();
+        if (t == QAccessible::Name && box()->accessibleName().isEmpty()) return value();
+        return QAccessibleWidget::text(t);
+    }
+    QStringList actionNames() const override { return {showMenuAction(), pressAction()}; }
+    void doAction(const QString& name) override {
+        if (name == showMenuAction() || name == pressAction()) box()->showPopup();
+    }
+
+    // QAccessibleTextInterface: the current item, read only, caret at its start.
+    void selection(int, int* start, int* end) const override { *start = *end = 0; }
+    int selectionCount() const override { return 0; }
+    void addSelection(int, int) override {}
+    void removeSelection(int) override {}
+    void setSelection(int, int, int) override {}
+    int cursorPosition() const override { return 0; }
+    void setCursorPosition(int) override {}
+    QString text(int start, int end) const override { return value().mid(start, end - start); }
+    int characterCount() const override { return static_cast<int>(value().size()); }
+    QRect characterRect(int) const override { return rect(); }
+    int offsetAtPoint(const QPoint&) const override { return 0; }
+    void scrollToSubstring(int, int) override {}
+    QString attributes(int, int* start, int* end) const override {
+        *start = 0;
+        *end = characterCount();
+        return {};
+    }
+    QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_at_offset(value(), offset, b, start, end);
+    }
+    QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_before_offset(value(), offset, b, start, end);
+    }
+    QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
+        return text_after_offset(value(), offset, b, start, end);
+    }
+
+private:
+    QComboBox* box() const { return static_cast<QComboBox*>(widget()); }
+    QString value() const { return box()->currentText(); }
+};
+
 QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (!object || !object->isWidgetType()) return nullptr;
     auto* w = static_cast<QWidget*>(object);
@@ -149,6 +223,7 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
     if (auto* edit = qobject_cast<QLineEdit*>(w); edit && edit->echoMode() == QLineEdit::Normal)
         return new AccessibleLineText(w, QAccessible::EditableText);
     if (qobject_cast<QAbstractSpinBox*>(w)) return new AccessibleLineText(w, QAccessible::SpinBox);
+    if (auto* box = qobject_cast<QComboBox*>(w); box && !box->isEditable()) return new AccessibleComboBox(box);
     if (classname == QLatin1String("QLabel"))
         if (auto* l = static_cast<QLabel*>(w); !status_caption(l).isEmpty()) return make_accessible_status(l);
     return nullptr;
@@ -166,6 +241,34 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
 // belongs to, which a held-back focus event silenced.
 bool popup_open() { return qobject_cast<QMenu*>(QApplication::activePopupWidget()) != nullptr; }
 
+// A combo box's list is a popup window of its own (Qt's private container).
+QComboBox* combo_of_popup(QObject* popup) {
+    if (!popup || !popup->inherits("QComboBoxPrivateContainer")) return nullptr;
+    return qobject_cast<QComboBox*>(popup->parent());
+}
+
+// Opening a combo box's list moves the focus into the list before the list's
+// current item is set as the focused child, so Orca said "List with 201
+// items." and never which item was current. Told once the list is shown.
+void announce_current_item(QComboBox* box) {
+    auto* view = box->view();
+    if (!view || !view->isVisible() || !view->currentIndex().isValid()) return;
+    QAccessibleEvent focus(view, QAccessible::Focus);
+    focus.setChild(view->currentIndex().row());
+    QAccessible::updateAccessibility(&focus);
+}
+
+// Up and Down on a closed combo box change its value, which Qt 6.4 tells only
+// by a name change and a selection change of the box; Orca 43 ignores a combo
+// box's name changes and reads its selection through an interface Qt 6.4 does
+// not bridge, so the new value was silent. The window's announcer says it.
+// A box whose change the window words itself (the braille table says
+// "Braille table: ...") sets the property "announcesChange".
+void announce_closed_change(QComboBox* box) {
+    if (!box->hasFocus() || box->view()->isVisible() || box->property("announcesChange").toBool()) return;
+    if (auto* a = box->window()->findChild<Announcer*>()) a->announce(box->currentText());
+}
+
 class PopupActivationFilter : public QObject {
 public:
     using QObject::QObject;
@@ -175,6 +278,8 @@ protected:
         const auto type = e->type();
         if (type == QEvent::Show && target->isWidgetType() &&
             static_cast<QWidget*>(target)->windowType() == Qt::Popup) {
+            if (auto* box = combo_of_popup(target))
+                QMetaObject::invokeMethod(box, [box] { announce_current_item(box); }, Qt::QueuedConnection);
             // Stay the first application filter, before the AT-SPI bridge's,
             // which is installed once the screen reader's bus answers.
             QMetaObject::invokeMethod(this, [this] {
@@ -188,6 +293,11 @@ protected:
             return false;
         auto* w = static_cast<QWidget*>(target);
         if (!w->isWindow() || w->windowType() == Qt::Popup) return false;
+        // Menus only: a combo box's list deactivates the window but its closing
+        // sends no activation back, so hiding the one would hide the next
+        // window's activation (a dialog's, which then flooded Orca). The list's
+        // activation changes are held back as accessible state changes instead
+        // (hide_combo_activation).
         if (type == QEvent::WindowDeactivate) {
             if (!popup_open()) return false;
             hid_deactivation_ = true;
@@ -216,7 +326,52 @@ void pass_on(QAccessibleEvent* e) {
     QAccessible::installUpdateHandler(mine);
 }
 
+// Opening a combo box's list makes Qt tell the screen reader that the main
+// window stopped being active and the list's window became so, and the reverse
+// on closing, as accessible state changes (not window events, which the filter
+// above sees). Orca took each return for coming back to the window and said
+// "Tactus frame." again at every list. The list belongs to the window: these
+// changes are not passed on, the window's one change after the list closes
+// included.
+bool hid_window_activation = false;
+
+bool hide_combo_activation(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::StateChanged || !static_cast<QAccessibleStateChangeEvent*>(e)->changedStates().active)
+        return false;
+    auto* o = e->object();
+    if (!o || !o->isWidgetType() || !static_cast<QWidget*>(o)->isWindow()) return false;
+    if (combo_of_popup(o)) return true;
+    if (combo_of_popup(QApplication::activePopupWidget())) {
+        hid_window_activation = true;
+        return true;
+    }
+    if (!hid_window_activation) return false;
+    hid_window_activation = false;
+    return true;
+}
+
+// A spin box's line edit drops its selection when the focus leaves it,
+// after the focus has moved: Orca, still on the old field, said "Text
+// unselected." before the next control. Nothing the user did is unselected
+// there, so the change is not passed on; the same change in the focused field
+// (Shift+arrow, a click) still is.
+bool selection_dropped_on_leaving(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::TextSelectionChanged) return false;
+    // Spin boxes only, where the stray phrase was heard: held back for every
+    // line edit, opening the export dialog flooded Orca (orca_open).
+    auto* edit = qobject_cast<QLineEdit*>(e->object());
+    if (!edit || edit->hasFocus() || !qobject_cast<QAbstractSpinBox*>(edit->parentWidget())) return false;
+    const auto* change = static_cast<QAccessibleTextSelectionEvent*>(e);
+    return change->selectionStart() == change->selectionEnd();
+}
+
 void update_handler(QAccessibleEvent* e) {
+    if (hide_combo_activation(e) || selection_dropped_on_leaving(e)) return;
+    if (e->type() == QAccessible::ValueChanged)
+        // Only a change made in the closed box: one chosen in the open list is
+        // heard as the list item, then as the box when the focus returns.
+        if (auto* box = qobject_cast<QComboBox*>(e->object()); box && !box->isEditable() && !box->view()->isVisible())
+            QMetaObject::invokeMethod(box, [box] { announce_closed_change(box); }, Qt::QueuedConnection);
     if (e->type() == QAccessible::Focus && popup_open()) {
         auto* o = e->object();
         if (o && o->isWidgetType() && static_cast<QWidget*>(o)->window()->windowType() != Qt::Popup) return;

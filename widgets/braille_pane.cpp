@@ -7,7 +7,9 @@
 #include <QKeyEvent>
 #include <QMimeData>
 #include <QPaintEvent>
+#include <QAbstractTextDocumentLayout>
 #include <QPainter>
+#include <QScrollBar>
 #include <QTextBlock>
 #include <QTextLayout>
 #include <QUrl>
@@ -289,33 +291,46 @@ private:
 
 QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane) { return new AccessiblePlainText(pane); }
 
-PrintPane::PrintPane(QWidget* parent) : QPlainTextEdit(parent) {
+PrintPane::PrintPane(QWidget* parent) : QTextEdit(parent) {
     setObjectName(QStringLiteral("printPane"));
     setAccessibleName(tr("Print text"));
+    setAcceptRichText(false);  // pasted text takes the style it lands in
     set_text_file(false);
     setTabChangesFocus(true);
     setContextMenuPolicy(Qt::ActionsContextMenu);
 }
 
 void PrintPane::set_text_file(bool text_file) {
+    text_file_ = text_file;
+    describe();
+}
+
+void PrintPane::set_codes_shown(bool codes) {
+    codes_ = codes;
+    describe();
+}
+
+void PrintPane::describe() {
     setAccessibleDescription(
-        text_file ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
-                  : tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**"));
+        text_file_ ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
+        : codes_   ? tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**")
+                   : tr("The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them"));
 }
 
 bool PrintPane::event(QEvent* e) {
     if (leave_to_window(e)) return true;
-    return QPlainTextEdit::event(e);
+    return QTextEdit::event(e);
 }
 
 void PrintPane::paintEvent(QPaintEvent* e) {
-    QPlainTextEdit::paintEvent(e);
+    QTextEdit::paintEvent(e);
     if (!marker_) return;
     QPainter painter(viewport());
-    const auto offset = contentOffset();
+    const QPointF offset(-horizontalScrollBar()->value(), -verticalScrollBar()->value());
     const QColor ink = palette().color(QPalette::PlaceholderText);
-    for (auto block = firstVisibleBlock(); block.isValid(); block = block.next()) {
-        const auto box = blockBoundingGeometry(block).translated(offset);
+    auto* layout = document()->documentLayout();
+    for (auto block = cursorForPosition(e->rect().topLeft()).block(); block.isValid(); block = block.next()) {
+        const auto box = layout->blockBoundingRect(block).translated(offset);
         if (box.top() > e->rect().bottom()) break;
         if (!block.isVisible() || box.bottom() < e->rect().top()) continue;
         const auto text = marker_(block.blockNumber());
@@ -334,7 +349,7 @@ void PrintPane::paintEvent(QPaintEvent* e) {
 }
 
 bool PrintPane::canInsertFromMimeData(const QMimeData* source) const {
-    return source->hasUrls() || QPlainTextEdit::canInsertFromMimeData(source);
+    return source->hasUrls() || QTextEdit::canInsertFromMimeData(source);
 }
 
 void PrintPane::insertFromMimeData(const QMimeData* source) {
@@ -347,7 +362,7 @@ void PrintPane::insertFromMimeData(const QMimeData* source) {
             return;
         }
     }
-    QPlainTextEdit::insertFromMimeData(source);
+    QTextEdit::insertFromMimeData(source);
 }
 
 }  // namespace tactus::gui

@@ -5,6 +5,7 @@
 // applies to the document (so one undo stack covers print and braille), with
 // six-key chord entry, space and backspace, and Unicode braille typed or pasted.
 #include <QPlainTextEdit>
+#include <QTextEdit>
 #include <functional>
 
 #include "document/cell.hpp"
@@ -44,9 +45,10 @@ private:
 // for the app's accessibility factory.
 QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane);
 
-// The print side: forwards dropped files to the window instead of pasting their
-// names, and leaves undo/redo to the window's undo stack.
-class PrintPane : public QPlainTextEdit {
+// The print side: a rich text edit (the structured view, structured_print.hpp,
+// or the lines as codes); forwards dropped files to the window instead of
+// pasting their names, and leaves undo/redo to the window's undo stack.
+class PrintPane : public QTextEdit {
     Q_OBJECT
 public:
     explicit PrintPane(QWidget* parent = nullptr);
@@ -57,6 +59,8 @@ public:
     // What the lines are, for a screen reader: a text file's own lines, or the
     // Markdown dialect's one paragraph a line.
     void set_text_file(bool text_file);
+    // The lines shown structured (headings, lists, emphasis) or as their codes.
+    void set_codes_shown(bool codes);
 
 Q_SIGNALS:
     void files_dropped(const QStringList& paths);
@@ -69,6 +73,9 @@ protected:
 
 private:
     std::function<QString(int)> marker_;
+    bool text_file_ = false;
+    bool codes_ = false;
+    void describe();
 };
 
 }  // namespace tactus::gui

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "editor_widget.hpp"
 
+#include <QKeyEvent>
 #include <QRegularExpression>
 #include <QTextBlock>
 #include <QTextCursor>
+#include <QTextList>
 
 #include "braille_pane.hpp"
+#include "structured_print.hpp"
 #include "edit/cursor_map.hpp"
 #include "edit/editor_lines.hpp"
 
@@ -87,8 +90,9 @@ EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) 
     connect(doc, &QTextDocument::undoCommandAdded, this,
             [this, doc] { undo_->push(new TextUndoCommand(doc)); });
     connect(doc, &QTextDocument::contentsChange, this, &EditorWidget::on_contents_change);
-    connect(print_, &QPlainTextEdit::cursorPositionChanged, this, &EditorWidget::sync_from_print);
-    connect(print_, &QPlainTextEdit::selectionChanged, this, &EditorWidget::sync_from_print);
+    print_->installEventFilter(this);
+    connect(print_, &QTextEdit::cursorPositionChanged, this, &EditorWidget::sync_from_print);
+    connect(print_, &QTextEdit::selectionChanged, this, &EditorWidget::sync_from_print);
     connect(braille_, &QPlainTextEdit::cursorPositionChanged, this, &EditorWidget::sync_from_braille);
     connect(braille_, &BraillePane::cells_typed, this, &EditorWidget::braille_typed);
     connect(braille_, &BraillePane::erase_backward, this, [this] { braille_erase(true); });
@@ -98,8 +102,11 @@ EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) 
     // A text file's form feed has no glyph: the line shows what it is.
     print_->set_line_marker([this](int line) {
         if (!layout_ || static_cast<std::size_t>(line) >= layout_->line_count()) return QString{};
-        const auto& text = layout_->line(static_cast<std::size_t>(line));
-        if (text.find_first_not_of("\f \t\r") != std::string::npos) return QString{};
+        // Only where the line shows no text of its own: a form feed, or a break in the structured view.
+        if (!print_->document()->findBlockByNumber(line).text().trimmed().isEmpty()) return QString{};
+        if (structured() && structured::style_of(print_->document()->findBlockByNumber(line)) ==
+                                structured::Style::braille_page_break)
+            return tr("Braille page break");
         return page_break_text(line);
     });
 }
@@ -114,6 +121,49 @@ QString EditorWidget::page_break_text(int line) const {
     // The print page it starts, by core's numbering (document/print_page.hpp).
     const auto page = QString::fromStdString(layout_->print_page_at(i));
     return page.isEmpty() ? tr("Print page break") : tr("Print page break, page %1").arg(page);
+}
+
+QString EditorWidget::structure_text(int line) const {
+    if (!structured() || !layout_) return {};
+    const auto block = print_->document()->findBlockByNumber(line);
+    if (!block.isValid()) return {};
+    using structured::Style;
+    switch (structured::style_of(block)) {
+        case Style::heading:
+            return tr("Heading level %1").arg(block.blockFormat().headingLevel());
+        case Style::bullet_item:
+        case Style::number_item:
+            if (const auto* list = block.textList())
+                return list->format().style() == QTextListFormat::ListDecimal
+                           ? tr("List item %1").arg(list->itemText(block))
+                           : tr("List item");
+            return block.blockFormat().boolProperty(structured::kNumberText) ? tr("List item") : QString();
+        case Style::quote:
+            return tr("Quotation");
+        case Style::note:
+            return tr("Note");
+        case Style::table_row: {
+            // Its place among the table's rows (the rule under the header is no row).
+            int row = 1, rows = 0;
+            for (auto b = block.previous(); b.isValid(); b = b.previous()) {
+                const auto s = structured::style_of(b);
+                if (s == Style::table_row) ++row;
+                else if (s != Style::table_delimiter) break;
+            }
+            rows = row;
+            for (auto b = block.next(); b.isValid(); b = b.next()) {
+                const auto s = structured::style_of(b);
+                if (s == Style::table_row) ++rows;
+                else if (s != Style::table_delimiter) break;
+            }
+            const auto next = block.next();
+            const bool header = next.isValid() && structured::style_of(next) == Style::table_delimiter;
+            return header ? tr("Table header row, %1 columns").arg(block.text().count(QLatin1Char('\t')) + 1)
+                          : tr("Table row %1 of %2").arg(row).arg(rows);
+        }
+        default:
+            return {};
+    }
 }
 
 EditorWidget::~EditorWidget() = default;
@@ -132,10 +182,7 @@ void EditorWidget::adopt(edit::LiveLayout layout) {
         print << QString::fromStdString(layout_->line(i));
         braille << braille_text(i);
     }
-    {
-        const QSignalBlocker block(print_->document());
-        print_->document()->setPlainText(print.join(QLatin1Char('\n')));
-    }
+    show_lines(print);
     braille_->document()->setPlainText(braille.join(QLatin1Char('\n')));
     known_blocks_ = print_->document()->blockCount();
     // An empty document is one empty line for the widget: keep the layout in step.
@@ -184,14 +231,203 @@ Result<void> EditorWidget::set_layout_options(const layout::LayoutOptions& optio
     return {};
 }
 
-QString EditorWidget::text() const { return print_->document()->toPlainText(); }
+QString EditorWidget::text() const {
+    if (!layout_) return print_->document()->toPlainText();
+    QStringList lines;
+    lines.reserve(static_cast<qsizetype>(layout_->line_count()));
+    for (std::size_t i = 0; i < layout_->line_count(); ++i) lines << QString::fromStdString(layout_->line(i));
+    return lines.join(QLatin1Char('\n'));
+}
+
+bool EditorWidget::structured() const {
+    return !codes_ && (!layout_ || layout_->dialect() == edit::Dialect::markdown);
+}
+
+void EditorWidget::show_lines(const QStringList& lines) {
+    const QSignalBlocker block(print_->document());
+    print_->set_codes_shown(codes_);
+    if (structured()) {
+        std::vector<std::string> model;
+        model.reserve(static_cast<std::size_t>(lines.size()));
+        for (const auto& l : lines) model.push_back(l.toStdString());
+        structured::render(print_->document(), model, print_->font());
+    } else {
+        print_->document()->setPlainText(lines.join(QLatin1Char('\n')));
+        // Codes are shown in the pane's own font, whatever the structured view set.
+        QTextCursor all(print_->document());
+        all.select(QTextCursor::Document);
+        all.setCharFormat(structured::base_char_format(structured::Style::body, 0, print_->font()));
+    }
+    print_->document()->clearUndoRedoStacks();
+}
+
+void EditorWidget::set_codes_shown(bool codes) {
+    if (codes == codes_) return;
+    codes_ = codes;
+    if (!layout_) {
+        print_->set_codes_shown(codes_);
+        return;
+    }
+    const int line = current_line();
+    syncing_ = true;
+    QStringList lines;
+    for (std::size_t i = 0; i < layout_->line_count(); ++i) lines << QString::fromStdString(layout_->line(i));
+    show_lines(lines);
+    // The print document's history was of the other view: the window's stack goes with it.
+    undo_->clear();
+    print_->setTextCursor(QTextCursor(print_->document()->findBlockByNumber(line)));
+    syncing_ = false;
+    sync_from_print();
+}
+
+bool EditorWidget::eventFilter(QObject* watched, QEvent* event) {
+    if (watched != print_ || event->type() != QEvent::KeyPress || !structured() || print_->isReadOnly())
+        return QSplitter::eventFilter(watched, event);
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if ((key->key() != Qt::Key_Return && key->key() != Qt::Key_Enter) ||
+        (key->modifiers() & ~Qt::KeypadModifier) != Qt::NoModifier)
+        return false;
+    auto c = print_->textCursor();
+    using structured::Style;
+    const auto style = structured::style_of(c.block());
+    const bool ends_style = style == Style::heading || style == Style::print_page_break ||
+                            style == Style::braille_page_break || style == Style::table_delimiter ||
+                            style == Style::blank || style == Style::note;
+    if (!ends_style || c.hasSelection() || !c.atBlockEnd()) return false;
+    // The new paragraph is body text (a copy of a break's format would be a second break).
+    c.insertBlock(structured::block_format(Style::body, 0), structured::base_char_format(Style::body, 0, print_->font()));
+    print_->setTextCursor(c);
+    return true;
+}
+
+void EditorWidget::set_paragraph_style(ParagraphStyle style, int level) {
+    if (!structured() || !layout_) return;
+    using structured::Style;
+    const Style shown = style == ParagraphStyle::heading     ? Style::heading
+                        : style == ParagraphStyle::bulleted  ? Style::bullet_item
+                        : style == ParagraphStyle::numbered  ? Style::number_item
+                        : style == ParagraphStyle::quotation ? Style::quote
+                                                             : Style::body;
+    auto c = print_->textCursor();
+    auto* doc = print_->document();
+    const auto first = doc->findBlock(c.selectionStart());
+    const auto last = doc->findBlock(c.selectionEnd());
+    const auto base = structured::base_char_format(shown, level, print_->font());
+    QTextCursor edit(doc);
+    edit.beginEditBlock();
+    QTextList* list = nullptr;
+    for (auto b = first; b.isValid() && b.blockNumber() <= last.blockNumber(); b = b.next()) {
+        edit.setPosition(b.position());
+        if (auto* old = b.textList()) old->remove(b);
+        auto bf = structured::block_format(shown, shown == Style::heading ? level : 1);
+        edit.setBlockFormat(bf);
+        edit.setBlockCharFormat(base);
+        // The text takes the style's size and weight; its emphasis stays.
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const auto frag = it.fragment();
+            QTextCharFormat f;
+            f.setFontPointSize(base.fontPointSize());
+            if (!structured::is_bold(frag.charFormat())) f.setFontWeight(base.fontWeight());
+            QTextCursor run(doc);
+            run.setPosition(frag.position());
+            run.setPosition(frag.position() + frag.length(), QTextCursor::KeepAnchor);
+            run.mergeCharFormat(f);
+        }
+        if (shown == Style::bullet_item || shown == Style::number_item) {
+            if (list) {
+                list->add(b);
+            } else {
+                QTextListFormat lf;
+                lf.setIndent(1);
+                lf.setStyle(shown == Style::bullet_item ? QTextListFormat::ListDisc : QTextListFormat::ListDecimal);
+                list = edit.createList(lf);
+            }
+        }
+    }
+    edit.endEditBlock();
+}
+
+void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
+    if (!structured() || !layout_) return;
+    auto c = print_->textCursor();
+    const auto has = [emphasis](const QTextCharFormat& f) {
+        return emphasis == document::emphasis_bold ? structured::is_bold(f) : f.fontItalic();
+    };
+    // On when any of the selection lacks it (as word processors do).
+    bool all = c.hasSelection();
+    if (c.hasSelection()) {
+        auto* doc = print_->document();
+        for (auto b = doc->findBlock(c.selectionStart()); b.isValid() && b.position() < c.selectionEnd(); b = b.next())
+            for (auto it = b.begin(); !it.atEnd(); ++it) {
+                const auto frag = it.fragment();
+                if (frag.position() + frag.length() <= c.selectionStart() || frag.position() >= c.selectionEnd()) continue;
+                if (!has(frag.charFormat())) all = false;
+            }
+    } else {
+        all = has(c.charFormat());
+    }
+    QTextCharFormat f;
+    if (emphasis == document::emphasis_bold) {
+        const bool heading = structured::style_of(c.block()) == structured::Style::heading;
+        f.setFontWeight(all ? (heading ? QFont::DemiBold : QFont::Normal) : QFont::Bold);
+    } else {
+        f.setFontItalic(!all);
+    }
+    if (c.hasSelection()) c.mergeCharFormat(f);
+    else print_->mergeCurrentCharFormat(f);  // what is typed next
+}
+
+void EditorWidget::insert_page_break() {
+    if (!structured() || !layout_) return;
+    const auto block = print_->textCursor().block();
+    QTextCursor edit(block);  // at the paragraph's start
+    edit.beginEditBlock();
+    // The paragraph moves down a block as it was; the empty block left above it is the break.
+    edit.insertBlock(block.blockFormat(), block.charFormat());
+    edit.movePosition(QTextCursor::PreviousBlock);
+    if (auto* list = edit.block().textList()) list->remove(edit.block());
+    auto bf = structured::block_format(structured::Style::print_page_break, 0);
+    bf.setProperty(structured::kCode, QStringLiteral("<!-- pagebreak -->"));
+    edit.setBlockFormat(bf);
+    edit.setBlockCharFormat(structured::base_char_format(structured::Style::body, 0, print_->font()));
+    edit.endEditBlock();
+}
+
+std::string EditorWidget::line_text(const QTextBlock& block) const {
+    return structured() ? structured::line_of(block) : block.text().toStdString();
+}
+
+std::size_t EditorWidget::cell_at(const QTextBlock& block, int position) const {
+    const auto i = static_cast<std::size_t>(block.blockNumber());
+    const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : document::BrailleLine{};
+    const auto& line = i < layout_->line_count() ? layout_->line(i) : std::string();
+    if (edit::is_braille_line(line)) return std::min(static_cast<std::size_t>(position), cells.size());
+    const auto content = QString::fromStdString(edit::editor_line_content(line, layout_->dialect())).toStdU32String();
+    const int column = structured() ? structured::content_column(block, position)
+                                    : content_column(block.text(), position, layout_->dialect());
+    return edit::print_to_braille(content, static_cast<std::size_t>(column), cells);
+}
+
+int EditorWidget::position_at(const QTextBlock& block, std::size_t cell) const {
+    const auto i = static_cast<std::size_t>(block.blockNumber());
+    const auto& line = layout_->line(i);
+    if (edit::is_braille_line(line)) return std::min(static_cast<int>(cell), block.length() - 1);
+    const auto content = QString::fromStdString(edit::editor_line_content(line, layout_->dialect())).toStdU32String();
+    const auto col = static_cast<int>(edit::braille_to_print(layout_->braille_of(i), cell, content));
+    const int at = structured() ? structured::block_position(block, col) : line_column(block.text(), col, layout_->dialect());
+    return std::min(at, block.length() - 1);
+}
 
 void EditorWidget::on_contents_change(int position, int removed, int added) {
     if (!layout_) return;
     Q_UNUSED(removed);
     auto* doc = print_->document();
     const int first = doc->findBlock(position).blockNumber();
-    const int last = doc->findBlock(position + added).blockNumber();
+    // A format change reports the block's end too: past the last block at the document's end.
+    const auto end_block = doc->findBlock(position + added);
+    const int last = end_block.isValid() ? end_block.blockNumber() : doc->lastBlock().blockNumber();
+    // A list's items renumbered by an edit are reported with it (QTextList
+    // marks them changed), so their lines are written again with their numbers.
     const int now = doc->blockCount();
     const int count = std::max(0, last - first + 1);
     const int old_count = count - (now - known_blocks_);
@@ -199,7 +435,7 @@ void EditorWidget::on_contents_change(int position, int removed, int added) {
     std::vector<std::string> lines;
     lines.reserve(static_cast<std::size_t>(count));
     for (auto b = doc->findBlockByNumber(first); b.isValid() && b.blockNumber() <= last; b = b.next())
-        lines.push_back(b.text().toStdString());
+        lines.push_back(line_text(b));
     last_stats_ = layout_->replace(static_cast<std::size_t>(first), static_cast<std::size_t>(std::max(0, old_count)),
                                    std::move(lines));
     replace_braille_blocks(first, std::max(0, old_count), count);
@@ -267,14 +503,8 @@ int EditorWidget::current_line() const { return print_->textCursor().blockNumber
 std::size_t EditorWidget::current_cell() const {
     if (!layout_) return 0;
     const auto c = print_->textCursor();
-    const auto line = c.block().text();
-    const auto i = static_cast<std::size_t>(c.blockNumber());
-    if (i >= layout_->line_count()) return 0;
-    const auto cells = layout_->braille_of(i);
-    if (edit::is_braille_line(line.toStdString()))
-        return std::min(static_cast<std::size_t>(c.positionInBlock()), cells.size());
-    const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
-    return edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, c.positionInBlock(), layout_->dialect())), cells);
+    if (static_cast<std::size_t>(c.blockNumber()) >= layout_->line_count()) return 0;
+    return cell_at(c.block(), c.positionInBlock());
 }
 
 edit::PagePosition EditorWidget::current_position() const {
@@ -288,16 +518,7 @@ void EditorWidget::sync_from_print() {
     const auto pc = print_->textCursor();
     const auto map_pos = [&](int pos) {
         const auto block = print_->document()->findBlock(pos);
-        const auto line = block.text();
-        const auto i = static_cast<std::size_t>(block.blockNumber());
-        const auto cells = i < layout_->line_count() ? layout_->braille_of(i) : document::BrailleLine{};
-        std::size_t cell;
-        if (edit::is_braille_line(line.toStdString())) {
-            cell = std::min(static_cast<std::size_t>(pos - block.position()), cells.size());
-        } else {
-            const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
-            cell = edit::print_to_braille(content, static_cast<std::size_t>(content_column(line, pos - block.position(), layout_->dialect())), cells);
-        }
+        const auto cell = cell_at(block, pos - block.position());
         const auto bb = braille_->document()->findBlockByNumber(block.blockNumber());
         return bb.isValid() ? bb.position() + std::min(static_cast<int>(cell), bb.length() - 1) : 0;
     };
@@ -313,6 +534,7 @@ void EditorWidget::sync_from_print() {
     if (line != cursor_line_) {
         cursor_line_ = line;
         if (const auto spoken = page_break_text(line); !spoken.isEmpty()) Q_EMIT page_break_reached(spoken);
+        else if (const auto said = structure_text(line); !said.isEmpty()) Q_EMIT structure_reached(said);
     }
 }
 
@@ -325,13 +547,7 @@ void EditorWidget::sync_from_braille() {
         const auto i = static_cast<std::size_t>(bblock.blockNumber());
         const auto pblock = print_->document()->findBlockByNumber(bblock.blockNumber());
         if (!pblock.isValid() || i >= layout_->line_count()) return 0;
-        const auto line = pblock.text();
-        const auto cell = static_cast<std::size_t>(pos - bblock.position());
-        if (edit::is_braille_line(line.toStdString()))
-            return pblock.position() + std::min(static_cast<int>(cell), pblock.length() - 1);
-        const auto content = QString::fromStdString(edit::editor_line_content(line.toStdString(), layout_->dialect())).toStdU32String();
-        const auto col = edit::braille_to_print(layout_->braille_of(i), cell, content);
-        return pblock.position() + std::min(line_column(line, static_cast<int>(col), layout_->dialect()), pblock.length() - 1);
+        return pblock.position() + position_at(pblock, static_cast<std::size_t>(pos - bblock.position()));
     };
     QTextCursor pc(print_->document());
     pc.setPosition(map_pos(bc.anchor()));
@@ -357,7 +573,16 @@ void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t 
     QTextCursor c(block);
     c.beginEditBlock();
     c.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
-    c.insertText(QString::fromStdString(document::to_unicode_text(current)));
+    if (structured()) {
+        // Shown as what it is now: cells, in the pane's own font.
+        if (auto* list = block.textList()) list->remove(block);
+        auto bf = structured::block_format(structured::Style::braille, 0);
+        c.setBlockFormat(bf);
+        c.insertText(QString::fromStdString(document::to_unicode_text(current)),
+                     structured::base_char_format(structured::Style::body, 0, print_->font()));
+    } else {
+        c.insertText(QString::fromStdString(document::to_unicode_text(current)));
+    }
     c.endEditBlock();
     // Put the braille caret after what was typed.
     const auto bb = braille_->document()->findBlockByNumber(static_cast<int>(line));
@@ -376,6 +601,9 @@ void EditorWidget::braille_typed(const document::BrailleLine& cells) {
     const auto to = end_block == start_block ? static_cast<std::size_t>(c.selectionEnd() - start_block.position())
                                              : static_cast<std::size_t>(start_block.length() - 1);
     edit_braille(line, from, to, cells);
+    // Space types a blank cell: echoed as a chord is, since a screen reader
+    // says nothing for the blank braille pattern.
+    if (cells.size() == 1 && cells.front().blank()) Q_EMIT cell_entered(tr("blank cell"));
     if (cells.size() == 1 && !cells.front().blank() && layout_) {
         // "dots 1 2", not "1-2": a screen reader reads the dash as "minus" or a range.
         const auto dots = QString::fromStdString(document::dot_numbers(cells.front())).replace(QLatin1Char('-'), QLatin1Char(' '));

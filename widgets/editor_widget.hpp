@@ -38,7 +38,27 @@ public:
     Result<void> set_tables(const std::string& tables);
     Result<void> set_layout_options(const layout::LayoutOptions& options);
 
-    [[nodiscard]] QString text() const;  // the editor's lines, one block each (layout().dialect())
+    // The editor's lines, one per print block (layout().dialect()): the model's
+    // lines, whatever the print pane shows.
+    [[nodiscard]] QString text() const;
+    // "Show codes": the print pane shows the lines' Markdown instead of their
+    // structure (a .txt is always its own lines).
+    void set_codes_shown(bool codes);
+    [[nodiscard]] bool codes_shown() const { return codes_; }
+    // The print pane shows structure (a Markdown-dialect document, codes hidden).
+    [[nodiscard]] bool structured() const;
+
+    // Styles, as a word processor's (the Styles menu): on the paragraphs the
+    // print cursor's selection touches. Each is one step of undo. In the codes
+    // view and in a text file they do nothing (the marks are typed there).
+    enum class ParagraphStyle { body, heading, bulleted, numbered, quotation };
+    void set_paragraph_style(ParagraphStyle style, int level = 1);
+    // Bold or italic (document::Emphasis) on the selection, or off when all
+    // of it has it already. (The editor's Markdown lines have no underline:
+    // docs/editor.md.)
+    void toggle_emphasis(std::uint8_t emphasis);
+    // A print page break as a paragraph of its own before the cursor's paragraph.
+    void insert_page_break();
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
@@ -52,6 +72,9 @@ public:
     // What a print page break line says, drawn on it and spoken when the cursor
     // comes to it ("Print page break, page 5"); empty for any other line.
     [[nodiscard]] QString page_break_text(int line) const;
+    // What a structured paragraph is, in words ("Heading level 2"); empty for
+    // body text and in the codes view (the marks are read there).
+    [[nodiscard]] QString structure_text(int line) const;
 
     // Cell edits on line `line`: replace cells [from, to) with `cells`.
     void edit_braille(std::size_t line, std::size_t from, std::size_t to, const document::BrailleLine& cells);
@@ -66,9 +89,23 @@ Q_SIGNALS:
     // The print cursor came to a print page break line: what to say for it
     // (a text file's form feed shows nothing a screen reader could read).
     void page_break_reached(const QString& spoken);
+    // The print cursor came to a paragraph with a structure the screen reader
+    // cannot hear from the text (Qt's text accessibility has no heading level
+    // or list number): "Heading level 2", "List item 3.", "Table row 2 of 4".
+    void structure_reached(const QString& spoken);
+
+protected:
+    // Return at the end of a heading, a break or a rule starts body text, as in a word processor.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void refresh_braille();
+    void show_lines(const QStringList& lines);
+    // The editor line a print block stands for now.
+    [[nodiscard]] std::string line_text(const QTextBlock& block) const;
+    // A position in a print block <-> the braille cell it maps to on its line.
+    [[nodiscard]] std::size_t cell_at(const QTextBlock& block, int position) const;
+    [[nodiscard]] int position_at(const QTextBlock& block, std::size_t cell) const;
     void on_contents_change(int position, int removed, int added);
     void replace_braille_blocks(int first, int removed, int count);
     // Replaces a braille paragraph's text by changing only the cells that differ.
@@ -87,6 +124,7 @@ private:
     int known_blocks_ = 1;
     int cursor_line_ = -1;  // the print cursor's line when it last moved
     bool syncing_ = false;
+    bool codes_ = false;
     edit::RelayoutStats last_stats_;
 };
 

@@ -6,7 +6,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QPushButton>
 #include <QTextBlock>
 #include <QTextCursor>
@@ -15,7 +15,7 @@
 
 namespace tactus::gui {
 
-FindReplaceDialog::FindReplaceDialog(QPlainTextEdit* editor, QWidget* parent)
+FindReplaceDialog::FindReplaceDialog(QTextEdit* editor, QWidget* parent)
     : QDialog(parent), editor_(editor) {
     setObjectName(QStringLiteral("findReplace"));
     setWindowTitle(tr("Find and Replace"));

@@ -7,14 +7,14 @@
 class QCheckBox;
 class QLabel;
 class QLineEdit;
-class QPlainTextEdit;
+class QTextEdit;
 
 namespace tactus::gui {
 
 class FindReplaceDialog : public QDialog {
     Q_OBJECT
 public:
-    FindReplaceDialog(QPlainTextEdit* editor, QWidget* parent = nullptr);
+    FindReplaceDialog(QTextEdit* editor, QWidget* parent = nullptr);
     void set_find_text(const QString& text);
 
 public Q_SLOTS:
@@ -28,7 +28,7 @@ Q_SIGNALS:
 
 private:
     bool find(bool backward);
-    QPlainTextEdit* editor_;
+    QTextEdit* editor_;
     QLineEdit* find_;
     QLineEdit* replace_;
     QCheckBox* case_;

@@ -33,7 +33,6 @@
 #include <QTableWidget>
 #include <QToolBar>
 #include <QVBoxLayout>
-#include <unistd.h>
 
 #include <algorithm>
 
@@ -46,6 +45,7 @@
 #include "export/export.hpp"
 #include "export/text_export.hpp"
 #include "layout/braille_pages.hpp"
+#include "platform/process_info.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
@@ -85,7 +85,7 @@ bool write_atomically(const QString& path, const QByteArray& bytes, QString* err
     return true;
 }
 
-bool process_alive(qint64 pid) { return pid > 0 && QFileInfo::exists(QStringLiteral("/proc/%1").arg(pid)); }
+bool process_alive(qint64 pid) { return tactus::platform::process_alive(pid); }
 
 }  // namespace
 
@@ -188,6 +188,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(editor_, &EditorWidget::page_break_reached, this, [this](const QString& spoken) {
         if (editor_->print_pane()->hasFocus()) announcer_->announce(spoken);
     });
+    connect(editor_, &EditorWidget::structure_reached, this, [this](const QString& spoken) {
+        if (editor_->print_pane()->hasFocus()) announcer_->announce(spoken);
+    });
     connect(sp, &SheetPreview::cursor_moved, this, [this, sp](const QString& text) {
         if (sp->hasFocus()) announcer_->announce(text);
     });
@@ -199,6 +202,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(editor_->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
 
     build_actions();
+    build_format_actions();
     build_menus();
     restore_settings();
     apply_system_look(*preview_);
@@ -297,6 +301,47 @@ void MainWindow::build_actions() {
     });
 }
 
+void MainWindow::build_format_actions() {
+    const auto make = [this](const QString& text, const QString& key, const QString& name, auto slot) {
+        auto* a = new QAction(text, this);
+        a->setShortcut(QKeySequence(key));
+        a->setObjectName(name);
+        a->setStatusTip(QString(text).remove(QLatin1Char('&')));
+        // Only while the print text has the focus: the braille pane's keys are its own.
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        connect(a, &QAction::triggered, this, slot);
+        format_actions_ << a;
+        return a;
+    };
+    using Style = EditorWidget::ParagraphStyle;
+    make(tr("&Body text"), tr("Ctrl+Alt+0"), QStringLiteral("formatBody"),
+         [this] { editor_->set_paragraph_style(Style::body); });
+    for (int level = 1; level <= 6; ++level)
+        make(tr("Heading &%1").arg(level), tr("Ctrl+Alt+%1").arg(level), QStringLiteral("formatHeading%1").arg(level),
+             [this, level] { editor_->set_paragraph_style(Style::heading, level); });
+    make(tr("B&ulleted list"), tr("Ctrl+Alt+L"), QStringLiteral("formatBulleted"),
+         [this] { editor_->set_paragraph_style(Style::bulleted); });
+    make(tr("&Numbered list"), tr("Ctrl+Alt+N"), QStringLiteral("formatNumbered"),
+         [this] { editor_->set_paragraph_style(Style::numbered); });
+    make(tr("&Quotation"), tr("Ctrl+Alt+Q"), QStringLiteral("formatQuotation"),
+         [this] { editor_->set_paragraph_style(Style::quotation); });
+    make(tr("&Page break"), tr("Ctrl+Return"), QStringLiteral("formatPageBreak"), [this] { editor_->insert_page_break(); });
+    make(tr("Bol&d"), tr("Ctrl+B"), QStringLiteral("formatBold"),
+         [this] { editor_->toggle_emphasis(document::emphasis_bold); });
+    make(tr("&Italic"), tr("Ctrl+I"), QStringLiteral("formatItalic"),
+         [this] { editor_->toggle_emphasis(document::emphasis_italic); });
+    show_codes_ = new QAction(tr("Show &codes"), this);
+    show_codes_->setObjectName(QStringLiteral("viewShowCodes"));
+    show_codes_->setCheckable(true);
+    show_codes_->setShortcut(QKeySequence(tr("Ctrl+Alt+C")));
+    show_codes_->setStatusTip(tr("Show the print text's Markdown codes instead of its styles"));
+    connect(show_codes_, &QAction::toggled, this, [this](bool on) {
+        editor_->set_codes_shown(on);
+        for (auto* a : format_actions_) a->setEnabled(!on);
+    });
+    addAction(show_codes_);
+}
+
 void MainWindow::build_menus() {
     keep_lone_alt_out_of_menus(menuBar());
     auto* file = menuBar()->addMenu(tr("&File"));
@@ -313,7 +358,12 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     edit->addActions({find_action_, find_next_});
     editor_->print_pane()->addActions({undo_, redo_, find_action_});
+    auto* format = menuBar()->addMenu(tr("St&yles"));
+    format->addActions(format_actions_);
+    editor_->print_pane()->addActions(format_actions_);
     auto* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(show_codes_);
+    view->addSeparator();
     view->addActions({focus_print_, focus_braille_, focus_preview_, focus_table_, focus_motion_, focus_vibration_,
                       focus_profile_});
     if (focus_printer_) view->addAction(focus_printer_);
@@ -329,6 +379,7 @@ QList<QAction*> MainWindow::all_actions() const {
     QList<QAction*> out;
     for (auto* a : actions())
         if (!a->text().isEmpty()) out << a;
+    out << format_actions_;
     return out;
 }
 
@@ -968,7 +1019,7 @@ void MainWindow::show_plan(const DocumentPlanPtr& plan) {
 bool MainWindow::autosave_now() {
     QDir().mkpath(autosave_dir());
     if (autosave_path_.isEmpty())
-        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(::getpid()).arg(QDateTime::currentMSecsSinceEpoch());
+        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(static_cast<qint64>(tactus::platform::current_process_id())).arg(QDateTime::currentMSecsSinceEpoch());
     // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
     // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
     // the rule a CUPS job follows too); anything else as the editor's lines.
@@ -987,7 +1038,7 @@ bool MainWindow::autosave_now() {
         message_->show_message(error, 10000);
         return false;
     }
-    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(::getpid())},
+    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(tactus::platform::current_process_id())},
                      {QStringLiteral("path"), path_},
                      {QStringLiteral("name"), source_name_},
                      {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
@@ -1014,7 +1065,7 @@ QList<Recovery> MainWindow::pending_recoveries() {
         if (!f.open(QIODevice::ReadOnly)) continue;
         const auto meta = QJsonDocument::fromJson(f.readAll()).object();
         const auto pid = meta.value(QStringLiteral("pid")).toInteger();
-        if (pid == ::getpid() || process_alive(pid)) continue;  // that Tactus is still running
+        if (pid == tactus::platform::current_process_id() || process_alive(pid)) continue;  // that Tactus is still running
         Recovery r;
         r.autosave_path = info.absoluteFilePath().chopped(5);
         if (!QFileInfo::exists(r.autosave_path)) continue;

@@ -173,6 +173,10 @@ private:
     QTimer plan_timer_;
     QPointer<QFutureWatcher<DocumentPlanPtr>> planning_;
     QAction *focus_motion_, *focus_vibration_, *focus_profile_, *focus_printer_ = nullptr, *emboss_ = nullptr;
+    // The Styles menu's styles and emphasis, and View's "Show codes".
+    QList<QAction*> format_actions_;
+    QAction* show_codes_ = nullptr;
+    void build_format_actions();
     QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
         *focus_table_, *shortcuts_, *about_, *menus_ = nullptr;
 };

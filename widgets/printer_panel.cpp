@@ -39,6 +39,7 @@
 #include "spool/printer_setup.hpp"
 #include "spool/printing.hpp"
 #include "spool/runner.hpp"
+#include "spool/strike_check.hpp"
 #include "spool/runner_token.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
@@ -60,10 +61,19 @@ QString qs(const std::string& s) { return QString::fromStdString(s); }
 // Item data of the device picker: a CUPS queue rather than a cable.
 constexpr int kNetworkRole = Qt::UserRole + 1;
 
-// What discovery of the CUPS queues brings back to the GUI thread.
+// A message and its detail ("Embossed a.md: all 120 strikes checked"), joined
+// the interface language's way: Chinese takes a full-width colon and no space.
+QString joined(const QString& head, const QString& detail) {
+    return detail.isEmpty() ? head : PrinterPanel::tr("%1: %2", "a message and its detail").arg(head, detail);
+}
+
+// What discovery of the CUPS queues brings back to the GUI thread: the queues,
+// or the server that did not answer and CUPS's reason (worded in the panel).
 struct Discovered {
     std::vector<ipp::RemoteQueue> queues;
-    std::string error;
+    bool failed = false;
+    std::string server;
+    std::string reason;
 };
 
 // A job on a CUPS queue in the words of the job view (the local ones where
@@ -115,10 +125,7 @@ QString with_speed(const QString& device, const QString& speed) {
     if (!spec) return device;
     if (speed.isEmpty()) spec->options.erase("speed");
     else spec->options["speed"] = speed.toStdString();
-    QString out = qs(spec->scheme) + (spec->path.empty() ? QString() : QStringLiteral(":") + qs(spec->path));
-    QStringList options;
-    for (const auto& [k, v] : spec->options) options << qs(k) + QLatin1Char('=') + qs(v);
-    return options.isEmpty() ? out : out + QLatin1Char('?') + options.join(QLatin1Char('&'));
+    return qs(transport::format_device(*spec));
 }
 
 // Opens the printer's device: the app's one built-in simulator for any `sim`
@@ -141,30 +148,17 @@ spool::ConnectFn connector(std::shared_ptr<controller::BuiltInSimulator> sim, li
     };
 }
 
-// The strikes of a job's last stream as the built-in simulator logged them,
-// against the plan (planned again with the printer's profile, as the runner did).
-// `firmware`: the tables the simulator ran the job with (protocol 3).
-QString strike_check(const std::string& document, const std::string& profile_json, const spool::JobRecord& job,
-                     const std::vector<controller::LoggedStrike>& logged,
-                     const std::optional<machine::FirmwareTables>& firmware) {
-    auto doc = spool::from_snapshot(document);
-    auto prof = profile::parse_profile(profile_json);
-    if (!doc || !prof) return {};
-    auto plan = spool::plan_copies(*doc, *prof, job.copies, firmware ? &*firmware : nullptr);
-    if (!plan || !job.link_job) return {};
-    const auto from = std::max<std::size_t>(job.run_start_sheet, 1);
-    std::vector<controller::LoggedStrike> expected;
-    for (const auto& s : controller::planned_strikes(*plan))
-        if (s.sheet >= from) expected.push_back(s);
-    std::vector<controller::LoggedStrike> got;
-    for (const auto& s : logged)
-        if (s.job_id == *job.link_job) got.push_back(s);
-    if (got != expected)
+// What the app says of a finished job on its built-in simulator: the
+// strikes the simulated controller logged against the plan (core's check).
+QString strike_check_text(const Result<spool::StrikeCheck>& check) {
+    if (!check) return QObject::tr("the strikes could not be checked: %1").arg(qs(check.error().to_string()));
+    if (!check->agrees)
         return QObject::tr("%1 strikes embossed but %2 planned: the simulator disagrees with the plan")
-            .arg(got.size()).arg(expected.size());
-    return from > 1 ? QObject::tr("all %1 strikes of sheets %2 to %3 checked against the plan")
-                          .arg(got.size()).arg(from).arg(job.total_sheets())
-                    : QObject::tr("all %1 strikes checked against the plan").arg(got.size());
+            .arg(check->embossed).arg(check->planned);
+    return check->first_sheet > 1
+               ? QObject::tr("all %1 strikes of sheets %2 to %3 checked against the plan")
+                     .arg(check->embossed).arg(check->first_sheet).arg(check->last_sheet)
+               : QObject::tr("all %1 strikes checked against the plan").arg(check->embossed);
 }
 
 }  // namespace
@@ -408,7 +402,8 @@ void PrinterPanel::discover_queues() {
         watcher->deleteLater();
         discovering_ = false;
         const auto found = watcher->result();
-        if (!found.error.empty()) log(tr("Listing CUPS queues: %1").arg(qs(found.error)));
+        if (found.failed)
+            log(tr("Cannot list the CUPS queues on %1: %2").arg(qs(found.server), qs(found.reason)));
         const auto current = selected_device();
         for (int i = devices_->count() - 1; i >= 0; --i)
             if (devices_->itemData(i, kNetworkRole).toBool()) devices_->removeItem(i);
@@ -428,13 +423,17 @@ void PrinterPanel::discover_queues() {
             devices_->setItemData(i, qs(q.uri), Qt::ToolTipRole);
         }
         if (!current.isEmpty()) select_device(current);
-        if (found.error.empty())
+        if (!found.failed)
             log(tr("%n Tactus queue(s) found on CUPS servers", nullptr, static_cast<int>(found.queues.size())));
     });
     watcher->setFuture(QtConcurrent::run([] {
         Discovered d;
         if (auto q = ipp::visible_tactus_queues()) d.queues = std::move(*q);
-        else d.error = q.error().to_string();
+        else {
+            d.failed = true;
+            d.server = q.error().where;
+            d.reason = q.error().message;
+        }
         return d;
     }));
 }
@@ -759,9 +758,7 @@ void PrinterPanel::follow_queue_jobs() {
                 }
             }
             if (s.state != ipp::RemoteJobState::processing || s.message != (j.status ? j.status->message : ""))
-                log(tr("Job %1 on %2: %3").arg(j.id).arg(j.queue, remote_state_text(s.state) +
-                                                                 (message_text.isEmpty() ? QString()
-                                                                                         : QStringLiteral(": ") + message_text)) +
+                log(tr("Job %1 on %2: %3").arg(j.id).arg(j.queue, joined(remote_state_text(s.state), message_text)) +
                     (s.reasons.empty() ? QString() : QStringLiteral(" (%1)").arg(qs(s.reasons))));
             j.status = s;
             changed = true;
@@ -987,14 +984,15 @@ void PrinterPanel::check_strikes(const spool::JobRecord& j) {
     connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, title, id] {
         const auto check = watcher->result();
         watcher->deleteLater();
-        const auto text = tr("Embossed %1").arg(title) + (check.isEmpty() ? QString() : QStringLiteral(": ") + check);
+        const auto text = joined(tr("Embossed %1").arg(title), check);
         log(text);
         Q_EMIT message(text, false);
         Q_EMIT job_finished(id, true, text);
     });
     watcher->setFuture(QtConcurrent::run(
         [document = *doc, profile = printer->profile_json, j, strikes = sim_->strikes(), fw = sim_->firmware()] {
-            return strike_check(document, profile, j, strikes, fw);
+            return strike_check_text(
+                spool::check_strikes(j, document, profile, strikes, fw ? &*fw : nullptr));
         }));
 }
 
@@ -1025,7 +1023,7 @@ void PrinterPanel::show_jobs() {
         set_text(row, col_job, QString::number(j.id));
         set_text(row, col_document, qs(j.title));
         set_text(row, col_printer, qs(j.printer));
-        set_text(row, col_state, state_text(j.state) + (j.reason.empty() ? QString() : QStringLiteral(": ") + qs(j.reason)));
+        set_text(row, col_state, joined(state_text(j.state), qs(j.reason)));
         set_text(row, col_sheet, s.sheet ? QString::number(s.sheet) : QString());
         // The bar moves in tenths: its value is what a screen reader reads.
         bar_at(row, tr("Progress of %1").arg(qs(j.title)), s.percent == 100 ? 100 : s.percent / 10 * 10);
@@ -1042,7 +1040,7 @@ void PrinterPanel::show_jobs() {
         if (j.cancelling && st && !st->ended()) state = tr("cancelling");
         const auto said = st ? (st->ended() ? st->why_ended() : st->message) : std::string();
         const auto why = !said.empty() ? qs(said) : j.error;
-        set_text(row, col_state, why.isEmpty() ? state : state + QStringLiteral(": ") + why);
+        set_text(row, col_state, joined(state, why));
         const bool processing = st && st->state == ipp::RemoteJobState::processing;
         set_text(row, col_sheet, processing ? QString::number(std::max(st->sheets_completed, 0) + 1) : QString());
         const int pct = st && st->state == ipp::RemoteJobState::completed ? 100
@@ -1112,7 +1110,7 @@ void PrinterPanel::append_events() {
     for (const auto& e : *events) {
         if (e.id <= last_event_) continue;
         last_event_ = e.id;
-        log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + qs(e.kind) + QStringLiteral(": ") + qs(e.message));
+        log((e.job ? tr("job %1: ").arg(*e.job) : QString()) + joined(qs(e.kind), qs(e.message)));
         if (!e.job || !news) continue;
         if (e.kind == "fault") {
             if (!faults.count(*e.job)) order.push_back(*e.job);
@@ -1167,7 +1165,7 @@ void PrinterPanel::update_status() {
                 doing = tr("%1 %2").arg(state_text(j.state), qs(j.title));
                 break;
             }
-        text = tr("Printer %1, %2").arg(qs(printer_), who) + (doing.isEmpty() ? QString() : QStringLiteral(": ") + doing);
+        text = joined(tr("Printer %1, %2").arg(qs(printer_), who), doing);
         if (!status_.isEmpty() && doing.isEmpty()) text += QStringLiteral(". ") + status_;
     }
     if (status_label_->text() != text) status_label_->setText(text);  // an unchanged text sends no event

@@ -12,8 +12,56 @@
 #include <QVBoxLayout>
 
 #include "profile/profile_json.hpp"
+#include "profile/profile_problem.hpp"
 
 namespace tactus::gui {
+namespace {
+
+QString unit_text(const std::string& u) {
+    if (u == "um") return QStringLiteral("\u00b5m");
+    if (u == "mm/s2") return QStringLiteral("mm/s\u00b2");
+    if (u == "mm/s3") return QStringLiteral("mm/s\u00b3");
+    if (u == "s") return ProfileEditor::tr("s");
+    if (u == "steps/s") return ProfileEditor::tr("steps/s");
+    return QString::fromStdString(u);
+}
+
+// A number with its unit, as the fields show them ("25 mm").
+QString amount(double v, const std::string& unit) {
+    const auto n = QString::number(v, 'g', 6);
+    return unit.empty() ? n : ProfileEditor::tr("%1 %2", "a number and its unit").arg(n, unit_text(unit));
+}
+
+}  // namespace
+
+// The core's problem record in the interface's words (validate() gives the
+// same in English for the command line).
+QString ProfileEditor::problem_text(const profile::ProfileProblem& p) {
+    using K = profile::ProblemKind;
+    const auto value = amount(p.value, p.unit);
+    const auto limit = amount(p.limit, p.unit);
+    switch (p.kind) {
+        case K::out_of_range:
+            return tr("is %1, must be between %2 and %3").arg(value, QString::number(p.limit, 'g', 6), amount(p.high, p.unit));
+        case K::not_above_zero: return tr("is %1, must be above 0").arg(value);
+        case K::above_maximum: return tr("is %1, must not exceed %2").arg(value, limit);
+        case K::below_physical_minimum: return tr("is %1, below the physical minimum of %2").arg(value, limit);
+        case K::too_slow: return tr("is %1, below %2: motion that slow would take days to plan and to emboss").arg(value, limit);
+        case K::too_many_steps:
+            return tr("needs %1, more than the controller can time (%2, 8 timer ticks per step)").arg(value, limit);
+        case K::not_above_dot_pitch: return tr("is %1, must exceed the dot pitch (%2) so neighbouring cells stay apart").arg(value, limit);
+        case K::not_above_cell_height: return tr("is %1, must exceed the cell height (%2)").arg(value, limit);
+        case K::line_too_wide:
+            return tr("%n cell(s) need %1 but the paper leaves %2 between the margins", nullptr, p.count).arg(value, limit);
+        case K::page_too_tall:
+            return tr("%n line(s) need %1 but the paper leaves %2 between the margins", nullptr, p.count).arg(value, limit);
+        case K::back_dots_off_paper: return tr("is %1, which puts back-side dots off the paper").arg(value);
+        case K::wider_than_paper: return tr("is %1, wider than the paper (%2): one hammer could never reach it").arg(value, limit);
+        case K::finer_than_half_step:
+            return tr("is %1, finer than half a carriage step (%2): unreachable at any speed").arg(value, limit);
+    }
+    return tr("is %1").arg(value);
+}
 
 ProfileEditor::ProfileEditor(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("profileEditor"));
@@ -97,7 +145,7 @@ void ProfileEditor::add(QFormLayout* form, const QString& name, const QString& l
     box->setAccessibleDescription(tr("Range %1; profile field %2").arg(range, name));
     box->setToolTip(box->accessibleDescription());
     box->setProperty("usualDescription", box->accessibleDescription());
-    form->addRow(label + QLatin1Char(':'), box);
+    form->addRow(tr("%1:", "a form field's label").arg(label), box);
     connect(box, &QDoubleSpinBox::valueChanged, this, &ProfileEditor::edited);
     fields_.push_back({name, box, std::move(ref)});
 }
@@ -128,10 +176,10 @@ void ProfileEditor::edited() {
     if (loading_) return;
     auto candidate = valid_;
     for (auto& f : fields_) f.ref(candidate) = f.box->value();
-    if (auto ok = profile::validate(candidate); !ok) {
+    if (auto problem = profile::first_problem(candidate)) {
         // Name the field in words the technician used in the form.
-        QString field = QString::fromStdString(ok.error().where);
-        field.remove(QStringLiteral("field "));
+        const auto field = QString::fromStdString(problem->field);
+        const auto why = problem_text(*problem);
         QString label = field;
         for (auto& f : fields_) {
             const bool bad = f.name == field;
@@ -139,10 +187,9 @@ void ProfileEditor::edited() {
             if (bad) label = f.box->accessibleName();
             f.box->setStyleSheet(bad ? QStringLiteral("QDoubleSpinBox { border: 2px solid #c00000; }") : QString());
         }
-        const auto text = tr("%1 %2. The plan and preview keep the last valid profile.")
-                              .arg(label, QString::fromStdString(ok.error().message));
+        const auto text = tr("%1 %2. The plan and preview keep the last valid profile.").arg(label, why);
         // Back on the field later, the screen reader says it is invalid and why.
-        for (auto& f : fields_) mark_invalid(f.box, f.name == field ? QString::fromStdString(ok.error().message) : QString());
+        for (auto& f : fields_) mark_invalid(f.box, f.name == field ? why : QString());
         status_->setText(text);
         status_->setProperty("error", true);
         Q_EMIT message(text, true);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "profile/profile.hpp"
+#include "profile/profile_problem.hpp"
 
 class QDoubleSpinBox;
 class QFormLayout;
@@ -42,6 +43,7 @@ private:
     void edited();
     // Puts a problem in the field's accessible description, or takes it out.
     static void mark_invalid(QDoubleSpinBox* box, const QString& problem);
+    static QString problem_text(const profile::ProfileProblem& p);
 
     std::vector<Field> fields_;
     profile::PrinterProfile valid_;

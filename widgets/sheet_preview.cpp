@@ -236,7 +236,7 @@ QString SheetPreview::cursor_description() const {
     if (l >= page->lines.size() || c >= page->lines[l].size() || page->lines[l][c].blank())
         return where + tr(": blank");
     const auto& line = page->lines[l];
-    QString text = where + QStringLiteral(": ") + tr("dots %1").arg(cell_text(line[c]));
+    QString text = tr("%1: %2", "a cell's place and its dots").arg(where, tr("dots %1").arg(cell_text(line[c])));
     if (print_word_) {
         const auto interpoint = doc_ && doc_->geometry.interpoint;
         const std::size_t index = interpoint ? 2 * (sheet_ - 1) + (options_.cursor_on_back ? 1 : 0) : sheet_ - 1;

@@ -33,6 +33,8 @@ TablePicker::TablePicker(QWidget* parent) : QComboBox(parent) {
     setAccessibleName(tr("Braille table"));
     setAccessibleDescription(tr("The language and braille code the print is translated with"));
     setToolTip(accessibleDescription());
+    // The window says "Braille table: ..." for each change (MainWindow::set_table).
+    setProperty("announcesChange", true);
     const QLocale ui;  // the interface language (main sets it as the default)
     const bool english = ui.language() == QLocale::English || ui.language() == QLocale::C;
     for (const auto& t : translate::table_catalogue(ui.bcp47Name().toStdString())) {

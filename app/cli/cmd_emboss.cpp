@@ -1,12 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli emboss: lay out, plan, encode and send a document to the embosser.
 // Exit 0 only when the controller has confirmed executing every pass.
-#include <unistd.h>
-
 #include <chrono>
-#include <csignal>
 #include <iostream>
-
 #include <optional>
 
 #include "command.hpp"
@@ -21,6 +17,8 @@
 #include "link/link.hpp"
 #include "machine/reference_firmware.hpp"
 #include "plan/plan_file.hpp"
+#include "platform/console.hpp"
+#include "platform/termination.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 #include "protocol_choice.hpp"
@@ -126,10 +124,11 @@ spool::PrintJob prepare(const EmbossArgs& a, bool for_firmware = false,
                         const std::optional<machine::FirmwareTables>& known_tables = std::nullopt) {
     const auto profile = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(profile);
-    const auto doc = lay_out_for_cli(a.layout, options);
+    std::optional<machine::FirmwareTables> tables;
+    if (for_firmware) tables = firmware_tables(a, profile, known_tables);
+    const auto doc = lay_out_for_cli(a.layout, options, &profile, tables, !for_firmware);
     warn_about_conflicts(doc, profile);
-    if (for_firmware)
-        return require(spool::make_firmware_print_job(doc, profile, firmware_tables(a, profile, known_tables), a.device));
+    if (tables) return require(spool::make_firmware_print_job(doc, profile, *tables, a.device));
     return require(spool::make_print_job(doc, profile, a.device));
 }
 
@@ -144,7 +143,7 @@ spool::StreamSize dry_run(const EmbossArgs& a, std::optional<plan::PlanFile> sav
     if (!saved && !tables) {
         const auto profile = load_profile_arg(a.profile);
         const auto options = a.layout.pipeline_options(profile);
-        const auto doc = lay_out_for_cli(a.layout, options);
+        const auto doc = lay_out_for_cli(a.layout, options, &profile, std::nullopt, true);
         warn_about_conflicts(doc, profile);
         return require(spool::measure_print_job(doc, profile, a.start_sheet));
     }
@@ -223,11 +222,10 @@ void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
     const auto job = saved ? saved_plan_job(a, std::move(*saved), link.protocol())
                            : prepare(a, link.protocol() == encode::kProtocolV3, options.sim_firmware);
 
-    const bool tty = isatty(STDERR_FILENO) != 0;
+    const bool tty = platform::stderr_is_terminal();
     link::CancelToken cancel;
     g_cancel = &cancel;
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
+    platform::on_termination(on_interrupt);
     bool bar_drawn = false;
     auto out = spool::send_print_job(
         link, job, a.start_sheet,

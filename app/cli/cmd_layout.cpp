@@ -56,6 +56,14 @@ void print_summary(std::ostream& out, const layout::PagedDocument& doc, const pi
     std::size_t volumes = 0;
     for (const auto& s : doc.sections) volumes += s.starts_volume ? 1 : 0;
     if (volumes > 1) out << "volumes:    " << volumes << '\n';
+    std::size_t graphic_dots = 0, graphic_pages = 0;
+    for (const auto& p : doc.pages) {
+        graphic_dots += p.graphic.size();
+        if (!p.graphic.empty()) ++graphic_pages;
+    }
+    if (graphic_pages > 0)
+        out << "graphic:    " << graphic_dots << " dots on " << graphic_pages << " graphic page"
+            << (graphic_pages == 1 ? "" : "s") << '\n';
     for (const auto& w : doc.warnings) out << "warning:    " << w << '\n';
 }
 

@@ -75,12 +75,12 @@ nlohmann::json tuning_json(const estimate::MoveTuner& t) {
 void run_plan(const PlanArgs& a) {
     const auto prof = load_profile_arg(a.profile);
     const auto options = a.layout.pipeline_options(prof);
-    const auto doc = lay_out_for_cli(a.layout, options);
-    warn_about_conflicts(doc, prof);
     // Protocol 3: the plan `emboss` makes for the reference firmware
     // (spool::make_firmware_print_job), its table moves timed as it runs them.
     plan::PlanOptions options_plan;
     options_plan.firmware = protocol_tables("plan", a.protocol, prof);
+    const auto doc = lay_out_for_cli(a.layout, options, &prof, options_plan.firmware, !options_plan.firmware);
+    warn_about_conflicts(doc, prof);
     // A plan file's tables must be its profile's (plan_from_json checks them).
     if (options_plan.firmware) require(profile::check_firmware_tables(*options_plan.firmware, prof), exit_bad_input);
     const bool firmware = options_plan.firmware.has_value();

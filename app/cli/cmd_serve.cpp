@@ -3,12 +3,12 @@
 // until SIGINT or SIGTERM. Stopping aborts the job in hand on its controller and
 // puts it back in the queue; kill -9 is safe too (see docs/spool.md).
 #include <atomic>
-#include <csignal>
 #include <iostream>
 #include <thread>
 
 #include "command.hpp"
 #include "link/link.hpp"
+#include "platform/termination.hpp"
 #include "spool/runner.hpp"
 #include "spool_args.hpp"
 
@@ -48,8 +48,7 @@ void run_serve(const ServeArgs& a) {
     const auto link_options = options.link;
     auto connect = [link_options](const spool::PrinterRecord& p) { return spool::open_printer(p, link_options); };
 
-    std::signal(SIGINT, on_serve_signal);
-    std::signal(SIGTERM, on_serve_signal);
+    platform::on_termination(on_serve_signal);
     std::vector<std::unique_ptr<spool::Runner>> runners;
     for (const auto& n : names) {
         auto r = std::make_unique<spool::Runner>(s.path(), n, connect, options);

@@ -2,7 +2,6 @@
 // tactus-cli sim --pty: the simulated 89C52 behind a pseudo-terminal. Prints the
 // pty path on the first line of stdout and serves until killed.
 #include <algorithm>
-#include <csignal>
 #include <fstream>
 #include <iostream>
 
@@ -11,6 +10,7 @@
 #include "command.hpp"
 #include "controller/pty_server.hpp"
 #include "firmware_emulator.hpp"
+#include "platform/termination.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile_arg.hpp"
 #include "protocol_choice.hpp"
@@ -94,9 +94,8 @@ void run_firmware_sim(const SimArgs& a) {
     o.reset_at_strike = static_cast<std::size_t>(std::max(0, a.reset_at_strike));
     o.paper_reload_reads = static_cast<std::size_t>(std::max(0, a.paper_reload_reads));
     auto log = open_log(a.strike_log);
-    std::signal(SIGTERM, on_signal);
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGPIPE, SIG_IGN);
+    platform::on_termination(on_signal);
+    platform::ignore_broken_pipe();
     run_firmware_emulator(o, g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); });
 }
 
@@ -150,9 +149,8 @@ void run_sim(const SimArgs& a) {
     if (a.mute_after_pass > 0) ctl.mute_after_pass(static_cast<std::uint16_t>(a.mute_after_pass));
     MuteWatch watch;
     auto log = open_log(a.strike_log);
-    std::signal(SIGTERM, on_signal);
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGPIPE, SIG_IGN);
+    platform::on_termination(on_signal);
+    platform::ignore_broken_pipe();
     std::cout << server->path() << std::endl;
     auto r = server->serve(g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); },
                            [&](const controller::SimController& c) {

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "emboss_queue.hpp"
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -100,7 +98,7 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     const auto profile = profile::parse_profile(record.profile_json);
     if (!profile) fail_with(exit_bad_input, located(profile.error(), "printer " + record.name));
     const auto options = layout.pipeline_options(*profile);
-    const auto doc = lay_out_for_cli(layout, options);
+    const auto doc = lay_out_for_cli(layout, options, &*profile);
     const auto part = require(spool::select_pages(doc, first, last));
     // The print job the runner will make, made once now: a job the printer
     // cannot be sent (more passes than the controller counts, a page the

@@ -2,12 +2,12 @@
 #include "emboss_remote.hpp"
 
 #include <atomic>
-#include <csignal>
 #include <iostream>
 
 #include "command.hpp"
 #include "ipp/queue_options.hpp"
 #include "ipp/remote_job.hpp"
+#include "platform/termination.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -75,12 +75,10 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
         [&](int sent) {
             id = sent;
             std::cout << "sent " << layout.file << " to " << uri << " as job " << id << std::endl;
-            std::signal(SIGINT, on_interrupt_remote);
-            std::signal(SIGTERM, on_interrupt_remote);
+            platform::on_termination(on_interrupt_remote);
         },
         [](const ipp::RemoteJobStatus& s) { std::cout << describe(s) << std::endl; }, g_cancel);
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    platform::default_termination();
     const auto last = require(end);
     switch (last.state) {
         case ipp::RemoteJobState::completed:

@@ -1,41 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "firmware_emulator.hpp"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <termios.h>
-#include <sys/resource.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <array>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 #include "command.hpp"
 #include "controller/firmware_trace.hpp"
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
+#include "platform/durable_file.hpp"
+#include "platform/sim_endpoint.hpp"
 
 namespace tactus::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool in_path(const std::string& tool) {
-    const char* path = std::getenv("PATH");
-    std::stringstream dirs(path ? path : "/usr/bin:/bin");
-    for (std::string d; std::getline(dirs, d, ':');)
-        if (!d.empty() && access((fs::path(d) / tool).c_str(), X_OK) == 0) return true;
-    return false;
-}
 
 // A symbol's address from the linker's map next to the image: the firmware's
 // sheet number in internal RAM (the pin trace says where the carriage and the
@@ -57,48 +44,14 @@ unsigned map_symbol(const fs::path& map, const std::string& symbol) {
                                                                           : ""));
 }
 
-// A child with stdin from `in`, stdout and stderr to `log`, in `dir`, niced:
-// s51 is CPU-heavy and the machine is shared.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& dir, const fs::path& log, int in) {
-    const pid_t pid = fork();
-    if (pid != 0) return pid;
-    if (chdir(dir.c_str()) != 0) _exit(126);
-    const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (in >= 0) dup2(in, STDIN_FILENO);
-    if (out >= 0) {
-        dup2(out, STDOUT_FILENO);
-        dup2(out, STDERR_FILENO);
-    }
-    (void)setpriority(PRIO_PROCESS, 0, 10);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execvp(argv[0], argv.data());
-    _exit(127);
-}
-
-void stop_child(pid_t pid) {
-    if (pid <= 0) return;
-    kill(pid, SIGTERM);
-    for (int i = 0; i < 50; ++i) {
-        if (waitpid(pid, nullptr, WNOHANG) == pid) return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    kill(pid, SIGKILL);
-    waitpid(pid, nullptr, 0);
-}
-
-// Removes the run's folder and stops the children, however the run ends.
+// Removes the run's folder and stops the emulator, however the run ends.
 struct Run {
     fs::path dir;
-    pid_t s51 = -1;
-    int fifo_in = -1, fifo_out = -1;
-    int master = -1, slave_keep = -1;
-    int console[2] = {-1, -1};
+    std::optional<platform::ChildProcess> s51;
+    platform::Channel fifo_in, fifo_out;
+    platform::SimEndpoint pty;
     ~Run() {
-        stop_child(s51);
-        for (int fd : {fifo_in, fifo_out, master, slave_keep, console[0], console[1]})
-            if (fd >= 0) close(fd);
+        s51.reset();
         std::error_code ec;
         if (!dir.empty() && !std::getenv("TACTUS_KEEP_EMULATOR_DIR")) fs::remove_all(dir, ec);
     }
@@ -108,27 +61,29 @@ struct Run {
 // dropped, bit-flipped or duplicated at `noise` (seeded), like sim --pty's.
 class Bridge {
 public:
-    Bridge(int master, int to_chip, int from_chip, double noise, std::uint64_t seed)
+    Bridge(platform::Channel& master, platform::Channel& to_chip, platform::Channel& from_chip, double noise,
+           std::uint64_t seed)
         : master_(master), to_chip_(to_chip), from_chip_(from_chip), noise_(noise), rng_(seed) {}
 
     // Moves what is waiting, for up to `ms` milliseconds.
     void pump(int ms) {
-        pollfd fds[2] = {{master_, POLLIN, 0}, {from_chip_, POLLIN, 0}};
-        if (poll(fds, 2, ms) <= 0) return;
+        platform::Channel* const lines[] = {&master_, &from_chip_};
+        const auto ready = platform::wait_readable(lines, std::chrono::milliseconds(ms));
+        if (!ready) return;
         std::array<std::uint8_t, 512> buf{};
-        if (fds[0].revents & POLLIN) {
-            const auto n = read(master_, buf.data(), buf.size());
-            if (n > 0) forward(to_chip_, std::span(buf).first(static_cast<std::size_t>(n)));
+        if ((*ready)[0]) {
+            const auto n = master_.read_some(buf);
+            if (n && *n > 0) forward(to_chip_, std::span(buf).first(*n));
         }
-        if (fds[1].revents & POLLIN) {
-            const auto n = read(from_chip_, buf.data(), buf.size());
-            if (n > 0) forward(master_, std::span(buf).first(static_cast<std::size_t>(n)));
+        if ((*ready)[1]) {
+            const auto n = from_chip_.read_some(buf);
+            if (n && *n > 0) forward(master_, std::span(buf).first(*n));
         }
     }
     [[nodiscard]] std::size_t corrupted() const { return corrupted_; }
 
 private:
-    void forward(int fd, std::span<const std::uint8_t> in) {
+    void forward(platform::Channel& to, std::span<const std::uint8_t> in) {
         std::vector<std::uint8_t> out;
         std::uniform_real_distribution<double> u(0, 1);
         for (std::uint8_t b : in) {
@@ -147,12 +102,14 @@ private:
             }
         }
         for (std::size_t done = 0; done < out.size();) {
-            const auto n = write(fd, out.data() + done, out.size() - done);
-            if (n <= 0) return;  // the client went away: the line loses the bytes
-            done += static_cast<std::size_t>(n);
+            const auto n = to.write_some(std::span(out).subspan(done));
+            if (!n || *n == 0) return;  // the client went away: the line loses the bytes
+            done += *n;
         }
     }
-    int master_, to_chip_, from_chip_;
+    platform::Channel& master_;
+    platform::Channel& to_chip_;
+    platform::Channel& from_chip_;
     double noise_;
     std::mt19937_64 rng_;
     std::size_t corrupted_ = 0;
@@ -170,19 +127,21 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     const unsigned strike_fired = o.reset_at_strike > 0 ? map_symbol(map, "_fw_strike_fired") : 0;
     const bool reload = o.paper_out && o.paper_reload_reads > 0;
     const unsigned paper_read = reload ? map_symbol(map, "_fw_paper_present") : 0;
-    if (!in_path("s51"))
+    if (!platform::find_in_path("s51"))
         throw CommandFailed(exit_device, "sim --firmware: s51 not found (apt-get install sdcc-ucsim)");
     Run run;
-    std::string tmpl = (fs::temp_directory_path() / "tactus-s51.XXXXXX").string();
-    if (!mkdtemp(tmpl.data())) throw CommandFailed(exit_failure, "sim --firmware: cannot make a temporary folder");
-    run.dir = tmpl;
+    auto dir = platform::make_private_dir("tactus-s51");
+    if (!dir) throw CommandFailed(exit_failure, "sim --firmware: cannot make a temporary folder");
+    run.dir = *dir;
     const auto h2t = run.dir / "h2t", t2h = run.dir / "t2h";
     const auto vcd = o.pin_trace.empty() ? run.dir / "pins.vcd" : fs::absolute(o.pin_trace);
-    if (mkfifo(h2t.c_str(), 0600) != 0 || mkfifo(t2h.c_str(), 0600) != 0)
-        throw CommandFailed(exit_failure, "sim --firmware: cannot make the emulator's FIFOs in " + run.dir.string());
     // Held open on both ends here (this process is the bridge), so s51's opens never wait.
-    run.fifo_in = open(h2t.c_str(), O_RDWR | O_CLOEXEC);
-    run.fifo_out = open(t2h.c_str(), O_RDWR | O_CLOEXEC);
+    auto fifo_in = platform::open_fifo(h2t);
+    auto fifo_out = platform::open_fifo(t2h);
+    if (!fifo_in || !fifo_out)
+        throw CommandFailed(exit_failure, "sim --firmware: cannot make the emulator's FIFOs in " + run.dir.string());
+    run.fifo_in = std::move(*fifo_in);
+    run.fifo_out = std::move(*fifo_out);
     {
         // A command file runs before a hex file named on the command line is
         // loaded, so it loads the image itself.
@@ -221,24 +180,22 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
     // s51 at times (under load, in CI) went on to read its own log as
     // commands once the chip stopped, and its real stop reason scrolled out
     // of the log's tail behind the parser errors.
-    if (pipe2(run.console, O_CLOEXEC) != 0)
-        throw CommandFailed(exit_failure, "sim --firmware: cannot make a pipe for the emulator's console");
-    run.s51 = spawn({"s51", "-t", "C52", "-X", "11.0592M", "-S", "in=h2t,out=t2h", "-e", "uart0_check_often=1",
-                     "-b", "-C", "cmds"},
-                    run.dir, run.dir / "s51.log", run.console[0]);
+    auto s51 = platform::ChildProcess::spawn(
+        {.args = {"s51", "-t", "C52", "-X", "11.0592M", "-S", "in=h2t,out=t2h", "-e", "uart0_check_often=1", "-b",
+                  "-C", "cmds"},
+         .dir = run.dir,
+         .log = run.dir / "s51.log",
+         .idle_input = true,
+         .lower_priority = true});
+    if (!s51) throw CommandFailed(exit_failure, "sim --firmware: cannot start s51: " + s51.error().what);
+    run.s51.emplace(std::move(*s51));
     // The pty a host opens; its slave is held open so the pty outlives a
     // client that closes it. Raw: every byte value passes.
-    run.master = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (run.master < 0 || grantpt(run.master) != 0 || unlockpt(run.master) != 0)
-        throw CommandFailed(exit_device, "sim --firmware: cannot make a pseudo-terminal");
-    const std::string pts = ptsname(run.master);
-    run.slave_keep = open(pts.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-    termios t{};
-    if (run.slave_keep < 0 || tcgetattr(run.slave_keep, &t) != 0)
-        throw CommandFailed(exit_device, "sim --firmware: cannot open " + pts);
-    cfmakeraw(&t);
-    tcsetattr(run.slave_keep, TCSANOW, &t);
-    Bridge line(run.master, run.fifo_in, run.fifo_out, o.noise, o.seed);
+    auto pty = platform::SimEndpoint::open(false);
+    if (!pty) throw CommandFailed(exit_device, "sim --firmware: cannot make a pseudo-terminal: " + pty.error().what);
+    run.pty = std::move(*pty);
+    const std::string pts = run.pty.path();
+    Bridge line(run.pty.line(), run.fifo_in, run.fifo_out, o.noise, o.seed);
     std::cout << pts << std::endl;
 
     controller::FirmwareTrace trace(o.carriage_steps_per_mm, o.feed_steps_per_mm);
@@ -267,14 +224,9 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
         if (std::chrono::steady_clock::now() - last_drain < std::chrono::milliseconds(50)) continue;
         last_drain = std::chrono::steady_clock::now();
         drain();
-        int status = 0;
-        if (waitpid(run.s51, &status, WNOHANG) == run.s51) {
-            run.s51 = -1;
-            ended = true;
-        }
+        if (!run.s51->running()) ended = true;
     }
-    stop_child(run.s51);
-    run.s51 = -1;
+    run.s51.reset();
     drain();  // what s51 wrote as it stopped
     std::cerr << "sim: " << fired << " strikes fired by the firmware (read from its pins), " << line.corrupted()
               << " bytes dropped, flipped or duplicated on the line"

@@ -1,19 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "layout_args.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <iostream>
 
 #include "command.hpp"
+#include "graphic/graphic_page.hpp"
+#include "graphic/svg_import.hpp"
 #include "layout/braille_pages.hpp"
+#include "platform/console.hpp"
+#include "profile/firmware_tables.hpp"
 #include "profile/page_geometry.hpp"
 
 namespace tactus::cli {
 
 void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
-    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf or .pef")->required();
+    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf, .pef, or an .svg drawing (a tactile graphic)")->required();
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
     std::string presets;
@@ -123,7 +125,7 @@ namespace {
 // nothing when stderr is a file or a pipe (scripts read it).
 class ProgressLine {
 public:
-    ProgressLine() : tty_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+    ProgressLine() : tty_(platform::stderr_is_terminal()), start_(std::chrono::steady_clock::now()) {}
     ~ProgressLine() {
         if (shown_) std::cerr << "\r                         \r" << std::flush;
     }
@@ -146,7 +148,21 @@ private:
 
 }  // namespace
 
-layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options) {
+layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
+                                      const profile::PrinterProfile* machine,
+                                      const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol) {
+    if (graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg")) {
+        const auto m = machine ? *machine : profile::default_profile();
+        std::optional<machine::FirmwareTables> grid = firmware;
+        if (!grid && !legacy_protocol)
+            if (auto made = profile::make_firmware_tables(m)) grid = std::move(*made);
+        const auto drawing = require(graphic::load_svg(args.file));
+        const auto table = require(translate::Translator::open(options.tables), exit_usage);
+        auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, graphic::dot_options(m, grid ? &*grid : nullptr)));
+        for (const auto& w : laid.document.warnings)
+            std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
+        return std::move(laid.document);
+    }
     const auto doc = require(import::import_file(args.file, options.import));
     if (layout::is_ready_braille(doc) && !options.reflow_braille)
         if (auto fits = layout::check_braille_fits(doc, options.layout); !fits)

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "pipeline/pipeline.hpp"
+#include "machine/firmware_tables.hpp"
 #include "profile/profile.hpp"
 
 namespace tactus::cli {
@@ -45,6 +46,15 @@ struct LayoutArgs {
 // Imports `args.file`, tells the user before anything else happens when
 // ready-made braille does not fit the page (exit_page_too_small) or the table
 // does not suit the text (a warning), then lays it out. Warnings go to stderr.
-layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options);
+// An SVG drawing becomes a graphic page for `machine` (the bundled profile
+// when none is given): its dots are placed on that machine's step grid.
+// `firmware`: the tables of a protocol-3 plan, whose grid the dots then keep
+// (graphic::dot_options); without them, the grid of the tables the profile
+// makes (protocol 3, the default everywhere), or the motor steps when the
+// reference firmware cannot run the profile.
+layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
+                                      const profile::PrinterProfile* machine = nullptr,
+                                      const std::optional<machine::FirmwareTables>& firmware = std::nullopt,
+                                      bool legacy_protocol = false);
 
 }  // namespace tactus::cli

@@ -5,9 +5,6 @@
 // udev rule, see docs/cups.md) and the spool folder (owned by lp).
 //   tactus                                   discovery: one line per cable
 //   tactus job user title copies options [file]   emboss one job
-#include <unistd.h>
-
-#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <mutex>
@@ -16,6 +13,9 @@
 #include "backend_job.hpp"
 #include "cups_options.hpp"
 #include "discovery.hpp"
+#include "platform/console.hpp"
+#include "platform/process_info.hpp"
+#include "platform/termination.hpp"
 
 namespace {
 
@@ -28,7 +28,7 @@ void say(const std::string& line) {
     // cupsd reads stderr line by line; one write per line so two threads'
     // lines never interleave. A dead cupsd (EPIPE) is ignored: the job goes on.
     const std::string text = line + "\n";
-    (void)!::write(STDERR_FILENO, text.data(), text.size());
+    tactus::platform::write_stderr(text);
 }
 
 std::string env(const char* name) {
@@ -50,14 +50,14 @@ int main(int argc, char** argv) {
     using namespace tactus::cups;
     // cupsd may die while we emboss; the sheet in the machine must still be
     // finished and recorded, so a closed stderr pipe is not fatal.
-    std::signal(SIGPIPE, SIG_IGN);
+    tactus::platform::ignore_broken_pipe();
     if (argc == 1) return discovery();
     if (argc < 6 || argc > 7) {
         std::cerr << "Usage: tactus job-id user title copies options [file]\n"
                      "       tactus            (list the cables an embosser may be on)\n";
         return backend_failed;
     }
-    if (geteuid() == 0) {
+    if (tactus::platform::running_as_root()) {
         say("ERROR: the tactus backend does not run as root; install it with mode 0755 so CUPS runs it as lp");
         return backend_stop;
     }
@@ -77,10 +77,6 @@ int main(int argc, char** argv) {
     job.device_uri = env("DEVICE_URI");
     job.queue = env("PRINTER");
 
-    struct sigaction sa{};
-    sa.sa_handler = on_terminate;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGTERM, &sa, nullptr);
-    sigaction(SIGINT, &sa, nullptr);
+    tactus::platform::on_termination_interrupting(on_terminate);
     return run_backend_job(job, BackendTuning{}, say, g_terminate);
 }

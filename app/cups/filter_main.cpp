@@ -6,8 +6,6 @@
 // the spool on this server; `-o` options (job_options.hpp) choose the table
 // and may narrow the page. Any error is one ERROR: line and exit 1: CUPS
 // stops the job and shows the line, and nothing reaches the embosser.
-#include <unistd.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <iostream>

@@ -9,13 +9,12 @@
 #include <QTimer>
 #include <QSocketNotifier>
 #include <QTranslator>
-#include <csignal>
 #include <cstdio>
-#include <unistd.h>
 
 #include "announcer.hpp"
 #include "editor_widget.hpp"
 #include "main_window.hpp"
+#include "platform/termination.hpp"
 #include "preview_panel.hpp"
 #include "printer_panel.hpp"
 
@@ -30,15 +29,6 @@ bool wants_text_only(int argc, char** argv) {
         if (a == "--help" || a == "-h" || a == "--help-all" || a == "--version" || a == "-v") return true;
     }
     return false;
-}
-
-// SIGTERM and SIGINT (a session ending, a script) quit the event loop; the
-// window's destructor then stops its spool runner, so the job it was embossing
-// waits in the queue. No question is asked: nobody is there to answer.
-int g_signal_pipe[2] = {-1, -1};
-extern "C" void on_quit_signal(int) {
-    const char c = 1;
-    (void)!write(g_signal_pipe[1], &c, 1);
 }
 
 }  // namespace
@@ -102,11 +92,12 @@ int main(int argc, char** argv) {
         QApplication::installTranslator(&translator);
 
     install_accessibility();
-    if (pipe(g_signal_pipe) == 0) {
-        auto* quit_notifier = new QSocketNotifier(g_signal_pipe[0], QSocketNotifier::Read, &app);
+    // SIGTERM and SIGINT (a session ending, a script) quit the event loop; the
+    // window's destructor then stops its spool runner, so the job it was embossing
+    // waits in the queue. No question is asked: nobody is there to answer.
+    if (const auto notice = tactus::platform::termination_notice(); notice >= 0) {
+        auto* quit_notifier = new QSocketNotifier(static_cast<qintptr>(notice), QSocketNotifier::Read, &app);
         QObject::connect(quit_notifier, &QSocketNotifier::activated, &app, [] { QApplication::quit(); });
-        std::signal(SIGTERM, on_quit_signal);
-        std::signal(SIGINT, on_quit_signal);
     }
     MainWindow window;
     if (cli.isSet(device_option)) window.printer_panel()->select_device(cli.value(device_option));

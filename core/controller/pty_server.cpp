@@ -1,16 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "controller/pty_server.hpp"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <termios.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <deque>
 #include <random>
 
@@ -19,14 +12,6 @@ namespace {
 
 double wall_now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-Result<void> raw(int fd) {
-    termios t{};
-    if (tcgetattr(fd, &t) != 0) return fail(ErrorKind::device, std::strerror(errno), "pty");
-    cfmakeraw(&t);
-    if (tcsetattr(fd, TCSANOW, &t) != 0) return fail(ErrorKind::device, std::strerror(errno), "pty");
-    return {};
 }
 
 }  // namespace
@@ -40,29 +25,16 @@ Result<PtyServer> PtyServer::open(const PtyServerOptions& options) {
         o.keepalive_scale = options.time_scale;  // keep-alive stays in wall time
         return o;
     }());
-    s.master_ = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (s.master_ < 0) return fail(ErrorKind::device, "cannot open a pseudo-terminal: " + std::string(std::strerror(errno)), "pty");
-    if (grantpt(s.master_) != 0 || unlockpt(s.master_) != 0)
-        return fail(ErrorKind::device, "cannot unlock the pseudo-terminal", "pty");
-    const char* name = ptsname(s.master_);
-    if (!name) return fail(ErrorKind::device, "pseudo-terminal has no name", "pty");
-    s.path_ = name;
-    s.slave_keep_ = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
-    if (s.slave_keep_ < 0) return fail(ErrorKind::device, "cannot open " + s.path_, "pty");
-    if (auto r = raw(s.slave_keep_); !r) return std::unexpected(r.error());
-    const int flags = fcntl(s.master_, F_GETFL);
-    fcntl(s.master_, F_SETFL, flags | O_NONBLOCK);
+    auto endpoint = platform::SimEndpoint::open(true);
+    if (!endpoint) return fail(ErrorKind::device, endpoint.error().what, "pty");
+    s.endpoint_ = std::move(*endpoint);
     return s;
 }
 
 PtyServer::PtyServer(PtyServer&& o) noexcept
-    : options_(o.options_), ctl_(std::move(o.ctl_)), master_(std::exchange(o.master_, -1)),
-      slave_keep_(std::exchange(o.slave_keep_, -1)), path_(std::move(o.path_)) {}
+    : options_(o.options_), ctl_(std::move(o.ctl_)), endpoint_(std::move(o.endpoint_)) {}
 
-PtyServer::~PtyServer() {
-    if (master_ >= 0) ::close(master_);
-    if (slave_keep_ >= 0) ::close(slave_keep_);
-}
+PtyServer::~PtyServer() = default;
 
 Result<void> PtyServer::serve(const std::atomic<bool>& stop,
                               const std::function<void(const LoggedStrike&)>& on_strike,
@@ -105,6 +77,8 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
     };
     std::size_t logged = 0;
     std::vector<std::uint8_t> buf(4096);
+    platform::Channel& line = endpoint_.line();
+    platform::Channel* const lines[] = {&line};
     while (!stop.load()) {
         const double now = wall_now();
         // Host -> controller: bytes that have crossed the line by now.
@@ -124,10 +98,10 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
         if (!due.empty()) {
             std::size_t done = 0;
             while (done < due.size()) {
-                const auto n = ::write(master_, due.data() + done, due.size() - done);
-                if (n > 0) done += static_cast<std::size_t>(n);
-                else if (n < 0 && errno == EAGAIN) break;  // no reader: the bytes are lost, as on a wire
-                else if (n < 0 && errno != EINTR) return fail(ErrorKind::device, std::strerror(errno), path_);
+                const auto n = line.write_some(std::span(due).subspan(done));
+                if (!n) return fail(ErrorKind::device, n.error().what, path());
+                if (*n == 0) break;  // no reader: the bytes are lost, as on a wire
+                done += *n;
             }
         }
         const auto& log = ctl_.strike_log();
@@ -143,15 +117,15 @@ Result<void> PtyServer::serve(const std::atomic<bool>& stop,
         if (const auto e = ctl_.next_event()) next = std::min(next, wall_of(*e));
         // Microsecond wake-ups: at 115200 baud a byte takes 87 us.
         const double wait = std::max(0.0, next - wall_now());
-        timespec ts{static_cast<time_t>(wait), static_cast<long>((wait - std::floor(wait)) * 1e9)};
-        pollfd p{master_, POLLIN, 0};
-        const int r = ::ppoll(&p, 1, &ts, nullptr);
-        if (r < 0 && errno != EINTR) return fail(ErrorKind::device, std::strerror(errno), path_);
-        if (r > 0 && (p.revents & POLLIN)) {
-            const auto n = ::read(master_, buf.data(), buf.size());
+        const auto ready = platform::wait_readable(
+            lines, std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(wait)));
+        if (!ready) return fail(ErrorKind::device, ready.error().what, path());
+        if ((*ready)[0]) {
+            const auto n = line.read_some(buf);
             const double at = wall_now();
-            if (n > 0 && first_byte < 0) first_byte = at;
-            for (ssize_t i = 0; i < n; ++i) put(inbound, in_free, at, buf[static_cast<std::size_t>(i)]);
+            const std::size_t got = n ? *n : 0;
+            if (got > 0 && first_byte < 0) first_byte = at;
+            for (std::size_t i = 0; i < got; ++i) put(inbound, in_free, at, buf[i]);
         }
     }
     return {};

@@ -12,6 +12,7 @@
 
 #include "common/result.hpp"
 #include "controller/sim_controller.hpp"
+#include "platform/sim_endpoint.hpp"
 
 namespace tactus::controller {
 
@@ -33,7 +34,7 @@ public:
     ~PtyServer();
 
     // The slave side a client opens (/dev/pts/N).
-    [[nodiscard]] const std::string& path() const { return path_; }
+    [[nodiscard]] const std::string& path() const { return endpoint_.path(); }
     [[nodiscard]] SimController& controller() { return ctl_; }
 
     // Serves until `stop` is set. `on_strike` sees each strike as it is logged;
@@ -46,9 +47,7 @@ private:
     explicit PtyServer(const PtyServerOptions& o) : options_(o), ctl_(o.sim) {}
     PtyServerOptions options_;
     SimController ctl_;
-    int master_ = -1;
-    int slave_keep_ = -1;  // held open so the pty survives a client closing it
-    std::string path_;
+    platform::SimEndpoint endpoint_;  // its client's side is held open, so the line survives a client closing it
 };
 
 }  // namespace tactus::controller

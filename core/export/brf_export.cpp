@@ -67,6 +67,14 @@ Result<ExportFormat> parse_export_format(std::string_view s) {
 
 Result<void> write_document(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
                             std::ostream& out) {
+    // BRF, PEF and Unicode braille hold cells on a grid; a graphic's dots
+    // stand anywhere, so writing the page would silently drop the drawing.
+    for (std::size_t i = 0; i < doc.pages.size(); ++i)
+        if (!doc.pages[i].graphic.empty())
+            return fail("is a tactile graphic (" + std::to_string(doc.pages[i].graphic.size()) +
+                            " dots placed freely), which BRF, PEF and Unicode braille cannot hold: "
+                            "emboss it, or plan it (tactus-cli plan)",
+                        "page " + std::to_string(i + 1));
     switch (format) {
         case ExportFormat::brf: return write_brf(doc, out);
         case ExportFormat::pef: return write_pef(doc, meta, out);

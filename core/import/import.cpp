@@ -129,6 +129,12 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
         return fail("input is " + std::to_string(bytes.size()) + " bytes, above the limit of " +
                         std::to_string(max_import_bytes),
                     where);
+    // An SVG is a drawing, not text: read as text it would be its markup in braille.
+    if (options.format == SourceFormat::automatic && (extension_of(name) == "svg" || root_element(bytes) == "svg"))
+        return fail(ErrorKind::input,
+                    "is an SVG drawing: Tactus embosses it as a tactile graphic laid out for a printer "
+                    "(tactus-cli layout, plan or emboss with the file; docs/graphics.md), not as a document's text",
+                    where);
     const auto format = options.format == SourceFormat::automatic
                             ? detect_source_format(bytes, name)
                             : options.format;

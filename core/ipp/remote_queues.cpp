@@ -164,9 +164,7 @@ Result<std::vector<RemoteQueue>> visible_tactus_queues(std::chrono::milliseconds
     const auto status = cupsLastError();
     if (out.empty() && found.dests.empty() && status > IPP_STATUS_OK_EVENTS_COMPLETE &&
         status != IPP_STATUS_ERROR_NOT_FOUND)
-        return fail(ErrorKind::device,
-                    std::string("cannot list the CUPS queues: ") + cupsLastErrorString(),
-                    server_of(host, port));
+        return fail(ErrorKind::device, cupsLastErrorString(), server_of(host, port));
     std::ranges::sort(out, {}, &RemoteQueue::uri);
     out.erase(std::ranges::unique(out, {}, &RemoteQueue::uri).begin(), out.end());
     return out;

@@ -35,7 +35,9 @@ Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port
 // (cupsEnumDests): the queues of its CUPS server (the local cupsd, or the one
 // CUPS_SERVER or client.conf names), and shared queues found on the network
 // by DNS-SD within `browse`. Blocks for up to `browse` and the server's
-// answer: call it off the GUI thread. No server at all is a device error.
+// answer: call it off the GUI thread. No server at all is a device error whose
+// `where` is the server asked and whose message is CUPS's own reason; what
+// failed (listing the queues) is the caller's to say, in its own language.
 Result<std::vector<RemoteQueue>> visible_tactus_queues(
     std::chrono::milliseconds browse = std::chrono::milliseconds(1500));
 

@@ -12,6 +12,15 @@
 
 namespace tactus::layout {
 
+// A dot of a tactile graphic, anywhere on the page: millimetres from the
+// top-left corner of the paper as the reader holds this page's side. The
+// graphic stage snaps it to what the machine can address.
+struct GraphicDot {
+    double x_mm = 0;
+    double y_mm = 0;
+    bool operator==(const GraphicDot&) const = default;
+};
+
 struct Page {
     std::vector<document::BrailleLine> lines;  // at most lines_per_page; each at most cells_per_line
     int braille_number = 0;          // 1-based braille page number
@@ -20,6 +29,9 @@ struct Page {
     // single-sided section, ends its sheet on interpoint paper. Written to BRF
     // (the embosser must feed it), left out of PEF (its sections say the same).
     bool filler = false;
+    // A graphic page's dots (lines, textures and its braille labels), struck
+    // where they are rather than on the cell grid; empty on a page of text.
+    std::vector<GraphicDot> graphic;
     bool operator==(const Page&) const = default;
 };
 

@@ -137,7 +137,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     const unsigned workers = options.translation_workers != 0
                                  ? options.translation_workers
                                  : TranslationWorkers::suggested_workers(document);
-    if (workers > 1) {
+    if (workers > 1 && TranslationWorkers::available()) {
         auto pool = TranslationWorkers::start(document, *translator, workers, 64, room);
         std::size_t done = 0, index = 0;
         if (!pool) return std::unexpected(pool.error());

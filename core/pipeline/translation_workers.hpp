@@ -7,8 +7,6 @@
 // globals. Worker w translates chunks w, w+N, w+2N, ... and streams the cells
 // back through a pipe; the caller reads the chunks in document order, so the
 // pipes' own buffers are the only look-ahead and memory stays bounded.
-#include <sys/types.h>
-
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -16,6 +14,7 @@
 
 #include "common/result.hpp"
 #include "document/document.hpp"
+#include "platform/worker_process.hpp"
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
@@ -37,6 +36,9 @@ public:
     // The next block in document order; nullopt after the last one.
     Result<std::optional<translate::TranslatedBlock>> next();
 
+    // Whether this system can run workers (platform::WorkerProcess): where it
+    // cannot, translation stays in one process whatever was asked.
+    static bool available();
     // How many workers a document of this size deserves on this machine.
     static unsigned suggested_workers(const document::Document& document);
 
@@ -47,8 +49,7 @@ private:
 
     const document::Document* document_;
     std::size_t chunk_blocks_;
-    std::vector<pid_t> pids_;
-    std::vector<int> fds_;  // read ends, one per worker
+    std::vector<platform::WorkerProcess> workers_;
     std::size_t next_block_ = 0;
 };
 

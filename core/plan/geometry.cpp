@@ -11,9 +11,15 @@ DotPlace dot_place(const profile::PrinterProfile& p, Side side, int line, int co
     // Dots 1-3 down the left column, 4-6 down the right, 7 and 8 below them.
     static constexpr int kCol[8] = {0, 0, 0, 1, 1, 1, 0, 1};
     static constexpr int kRow[8] = {0, 1, 2, 0, 1, 2, 3, 3};
+    return place_on_paper(p, side, p.paper.margin_left_mm + column * g.cell_pitch_mm + kCol[dot - 1] * g.dot_pitch_mm,
+                          p.paper.margin_top_mm + line * g.line_pitch_mm + kRow[dot - 1] * g.dot_pitch_mm);
+}
+
+DotPlace place_on_paper(const profile::PrinterProfile& p, Side side, double read_x_mm, double read_y_mm) {
+    const auto& g = p.geometry;
     DotPlace d;
-    d.read_x_mm = p.paper.margin_left_mm + column * g.cell_pitch_mm + kCol[dot - 1] * g.dot_pitch_mm;
-    d.read_y_mm = p.paper.margin_top_mm + line * g.line_pitch_mm + kRow[dot - 1] * g.dot_pitch_mm;
+    d.read_x_mm = read_x_mm;
+    d.read_y_mm = read_y_mm;
     d.paper_x_mm = d.read_x_mm;
     d.paper_y_mm = d.read_y_mm;
     if (side == Side::back) {

@@ -18,6 +18,9 @@ struct DotPlace {
     double paper_x_mm = 0, paper_y_mm = 0;  // in paper coordinates
 };
 
+// A point of `side` given in its reading coordinates, on the paper.
+DotPlace place_on_paper(const profile::PrinterProfile& p, Side side, double read_x_mm, double read_y_mm);
+
 // Dot `dot` (1..8) of the cell at `line`, `column` (0-based) on `side`.
 DotPlace dot_place(const profile::PrinterProfile& p, Side side, int line, int column, int dot);
 

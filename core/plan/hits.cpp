@@ -32,14 +32,26 @@ Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& pa
                                     " has dot 7 or 8 but the profile is six-dot (geometry.eight_dot)",
                                 lw);
     }
+    for (std::size_t i = 0; i < page.graphic.size(); ++i) {
+        const auto& d = page.graphic[i];
+        if (!(d.x_mm >= 0 && d.x_mm <= p.paper.width_mm && d.y_mm >= 0 && d.y_mm <= p.paper.height_mm))
+            return fail("graphic dot " + std::to_string(i + 1) + " at " + std::to_string(d.x_mm) + ", " +
+                            std::to_string(d.y_mm) + " mm is off the paper (" + std::to_string(p.paper.width_mm) +
+                            " x " + std::to_string(p.paper.height_mm) + " mm)",
+                        where);
+    }
     return {};
+}
+
+Hit hit_at(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed, Side side,
+           const DotPlace& place) {
+    return {feed.steps_for(place.paper_y_mm),
+            carriage.steps_for(carriage_target_mm(p, hammer_for(side), place.paper_x_mm)), side, place};
 }
 
 Hit make_hit(const profile::PrinterProfile& p, const motion::StepAxis& carriage, const motion::StepAxis& feed,
              Side side, int line, int cell, int dot) {
-    const auto place = dot_place(p, side, line, cell, dot);
-    return {feed.steps_for(place.paper_y_mm),
-            carriage.steps_for(carriage_target_mm(p, hammer_for(side), place.paper_x_mm)), side, place};
+    return hit_at(p, carriage, feed, side, dot_place(p, side, line, cell, dot));
 }
 
 }  // namespace
@@ -93,6 +105,9 @@ Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, c
                 }
             }
         }
+        // A graphic's dots, struck where they are (the graphic stage put them on the step grid).
+        for (const auto& gd : page->graphic)
+            hits.push_back(hit_at(p, carriage, feed, side, place_on_paper(p, side, gd.x_mm, gd.y_mm)));
     }
     // By feed position, then carriage position. The sort runs on 12-byte keys
     // carrying the dot's index, then the dots are gathered: std::sort's moves

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "spool/snapshot.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "common/utf8.hpp"
@@ -16,6 +18,9 @@ std::string page_where(std::size_t page, std::size_t line = 0) {
     return w;
 }
 
+// More dots than a sheet of A3 holds at the least distance: not a graphic page.
+constexpr std::size_t kMaxGraphicDots = 200000;
+
 }  // namespace
 
 std::string to_snapshot(const layout::PagedDocument& doc) {
@@ -23,9 +28,14 @@ std::string to_snapshot(const layout::PagedDocument& doc) {
     for (const auto& page : doc.pages) {
         json lines = json::array();
         for (const auto& line : page.lines) lines.push_back(document::to_unicode_text(line));
-        pages.push_back({{"number", page.braille_number},
-                         {"print_page", page.print_page},
-                         {"lines", std::move(lines)}});
+        json entry{{"number", page.braille_number}, {"print_page", page.print_page}, {"lines", std::move(lines)}};
+        // A graphic's free dots, as [x, y] in millimetres; absent on a page of text.
+        if (!page.graphic.empty()) {
+            json dots = json::array();
+            for (const auto& d : page.graphic) dots.push_back(json::array({d.x_mm, d.y_mm}));
+            entry["graphic"] = std::move(dots);
+        }
+        pages.push_back(std::move(entry));
     }
     const json j{{"format", kSnapshotFormat},
                  {"geometry",
@@ -109,6 +119,19 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
                 line.push_back(document::Cell::from_unicode(c));
             }
             page.lines.push_back(std::move(line));
+        }
+        if (const auto dots = p.find("graphic"); dots != p.end()) {
+            if (!dots->is_array() || dots->size() > kMaxGraphicDots)
+                return fail("graphic dots are not a list of at most " + std::to_string(kMaxGraphicDots),
+                            page_where(page_no));
+            for (const auto& d : *dots) {
+                if (!d.is_array() || d.size() != 2 || !d[0].is_number() || !d[1].is_number())
+                    return fail("a graphic dot is not [x, y]", page_where(page_no));
+                const double x = d[0].get<double>(), y = d[1].get<double>();
+                if (!(std::abs(x) <= 10000 && std::abs(y) <= 10000))
+                    return fail("a graphic dot is out of range", page_where(page_no));
+                page.graphic.push_back({x, y});
+            }
         }
         doc.pages.push_back(std::move(page));
     }

@@ -4,7 +4,7 @@
 // everything the planner reads (geometry, every cell of every page, page
 // numbers), so a job embosses exactly what was submitted even if the source
 // file changes or disappears afterwards. Cells are Unicode braille, so 8-dot
-// cells survive (BRF would drop dots 7-8).
+// cells survive (BRF would drop dots 7-8); a graphic page keeps its dots.
 #include <cstddef>
 #include <string>
 #include <string_view>

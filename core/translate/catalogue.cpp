@@ -17,7 +17,10 @@
 namespace tactus::translate {
 namespace {
 
-// The tables the product is specified with: English UEB and both Chinese systems.
+// The tables the product is specified with: English UEB and both Chinese
+// systems, in the order the picker lists them. Taiwan's comes before China's:
+// it is the product's table for Chinese text (the Chinese interface's default),
+// so typing "Chinese" in the picker lands on it.
 constexpr std::array<std::string_view, 5> kRecommended = {
     "en-ueb-g1.ctb", "en-ueb-g2.ctb", "zh-tw.ctb", "zhcn-g1.ctb", "zhcn-g2.ctb"};
 
@@ -74,6 +77,7 @@ std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
     louis::take_log();
     std::ranges::sort(out, [](const TableInfo& a, const TableInfo& b) {
         if (a.recommended != b.recommended) return a.recommended;
+        if (a.recommended) return std::ranges::find(kRecommended, a.file) < std::ranges::find(kRecommended, b.file);
         if (a.language != b.language) return a.language < b.language;
         return a.file < b.file;
     });

@@ -50,6 +50,18 @@ Result<DeviceSpec> parse_device(std::string_view device) {
     return spec;
 }
 
+std::string format_device(const DeviceSpec& spec) {
+    std::string out = spec.scheme;
+    if (!spec.path.empty()) out += ":" + spec.path;
+    char separator = '?';
+    for (const auto& [key, value] : spec.options) {
+        out += separator;
+        out += key + "=" + value;
+        separator = '&';
+    }
+    return out;
+}
+
 Result<void> check_device(std::string_view device) {
     auto spec = parse_device(device);
     if (!spec) return std::unexpected(spec.error());

@@ -26,6 +26,11 @@ struct DeviceSpec {
 
 Result<DeviceSpec> parse_device(std::string_view device);
 
+// The device string of a spec: parse_device's inverse, so that a program that
+// changes one option (the app's simulator speed) writes the string a user
+// would type. Options come in key order.
+std::string format_device(const DeviceSpec& spec);
+
 // An option's value as a number: the whole text, nothing left over.
 std::optional<double> option_number(const std::string& value);
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A terminal device driven directly through termios: pseudo-terminals (socat,
-// emulators, `tactus-cli sim --pty`), which libserialport refuses to open.
+// A terminal device driven directly (platform::Terminal: termios on POSIX):
+// pseudo-terminals (socat, emulators, `tactus-cli sim --pty`), which
+// libserialport refuses to open, and the simulator's named pipe on Windows.
+#include <optional>
 #include <string>
 
 #include "transport/byte_stream.hpp"
 #include "transport/device.hpp"
+#include "platform/terminal.hpp"
 
 namespace tactus::transport {
 
@@ -27,10 +30,7 @@ private:
     void close_fd();
     std::string path_;
     UartSettings uart_;
-    int fd_ = -1;
+    std::optional<platform::Terminal> line_;
 };
-
-// Puts a terminal file descriptor in raw 8-bit mode at the given settings.
-Result<void> make_raw(int fd, const UartSettings& uart, const std::string& where);
 
 }  // namespace tactus::transport

@@ -59,6 +59,25 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::ProfileEditor</name>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="55"/>
+        <source>%n cell(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation>
+            <numerusform>%n cell needs %1 but the paper leaves %2 between the margins</numerusform>
+            <numerusform>%n cells need %1 but the paper leaves %2 between the margins</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/profile_editor.cpp" line="57"/>
+        <source>%n line(s) need %1 but the paper leaves %2 between the margins</source>
+        <translation>
+            <numerusform>%n line needs %1 but the paper leaves %2 between the margins</numerusform>
+            <numerusform>%n lines need %1 but the paper leaves %2 between the margins</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::SheetPreview</name>
     <message numerus="yes">
         <location filename="../../widgets/sheet_preview.cpp" line="261"/>

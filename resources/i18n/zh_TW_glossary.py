@@ -8,6 +8,28 @@ import xml.etree.ElementTree as ET
 
 T = {
     "typing": "輸入",
+    # Space in the braille pane, echoed as a typed chord is.
+    "blank cell": "空方",
+    # A message and its detail, a place and what is there: the full-width colon.
+    "%1: %2": "%1：%2",
+    # The profile's problems (core/profile/profile_problem.hpp), worded in the panel.
+    "steps/s": "步/秒",
+    "is %1, must be between %2 and %3": "為 %1，必須介於 %2 與 %3 之間",
+    "is %1, must be above 0": "為 %1，必須大於 0",
+    "is %1, must not exceed %2": "為 %1，不可超過 %2",
+    "is %1, below the physical minimum of %2": "為 %1，低於物理下限 %2",
+    "is %1, below %2: motion that slow would take days to plan and to emboss": "為 %1，低於 %2：這麼慢的運動要花好幾天規劃與列印",
+    "needs %1, more than the controller can time (%2, 8 timer ticks per step)": "需要 %1，超過控制器能計時的上限（%2，每步 8 個計時器刻度）",
+    "is %1, must exceed the dot pitch (%2) so neighbouring cells stay apart": "為 %1，必須大於點距（%2），相鄰的點字方才不會相連",
+    "is %1, must exceed the cell height (%2)": "為 %1，必須大於點字方的高度（%2）",
+    "%n cell(s) need %1 but the paper leaves %2 between the margins": "%n 方需要 %1，但紙張在邊界之間只有 %2",
+    "%n line(s) need %1 but the paper leaves %2 between the margins": "%n 行需要 %1，但紙張在邊界之間只有 %2",
+    "is %1, which puts back-side dots off the paper": "為 %1，背面的點會落在紙張之外",
+    "is %1, wider than the paper (%2): one hammer could never reach it": "為 %1，比紙張（%2）還寬：有一支擊錘永遠打不到",
+    "is %1, finer than half a carriage step (%2): unreachable at any speed": "為 %1，小於字車半步（%2）：任何速度都達不到",
+    "is %1": "為 %1",
+    "%1:": "%1：",
+    "Cannot list the CUPS queues on %1: %2": "無法列出 CUPS 伺服器 %1 上的佇列：%2",
     "Cannot write %1: %2": "無法寫入 %1：%2",
     "Saving %1 failed: %2": "儲存 %1 失敗：%2",
     # A text file saved in its own encoding.
@@ -55,6 +77,17 @@ T = {
     "Choose braille &table": "選擇點字表(&T)", "Go to &motion": "移到運動(&M)", "Go to vi&bration": "移到振動(&B)",
     "Go to printer pro&file": "移到印表機設定檔(&F)", "&Keyboard Shortcuts": "鍵盤快速鍵(&K)", "&About Tactus": "關於 Tactus(&A)",
     "&File": "檔案(&F)", "Open &Recent": "最近開啟(&R)", "&Edit": "編輯(&E)", "&View": "檢視(&V)", "&Help": "說明(&H)",
+    # The structured print pane: styles as a word processor names them.
+    "St&yles": "樣式(&Y)", "&Body text": "內文(&B)", "Heading &%1": "標題 %1(&%1)", "B&ulleted list": "項目符號清單(&U)",
+    "&Numbered list": "編號清單(&N)", "&Quotation": "引文(&Q)", "&Page break": "分頁(&P)", "Bol&d": "粗體(&D)",
+    "&Italic": "斜體(&I)", "Show &codes": "顯示代碼(&C)",
+    "Show the print text's Markdown codes instead of its styles": "以 Markdown 代碼顯示明眼字，而不是其樣式",
+    "The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them":
+        "帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更",
+    "Braille page break": "點字分頁",
+    "Heading level %1": "標題層級 %1", "List item %1": "清單項目 %1", "List item": "清單項目",
+    "Quotation": "引文", "Note": "註解", "Table header row, %1 columns": "表格標題列，%1 欄",
+    "Table row %1 of %2": "表格第 %1 列，共 %2 列",
     "Translating with %1": "正在以 %1 轉譯", "Cannot use table %1: %2": "無法使用點字表 %1：%2", "Braille table: %1": "點字表：%1",
     "Open or import": "開啟或匯入",
     "Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)",
@@ -170,6 +203,7 @@ T = {
     "Link: %1 frames sent, %2 resent, %3 bytes, %4 NAKs, %5 timeouts, %6 reconnects, %7 restarts":
         "連線：已傳送 %1 個訊框，重送 %2 個，%3 位元組，%4 次 NAK，%5 次逾時，%6 次重新連線，%7 次重新啟動",
     "all %1 strikes checked against the plan": "全部 %1 個擊點均已與規劃核對",
+    "the strikes could not be checked: %1": "無法核對擊點：%1",
     "%1 strikes embossed but %2 planned: the simulator disagrees with the plan": "已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符",
     "Embossed %1": "已列印 %1", "%1 cancelled; resume from sheet %2": "%1 已取消；可從第 %2 張繼續",
     "%1 stopped at sheet %2: %3. The queue is kept; fix the problem, then resume from sheet %2.":
@@ -252,7 +286,6 @@ T = {
     "held": "保留中", "aborted": "已中止", "sending": "傳送中", "not sent": "未送出", "cancelling": "取消中",
     "The built-in simulated embosser, on this computer": "內建的模擬點字印表機，在本電腦上",
     "An embosser on a cable to this computer": "以纜線連接本電腦的點字印表機",
-    "Listing CUPS queues: %1": "列出 CUPS 佇列：%1",
     "Network queue %1 on %2": "網路佇列 %1（位於 %2）",
     "Network queue %1 on the CUPS server %2": "網路佇列 %1，位於 CUPS 伺服器 %2",
     "A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile":

@@ -6,6 +6,7 @@
 
 #include "common/file_io.hpp"
 #include "profile/profile_json.hpp"
+#include "profile/profile_problem.hpp"
 
 using namespace tactus;
 using namespace tactus::profile;
@@ -207,4 +208,33 @@ TEST(Profile, LoadNamesTheFile) {
     EXPECT_EQ(r.error().where, file.string() + ":field dynamics.head_mass_kg");
     std::filesystem::remove(file);
     EXPECT_FALSE(load_profile(file).has_value());
+}
+
+// The problem is data the desktop app words in its own language; the English
+// message of validate() is worded from the same record.
+TEST(ProfileProblem, GivesTheFieldTheKindAndTheNumbers) {
+    auto p = default_profile();
+    p.paper.width_mm = 1;  // the 25 mm left margin no longer fits
+    const auto problem = first_problem(p);
+    ASSERT_TRUE(problem);
+    EXPECT_EQ(problem->field, "paper.margin_left_mm");
+    EXPECT_EQ(problem->kind, ProblemKind::out_of_range);
+    EXPECT_EQ(problem->value, 25);
+    EXPECT_EQ(problem->limit, 0);
+    EXPECT_EQ(problem->high, 1);
+    EXPECT_EQ(problem->unit, "mm");
+    const auto v = validate(p);
+    ASSERT_FALSE(v);
+    EXPECT_EQ(v.error().where, "field paper.margin_left_mm");
+    EXPECT_EQ(v.error().message, describe(*problem));
+    EXPECT_EQ(v.error().message, "is 25 mm, must be between 0 and 1 mm");
+
+    auto q = default_profile();
+    q.geometry.cells_per_line = 40;  // wider than the default paper's room
+    const auto wide = first_problem(q);
+    ASSERT_TRUE(wide);
+    EXPECT_EQ(wide->kind, ProblemKind::line_too_wide);
+    EXPECT_EQ(wide->count, 40);
+    EXPECT_GT(wide->value, wide->limit);
+    EXPECT_FALSE(first_problem(default_profile()));
 }

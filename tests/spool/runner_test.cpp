@@ -24,6 +24,7 @@
 #include "spool/printing.hpp"
 #include "spool/runner.hpp"
 #include "spool/snapshot.hpp"
+#include "spool/strike_check.hpp"
 #include "sim_rig.hpp"
 #include "spool_fixtures.hpp"
 #include "strike_audit.hpp"
@@ -472,6 +473,38 @@ TEST(Runner, TheBuiltInSimulatorOnProtocol3StrikesAMultiSheetJobExactly) {
         if (job.link_job && s.job_id == *job.link_job) got.push_back(s);
     EXPECT_EQ(got.size(), plan->strikes);
     EXPECT_EQ(test::audit_strikes(*plan, got, *spool.progress(id)).problems, "");
+
+    // The app's check of a finished job (plans it again from the stored
+    // document and the printer's profile): it agrees on what was struck, and
+    // one strike moved by a step, or lost, is a disagreement.
+    const auto snapshot = spool.document_snapshot(id);
+    const auto printer = spool.printer(job.printer_id);
+    ASSERT_TRUE(snapshot && printer);
+    const auto logged = sim.strikes();
+    auto check = check_strikes(job, *snapshot, printer->profile_json, logged, &*firmware);
+    ASSERT_TRUE(check) << check.error().to_string();
+    EXPECT_TRUE(check->agrees);
+    EXPECT_EQ(check->embossed, plan->strikes);
+    EXPECT_EQ(check->planned, plan->strikes);
+    EXPECT_EQ(check->first_sheet, 1u);
+    EXPECT_EQ(check->last_sheet, laid->sheet_count());
+    auto moved = logged;
+    moved[moved.size() / 2].carriage_step += 1;
+    check = check_strikes(job, *snapshot, printer->profile_json, moved, &*firmware);
+    ASSERT_TRUE(check);
+    EXPECT_FALSE(check->agrees);
+    auto lost = logged;
+    lost.pop_back();
+    check = check_strikes(job, *snapshot, printer->profile_json, lost, &*firmware);
+    ASSERT_TRUE(check);
+    EXPECT_FALSE(check->agrees);
+    EXPECT_EQ(check->embossed + 1, check->planned);
+    auto never_sent = job;
+    never_sent.link_job.reset();
+    EXPECT_FALSE(check_strikes(never_sent, *snapshot, printer->profile_json, logged, &*firmware));
+    const auto broken = check_strikes(job, *snapshot, "{ not a profile", logged, &*firmware);
+    ASSERT_FALSE(broken);
+    EXPECT_NE(broken.error().where.find("profile"), std::string::npos) << broken.error().to_string();
 }
 
 }  // namespace

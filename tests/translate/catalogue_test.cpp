@@ -22,8 +22,13 @@ TEST(Catalogue, NamesTheSpecifiedTablesByLanguage) {
     EXPECT_EQ(find("en-ueb-g2.ctb")->grade, "2");
     EXPECT_EQ(find("zh-tw.ctb")->language, "Chinese (Taiwan)");
     EXPECT_EQ(find("zhcn-g2.ctb")->language, "Chinese (China)");
-    // Recommended tables come first.
+    // Recommended tables come first, in the product's order: typing "Chinese"
+    // in the picker finds Taiwan's table before China's.
     EXPECT_TRUE(tables.front().recommended);
+    const auto first_chinese = std::ranges::find_if(
+        tables, [](const translate::TableInfo& t) { return t.language.starts_with("Chinese"); });
+    ASSERT_NE(first_chinese, tables.end());
+    EXPECT_EQ(first_chinese->file, "zh-tw.ctb");
     EXPECT_GT(tables.size(), 50u);  // Debian's liblouis-data ships about 200
 }
 

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The print pane's structured view: each editor line (core's Markdown line
+// dialect, edit/editor_lines.hpp) shown as one QTextDocument block with its
+// structure as Qt's rich text (a heading's level and font, a list's numbers
+// or bullets from a QTextList, emphasis as char formats, a table row as its
+// cells at tab stops, a page break as an empty block the pane draws as a
+// rule) and no markup characters; and the way back, a block to its line
+// through core's Markdown writer. One block per line keeps the braille pane,
+// the cursor map and the live layout working line by line (docs/editor.md).
+#include <QFont>
+#include <QString>
+#include <QTextBlock>
+#include <QTextFormat>
+#include <span>
+#include <string>
+
+class QTextDocument;
+
+namespace tactus::gui::structured {
+
+// What a block stands for (block format property kStyle).
+enum class Style : int {
+    body = 0,
+    heading,
+    bullet_item,
+    number_item,
+    quote,
+    note,
+    print_page_break,
+    braille_page_break,
+    braille,
+    table_row,
+    table_delimiter,  // a table's "| --- |" line: a thin rule under the header row
+    blank,            // a line that stands for no block
+};
+
+inline constexpr int kStyle = QTextFormat::UserProperty + 1;      // block: Style
+inline constexpr int kLevel = QTextFormat::UserProperty + 2;      // block: heading/list/quote level
+inline constexpr int kCode = QTextFormat::UserProperty + 3;       // block: the line, for lines shown as no text
+inline constexpr int kNoteRef = QTextFormat::UserProperty + 4;    // char: a note's reference
+inline constexpr int kTranscriber = QTextFormat::UserProperty + 5;  // char: transcriber's note text
+inline constexpr int kLanguage = QTextFormat::UserProperty + 6;   // char: the passage's language
+inline constexpr int kPosition = QTextFormat::UserProperty + 7;   // char: document::Position
+// block: a numbered item whose number is its text (Qt 6.4's lists all count from 1).
+inline constexpr int kNumberText = QTextFormat::UserProperty + 8;
+
+// Replaces the document's text with `lines` shown structured, in `base`'s size.
+void render(QTextDocument* doc, std::span<const std::string> lines, const QFont& base);
+
+// The editor line a block stands for now (after edits), in the Markdown dialect.
+std::string line_of(const QTextBlock& block);
+
+// The block's style; body for a block typed anew.
+Style style_of(const QTextBlock& block);
+
+// A position in the block's text <-> a column in edit::editor_line_content of
+// its line (what the cursor map counts in: a list item's number, a table's
+// two spaces between cells).
+int content_column(const QTextBlock& block, int position);
+int block_position(const QTextBlock& block, int content_column);
+
+// The char format text of a style is shown in (a heading's size and weight).
+QTextCharFormat base_char_format(Style style, int level, const QFont& base);
+// A block's format for a style (level: heading 1-6, list or quote depth).
+QTextBlockFormat block_format(Style style, int level);
+
+// True when the char format reads as bold emphasis (a heading's own weight does not).
+bool is_bold(const QTextCharFormat& format);
+
+}  // namespace tactus::gui::structured
