@@ -297,9 +297,9 @@ def braille_run(phrases):
 # first enabled item current (Undo is disabled in a fresh document).
 CORNER_WORDS = {
     "en": {"preview": r"Interpoint preview", "braille": r"Braille", "cell": r"line {line}, cell {cell}\b",
-           "menus": [r"File", r"New", r"Find and Replace", r"Go to print text", r"Keyboard Shortcuts"]},
+           "menus": [r"File", r"New", r"Find and Replace", r"Body text", r"Show codes", r"Keyboard Shortcuts"]},
     "zh_TW": {"preview": r"雙面點字預覽", "braille": r"點字", "cell": r"第 {line} 行，第 {cell} 方",
-              "menus": [r"檔案", r"新增", r"尋找與取代", r"移到明眼字", r"鍵盤快速鍵"]},
+              "menus": [r"檔案", r"新增", r"尋找與取代", r"內文", r"顯示代碼", r"鍵盤快速鍵"]},
 }
 
 
