@@ -32,20 +32,6 @@ OsResult<WorkerProcess> WorkerProcess::start(const std::function<int(WorkerOutpu
                    OsErrorKind::unsupported);
 }
 
-WorkerProcess::WorkerProcess(WorkerProcess&& o) noexcept
-    : pid_(std::exchange(o.pid_, -1)), read_end_(std::exchange(o.read_end_, -1)) {}
-
-WorkerProcess& WorkerProcess::operator=(WorkerProcess&& o) noexcept {
-    if (this != &o) {
-        stop();
-        pid_ = std::exchange(o.pid_, -1);
-        read_end_ = std::exchange(o.read_end_, -1);
-    }
-    return *this;
-}
-
-WorkerProcess::~WorkerProcess() { stop(); }
-
 int WorkerProcess::read_all(void* data, std::size_t n) {
     auto* p = static_cast<char*>(data);
     std::size_t done = 0;
