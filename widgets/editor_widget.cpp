@@ -207,7 +207,7 @@ void EditorWidget::swap_layout(edit::LiveLayout layout) {
 }
 
 Result<void> EditorWidget::set_tables(const std::string& tables) {
-    if (!layout_) return fail("no document", "table");
+    if (!layout_) return fail(ErrorKind::internal, "no document", "table");
     if (auto ok = layout_->set_tables(tables); !ok) return ok;
     refresh_braille();
     return {};
@@ -224,7 +224,7 @@ void EditorWidget::refresh_braille() {
 }
 
 Result<void> EditorWidget::set_layout_options(const layout::LayoutOptions& options) {
-    if (!layout_) return fail("no document", "layout");
+    if (!layout_) return fail(ErrorKind::internal, "no document", "layout");
     if (auto ok = layout_->set_options(options); !ok) return ok;
     Q_EMIT layout_changed();
     sync_from_print();

@@ -682,7 +682,7 @@ bool MainWindow::export_to(const QString& path) {
     if (!may_reflow_braille()) return false;
     const auto& paged = editor_->layout().paged();
     const auto suffix = QFileInfo(path).suffix().toLower();
-    Result<std::string> bytes = fail("unknown export format", suffix.toStdString());
+    Result<std::string> bytes = fail(ErrorKind::usage, "unknown export format", suffix.toStdString());
     if (suffix == QLatin1String("brf")) {
         bytes = exporter::to_brf(paged);
     } else if (suffix == QLatin1String("pef")) {

@@ -119,9 +119,9 @@ void act(const QueueArgs& a, spool::Action action) {
         const auto doc = require(spool::from_snapshot(require(s.document_snapshot(j.id))));
         const std::size_t pages = doc.pages.size();
         if (a.from_page > pages)
-            fail_with(exit_bad_input, Error{"page " + std::to_string(a.from_page) + " is beyond the job's " +
-                                                std::to_string(pages) + " pages",
-                                            "--from-page"});
+            fail_with(Error{"page " + std::to_string(a.from_page) + " is beyond the job's " +
+                                std::to_string(pages) + " pages",
+                            "--from-page", ErrorKind::input});
         sheet = a.from_page < 1 ? 0 : doc.geometry.sheet_of_page(a.from_page - 1);
     }
     const JobRecord j = require(s.act(a.job, action, sheet), exit_bad_input);
@@ -193,8 +193,8 @@ void recover(const QueueArgs& a) {
     case spool::SpoolHealth::newer:
     case spool::SpoolHealth::foreign:
     case spool::SpoolHealth::in_use:
-        fail_with(exit_bad_input, Error{d.detail.message + " (not damaged, so `queue recover` leaves it where it is)",
-                                        d.detail.where});
+        fail_with(Error{d.detail.message + " (not damaged, so `queue recover` leaves it where it is)",
+                        d.detail.where, ErrorKind::input});
     case spool::SpoolHealth::damaged: break;
     }
     const auto aside = require(spool::set_aside(path), exit_failure);

@@ -36,7 +36,7 @@ void run_serve(const ServeArgs& a) {
         for (const auto& p : require(s.printers())) names.push_back(p.name);
     if (names.empty())
         fail_with(exit_usage, Error{"no printers are set up; add one with `tactus-cli queue printer add`",
-                                    s.path().string()});
+                                    s.path().string(), ErrorKind::usage});
     for (const auto& n : names) require(s.printer(n));
 
     spool::RunnerOptions options;

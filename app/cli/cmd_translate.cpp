@@ -29,7 +29,7 @@ document::BrailleLine braille_cells(std::u32string_view text, const std::string&
         document::Cell cell;
         if (document::Cell::is_unicode_braille(c)) cell = document::Cell::from_unicode(c);
         else if (c > 0x7F || !document::cell_from_brf(static_cast<char>(c), cell))
-            fail_with(exit_bad_input, Error{"not braille (Unicode braille or Braille ASCII expected)", where});
+            fail_with(exit_bad_input, Error{"not braille (Unicode braille or Braille ASCII expected)", where, ErrorKind::input});
         cells.push_back(cell);
     }
     return cells;
@@ -90,13 +90,13 @@ void run_translate(const TranslateArgs& a) {
             if (!line.empty() && line.back() == '\r') line.pop_back();
             std::cout << translate_line(translator, a, line, name + ":" + std::to_string(++number)) << '\n';
         }
-        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name});
+        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name, ErrorKind::input});
         return;
     }
     std::string bytes;
     if (a.file == "-") {
         bytes.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name});
+        if (std::cin.bad()) fail_with(exit_bad_input, Error{"read error", name, ErrorKind::input});
     } else {
         // A regular file only: a named pipe with no writer would wait for ever.
         bytes = require(read_file(a.file), exit_bad_input);

@@ -78,10 +78,11 @@ std::string choose_printer(spool::Spool& s, const EmbossQueueArgs& a) {
         fail_with(exit_usage, Error{"no printers are set up: give the embosser's device (--device serial:/dev/ttyUSB0, "
                                     "--device sim, ...) and a queue printer is set up for it, or add one with "
                                     "`tactus-cli queue printer add NAME --device DEVICE`",
-                                    "--printer"});
+                                    "--printer", ErrorKind::usage});
     std::string names;
     for (const auto& p : all) names += (names.empty() ? "" : ", ") + p.name + " (" + p.device + ")";
-    fail_with(exit_usage, Error{"several printers are set up: " + names + "; choose one with --printer", "--printer"});
+    fail_with(exit_usage, Error{"several printers are set up: " + names + "; choose one with --printer", "--printer",
+                                ErrorKind::usage});
 }
 
 }  // namespace

@@ -79,7 +79,7 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     o.import.format = require(import::parse_source_format(format), exit_usage);
     if (!preset.empty()) {
         const auto p = layout::find_layout_preset(preset);
-        if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset"});
+        if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset", ErrorKind::usage});
         o.layout.geometry = p->geometry;
     }
     // The preset decides sides (a4 is interpoint, as its help says); the flags override it.
@@ -167,7 +167,7 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
     if (layout::is_ready_braille(doc) && !options.reflow_braille)
         if (auto fits = layout::check_braille_fits(doc, options.layout); !fits)
             fail_with(exit_page_too_small, located(fits.error(), args.file));
-    Result<layout::PagedDocument> laid = fail("not laid out");
+    Result<layout::PagedDocument> laid = fail(ErrorKind::internal, "not laid out");
     {
         ProgressLine progress;
         auto with_progress = options;

@@ -36,14 +36,14 @@ Result<std::string> read_input(const std::optional<std::string>& file) {
     std::string data;
     if (file) {
         std::ifstream in(*file, std::ios::binary);
-        if (!in) return fail("cannot read the print file", *file);
+        if (!in) return fail(ErrorKind::input, "cannot read the print file", *file);
         data.assign(std::istreambuf_iterator<char>(in), {});
     } else {
         std::ostringstream ss;
         ss << std::cin.rdbuf();
         data = ss.str();
     }
-    if (data.size() > import::max_import_bytes) return fail("the print data is larger than 256 MB");
+    if (data.size() > import::max_import_bytes) return fail(ErrorKind::input, "the print data is larger than 256 MB");
     return data;
 }
 

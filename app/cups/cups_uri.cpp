@@ -43,10 +43,10 @@ std::string uri_from_device(std::string_view device) {
 Result<std::string> device_from_uri(std::string_view uri) {
     const std::string prefix = std::string(kUriScheme) + ":";
     if (uri.substr(0, prefix.size()) != prefix)
-        return fail("not a " + prefix + " URI (expected e.g. tactus:serial:/dev/ttyUSB0)", std::string(uri));
+        return fail(ErrorKind::usage, "not a " + prefix + " URI (expected e.g. tactus:serial:/dev/ttyUSB0)", std::string(uri));
     const auto rest = uri.substr(prefix.size());
     if (rest.starts_with("//"))
-        return fail("write the device string right after \"tactus:\" (e.g. tactus:serial:/dev/ttyUSB0), without \"//\"",
+        return fail(ErrorKind::usage, "write the device string right after \"tactus:\" (e.g. tactus:serial:/dev/ttyUSB0), without \"//\"",
                     std::string(uri));
     std::string device;
     for (std::size_t i = 0; i < rest.size(); ++i) {
@@ -58,13 +58,13 @@ Result<std::string> device_from_uri(std::string_view uri) {
         const int hi = whole ? hex_value(rest[i + 1]) : -1;
         const int lo = whole ? hex_value(rest[i + 2]) : -1;
         if (hi < 0 || lo < 0)
-            return fail("bad %-escape at character " + std::to_string(prefix.size() + i + 1) +
+            return fail(ErrorKind::usage, "bad %-escape at character " + std::to_string(prefix.size() + i + 1) +
                             " (a % must be followed by two hex digits)",
                         std::string(uri));
         device += static_cast<char>(hi * 16 + lo);
         i += 2;
     }
-    if (device.empty()) return fail("the URI names no device (expected e.g. tactus:serial:/dev/ttyUSB0)", std::string(uri));
+    if (device.empty()) return fail(ErrorKind::usage, "the URI names no device (expected e.g. tactus:serial:/dev/ttyUSB0)", std::string(uri));
     if (auto spec = transport::parse_device(device); !spec) return std::unexpected(located(spec.error(), std::string(uri)));
     return device;
 }

@@ -39,14 +39,14 @@ Result<std::string> read_all(int argc, char** argv) {
     std::string data;
     if (argc == 7) {
         std::ifstream in(argv[6], std::ios::binary);
-        if (!in) return fail("cannot read the print file", argv[6]);
+        if (!in) return fail(ErrorKind::input, "cannot read the print file", argv[6]);
         data.assign(std::istreambuf_iterator<char>(in), {});
     } else {
         std::ostringstream ss;
         ss << std::cin.rdbuf();
         data = ss.str();
     }
-    if (data.size() > import::max_import_bytes) return fail("the document is larger than 256 MB");
+    if (data.size() > import::max_import_bytes) return fail(ErrorKind::input, "the document is larger than 256 MB");
     return data;
 }
 

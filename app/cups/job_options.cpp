@@ -28,7 +28,7 @@ Result<bool> boolean(const CupsOptions& o, std::string_view name, bool fallback)
     const auto s = lower(*v);
     if (s == "true" || s == "yes" || s == "on" || s == "1") return true;
     if (s == "false" || s == "no" || s == "off" || s == "0") return false;
-    return fail("'" + *v + "' is not true or false", "option " + std::string(name));
+    return fail(ErrorKind::usage, "'" + *v + "' is not true or false", "option " + std::string(name));
 }
 
 Result<int> count(const CupsOptions& o, std::string_view name, int fallback, int lo, int hi) {
@@ -37,7 +37,7 @@ Result<int> count(const CupsOptions& o, std::string_view name, int fallback, int
     int n = 0;
     const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), n);
     if (ec != std::errc{} || end != v->data() + v->size() || n < lo || n > hi)
-        return fail("'" + *v + "' is not a whole number from " + std::to_string(lo) + " to " + std::to_string(hi),
+        return fail(ErrorKind::usage, "'" + *v + "' is not a whole number from " + std::to_string(lo) + " to " + std::to_string(hi),
                     "option " + std::string(name));
     return n;
 }
@@ -45,7 +45,7 @@ Result<int> count(const CupsOptions& o, std::string_view name, int fallback, int
 }  // namespace
 
 Result<std::string> braille_table(std::string_view value) {
-    if (value.empty()) return fail("no table named", "option " + std::string(kBrailleTable));
+    if (value.empty()) return fail(ErrorKind::usage, "no table named", "option " + std::string(kBrailleTable));
     std::string list;
     std::size_t start = 0;
     while (start <= value.size()) {
@@ -61,7 +61,7 @@ Result<std::string> braille_table(std::string_view value) {
             }
         }
         if (chosen.empty())
-            return fail("'" + one + "' is not an installed braille table (`tactus-cli tables` lists them, e.g. en-ueb-g2)",
+            return fail(ErrorKind::usage, "'" + one + "' is not an installed braille table (`tactus-cli tables` lists them, e.g. en-ueb-g2)",
                         "option " + std::string(kBrailleTable));
         list += (list.empty() ? "" : ",") + chosen;
         start = comma + 1;
@@ -82,7 +82,7 @@ Result<pipeline::PipelineOptions> pipeline_options(const CupsOptions& o, const p
     auto interpoint = boolean(o, kInterpoint, machine.interpoint);
     if (!interpoint) return std::unexpected(interpoint.error());
     if (*interpoint != machine.interpoint)
-        return fail(std::string("this embosser is set up for ") + (machine.interpoint ? "interpoint" : "single-sided") +
+        return fail(ErrorKind::usage, std::string("this embosser is set up for ") + (machine.interpoint ? "interpoint" : "single-sided") +
                         " embossing (its profile on the print server); " + std::string(kInterpoint) + "=" +
                         (*interpoint ? "true" : "false") + " cannot be honoured",
                     "option " + std::string(kInterpoint));
@@ -118,7 +118,7 @@ Result<import::SourceFormat> source_format(std::string_view mime_type) {
     if (t == "application/vnd.oasis.opendocument.text") return SourceFormat::odt;
     if (t == "application/x-brf") return SourceFormat::brf;
     if (t == "application/x-pef+xml") return SourceFormat::pef;
-    return fail("Tactus cannot lay out " + std::string(mime_type) +
+    return fail(ErrorKind::input, "Tactus cannot lay out " + std::string(mime_type) +
                     " documents; send plain text, Markdown, DOCX, ODT, BRF or PEF",
                 "CONTENT_TYPE");
 }

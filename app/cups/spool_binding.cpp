@@ -38,7 +38,7 @@ Result<spool::PrinterRecord> bind_printer(spool::Spool& s, std::string_view devi
     if (*found) return **found;
     const std::string name = queue_name.empty() ? std::string("Embosser") : std::string(queue_name);
     if (auto same_name = s.printer(name); same_name)
-        return fail("the spool's printer '" + name + "' is on " + same_name->device + ", but this CUPS queue is on " +
+        return fail(ErrorKind::usage, "the spool's printer '" + name + "' is on " + same_name->device + ", but this CUPS queue is on " +
                         std::string(device) + "; change one of them (tactus-cli queue printer set " + name +
                         " --device ...) so they name the same cable",
                     s.path().string());

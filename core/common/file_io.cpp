@@ -29,19 +29,19 @@ Result<std::string> read_file(const std::filesystem::path& path, std::size_t max
     // writer would block open() and read() for ever, a device could give bytes
     // without end.
     auto file = platform::ReadableFile::open(path);
-    if (!file) return fail("cannot open: " + file.error().what, path.string());
+    if (!file) return fail(ErrorKind::input, "cannot open: " + file.error().what, path.string());
     const auto info = file->info();
-    if (!info) return fail("cannot examine: " + info.error().what, path.string());
-    if (info->type != platform::FileType::regular) return fail(not_regular(info->type), path.string());
+    if (!info) return fail(ErrorKind::input, "cannot examine: " + info.error().what, path.string());
+    if (info->type != platform::FileType::regular) return fail(ErrorKind::input, not_regular(info->type), path.string());
     const auto size = static_cast<std::size_t>(info->size);
     if (size > max_bytes)
-        return fail("file is " + std::to_string(size) + " bytes, above the limit of " + std::to_string(max_bytes),
+        return fail(ErrorKind::input, "file is " + std::to_string(size) + " bytes, above the limit of " + std::to_string(max_bytes),
                     path.string());
     std::string bytes(size, '\0');
     std::size_t done = 0;
     while (done < size) {
         const auto n = file->read(bytes.data() + done, size - done);
-        if (!n) return fail("read error: " + n.error().what, path.string());
+        if (!n) return fail(ErrorKind::io, "read error: " + n.error().what, path.string());
         if (*n == 0) break;  // shrank while read: what is there
         done += *n;
     }

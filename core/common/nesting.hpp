@@ -17,7 +17,7 @@ inline constexpr int max_nesting_depth = 256;
 inline Error too_deeply_nested(std::string what, std::string where) {
     return Error{what + " nested more than " + std::to_string(max_nesting_depth) +
                      " levels deep: refused, as no document needs that and reading it could exhaust the stack",
-                 std::move(where)};
+                 std::move(where), ErrorKind::input};
 }
 
 // An error made by too_deeply_nested: a file refused for its depth is not

@@ -37,7 +37,7 @@ enum class ErrorKind : std::uint8_t {
 struct Error {
     std::string message;  // why, in plain words
     std::string where;    // "file:line", "byte 1234", "field carriage.v_max"; may be empty
-    ErrorKind kind = ErrorKind::input;
+    ErrorKind kind;       // no default: every error says which kind it is
 
     [[nodiscard]] std::string to_string() const {
         return where.empty() ? message : where + ": " + message;
@@ -46,10 +46,6 @@ struct Error {
 
 template <typename T>
 using Result = std::expected<T, Error>;
-
-inline std::unexpected<Error> fail(std::string message, std::string where = {}) {
-    return std::unexpected<Error>(Error{std::move(message), std::move(where)});
-}
 
 inline std::unexpected<Error> fail(ErrorKind kind, std::string message, std::string where = {}) {
     return std::unexpected<Error>(Error{std::move(message), std::move(where), kind});

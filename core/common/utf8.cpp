@@ -56,7 +56,7 @@ Result<std::u32string> utf8_to_utf32(std::string_view utf8) {
     char32_t cp = 0;
     for (std::size_t i = 0; i < utf8.size();) {
         const auto n = decode(utf8, i, cp);
-        if (n == 0) return fail("invalid UTF-8", "byte " + std::to_string(i));
+        if (n == 0) return fail(ErrorKind::input, "invalid UTF-8", "byte " + std::to_string(i));
         out.push_back(cp);
         i += n;
     }
@@ -71,7 +71,7 @@ Result<void> append_utf32(std::u32string& out, std::string_view utf8) {
         const auto n = decode(utf8, i, cp);
         if (n == 0) {
             out.resize(start);
-            return fail("invalid UTF-8", "byte " + std::to_string(i));
+            return fail(ErrorKind::input, "invalid UTF-8", "byte " + std::to_string(i));
         }
         out.push_back(cp);
         i += n;

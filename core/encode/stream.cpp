@@ -92,7 +92,7 @@ void append_op(std::vector<std::uint8_t>& out, const Op& op) {
 }
 
 Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
-    if (in.empty()) return fail("empty op", at_byte(0));
+    if (in.empty()) return fail(ErrorKind::protocol, "empty op", at_byte(0));
     std::size_t pos = 1;
     const std::uint8_t code = in[0];
     Op op;
@@ -102,7 +102,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         pos += 2;
         return v;
     };
-    auto truncated = [&] { return fail("truncated op 0x" + std::to_string(code), at_byte(pos)); };
+    auto truncated = [&] { return fail(ErrorKind::protocol, "truncated op 0x" + std::to_string(code), at_byte(pos)); };
     if (code == 0x10) {
         if (!need(4)) return truncated();
         op.code = OpCode::job_begin;
@@ -126,7 +126,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         op.flags = in[pos++];
         op.skip = in[pos++];
         if ((op.flags & ~(pass_flag::back_side | pass_flag::no_feed)) != 0)
-            return fail("unknown pass flags", at_byte(pos - 2));
+            return fail(ErrorKind::protocol, "unknown pass flags", at_byte(pos - 2));
     } else if (code == 0x15) {
         op.code = OpCode::pass_end;
     } else if ((code & 0xF8) == 0x20) {
@@ -137,7 +137,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         if (!need(1)) return truncated();
         const std::uint8_t n = in[pos++];
         if (n == 0 || n > kMaxSegmentsPerOp)
-            return fail("move with " + std::to_string(n) + " segments", at_byte(pos - 1));
+            return fail(ErrorKind::protocol, "move with " + std::to_string(n) + " segments", at_byte(pos - 1));
         for (std::uint8_t i = 0; i < n; ++i) {
             const auto head = get_uvar(in, pos, 0xFFFFF, 3);
             const auto delta = head ? get_svar(in, pos) : std::nullopt;
@@ -146,7 +146,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
             const unsigned shift = *head & 0x0F;
             const auto count = *head >> 4;
             if (count == 0 || shift > machine::kMaxGridShift)
-                return fail("step segment with count " + std::to_string(count) + " and grid " +
+                return fail(ErrorKind::protocol, "step segment with count " + std::to_string(count) + " and grid " +
                                 std::to_string(shift),
                             at_byte(pos));
             const std::uint32_t ref = i == 0 ? 0U : last_interval(op.segments.back());
@@ -154,11 +154,11 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
             const std::int64_t add_scaled = *add;
             if ((static_cast<std::uint64_t>(scaled) << shift) > 0xFFFFFFFFULL ||
                 add_scaled < -(std::int64_t{1} << (31 - shift)) || add_scaled >= (std::int64_t{1} << (31 - shift)))
-                return fail("step segment outside the 32-bit registers", at_byte(pos));
+                return fail(ErrorKind::protocol, "step segment outside the 32-bit registers", at_byte(pos));
             const std::uint32_t interval = scaled << shift;
             // The first interval must fit the 16-bit timer; later ones are checked as run.
             if ((interval >> machine::kStepFractionBits) < 1)
-                return fail("step interval outside the 16-bit timer", at_byte(pos));
+                return fail(ErrorKind::protocol, "step interval outside the 16-bit timer", at_byte(pos));
             op.segments.push_back({interval, static_cast<std::uint16_t>(count),
                                    static_cast<std::int32_t>(add_scaled * (std::int64_t{1} << shift))});
         }
@@ -177,7 +177,7 @@ Result<std::pair<Op, std::size_t>> decode_op(std::span<const std::uint8_t> in) {
         if (!v) return truncated();
         op.value = *v;
     } else {
-        return fail("unknown op code " + std::to_string(code), at_byte(0));
+        return fail(ErrorKind::protocol, "unknown op code " + std::to_string(code), at_byte(0));
     }
     return std::pair{std::move(op), pos};
 }
@@ -258,9 +258,9 @@ Result<void> check_move(const motion::StepMove& m, const std::string& where) {
     for (const auto& s : m.segments) steps += s.count;
     // Replayed with the controller's arithmetic: every interval must stay in its timer's range.
     if (motion::expand_steps(m.segments).size() != static_cast<std::size_t>(steps))
-        return fail("step interval leaves the 16-bit timer range", where);
+        return fail(ErrorKind::input, "step interval leaves the 16-bit timer range", where);
     if (steps != std::llabs(m.steps))
-        return fail("move of " + std::to_string(m.steps) + " steps has " + std::to_string(steps) +
+        return fail(ErrorKind::input, "move of " + std::to_string(m.steps) + " steps has " + std::to_string(steps) +
                         " steps in its segments",
                     where);
     return {};
@@ -300,8 +300,8 @@ Result<JobStream> begin_stream(const plan::JobPlan& plan, const StreamStart& sta
     std::size_t passes = 0;
     for (const auto& sheet : plan.sheets) passes += sheet.passes.size();
     if (passes > kMaxJobPasses)
-        return fail(std::to_string(passes) + " passes in one job; the controller counts at most 65,535", "plan");
-    if (start.first_pass > passes) return fail("start pass beyond the plan", "plan");
+        return fail(ErrorKind::input, std::to_string(passes) + " passes in one job; the controller counts at most 65,535", "plan");
+    if (start.first_pass > passes) return fail(ErrorKind::input, "start pass beyond the plan", "plan");
     JobStream s;
     s.first_pass = start.first_pass;
     s.end_pass = passes;
@@ -331,7 +331,7 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
         const std::size_t p0 = first_sheet && start.first_pass < table.size()
                                    ? table[start.first_pass].pass_in_sheet
                                    : 0;
-        if (sheet.index > 0xFFFF) return fail("sheet number above 65535", "plan");
+        if (sheet.index > 0xFFFF) return fail(ErrorKind::input, "sheet number above 65535", "plan");
         if (!restart) {
             Op b = op_of(OpCode::sheet_begin);
             b.id = static_cast<std::uint16_t>(sheet.index);
@@ -346,10 +346,10 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
             const PassRef ref{sp, pi, sheet.index};
             const auto where = pass_where(ref);
             if (pass.moves.size() != pass.strikes.size())
-                return fail("pass has " + std::to_string(pass.moves.size()) + " moves for " +
+                return fail(ErrorKind::input, "pass has " + std::to_string(pass.moves.size()) + " moves for " +
                                 std::to_string(pass.strikes.size()) + " strikes",
                             where);
-            if (pass.strikes.size() > 255) return fail("more than 255 strikes in a pass", where);
+            if (pass.strikes.size() > 255) return fail(ErrorKind::input, "more than 255 strikes in a pass", where);
             if (auto r = check_move(pass.feed, where + " feed"); !r) return std::unexpected(r.error());
             const bool restart_pass = restart && pi == p0;
             if (restart_pass) {
@@ -385,7 +385,7 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                 if (auto r = check_move(pass.moves[i], mw); !r) return std::unexpected(r.error());
                 carriage += pass.moves[i].steps;
                 if (carriage != pass.strikes[i].carriage_step)
-                    return fail("moves reach carriage step " + std::to_string(carriage) +
+                    return fail(ErrorKind::input, "moves reach carriage step " + std::to_string(carriage) +
                                     " but the strike is planned at " +
                                     std::to_string(pass.strikes[i].carriage_step),
                                 mw);

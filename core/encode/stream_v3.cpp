@@ -79,13 +79,13 @@ struct Encoder {
     Result<void> align(AxisState& fw, const AxisState& want) {
         if (fw.pos == want.pos && fw.neg == want.neg) return {};
         if (want.pos < 0 || want.pos > 0x7FFF - 2 * static_cast<std::int32_t>(t.carriage.grid_steps))
-            return fail("carriage position " + std::to_string(want.pos) + " out of the seek range", "plan");
+            return fail(ErrorKind::input, "carriage position " + std::to_string(want.pos) + " out of the seek range", "plan");
         // Arrive moving the way the plan last moved: overshoot first if need be.
         const bool arrives_neg = want.pos < fw.pos;
         if (want.pos == fw.pos || arrives_neg != want.neg) {
             const auto via = want.neg ? want.pos + static_cast<std::int32_t>(t.carriage.grid_steps)
                                       : std::max(0, want.pos - static_cast<std::int32_t>(t.carriage.grid_steps));
-            if (via == want.pos) return fail("cannot approach carriage step 0 moving away from home", "plan");
+            if (via == want.pos) return fail(ErrorKind::input, "cannot approach carriage step 0 moving away from home", "plan");
             seek(v3::op_seek_carriage, via);
         }
         seek(v3::op_seek_carriage, want.pos);
@@ -118,7 +118,7 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
     std::size_t idx = 0;
     for (std::size_t sp = 0; sp < plan.sheets.size(); ++sp) {
         const auto& sheet = plan.sheets[sp];
-        if (sheet.index > 0xFFFF) return fail("sheet number above 65535", "plan");
+        if (sheet.index > 0xFFFF) return fail(ErrorKind::input, "sheet number above 65535", "plan");
         feed.pos = 0;  // SHEET_BEGIN: the sheet's top edge is the feed origin
         const std::size_t sheet_end_idx = idx + sheet.passes.size();
         const bool emit_sheet = sheet_end_idx > start.first_pass || (sheet.passes.empty() && idx >= start.first_pass);
@@ -136,23 +136,23 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
             const bool emit = idx >= start.first_pass;
             const bool restart_pass = emit && idx == start.first_pass && start.mid_sheet;
             if (pass.moves.size() != pass.strikes.size())
-                return fail("pass has " + std::to_string(pass.moves.size()) + " moves for " +
+                return fail(ErrorKind::input, "pass has " + std::to_string(pass.moves.size()) + " moves for " +
                                 std::to_string(pass.strikes.size()) + " strikes",
                             where);
-            if (pass.strikes.size() > 255) return fail("more than 255 strikes in a pass", where);
+            if (pass.strikes.size() > 255) return fail(ErrorKind::input, "more than 255 strikes in a pass", where);
             if (!motion::is_table_move(tables.feed, pass.feed))
-                return fail("the feed is not the firmware's table move of " + std::to_string(pass.feed.steps) +
+                return fail(ErrorKind::input, "the feed is not the firmware's table move of " + std::to_string(pass.feed.steps) +
                                 " steps: plan with the firmware's tables (PlanOptions::firmware)",
                             where);
             const AxisState feed_before = feed;
             const auto feed_units = units_of(pass.feed.steps, feed, tables.feed);
             if (!feed_units)
-                return fail("a feed of " + std::to_string(pass.feed.steps) + " steps is off the firmware's " +
+                return fail(ErrorKind::input, "a feed of " + std::to_string(pass.feed.steps) + " steps is off the firmware's " +
                                 std::to_string(tables.feed.grid_steps) + "-step grid",
                             where);
-            if (*feed_units >= 0x4000) return fail("feed too long for one pass record", where);
+            if (*feed_units >= 0x4000) return fail(ErrorKind::input, "feed too long for one pass record", where);
             if (feed.pos != pass.feed_step)
-                return fail("the feed reaches step " + std::to_string(feed.pos) + ", the pass is planned at " +
+                return fail(ErrorKind::input, "the feed reaches step " + std::to_string(feed.pos) + ", the pass is planned at " +
                                 std::to_string(pass.feed_step),
                             where);
             // Entries: the carriage moves in grid units, checked against the plan.
@@ -166,33 +166,33 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
                 const auto& m = pass.moves[i];
                 const auto mw = where + " strike " + std::to_string(i + 1);
                 if (!motion::is_table_move(tables.carriage, m))
-                    return fail("the move is not the firmware's table move of " + std::to_string(m.steps) +
+                    return fail(ErrorKind::input, "the move is not the firmware's table move of " + std::to_string(m.steps) +
                                     " steps: plan with the firmware's tables (PlanOptions::firmware)",
                                 mw);
                 if (m.settle_ticks != timing.settle_ticks)
-                    return fail("settles " + std::to_string(m.settle_ticks) + " ticks, the firmware " +
+                    return fail(ErrorKind::input, "settles " + std::to_string(m.settle_ticks) + " ticks, the firmware " +
                                     std::to_string(timing.settle_ticks) + " (CONFIGURE)",
                                 mw);
                 const auto u = units_of(m.steps, carriage, tables.carriage);
                 if (!u)
-                    return fail("a move of " + std::to_string(m.steps) + " steps is off the firmware's " +
+                    return fail(ErrorKind::input, "a move of " + std::to_string(m.steps) + " steps is off the firmware's " +
                                     std::to_string(tables.carriage.grid_steps) + "-step grid",
                                 mw);
                 if (carriage.pos != pass.strikes[i].carriage_step)
-                    return fail("moves reach carriage step " + std::to_string(carriage.pos) +
+                    return fail(ErrorKind::input, "moves reach carriage step " + std::to_string(carriage.pos) +
                                     " but the strike is planned at " + std::to_string(pass.strikes[i].carriage_step),
                                 mw);
                 const std::uint8_t h = pass.strikes[i].hammer == plan::Hammer::concave ? 0x80 : 0x00;
                 if (i == 0) {
                     first_units = *u;
                     first_neg = m.steps < 0;
-                    if (first_units >= 0x8000) return fail("first move too long for a pass record", mw);
+                    if (first_units >= 0x8000) return fail(ErrorKind::input, "first move too long for a pass record", mw);
                     entries.push_back(h);
                     entry_ends.push_back(entries.size());
                 } else {
                     if (m.steps != 0) {
                         if (sweep_neg && *sweep_neg != (m.steps < 0))
-                            return fail("the pass's strikes do not all run one way", mw);
+                            return fail(ErrorKind::input, "the pass's strikes do not all run one way", mw);
                         sweep_neg = m.steps < 0;
                     }
                     if (*u < 64) {
@@ -201,7 +201,7 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
                         entries.push_back(static_cast<std::uint8_t>(h | 0x40 | (*u >> 8)));
                         entries.push_back(static_cast<std::uint8_t>(*u & 0xFF));
                     } else {
-                        return fail("a strike " + std::to_string(*u) + " grid units from the last", mw);
+                        return fail(ErrorKind::input, "a strike " + std::to_string(*u) + " grid units from the last", mw);
                     }
                     entry_ends.push_back(entries.size());
                 }
@@ -269,7 +269,7 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
     std::uint16_t sheet = 0;
     std::size_t i = 0;
     auto need = [&](std::size_t n) -> Result<void> {
-        if (i + n > in.size()) return fail("stream ends inside an op", "byte " + std::to_string(i));
+        if (i + n > in.size()) return fail(ErrorKind::protocol, "stream ends inside an op", "byte " + std::to_string(i));
         return {};
     };
     auto u8 = [&] { return in[i++]; };
@@ -321,7 +321,7 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
             case v3::op_pass: {
                 if (auto r = need(1); !r) return std::unexpected(r.error());
                 const std::uint8_t flags = u8();
-                if (flags & 0xE0) return fail("reserved pass flags", "byte " + std::to_string(at));
+                if (flags & 0xE0) return fail(ErrorKind::protocol, "reserved pass flags", "byte " + std::to_string(at));
                 std::uint8_t skip = 0;
                 if (flags & v3::pass_flag::skip) {
                     if (auto r = need(1); !r) return std::unexpected(r.error());
@@ -361,7 +361,7 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
                 }
                 break;
             }
-            default: return fail("unknown op 0x" + std::to_string(op), "byte " + std::to_string(at));
+            default: return fail(ErrorKind::protocol, "unknown op 0x" + std::to_string(op), "byte " + std::to_string(at));
         }
     }
     return out;

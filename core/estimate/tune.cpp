@@ -206,7 +206,7 @@ Result<const TunedMove*> MoveTuner::carriage(std::uint32_t steps) {
         ++n_rejected;
         if (last) break;
     }
-    return fail("no profile, shaper or speed keeps the worst-case residual of a " +
+    return fail(ErrorKind::input, "no profile, shaper or speed keeps the worst-case residual of a " +
                     fmt(3, distance) + " mm carriage move within " + fmt(3, tol) +
                     " um (best: " + best_name + ", " + fmt(1, best_worst) +
                     " um): unreachable at any speed",

@@ -24,7 +24,7 @@ Result<void> write_brf(const layout::PagedDocument& doc, std::ostream& out) {
             line.clear();
             for (document::Cell c : page.lines[i]) {
                 if (c.dots & 0xC0)
-                    return fail("8-dot cell cannot be written as BRF (6-dot only); use PEF",
+                    return fail(ErrorKind::input, "8-dot cell cannot be written as BRF (6-dot only); use PEF",
                                 "page " + std::to_string(page.braille_number) + " line " +
                                     std::to_string(i + 1));
                 line.push_back(document::cell_to_brf(c));
@@ -62,7 +62,7 @@ Result<ExportFormat> parse_export_format(std::string_view s) {
     if (s == "brf") return ExportFormat::brf;
     if (s == "pef") return ExportFormat::pef;
     if (s == "unicode" || s == "txt") return ExportFormat::unicode;
-    return fail("unknown output format '" + std::string(s) + "' (brf, pef, unicode)", "--to");
+    return fail(ErrorKind::usage, "unknown output format '" + std::string(s) + "' (brf, pef, unicode)", "--to");
 }
 
 Result<void> write_document(const layout::PagedDocument& doc, ExportFormat format, const PefMetadata& meta,
@@ -71,7 +71,7 @@ Result<void> write_document(const layout::PagedDocument& doc, ExportFormat forma
     // stand anywhere, so writing the page would silently drop the drawing.
     for (std::size_t i = 0; i < doc.pages.size(); ++i)
         if (!doc.pages[i].graphic.empty())
-            return fail("is a tactile graphic (" + std::to_string(doc.pages[i].graphic.size()) +
+            return fail(ErrorKind::input, "is a tactile graphic (" + std::to_string(doc.pages[i].graphic.size()) +
                             " dots placed freely), which BRF, PEF and Unicode braille cannot hold: "
                             "emboss it, or plan it (tactus-cli plan)",
                         "page " + std::to_string(i + 1));
@@ -80,7 +80,7 @@ Result<void> write_document(const layout::PagedDocument& doc, ExportFormat forma
         case ExportFormat::pef: return write_pef(doc, meta, out);
         case ExportFormat::unicode: write_unicode(doc, out); return {};
     }
-    return fail("unsupported export format");
+    return fail(ErrorKind::internal, "unsupported export format");
 }
 
 Result<std::string> export_document(const layout::PagedDocument& doc, ExportFormat format,

@@ -178,11 +178,11 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
         std::size_t used = page.lines.size();
         while (used > 0 && page.lines[used - 1].empty()) --used;
         if (used > static_cast<std::size_t>(section.rows))
-            return fail("page has more rows than the volume allows",
+            return fail(ErrorKind::internal, "page has more rows than the volume allows",
                         "page " + std::to_string(page.braille_number));
         for (std::size_t i = 0; i < used; ++i)
             if (page.lines[i].size() > static_cast<std::size_t>(section.cols))
-                return fail("row longer than cols", "page " + std::to_string(page.braille_number) +
+                return fail(ErrorKind::internal, "row longer than cols", "page " + std::to_string(page.braille_number) +
                                                         " row " + std::to_string(i + 1));
         write_page(page, row, out);
         section_has_page = true;

@@ -54,7 +54,7 @@ struct Lexer {
         }
         if (digits == 0) {
             i = begin;
-            return fail("a number was expected", here());
+            return fail(ErrorKind::input, "a number was expected", here());
         }
         if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
             std::size_t j = i + 1;
@@ -70,14 +70,14 @@ struct Lexer {
         const auto r = std::from_chars(s.data() + from, s.data() + i, v);
         if (r.ec != std::errc{} || !std::isfinite(v)) {
             i = begin;
-            return fail("the number is out of range", here());
+            return fail(ErrorKind::input, "the number is out of range", here());
         }
         return v;
     }
     // An arc flag: one character, 0 or 1 (it may touch the next number).
     Result<bool> flag() {
         if (i < s.size() && (s[i] == '0' || s[i] == '1')) return s[i++] == '1';
-        return fail("an arc flag (0 or 1) was expected", here());
+        return fail(ErrorKind::input, "an arc flag (0 or 1) was expected", here());
     }
 };
 
@@ -118,9 +118,9 @@ Result<double> parse_length_mm(std::string_view text, double percent_of) {
     else if (unit == "pt") mm_per_unit = 25.4 / 72;
     else if (unit == "pc") mm_per_unit = 25.4 / 6;
     else if (unit == "%" && percent_of > 0) return *v * percent_of / 100;
-    else if (unit == "%") return fail("a percentage needs a size to be a part of, and there is none here", "");
+    else if (unit == "%") return fail(ErrorKind::input, "a percentage needs a size to be a part of, and there is none here", "");
     else
-        return fail("unknown unit '" + std::string(unit) + "' (px, mm, cm, in, pt or pc)",
+        return fail(ErrorKind::input, "unknown unit '" + std::string(unit) + "' (px, mm, cm, in, pt or pc)",
                     "character " + std::to_string(unit_at + 1));
     return *v * mm_per_unit;
 }
@@ -149,7 +149,7 @@ Result<Affine> parse_transform(std::string_view text) {
         const std::string_view name = text.substr(name_at, lx.i - name_at);
         lx.skip_ws();
         if (lx.at_end() || text[lx.i] != '(')
-            return fail(name.empty() ? "a transform (matrix, translate, scale, rotate, skewX, skewY) was expected"
+            return fail(ErrorKind::input, name.empty() ? "a transform (matrix, translate, scale, rotate, skewX, skewY) was expected"
                                      : "'(' was expected after '" + std::string(name) + "'",
                         lx.here());
         ++lx.i;
@@ -161,11 +161,11 @@ Result<Affine> parse_transform(std::string_view text) {
             args.push_back(*v);
             lx.skip_comma_ws();
         }
-        if (lx.at_end()) return fail("')' was expected", lx.here());
+        if (lx.at_end()) return fail(ErrorKind::input, "')' was expected", lx.here());
         ++lx.i;
         const auto n = args.size();
         const auto count_error = [&](const char* want) {
-            return fail(std::string(name) + " takes " + want + " numbers, not " + std::to_string(n),
+            return fail(ErrorKind::input, std::string(name) + " takes " + want + " numbers, not " + std::to_string(n),
                         "character " + std::to_string(name_at + 1));
         };
         Affine t;
@@ -198,7 +198,7 @@ Result<Affine> parse_transform(std::string_view text) {
             if (n != 1) return count_error("1");
             t.b = std::tan(args[0] * kDeg);
         } else {
-            return fail("unknown transform '" + std::string(name) + "'", "character " + std::to_string(name_at + 1));
+            return fail(ErrorKind::input, "unknown transform '" + std::string(name) + "'", "character " + std::to_string(name_at + 1));
         }
         total = total.then_after(t);
         lx.skip_comma_ws();
@@ -283,14 +283,14 @@ Result<std::vector<Subpath>> parse_path(std::string_view d) {
             ++lx.i;
             lx.skip_ws();
         } else if (!lx.at_number() || cmd == 0 || cmd == 'z' || cmd == 'Z') {
-            return fail(cmd == 0 ? "path data must start with a moveto (M or m)"
+            return fail(ErrorKind::input, cmd == 0 ? "path data must start with a moveto (M or m)"
                                  : "a path command was expected",
                         lx.here());
         }
         // else: the previous command again (a moveto's extra pairs are linetos)
         const bool rel = cmd >= 'a' && cmd <= 'z';
         const char up = static_cast<char>(rel ? cmd - 'a' + 'A' : cmd);
-        if (out.empty() && up != 'M') return fail("path data must start with a moveto (M or m)", lx.here());
+        if (out.empty() && up != 'M') return fail(ErrorKind::input, "path data must start with a moveto (M or m)", lx.here());
         const Point base = rel ? cur : Point{};
         Result<void> r;
         switch (up) {
@@ -395,7 +395,7 @@ Result<std::vector<Subpath>> parse_path(std::string_view d) {
                 break;
             }
             default:
-                return fail(std::string("unknown path command '") + cmd + "'", "character " + std::to_string(lx.i));
+                return fail(ErrorKind::input, std::string("unknown path command '") + cmd + "'", "character " + std::to_string(lx.i));
         }
         last = up;
         if (up == 'M') last = 'M';

@@ -72,7 +72,7 @@ Result<document::Document> import_brf(std::string_view bytes) {
         }
         document::Cell cell;
         if (!document::cell_from_brf(c, cell))
-            return fail(describe(static_cast<unsigned char>(c)) + " is not Braille ASCII",
+            return fail(ErrorKind::input, describe(static_cast<unsigned char>(c)) + " is not Braille ASCII",
                         std::to_string(line_number) + ":" + std::to_string(column));
         line.push_back(cell);
         line_started = true;

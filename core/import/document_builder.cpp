@@ -234,7 +234,7 @@ Result<document::Document> DocumentBuilder::finish() {
     end_note();
     end_table();
     if (full())
-        return fail("more than " + std::to_string(max_import_blocks) +
+        return fail(ErrorKind::input, "more than " + std::to_string(max_import_blocks) +
                         " blocks (paragraphs, pages); split the document",
                     overflow_line_ > 0 ? std::to_string(overflow_line_) : std::string{});
     // A print page break after all text is kept: saving and opening again must

@@ -419,7 +419,7 @@ Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
     DocxNumbering numbering(numbering_xml.root());
     const auto body = child(document_xml.root(), "body");
     if (local_name(document_xml.root()) != "document" || !body)
-        return fail("not a Word document: no <w:document>/<w:body>", *main_part);
+        return fail(ErrorKind::input, "not a Word document: no <w:document>/<w:body>", *main_part);
     BodyReader reader(styles, numbering, footnotes_xml.root(), endnotes_xml.root(), ruby, *main_part,
                       document_xml.bytes);
     reader.container(body);

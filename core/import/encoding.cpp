@@ -55,13 +55,13 @@ Result<Converter> open_converter(const std::string& name) {
     UErrorCode err = U_ZERO_ERROR;
     Converter cnv(ucnv_open(name.c_str(), &err));
     if (U_FAILURE(err) || !cnv)
-        return fail("unknown encoding '" + name +
+        return fail(ErrorKind::usage, "unknown encoding '" + name +
                         "' (try UTF-8, UTF-16LE, GB18030, Big5, windows-1252, ...)",
                     "encoding");
     // Stop at the first byte sequence the encoding does not define: a silent
     // substitution character would lose the teacher's text without a word.
     ucnv_setToUCallBack(cnv.get(), UCNV_TO_U_CALLBACK_STOP, nullptr, nullptr, nullptr, &err);
-    if (U_FAILURE(err)) return fail("cannot configure converter for '" + name + "'", "encoding");
+    if (U_FAILURE(err)) return fail(ErrorKind::usage, "cannot configure converter for '" + name + "'", "encoding");
     return cnv;
 }
 
@@ -111,7 +111,7 @@ Result<std::string> convert(std::string_view bytes, UConverter* cnv, const std::
             const auto offset = consumed >= skip ? consumed - skip : consumed;
             std::string what = err == U_TRUNCATED_CHAR_FOUND ? "text ends inside a character"
                                                              : "byte sequence not valid";
-            return fail(what + " in " + label + " (wrong encoding? name it explicitly)",
+            return fail(ErrorKind::input, what + " in " + label + " (wrong encoding? name it explicitly)",
                         byte_at(offset));
         }
         break;
@@ -187,7 +187,7 @@ Result<void> check_controls(std::string_view utf8) {
             continue;
         std::array<char, 16> hex{};
         std::snprintf(hex.data(), hex.size(), "U+%04X", code);
-        return fail(std::string("not text: control character ") + hex.data(),
+        return fail(ErrorKind::input, std::string("not text: control character ") + hex.data(),
                     position_at(utf8, i).to_string());
     }
     return {};
@@ -196,7 +196,7 @@ Result<void> check_controls(std::string_view utf8) {
 Result<DecodedText> decode_utf8(std::string_view bytes, std::size_t bom, std::string label) {
     const auto invalid = find_invalid_utf8(bytes.substr(bom));
     if (invalid != std::string_view::npos)
-        return fail("invalid UTF-8 (wrong encoding? name it explicitly)",
+        return fail(ErrorKind::input, "invalid UTF-8 (wrong encoding? name it explicitly)",
                     byte_at(invalid + bom));
     DecodedText out;
     out.bom_bytes = bom;
@@ -233,7 +233,7 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
     if (const auto* nul = static_cast<const char*>(std::memchr(bytes.data(), 0, bytes.size()))) {
         const auto at = static_cast<std::size_t>(nul - bytes.data());
         const bool utf16_like = bytes.size() >= 4 && (bytes[1] == 0 || bytes[0] == 0);
-        return fail(std::string("not text: NUL byte") +
+        return fail(ErrorKind::input, std::string("not text: NUL byte") +
                         (utf16_like ? " (UTF-16 without a byte-order mark? name the encoding)"
                                     : ""),
                     byte_at(at));
@@ -245,7 +245,7 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
     const bool runs = non_ascii_comes_in_runs(bytes);
     if (detected.empty() || detected == "ASCII" || detected == "UTF-8" ||
         (runs && !is_cjk(detected)))
-        return fail("not valid UTF-8 and the encoding cannot be told reliably" +
+        return fail(ErrorKind::input, "not valid UTF-8 and the encoding cannot be told reliably" +
                         (detected.empty() ? std::string{} : " (a guess would be " + detected + ")") +
                         "; name it explicitly (e.g. GB18030, Big5, windows-1252)",
                     byte_at(invalid));
@@ -255,7 +255,7 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
     if (is_latin_single_byte(detected)) detected = "WINDOWS-1252";
     auto decoded = decode_with(bytes, detected, detected);
     if (!decoded && decoded.error().where == "encoding")
-        return fail("detected encoding " + detected +
+        return fail(ErrorKind::input, "detected encoding " + detected +
                         " is not supported; convert the file to UTF-8 or name the encoding",
                     byte_at(invalid));
     return decoded;
@@ -267,7 +267,7 @@ Result<DecodedText> decode_text(std::string_view bytes, std::string_view declare
     auto name = std::string(declared);
     name.erase(0, name.find_first_not_of(" \t"));
     name.erase(name.find_last_not_of(" \t") + 1);
-    if (!declared.empty() && name.empty()) return fail("empty encoding name", "encoding");
+    if (!declared.empty() && name.empty()) return fail(ErrorKind::usage, "empty encoding name", "encoding");
     auto decoded = declared.empty() ? detect_and_decode(bytes) : decode_with(bytes, name, name);
     if (!decoded) return decoded;
     if (auto ok = check_controls(decoded->text(bytes)); !ok) return std::unexpected(ok.error());

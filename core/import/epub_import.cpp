@@ -48,14 +48,14 @@ struct ManifestItem {
 
 Result<document::Document> import_epub(std::string_view bytes) {
     auto zip = ZipArchive::open(bytes);
-    if (!zip) return fail("not an EPUB: " + zip.error().message, zip.error().where);
+    if (!zip) return fail(ErrorKind::input, "not an EPUB: " + zip.error().message, zip.error().where);
     if (zip->contains("mimetype")) {
         auto type = zip->read("mimetype", 1024);
         if (type && type->find("application/epub+zip") == std::string::npos)
-            return fail("not an EPUB: its mimetype is '" + *type + "'", "mimetype");
+            return fail(ErrorKind::input, "not an EPUB: its mimetype is '" + *type + "'", "mimetype");
     }
     if (!zip->contains("META-INF/container.xml"))
-        return fail("not an EPUB: missing part META-INF/container.xml", "META-INF/container.xml");
+        return fail(ErrorKind::input, "not an EPUB: missing part META-INF/container.xml", "META-INF/container.xml");
     auto container = read_xml(*zip, "META-INF/container.xml");
     if (!container) return std::unexpected(container.error());
     std::string opf_path;
@@ -68,13 +68,13 @@ Result<document::Document> import_epub(std::string_view bytes) {
         }
     }
     if (opf_path.empty())
-        return fail("not an EPUB: container.xml names no package document (rootfile full-path)", "META-INF/container.xml");
+        return fail(ErrorKind::input, "not an EPUB: container.xml names no package document (rootfile full-path)", "META-INF/container.xml");
     opf_path = resolve_path("", opf_path);
     auto opf = read_xml(*zip, opf_path);
     if (!opf) return std::unexpected(opf.error());
     const auto package = (*opf)->xml.document_element();
     if (local_name(package) != "package")
-        return fail("not an EPUB package document: the root element is <" + std::string(package.name()) + ">", opf_path);
+        return fail(ErrorKind::input, "not an EPUB package document: the root element is <" + std::string(package.name()) + ">", opf_path);
 
     std::map<std::string, ManifestItem> manifest;
     for (const auto& item : child(package, "manifest").children()) {
@@ -106,7 +106,7 @@ Result<document::Document> import_epub(std::string_view bytes) {
         if (!raw) return std::unexpected(raw.error());
         total += raw->size();
         if (total > max_book_bytes)
-            return fail("the book unpacks to more than " + std::to_string(max_book_bytes) + " bytes of text", path);
+            return fail(ErrorKind::input, "the book unpacks to more than " + std::to_string(max_book_bytes) + " bytes of text", path);
         auto text = markup_text(*raw);
         if (!text) return std::unexpected(located(text.error(), path));
         auto tree = dtbook ? parse_xml_markup(std::move(*text), path) : parse_xhtml_or_html(std::move(*text), path);
@@ -114,7 +114,7 @@ Result<document::Document> import_epub(std::string_view bytes) {
         parts.push_back(MarkupPart{path, (*tree)->xml, (*tree)->lines()});
         trees.push_back(std::move(*tree));
     }
-    if (parts.empty()) return fail("the EPUB's spine lists no content document (XHTML)", opf_path);
+    if (parts.empty()) return fail(ErrorKind::input, "the EPUB's spine lists no content document (XHTML)", opf_path);
     auto doc = MarkupWalk(std::move(parts)).run();
     if (!doc) return doc;
     doc->warnings.insert(doc->warnings.begin(), warnings.begin(), warnings.end());

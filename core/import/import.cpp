@@ -73,7 +73,7 @@ Result<SourceFormat> parse_source_format(std::string_view name) {
     if (n == "auto" || n == "automatic") return SourceFormat::automatic;
     // The format names are the extensions (plus their long forms).
     if (const auto f = format_from_extension(n)) return *f;
-    return fail("unknown input format '" + std::string(name) +
+    return fail(ErrorKind::usage, "unknown input format '" + std::string(name) +
                     "' (expected auto, txt, md, docx, odt, html, epub, dtbook, brf or pef)",
                 "format");
 }
@@ -82,7 +82,7 @@ Result<RubyGuide> parse_ruby_guide(std::string_view name) {
     const auto n = lower(name);
     if (n == "after") return RubyGuide::after;
     if (n == "omit") return RubyGuide::omit;
-    return fail("unknown ruby choice '" + std::string(name) + "' (expected after or omit)", "ruby");
+    return fail(ErrorKind::usage, "unknown ruby choice '" + std::string(name) + "' (expected after or omit)", "ruby");
 }
 
 std::string_view source_format_name(SourceFormat format) {
@@ -126,7 +126,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
                               const ImportOptions& options) {
     const std::string where(name);
     if (bytes.size() > max_import_bytes)
-        return fail("input is " + std::to_string(bytes.size()) + " bytes, above the limit of " +
+        return fail(ErrorKind::input, "input is " + std::to_string(bytes.size()) + " bytes, above the limit of " +
                         std::to_string(max_import_bytes),
                     where);
     // An SVG is a drawing, not text: read as text it would be its markup in braille.
@@ -140,7 +140,7 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
                             : options.format;
     if (!options.encoding.empty() && format != SourceFormat::text &&
         format != SourceFormat::markdown)
-        return fail("an encoding can only be given for text and Markdown input, not " +
+        return fail(ErrorKind::usage, "an encoding can only be given for text and Markdown input, not " +
                         std::string(source_format_name(format)),
                     where);
 
@@ -162,25 +162,25 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             break;
         }
         case SourceFormat::docx:
-            if (bytes.empty()) return fail("empty file is not a DOCX document", where);
+            if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a DOCX document", where);
             doc = detail::import_docx(bytes, options.ruby);
             break;
         case SourceFormat::odt:
-            if (bytes.empty()) return fail("empty file is not an ODT document", where);
+            if (bytes.empty()) return fail(ErrorKind::input, "empty file is not an ODT document", where);
             doc = detail::import_odt(bytes, options.ruby);
             break;
         case SourceFormat::brf: doc = detail::import_brf(bytes); break;
         case SourceFormat::pef:
-            if (bytes.empty()) return fail("empty file is not a PEF document", where);
+            if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a PEF document", where);
             doc = detail::import_pef(bytes);
             break;
         case SourceFormat::html: doc = detail::import_html(bytes); break;
         case SourceFormat::epub:
-            if (bytes.empty()) return fail("empty file is not an EPUB", where);
+            if (bytes.empty()) return fail(ErrorKind::input, "empty file is not an EPUB", where);
             doc = detail::import_epub(bytes);
             break;
         case SourceFormat::dtbook:
-            if (bytes.empty()) return fail("empty file is not a DTBook document", where);
+            if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a DTBook document", where);
             doc = detail::import_dtbook(bytes);
             break;
         case SourceFormat::automatic: break;  // resolved above

@@ -110,7 +110,7 @@ public:
         };
         segment_start_ = line_of(segment.data());
         if (md_parse(segment.data(), static_cast<MD_SIZE>(segment.size()), &parser, this) != 0)
-            return fail(builder_.full() ? "too many blocks" : "Markdown parser failed",
+            return fail(ErrorKind::input, builder_.full() ? "too many blocks" : "Markdown parser failed",
                         std::to_string(segment_start_));
         return {};
     }

@@ -85,12 +85,12 @@ Result<std::unique_ptr<MarkupDocument>> parse_xml_markup(std::string text, std::
 
 Result<std::unique_ptr<MarkupDocument>> parse_html_markup(std::string text, std::string_view part) {
     if (tag_depth_bound(text) > 20000)
-        return fail("elements nested more than 20000 deep; the document cannot be read", std::string(part));
+        return fail(ErrorKind::input, "elements nested more than 20000 deep; the document cannot be read", std::string(part));
     auto doc = std::make_unique<MarkupDocument>();
     doc->text = std::move(text);
     doc->html = true;
     GumboOutput* output = gumbo_parse_with_options(&kGumboDefaultOptions, doc->text.data(), doc->text.size());
-    if (!output) return fail("the HTML parser gave up on this document", std::string(part));
+    if (!output) return fail(ErrorKind::input, "the HTML parser gave up on this document", std::string(part));
     // Copy the tree without recursion; the walk bounds the depth it reads.
     struct Item {
         const GumboNode* node;
@@ -132,7 +132,7 @@ Result<std::unique_ptr<MarkupDocument>> parse_html_markup(std::string text, std:
         }
     }
     gumbo_destroy_output(&kGumboDefaultOptions, output);
-    if (!error.empty()) return fail(error, std::string(part));
+    if (!error.empty()) return fail(ErrorKind::input, error, std::string(part));
     return doc;
 }
 

@@ -78,7 +78,7 @@ Result<document::Document> import_dtbook(std::string_view bytes) {
     const auto& tree = **parsed;
     const auto root = tree.xml.document_element();
     if (local_name(root) != "dtbook")
-        return fail("not a DTBook document: the root element is <" + std::string(root.name()) + ">, not <dtbook>");
+        return fail(ErrorKind::input, "not a DTBook document: the root element is <" + std::string(root.name()) + ">, not <dtbook>");
     auto doc = MarkupWalk({MarkupPart{{}, tree.xml, tree.lines()}}).run();
     if (!doc) return doc;
     // <meta name="dc:Title" content="...">: Dublin Core, named in lower case as PEF names it.

@@ -368,7 +368,7 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
     if (node.type() == pugi::node_document) return walk_children(node, parent, depth);
     if (node.type() != pugi::node_element) return {};
     if (depth > max_markup_depth)
-        return fail("elements nested more than " + std::to_string(max_markup_depth) + " deep (<" +
+        return fail(ErrorKind::input, "elements nested more than " + std::to_string(max_markup_depth) + " deep (<" +
                         std::string(local_name(node)) + ">); the book cannot be read",
                     where(node));
     if (const int l = line(node); l > 0) current_line_ = l;
@@ -536,7 +536,7 @@ Result<void> MarkupWalk::list(const pugi::xml_node& node, const Context& parent,
         item_label_ = plain ? std::string{} : ordered ? std::to_string(number) + ". " : std::string("\u2022 ");
         ++number;
         if (depth + 1 > max_markup_depth)
-            return fail("elements nested more than " + std::to_string(max_markup_depth) + " deep (<li>)", where(c));
+            return fail(ErrorKind::input, "elements nested more than " + std::to_string(max_markup_depth) + " deep (<li>)", where(c));
         if (const int l = line(c); l > 0) current_line_ = l;
         if (is_note_element(c)) {
             item_label_.clear();

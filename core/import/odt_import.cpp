@@ -523,7 +523,7 @@ Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
     if (package->contains("mimetype")) {
         auto type = package->read("mimetype", 256);
         if (type && *type != "application/vnd.oasis.opendocument.text")
-            return fail("not an OpenDocument text but " + *type + " (only text documents are read)", "mimetype");
+            return fail(ErrorKind::input, "not an OpenDocument text but " + *type + " (only text documents are read)", "mimetype");
     }
     XmlPart styles_xml, content_xml;
     if (auto ok = package->load("styles.xml", styles_xml, false); !ok) return std::unexpected(ok.error());
@@ -541,7 +541,7 @@ Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
     const auto top = content_xml.root();
     const auto text = child(child(top, "body"), "text");
     if (local_name(top) != "document-content" || !text)
-        return fail("not an OpenDocument text: no <office:body>/<office:text>", "content.xml");
+        return fail(ErrorKind::input, "not an OpenDocument text: no <office:body>/<office:text>", "content.xml");
     OdtReader reader(styles, lists, *package, ruby, content_xml.bytes);
     reader.container(text);
     return reader.finish();

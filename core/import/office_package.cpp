@@ -23,7 +23,7 @@ Result<XmlPackage> XmlPackage::open(std::string_view bytes, std::string kind) {
 
 Result<bool> XmlPackage::load(const std::string& part, XmlPart& out, bool required) const {
     if (!zip_.contains(part)) {
-        if (required) return fail("not " + kind_ + ": missing part " + part, part);
+        if (required) return fail(ErrorKind::input, "not " + kind_ + ": missing part " + part, part);
         return false;
     }
     auto bytes = zip_.read(part, max_import_bytes);

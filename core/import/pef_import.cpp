@@ -41,14 +41,14 @@ public:
 
     Result<document::Document> read(const pugi::xml_node& root) {
         if (local_name(root) != "pef" || namespace_uri(root) != pef_ns)
-            return fail("not a PEF 2008-1 document: root element is <" +
+            return fail(ErrorKind::input, "not a PEF 2008-1 document: root element is <" +
                             std::string(root.name()) + "> in namespace '" +
                             std::string(namespace_uri(root)) + "', expected <pef> in '" +
                             std::string(pef_ns) + "'",
                         std::to_string(line_of(root)));
         read_metadata(pef_child(root, "head"));
         const auto body = pef_child(root, "body");
-        if (!body) return fail("PEF has no <body>", std::to_string(line_of(root)));
+        if (!body) return fail(ErrorKind::input, "PEF has no <body>", std::to_string(line_of(root)));
         bool any_volume = false;
         for (const auto& volume : pef_children(body, "volume")) {
             any_volume = true;
@@ -67,7 +67,7 @@ public:
                     if (auto ok = read_page(page, grid); !ok) return std::unexpected(ok.error());
             }
         }
-        if (!any_volume) return fail("PEF <body> has no <volume>", std::to_string(line_of(body)));
+        if (!any_volume) return fail(ErrorKind::input, "PEF <body> has no <volume>", std::to_string(line_of(body)));
         auto doc = builder_.finish();
         if (!doc) return doc;
         doc->braille_sections = std::move(sections_);
@@ -96,7 +96,7 @@ private:
         for (const auto& [name, field] : {std::pair{"cols", &grid.cols}, std::pair{"rows", &grid.rows}}) {
             const auto a = n.attribute(name);
             if (!a) {
-                if (required) return fail(element + " has no " + name + " attribute", where);
+                if (required) return fail(ErrorKind::input, element + " has no " + name + " attribute", where);
                 continue;
             }
             auto v = trim(a.value());
@@ -104,7 +104,7 @@ private:
             int value = 0;
             const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
             if (v.empty() || ec != std::errc{} || end != v.data() + v.size() || value < 1 || value > 1000)
-                return fail(element + " " + name + "=\"" + a.value() +
+                return fail(ErrorKind::input, element + " " + name + "=\"" + a.value() +
                                 "\" is not a page size: it must be a whole number from 1 to 1000",
                             where);
             *field = value;
@@ -115,9 +115,9 @@ private:
             if (v == "true" || v == "1") grid.duplex = true;
             else if (v == "false" || v == "0") grid.duplex = false;
             else
-                return fail(element + " duplex=\"" + std::string(a.value()) + "\" must be true or false", where);
+                return fail(ErrorKind::input, element + " duplex=\"" + std::string(a.value()) + "\" must be true or false", where);
         } else if (required) {
-            return fail(element + " has no duplex attribute", where);
+            return fail(ErrorKind::input, element + " has no duplex attribute", where);
         }
         return {};
     }
@@ -130,7 +130,7 @@ private:
         const auto a = n.attribute("rowgap");
         const auto element = "<" + std::string(local_name(n)) + ">";
         if (!a) {
-            if (required) return fail(element + " has no rowgap attribute", std::to_string(line_of(n)));
+            if (required) return fail(ErrorKind::input, element + " has no rowgap attribute", std::to_string(line_of(n)));
             return {};
         }
         auto v = trim(a.value());
@@ -138,7 +138,7 @@ private:
         int value = 0;
         const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
         if (v.empty() || ec != std::errc{} || end != v.data() + v.size() || value < 0)
-            return fail(element + " rowgap=\"" + std::string(a.value()) + "\" must be a whole number, 0 or more",
+            return fail(ErrorKind::input, element + " rowgap=\"" + std::string(a.value()) + "\" must be a whole number, 0 or more",
                         std::to_string(line_of(n)));
         if (value_out) *value_out = value;
         return {};
@@ -153,13 +153,13 @@ private:
             auto line = read_row(row);
             if (!line) return std::unexpected(line.error());
             if (static_cast<int>(line->size()) > grid.cols)
-                return fail("row of " + std::to_string(line->size()) + " cells is longer than cols=\"" +
+                return fail(ErrorKind::input, "row of " + std::to_string(line->size()) + " cells is longer than cols=\"" +
                                 std::to_string(grid.cols) + "\"",
                             std::to_string(line_of(row)));
             rows.push_back(std::move(*line));
         }
         if (static_cast<int>(rows.size()) > grid.rows)
-            return fail("page has " + std::to_string(rows.size()) + " rows but rows=\"" + std::to_string(grid.rows) +
+            return fail(ErrorKind::input, "page has " + std::to_string(rows.size()) + " rows but rows=\"" + std::to_string(grid.rows) +
                             "\"",
                         std::to_string(line_of(page)));
         builder_.braille_block(std::move(rows), line_of(page));
@@ -182,7 +182,7 @@ private:
                 std::array<char, 64> what{};
                 std::snprintf(what.data(), what.size(), "row character %zu is U+%04X", i + 1,
                               static_cast<unsigned>(c));
-                return fail(std::string(what.data()) +
+                return fail(ErrorKind::input, std::string(what.data()) +
                                 ", not a braille cell (U+2800..U+28FF)",
                             std::to_string(line_of(row)));
             }
@@ -226,7 +226,7 @@ Result<document::Document> import_pef(std::string_view bytes) {
     pugi::xml_document xml;
     if (auto ok = parse_xml(xml, bytes, ""); !ok) return std::unexpected(ok.error());
     const auto root = xml.document_element();
-    if (!root) return fail("no root element", "1");
+    if (!root) return fail(ErrorKind::input, "no root element", "1");
     return PefReader(bytes).read(root);
 }
 

@@ -40,7 +40,7 @@ Result<void> parse_xml(pugi::xml_document& doc, std::string_view bytes, std::str
     }
     const auto pos = position_at(bytes, static_cast<std::size_t>(std::max<std::ptrdiff_t>(result.offset, 0)));
     std::string where = part.empty() ? pos.to_string() : std::string(part) + ":" + pos.to_string();
-    return fail(std::string("invalid XML: ") + result.description(), std::move(where));
+    return fail(ErrorKind::input, std::string("invalid XML: ") + result.description(), std::move(where));
 }
 
 std::string_view local_name(const pugi::xml_node& node) {

@@ -14,7 +14,7 @@ Result<ZipArchive> ZipArchive::open(std::string_view bytes) {
     if (!source) {
         std::string why = zip_error_strerror(&error);
         zip_error_fini(&error);
-        return fail("cannot read ZIP: " + why);
+        return fail(ErrorKind::input, "cannot read ZIP: " + why);
     }
     // Without libzip's strict check (ZIP_CHECKCONS), which refuses a package
     // whose local headers differ from its central directory in any field (a
@@ -26,7 +26,7 @@ Result<ZipArchive> ZipArchive::open(std::string_view bytes) {
         std::string why = zip_error_strerror(&error);
         zip_error_fini(&error);
         zip_source_free(source);
-        return fail("not a valid ZIP package (DOCX is one): " + why);
+        return fail(ErrorKind::input, "not a valid ZIP package (DOCX is one): " + why);
     }
     zip_error_fini(&error);
     return ZipArchive(z);
@@ -40,14 +40,14 @@ Result<std::string> ZipArchive::read(const std::string& part, std::size_t max_by
     zip_stat_t st;
     zip_stat_init(&st);
     if (zip_stat(zip_.get(), part.c_str(), 0, &st) != 0)
-        return fail("missing part " + part, part);
-    if ((st.valid & ZIP_STAT_SIZE) == 0) return fail("part has no recorded size", part);
+        return fail(ErrorKind::input, "missing part " + part, part);
+    if ((st.valid & ZIP_STAT_SIZE) == 0) return fail(ErrorKind::input, "part has no recorded size", part);
     if (st.size > max_bytes)
-        return fail("part unpacks to " + std::to_string(st.size) + " bytes, above the limit of " +
+        return fail(ErrorKind::input, "part unpacks to " + std::to_string(st.size) + " bytes, above the limit of " +
                         std::to_string(max_bytes),
                     part);
     zip_file_t* file = zip_fopen(zip_.get(), part.c_str(), 0);
-    if (!file) return fail(std::string("cannot open part: ") + zip_strerror(zip_.get()), part);
+    if (!file) return fail(ErrorKind::input, std::string("cannot open part: ") + zip_strerror(zip_.get()), part);
     std::string out(static_cast<std::size_t>(st.size), '\0');
     std::size_t done = 0;
     while (done < out.size()) {
@@ -55,7 +55,7 @@ Result<std::string> ZipArchive::read(const std::string& part, std::size_t max_by
         if (n < 0) {
             std::string why = zip_file_strerror(file);
             zip_fclose(file);
-            return fail("corrupt part: " + why, part + ":byte " + std::to_string(done));
+            return fail(ErrorKind::input, "corrupt part: " + why, part + ":byte " + std::to_string(done));
         }
         if (n == 0) break;
         done += static_cast<std::size_t>(n);
@@ -66,8 +66,8 @@ Result<std::string> ZipArchive::read(const std::string& part, std::size_t max_by
     const bool crc_ok = tail == 0;
     std::string why = crc_ok ? std::string{} : zip_file_strerror(file);
     zip_fclose(file);
-    if (done != out.size()) return fail("part is shorter than recorded", part + ":byte " + std::to_string(done));
-    if (!crc_ok) return fail("corrupt part: " + (why.empty() ? std::string("data after end") : why), part);
+    if (done != out.size()) return fail(ErrorKind::input, "part is shorter than recorded", part + ":byte " + std::to_string(done));
+    if (!crc_ok) return fail(ErrorKind::input, "corrupt part: " + (why.empty() ? std::string("data after end") : why), part);
     return out;
 }
 

@@ -123,7 +123,7 @@ std::optional<BraillePageMisfit> find_braille_misfit(const document::Document& d
 Result<void> check_braille_fits(const document::Document& doc, const LayoutOptions& target) {
     const auto m = find_braille_misfit(doc, target);
     if (!m) return {};
-    return fail("braille page " + std::to_string(m->page) + " has " + std::to_string(m->rows) + " rows of up to " +
+    return fail(ErrorKind::input, "braille page " + std::to_string(m->page) + " has " + std::to_string(m->rows) + " rows of up to " +
                     std::to_string(m->cols) + " cells (the file's page is " + std::to_string(m->file_cols) +
                     " cells x " + std::to_string(m->file_rows) + " lines), but the page holds " +
                     std::to_string(m->target_cols) + " cells x " + std::to_string(m->target_rows) +

@@ -31,7 +31,7 @@ Result<PageNumberPosition> parse_page_number_position(std::string_view s) {
     if (s == "top-right") return PageNumberPosition::top_right;
     if (s == "bottom-right") return PageNumberPosition::bottom_right;
     if (s == "bottom-centre" || s == "bottom-center") return PageNumberPosition::bottom_centre;
-    return fail("unknown page number position '" + std::string(s) +
+    return fail(ErrorKind::usage, "unknown page number position '" + std::string(s) +
                     "' (none, top-right, bottom-right, bottom-centre)",
                 "--page-numbers");
 }
@@ -103,20 +103,20 @@ std::size_t word_room(const LayoutOptions& o, document::BlockKind kind, int leve
 Result<void> validate(const LayoutOptions& o) {
     const auto& g = o.geometry;
     if (g.cells_per_line < 4 || g.cells_per_line > 200)
-        return fail("cells per line must be between 4 and 200", "cells_per_line");
+        return fail(ErrorKind::usage, "cells per line must be between 4 and 200", "cells_per_line");
     if (g.lines_per_page < 3 || g.lines_per_page > 200)
-        return fail("lines per page must be between 3 and 200", "lines_per_page");
+        return fail(ErrorKind::usage, "lines per page must be between 3 and 200", "lines_per_page");
     if (o.left_margin < 0 || o.right_margin < 0 || o.top_margin < 0 || o.bottom_margin < 0)
-        return fail("margins cannot be negative", "margins");
+        return fail(ErrorKind::usage, "margins cannot be negative", "margins");
     const int width = g.cells_per_line - o.left_margin - o.right_margin;
-    if (width < 4) return fail("margins leave fewer than 4 cells per line", "margins");
+    if (width < 4) return fail(ErrorKind::usage, "margins leave fewer than 4 cells per line", "margins");
     if (g.lines_per_page - o.top_margin - o.bottom_margin < 3)
-        return fail("margins leave fewer than 3 lines per page", "margins");
+        return fail(ErrorKind::usage, "margins leave fewer than 3 lines per page", "margins");
     if (o.paragraph_indent < 0 || o.paragraph_indent >= width)
-        return fail("paragraph indent must be smaller than the line", "paragraph_indent");
+        return fail(ErrorKind::usage, "paragraph indent must be smaller than the line", "paragraph_indent");
     if (o.list_runover < 0 || o.list_runover >= width / 2)
-        return fail("list runover indent too large for the line", "list_runover");
-    if (o.first_page_number < 0) return fail("page numbers start at 0 or above", "first_page_number");
+        return fail(ErrorKind::usage, "list runover indent too large for the line", "list_runover");
+    if (o.first_page_number < 0) return fail(ErrorKind::usage, "page numbers start at 0 or above", "first_page_number");
     return {};
 }
 

@@ -270,7 +270,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
                           Error{"the controller lost power during " + where() +
                                     ": positions and buffered data are gone; put a fresh sheet in "
                                     "and resume from that sheet",
-                                device});
+                                device, ErrorKind::device});
         if (step && (session_lost || (ack.faults & kRestartFaults) != 0)) {
             if (auto r = restart(); !r) return finish(JobEnd::failed, r.error());
             continue;

@@ -147,14 +147,14 @@ Result<std::vector<StepSegment>> compress_steps(std::span<const double> t, doubl
 
 Result<std::vector<StepSegment>> compress_steps(std::span<const double> t,
                                                 std::span<const double> tols) {
-    if (tols.size() != t.size()) return fail("one tolerance per step expected", "steps");
+    if (tols.size() != t.size()) return fail(ErrorKind::internal, "one tolerance per step expected", "steps");
     std::vector<StepSegment> out;
     std::int64_t prev = 0;
     std::size_t first = 0;
     while (first < t.size()) {
         Fit fit;
         if (!fits(t, tols, first, 1, prev, 0, fit))
-            return fail("step " + std::to_string(first + 1) + " comes " +
+            return fail(ErrorKind::input, "step " + std::to_string(first + 1) + " comes " +
                             std::to_string(static_cast<long long>(t[first]) - prev) +
                             " timer ticks after the previous one, more than the controller's "
                             "16-bit timer can count (65535)",

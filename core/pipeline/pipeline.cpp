@@ -86,9 +86,9 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
         if (!document.warnings.empty()) {
             std::string what;
             for (const auto& w : document.warnings) what += (what.empty() ? "" : "; ") + w;
-            return fail("no text to emboss: " + what, document.source_name);
+            return fail(ErrorKind::input, "no text to emboss: " + what, document.source_name);
         }
-        return fail("the document is empty: there is nothing to emboss (ask for a blank page to get one)",
+        return fail(ErrorKind::input, "the document is empty: there is nothing to emboss (ask for a blank page to get one)",
                     document.source_name);
     }
     if (layout::is_ready_braille(document) && !options.reflow_braille)

@@ -11,7 +11,7 @@
 namespace tactus::pipeline {
 namespace {
 
-// Record header: cell count, or kErrorBit | message length.
+// Record header: cell count, or kErrorBit | length of the error (its kind, where, NUL, message).
 constexpr std::uint32_t kErrorBit = 0x8000'0000u;
 
 // The worker: translate my chunks, write one record per block; the exit status.
@@ -25,7 +25,7 @@ int work(const document::Document& doc, const translate::Translator& translator,
                                       word_room ? word_room(doc.blocks[i]) : 0);
             if (!tb) {
                 const auto e = located(tb.error(), doc.source_name);
-                const std::string msg = e.where + '\0' + e.message;
+                const std::string msg = static_cast<char>(e.kind) + e.where + '\0' + e.message;
                 const std::uint32_t header = kErrorBit | static_cast<std::uint32_t>(msg.size());
                 out.write_all(&header, sizeof header);
                 out.write_all(msg.data(), msg.size());
@@ -73,7 +73,7 @@ Result<TranslationWorkers> TranslationWorkers::start(const document::Document& d
         // No other thread may be inside liblouis while its memory is copied.
         std::lock_guard guard(translate::louis::lock());
         auto worker = platform::WorkerProcess::start(body, pool.workers_);
-        if (!worker) return fail("cannot start a translation worker: " + worker.error().what);
+        if (!worker) return fail(ErrorKind::internal, "cannot start a translation worker: " + worker.error().what);
         pool.workers_.push_back(std::move(*worker));
     }
     return pool;
@@ -108,11 +108,15 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     }
     if (header & kErrorBit) {
         std::string msg(header & ~kErrorBit, '\0');
-        if (worker.read_all(msg.data(), msg.size()) != 1)
+        if (msg.empty() || worker.read_all(msg.data(), msg.size()) != 1)
             return fail(ErrorKind::internal, "translation worker ended in the middle of an error report",
                         document_->source_name);
-        const auto nul = msg.find('\0');
-        return fail(msg.substr(nul + 1), msg.substr(0, nul));
+        // The worker's error keeps its kind: a bad table stays bad input, a liblouis failure internal.
+        const auto code = static_cast<unsigned char>(msg[0]);
+        const auto kind = code <= static_cast<unsigned char>(ErrorKind::internal) ? static_cast<ErrorKind>(code)
+                                                                             : ErrorKind::internal;
+        const auto nul = msg.find('\0', 1);
+        return fail(kind, msg.substr(nul + 1), msg.substr(1, nul - 1));
     }
     document::BrailleLine cells(header);
     if (worker.read_all(cells.data(), cells.size()) != 1)

@@ -15,27 +15,27 @@ Result<void> check_page(const profile::PrinterProfile& p, const layout::Page& pa
     const auto& g = p.geometry;
     const std::string where = "page " + std::to_string(index + 1);
     if (page.lines.size() > static_cast<std::size_t>(g.lines_per_page))
-        return fail("has " + std::to_string(page.lines.size()) + " lines, the profile allows " +
+        return fail(ErrorKind::input, "has " + std::to_string(page.lines.size()) + " lines, the profile allows " +
                         std::to_string(g.lines_per_page) + " (geometry.lines_per_page)",
                     where);
     for (std::size_t l = 0; l < page.lines.size(); ++l) {
         const auto& line = page.lines[l];
         const auto lw = where + " line " + std::to_string(l + 1);
         if (line.size() > static_cast<std::size_t>(g.cells_per_line))
-            return fail("has " + std::to_string(line.size()) + " cells, the profile allows " +
+            return fail(ErrorKind::input, "has " + std::to_string(line.size()) + " cells, the profile allows " +
                             std::to_string(g.cells_per_line) + " (geometry.cells_per_line)",
                         lw);
         if (!g.eight_dot)
             for (std::size_t c = 0; c < line.size(); ++c)
                 if (line[c].dots & 0xC0)
-                    return fail("cell " + std::to_string(c + 1) +
+                    return fail(ErrorKind::input, "cell " + std::to_string(c + 1) +
                                     " has dot 7 or 8 but the profile is six-dot (geometry.eight_dot)",
                                 lw);
     }
     for (std::size_t i = 0; i < page.graphic.size(); ++i) {
         const auto& d = page.graphic[i];
         if (!(d.x_mm >= 0 && d.x_mm <= p.paper.width_mm && d.y_mm >= 0 && d.y_mm <= p.paper.height_mm))
-            return fail("graphic dot " + std::to_string(i + 1) + " at " + std::to_string(d.x_mm) + ", " +
+            return fail(ErrorKind::input, "graphic dot " + std::to_string(i + 1) + " at " + std::to_string(d.x_mm) + ", " +
                             std::to_string(d.y_mm) + " mm is off the paper (" + std::to_string(p.paper.width_mm) +
                             " x " + std::to_string(p.paper.height_mm) + " mm)",
                         where);

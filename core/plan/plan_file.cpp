@@ -24,16 +24,16 @@ json move_json(const motion::StepMove& m) {
 // Typed reads with the JSON path in the error.
 template <typename T>
 Result<T> get(const json& j, const char* key, const std::string& where) {
-    if (!j.is_object() || !j.contains(key)) return fail("missing field", where + "." + key);
+    if (!j.is_object() || !j.contains(key)) return fail(ErrorKind::input, "missing field", where + "." + key);
     const json& v = j.at(key);
     if constexpr (std::is_same_v<T, double>) {
-        if (!v.is_number()) return fail("not a number", where + "." + key);
+        if (!v.is_number()) return fail(ErrorKind::input, "not a number", where + "." + key);
         return v.get<double>();
     } else {
-        if (!v.is_number_integer()) return fail("not an integer", where + "." + key);
+        if (!v.is_number_integer()) return fail(ErrorKind::input, "not an integer", where + "." + key);
         const auto x = v.get<std::int64_t>();
         if (x < std::numeric_limits<T>::min() || x > std::numeric_limits<T>::max())
-            return fail("out of range", where + "." + key);
+            return fail(ErrorKind::input, "out of range", where + "." + key);
         return static_cast<T>(x);
     }
 }
@@ -50,7 +50,7 @@ Result<std::string> word(const json& j, const char* key, std::initializer_list<c
             if (v.get<std::string>() == a) return std::string(a);
     std::string list;
     for (const char* a : allowed) list += (list.empty() ? "" : " or ") + std::string(a);
-    return fail("expected " + list, where + "." + key);
+    return fail(ErrorKind::input, "expected " + list, where + "." + key);
 }
 
 Result<motion::StepMove> move_from(const json& j, const std::string& where) {
@@ -67,16 +67,16 @@ Result<motion::StepMove> move_from(const json& j, const std::string& where) {
         m.settle_ticks = *settle;
     }
     if (!j.contains("segments") || !j["segments"].is_array())
-        return fail("missing segment list", where + ".segments");
+        return fail(ErrorKind::input, "missing segment list", where + ".segments");
     for (std::size_t i = 0; i < j["segments"].size(); ++i) {
         const auto& s = j["segments"][i];
         const auto w = where + ".segments[" + std::to_string(i) + "]";
         if (!s.is_array() || s.size() != 3 || !s[0].is_number_integer() ||
             !s[1].is_number_integer() || !s[2].is_number_integer())
-            return fail("expected [interval_q16, count, add_q16]", w);
+            return fail(ErrorKind::input, "expected [interval_q16, count, add_q16]", w);
         const auto iv = s[0].get<std::int64_t>(), n = s[1].get<std::int64_t>(), a = s[2].get<std::int64_t>();
         if (iv < 0 || iv > 0xFFFFFFFFLL || n < 0 || n > 0xFFFF || a < INT32_MIN || a > INT32_MAX)
-            return fail("out of range", w);
+            return fail(ErrorKind::input, "out of range", w);
         m.segments.push_back({static_cast<std::uint32_t>(iv), static_cast<std::uint16_t>(n),
                               static_cast<std::int32_t>(a)});
     }
@@ -129,14 +129,14 @@ json plan_to_json(const PlanFile& file) {
 
 Result<PlanFile> plan_from_json(const json& j) {
     if (!j.is_object() || !j.contains("tactus_plan"))
-        return fail("not a Tactus plan (no \"tactus_plan\" field; make one with `tactus-cli plan --json`)",
+        return fail(ErrorKind::input, "not a Tactus plan (no \"tactus_plan\" field; make one with `tactus-cli plan --json`)",
                     "plan");
     if (j["tactus_plan"] == 1)
-        return fail("plan file format 1 records neither the profile nor the protocol it was made for (nor "
+        return fail(ErrorKind::input, "plan file format 1 records neither the profile nor the protocol it was made for (nor "
                     "the settles before strikes); make it again with `tactus-cli plan --json`",
                     "plan.tactus_plan");
     if (j["tactus_plan"] != kPlanFileFormat)
-        return fail("unsupported plan file format " + j["tactus_plan"].dump() + " (this Tactus reads " +
+        return fail(ErrorKind::input, "unsupported plan file format " + j["tactus_plan"].dump() + " (this Tactus reads " +
                         std::to_string(kPlanFileFormat) + ")",
                     "plan.tactus_plan");
     PlanFile file;
@@ -144,15 +144,15 @@ Result<PlanFile> plan_from_json(const json& j) {
     if (!protocol) return std::unexpected(protocol.error());
     file.protocol = *protocol;
     if (file.protocol != machine::reference_firmware::kLegacyProtocol && file.protocol != machine::reference_firmware::kProtocol)
-        return fail("link protocol " + std::to_string(file.protocol) + " is not one this Tactus speaks (2 or 3)",
+        return fail(ErrorKind::input, "link protocol " + std::to_string(file.protocol) + " is not one this Tactus speaks (2 or 3)",
                     "plan.protocol");
-    if (!j.contains("profile")) return fail("missing field", "plan.profile");
+    if (!j.contains("profile")) return fail(ErrorKind::input, "missing field", "plan.profile");
     auto prof = profile::from_json(j["profile"]);
     if (!prof) return std::unexpected(located(prof.error(), "plan.profile"));
     file.profile = std::move(*prof);
     if (file.protocol == machine::reference_firmware::kProtocol) {
         if (!j.contains("firmware_tables"))
-            return fail("a protocol-3 plan carries the ramp tables its moves are made of; this one has none",
+            return fail(ErrorKind::input, "a protocol-3 plan carries the ramp tables its moves are made of; this one has none",
                         "plan.firmware_tables");
         auto tables = profile::parse_firmware_tables(j["firmware_tables"].dump());
         if (!tables) return std::unexpected(located(tables.error(), "plan.firmware_tables"));
@@ -160,12 +160,12 @@ Result<PlanFile> plan_from_json(const json& j) {
             return std::unexpected(located(c.error(), "plan.firmware_tables"));
         file.firmware = std::move(*tables);
     } else if (j.contains("firmware_tables")) {
-        return fail("a protocol-2 plan has no ramp tables (its moves are step schedules)", "plan.firmware_tables");
+        return fail(ErrorKind::input, "a protocol-2 plan has no ramp tables (its moves are step schedules)", "plan.firmware_tables");
     }
     plan::JobPlan& out = file.plan;
     if (auto d = get<double>(j, "duration_s", "plan")) out.duration_s = *d;
-    if (!j.contains("sheets") || !j["sheets"].is_array()) return fail("missing sheets", "plan.sheets");
-    if (j["sheets"].empty()) return fail("the plan has no sheets", "plan.sheets");
+    if (!j.contains("sheets") || !j["sheets"].is_array()) return fail(ErrorKind::input, "missing sheets", "plan.sheets");
+    if (j["sheets"].empty()) return fail(ErrorKind::input, "the plan has no sheets", "plan.sheets");
     for (std::size_t si = 0; si < j["sheets"].size(); ++si) {
         const auto& js = j["sheets"][si];
         const auto ws = "plan.sheets[" + std::to_string(si) + "]";
@@ -175,11 +175,11 @@ Result<PlanFile> plan_from_json(const json& j) {
         sheet.index = *idx;
         const std::size_t previous = out.sheets.empty() ? 0 : out.sheets.back().index;
         if (sheet.index <= previous)
-            return fail(sheet.index == 0 ? std::string("sheets are numbered from 1")
+            return fail(ErrorKind::input, sheet.index == 0 ? std::string("sheets are numbered from 1")
                                          : "sheet " + std::to_string(sheet.index) + " comes after sheet " +
                                                std::to_string(previous) + " (sheets are in order, each once)",
                         ws + ".index");
-        if (!js.contains("passes") || !js["passes"].is_array()) return fail("missing passes", ws + ".passes");
+        if (!js.contains("passes") || !js["passes"].is_array()) return fail(ErrorKind::input, "missing passes", ws + ".passes");
         for (std::size_t pi = 0; pi < js["passes"].size(); ++pi) {
             const auto& jp = js["passes"][pi];
             const auto wp = ws + ".passes[" + std::to_string(pi) + "]";
@@ -193,14 +193,14 @@ Result<PlanFile> plan_from_json(const json& j) {
             if (!fs) return std::unexpected(fs.error());
             p.feed_step = *fs;
             if (jp.contains("direction") && !jp["direction"].is_number())
-                return fail("not a number", wp + ".direction");
+                return fail(ErrorKind::input, "not a number", wp + ".direction");
             p.direction = jp.contains("direction") && jp["direction"].get<double>() < 0 ? -1 : 1;
-            if (!jp.contains("feed")) return fail("missing field", wp + ".feed");
+            if (!jp.contains("feed")) return fail(ErrorKind::input, "missing field", wp + ".feed");
             auto feed = move_from(jp["feed"], wp + ".feed");
             if (!feed) return std::unexpected(feed.error());
             p.feed = *feed;
             if (!jp.contains("strikes") || !jp["strikes"].is_array())
-                return fail("missing strikes", wp + ".strikes");
+                return fail(ErrorKind::input, "missing strikes", wp + ".strikes");
             for (std::size_t k = 0; k < jp["strikes"].size(); ++k) {
                 const auto& jk = jp["strikes"][k];
                 const auto wk = wp + ".strikes[" + std::to_string(k) + "]";
@@ -217,7 +217,7 @@ Result<PlanFile> plan_from_json(const json& j) {
                 if (auto v = get<double>(jk, "x_mm", wk)) s.x_mm = *v;
                 if (auto v = get<double>(jk, "y_mm", wk)) s.y_mm = *v;
                 if (auto v = get<double>(jk, "time_s", wk)) s.time_s = *v;
-                if (!jk.contains("move")) return fail("missing field", wk + ".move");
+                if (!jk.contains("move")) return fail(ErrorKind::input, "missing field", wk + ".move");
                 auto m = move_from(jk["move"], wk + ".move");
                 if (!m) return std::unexpected(m.error());
                 p.moves.push_back(*m);
@@ -236,7 +236,7 @@ Result<PlanFile> load_plan(const std::filesystem::path& path) {
     auto text = read_file(path);
     if (!text) return std::unexpected(text.error());
     const auto j = json::parse(*text, nullptr, false);
-    if (j.is_discarded()) return fail("not valid JSON", path.string());
+    if (j.is_discarded()) return fail(ErrorKind::input, "not valid JSON", path.string());
     auto p = plan_from_json(j);
     if (!p) return std::unexpected(located(p.error(), path.string()));
     return p;

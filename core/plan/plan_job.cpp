@@ -25,7 +25,7 @@ Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::Printe
         if (!sheet) return std::unexpected(sheet.error());
         passes += sheet->passes.size();
         if (o.max_passes && passes > o.max_passes)
-            return fail(std::to_string(passes) + " passes in the first " + std::to_string(s) + " of " +
+            return fail(ErrorKind::input, std::to_string(passes) + " passes in the first " + std::to_string(s) + " of " +
                             std::to_string(doc.sheet_count()) + " sheets, over the limit of " +
                             std::to_string(o.max_passes),
                         kTooManyPassesWhere);

@@ -140,7 +140,7 @@ Result<std::pair<const motion::StepMove*, const motion::MoveShape*>> Planner::fe
 
 Result<const std::vector<Hit>*> Planner::sheet_hits(const layout::PagedDocument& doc, std::size_t sheet_number) {
     if (o_.check_layout && doc.geometry.interpoint != p_.geometry.interpoint)
-        return fail(doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
+        return fail(ErrorKind::input, doc.geometry.interpoint ? "the document is laid out interpoint but the profile is single-sided"
                                             : "the document is laid out single-sided but the profile is interpoint",
                     "field geometry.interpoint");
     if (!hit_table_) hit_table_ = std::make_shared<const HitTable>(p_, carriage_axis_, feed_axis_);
@@ -244,7 +244,7 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
                 if (res.worst_um > aim) {
                     const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                     if (more < 0)
-                        return fail("the head does not settle within " + std::to_string(p_.vibration.tolerance_um) +
+                        return fail(ErrorKind::input, "the head does not settle within " + std::to_string(p_.vibration.tolerance_um) +
                                         " um before strike " + std::to_string(k + 1) + " of the pass at " +
                                         std::to_string(pass.y_mm) + " mm",
                                     "field vibration.tolerance_um");
@@ -261,7 +261,7 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
                         // Seldom: the ringing after the longer wait is not within tolerance.
                         const auto more = ringing_->settle_ticks(aim, 0, kMaxSettleTicks, off_mm);
                         if (more < 0)
-                            return fail("the head does not settle before the first strike of the pass at " +
+                            return fail(ErrorKind::input, "the head does not settle before the first strike of the pass at " +
                                             std::to_string(pass.y_mm) + " mm",
                                         "field vibration.tolerance_um");
                         ringing_->rest_ticks(static_cast<std::uint64_t>(more));

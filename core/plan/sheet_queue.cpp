@@ -216,7 +216,7 @@ Result<SheetPlan> SheetQueue::next() {
     auto& r = *job->result;
     if (!r) return std::unexpected(r.error());
     if (job->after != job->end)
-        return fail("sheet " + std::to_string(job->sheet) +
+        return fail(ErrorKind::internal, "sheet " + std::to_string(job->sheet) +
                         ": planned ahead from a machine state its sheets before did not leave (a bug)",
                     "plan");
     // The clock, as plan_hits advances it: pass by pass, strike by strike.

@@ -55,22 +55,22 @@ Result<void> read_object(const json& parent, std::string_view section,
     const json* obj = &parent;
     if (!section.empty()) {
         const auto it = parent.find(section);
-        if (it == parent.end()) return fail("missing section", field_where({}, section));
-        if (!it->is_object()) return fail("must be an object", field_where({}, section));
+        if (it == parent.end()) return fail(ErrorKind::input, "missing section", field_where({}, section));
+        if (!it->is_object()) return fail(ErrorKind::input, "must be an object", field_where({}, section));
         obj = &*it;
     }
     for (const auto& [key, value] : obj->items()) {
         (void)value;
         bool known = false;
         for (const auto& f : fields) known = known || key == f.name;
-        if (!known) return fail("unknown field (misspelt?)", field_where(section, key));
+        if (!known) return fail(ErrorKind::input, "unknown field (misspelt?)", field_where(section, key));
     }
     for (const auto& f : fields) {
         const auto where = field_where(section, f.name);
         const auto it = obj->find(f.name);
         if (it == obj->end()) {
             if (f.optional) continue;
-            return fail("missing", where);
+            return fail(ErrorKind::input, "missing", where);
         }
         const json& v = *it;
         Result<void> r;
@@ -78,20 +78,20 @@ Result<void> read_object(const json& parent, std::string_view section,
             [&](auto* out) {
                 using T = std::remove_pointer_t<decltype(out)>;
                 if constexpr (std::is_same_v<T, double>) {
-                    if (!v.is_number()) r = fail("must be a number", where);
-                    else if (!std::isfinite(v.get<double>())) r = fail("must be finite", where);
+                    if (!v.is_number()) r = fail(ErrorKind::input, "must be a number", where);
+                    else if (!std::isfinite(v.get<double>())) r = fail(ErrorKind::input, "must be finite", where);
                     else *out = v.get<double>();
                 } else if constexpr (std::is_same_v<T, int>) {
-                    if (!v.is_number_integer()) r = fail("must be a whole number", where);
+                    if (!v.is_number_integer()) r = fail(ErrorKind::input, "must be a whole number", where);
                     else if (v.get<long long>() < std::numeric_limits<int>::min() ||
                              v.get<long long>() > std::numeric_limits<int>::max())
-                        r = fail("out of range", where);
+                        r = fail(ErrorKind::input, "out of range", where);
                     else *out = v.get<int>();
                 } else if constexpr (std::is_same_v<T, bool>) {
-                    if (!v.is_boolean()) r = fail("must be true or false", where);
+                    if (!v.is_boolean()) r = fail(ErrorKind::input, "must be true or false", where);
                     else *out = v.get<bool>();
                 } else if constexpr (std::is_same_v<T, std::string>) {
-                    if (!v.is_string()) r = fail("must be a string", where);
+                    if (!v.is_string()) r = fail(ErrorKind::input, "must be a string", where);
                     else *out = v.get<std::string>();
                 } else {
                     bool ok = v.is_string();
@@ -106,7 +106,7 @@ Result<void> read_object(const json& parent, std::string_view section,
                         ok = ok && enum_from(v.get<std::string>(), kMirrors, *out);
                         list = choices(kMirrors);
                     }
-                    if (!ok) r = fail("must be one of " + list, where);
+                    if (!ok) r = fail(ErrorKind::input, "must be one of " + list, where);
                 }
             },
             f.target);
@@ -203,7 +203,7 @@ json to_json(const PrinterProfile& p) {
 }
 
 Result<PrinterProfile> from_json(const json& j) {
-    if (!j.is_object()) return fail("a printer profile must be a JSON object", "byte 0");
+    if (!j.is_object()) return fail(ErrorKind::input, "a printer profile must be a JSON object", "byte 0");
     PrinterProfile p;
     p.dynamics.rotor_inertia_kg_m2 = 0;  // optional two-inertia fields: absent means one inertia
     p.dynamics.pulley_radius_m = 0;
@@ -215,11 +215,11 @@ Result<PrinterProfile> from_json(const json& j) {
         (void)value;
         bool known = false;
         for (const char* s : kSections) known = known || key == s;
-        if (!known) return fail("unknown section (misspelt?)", "field " + key);
+        if (!known) return fail(ErrorKind::input, "unknown section (misspelt?)", "field " + key);
     }
     Result<void> r;
     if (const auto it = j.find("name"); it != j.end()) {
-        if (!it->is_string()) return fail("must be a string", "field name");
+        if (!it->is_string()) return fail(ErrorKind::input, "must be a string", "field name");
         p.name = it->get<std::string>();
     }
     if (r) r = read_object(j, "paper",
@@ -271,7 +271,7 @@ Result<PrinterProfile> parse_profile(std::string_view text) {
     if (j.is_discarded()) {
         ParseErrorCapture capture;
         json::sax_parse(text, &capture);
-        return fail("not valid JSON: " + capture.message, "byte " + std::to_string(capture.position));
+        return fail(ErrorKind::input, "not valid JSON: " + capture.message, "byte " + std::to_string(capture.position));
     }
     return from_json(j);
 }

@@ -54,10 +54,10 @@ Result<Ramp> s_curve_table(const Axis& axis, const std::string& name) {
     const double v = axis.v_max_mm_s;
     const double a = axis.a_max_mm_s2;
     const double j = axis.j_max_mm_s3;
-    if (!(spm > 0)) return fail("must be positive", "field " + name + ".steps_per_mm");
-    if (!(v > 0)) return fail("must be positive", "field " + name + ".v_max_mm_s");
-    if (!(a > 0)) return fail("must be positive", "field " + name + ".a_max_mm_s2");
-    if (!(j > 0)) return fail("must be positive", "field " + name + ".j_max_mm_s3");
+    if (!(spm > 0)) return fail(ErrorKind::input, "must be positive", "field " + name + ".steps_per_mm");
+    if (!(v > 0)) return fail(ErrorKind::input, "must be positive", "field " + name + ".v_max_mm_s");
+    if (!(a > 0)) return fail(ErrorKind::input, "must be positive", "field " + name + ".a_max_mm_s2");
+    if (!(j > 0)) return fail(ErrorKind::input, "must be positive", "field " + name + ".j_max_mm_s3");
     // Peak acceleration alpha, ramp half-time dta: alpha * dta = v and the
     // peak jerk 1.5 alpha / dta within j.
     const double alpha = std::min(a, std::sqrt(v * j / 1.5));
@@ -66,7 +66,7 @@ Result<Ramp> s_curve_table(const Axis& axis, const std::string& name) {
     // The tables are walked from flash; a ramp this long would not fit in it
     // (and would take minutes to integrate).
     if (total > kMaxRampSeconds)
-        return fail("the ramp from rest to " + num(v) + " mm/s takes " + fmt(total, 2) +
+        return fail(ErrorKind::input, "the ramp from rest to " + num(v) + " mm/s takes " + fmt(total, 2) +
                         " s; the firmware's tables hold ramps of at most " + num(kMaxRampSeconds) +
                         " s (raise " + name + ".a_max_mm_s2 or " + name + ".j_max_mm_s3, or lower " + name +
                         ".v_max_mm_s)",
@@ -97,7 +97,7 @@ Result<Ramp> s_curve_table(const Axis& axis, const std::string& name) {
     Ramp r;
     r.cruise = round_even(kTick / (v * spm));
     if (times.empty() || r.cruise > 65535)
-        return fail("a step interval exceeds the 16-bit timer",
+        return fail(ErrorKind::input, "a step interval exceeds the 16-bit timer",
                     "field " + name + ".v_max_mm_s or " + name + ".a_max_mm_s2");
     std::vector<long> ticks;
     ticks.reserve(times.size());
@@ -107,7 +107,7 @@ Result<Ramp> s_curve_table(const Axis& axis, const std::string& name) {
     // Near the top the ramp's intervals must not undercut the cruise interval.
     for (auto& i : intervals) i = std::max(i, r.cruise);
     if (intervals[0] > 65535)
-        return fail("a step interval exceeds the 16-bit timer",
+        return fail(ErrorKind::input, "a step interval exceeds the 16-bit timer",
                     "field " + name + ".v_max_mm_s or " + name + ".a_max_mm_s2");
     for (long i : intervals) r.intervals.push_back(static_cast<std::uint16_t>(i));
     r.intervals.push_back(static_cast<std::uint16_t>(r.cruise));
@@ -126,13 +126,13 @@ Result<std::uint32_t> grid_steps(const std::vector<GridValue>& values, double sp
         const double s = v * spm;
         const long r = round_even(s);
         if (std::fabs(s - static_cast<double>(r)) > 1e-6)
-            return fail("is " + num(v) + " mm, not a whole number of " + std::string(axis) + " steps (" +
+            return fail(ErrorKind::input, "is " + num(v) + " mm, not a whole number of " + std::string(axis) + " steps (" +
                             fmt(s, 3) + "); the firmware moves on a grid of whole steps",
                         std::string("field ") + field);
         if (r != 0) g = std::gcd(g, std::labs(r));
     }
-    if (g == 0) return fail(std::string("no distance of the ") + axis + " is a whole step", "field geometry");
-    if (g > 255) return fail("the dot grid is over 255 steps", "field geometry");
+    if (g == 0) return fail(ErrorKind::input, std::string("no distance of the ") + axis + " is a whole step", "field geometry");
+    if (g > 255) return fail(ErrorKind::input, "the dot grid is over 255 steps", "field geometry");
     return static_cast<std::uint32_t>(g);
 }
 
@@ -180,12 +180,12 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
         if (cruise >= static_cast<long>(min)) return {};
         const std::string field = std::string(axis) + ".v_max_mm_s";
         if (std::string_view(axis) == "carriage")
-            return fail(num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm = " +
+            return fail(ErrorKind::input, num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm = " +
                             fmt(kTick / static_cast<double>(cruise), 0) +
                             " steps/s; the 89C52 step interrupt sustains at most " +
                             fmt(kTick / min, 0) + " steps/s",
                         "field " + field);
-        return fail(num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm exceeds the " +
+        return fail(ErrorKind::input, num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm exceeds the " +
                         fmt(kTick / min, 0) + " steps/s the feed's interrupt path sustains",
                     "field " + field);
     };
@@ -205,7 +205,7 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
     t.feed.intervals = std::move(f->intervals);
     // The carriage cruises on the fast path: its interval must fit one reload byte.
     if (c->cruise > static_cast<long>(kFastMaxTicks))
-        return fail(num(p.carriage.v_max_mm_s) + " mm/s x " + num(p.carriage.steps_per_mm) + " steps/mm = " +
+        return fail(ErrorKind::input, num(p.carriage.v_max_mm_s) + " mm/s x " + num(p.carriage.steps_per_mm) + " steps/mm = " +
                         fmt(kTick / static_cast<double>(c->cruise), 0) +
                         " steps/s; the firmware's carriage cruises at " + fmt(kTick / kFastMaxTicks, 0) +
                         " steps/s or faster",
@@ -213,7 +213,7 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
     const std::uint32_t k = fast_from(t);
     const std::size_t fast = t.carriage.intervals.size() - k;
     if (fast > kMaxFastEntries)
-        return fail("the ramp needs " + std::to_string(fast) + " table entries above 3600 steps/s; the firmware holds " +
+        return fail(ErrorKind::input, "the ramp needs " + std::to_string(fast) + " table entries above 3600 steps/s; the firmware holds " +
                         std::to_string(kMaxFastEntries),
                     "field carriage.a_max_mm_s2 / carriage.j_max_mm_s3");
     const auto& g = p.geometry;

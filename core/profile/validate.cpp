@@ -183,7 +183,7 @@ std::string describe(const ProfileProblem& p) {
 }
 
 Result<void> validate(const PrinterProfile& p) {
-    if (auto problem = first_problem(p)) return fail(describe(*problem), "field " + problem->field);
+    if (auto problem = first_problem(p)) return fail(ErrorKind::input, describe(*problem), "field " + problem->field);
     return {};
 }
 

@@ -11,7 +11,7 @@ Result<std::filesystem::path> spool_path(std::string_view explicit_path) {
     if (!explicit_path.empty()) return std::filesystem::path(explicit_path);
     if (const char* v = std::getenv("TACTUS_SPOOL_DB"); v && *v) return std::filesystem::path(v);
     if (const auto data = platform::user_data_home()) return *data / "tactus" / "spool.db";
-    return fail("cannot tell where the spool database lives: set --db, TACTUS_SPOOL_DB or HOME");
+    return fail(ErrorKind::usage, "cannot tell where the spool database lives: set --db, TACTUS_SPOOL_DB or HOME");
 }
 
 }  // namespace tactus::spool

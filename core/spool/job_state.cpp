@@ -19,7 +19,7 @@ constexpr std::array kControls{std::pair{Control::none, ""}, std::pair{Control::
                                std::pair{Control::cancel, "cancel"}};
 
 std::unexpected<Error> refuse(JobState s, const char* what) {
-    return fail(std::string("job is ") + to_string(s) + ": " + what);
+    return fail(ErrorKind::input, std::string("job is ") + to_string(s) + ": " + what);
 }
 
 }  // namespace
@@ -33,7 +33,7 @@ const char* to_string(JobState s) {
 Result<JobState> parse_job_state(std::string_view s) {
     for (const auto& [state, name] : kStates)
         if (s == name) return state;
-    return fail("unknown job state '" + std::string(s) + "'", "jobs.state");
+    return fail(ErrorKind::input, "unknown job state '" + std::string(s) + "'", "jobs.state");
 }
 
 bool is_terminal(JobState s) {
@@ -59,7 +59,7 @@ const char* to_string(Control c) {
 Result<Control> parse_control(std::string_view s) {
     for (const auto& [control, name] : kControls)
         if (s == name) return control;
-    return fail("unknown runner request '" + std::string(s) + "'", "jobs.control");
+    return fail(ErrorKind::input, "unknown runner request '" + std::string(s) + "'", "jobs.control");
 }
 
 Result<Transition> apply(JobState state, bool held, Action action) {
@@ -90,7 +90,7 @@ Result<Transition> apply(JobState state, bool held, Action action) {
             return Transition{JobState::queued, Control::none, ""};
         return refuse(state, "only failed or cancelled jobs can be retried");
     }
-    return fail("unknown action");
+    return fail(ErrorKind::internal, "unknown action");
 }
 
 }  // namespace tactus::spool

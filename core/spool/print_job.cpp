@@ -66,16 +66,16 @@ Result<PrintJob> make_firmware_print_job(const layout::PagedDocument& document, 
 Result<PrintJob> make_print_job(plan::PlanFile file, std::string_view device,
                                 const profile::PrinterProfile* printer_profile) {
     if (file.protocol != encode::kProtocolVersion && file.protocol != encode::kProtocolV3)
-        return fail("the plan was made for link protocol version " + std::to_string(file.protocol) +
+        return fail(ErrorKind::input, "the plan was made for link protocol version " + std::to_string(file.protocol) +
                         "; this Tactus speaks versions " + std::to_string(encode::kProtocolVersion) + " and " +
                         std::to_string(encode::kProtocolV3) + ": plan the document again (`tactus-cli plan --json`)",
                     "plan.protocol");
     if (file.protocol == encode::kProtocolV3 && !file.firmware)
-        return fail("a protocol-3 plan needs the ramp tables it was made with", "plan.firmware_tables");
+        return fail(ErrorKind::input, "a protocol-3 plan needs the ramp tables it was made with", "plan.firmware_tables");
     if (printer_profile) {
         const auto diff = first_difference(file.profile, *printer_profile);
         if (!diff.empty())
-            return fail("the plan was made with profile '" + file.profile.name + "', which differs from the "
+            return fail(ErrorKind::input, "the plan was made with profile '" + file.profile.name + "', which differs from the "
                             "printer's profile '" + printer_profile->name + "' at " + diff +
                             ": plan the document again with the printer's profile, or emboss the plan "
                             "without --profile (the controller is then configured with the plan's own)",
@@ -170,7 +170,7 @@ Result<StreamSize> measure_print_job(const layout::PagedDocument& document, cons
         if (!sheet) return std::unexpected(sheet.error());
         passes += sheet->passes.size();
         if (passes > encode::kMaxJobPasses)
-            return fail("more than 65,535 passes in one job (" + std::to_string(passes) + " in the first " +
+            return fail(ErrorKind::input, "more than 65,535 passes in one job (" + std::to_string(passes) + " in the first " +
                             std::to_string(s) + " of " + std::to_string(sheets) +
                             " sheets); the controller counts at most 65,535",
                         "plan");

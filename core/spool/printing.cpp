@@ -62,7 +62,7 @@ Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profil
         }
         auto plan = plan::plan_job(all, profile, options);
         if (!plan && plan.error().where == plan::kTooManyPassesWhere)
-            return fail("the job has more than 65,535 passes (" + plan.error().message + ", " +
+            return fail(ErrorKind::input, "the job has more than 65,535 passes (" + plan.error().message + ", " +
                             std::to_string(copies) + " copies); the controller counts at most 65,535 in one job. "
                             "Queue it in parts (--pages, or fewer copies at a time)",
                         kPassesWhere);
@@ -71,7 +71,7 @@ Result<plan::JobPlan> plan_copies(const layout::PagedDocument& doc, const profil
     if (firmware) options.firmware = *firmware;
     auto one = plan::plan_job(doc, profile, options);
     if (!one && one.error().where == plan::kTooManyPassesWhere)
-        return fail("the job has more than 65,535 passes (" + one.error().message +
+        return fail(ErrorKind::input, "the job has more than 65,535 passes (" + one.error().message +
                         (copies > 1 ? " of one copy, " + std::to_string(copies) + " copies" : std::string{}) +
                         "); the controller counts at most 65,535 in one job. Queue it in parts "
                         "(--pages, or fewer copies at a time)",

@@ -395,7 +395,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         link_.reset();  // the next start settles the open run with the controller's count
         return std::unexpected(Error{"cannot record progress in the spool (" + db_error->message +
                                          "); the controller's count is kept for the next start",
-                                     db_error->where});
+                                     db_error->where, db_error->kind});
     }
     if (!outcome) {
         // Nothing was sent: the plan is one the protocol cannot carry. Retrying

@@ -49,31 +49,31 @@ std::string to_snapshot(const layout::PagedDocument& doc) {
 
 Result<layout::PagedDocument> from_snapshot(std::string_view text) {
     const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (j.is_discarded() || !j.is_object()) return fail("document snapshot is not valid JSON");
+    if (j.is_discarded() || !j.is_object()) return fail(ErrorKind::input, "document snapshot is not valid JSON");
     // Every field's type is checked before it is read: json::value() and get()
     // throw on a wrong type, and one stored job must never abort the server.
     const auto format = j.find("format");
     if (format == j.end() || !format->is_string() || format->get<std::string>() != kSnapshotFormat)
-        return fail("document snapshot has an unknown format (expected " +
+        return fail(ErrorKind::input, "document snapshot has an unknown format (expected " +
                         std::string(kSnapshotFormat) + ")",
                     "format");
     const auto g = j.find("geometry");
     const auto pages = j.find("pages");
     if (g == j.end() || !g->is_object() || pages == j.end() || !pages->is_array())
-        return fail("document snapshot lacks its geometry or pages");
+        return fail(ErrorKind::input, "document snapshot lacks its geometry or pages");
 
     layout::PagedDocument doc;
     auto int_field = [&](const char* name, int& out) -> Result<void> {
         const auto it = g->find(name);
         if (it == g->end() || !it->is_number_integer() || it->get<std::int64_t>() < 1 ||
             it->get<std::int64_t>() > 1000)
-            return fail("missing or out of range", std::string("geometry.") + name);
+            return fail(ErrorKind::input, "missing or out of range", std::string("geometry.") + name);
         out = static_cast<int>(it->get<std::int64_t>());
         return {};
     };
     auto bool_field = [&](const char* name, bool& out) -> Result<void> {
         const auto it = g->find(name);
-        if (it == g->end() || !it->is_boolean()) return fail("missing or not true/false", std::string("geometry.") + name);
+        if (it == g->end() || !it->is_boolean()) return fail(ErrorKind::input, "missing or not true/false", std::string("geometry.") + name);
         out = it->get<bool>();
         return {};
     };
@@ -93,9 +93,9 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
         if (!p.is_object() || lines == p.end() || !lines->is_array() || number == p.end() ||
             !number->is_number_integer() || number->get<std::int64_t>() < -1000000 ||
             number->get<std::int64_t>() > 1000000 || print == p.end() || !print->is_string())
-            return fail("malformed page", page_where(page_no));
+            return fail(ErrorKind::input, "malformed page", page_where(page_no));
         if (lines->size() > max_lines)
-            return fail(std::to_string(lines->size()) + " lines, the geometry allows " +
+            return fail(ErrorKind::input, std::to_string(lines->size()) + " lines, the geometry allows " +
                             std::to_string(max_lines),
                         page_where(page_no));
         layout::Page page;
@@ -104,32 +104,32 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
         std::size_t line_no = 0;
         for (const auto& l : *lines) {
             ++line_no;
-            if (!l.is_string()) return fail("line is not text", page_where(page_no, line_no));
+            if (!l.is_string()) return fail(ErrorKind::input, "line is not text", page_where(page_no, line_no));
             auto cps = utf8_to_utf32(l.get<std::string>());
             if (!cps) return std::unexpected(located(cps.error(), page_where(page_no, line_no)));
             if (cps->size() > max_cells)
-                return fail(std::to_string(cps->size()) + " cells, the geometry allows " +
+                return fail(ErrorKind::input, std::to_string(cps->size()) + " cells, the geometry allows " +
                                 std::to_string(max_cells),
                             page_where(page_no, line_no));
             document::BrailleLine line;
             line.reserve(cps->size());
             for (char32_t c : *cps) {
                 if (!document::Cell::is_unicode_braille(c))
-                    return fail("not a braille cell", page_where(page_no, line_no));
+                    return fail(ErrorKind::input, "not a braille cell", page_where(page_no, line_no));
                 line.push_back(document::Cell::from_unicode(c));
             }
             page.lines.push_back(std::move(line));
         }
         if (const auto dots = p.find("graphic"); dots != p.end()) {
             if (!dots->is_array() || dots->size() > kMaxGraphicDots)
-                return fail("graphic dots are not a list of at most " + std::to_string(kMaxGraphicDots),
+                return fail(ErrorKind::input, "graphic dots are not a list of at most " + std::to_string(kMaxGraphicDots),
                             page_where(page_no));
             for (const auto& d : *dots) {
                 if (!d.is_array() || d.size() != 2 || !d[0].is_number() || !d[1].is_number())
-                    return fail("a graphic dot is not [x, y]", page_where(page_no));
+                    return fail(ErrorKind::input, "a graphic dot is not [x, y]", page_where(page_no));
                 const double x = d[0].get<double>(), y = d[1].get<double>();
                 if (!(std::abs(x) <= 10000 && std::abs(y) <= 10000))
-                    return fail("a graphic dot is out of range", page_where(page_no));
+                    return fail(ErrorKind::input, "a graphic dot is out of range", page_where(page_no));
                 page.graphic.push_back({x, y});
             }
         }
@@ -143,7 +143,7 @@ Result<layout::PagedDocument> select_pages(const layout::PagedDocument& doc, std
     if (first == 0) first = 1;
     if (last == 0) last = n;
     if (first > last || last > n)
-        return fail("page range " + std::to_string(first) + "-" + std::to_string(last) +
+        return fail(ErrorKind::input, "page range " + std::to_string(first) + "-" + std::to_string(last) +
                         " is outside the document's " + std::to_string(n) + " pages",
                     "--pages");
     layout::PagedDocument out;

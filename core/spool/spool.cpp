@@ -107,7 +107,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
     auto not_there_yet = [&] {
-        return fail("no spool database here yet: nothing has been queued on this machine. Queue a "
+        return fail(ErrorKind::input, "no spool database here yet: nothing has been queued on this machine. Queue a "
                     "document with `tactus-cli emboss --queue --device DEVICE FILE` (it sets up a printer "
                     "for DEVICE), or add one first with `tactus-cli queue printer add NAME --device DEVICE`",
                     path.string());
@@ -131,7 +131,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         db = std::move(frozen);
     }
     if (read_only && !options.read_only_ok)
-        return fail("the spool database is read-only (file or disk write-protected); "
+        return fail(ErrorKind::input, "the spool database is read-only (file or disk write-protected); "
                     "nothing can be queued or changed",
                     path.string());
 
@@ -149,17 +149,17 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         // shown to be damaged, and `queue recover` would find nothing wrong.
         return fail(ErrorKind::io, "cannot read the spool database: " + has_row.error().message, path.string());
     if (!has_row)
-        return fail("not a usable spool database: " + has_row.error().message +
+        return fail(ErrorKind::input, "not a usable spool database: " + has_row.error().message +
                         "; it was left untouched (move it aside with `tactus-cli queue "
                         "recover`, or point --db elsewhere)",
                     path.string());
     user_version = version->int64(0);
     auto app = db.prepare("PRAGMA application_id");
-    if (!app || !app->step()) return fail("cannot read the database header", path.string());
+    if (!app || !app->step()) return fail(ErrorKind::input, "cannot read the database header", path.string());
     app_id = app->int64(0);
     auto tables = db.prepare("SELECT count(*) FROM sqlite_schema");
     if (!tables || !tables->step())
-        return fail("cannot read the database schema (damaged?)", path.string());
+        return fail(ErrorKind::input, "cannot read the database schema (damaged?)", path.string());
     empty = tables->int64(0) == 0;
     }
 
@@ -169,7 +169,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         // leaves it to its creator. Writing the schema here raced the creator:
         // root polling the CUPS backend's new spool made it read-only for lp.
         if (!options.create) return not_there_yet();
-        if (read_only) return fail("the spool database is empty and read-only", path.string());
+        if (read_only) return fail(ErrorKind::input, "the spool database is empty and read-only", path.string());
         SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
         auto tx = sql::Transaction::begin(db);
         if (!tx) return std::unexpected(tx.error());
@@ -178,18 +178,18 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
                           "; PRAGMA application_id=" + std::to_string(kApplicationId)));
         SPOOL_TRY(tx->commit());
     } else if (app_id != kApplicationId) {
-        return fail("this SQLite file is not a Tactus spool (application id " +
+        return fail(ErrorKind::input, "this SQLite file is not a Tactus spool (application id " +
                         std::to_string(app_id) + "); it was left untouched",
                     path.string());
     } else if (user_version > kSchemaVersion) {
-        return fail("the spool was written by a newer Tactus (schema " +
+        return fail(ErrorKind::input, "the spool was written by a newer Tactus (schema " +
                         std::to_string(user_version) + ", this one knows " +
                         std::to_string(kSchemaVersion) + "); it was left untouched: use that "
                         "Tactus, or point --db elsewhere",
                     path.string());
     } else if (user_version < kSchemaVersion) {
         if (read_only)
-            return fail("the spool is from an older Tactus and read-only, so it cannot be upgraded",
+            return fail(ErrorKind::input, "the spool is from an older Tactus and read-only, so it cannot be upgraded",
                         path.string());
         auto tx = sql::Transaction::begin(db);
         if (!tx) return std::unexpected(tx.error());
@@ -213,7 +213,7 @@ Result<void> Spool::check() {
     SPOOL_LET(s, db_.prepare("PRAGMA quick_check"));
     SPOOL_LET(row, s.step());
     if (!row || s.text(0) != "ok")
-        return fail("integrity check failed: " + (row ? s.text(0) : std::string("no answer")),
+        return fail(ErrorKind::input, "integrity check failed: " + (row ? s.text(0) : std::string("no answer")),
                     db_.path().string());
     return {};
 }
@@ -235,8 +235,8 @@ Result<void> Spool::log(std::optional<JobId> job, std::optional<PrinterId> print
 
 Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view device,
                                          std::string_view profile_json) {
-    if (name.empty()) return fail("a printer needs a name", "--printer");
-    if (device.empty()) return fail("a printer needs a device string", "--device");
+    if (name.empty()) return fail(ErrorKind::usage, "a printer needs a name", "--printer");
+    if (device.empty()) return fail(ErrorKind::usage, "a printer needs a device string", "--device");
     if (auto d = transport::check_device(device); !d) return std::unexpected(located(d.error(), "--device"));
     {
         SPOOL_LET(tx, sql::Transaction::begin(db_));
@@ -244,7 +244,7 @@ Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view
                          "INSERT INTO printers(name, device, profile_json, created_at) VALUES(?,?,?,?)"));
         s.bind(1, name).bind(2, device).bind(3, profile_json).bind(4, now_seconds());
         if (auto r = s.run(); !r) {
-            if (printer(name)) return fail("printer '" + std::string(name) + "' already exists", "--printer");
+            if (printer(name)) return fail(ErrorKind::usage, "printer '" + std::string(name) + "' already exists", "--printer");
             return std::unexpected(r.error());
         }
         const auto id = db_.last_insert_rowid();
@@ -280,7 +280,7 @@ Result<PrinterRecord> Spool::printer(std::string_view name) {
         std::string known;
         if (auto all = printers(); all)
             for (const auto& p : *all) known += (known.empty() ? "" : ", ") + p.name;
-        return fail("unknown printer '" + std::string(name) + "' (" +
+        return fail(ErrorKind::input, "unknown printer '" + std::string(name) + "' (" +
                         (known.empty() ? "no printers are set up; add one with "
                                          "`tactus-cli queue printer add`"
                                        : "known: " + known) +
@@ -294,7 +294,7 @@ Result<PrinterRecord> Spool::printer(PrinterId id) {
     SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "WHERE id = ?"));
     s.bind(1, id);
     SPOOL_LET(row, s.step());
-    if (!row) return fail("no printer with id " + std::to_string(id));
+    if (!row) return fail(ErrorKind::input, "no printer with id " + std::to_string(id));
     return read_printer(s);
 }
 
@@ -312,8 +312,8 @@ Result<std::vector<PrinterRecord>> Spool::printers() {
 // --- jobs
 
 Result<JobId> Spool::submit(const JobSubmission& job) {
-    if (job.sheets_per_copy == 0) return fail("the document has no pages to emboss");
-    if (job.copies == 0 || job.copies > 10000) return fail("copies must be 1 to 10000", "--copies");
+    if (job.sheets_per_copy == 0) return fail(ErrorKind::input, "the document has no pages to emboss");
+    if (job.copies == 0 || job.copies > 10000) return fail(ErrorKind::usage, "copies must be 1 to 10000", "--copies");
     SPOOL_LET(tx, sql::Transaction::begin(db_));
     if (!job.origin.empty()) {
         // Inside the transaction: two submitters of one origin cannot both miss it.
@@ -352,7 +352,7 @@ Result<JobRecord> Spool::job_locked(JobId id) {
     SPOOL_LET(s, db_.prepare(job_query("WHERE j.id = ?")));
     s.bind(1, id);
     SPOOL_LET(row, s.step());
-    if (!row) return fail("no such job", job_where(id));
+    if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return read_job(s);
 }
 
@@ -372,7 +372,7 @@ Result<std::string> Spool::document_snapshot(JobId id) {
     SPOOL_LET(s, db_.prepare("SELECT document FROM jobs WHERE id = ?"));
     s.bind(1, id);
     SPOOL_LET(row, s.step());
-    if (!row) return fail("no such job", job_where(id));
+    if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return s.text(0);
 }
 
@@ -380,7 +380,7 @@ Result<std::string> Spool::profile_snapshot(JobId id) {
     SPOOL_LET(s, db_.prepare("SELECT profile_json FROM jobs WHERE id = ?"));
     s.bind(1, id);
     SPOOL_LET(row, s.step());
-    if (!row) return fail("no such job", job_where(id));
+    if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return s.text(0);
 }
 
@@ -465,13 +465,13 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
         if (!t) return std::unexpected(located(t.error(), job_where(id)));
         if (resume_sheet) {
             if (action != Action::resume && action != Action::retry)
-                return fail("a start sheet only goes with resume or retry", "--from-sheet");
+                return fail(ErrorKind::usage, "a start sheet only goes with resume or retry", "--from-sheet");
             if (*resume_sheet < 1 || *resume_sheet > j.total_sheets())
-                return fail("sheet " + std::to_string(*resume_sheet) + " is outside the job's " +
+                return fail(ErrorKind::input, "sheet " + std::to_string(*resume_sheet) + " is outside the job's " +
                                 std::to_string(j.total_sheets()) + " sheets",
                             "--from-sheet");
             if (t->control == Control::resume)
-                return fail("the job is paused on its printer and continues where it stopped; "
+                return fail(ErrorKind::input, "the job is paused on its printer and continues where it stopped; "
                             "cancel-free restart from another sheet needs the runner to let go "
                             "first (pause, then stop serve, or retry after it fails)",
                             "--from-sheet");
@@ -508,7 +508,7 @@ Result<void> Spool::claim_printer(PrinterId printer_id, std::string_view token) 
     SPOOL_LET(tx, sql::Transaction::begin(db_));
     SPOOL_LET(p, printer(printer_id));
     if (!p.runner.empty() && p.runner != token && runner_alive(p.runner))
-        return fail("printer '" + p.name + "' is already served by " + p.runner, p.name);
+        return fail(ErrorKind::device, "printer '" + p.name + "' is already served by " + p.runner, p.name);
     if (!p.runner.empty() && p.runner != token)
         SPOOL_TRY(insert_event({}, p.id, "recovered",
                                "runner " + p.runner + " is gone; " + std::string(token) + " takes over"));
@@ -595,7 +595,7 @@ Result<void> Spool::record_passes(JobId id, std::size_t sheet, std::size_t passe
     s.bind(1, i64(passes_done)).bind(2, id).bind(3, i64(sheet)).bind(4, i64(passes_done));
     SPOOL_TRY(s.run());
     if (db_.changes() != 1)
-        return fail("progress for sheet " + std::to_string(sheet) + " pass " +
+        return fail(ErrorKind::internal, "progress for sheet " + std::to_string(sheet) + " pass " +
                         std::to_string(passes_done) + " does not fit the job's plan",
                     job_where(id));
     return {};
@@ -627,7 +627,7 @@ Result<std::uint16_t> Spool::begin_run(JobId id, std::size_t start_sheet, std::s
     SPOOL_LET(q, db_.prepare("SELECT next_link_job FROM printers WHERE id = ?"));
     q.bind(1, j.printer_id);
     SPOOL_LET(row, q.step());
-    if (!row) return fail("no printer for the job", job_where(id));
+    if (!row) return fail(ErrorKind::internal, "no printer for the job", job_where(id));
     // 0x8001..0xFFFF in turn, skipping the controller's current id.
     auto next = [](std::int64_t v) -> std::uint16_t {
         return v < kFirstLinkJob || v > 0xFFFF ? kFirstLinkJob : static_cast<std::uint16_t>(v);
@@ -725,7 +725,7 @@ Result<Control> Spool::take_control(JobId id) {
     SPOOL_LET(q, db_.prepare("SELECT control FROM jobs WHERE id = ?"));
     q.bind(1, id);
     SPOOL_LET(row, q.step());
-    if (!row) return fail("no such job", job_where(id));
+    if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     SPOOL_LET(control, parse_control(q.text(0)));
     if (control != Control::none) {
         SPOOL_LET(clear, db_.prepare("UPDATE jobs SET control = '' WHERE id = ?"));
@@ -745,24 +745,25 @@ Result<void> Spool::clear_resume_sheet(JobId id) {
 Result<std::int64_t> Spool::data_version() {
     SPOOL_LET(s, db_.prepare("PRAGMA data_version"));
     SPOOL_LET(row, s.step());
-    if (!row) return fail("no data_version", db_.path().string());
+    if (!row) return fail(ErrorKind::internal, "no data_version", db_.path().string());
     return s.int64(0);
 }
 
 Diagnosis diagnose(const std::filesystem::path& path) {
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return {SpoolHealth::missing, Error{"no spool database here", path.string()}};
+    if (!std::filesystem::exists(path, ec)) return {SpoolHealth::missing, Error{"no spool database here", path.string(), ErrorKind::input}};
     // An empty file is a spool its creator has not written yet (Spool::open
     // leaves it alone unless it may create): not there yet, never foreign.
     if (std::filesystem::file_size(path, ec) == 0 && !ec)
-        return {SpoolHealth::missing, Error{"the spool database is empty: nothing has been queued yet", path.string()}};
+        return {SpoolHealth::missing, Error{"the spool database is empty: nothing has been queued yet", path.string(), ErrorKind::input}};
     auto s = Spool::open(path, {.create = false, .read_only_ok = true, .busy_timeout_ms = 2000});
     if (s) {
         if (auto c = s->check(); !c) return {SpoolHealth::damaged, c.error()};
         if (s->read_only())
             return {SpoolHealth::read_only,
-                    Error{"the spool is healthy but read-only (file, folder or disk write-protected)", path.string()}};
-        return {SpoolHealth::healthy, Error{"the spool database is fine", path.string()}};
+                    Error{"the spool is healthy but read-only (file, folder or disk write-protected)", path.string(),
+                          ErrorKind::input}};
+        return {SpoolHealth::healthy, Error{"the spool database is fine", path.string(), ErrorKind::input}};
     }
     // Why it would not open: read the header without writing anything.
     sqlite3* db = nullptr;
@@ -798,7 +799,7 @@ Diagnosis diagnose(const std::filesystem::path& path) {
 
 Result<std::filesystem::path> set_aside(const std::filesystem::path& path) {
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return fail("no file to set aside", path.string());
+    if (!std::filesystem::exists(path, ec)) return fail(ErrorKind::input, "no file to set aside", path.string());
     const std::time_t t = std::time(nullptr);
     std::tm tm{};
     gmtime_r(&t, &tm);
@@ -809,7 +810,7 @@ Result<std::filesystem::path> set_aside(const std::filesystem::path& path) {
         const std::filesystem::path from = path.string() + suffix;
         if (!std::filesystem::exists(from, ec)) continue;
         std::filesystem::rename(from, aside.string() + suffix, ec);
-        if (ec) return fail("cannot move the damaged database aside: " + ec.message(), from.string());
+        if (ec) return fail(ErrorKind::io, "cannot move the damaged database aside: " + ec.message(), from.string());
     }
     return aside;
 }

@@ -65,7 +65,7 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
         if (input_pos) input_pos->clear();
         return std::u32string{};
     }
-    if (in.size() > 1u << 24) return fail("text block too long for one translation");
+    if (in.size() > 1u << 24) return fail(ErrorKind::input, "text block too long for one translation");
     const auto* inbuf = reinterpret_cast<const widechar*>(in.data());
     std::vector<formtype> typeform;
     std::size_t capacity = first_capacity(in.size());
@@ -91,7 +91,7 @@ Result<std::u32string> run(const std::string& table_list, std::u32string_view in
             log = louis::take_log();
         }
         if (!ok)
-            return fail("liblouis could not translate with '" + table_list + "'" +
+            return fail(ErrorKind::internal, "liblouis could not translate with '" + table_list + "'" +
                         (log.empty() ? std::string{} : ": " + log));
         const auto produced = static_cast<std::size_t>(std::max(outlen, 0));
         if (static_cast<std::size_t>(inlen) >= in.size() && produced + headroom(capacity) <= capacity) {
@@ -191,7 +191,7 @@ std::string find_hyphenation(const std::string& first_table, const std::string& 
 }  // namespace
 
 Result<Translator> Translator::open(std::string tables) {
-    if (tables.empty()) return fail("no translation table given");
+    if (tables.empty()) return fail(ErrorKind::input, "no translation table given");
     louis::install_log_capture();
     const std::string list = std::string(kUnicodeDisplay) + "," + tables;
     std::string log;
@@ -202,7 +202,7 @@ Result<Translator> Translator::open(std::string tables) {
         log = louis::take_log();
     }
     if (!ok)
-        return fail("unknown or broken braille table '" + tables + "'" +
+        return fail(ErrorKind::input, "unknown or broken braille table '" + tables + "'" +
                         (log.empty() ? std::string{} : " (liblouis: " + log + ")"),
                     "--table");
     Translator t(std::move(tables));

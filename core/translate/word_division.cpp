@@ -217,7 +217,7 @@ Result<std::vector<document::BrailleLine>> divide_word(const Translator& transla
 
 Result<void> divide_word(const Translator& translator, std::u32string_view word, std::span<const std::uint8_t> emphasis,
                          std::size_t room, const PieceSink& sink) {
-    if (room == 0) return fail("no room to divide a word into");
+    if (room == 0) return fail(ErrorKind::internal, "no room to divide a word into");
     return Divider(translator, word, emphasis, room, sink).run();
 }
 

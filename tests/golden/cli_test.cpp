@@ -68,6 +68,20 @@ TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run_captured(cli({"layout", "--preset", "nope", "--to", "brf", kWelcome})).exit_code, 2);
 }
 
+// An encoding the user named that cannot be used is a usage error (2); the
+// file itself is not at fault.
+TEST(CliLayout, AnEncodingThatCannotBeUsedIsAUsageError) {
+    const auto input = temp_file("encoding.txt", kText);
+    const auto unknown = run_captured(cli({"layout", "--to", "brf", "--encoding", "klingon-42", input.string()}));
+    EXPECT_EQ(unknown.exit_code, 2) << unknown.err;
+    EXPECT_NE(unknown.err.find("unknown encoding 'klingon-42'"), std::string::npos) << unknown.err;
+    const auto not_text = run_captured(
+        cli({"layout", "--to", "brf", "--format", "html", "--encoding", "windows-1252", input.string()}));
+    EXPECT_EQ(not_text.exit_code, 2) << not_text.err;
+    EXPECT_NE(not_text.err.find("an encoding can only be given for text and Markdown input"), std::string::npos)
+        << not_text.err;
+}
+
 TEST(Cli, EveryCommandHasHelp) {
     for (const char* c : {"", "translate", "layout", "tables"}) {
         const auto r = run_captured(*c ? cli({c, "--help"}) : cli({"--help"}));

@@ -116,6 +116,34 @@ TEST(QueueCli, AMalformedDeviceIsRefusedWhenThePrinterIsAdded) {
     EXPECT_EQ(printers, "lab  pty:/dev/null\n");
 }
 
+// A printer name the user typed that is taken or empty is theirs to change:
+// a usage error (2), not a bad database or document (3).
+TEST(QueueCli, APrinterNameTakenOrMissingIsAUsageError) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    ASSERT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "pty:/dev/null"}, err).first, 0);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "lab", "--device", "sim"}, err).first, 2);
+    EXPECT_NE(test::read_text(err).find("--printer: printer 'lab' already exists"), std::string::npos)
+        << test::read_text(err);
+    EXPECT_EQ(cli(db, {"queue", "printer", "add", "", "--device", "sim"}, err).first, 2);
+    EXPECT_NE(test::read_text(err).find("a printer needs a name"), std::string::npos) << test::read_text(err);
+    const auto [code, printers] = cli(db, {"queue", "printer", "list"}, err);
+    EXPECT_EQ(printers, "lab  pty:/dev/null\n");
+}
+
+// The machine's storage, not the document: a spool folder that cannot be
+// made (here a file stands where the folder would be) is exit 1.
+TEST(QueueCli, ASpoolFolderThatCannotBeCreatedIsAStorageError) {
+    TempDir dir;
+    const auto err = dir / "err";
+    std::ofstream(dir / "a.txt") << "Hello.\n";
+    std::ofstream(dir / "taken") << "a file, not a folder\n";
+    const auto db = dir / "taken" / "tactus" / "spool.db";
+    EXPECT_EQ(cli(db, {"emboss", "--queue", "--device", "sim", (dir / "a.txt").string()}, err).first, 1);
+    EXPECT_NE(test::read_text(err).find("cannot create the spool folder"), std::string::npos) << test::read_text(err);
+    EXPECT_FALSE(std::filesystem::exists(db));
+}
+
 TEST(QueueCli, TheDefaultDatabaseFollowsTheEnvironment) {
     TempDir dir;
     const auto err = dir / "err";

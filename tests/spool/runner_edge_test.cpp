@@ -45,7 +45,7 @@ struct Edge {
 
     ConnectFn connect() {
         return [this](const PrinterRecord&) -> Result<link::Link> {
-            if (cut->cut) return fail("no such device: sim (unplugged)", "sim");
+            if (cut->cut) return fail(ErrorKind::device, "no such device: sim (unplugged)", "sim");
             // The in-process line, cut from the moment the controller has
             // gone quiet until the test restores it.
             return link::Link::over(std::make_unique<test::SharedLine>(line, [l = line, c = cut] {

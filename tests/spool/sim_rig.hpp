@@ -25,18 +25,18 @@ public:
     SharedLine(std::shared_ptr<controller::SimTransport> line, std::shared_ptr<std::atomic<bool>> cut)
         : SharedLine(std::move(line), [cut = std::move(cut)] { return cut->load(); }) {}
     Result<void> write(std::span<const std::uint8_t> b) override {
-        if (is_cut_()) return fail("device gone (cable cut)", "sim");
+        if (is_cut_()) return fail(ErrorKind::device, "device gone (cable cut)", "sim");
         return line_->write(b);
     }
     Result<std::size_t> read(std::span<std::uint8_t> b, std::chrono::microseconds t) override {
         if (is_cut_()) {
             line_->sleep(t);
-            return fail("device gone (cable cut)", "sim");
+            return fail(ErrorKind::device, "device gone (cable cut)", "sim");
         }
         return line_->read(b, t);
     }
     Result<void> reopen() override {
-        if (is_cut_()) return fail("no such device", "sim");
+        if (is_cut_()) return fail(ErrorKind::device, "no such device", "sim");
         return line_->reopen();
     }
     [[nodiscard]] double now() const override { return line_->now(); }
@@ -58,7 +58,7 @@ struct SimPrinter {
     ConnectFn connect(link::LinkOptions options = {}) {
         return [this, options](const PrinterRecord&) -> Result<link::Link> {
             ++connects;
-            if (*cut) return fail("no such device: sim (unplugged)", "sim");
+            if (*cut) return fail(ErrorKind::device, "no such device: sim (unplugged)", "sim");
             return link::Link::over(std::make_unique<SharedLine>(line, cut), options);
         };
     }

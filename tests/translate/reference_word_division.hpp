@@ -169,7 +169,7 @@ inline Result<std::vector<document::BrailleLine>> divide_word(const Translator& 
                                                               std::size_t room) {
     std::vector<document::BrailleLine> pieces;
     const PieceSink sink = [&pieces](document::BrailleLine&& piece) { pieces.push_back(std::move(piece)); };
-    if (room == 0) return fail("no room to divide a word into");
+    if (room == 0) return fail(ErrorKind::internal, "no room to divide a word into");
     auto ok = detail::Divider(translator, word, emphasis, room, sink).run();
     if (!ok) return std::unexpected(ok.error());
     return pieces;

@@ -39,15 +39,15 @@ public:
     FakeBridge(HidBridge chip, std::shared_ptr<controller::SimController> ctl) : chip_(chip), ctl_(std::move(ctl)) {}
 
     Result<void> write_report(std::span<const std::uint8_t> r) override {
-        if (!uart_enabled_) return fail("UART not enabled", "fake");
+        if (!uart_enabled_) return fail(ErrorKind::device, "UART not enabled", "fake");
         std::vector<std::uint8_t> data;
         if (chip_ == HidBridge::cp2110) {
-            if (r.empty() || r[0] < 1 || r[0] > 63 || r.size() != 1U + r[0]) return fail("bad CP2110 report", "fake");
+            if (r.empty() || r[0] < 1 || r[0] > 63 || r.size() != 1U + r[0]) return fail(ErrorKind::protocol, "bad CP2110 report", "fake");
             data.assign(r.begin() + 1, r.end());
         } else {
-            if (r.size() < 2 || r[0] < 0xF0 || r[0] > 0xFE) return fail("bad FT260 report id", "fake");
+            if (r.size() < 2 || r[0] < 0xF0 || r[0] > 0xFE) return fail(ErrorKind::protocol, "bad FT260 report id", "fake");
             const std::size_t cap = 4U * (r[0] - 0xF0U + 1U);
-            if (r[1] == 0 || r[1] > cap || r.size() != 2 + cap) return fail("bad FT260 report size", "fake");
+            if (r[1] == 0 || r[1] > cap || r.size() != 2 + cap) return fail(ErrorKind::protocol, "bad FT260 report size", "fake");
             data.assign(r.begin() + 2, r.begin() + 2 + r[1]);
         }
         reports_out_.push_back(std::vector<std::uint8_t>(r.begin(), r.end()));
