@@ -99,13 +99,13 @@ void run_layout(const LayoutCommandArgs& a) {
             part.pages.assign(doc.pages.begin() + static_cast<std::ptrdiff_t>(starts[v]),
                               doc.pages.begin() + static_cast<std::ptrdiff_t>(end));
             const auto name = (out.parent_path() / (out.stem().string() + "-" + std::to_string(v + 1) + out.extension().string())).string();
-            require(exporter::export_to_file(part, format, meta, name), exit_failure);
+            require(exporter::export_to_file(part, format, meta, name));
             std::cerr << "wrote " << name << ": volume " << v + 1 << " of " << starts.size() << ", "
                       << part.pages.size() << " pages\n";
         }
         return;
     }
-    require(exporter::export_to_file(doc, format, meta, a.output), exit_failure);
+    require(exporter::export_to_file(doc, format, meta, a.output));
     std::cerr << "wrote " << a.output << ": " << doc.pages.size() << " pages on "
               << doc.sheet_count() << " sheets (" << doc.geometry.cells_per_line << "x"
               << doc.geometry.lines_per_page << ", "

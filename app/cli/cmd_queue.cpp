@@ -124,7 +124,7 @@ void act(const QueueArgs& a, spool::Action action) {
                             "--from-page", ErrorKind::input});
         sheet = a.from_page < 1 ? 0 : doc.geometry.sheet_of_page(a.from_page - 1);
     }
-    const JobRecord j = require(s.act(a.job, action, sheet), exit_bad_input);
+    const JobRecord j = require(s.act(a.job, action, sheet));
     std::cout << "job " << j.id << ": " << to_string(j.state);
     if (j.control != spool::Control::none)
         std::cout << " (" << to_string(j.control) << " passed to the runner on " << j.printer << ")";

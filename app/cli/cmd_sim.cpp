@@ -62,7 +62,7 @@ std::ofstream open_log(const std::string& path) {
     std::ofstream log;
     if (path.empty()) return log;
     log.open(path, std::ios::app);
-    if (!log) throw CommandFailed(exit_bad_input, path + ": cannot write the strike log");
+    if (!log) fail_with(Error{"cannot write the strike log", path, ErrorKind::io});
     return log;
 }
 

@@ -115,7 +115,7 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     job.last_page = first ? (last ? last : doc.pages.size()) : 0;
     job.priority = a.priority;
     job.user = spool::this_user_name();
-    const auto id = require(s.submit(job), exit_failure);
+    const auto id = require(s.submit(job));
     std::cout << "queued job " << id << ": " << job.title << ", " << job.sheets_per_copy << " sheet(s) x "
               << job.copies << " on " << printer << '\n';
 }

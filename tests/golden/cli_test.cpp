@@ -82,6 +82,28 @@ TEST(CliLayout, AnEncodingThatCannotBeUsedIsAUsageError) {
         << not_text.err;
 }
 
+// A file that cannot be written is the machine's storage failing (exit 1),
+// never bad input.
+TEST(CliSim, AStrikeLogThatCannotBeWrittenIsAStorageError) {
+    const auto log = fs::temp_directory_path() / "tactus-cli-test-no-such-folder" / "strikes.jsonl";
+    fs::remove_all(log.parent_path());
+    const auto r = run_captured({TACTUS_CLI, "sim", "--pty", "--strike-log", log.string()});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find(log.string() + ": cannot write the strike log"), std::string::npos) << r.err;
+}
+
+// A document BRF cannot hold (8-dot cells) is refused as bad input (3): the
+// write did not fail, there is nothing to retry.
+TEST(CliLayout, EightDotCellsForBrfAreBadInputNotAFailedWrite) {
+    const auto input = temp_file("eight-dot.txt", "\u28FF\u2841\n");
+    const auto out = fs::temp_directory_path() / "tactus-cli-test-eight-dot.brf";
+    fs::remove(out);
+    const auto r = run_captured(cli({"layout", "--to", "brf", "--eight-dot", "-o", out.string(), input.string()}));
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_NE(r.err.find("8-dot cell cannot be written as BRF"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Cli, EveryCommandHasHelp) {
     for (const char* c : {"", "translate", "layout", "tables"}) {
         const auto r = run_captured(*c ? cli({c, "--help"}) : cli({"--help"}));
