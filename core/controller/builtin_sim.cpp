@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "controller/open_device.hpp"
+#include "common/try.hpp"
 #include <type_traits>
 
 namespace tactus::controller {
@@ -83,11 +84,10 @@ std::unique_ptr<transport::ByteStream> BuiltInSimulator::connect(const transport
 
 Result<std::unique_ptr<transport::ByteStream>> BuiltInSimulator::connect(
     const transport::SimSettings& settings, const std::optional<machine::FirmwareTables>& tables) {
-    auto firmware = sim_firmware_for(settings, tables);
-    if (!firmware) return std::unexpected(firmware.error());
+    TACTUS_TRY(firmware, sim_firmware_for(settings, tables));
     {
         std::lock_guard lock(mutex_);
-        if (controller_->firmware() != *firmware) controller_->reflash(std::move(*firmware), line_.now());
+        if (controller_->firmware() != firmware) controller_->reflash(std::move(firmware), line_.now());
     }
     return connect(settings);
 }

@@ -3,21 +3,20 @@
 
 #include "controller/sim_controller.hpp"
 #include "controller/sim_transport.hpp"
+#include "common/try.hpp"
 
 namespace tactus::controller {
 namespace {
 
 Result<std::unique_ptr<transport::ByteStream>> open_sim(const transport::DeviceSpec& spec,
                                                         const std::optional<machine::FirmwareTables>& tables) {
-    auto settings = transport::sim_settings(spec);
-    if (!settings) return std::unexpected(settings.error());
+    TACTUS_TRY(settings, transport::sim_settings(spec));
     SimOptions sim;
-    if (settings->paper_reload_s) sim.reload_paper_after_s = *settings->paper_reload_s;
-    auto firmware = sim_firmware_for(*settings, tables);
-    if (!firmware) return std::unexpected(firmware.error());
-    sim.firmware = std::move(*firmware);
+    if (settings.paper_reload_s) sim.reload_paper_after_s = *settings.paper_reload_s;
+    TACTUS_TRY(firmware, sim_firmware_for(settings, tables));
+    sim.firmware = std::move(firmware);
     auto ctl = std::make_shared<SimController>(sim);
-    return std::unique_ptr<transport::ByteStream>(std::make_unique<SimTransport>(ctl, line_options(*settings)));
+    return std::unique_ptr<transport::ByteStream>(std::make_unique<SimTransport>(ctl, line_options(settings)));
 }
 
 }  // namespace
@@ -34,9 +33,8 @@ Result<std::optional<machine::FirmwareTables>> sim_firmware_for(
 
 Result<std::unique_ptr<transport::ByteStream>> open_device(std::string_view device,
                                                            const std::optional<machine::FirmwareTables>& sim_firmware) {
-    auto spec = transport::parse_device(device);
-    if (!spec) return std::unexpected(spec.error());
-    if (spec->scheme == "sim") return open_sim(*spec, sim_firmware);
+    TACTUS_TRY(spec, transport::parse_device(device));
+    if (spec.scheme == "sim") return open_sim(spec, sim_firmware);
     return transport::open_device(device);
 }
 

@@ -5,6 +5,7 @@
 
 #include "export/export.hpp"
 #include "layout/braille_pages.hpp"
+#include "common/try.hpp"
 
 namespace tactus::edit {
 
@@ -18,9 +19,8 @@ std::optional<Result<std::string>> structured_braille_pef(const LiveLayout& layo
     own.geometry.cells_per_line = std::numeric_limits<int>::max();
     own.geometry.lines_per_page = std::numeric_limits<int>::max();
     own.geometry.interpoint = false;
-    auto paged = layout::keep_braille_pages(doc, own);
-    if (!paged) return std::unexpected(paged.error());
-    return exporter::to_pef(*paged, exporter::pef_metadata(paged->metadata, title, {}, {}));
+    TACTUS_TRY(paged, layout::keep_braille_pages(doc, own));
+    return exporter::to_pef(paged, exporter::pef_metadata(paged.metadata, title, {}, {}));
 }
 
 }  // namespace tactus::edit

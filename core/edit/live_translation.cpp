@@ -16,6 +16,7 @@
 #include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
 #include "translate/script_check.hpp"
+#include "common/try.hpp"
 
 namespace tactus::edit {
 
@@ -23,10 +24,9 @@ using live_lines::starts_table_line;
 using live_lines::braille_text_line;
 
 Result<LiveLayout> LiveLayout::create(const std::string& tables, layout::LayoutOptions options) {
-    if (auto ok = validate(options); !ok) return std::unexpected(ok.error());
-    auto translator = translate::Translator::open(tables);
-    if (!translator) return std::unexpected(translator.error());
-    LiveLayout l(std::move(*translator), std::move(options));
+    TACTUS_TRY_VOID(validate(options));
+    TACTUS_TRY(translator, translate::Translator::open(tables));
+    LiveLayout l(std::move(translator), std::move(options));
     l.relayout_from(0);
     return l;
 }
@@ -116,9 +116,8 @@ void LiveLayout::translate_entry(std::size_t i) {
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
-    auto translator = translate::Translator::open(tables);
-    if (!translator) return std::unexpected(translator.error());
-    translator_ = std::move(*translator);
+    TACTUS_TRY(translator, translate::Translator::open(tables));
+    translator_ = std::move(translator);
     numbers_.clear();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);
     paged_ = {};

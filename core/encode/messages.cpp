@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encode/messages.hpp"
+#include "common/try.hpp"
 
 #include <algorithm>
 #include <string>
@@ -99,7 +100,7 @@ std::vector<std::uint8_t> encode_hello(const Hello& h) {
     return o;
 }
 Result<Hello> decode_hello(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, 3, "HELLO"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, 3, "HELLO"));
     return Hello{get16(p, 0), p[2]};
 }
 
@@ -115,7 +116,7 @@ std::vector<std::uint8_t> encode_hello_reply(const HelloReply& h) {
 Result<HelloReply> decode_hello_reply(std::span<const std::uint8_t> p) {
     // The protocol byte comes first in every version: it says how long the rest is.
     const bool v3 = !p.empty() && p[0] == kProtocolV3;
-    if (auto r = need(p, v3 ? 13 : 7, "HELLO_REPLY"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, v3 ? 13 : 7, "HELLO_REPLY"));
     HelloReply h{p[0], p[1], p[2], p[3], p[4], p[5], p[6], v3 ? get32(p, 7) : 0U};
     if (h.max_payload == 0 || h.ring_bytes < h.max_payload || h.window_frames == 0 ||
         h.window_frames > 127)
@@ -148,7 +149,7 @@ std::vector<std::uint8_t> encode_config_v3(const machine::ControllerConfig& c, s
 }
 
 Result<machine::ControllerConfig> decode_config(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, 18, "CONFIGURE"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, 18, "CONFIGURE"));
     machine::ControllerConfig c;
     c.carriage_steps_per_m = get32(p, 0);
     c.feed_steps_per_m = get32(p, 4);
@@ -170,7 +171,7 @@ std::vector<std::uint8_t> encode_ack(const AckInfo& a) {
     return o;
 }
 Result<AckInfo> decode_ack(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, kAckBytes, "ACK"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, kAckBytes, "ACK"));
     return get_ack(p);
 }
 
@@ -180,11 +181,10 @@ std::vector<std::uint8_t> encode_nak(NakReason why, const AckInfo& a) {
     return o;
 }
 Result<std::pair<NakReason, AckInfo>> decode_nak(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, kAckBytes + 1, "NAK"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, kAckBytes + 1, "NAK"));
     if (p[0] < 1 || p[0] > 5) return fail(ErrorKind::protocol, "unknown NAK reason " + std::to_string(p[0]), "NAK");
-    auto a = get_ack(p.subspan(1));
-    if (!a) return std::unexpected(a.error());
-    return std::pair{static_cast<NakReason>(p[0]), *a};
+    TACTUS_TRY(a, get_ack(p.subspan(1)));
+    return std::pair{static_cast<NakReason>(p[0]), a};
 }
 
 std::vector<std::uint8_t> encode_status(const Status& s) {
@@ -200,11 +200,10 @@ std::vector<std::uint8_t> encode_status(const Status& s) {
     return o;
 }
 Result<Status> decode_status(std::span<const std::uint8_t> p) {
-    if (auto r = need(p, kStatusBytes, "STATUS_REPLY"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(need(p, kStatusBytes, "STATUS_REPLY"));
     Status s;
-    auto a = get_ack(p);
-    if (!a) return std::unexpected(a.error());
-    s.ack = *a;
+    TACTUS_TRY(a, get_ack(p));
+    s.ack = a;
     std::size_t at = kAckBytes;
     s.flags = p[at++];
     s.job_id = get16(p, at);

@@ -8,6 +8,7 @@
 #include "encode/frame.hpp"
 #include "encode/varint.hpp"
 #include "motion/steps.hpp"
+#include "common/try.hpp"
 
 namespace tactus::encode {
 namespace {
@@ -311,9 +312,8 @@ Result<JobStream> begin_stream(const plan::JobPlan& plan, const StreamStart& sta
 Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                              const StreamStart& start) {
     const auto table = pass_table(plan);
-    auto begun = begin_stream(plan, start);
-    if (!begun) return std::unexpected(begun.error());
-    JobStream s = std::move(*begun);
+    TACTUS_TRY(begun, begin_stream(plan, start));
+    JobStream s = std::move(begun);
     Writer w(s);
     Op o;
     o.code = OpCode::job_begin;
@@ -350,7 +350,7 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
                                 std::to_string(pass.strikes.size()) + " strikes",
                             where);
             if (pass.strikes.size() > 255) return fail(ErrorKind::input, "more than 255 strikes in a pass", where);
-            if (auto r = check_move(pass.feed, where + " feed"); !r) return std::unexpected(r.error());
+            TACTUS_TRY_VOID(check_move(pass.feed, where + " feed"));
             const bool restart_pass = restart && pi == p0;
             if (restart_pass) {
                 Op seek = op_of(OpCode::seek);
@@ -382,7 +382,7 @@ Result<JobStream> encode_job(const plan::JobPlan& plan, std::uint16_t job_id,
             if (!restart_pass) w.move(Axis::feed, pass.feed);
             for (std::size_t i = 0; i < pass.strikes.size(); ++i) {
                 const auto mw = where + " strike " + std::to_string(i + 1);
-                if (auto r = check_move(pass.moves[i], mw); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(check_move(pass.moves[i], mw));
                 carriage += pass.moves[i].steps;
                 if (carriage != pass.strikes[i].carriage_step)
                     return fail(ErrorKind::input, "moves reach carriage step " + std::to_string(carriage) +

@@ -8,6 +8,7 @@
 
 #include "encode/crc16.hpp"
 #include "motion/table_move.hpp"
+#include "common/try.hpp"
 
 namespace tactus::encode {
 namespace {
@@ -99,9 +100,8 @@ struct Encoder {
 Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::FirmwareTables& tables,
                                 const machine::StrikeTiming& timing, std::uint16_t job_id,
                                 const StreamStart& start) {
-    auto begun = begin_stream(plan, start);
-    if (!begun) return std::unexpected(begun.error());
-    JobStream s = std::move(*begun);
+    TACTUS_TRY(begun, begin_stream(plan, start));
+    JobStream s = std::move(begun);
     Encoder e{tables, timing, s};
     s.bytes.push_back(v3::op_job_begin);
     put16(s.bytes, job_id);
@@ -279,10 +279,10 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
         return v;
     };
     auto uvar = [&]() -> Result<std::uint32_t> {
-        if (auto r = need(1); !r) return std::unexpected(r.error());
+        TACTUS_TRY_VOID(need(1));
         const std::uint8_t b = u8();
         if (!(b & 0x80)) return b;
-        if (auto r = need(1); !r) return std::unexpected(r.error());
+        TACTUS_TRY_VOID(need(1));
         return (static_cast<std::uint32_t>(b & 0x7F) << 8) | u8();
     };
     // The firmware's carriage(): a reversal adds the backlash to the motor's move.
@@ -298,20 +298,20 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
         const std::uint8_t op = u8();
         switch (op) {
             case v3::op_job_begin:
-                if (auto r = need(4); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(need(4));
                 i += 4;
                 break;
             case v3::op_job_end:
             case v3::op_sheet_end: break;
             case v3::op_sheet_begin:
-                if (auto r = need(2); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(need(2));
                 sheet = be16();
                 f.pos = 0;
                 break;
             case v3::op_home: c = {0, true}; break;
             case v3::op_seek_carriage:
             case v3::op_seek_feed: {
-                if (auto r = need(2); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(need(2));
                 const auto target = static_cast<std::int16_t>(be16());
                 AxisState& a = op == v3::op_seek_feed ? f : c;
                 if (target != a.pos) a.neg = target < a.pos;
@@ -319,38 +319,36 @@ Result<std::vector<StrikeV3>> execute_v3(std::span<const std::uint8_t> in, const
                 break;
             }
             case v3::op_pass: {
-                if (auto r = need(1); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(need(1));
                 const std::uint8_t flags = u8();
                 if (flags & 0xE0) return fail(ErrorKind::protocol, "reserved pass flags", "byte " + std::to_string(at));
                 std::uint8_t skip = 0;
                 if (flags & v3::pass_flag::skip) {
-                    if (auto r = need(1); !r) return std::unexpected(r.error());
+                    TACTUS_TRY_VOID(need(1));
                     skip = u8();
                 }
-                if (auto r = need(1); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(need(1));
                 const bool two = (in[i] & 0x80) != 0;
-                auto fu = uvar();
-                if (!fu) return std::unexpected(fu.error());
-                std::int32_t feed = two ? ((*fu & 0x4000) ? static_cast<std::int32_t>(*fu) - 0x8000
-                                                          : static_cast<std::int32_t>(*fu))
-                                        : ((*fu & 0x40) ? static_cast<std::int32_t>(*fu) - 128
-                                                        : static_cast<std::int32_t>(*fu));
-                auto first = uvar();
-                if (!first) return std::unexpected(first.error());
-                if (auto r = need(1); !r) return std::unexpected(r.error());
+                TACTUS_TRY(fu, uvar());
+                std::int32_t feed = two ? ((fu & 0x4000) ? static_cast<std::int32_t>(fu) - 0x8000
+                                                          : static_cast<std::int32_t>(fu))
+                                        : ((fu & 0x40) ? static_cast<std::int32_t>(fu) - 128
+                                                        : static_cast<std::int32_t>(fu));
+                TACTUS_TRY(first, uvar());
+                TACTUS_TRY_VOID(need(1));
                 const std::uint8_t n = u8();
                 if (!(flags & v3::pass_flag::no_feed) && feed != 0)
                     move(f, t.feed, static_cast<std::uint32_t>(std::abs(feed)), feed < 0);
                 for (std::uint8_t k = 0; k < n; ++k) {
-                    if (auto r = need(1); !r) return std::unexpected(r.error());
+                    TACTUS_TRY_VOID(need(1));
                     const std::uint8_t en = u8();
                     std::uint32_t d = en & 0x3F;
                     if (en & 0x40) {
-                        if (auto r = need(1); !r) return std::unexpected(r.error());
+                        TACTUS_TRY_VOID(need(1));
                         d = (d << 8) | u8();
                     }
                     if (k == 0)
-                        move(c, t.carriage, *first, (flags & v3::pass_flag::first_neg) != 0);
+                        move(c, t.carriage, first, (flags & v3::pass_flag::first_neg) != 0);
                     else
                         move(c, t.carriage, d, (flags & v3::pass_flag::sweep_neg) != 0);
                     if (skip) {

@@ -3,6 +3,7 @@
 
 #include "common/file_io.hpp"
 #include "export/export.hpp"
+#include "common/try.hpp"
 
 namespace tactus::exporter {
 namespace {
@@ -48,7 +49,7 @@ void write_unicode(const layout::PagedDocument& doc, std::ostream& out) {
 
 Result<std::string> to_brf(const layout::PagedDocument& doc) {
     std::ostringstream out;
-    if (auto ok = write_brf(doc, out); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(write_brf(doc, out));
     return std::move(out).str();
 }
 
@@ -86,7 +87,7 @@ Result<void> write_document(const layout::PagedDocument& doc, ExportFormat forma
 Result<std::string> export_document(const layout::PagedDocument& doc, ExportFormat format,
                                     const PefMetadata& meta) {
     std::ostringstream out;
-    if (auto ok = write_document(doc, format, meta, out); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(write_document(doc, format, meta, out));
     return std::move(out).str();
 }
 

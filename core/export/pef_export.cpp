@@ -8,6 +8,7 @@
 
 #include "common/utf8.hpp"
 #include "export/export.hpp"
+#include "common/try.hpp"
 
 namespace tactus::exporter {
 namespace {
@@ -194,7 +195,7 @@ Result<void> write_pef(const layout::PagedDocument& doc, const PefMetadata& meta
 
 Result<std::string> to_pef(const layout::PagedDocument& doc, const PefMetadata& meta) {
     std::ostringstream out;
-    if (auto ok = write_pef(doc, meta, out); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(write_pef(doc, meta, out));
     return std::move(out).str();
 }
 

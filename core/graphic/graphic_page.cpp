@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/utf8.hpp"
+#include "common/try.hpp"
 
 namespace tactus::graphic {
 
@@ -36,13 +37,11 @@ Result<GraphicLayout> lay_out_drawing(const Drawing& drawing, const profile::Pri
         return fail(ErrorKind::input, "the profile's margins leave no room on the paper for a graphic", "field paper");
     out.placed = fit_to_area(drawing, area, &out.scale);
     const Braille braille = [&table](const std::string& utf8) -> Result<document::BrailleLine> {
-        auto text = utf8_to_utf32(utf8);
-        if (!text) return std::unexpected(text.error());
-        return table.translate(*text);
+        TACTUS_TRY(text, utf8_to_utf32(utf8));
+        return table.translate(text);
     };
-    auto dots = place_dots(out.placed, area, options, braille);
-    if (!dots) return std::unexpected(dots.error());
-    out.dots = std::move(*dots);
+    TACTUS_TRY(dots, place_dots(out.placed, area, options, braille));
+    out.dots = std::move(dots);
 
     auto& doc = out.document;
     doc.geometry = geometry;

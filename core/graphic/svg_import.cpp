@@ -11,6 +11,7 @@
 #include "common/file_io.hpp"
 #include "common/nesting.hpp"
 #include "graphic/svg_syntax.hpp"
+#include "common/try.hpp"
 
 namespace tactus::graphic {
 
@@ -423,7 +424,7 @@ Result<Drawing> Reader::read() {
                                                                     trim(par.value()) != "xMidYMid")
             warn(root, "preserveAspectRatio=\"" + trim(par.value()) + "\" is read as xMidYMid meet");
     }
-    if (auto r = walk(root, Style{}, ctm, 0); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(walk(root, Style{}, ctm, 0));
     return std::move(drawing_);
 }
 
@@ -432,9 +433,8 @@ Result<Drawing> Reader::read() {
 Result<Drawing> read_svg(std::string_view bytes) { return Reader(bytes).read(); }
 
 Result<Drawing> load_svg(const std::filesystem::path& path) {
-    auto bytes = read_file(path, std::size_t{64} << 20);
-    if (!bytes) return std::unexpected(bytes.error());
-    auto d = read_svg(*bytes);
+    TACTUS_TRY(bytes, read_file(path, std::size_t{64} << 20));
+    auto d = read_svg(bytes);
     if (!d) return std::unexpected(located(d.error(), path.string()));
     return d;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "graphic/svg_syntax.hpp"
+#include "common/try.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -130,9 +131,8 @@ Result<std::vector<double>> parse_numbers(std::string_view text) {
     std::vector<double> out;
     lx.skip_ws();
     while (!lx.at_end()) {
-        auto v = lx.number();
-        if (!v) return std::unexpected(v.error());
-        out.push_back(*v);
+        TACTUS_TRY(v, lx.number());
+        out.push_back(v);
         lx.skip_comma_ws();
     }
     return out;
@@ -156,9 +156,8 @@ Result<Affine> parse_transform(std::string_view text) {
         lx.skip_ws();
         std::vector<double> args;
         while (!lx.at_end() && text[lx.i] != ')') {
-            auto v = lx.number();
-            if (!v) return std::unexpected(v.error());
-            args.push_back(*v);
+            TACTUS_TRY(v, lx.number());
+            args.push_back(v);
             lx.skip_comma_ws();
         }
         if (lx.at_end()) return fail(ErrorKind::input, "')' was expected", lx.here());
@@ -270,9 +269,8 @@ Result<std::vector<Subpath>> parse_path(std::string_view d) {
     char cmd = 0;
     lx.skip_ws();
     const auto need = [&](double& v) -> Result<void> {
-        auto n = lx.number();
-        if (!n) return std::unexpected(n.error());
-        v = *n;
+        TACTUS_TRY(n, lx.number());
+        v = n;
         lx.skip_comma_ws();
         return {};
     };

@@ -32,6 +32,7 @@
 #include "import/office_package.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -65,9 +66,8 @@ std::string rels_of(std::string_view part) {
 // The relationships of a part: the target of the first one of a kind.
 Result<std::string> related(const XmlPackage& package, std::string_view source, std::string_view kind) {
     XmlPart rels;
-    auto found = package.load(rels_of(source), rels, false);
-    if (!found) return std::unexpected(found.error());
-    if (!*found) return std::string{};
+    TACTUS_TRY(found, package.load(rels_of(source), rels, false));
+    if (!found) return std::string{};
     for (const auto& r : rels.root().children()) {
         if (local_name(r) != "Relationship") continue;
         if (attribute(r, "TargetMode") == "External") continue;
@@ -395,10 +395,9 @@ private:
 }  // namespace
 
 Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
-    auto package = XmlPackage::open(bytes, "a Word document");
-    if (!package) return std::unexpected(package.error());
+    TACTUS_TRY(package, XmlPackage::open(bytes, "a Word document"));
 
-    auto main_part = related(*package, "", "officeDocument");
+    auto main_part = related(package, "", "officeDocument");
     if (!main_part) return std::unexpected(main_part.error());
     if (main_part->empty()) *main_part = default_main_part;
 
@@ -408,12 +407,11 @@ Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
                                      {"numbering", &numbering_xml},
                                      {"footnotes", &footnotes_xml},
                                      {"endnotes", &endnotes_xml}}) {
-        auto name = related(*package, *main_part, kind);
-        if (!name) return std::unexpected(name.error());
-        if (name->empty()) continue;
-        if (auto ok = package->load(*name, *part, false); !ok) return std::unexpected(ok.error());
+        TACTUS_TRY(name, related(package, *main_part, kind));
+        if (name.empty()) continue;
+        TACTUS_TRY_VOID(package.load(name, *part, false));
     }
-    if (auto ok = package->load(*main_part, document_xml, true); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(package.load(*main_part, document_xml, true));
 
     const DocxStyles styles(styles_xml.root());
     DocxNumbering numbering(numbering_xml.root());

@@ -13,6 +13,7 @@
 
 #include "common/utf8.hpp"
 #include "import/text_position.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -207,14 +208,12 @@ Result<DecodedText> decode_utf8(std::string_view bytes, std::size_t bom, std::st
 
 Result<DecodedText> decode_with(std::string_view bytes, const std::string& name,
                                 std::string label) {
-    auto cnv = open_converter(name);
-    if (!cnv) return std::unexpected(cnv.error());
-    if (is_utf8_converter(cnv->get()))
+    TACTUS_TRY(cnv, open_converter(name));
+    if (is_utf8_converter(cnv.get()))
         return decode_utf8(bytes, sniff_bom(bytes).encoding == "UTF-8" ? 3 : 0, std::move(label));
-    auto text = convert(bytes, cnv->get(), label);
-    if (!text) return std::unexpected(text.error());
+    TACTUS_TRY(text, convert(bytes, cnv.get(), label));
     DecodedText out;
-    out.converted = std::move(*text);
+    out.converted = std::move(text);
     // Explicit UTF-16LE/BE and friends keep a byte-order mark as U+FEFF.
     if (std::string_view(out.converted).starts_with("\xEF\xBB\xBF")) {
         out.converted.erase(0, 3);
@@ -270,7 +269,7 @@ Result<DecodedText> decode_text(std::string_view bytes, std::string_view declare
     if (!declared.empty() && name.empty()) return fail(ErrorKind::usage, "empty encoding name", "encoding");
     auto decoded = declared.empty() ? detect_and_decode(bytes) : decode_with(bytes, name, name);
     if (!decoded) return decoded;
-    if (auto ok = check_controls(decoded->text(bytes)); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(check_controls(decoded->text(bytes)));
     return decoded;
 }
 

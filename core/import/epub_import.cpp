@@ -22,6 +22,7 @@
 #include "import/markup_walk.hpp"
 #include "import/xml_util.hpp"
 #include "import/zip_archive.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -32,9 +33,8 @@ constexpr std::size_t max_part_bytes = std::size_t{64} << 20;
 constexpr std::size_t max_book_bytes = std::size_t{512} << 20;
 
 Result<std::unique_ptr<MarkupDocument>> read_xml(const ZipArchive& zip, const std::string& part) {
-    auto bytes = zip.read(part, max_part_bytes);
-    if (!bytes) return std::unexpected(bytes.error());
-    auto text = markup_text(*bytes);
+    TACTUS_TRY(bytes, zip.read(part, max_part_bytes));
+    auto text = markup_text(bytes);
     if (!text) return std::unexpected(located(text.error(), part));
     return parse_xml_markup(std::move(*text), part);
 }
@@ -56,10 +56,9 @@ Result<document::Document> import_epub(std::string_view bytes) {
     }
     if (!zip->contains("META-INF/container.xml"))
         return fail(ErrorKind::input, "not an EPUB: missing part META-INF/container.xml", "META-INF/container.xml");
-    auto container = read_xml(*zip, "META-INF/container.xml");
-    if (!container) return std::unexpected(container.error());
+    TACTUS_TRY(container, read_xml(*zip, "META-INF/container.xml"));
     std::string opf_path;
-    for (const auto& r : child((*container)->xml.document_element(), "rootfiles").children()) {
+    for (const auto& r : child(container->xml.document_element(), "rootfiles").children()) {
         if (local_name(r) != "rootfile") continue;
         const std::string_view type = r.attribute("media-type").value();
         if (type.empty() || type == "application/oebps-package+xml") {
@@ -70,9 +69,8 @@ Result<document::Document> import_epub(std::string_view bytes) {
     if (opf_path.empty())
         return fail(ErrorKind::input, "not an EPUB: container.xml names no package document (rootfile full-path)", "META-INF/container.xml");
     opf_path = resolve_path("", opf_path);
-    auto opf = read_xml(*zip, opf_path);
-    if (!opf) return std::unexpected(opf.error());
-    const auto package = (*opf)->xml.document_element();
+    TACTUS_TRY(opf, read_xml(*zip, opf_path));
+    const auto package = opf->xml.document_element();
     if (local_name(package) != "package")
         return fail(ErrorKind::input, "not an EPUB package document: the root element is <" + std::string(package.name()) + ">", opf_path);
 
@@ -102,17 +100,15 @@ Result<document::Document> import_epub(std::string_view bytes) {
                                " left out (only XHTML and DTBook are read)");
             continue;
         }
-        auto raw = zip->read(path, max_part_bytes);
-        if (!raw) return std::unexpected(raw.error());
-        total += raw->size();
+        TACTUS_TRY(raw, zip->read(path, max_part_bytes));
+        total += raw.size();
         if (total > max_book_bytes)
             return fail(ErrorKind::input, "the book unpacks to more than " + std::to_string(max_book_bytes) + " bytes of text", path);
-        auto text = markup_text(*raw);
+        auto text = markup_text(raw);
         if (!text) return std::unexpected(located(text.error(), path));
-        auto tree = dtbook ? parse_xml_markup(std::move(*text), path) : parse_xhtml_or_html(std::move(*text), path);
-        if (!tree) return std::unexpected(tree.error());
-        parts.push_back(MarkupPart{path, (*tree)->xml, (*tree)->lines()});
-        trees.push_back(std::move(*tree));
+        TACTUS_TRY(tree, dtbook ? parse_xml_markup(std::move(*text), path) : parse_xhtml_or_html(std::move(*text), path));
+        parts.push_back(MarkupPart{path, tree->xml, tree->lines()});
+        trees.push_back(std::move(tree));
     }
     if (parts.empty()) return fail(ErrorKind::input, "the EPUB's spine lists no content document (XHTML)", opf_path);
     auto doc = MarkupWalk(std::move(parts)).run();

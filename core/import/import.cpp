@@ -9,6 +9,7 @@
 #include "import/encoding.hpp"
 #include "import/importers.hpp"
 #include "import/text_lines.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import {
 namespace {
@@ -194,17 +195,15 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
 }
 
 Result<document::Document> import_file(const std::filesystem::path& path, const ImportOptions& options) {
-    auto bytes = read_file(path, max_import_bytes);
-    if (!bytes) return std::unexpected(bytes.error());
-    return import_bytes(*bytes, path.string(), options);
+    TACTUS_TRY(bytes, read_file(path, max_import_bytes));
+    return import_bytes(bytes, path.string(), options);
 }
 
 Result<TextFile> read_text_file(const std::filesystem::path& path, const ImportOptions& options) {
-    auto bytes = read_file(path, max_import_bytes);
-    if (!bytes) return std::unexpected(bytes.error());
-    auto decoded = detail::decode_text(*bytes, options.encoding);
+    TACTUS_TRY(bytes, read_file(path, max_import_bytes));
+    auto decoded = detail::decode_text(bytes, options.encoding);
     if (!decoded) return std::unexpected(located(decoded.error(), path.string()));
-    return TextFile{std::string(decoded->text(*bytes)), decoded->encoding, decoded->byte_order_mark};
+    return TextFile{std::string(decoded->text(bytes)), decoded->encoding, decoded->byte_order_mark};
 }
 
 }  // namespace tactus::import

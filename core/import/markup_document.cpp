@@ -11,6 +11,7 @@
 #include "common/nesting.hpp"
 #include "import/markup_walk.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -78,7 +79,7 @@ int MarkupDocument::line_of(const pugi::xml_node& node) const {
 Result<std::unique_ptr<MarkupDocument>> parse_xml_markup(std::string text, std::string_view part) {
     auto doc = std::make_unique<MarkupDocument>();
     doc->text = std::move(text);
-    if (auto ok = parse_xml(doc->xml, doc->text, part); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(parse_xml(doc->xml, doc->text, part));
     doc->xml_lines = std::make_unique<LineIndex>(doc->text);
     return doc;
 }

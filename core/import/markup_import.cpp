@@ -12,6 +12,7 @@
 #include "import/markup_document.hpp"
 #include "import/markup_walk.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 
@@ -21,9 +22,8 @@ Result<std::string> markup_text(std::string_view bytes) {
     auto body = bytes.starts_with("\xEF\xBB\xBF") ? bytes.substr(3) : bytes;
     if (find_invalid_utf8(body) == std::string_view::npos && body.find('\0') == std::string_view::npos)
         return std::string(body);
-    auto decoded = decode_text(bytes, {});
-    if (!decoded) return std::unexpected(decoded.error());
-    return std::string(decoded->text(bytes));
+    TACTUS_TRY(decoded, decode_text(bytes, {}));
+    return std::string(decoded.text(bytes));
 }
 
 namespace {
@@ -49,9 +49,8 @@ void add_metadata(document::Document& doc, std::string name, std::string_view va
 }  // namespace
 
 Result<document::Document> import_html(std::string_view bytes) {
-    auto text = markup_text(bytes);
-    if (!text) return std::unexpected(text.error());
-    auto parsed = parse_xhtml_or_html(std::move(*text), {});
+    TACTUS_TRY(text, markup_text(bytes));
+    auto parsed = parse_xhtml_or_html(std::move(text), {});
     if (!parsed) return std::unexpected(parsed.error());
     const auto& tree = **parsed;
     auto doc = MarkupWalk({MarkupPart{{}, tree.xml, tree.lines()}}).run();
@@ -71,9 +70,8 @@ Result<document::Document> import_html(std::string_view bytes) {
 }
 
 Result<document::Document> import_dtbook(std::string_view bytes) {
-    auto text = markup_text(bytes);
-    if (!text) return std::unexpected(text.error());
-    auto parsed = parse_xml_markup(std::move(*text), {});
+    TACTUS_TRY(text, markup_text(bytes));
+    auto parsed = parse_xml_markup(std::move(text), {});
     if (!parsed) return std::unexpected(parsed.error());
     const auto& tree = **parsed;
     const auto root = tree.xml.document_element();

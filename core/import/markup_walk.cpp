@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 
@@ -282,7 +283,7 @@ Result<document::Document> MarkupWalk::run() {
             if (id) notes_.emplace(parts_[i].name + "#" + id.value(), e);
         });
     for (part_ = 0; part_ < parts_.size(); ++part_) {
-        if (auto ok = walk(parts_[part_].root, Context{}, 0); !ok) return std::unexpected(ok.error());
+        TACTUS_TRY_VOID(walk(parts_[part_].root, Context{}, 0));
         close();
         flush_breaks();
         if (builder_.full()) break;

@@ -38,6 +38,7 @@
 #include "import/office_package.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 
@@ -518,16 +519,15 @@ private:
 }  // namespace
 
 Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
-    auto package = XmlPackage::open(bytes, "an OpenDocument text");
-    if (!package) return std::unexpected(package.error());
-    if (package->contains("mimetype")) {
-        auto type = package->read("mimetype", 256);
+    TACTUS_TRY(package, XmlPackage::open(bytes, "an OpenDocument text"));
+    if (package.contains("mimetype")) {
+        auto type = package.read("mimetype", 256);
         if (type && *type != "application/vnd.oasis.opendocument.text")
             return fail(ErrorKind::input, "not an OpenDocument text but " + *type + " (only text documents are read)", "mimetype");
     }
     XmlPart styles_xml, content_xml;
-    if (auto ok = package->load("styles.xml", styles_xml, false); !ok) return std::unexpected(ok.error());
-    if (auto ok = package->load("content.xml", content_xml, true); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(package.load("styles.xml", styles_xml, false));
+    TACTUS_TRY_VOID(package.load("content.xml", content_xml, true));
 
     OdtStyles styles;
     OdtListStyles lists;
@@ -542,7 +542,7 @@ Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
     const auto text = child(child(top, "body"), "text");
     if (local_name(top) != "document-content" || !text)
         return fail(ErrorKind::input, "not an OpenDocument text: no <office:body>/<office:text>", "content.xml");
-    OdtReader reader(styles, lists, *package, ruby, content_xml.bytes);
+    OdtReader reader(styles, lists, package, ruby, content_xml.bytes);
     reader.container(text);
     return reader.finish();
 }

@@ -5,6 +5,7 @@
 
 #include "import/import.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -16,9 +17,8 @@ constexpr int kMaxColumns = 1024;
 }  // namespace
 
 Result<XmlPackage> XmlPackage::open(std::string_view bytes, std::string kind) {
-    auto zip = ZipArchive::open(bytes);
-    if (!zip) return std::unexpected(zip.error());
-    return XmlPackage(std::move(*zip), std::move(kind));
+    TACTUS_TRY(zip, ZipArchive::open(bytes));
+    return XmlPackage(std::move(zip), std::move(kind));
 }
 
 Result<bool> XmlPackage::load(const std::string& part, XmlPart& out, bool required) const {
@@ -26,10 +26,9 @@ Result<bool> XmlPackage::load(const std::string& part, XmlPart& out, bool requir
         if (required) return fail(ErrorKind::input, "not " + kind_ + ": missing part " + part, part);
         return false;
     }
-    auto bytes = zip_.read(part, max_import_bytes);
-    if (!bytes) return std::unexpected(bytes.error());
-    out.bytes = std::move(*bytes);
-    if (auto ok = parse_xml(out.xml, out.bytes, part); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY(bytes, zip_.read(part, max_import_bytes));
+    out.bytes = std::move(bytes);
+    TACTUS_TRY_VOID(parse_xml(out.xml, out.bytes, part));
     return true;
 }
 

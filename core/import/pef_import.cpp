@@ -14,6 +14,7 @@
 #include "import/importers.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
+#include "common/try.hpp"
 
 namespace tactus::import::detail {
 namespace {
@@ -53,18 +54,18 @@ public:
         for (const auto& volume : pef_children(body, "volume")) {
             any_volume = true;
             Grid volume_grid;
-            if (auto ok = read_grid(volume, volume_grid, true); !ok) return std::unexpected(ok.error());
+            TACTUS_TRY_VOID(read_grid(volume, volume_grid, true));
             bool first_section = true;
             for (const auto& section : pef_children(volume, "section")) {
                 Grid grid = volume_grid;
-                if (auto ok = read_grid(section, grid, false); !ok) return std::unexpected(ok.error());
+                TACTUS_TRY_VOID(read_grid(section, grid, false));
                 sections_.push_back(document::BrailleSection{builder_.size(), grid.cols, grid.rows, grid.duplex,
                                                              first_section, grid.rowgap});
                 first_section = false;
                 max_cols_ = std::max(max_cols_, grid.cols);
                 max_rows_ = std::max(max_rows_, grid.rows);
                 for (const auto& page : pef_children(section, "page"))
-                    if (auto ok = read_page(page, grid); !ok) return std::unexpected(ok.error());
+                    TACTUS_TRY_VOID(read_page(page, grid));
             }
         }
         if (!any_volume) return fail(ErrorKind::input, "PEF <body> has no <volume>", std::to_string(line_of(body)));
@@ -150,13 +151,12 @@ private:
         builder_.braille_page_break(line_of(page));
         std::vector<document::BrailleLine> rows;
         for (const auto& row : pef_children(page, "row")) {
-            auto line = read_row(row);
-            if (!line) return std::unexpected(line.error());
-            if (static_cast<int>(line->size()) > grid.cols)
-                return fail(ErrorKind::input, "row of " + std::to_string(line->size()) + " cells is longer than cols=\"" +
+            TACTUS_TRY(line, read_row(row));
+            if (static_cast<int>(line.size()) > grid.cols)
+                return fail(ErrorKind::input, "row of " + std::to_string(line.size()) + " cells is longer than cols=\"" +
                                 std::to_string(grid.cols) + "\"",
                             std::to_string(line_of(row)));
-            rows.push_back(std::move(*line));
+            rows.push_back(std::move(line));
         }
         if (static_cast<int>(rows.size()) > grid.rows)
             return fail(ErrorKind::input, "page has " + std::to_string(rows.size()) + " rows but rows=\"" + std::to_string(grid.rows) +
@@ -167,7 +167,7 @@ private:
     }
 
     Result<document::BrailleLine> read_row(const pugi::xml_node& row) {
-        if (auto ok = read_rowgap(row, false); !ok) return std::unexpected(ok.error());
+        TACTUS_TRY_VOID(read_rowgap(row, false));
         const auto decoded = utf8_to_utf32(row.child_value());
         if (!decoded) return std::unexpected(located(decoded.error(), std::to_string(line_of(row))));
         document::BrailleLine line;
@@ -224,7 +224,7 @@ private:
 
 Result<document::Document> import_pef(std::string_view bytes) {
     pugi::xml_document xml;
-    if (auto ok = parse_xml(xml, bytes, ""); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(parse_xml(xml, bytes, ""));
     const auto root = xml.document_element();
     if (!root) return fail(ErrorKind::input, "no root element", "1");
     return PefReader(bytes).read(root);

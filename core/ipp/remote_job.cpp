@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "ipp_connection.hpp"
+#include "common/try.hpp"
 
 namespace tactus::ipp {
 namespace {
@@ -97,8 +98,7 @@ Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.file, ec))
         return fail(ErrorKind::input, "no such document", request.file.string());
-    auto http = detail::connect(queue.host, queue.port, queue.tls);
-    if (!http) return std::unexpected(http.error());
+    TACTUS_TRY(http, detail::connect(queue.host, queue.port, queue.tls));
     ipp_t* req = job_request(IPP_OP_PRINT_JOB, queue, 0);
     const auto name = request.file.filename().string();
     ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_NAME, "job-name", nullptr,
@@ -116,7 +116,7 @@ Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
     cupsEncodeOptions2(req, count, options, IPP_TAG_JOB);
     cupsFreeOptions(count, options);
     auto response =
-        detail::call(http->get(), req, queue.resource, "send the job", request.file.string());
+        detail::call(http.get(), req, queue.resource, "send the job", request.file.string());
     if (!response) return std::unexpected(response.error());
     const int id = integer(response->get(), "job-id");
     if (id <= 0)
@@ -125,9 +125,8 @@ Result<int> submit_job(const QueueUri& queue, const RemoteJobRequest& request) {
 }
 
 Result<void> cancel_job(const QueueUri& queue, int job_id) {
-    auto http = detail::connect(queue.host, queue.port, queue.tls);
-    if (!http) return std::unexpected(http.error());
-    return cancel_on(http->get(), queue, job_id);
+    TACTUS_TRY(http, detail::connect(queue.host, queue.port, queue.tls));
+    return cancel_on(http.get(), queue, job_id);
 }
 
 Result<RemoteJobStatus> follow_job(const QueueUri& queue, int job_id,
@@ -199,12 +198,11 @@ Result<RemoteJobStatus> send_and_follow(const QueueUri& queue, const RemoteJobRe
                                         const std::function<void(int)>& on_sent,
                                         const std::function<void(const RemoteJobStatus&)>& on_change,
                                         const std::atomic<bool>& cancel, FollowOptions options) {
-    const auto id = submit_job(queue, request);
-    if (!id) return std::unexpected(id.error());
-    on_sent(*id);
+    TACTUS_TRY(id, submit_job(queue, request));
+    on_sent(id);
     std::optional<RemoteJobStatus> shown;
     return follow_job(
-        queue, *id,
+        queue, id,
         [&](const RemoteJobStatus& s) {
             if (!worth_telling(shown, s)) return;
             on_change(s);

@@ -7,6 +7,7 @@
 
 #include "ipp/queue_uri.hpp"
 #include "ipp_connection.hpp"
+#include "common/try.hpp"
 
 namespace tactus::ipp {
 namespace {
@@ -82,8 +83,7 @@ bool is_tactus_queue(std::string_view device_uri, std::string_view make_and_mode
 }
 
 Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port) {
-    auto http = detail::connect(host, port, false);
-    if (!http) return std::unexpected(http.error());
+    TACTUS_TRY(http, detail::connect(host, port, false));
     ipp_t* req = ippNewRequest(IPP_OP_CUPS_GET_PRINTERS);
     static const char* const wanted[] = {
         "printer-name", "printer-info",  "printer-location",      "printer-make-and-model",
@@ -91,7 +91,7 @@ Result<std::vector<RemoteQueue>> tactus_queues(const std::string& host, int port
     ippAddStrings(req, IPP_TAG_OPERATION, IPP_TAG_KEYWORD, "requested-attributes",
                   static_cast<int>(std::size(wanted)), nullptr, wanted);
     ippAddString(req, IPP_TAG_OPERATION, IPP_TAG_NAME, "requesting-user-name", nullptr, cupsUser());
-    auto response = detail::call(http->get(), req, "/", "list the queues of " + host);
+    auto response = detail::call(http.get(), req, "/", "list the queues of " + host);
     if (!response) return std::unexpected(response.error());
     std::vector<RemoteQueue> out;
     // The response is one attribute group per printer, separated by IPP_TAG_ZERO.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "link/link_impl.hpp"
+#include "common/try.hpp"
 
 namespace tactus::link {
 
@@ -108,7 +109,7 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
         js.bytes_total += js.stream.bytes.size();
         return {};
     };
-    if (auto r = build({js.first, 0, false}); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(build({js.first, 0, false}));
 
     const std::size_t total = js.table.size() - js.first;
     double data_start = -1;
@@ -168,25 +169,23 @@ Result<JobOutcome> Link::Impl::send_job(const plan::JobPlan& plan, std::size_t s
     // it restarted or stopped on a fault that dropped its buffer.
     auto restart = [&]() -> Result<void> {
         ++stats.restarts;
-        if (auto h = hello(); !h) return std::unexpected(h.error());
+        TACTUS_TRY_VOID(hello());
         // A NAK *no session* that came before the HELLO_REPLY answered a
         // frame sent to the restarted controller before this HELLO (it
         // replies in order): it is about the session this one replaces.
         session_lost = false;
         if (config) {
-            auto payload = config_payload();
-            if (!payload) return std::unexpected(payload.error());
-            if (auto r = transact(FrameType::configure, std::move(*payload)); !r) return r;
+            TACTUS_TRY(payload, config_payload());
+            if (auto r = transact(FrameType::configure, std::move(payload)); !r) return r;
         }
-        auto st = status();
-        if (!st) return std::unexpected(st.error());
-        ack = st->ack;
+        TACTUS_TRY(st, status());
+        ack = st.ack;
         report_executed();
         encode::StreamStart start{js.reported, 0, false};
-        if (st->ack.job_id == js.job_id && (st->flags & encode::flag::job_active)) {
-            const bool in_pass = (st->flags & encode::flag::pass_active) != 0;
-            start.skip = in_pass ? st->ack.strikes_in_pass : 0;
-            start.mid_sheet = st->sheet != 0 && st->sheet == js.sheet_of(js.reported);
+        if (st.ack.job_id == js.job_id && (st.flags & encode::flag::job_active)) {
+            const bool in_pass = (st.flags & encode::flag::pass_active) != 0;
+            start.skip = in_pass ? st.ack.strikes_in_pass : 0;
+            start.mid_sheet = st.sheet != 0 && st.sheet == js.sheet_of(js.reported);
         }
         note("controller " + std::string(saw_power_loss ? "lost power" : "restarted") +
              ": resuming at " + where() +

@@ -4,6 +4,7 @@
 #include "link/link_impl.hpp"
 #include "controller/open_device.hpp"
 #include "transport/device.hpp"
+#include "common/try.hpp"
 
 namespace tactus::link {
 
@@ -13,9 +14,8 @@ Link& Link::operator=(Link&&) noexcept = default;
 Link::~Link() = default;
 
 Result<Link> Link::open(std::string_view device, LinkOptions options) {
-    auto s = controller::open_device(device, options.sim_firmware);
-    if (!s) return std::unexpected(s.error());
-    auto link = over(std::move(*s), options);
+    TACTUS_TRY(s, controller::open_device(device, options.sim_firmware));
+    auto link = over(std::move(s), options);
     link.impl_->device = std::string(device);
     return link;
 }
@@ -32,9 +32,8 @@ Result<HelloReply> Link::hello() { return impl_->hello(); }
 
 Result<void> Link::configure(const machine::ControllerConfig& config) {
     impl_->config = config;
-    auto payload = impl_->config_payload();
-    if (!payload) return std::unexpected(payload.error());
-    return impl_->transact(FrameType::configure, std::move(*payload));
+    TACTUS_TRY(payload, impl_->config_payload());
+    return impl_->transact(FrameType::configure, std::move(payload));
 }
 
 Result<void> Link::use_firmware_tables(const machine::FirmwareTables& tables, const machine::StrikeTiming& timing) {
@@ -50,8 +49,7 @@ Result<void> Link::abort() { return impl_->transact(FrameType::abort, {}); }
 
 Result<void> Link::reconnect() {
     if (auto r = impl_->reconnect_device(); !r) return r;
-    auto h = impl_->hello();
-    if (!h) return std::unexpected(h.error());
+    TACTUS_TRY_VOID(impl_->hello());
     return {};
 }
 

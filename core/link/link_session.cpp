@@ -9,6 +9,7 @@
 #include <string>
 
 #include "link/link_impl.hpp"
+#include "common/try.hpp"
 
 namespace tactus::link {
 
@@ -141,38 +142,34 @@ Result<void> Link::Impl::handle(const Frame& f) {
     const auto type = static_cast<FrameType>(f.type);
     switch (type) {
         case FrameType::hello_reply: {
-            auto h = encode::decode_hello_reply(f.payload);
-            if (!h) return std::unexpected(h.error());
-            last_hello = *h;
+            TACTUS_TRY(h, encode::decode_hello_reply(f.payload));
+            last_hello = h;
             if (!unacked.empty() && unacked.front().type == FrameType::hello &&
                 f.seq == static_cast<std::uint8_t>(unacked.front().seq + 1))
                 unacked.pop_front();
             return {};
         }
         case FrameType::ack: {
-            auto a = encode::decode_ack(f.payload);
-            if (!a) return std::unexpected(a.error());
-            ack = *a;
+            TACTUS_TRY(a, encode::decode_ack(f.payload));
+            ack = a;
             break;
         }
         case FrameType::status_reply: {
-            auto st = encode::decode_status(f.payload);
-            if (!st) return std::unexpected(st.error());
-            last_status = *st;
-            ack = st->ack;
+            TACTUS_TRY(st, encode::decode_status(f.payload));
+            last_status = st;
+            ack = st.ack;
             break;
         }
         case FrameType::nak: {
-            auto n = encode::decode_nak(f.payload);
-            if (!n) return std::unexpected(n.error());
-            ack = n->second;
+            TACTUS_TRY(n, encode::decode_nak(f.payload));
+            ack = n.second;
             ++stats.naks;
-            switch (n->first) {
+            switch (n.first) {
                 case encode::NakReason::no_session: session_lost = true; break;
                 case encode::NakReason::bad_payload:
                 case encode::NakReason::unknown_type:
                     refused = Error{"the controller refused a frame (" +
-                                        std::string(n->first == encode::NakReason::bad_payload
+                                        std::string(n.first == encode::NakReason::bad_payload
                                                         ? "malformed payload"
                                                         : "unknown type") +
                                         "): firmware and host disagree on the protocol",
@@ -184,9 +181,9 @@ Result<void> Link::Impl::handle(const Frame& f) {
             // A refused frame is not lost: sending it again cannot help
             // (and a re-sent HELLO of a refused version would be refused
             // again after the next version was offered).
-            const bool refusal = n->first == encode::NakReason::bad_payload ||
-                                 n->first == encode::NakReason::unknown_type;
-            if (n->first != encode::NakReason::no_session && !refusal) {
+            const bool refusal = n.first == encode::NakReason::bad_payload ||
+                                 n.first == encode::NakReason::unknown_type;
+            if (n.first != encode::NakReason::no_session && !refusal) {
                 acknowledge_through(f.seq);
                 // Go back to the first frame it lacks, at most once per round trip.
                 if (!unacked.empty() && s->now() - last_goback > rto() / 2) {
@@ -267,7 +264,7 @@ Result<std::optional<HelloReply>> Link::Impl::hello_as(std::uint8_t version) {
     unacked.push_back({seq, FrameType::hello, payload, s->now()});
     const double start = s->now();
     const std::size_t garbled_before = decoder.stats().crc_errors;
-    if (auto r = transmit(unacked.back()); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(transmit(unacked.back()));
     while (!last_hello) {
         // As transact: silent for the silence timeout, or no session by
         // the give-up (the controller answers, but the line garbles it).
@@ -286,7 +283,7 @@ Result<std::optional<HelloReply>> Link::Impl::hello_as(std::uint8_t version) {
             ++session_timeouts;
             unacked.front().sent_at = s->now();
             ++stats.frames_resent;
-            if (auto r = transmit(unacked.front()); !r) return std::unexpected(r.error());
+            TACTUS_TRY_VOID(transmit(unacked.front()));
         }
         if (auto r = pump(unacked.front().sent_at + rto() - s->now()); !r)
             return std::unexpected(r.error());
@@ -341,7 +338,7 @@ Result<HelloReply> Link::Impl::hello() {
             // run in 1,500 at 2e-2). Let them arrive first; they are ignored.
             const double until = s->now() + rto();
             while (s->now() < until)
-                if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
+                TACTUS_TRY_VOID(pump(until - s->now()));
         }
     std::string offered;
     for (const auto v : versions) offered += (offered.empty() ? "" : " and ") + std::to_string(v);
@@ -353,11 +350,11 @@ Result<HelloReply> Link::Impl::hello() {
 Result<Status> Link::Impl::status() {
     last_status.reset();
     for (int attempt = 0; attempt < 3; ++attempt) {
-        if (auto r = transact(FrameType::status, {}); !r) return std::unexpected(r.error());
+        TACTUS_TRY_VOID(transact(FrameType::status, {}));
         // The reply may have been lost while a later ACK got through; wait a little.
         const double until = s->now() + rto();
         while (!last_status && s->now() < until)
-            if (auto r = pump(until - s->now()); !r) return std::unexpected(r.error());
+            TACTUS_TRY_VOID(pump(until - s->now()));
         if (last_status) return *last_status;
     }
     return fail(ErrorKind::device, "no status reply from the controller", device);

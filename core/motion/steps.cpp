@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motion/steps.hpp"
+#include "common/try.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -240,9 +241,8 @@ Result<StepMove> encode_move(const MoveShape& shape, std::int32_t steps, double 
     const auto n = static_cast<std::uint32_t>(std::abs(steps));
     if (n == 0) return m;
     const auto ticks = step_times_ticks(shape, n, steps_per_mm);
-    auto seg = compress_steps(ticks, step_tolerances(ticks, tolerance_fraction));
-    if (!seg) return std::unexpected(seg.error());
-    m.segments = std::move(*seg);
+    TACTUS_TRY(seg, compress_steps(ticks, step_tolerances(ticks, tolerance_fraction)));
+    m.segments = std::move(seg);
     const auto fired = expand_steps(m.segments);
     const auto end = std::llround(shape.duration * machine::kTickHz);
     if (!fired.empty() && end > fired.back())

@@ -8,6 +8,7 @@
 #include "common/utf8.hpp"
 #include "layout/paginator.hpp"
 #include "translate/translated_document.hpp"
+#include "common/try.hpp"
 
 namespace tactus::pipeline {
 namespace {
@@ -43,7 +44,7 @@ public:
     }
 
     Result<BookLayout> make() {
-        if (auto ok = translate_all(); !ok) return std::unexpected(ok.error());
+        TACTUS_TRY_VOID(translate_all());
         // First pass: where each block falls, to choose the volume breaks.
         std::vector<std::size_t> start_page;
         std::size_t total_pages = 0;
@@ -100,17 +101,16 @@ public:
         }
 
         for (std::size_t v = 0; v < bodies.size(); ++v) {
-            auto prelims = preliminary_pages(v, bodies.size());
-            if (!prelims) return std::unexpected(prelims.error());
+            TACTUS_TRY(prelims, preliminary_pages(v, bodies.size()));
             VolumeRange range;
             range.first_page = out.pages.pages.size();
             layout::PageSection volume_section;
             volume_section.first_page = range.first_page;
             volume_section.duplex = layout_.geometry.interpoint;
             volume_section.starts_volume = true;
-            if (!prelims->empty()) {
+            if (!prelims.empty()) {
                 out.pages.sections.push_back(volume_section);
-                append(out.pages.pages, std::move(*prelims));
+                append(out.pages.pages, std::move(prelims));
             }
             range.body_first_page = out.pages.pages.size();
             layout::PageSection body_section = volume_section;
@@ -159,9 +159,8 @@ private:
     }
 
     Result<BrailleLine> braille(std::string_view utf8) {
-        auto text = utf8_to_utf32(utf8);
-        if (!text) return std::unexpected(text.error());
-        return translator_.translate(*text);
+        TACTUS_TRY(text, utf8_to_utf32(utf8));
+        return translator_.translate(text);
     }
 
     // The blocks where volumes start: a volume ends at the last chapter or
@@ -223,9 +222,8 @@ private:
             b.kind = kind;
             b.level = level;
             b.spans.push_back(document::Span{std::string(text)});
-            auto tb = translate::translate_block(b, translator_, layout::word_room(layout_, kind, level));
-            if (!tb) return std::unexpected(tb.error());
-            blocks.push_back(std::move(*tb));
+            TACTUS_TRY(tb, translate::translate_block(b, translator_, layout::word_room(layout_, kind, level)));
+            blocks.push_back(std::move(tb));
             return {};
         };
         if (book_.title_page) {
@@ -238,7 +236,7 @@ private:
             for (const auto& text : {book_title(), author.empty() ? std::string{} : "by " + author,
                                      book_.transcriber.empty() ? std::string{} : "Transcribed by " + book_.transcriber,
                                      publisher, year})
-                if (auto ok = line(text); !ok) return std::unexpected(ok.error());
+                TACTUS_TRY_VOID(line(text));
             if (volumes > 1)
                 if (auto ok = line("Volume " + std::to_string(volume + 1) + " of " + std::to_string(volumes)); !ok)
                     return std::unexpected(ok.error());
@@ -253,13 +251,12 @@ private:
             for (const auto& h : headings_)
                 if (volume == 0 || h.volume == volume) entries.push_back(&h);
             if (!entries.empty()) {
-                if (auto ok = line("Contents"); !ok) return std::unexpected(ok.error());
+                TACTUS_TRY_VOID(line("Contents"));
                 for (const auto* h : entries) {
                     translate::TranslatedBlock b;
                     b.kind = BlockKind::braille;
-                    auto lines = contents_entry(*h);
-                    if (!lines) return std::unexpected(lines.error());
-                    b.lines = std::move(*lines);
+                    TACTUS_TRY(lines, contents_entry(*h));
+                    b.lines = std::move(lines);
                     blocks.push_back(std::move(b));
                 }
             }
@@ -284,9 +281,8 @@ private:
         const int width = layout_.geometry.cells_per_line - layout_.left_margin - layout_.right_margin;
         BrailleLine numbers;
         if (!h.print_page.empty()) {
-            auto print = braille(h.print_page);
-            if (!print) return std::unexpected(print.error());
-            numbers = *print;
+            TACTUS_TRY(print, braille(h.print_page));
+            numbers = print;
             numbers.push_back(Cell{});
         }
         const auto page = number(h.braille_page);

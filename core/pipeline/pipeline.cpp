@@ -16,6 +16,7 @@
 #include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
+#include "common/try.hpp"
 
 namespace tactus::pipeline {
 namespace {
@@ -79,7 +80,7 @@ layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::strin
 }  // namespace
 
 Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options) {
-    if (auto ok = validate(options.layout); !ok) return std::unexpected(ok.error());
+    TACTUS_TRY_VOID(validate(options.layout));
     if (document.blocks.empty() && !options.allow_empty) {
         // Pictures without a description, say, are not nothing: the reader
         // learns what was there and could not be put in braille.
@@ -93,12 +94,10 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     }
     if (layout::is_ready_braille(document) && !options.reflow_braille)
         return layout::keep_braille_pages(document, options.layout);
-    auto translator = translate::Translator::open(options.tables);
-    if (!translator) return std::unexpected(translator.error());
+    TACTUS_TRY(translator, translate::Translator::open(options.tables));
     if (options.book) {
-        auto book = lay_out_book(document, options.layout, *options.book, *translator);
-        if (!book) return std::unexpected(book.error());
-        auto doc = std::move(book->pages);
+        TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator));
+        auto doc = std::move(book.pages);
         doc.metadata = document.metadata;
         std::vector<std::string> first = document.warnings;
         if (auto w = translate::check_script(document, options.tables)) first.push_back(*w);
@@ -117,7 +116,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     auto number_cells = [&](int n) -> document::BrailleLine {
         if (auto it = numbers.find(n); it != numbers.end()) return it->second;
         const auto digits = std::to_string(n);
-        auto cells = translator->translate(std::u32string(digits.begin(), digits.end()));
+        auto cells = translator.translate(std::u32string(digits.begin(), digits.end()));
         if (!cells) {
             number_error = cells.error();
             return {};
@@ -138,7 +137,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
                                  ? options.translation_workers
                                  : TranslationWorkers::suggested_workers(document);
     if (workers > 1 && TranslationWorkers::available()) {
-        auto pool = TranslationWorkers::start(document, *translator, workers, 64, room);
+        auto pool = TranslationWorkers::start(document, translator, workers, 64, room);
         std::size_t done = 0, index = 0;
         if (!pool) return std::unexpected(pool.error());
         for (;;) {
@@ -162,7 +161,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
             options.progress(done + in_block, total);
         };
         for (const auto& block : document.blocks) {
-            auto tb = translate::translate_block(block, *translator, room(block),
+            auto tb = translate::translate_block(block, translator, room(block),
                                       options.progress ? on_piece : std::function<void(std::size_t)>{});
             if (options.progress) done += text_size(block);
             if (!tb) {
@@ -182,9 +181,8 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
 
 Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,
                                    const PipelineOptions& options) {
-    auto doc = import::import_file(path, options.import);
-    if (!doc) return std::unexpected(doc.error());
-    return lay_out(*doc, options);
+    TACTUS_TRY(doc, import::import_file(path, options.import));
+    return lay_out(doc, options);
 }
 
 }  // namespace tactus::pipeline

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "translate/louis.hpp"
+#include "common/try.hpp"
 
 namespace tactus::pipeline {
 namespace {
@@ -63,7 +64,7 @@ Result<TranslationWorkers> TranslationWorkers::start(const document::Document& d
     TranslationWorkers pool(document, std::max<std::size_t>(chunk_blocks, 1));
     workers = std::max(workers, 1u);
     // Compile the table before forking, so no worker compiles it again.
-    if (auto warm = translator.translate(U"a"); !warm) return std::unexpected(warm.error());
+    TACTUS_TRY_VOID(translator.translate(U"a"));
     for (unsigned w = 0; w < workers; ++w) {
         auto body = [&, w](platform::WorkerOutput& out) {
             // The child's copy of the lock is held by this (its only) thread.

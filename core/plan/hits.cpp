@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "plan/planner_internal.hpp"
+#include "common/try.hpp"
 
 namespace tactus::plan {
 
@@ -90,7 +91,7 @@ Result<const std::vector<Hit>*> collect_hits(const profile::PrinterProfile& p, c
         if (!page) continue;
         const auto index = static_cast<std::size_t>(page - doc.pages.data());
         if (check)
-            if (auto r = check_page(p, *page, index); !r) return std::unexpected(r.error());
+            TACTUS_TRY_VOID(check_page(p, *page, index));
         for (std::size_t l = 0; l < page->lines.size(); ++l) {
             const auto& line = page->lines[l];
             for (std::size_t c = 0; c < line.size(); ++c) {

@@ -9,6 +9,7 @@
 #include "machine/reference_firmware.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
+#include "common/try.hpp"
 
 namespace tactus::plan {
 namespace {
@@ -55,16 +56,14 @@ Result<std::string> word(const json& j, const char* key, std::initializer_list<c
 
 Result<motion::StepMove> move_from(const json& j, const std::string& where) {
     motion::StepMove m;
-    auto steps = get<std::int32_t>(j, "steps", where);
-    if (!steps) return std::unexpected(steps.error());
-    m.steps = *steps;
+    TACTUS_TRY(steps, get<std::int32_t>(j, "steps", where));
+    m.steps = steps;
     if (auto d = get<double>(j, "duration_s", where)) m.duration_s = *d;
     // The encoder sends it as the wait before the strike: absent is 0, a
     // wrong type is an error, never a silent 0.
     if (j.contains("settle_ticks")) {
-        auto settle = get<std::uint32_t>(j, "settle_ticks", where);
-        if (!settle) return std::unexpected(settle.error());
-        m.settle_ticks = *settle;
+        TACTUS_TRY(settle, get<std::uint32_t>(j, "settle_ticks", where));
+        m.settle_ticks = settle;
     }
     if (!j.contains("segments") || !j["segments"].is_array())
         return fail(ErrorKind::input, "missing segment list", where + ".segments");
@@ -140,9 +139,8 @@ Result<PlanFile> plan_from_json(const json& j) {
                         std::to_string(kPlanFileFormat) + ")",
                     "plan.tactus_plan");
     PlanFile file;
-    auto protocol = get<std::uint8_t>(j, "protocol", "plan");
-    if (!protocol) return std::unexpected(protocol.error());
-    file.protocol = *protocol;
+    TACTUS_TRY(protocol, get<std::uint8_t>(j, "protocol", "plan"));
+    file.protocol = protocol;
     if (file.protocol != machine::reference_firmware::kLegacyProtocol && file.protocol != machine::reference_firmware::kProtocol)
         return fail(ErrorKind::input, "link protocol " + std::to_string(file.protocol) + " is not one this Tactus speaks (2 or 3)",
                     "plan.protocol");
@@ -170,9 +168,8 @@ Result<PlanFile> plan_from_json(const json& j) {
         const auto& js = j["sheets"][si];
         const auto ws = "plan.sheets[" + std::to_string(si) + "]";
         plan::SheetPlan sheet;
-        auto idx = get<std::uint16_t>(js, "index", ws);
-        if (!idx) return std::unexpected(idx.error());
-        sheet.index = *idx;
+        TACTUS_TRY(idx, get<std::uint16_t>(js, "index", ws));
+        sheet.index = idx;
         const std::size_t previous = out.sheets.empty() ? 0 : out.sheets.back().index;
         if (sheet.index <= previous)
             return fail(ErrorKind::input, sheet.index == 0 ? std::string("sheets are numbered from 1")
@@ -185,42 +182,35 @@ Result<PlanFile> plan_from_json(const json& j) {
             const auto wp = ws + ".passes[" + std::to_string(pi) + "]";
             plan::Pass p;
             p.sheet = sheet.index;
-            auto side = word(jp, "side", {"front", "back"}, wp);
-            if (!side) return std::unexpected(side.error());
-            p.side = *side == "back" ? plan::Side::back : plan::Side::front;
+            TACTUS_TRY(side, word(jp, "side", {"front", "back"}, wp));
+            p.side = side == "back" ? plan::Side::back : plan::Side::front;
             if (auto y = get<double>(jp, "y_mm", wp)) p.y_mm = *y;
-            auto fs = get<std::int32_t>(jp, "feed_step", wp);
-            if (!fs) return std::unexpected(fs.error());
-            p.feed_step = *fs;
+            TACTUS_TRY(fs, get<std::int32_t>(jp, "feed_step", wp));
+            p.feed_step = fs;
             if (jp.contains("direction") && !jp["direction"].is_number())
                 return fail(ErrorKind::input, "not a number", wp + ".direction");
             p.direction = jp.contains("direction") && jp["direction"].get<double>() < 0 ? -1 : 1;
             if (!jp.contains("feed")) return fail(ErrorKind::input, "missing field", wp + ".feed");
-            auto feed = move_from(jp["feed"], wp + ".feed");
-            if (!feed) return std::unexpected(feed.error());
-            p.feed = *feed;
+            TACTUS_TRY(feed, move_from(jp["feed"], wp + ".feed"));
+            p.feed = feed;
             if (!jp.contains("strikes") || !jp["strikes"].is_array())
                 return fail(ErrorKind::input, "missing strikes", wp + ".strikes");
             for (std::size_t k = 0; k < jp["strikes"].size(); ++k) {
                 const auto& jk = jp["strikes"][k];
                 const auto wk = wp + ".strikes[" + std::to_string(k) + "]";
                 plan::Strike s;
-                auto hammer = word(jk, "hammer", {"convex", "concave"}, wk);
-                if (!hammer) return std::unexpected(hammer.error());
-                s.hammer = *hammer == "concave" ? plan::Hammer::concave : plan::Hammer::convex;
-                auto strike_side = word(jk, "side", {"front", "back"}, wk);
-                if (!strike_side) return std::unexpected(strike_side.error());
-                s.side = *strike_side == "back" ? plan::Side::back : plan::Side::front;
-                auto cs = get<std::int32_t>(jk, "carriage_step", wk);
-                if (!cs) return std::unexpected(cs.error());
-                s.carriage_step = *cs;
+                TACTUS_TRY(hammer, word(jk, "hammer", {"convex", "concave"}, wk));
+                s.hammer = hammer == "concave" ? plan::Hammer::concave : plan::Hammer::convex;
+                TACTUS_TRY(strike_side, word(jk, "side", {"front", "back"}, wk));
+                s.side = strike_side == "back" ? plan::Side::back : plan::Side::front;
+                TACTUS_TRY(cs, get<std::int32_t>(jk, "carriage_step", wk));
+                s.carriage_step = cs;
                 if (auto v = get<double>(jk, "x_mm", wk)) s.x_mm = *v;
                 if (auto v = get<double>(jk, "y_mm", wk)) s.y_mm = *v;
                 if (auto v = get<double>(jk, "time_s", wk)) s.time_s = *v;
                 if (!jk.contains("move")) return fail(ErrorKind::input, "missing field", wk + ".move");
-                auto m = move_from(jk["move"], wk + ".move");
-                if (!m) return std::unexpected(m.error());
-                p.moves.push_back(*m);
+                TACTUS_TRY(m, move_from(jk["move"], wk + ".move"));
+                p.moves.push_back(m);
                 p.strikes.push_back(s);
                 ++out.strikes;
             }
@@ -233,9 +223,8 @@ Result<PlanFile> plan_from_json(const json& j) {
 }
 
 Result<PlanFile> load_plan(const std::filesystem::path& path) {
-    auto text = read_file(path);
-    if (!text) return std::unexpected(text.error());
-    const auto j = json::parse(*text, nullptr, false);
+    TACTUS_TRY(text, read_file(path));
+    const auto j = json::parse(text, nullptr, false);
     if (j.is_discarded()) return fail(ErrorKind::input, "not valid JSON", path.string());
     auto p = plan_from_json(j);
     if (!p) return std::unexpected(located(p.error(), path.string()));
@@ -247,8 +236,7 @@ Result<PlanFile> load_plan(const std::filesystem::path& path) {
 namespace tactus::plan {
 
 Result<void> save_plan(const PlanFile& file, const std::filesystem::path& path) {
-    auto r = write_file_atomic(path, plan_to_json(file).dump() + "\n");
-    if (!r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(write_file_atomic(path, plan_to_json(file).dump() + "\n"));
     return {};
 }
 

@@ -10,34 +10,33 @@
 #include "plan/planner.hpp"
 #include "plan/planner_internal.hpp"
 #include "profile/profile_json.hpp"
+#include "common/try.hpp"
 
 namespace tactus::plan {
 
 Result<JobPlan> plan_job(const layout::PagedDocument& doc, const profile::PrinterProfile& p,
                          const PlanOptions& o, unsigned threads) {
-    auto planner = Planner::create(p, o);
-    if (!planner) return std::unexpected(planner.error());
+    TACTUS_TRY(planner, Planner::create(p, o));
     std::vector<SheetPlan> sheets;
     std::size_t passes = 0;
-    SheetQueue queue(*planner, doc, 1, threads);
+    SheetQueue queue(planner, doc, 1, threads);
     for (std::size_t s = 1; s <= doc.sheet_count(); ++s) {
-        auto sheet = queue.next();
-        if (!sheet) return std::unexpected(sheet.error());
-        passes += sheet->passes.size();
+        TACTUS_TRY(sheet, queue.next());
+        passes += sheet.passes.size();
         if (o.max_passes && passes > o.max_passes)
             return fail(ErrorKind::input, std::to_string(passes) + " passes in the first " + std::to_string(s) + " of " +
                             std::to_string(doc.sheet_count()) + " sheets, over the limit of " +
                             std::to_string(o.max_passes),
                         kTooManyPassesWhere);
-        sheets.push_back(std::move(*sheet));
+        sheets.push_back(std::move(sheet));
     }
-    JobPlan job = planner->totals();
+    JobPlan job = planner.totals();
     job.sheets = std::move(sheets);
     return job;
 }
 
 Result<double> naive_duration(const layout::PagedDocument& doc, const profile::PrinterProfile& p) {
-    if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
+    TACTUS_TRY_VOID(profile::validate(p));
     estimate::MoveTuner tuner(p);
     const motion::StepAxis carriage(p.carriage.steps_per_mm), feed(p.feed.steps_per_mm);
     const auto backlash = carriage.steps_for(p.carriage.backlash_mm);
@@ -52,9 +51,8 @@ Result<double> naive_duration(const layout::PagedDocument& doc, const profile::P
         std::sort(cols.begin(), cols.end());
     }
     auto move_time = [&](std::int32_t steps) -> Result<double> {
-        auto t = tuner.carriage(static_cast<std::uint32_t>(std::abs(steps)));
-        if (!t) return std::unexpected(t.error());
-        return (*t)->shape.duration;
+        TACTUS_TRY(t, tuner.carriage(static_cast<std::uint32_t>(std::abs(steps))));
+        return t->shape.duration;
     };
     double total = 0;
     std::int32_t head = 0;
@@ -78,13 +76,11 @@ Result<double> naive_duration(const layout::PagedDocument& doc, const profile::P
             const double feed_time = motion::jerk_min_time(feed_steps / p.feed.steps_per_mm,
                                                    {p.feed.v_max_mm_s, p.feed.a_max_mm_s2, p.feed.j_max_mm_s3});
             // Return to the first column (a reversal: backlash), then step right column by column.
-            auto back = move_time(std::abs(stops.front() - head) + (head != stops.front() ? backlash : 0));
-            if (!back) return std::unexpected(back.error());
-            total += std::max(feed_time, *back);
+            TACTUS_TRY(back, move_time(std::abs(stops.front() - head) + (head != stops.front() ? backlash : 0)));
+            total += std::max(feed_time, back);
             for (std::size_t i = 1; i < stops.size(); ++i) {
-                auto m = move_time(stops[i] - stops[i - 1] + (i == 1 ? backlash : 0));
-                if (!m) return std::unexpected(m.error());
-                total += *m;
+                TACTUS_TRY(m, move_time(stops[i] - stops[i - 1] + (i == 1 ? backlash : 0)));
+                total += m;
             }
             head = stops.back();
             total += static_cast<double>(end - first) * p.head.dwell_s;

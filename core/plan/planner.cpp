@@ -13,6 +13,7 @@
 #include "plan/planner_internal.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
+#include "common/try.hpp"
 
 namespace tactus::plan {
 
@@ -63,9 +64,9 @@ Planner::Planner(const profile::PrinterProfile& p, const PlanOptions& o)
 }
 
 Result<Planner> Planner::create(const profile::PrinterProfile& p, const PlanOptions& o) {
-    if (auto v = profile::validate(p); !v) return std::unexpected(v.error());
+    TACTUS_TRY_VOID(profile::validate(p));
     if (o.firmware)
-        if (auto t = profile::check_firmware_tables(*o.firmware, p); !t) return std::unexpected(t.error());
+        TACTUS_TRY_VOID(profile::check_firmware_tables(*o.firmware, p));
     return Planner(p, o);
 }
 
@@ -183,12 +184,11 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
         if (p_.motion.bidirectional) next_direction_ = -next_direction_;
 
         const auto feed_steps = static_cast<std::uint32_t>(pass.feed_step - feed_pos);
-        auto fm = feed_move(feed_steps);
-        if (!fm) return std::unexpected(fm.error());
-        pass.feed = *fm->first;
+        TACTUS_TRY(fm, feed_move(feed_steps));
+        pass.feed = *fm.first;
         pass.segments += pass.feed.segments.size();
         feed_pos = pass.feed_step;
-        const double feed_time = fm->second->duration + (feed_steps > 0 ? gap : 0.0);
+        const double feed_time = fm.second->duration + (feed_steps > 0 ? gap : 0.0);
         const double feed_bound = motion::jerk_min_time(feed_steps / p_.feed.steps_per_mm, feed_lim);
 
         const double t0 = clock_s_;
@@ -226,9 +226,8 @@ Result<SheetPlan> Planner::plan_hits(std::size_t sheet_number, const std::vector
                 const auto steps = static_cast<std::uint32_t>(std::abs(n));
                 if (steps >= tuned_.size()) tuned_.resize(steps + 1, nullptr);
                 if (!tuned_[steps]) {
-                    auto tuned = tuner_->carriage(steps);
-                    if (!tuned) return std::unexpected(tuned.error());
-                    tuned_[steps] = *tuned;
+                    TACTUS_TRY(tuned, tuner_->carriage(steps));
+                    tuned_[steps] = tuned;
                 }
                 const estimate::TunedMove& tm = *tuned_[steps];
                 sm = carriage_steps(static_cast<std::uint32_t>(std::abs(n)), tm.shape);

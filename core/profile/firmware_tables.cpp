@@ -10,6 +10,7 @@
 #include "common/file_io.hpp"
 #include "machine/limits.hpp"
 #include "profile/controller_config.hpp"
+#include "common/try.hpp"
 
 namespace tactus::profile {
 namespace {
@@ -55,12 +56,10 @@ Result<machine::FirmwareTables> parse_firmware_tables(std::string_view text) {
     } catch (const std::exception&) {
         return fail(ErrorKind::input, "must be 8 hex digits", "field table_id");
     }
-    auto c = read_table(j, "carriage");
-    if (!c) return std::unexpected(c.error());
-    auto f = read_table(j, "feed");
-    if (!f) return std::unexpected(f.error());
-    t.carriage = std::move(*c);
-    t.feed = std::move(*f);
+    TACTUS_TRY(c, read_table(j, "carriage"));
+    TACTUS_TRY(f, read_table(j, "feed"));
+    t.carriage = std::move(c);
+    t.feed = std::move(f);
     const auto gap = j.find("start_gap_ticks");
     if (gap == j.end() || !gap->is_number_unsigned() || gap->get<std::uint64_t>() == 0 ||
         gap->get<std::uint64_t>() > 0xFFFF)
@@ -71,9 +70,8 @@ Result<machine::FirmwareTables> parse_firmware_tables(std::string_view text) {
 }
 
 Result<machine::FirmwareTables> load_firmware_tables(const std::filesystem::path& path) {
-    auto text = read_file(path, std::size_t{1} << 20);
-    if (!text) return std::unexpected(text.error());
-    auto t = parse_firmware_tables(*text);
+    TACTUS_TRY(text, read_file(path, std::size_t{1} << 20));
+    auto t = parse_firmware_tables(text);
     if (!t) return std::unexpected(located(t.error(), path.string()));
     return t;
 }

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "common/file_io.hpp"
+#include "common/try.hpp"
 
 namespace tactus::profile {
 namespace {
@@ -262,7 +263,7 @@ Result<PrinterProfile> from_json(const json& j) {
                             {"damping_band", &p.vibration.damping_band},
                             {"frequency_band", &p.vibration.frequency_band}});
     if (!r) return std::unexpected(r.error());
-    if (auto v = validate(p); !v) return std::unexpected(v.error());
+    TACTUS_TRY_VOID(validate(p));
     return p;
 }
 
@@ -277,9 +278,8 @@ Result<PrinterProfile> parse_profile(std::string_view text) {
 }
 
 Result<PrinterProfile> load_profile(const std::filesystem::path& path) {
-    auto text = read_file(path, std::size_t{1} << 20);
-    if (!text) return std::unexpected(text.error());
-    auto p = parse_profile(*text);
+    TACTUS_TRY(text, read_file(path, std::size_t{1} << 20));
+    auto p = parse_profile(text);
     if (!p) return std::unexpected(located(p.error(), path.string()));
     return p;
 }

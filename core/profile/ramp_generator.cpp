@@ -13,6 +13,7 @@
 
 #include "machine/limits.hpp"
 #include "profile/firmware_tables.hpp"
+#include "common/try.hpp"
 
 namespace tactus::profile {
 namespace {
@@ -196,17 +197,15 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
             if (auto r = rate_error(*a, axis, round_even(kTick / (a->v_max_mm_s * a->steps_per_mm)), min); !r)
                 return std::unexpected(r.error());
     }
-    auto c = s_curve_table(p.carriage, "carriage");
-    if (!c) return std::unexpected(c.error());
-    auto f = s_curve_table(p.feed, "feed");
-    if (!f) return std::unexpected(f.error());
+    TACTUS_TRY(c, s_curve_table(p.carriage, "carriage"));
+    TACTUS_TRY(f, s_curve_table(p.feed, "feed"));
     machine::FirmwareTables t;
-    t.carriage.intervals = std::move(c->intervals);
-    t.feed.intervals = std::move(f->intervals);
+    t.carriage.intervals = std::move(c.intervals);
+    t.feed.intervals = std::move(f.intervals);
     // The carriage cruises on the fast path: its interval must fit one reload byte.
-    if (c->cruise > static_cast<long>(kFastMaxTicks))
+    if (c.cruise > static_cast<long>(kFastMaxTicks))
         return fail(ErrorKind::input, num(p.carriage.v_max_mm_s) + " mm/s x " + num(p.carriage.steps_per_mm) + " steps/mm = " +
-                        fmt(kTick / static_cast<double>(c->cruise), 0) +
+                        fmt(kTick / static_cast<double>(c.cruise), 0) +
                         " steps/s; the firmware's carriage cruises at " + fmt(kTick / kFastMaxTicks, 0) +
                         " steps/s or faster",
                     "field carriage.v_max_mm_s");

@@ -16,6 +16,7 @@
 #include "profile/firmware_tables.hpp"
 #include "profile/profile_json.hpp"
 #include "spool/printing.hpp"
+#include "common/try.hpp"
 
 namespace tactus::spool {
 namespace {
@@ -47,17 +48,15 @@ std::string first_difference(const profile::PrinterProfile& a, const profile::Pr
 
 Result<PrintJob> make_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
                                 std::string_view device, std::size_t copies) {
-    auto plan = plan_copies(document, profile, copies);
-    if (!plan) return std::unexpected(plan.error());
-    return assemble(std::move(*plan), profile, encode::kProtocolVersion, device);
+    TACTUS_TRY(plan, plan_copies(document, profile, copies));
+    return assemble(std::move(plan), profile, encode::kProtocolVersion, device);
 }
 
 Result<PrintJob> make_firmware_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
                                          const machine::FirmwareTables& tables, std::string_view device,
                                          std::size_t copies) {
-    auto plan = plan_copies(document, profile, copies, &tables);
-    if (!plan) return std::unexpected(plan.error());
-    auto job = assemble(std::move(*plan), profile, encode::kProtocolV3, device);
+    TACTUS_TRY(plan, plan_copies(document, profile, copies, &tables));
+    auto job = assemble(std::move(plan), profile, encode::kProtocolV3, device);
     job.firmware = tables;
     job.timing = profile::strike_timing(profile);
     return job;
@@ -97,8 +96,8 @@ Result<link::JobOutcome> send_print_job(link::Link& link, const PrintJob& job, s
                                         const link::ProgressFn& progress, const link::CancelToken& cancel,
                                         std::uint16_t job_id) {
     if (job.firmware)
-        if (auto t = link.use_firmware_tables(*job.firmware, job.timing); !t) return std::unexpected(t.error());
-    if (auto c = link.configure(job.config); !c) return std::unexpected(c.error());
+        TACTUS_TRY_VOID(link.use_firmware_tables(*job.firmware, job.timing));
+    TACTUS_TRY_VOID(link.configure(job.config));
     return link.send_job(job.plan, start_sheet, progress, cancel, job_id);
 }
 
@@ -153,8 +152,7 @@ std::size_t nth_sheet_begin(const encode::JobStream& s, int nth) {
 
 Result<StreamSize> measure_print_job(const layout::PagedDocument& document, const profile::PrinterProfile& profile,
                                      std::size_t start_sheet) {
-    auto planner = plan::Planner::create(profile);
-    if (!planner) return std::unexpected(planner.error());
+    TACTUS_TRY(planner, plan::Planner::create(profile));
     StreamSize out;
     FrameCounter frames(out);
     // The encoder carries one thing from sheet to sheet: the carriage position,
@@ -164,39 +162,36 @@ Result<StreamSize> measure_print_job(const layout::PagedDocument& document, cons
     std::size_t passes = 0;
     bool started = false;
     const std::size_t sheets = document.sheet_count();
-    plan::SheetQueue queue(*planner, document);  // a few sheets ahead on the machine's cores
+    plan::SheetQueue queue(planner, document);  // a few sheets ahead on the machine's cores
     for (std::size_t s = 1; s <= sheets; ++s) {
-        auto sheet = queue.next();
-        if (!sheet) return std::unexpected(sheet.error());
-        passes += sheet->passes.size();
+        TACTUS_TRY(sheet, queue.next());
+        passes += sheet.passes.size();
         if (passes > encode::kMaxJobPasses)
             return fail(ErrorKind::input, "more than 65,535 passes in one job (" + std::to_string(passes) + " in the first " +
                             std::to_string(s) + " of " + std::to_string(sheets) +
                             " sheets); the controller counts at most 65,535",
                         "plan");
         ++out.sheets;
-        for (const auto& p : sheet->passes) out.strikes += p.strikes.size();
+        for (const auto& p : sheet.passes) out.strikes += p.strikes.size();
         if (s >= start_sheet) {
             plan::JobPlan window;
             if (started && before) window.sheets.push_back(*before);
-            window.sheets.push_back(*sheet);
-            auto stream = encode::encode_job(window, 1, {});
-            if (!stream) return std::unexpected(stream.error());
-            const std::size_t from = started ? nth_sheet_begin(*stream, before ? 2 : 1) : 0;
-            frames.add(*stream, from, stream->op_ends.size() - 1);  // all but JOB_END
+            window.sheets.push_back(sheet);
+            TACTUS_TRY(stream, encode::encode_job(window, 1, {}));
+            const std::size_t from = started ? nth_sheet_begin(stream, before ? 2 : 1) : 0;
+            frames.add(stream, from, stream.op_ends.size() - 1);  // all but JOB_END
             frames.close(false);
             started = true;
         }
         bool strikes = false;
-        for (const auto& p : sheet->passes) strikes = strikes || !p.strikes.empty();
-        if (strikes) before = std::move(*sheet);
+        for (const auto& p : sheet.passes) strikes = strikes || !p.strikes.empty();
+        if (strikes) before = std::move(sheet);
     }
     if (!started) {
         // Nothing from start_sheet on: JOB_BEGIN, HOME and JOB_END alone.
         plan::JobPlan empty;
-        auto stream = encode::encode_job(empty, 1, {});
-        if (!stream) return std::unexpected(stream.error());
-        frames.add(*stream, 0, stream->op_ends.size());
+        TACTUS_TRY(stream, encode::encode_job(empty, 1, {}));
+        frames.add(stream, 0, stream.op_ends.size());
     } else {
         encode::JobStream end;
         encode::Op job_end;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "spool/printer_setup.hpp"
 
-#include "spool/try.hpp"
+#include "common/try.hpp"
 
 namespace tactus::spool {
 
@@ -21,13 +21,13 @@ std::string printer_name_for_device(std::string_view device) {
 Result<PrinterRecord> printer_for_device(Spool& spool, std::string_view device, std::string_view profile_json,
                                          bool* created) {
     if (created) *created = false;
-    SPOOL_LET(all, spool.printers());
+    TACTUS_TRY(all, spool.printers());
     for (const auto& p : all)
         if (p.device == device) return p;
     const std::string base = printer_name_for_device(device);
     std::string name = base;
     for (int n = 2; spool.printer(name); ++n) name = base + "-" + std::to_string(n);
-    SPOOL_LET(added, spool.add_printer(name, device, profile_json));
+    TACTUS_TRY(added, spool.add_printer(name, device, profile_json));
     if (created) *created = true;
     return added;
 }

@@ -15,7 +15,7 @@
 #include "spool/runner_token.hpp"
 #include "spool/settlement.hpp"
 #include "spool/snapshot.hpp"
-#include "spool/try.hpp"
+#include "common/try.hpp"
 #include "transport/device.hpp"
 
 namespace tactus::spool {
@@ -40,7 +40,7 @@ void sleep_unless(const std::atomic<bool>& stop, milliseconds d) {
 // unfinished: report it, and emboss it again in full next time.
 Result<void> spoil_interrupted(Spool& s, JobId id, std::size_t sheet, const std::string& why) {
     if (sheet == 0) return {};
-    SPOOL_LET(progress, s.progress(id));
+    TACTUS_TRY(progress, s.progress(id));
     if (sheet > progress.size() || progress[sheet - 1].done()) return {};
     return s.spoil_sheet(id, sheet,
                          sheet_word(sheet) + " was in the printer when " + why +
@@ -93,10 +93,9 @@ Runner::Runner(std::filesystem::path db, std::string printer, ConnectFn connect,
 Runner::~Runner() { finish(); }
 
 Result<void> Runner::start() {
-    auto s = Spool::open(db_path_, {.create = false});
-    if (!s) return std::unexpected(s.error());
-    spool_.emplace(std::move(*s));
-    SPOOL_LET(p, spool_->printer(printer_name_));
+    TACTUS_TRY(s, Spool::open(db_path_, {.create = false}));
+    spool_.emplace(std::move(s));
+    TACTUS_TRY(p, spool_->printer(printer_name_));
     printer_ = p;
     return spool_->claim_printer(printer_.id, token_);
 }
@@ -109,28 +108,27 @@ void Runner::finish() {
 
 Result<void> Runner::run(const std::atomic<bool>& stop) {
     while (!stop.load()) {
-        SPOOL_LET(end, run_next(stop));
+        TACTUS_TRY(end, run_next(stop));
         if (!end) sleep_unless(stop, options_.poll);
     }
     return {};
 }
 
 Result<std::optional<RunEnd>> Runner::run_next(const std::atomic<bool>& stop) {
-    SPOOL_LET(job, spool_->claim_next(printer_.id, token_, now_seconds()));
+    TACTUS_TRY(job, spool_->claim_next(printer_.id, token_, now_seconds()));
     if (!job) return std::optional<RunEnd>{};
-    SPOOL_LET(end, run_job(std::move(*job), stop));
+    TACTUS_TRY(end, run_job(std::move(*job), stop));
     return std::optional<RunEnd>{end};
 }
 
 Result<void> Runner::connect() {
-    SPOOL_LET(p, spool_->printer(printer_.id));  // the device may have been changed
+    TACTUS_TRY(p, spool_->printer(printer_.id));  // the device may have been changed
     printer_ = p;
-    auto link = connect_(printer_);
-    if (!link) return std::unexpected(link.error());
-    if (auto h = link->hello(); !h) return std::unexpected(h.error());
+    TACTUS_TRY(link, connect_(printer_));
+    TACTUS_TRY_VOID(link.hello());
     // No CONFIGURE here: each job sends its own, from the profile it was
     // planned with (run_job), after the open runs are settled.
-    link_.emplace(std::move(*link));
+    link_.emplace(std::move(link));
     (void)spool_->log({}, printer_.id, "connected", "connected to " + printer_.device);
     if (auto r = settle_open_runs(); !r) {
         link_.reset();
@@ -147,16 +145,16 @@ Result<void> Runner::connect() {
 // is settled with it (settlement.hpp, in one transaction each); then a job the
 // controller still holds is aborted so it can never run on.
 Result<void> Runner::settle_open_runs() {
-    SPOOL_LET(st, link_->status());
+    TACTUS_TRY(st, link_->status());
     controller_job_ = st.ack.job_id;
-    SPOOL_LET(open, spool_->open_runs(printer_.id));
+    TACTUS_TRY(open, spool_->open_runs(printer_.id));
     for (const auto& job : open) {
-        SPOOL_LET(progress, spool_->progress(job.id));
-        SPOOL_TRY(spool_->settle_run(job.id, settle(job, progress, st)));
+        TACTUS_TRY(progress, spool_->progress(job.id));
+        TACTUS_TRY_VOID(spool_->settle_run(job.id, settle(job, progress, st)));
     }
     if ((st.flags & encode::flag::job_active) != 0) {
         if (auto a = link_->abort(); !a) return a;
-        SPOOL_TRY(spool_->log({}, printer_.id, "aborted",
+        TACTUS_TRY_VOID(spool_->log({}, printer_.id, "aborted",
                               "the interrupted stream left on the controller (job " + std::to_string(st.ack.job_id) +
                                   ") was aborted"));
     }
@@ -167,14 +165,14 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
     link_.reset();  // reopen from scratch next time
     const int attempt = job.retries + 1;
     if (attempt > options_.max_retries) {
-        SPOOL_TRY(spool_->set_state(job.id, JobState::paused,
+        TACTUS_TRY_VOID(spool_->set_state(job.id, JobState::paused,
                                     why + " (gave up after " + std::to_string(options_.max_retries) +
                                         " retries; resume when the printer is back)",
                                     "fault", why));
         return RunEnd::paused;
     }
     const auto backoff = backoff_ms(options_, attempt);
-    SPOOL_TRY(spool_->requeue(job.id,
+    TACTUS_TRY_VOID(spool_->requeue(job.id,
                               "retry " + std::to_string(attempt) + " of " +
                                   std::to_string(options_.max_retries) + " in " +
                                   std::to_string(static_cast<int>(backoff / 1000)) + " s: " + why,
@@ -185,7 +183,7 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
 Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string& why) {
     link_.reset();
     const auto backoff = backoff_ms(options_, ++unreachable_);
-    SPOOL_TRY(spool_->requeue(job.id,
+    TACTUS_TRY_VOID(spool_->requeue(job.id,
                               "waiting for printer '" + printer_.name + "': " + why + " (trying again in " +
                                   std::to_string(static_cast<int>(backoff / 1000)) + " s)",
                               now_seconds() + backoff / 1000.0, false));
@@ -195,20 +193,20 @@ Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string&
 Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     Spool& s = *spool_;
     // --- what to emboss: the stored document, planned with the printer's profile now
-    SPOOL_LET(snapshot, s.document_snapshot(job.id));
+    TACTUS_TRY(snapshot, s.document_snapshot(job.id));
     auto doc = from_snapshot(snapshot);
     if (!doc) {
         const auto why = "the stored document is unreadable: " + doc.error().to_string();
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
-    SPOOL_LET(printer, s.printer(job.printer_id));
+    TACTUS_TRY(printer, s.printer(job.printer_id));
     printer_ = printer;
     auto profile = profile::parse_profile(printer.profile_json);
     if (!profile) {
         const auto why = "printer '" + printer.name + "' has an invalid profile (" +
                          profile.error().to_string() + "); fix it, then retry the job";
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
     // --- the printer first: connecting settles whatever an earlier run left
@@ -225,7 +223,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     const auto firmware_refuses = [&](const Error& e) -> Result<RunEnd> {
         const auto why = "printer '" + printer.name + "' runs the reference firmware (protocol 3), which "
                          "cannot emboss with its current profile: " + e.to_string();
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     };
     std::optional<machine::FirmwareTables> tables;
@@ -238,7 +236,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                         : make_print_job(*doc, *profile, printer.device, job.copies);
     auto* plan = print ? &print->plan : nullptr;
     if (!print && print.error().where == kPassesWhere) {
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, print.error().message, "failed", print.error().message));
         return RunEnd::failed;
     }
     if (!plan || plan->sheets.size() != job.total_sheets()) {
@@ -248,25 +246,25 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
                                      " sheets, the job has " + std::to_string(job.total_sheets())
                                : print.error().to_string()) +
                          "; the job is kept (restore the profile or lay the document out again)";
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
     if (tables)
         if (auto checked = link_->use_firmware_tables(*print->firmware, print->timing); !checked)
             return firmware_refuses(checked.error());
-    SPOOL_LET(submitted_profile, s.profile_snapshot(job.id));
+    TACTUS_TRY(submitted_profile, s.profile_snapshot(job.id));
     if (submitted_profile != printer.profile_json)
-        SPOOL_TRY(s.log(job.id, printer.id, "profile",
+        TACTUS_TRY_VOID(s.log(job.id, printer.id, "profile",
                         "the printer's profile changed since submission; planned with the current one"));
     std::vector<std::size_t> passes;
     for (const auto& sheet : plan->sheets) passes.push_back(sheet.passes.size());
     // The controller gets the configuration of the profile this job was just
     // planned with (the printer's profile may have changed since the link opened).
     if (auto c = link_->configure(print->config); !c) return transient_failure(job, c.error().to_string());
-    SPOOL_TRY(s.set_sheet_passes(job.id, passes));
+    TACTUS_TRY_VOID(s.set_sheet_passes(job.id, passes));
 
     // --- where to start: the first unfinished sheet, or the operator's choice
-    SPOOL_LET(progress, s.progress(job.id));
+    TACTUS_TRY(progress, s.progress(job.id));
     std::size_t first_unfinished = 0;
     for (const auto& p : progress)
         if (!p.done()) {
@@ -276,13 +274,13 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     std::size_t start = first_unfinished;
     if (job.resume_sheet) {
         start = *job.resume_sheet;
-        SPOOL_TRY(s.clear_resume_sheet(job.id));
-        SPOOL_TRY(s.log(job.id, printer.id, "resume-point",
+        TACTUS_TRY_VOID(s.clear_resume_sheet(job.id));
+        TACTUS_TRY_VOID(s.log(job.id, printer.id, "resume-point",
                         "starting at " + sheet_word(start) + " as the operator chose (first unfinished: " +
                             (first_unfinished ? sheet_word(first_unfinished) : "none") + ")"));
     }
     if (start == 0) {
-        SPOOL_TRY(s.set_state(job.id, JobState::completed, "", "completed",
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::completed, "", "completed",
                               "every sheet had already been embossed"));
         return RunEnd::completed;
     }
@@ -291,11 +289,11 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     for (std::size_t k = start; k <= progress.size(); ++k) {
         const auto& p = progress[k - 1];
         if (p.done())
-            SPOOL_TRY(s.restart_sheet(job.id, k, sheet_word(k) + " is embossed again at the operator's request"));
+            TACTUS_TRY_VOID(s.restart_sheet(job.id, k, sheet_word(k) + " is embossed again at the operator's request"));
         else if (p.passes_done > 0)
             // Settled runs leave no partial sheet; this is a record from
             // before that rule (or an operator's restart point inside one).
-            SPOOL_TRY(s.spoil_sheet(job.id, k,
+            TACTUS_TRY_VOID(s.spoil_sheet(job.id, k,
                                     sheet_word(k) + " was left unfinished (" + std::to_string(p.passes_done) +
                                         " of " + std::to_string(p.passes_total) +
                                         " passes recorded): that partial sheet is discarded and the sheet "
@@ -305,9 +303,9 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     // --- stream it, named first: the controller job id, the start sheet and
     // the first pass are committed before the first DATA frame
     const auto first = first_passes(progress);
-    SPOOL_LET(link_job, s.begin_run(job.id, start, first[start - 1], controller_job_));
+    TACTUS_TRY(link_job, s.begin_run(job.id, start, first[start - 1], controller_job_));
     controller_job_ = link_job;
-    SPOOL_TRY(s.log(job.id, printer.id, "sending",
+    TACTUS_TRY_VOID(s.log(job.id, printer.id, "sending",
                     "sending " + sheet_word(start) + " to " + std::to_string(job.total_sheets()) + " to " +
                         printer.device));
     link::CancelToken cancel;
@@ -400,24 +398,24 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     if (!outcome) {
         // Nothing was sent: the plan is one the protocol cannot carry. Retrying
         // cannot change that.
-        SPOOL_TRY(s.end_run(job.id));
+        TACTUS_TRY_VOID(s.end_run(job.id));
         const auto why = "the printer cannot be sent this job: " + outcome.error().to_string();
-        SPOOL_TRY(s.set_state(job.id, JobState::failed, why, "failed", why));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::failed, why, "failed", why));
         return RunEnd::failed;
     }
 
     switch (outcome->end) {
     case link::JobEnd::completed:
-        SPOOL_TRY(s.end_run(job.id));
-        SPOOL_TRY(s.set_state(job.id, JobState::completed, "", "completed",
+        TACTUS_TRY_VOID(s.end_run(job.id));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::completed, "", "completed",
                               "all " + std::to_string(job.total_sheets()) + " sheets embossed"));
         return RunEnd::completed;
     case link::JobEnd::cancelled: {
         if (operator_cancel) {
             // The link aborted the controller's job; the sheet it was on is ejected unfinished.
-            SPOOL_TRY(s.end_run(job.id));
-            SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was cancelled"));
-            SPOOL_TRY(s.set_state(job.id, JobState::cancelled, "cancelled by the operator", "cancelled",
+            TACTUS_TRY_VOID(s.end_run(job.id));
+            TACTUS_TRY_VOID(spoil_interrupted(s, job.id, outcome->resume_sheet, "the job was cancelled"));
+            TACTUS_TRY_VOID(s.set_state(job.id, JobState::cancelled, "cancelled by the operator", "cancelled",
                                   "aborted on the controller at " + sheet_word(outcome->resume_sheet)));
             return RunEnd::cancelled;
         }
@@ -425,7 +423,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         // report and the abort, so the run stays open: the next start settles
         // it with the controller's count, as after a crash.
         link_.reset();
-        SPOOL_TRY(s.requeue(job.id, "the print server stopped; resumes at the first unfinished sheet",
+        TACTUS_TRY_VOID(s.requeue(job.id, "the print server stopped; resumes at the first unfinished sheet",
                             0, false));
         return RunEnd::stopped;
     }
@@ -450,8 +448,8 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
         // machine is reported now.
         link_.reset();
         if (why.find("lost power") != std::string::npos)
-            SPOOL_TRY(spoil_interrupted(s, job.id, outcome->resume_sheet, "the controller lost power"));
-        SPOOL_TRY(s.set_state(job.id, JobState::paused, why, "fault", why));
+            TACTUS_TRY_VOID(spoil_interrupted(s, job.id, outcome->resume_sheet, "the controller lost power"));
+        TACTUS_TRY_VOID(s.set_state(job.id, JobState::paused, why, "fault", why));
         return RunEnd::paused;
     }
     return transient_failure(job, why);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/utf8.hpp"
+#include "common/try.hpp"
 
 namespace tactus::spool {
 namespace {
@@ -77,10 +78,10 @@ Result<layout::PagedDocument> from_snapshot(std::string_view text) {
         out = it->get<bool>();
         return {};
     };
-    if (auto r = int_field("cells_per_line", doc.geometry.cells_per_line); !r) return std::unexpected(r.error());
-    if (auto r = int_field("lines_per_page", doc.geometry.lines_per_page); !r) return std::unexpected(r.error());
-    if (auto r = bool_field("interpoint", doc.geometry.interpoint); !r) return std::unexpected(r.error());
-    if (auto r = bool_field("eight_dot", doc.geometry.eight_dot); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(int_field("cells_per_line", doc.geometry.cells_per_line));
+    TACTUS_TRY_VOID(int_field("lines_per_page", doc.geometry.lines_per_page));
+    TACTUS_TRY_VOID(bool_field("interpoint", doc.geometry.interpoint));
+    TACTUS_TRY_VOID(bool_field("eight_dot", doc.geometry.eight_dot));
 
     const auto max_cells = static_cast<std::size_t>(doc.geometry.cells_per_line);
     const auto max_lines = static_cast<std::size_t>(doc.geometry.lines_per_page);

@@ -14,7 +14,7 @@
 
 #include "spool/runner_token.hpp"
 #include "spool/schema.hpp"
-#include "spool/try.hpp"
+#include "common/try.hpp"
 #include "transport/device.hpp"
 
 namespace tactus::spool {
@@ -52,10 +52,10 @@ Result<JobRecord> read_job(const sql::Statement& s) {
     j.first_page = size_col(s, 6);
     j.last_page = size_col(s, 7);
     j.priority = static_cast<int>(s.int64(8));
-    SPOOL_LET(state, parse_job_state(s.text(9)));
+    TACTUS_TRY(state, parse_job_state(s.text(9)));
     j.state = state;
     j.reason = s.text(10);
-    SPOOL_LET(control, parse_control(s.text(11)));
+    TACTUS_TRY(control, parse_control(s.text(11)));
     j.control = control;
     if (!s.is_null(12)) j.resume_sheet = size_col(s, 12);
     j.retries = static_cast<int>(s.int64(13));
@@ -121,13 +121,13 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
                             path.parent_path().string());
         }
     }
-    SPOOL_LET(opened, sql::Database::open(path, options.create, options.busy_timeout_ms));
+    TACTUS_TRY(opened, sql::Database::open(path, options.create, options.busy_timeout_ms));
     sql::Database db = std::move(opened);
     bool read_only = sqlite3_db_readonly(db.handle(), "main") == 1;
     if (read_only && options.read_only_ok && !can_read_wal(db) && wal_is_empty(path)) {
         // A read-only spool in a read-only folder: SQLite cannot make the WAL's
         // shared-memory file, yet nobody can be writing it either.
-        SPOOL_LET(frozen, sql::Database::open_immutable(path));
+        TACTUS_TRY(frozen, sql::Database::open_immutable(path));
         db = std::move(frozen);
     }
     if (read_only && !options.read_only_ok)
@@ -141,9 +141,8 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
     std::int64_t user_version = 0, app_id = 0;
     bool empty = false;
     {
-    auto version = db.prepare("PRAGMA user_version");
-    if (!version) return std::unexpected(version.error());
-    auto has_row = version->step();
+    TACTUS_TRY(version, db.prepare("PRAGMA user_version"));
+    auto has_row = version.step();
     if (!has_row && has_row.error().kind == ErrorKind::io)
         // The disk failed the read (full, or an I/O error): the file is not
         // shown to be damaged, and `queue recover` would find nothing wrong.
@@ -153,7 +152,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
                         "; it was left untouched (move it aside with `tactus-cli queue "
                         "recover`, or point --db elsewhere)",
                     path.string());
-    user_version = version->int64(0);
+    user_version = version.int64(0);
     auto app = db.prepare("PRAGMA application_id");
     if (!app || !app->step()) return fail(ErrorKind::input, "cannot read the database header", path.string());
     app_id = app->int64(0);
@@ -170,13 +169,13 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         // root polling the CUPS backend's new spool made it read-only for lp.
         if (!options.create) return not_there_yet();
         if (read_only) return fail(ErrorKind::input, "the spool database is empty and read-only", path.string());
-        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
+        TACTUS_TRY_VOID(db.exec("PRAGMA journal_mode=WAL"));
         auto tx = sql::Transaction::begin(db);
         if (!tx) return std::unexpected(tx.error());
-        SPOOL_TRY(db.exec(kSchema));
-        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
+        TACTUS_TRY_VOID(db.exec(kSchema));
+        TACTUS_TRY_VOID(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
                           "; PRAGMA application_id=" + std::to_string(kApplicationId)));
-        SPOOL_TRY(tx->commit());
+        TACTUS_TRY_VOID(tx->commit());
     } else if (app_id != kApplicationId) {
         return fail(ErrorKind::input, "this SQLite file is not a Tactus spool (application id " +
                         std::to_string(app_id) + "); it was left untouched",
@@ -191,27 +190,26 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         if (read_only)
             return fail(ErrorKind::input, "the spool is from an older Tactus and read-only, so it cannot be upgraded",
                         path.string());
-        auto tx = sql::Transaction::begin(db);
-        if (!tx) return std::unexpected(tx.error());
-        SPOOL_TRY(db.exec(kMigrate1To2));
-        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion)));
-        SPOOL_TRY(tx->commit());
+        TACTUS_TRY(tx, sql::Transaction::begin(db));
+        TACTUS_TRY_VOID(db.exec(kMigrate1To2));
+        TACTUS_TRY_VOID(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion)));
+        TACTUS_TRY_VOID(tx.commit());
     }
     if (!read_only) {
         // WAL: readers never block the runner's progress writes. FULL: a
         // committed pass survives a power cut, not just a process crash (a lost
         // pass record would mean embossing a sheet twice).
-        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
-        SPOOL_TRY(db.exec("PRAGMA synchronous=FULL"));
+        TACTUS_TRY_VOID(db.exec("PRAGMA journal_mode=WAL"));
+        TACTUS_TRY_VOID(db.exec("PRAGMA synchronous=FULL"));
     }
-    if (!read_only) SPOOL_TRY(db.exec(kJobOrigins));
-    SPOOL_TRY(db.exec("PRAGMA foreign_keys=ON"));
+    if (!read_only) TACTUS_TRY_VOID(db.exec(kJobOrigins));
+    TACTUS_TRY_VOID(db.exec("PRAGMA foreign_keys=ON"));
     return Spool(std::move(db), read_only);
 }
 
 Result<void> Spool::check() {
-    SPOOL_LET(s, db_.prepare("PRAGMA quick_check"));
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(s, db_.prepare("PRAGMA quick_check"));
+    TACTUS_TRY(row, s.step());
     if (!row || s.text(0) != "ok")
         return fail(ErrorKind::input, "integrity check failed: " + (row ? s.text(0) : std::string("no answer")),
                     db_.path().string());
@@ -220,7 +218,7 @@ Result<void> Spool::check() {
 
 Result<void> Spool::insert_event(std::optional<JobId> job, std::optional<PrinterId> printer,
                                  std::string_view kind, std::string_view message) {
-    SPOOL_LET(s, db_.prepare(
+    TACTUS_TRY(s, db_.prepare(
                      "INSERT INTO events(job_id, printer_id, at, kind, message) VALUES(?,?,?,?,?)"));
     s.bind(1, job).bind(2, printer).bind(3, now_seconds()).bind(4, kind).bind(5, message);
     return s.run();
@@ -239,8 +237,8 @@ Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view
     if (device.empty()) return fail(ErrorKind::usage, "a printer needs a device string", "--device");
     if (auto d = transport::check_device(device); !d) return std::unexpected(located(d.error(), "--device"));
     {
-        SPOOL_LET(tx, sql::Transaction::begin(db_));
-        SPOOL_LET(s, db_.prepare(
+        TACTUS_TRY(tx, sql::Transaction::begin(db_));
+        TACTUS_TRY(s, db_.prepare(
                          "INSERT INTO printers(name, device, profile_json, created_at) VALUES(?,?,?,?)"));
         s.bind(1, name).bind(2, device).bind(3, profile_json).bind(4, now_seconds());
         if (auto r = s.run(); !r) {
@@ -248,9 +246,9 @@ Result<PrinterRecord> Spool::add_printer(std::string_view name, std::string_view
             return std::unexpected(r.error());
         }
         const auto id = db_.last_insert_rowid();
-        SPOOL_TRY(insert_event({}, id, "printer",
+        TACTUS_TRY_VOID(insert_event({}, id, "printer",
                                "printer '" + std::string(name) + "' added on " + std::string(device)));
-        SPOOL_TRY(tx.commit());
+        TACTUS_TRY_VOID(tx.commit());
     }
     return printer(name);
 }
@@ -259,23 +257,23 @@ Result<PrinterRecord> Spool::update_printer(std::string_view name, std::optional
                                             std::optional<std::string> profile_json) {
     if (device)
         if (auto d = transport::check_device(*device); !d) return std::unexpected(located(d.error(), "--device"));
-    SPOOL_LET(p, printer(name));
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("UPDATE printers SET device = ?, profile_json = ? WHERE id = ?"));
+    TACTUS_TRY(p, printer(name));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare("UPDATE printers SET device = ?, profile_json = ? WHERE id = ?"));
     s.bind(1, device.value_or(p.device)).bind(2, profile_json.value_or(p.profile_json)).bind(3, p.id);
-    SPOOL_TRY(s.run());
+    TACTUS_TRY_VOID(s.run());
     std::string what = "printer '" + p.name + "' changed:";
     if (device) what += " device " + *device;
     if (profile_json) what += " new profile";
-    SPOOL_TRY(insert_event({}, p.id, "printer", what));
-    SPOOL_TRY(tx.commit());
+    TACTUS_TRY_VOID(insert_event({}, p.id, "printer", what));
+    TACTUS_TRY_VOID(tx.commit());
     return printer(p.id);
 }
 
 Result<PrinterRecord> Spool::printer(std::string_view name) {
-    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "WHERE name = ?"));
+    TACTUS_TRY(s, db_.prepare(std::string(kPrinterColumns) + "WHERE name = ?"));
     s.bind(1, name);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) {
         std::string known;
         if (auto all = printers(); all)
@@ -291,18 +289,18 @@ Result<PrinterRecord> Spool::printer(std::string_view name) {
 }
 
 Result<PrinterRecord> Spool::printer(PrinterId id) {
-    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "WHERE id = ?"));
+    TACTUS_TRY(s, db_.prepare(std::string(kPrinterColumns) + "WHERE id = ?"));
     s.bind(1, id);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return fail(ErrorKind::input, "no printer with id " + std::to_string(id));
     return read_printer(s);
 }
 
 Result<std::vector<PrinterRecord>> Spool::printers() {
-    SPOOL_LET(s, db_.prepare(std::string(kPrinterColumns) + "ORDER BY name"));
+    TACTUS_TRY(s, db_.prepare(std::string(kPrinterColumns) + "ORDER BY name"));
     std::vector<PrinterRecord> out;
     for (;;) {
-        SPOOL_LET(row, s.step());
+        TACTUS_TRY(row, s.step());
         if (!row) break;
         out.push_back(read_printer(s));
     }
@@ -314,16 +312,16 @@ Result<std::vector<PrinterRecord>> Spool::printers() {
 Result<JobId> Spool::submit(const JobSubmission& job) {
     if (job.sheets_per_copy == 0) return fail(ErrorKind::input, "the document has no pages to emboss");
     if (job.copies == 0 || job.copies > 10000) return fail(ErrorKind::usage, "copies must be 1 to 10000", "--copies");
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
     if (!job.origin.empty()) {
         // Inside the transaction: two submitters of one origin cannot both miss it.
-        SPOOL_LET(known, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
+        TACTUS_TRY(known, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
         known.bind(1, job.origin);
-        SPOOL_LET(row, known.step());
+        TACTUS_TRY(row, known.step());
         if (row) return known.int64(0);
     }
-    SPOOL_LET(p, printer(job.printer));
-    SPOOL_LET(s, db_.prepare(
+    TACTUS_TRY(p, printer(job.printer));
+    TACTUS_TRY(s, db_.prepare(
                      "INSERT INTO jobs(printer_id, title, document, profile_json, sheets_per_copy, "
                      "copies, first_page, last_page, priority, state, submitted_by, submitted_at, "
                      "updated_at) VALUES(?,?,?,?,?,?,?,?,?,'queued',?,?,?)"));
@@ -332,26 +330,26 @@ Result<JobId> Spool::submit(const JobSubmission& job) {
         .bind(5, i64(job.sheets_per_copy)).bind(6, i64(job.copies)).bind(7, i64(job.first_page))
         .bind(8, i64(job.last_page)).bind(9, std::int64_t{job.priority}).bind(10, job.user)
         .bind(11, now).bind(12, now);
-    SPOOL_TRY(s.run());
+    TACTUS_TRY_VOID(s.run());
     const JobId id = db_.last_insert_rowid();
     if (!job.origin.empty()) {
-        SPOOL_LET(o, db_.prepare("INSERT INTO job_origins(origin, job_id) VALUES(?,?)"));
+        TACTUS_TRY(o, db_.prepare("INSERT INTO job_origins(origin, job_id) VALUES(?,?)"));
         o.bind(1, job.origin).bind(2, id);
-        SPOOL_TRY(o.run());
+        TACTUS_TRY_VOID(o.run());
     }
-    SPOOL_TRY(insert_event(id, p.id, "submitted",
+    TACTUS_TRY_VOID(insert_event(id, p.id, "submitted",
                            "'" + job.title + "' by " + job.user + ": " +
                                std::to_string(job.sheets_per_copy) + " sheet(s) x " +
                                std::to_string(job.copies) + " cop" + (job.copies == 1 ? "y" : "ies") +
                                " on " + p.name));
-    SPOOL_TRY(tx.commit());
+    TACTUS_TRY_VOID(tx.commit());
     return id;
 }
 
 Result<JobRecord> Spool::job_locked(JobId id) {
-    SPOOL_LET(s, db_.prepare(job_query("WHERE j.id = ?")));
+    TACTUS_TRY(s, db_.prepare(job_query("WHERE j.id = ?")));
     s.bind(1, id);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return read_job(s);
 }
@@ -359,27 +357,27 @@ Result<JobRecord> Spool::job_locked(JobId id) {
 Result<JobRecord> Spool::job(JobId id) { return job_locked(id); }
 
 Result<std::optional<JobRecord>> Spool::job_by_origin(std::string_view origin) {
-    SPOOL_LET(s, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
+    TACTUS_TRY(s, db_.prepare("SELECT job_id FROM job_origins WHERE origin = ?"));
     s.bind(1, origin);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return std::optional<JobRecord>{};
     const JobId id = s.int64(0);
-    SPOOL_LET(j, job_locked(id));
+    TACTUS_TRY(j, job_locked(id));
     return std::optional<JobRecord>(std::move(j));
 }
 
 Result<std::string> Spool::document_snapshot(JobId id) {
-    SPOOL_LET(s, db_.prepare("SELECT document FROM jobs WHERE id = ?"));
+    TACTUS_TRY(s, db_.prepare("SELECT document FROM jobs WHERE id = ?"));
     s.bind(1, id);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return s.text(0);
 }
 
 Result<std::string> Spool::profile_snapshot(JobId id) {
-    SPOOL_LET(s, db_.prepare("SELECT profile_json FROM jobs WHERE id = ?"));
+    TACTUS_TRY(s, db_.prepare("SELECT profile_json FROM jobs WHERE id = ?"));
     s.bind(1, id);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
     return s.text(0);
 }
@@ -391,29 +389,29 @@ Result<std::vector<JobRecord>> Spool::jobs(bool finished, std::optional<std::str
                   "ORDER BY (j.state = 'running') DESC, j.priority DESC, j.id");
     std::vector<JobRecord> out;
     auto collect = [&](const std::string& q) -> Result<void> {
-        SPOOL_LET(s, db_.prepare(q));
+        TACTUS_TRY(s, db_.prepare(q));
         if (printer_name) s.bind(1, *printer_name);
         for (;;) {
-            SPOOL_LET(row, s.step());
+            TACTUS_TRY(row, s.step());
             if (!row) return {};
-            SPOOL_LET(j, read_job(s));
+            TACTUS_TRY(j, read_job(s));
             out.push_back(std::move(j));
         }
     };
-    SPOOL_TRY(collect(sql));
+    TACTUS_TRY_VOID(collect(sql));
     if (finished)
-        SPOOL_TRY(collect(job_query("WHERE j.state IN ('completed','cancelled','failed') " + where +
+        TACTUS_TRY_VOID(collect(job_query("WHERE j.state IN ('completed','cancelled','failed') " + where +
                                     "ORDER BY j.id DESC")));
     return out;
 }
 
 Result<std::vector<SheetProgress>> Spool::progress(JobId id) {
-    SPOOL_LET(s, db_.prepare("SELECT sheet, passes_total, passes_done, spoiled FROM progress "
+    TACTUS_TRY(s, db_.prepare("SELECT sheet, passes_total, passes_done, spoiled FROM progress "
                              "WHERE job_id = ? ORDER BY sheet"));
     s.bind(1, id);
     std::vector<SheetProgress> out;
     for (;;) {
-        SPOOL_LET(row, s.step());
+        TACTUS_TRY(row, s.step());
         if (!row) break;
         out.push_back(SheetProgress{size_col(s, 0), size_col(s, 1), size_col(s, 2), size_col(s, 3)});
     }
@@ -421,13 +419,13 @@ Result<std::vector<SheetProgress>> Spool::progress(JobId id) {
 }
 
 Result<std::vector<EventRecord>> Spool::events(std::optional<JobId> job, std::size_t limit) {
-    SPOOL_LET(s, db_.prepare(
+    TACTUS_TRY(s, db_.prepare(
                      "SELECT * FROM (SELECT id, job_id, at, kind, message FROM events "
                      "WHERE ?1 IS NULL OR job_id = ?1 ORDER BY id DESC LIMIT ?2) ORDER BY id"));
     s.bind(1, job).bind(2, i64(limit));
     std::vector<EventRecord> out;
     for (;;) {
-        SPOOL_LET(row, s.step());
+        TACTUS_TRY(row, s.step());
         if (!row) break;
         EventRecord e;
         e.id = s.int64(0);
@@ -442,8 +440,8 @@ Result<std::vector<EventRecord>> Spool::events(std::optional<JobId> job, std::si
 
 Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t> resume_sheet) {
     {
-        SPOOL_LET(tx, sql::Transaction::begin(db_));
-        SPOOL_LET(j, job_locked(id));
+        TACTUS_TRY(tx, sql::Transaction::begin(db_));
+        TACTUS_TRY(j, job_locked(id));
         const bool held = !j.runner.empty();
         // The opposite request while one is still waiting for the runner
         // withdraws it (Pause then Resume at once, before the runner looked):
@@ -452,13 +450,13 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
                                ((action == Action::resume && j.control == Control::pause) ||
                                 (action == Action::pause && j.control == Control::resume));
         if (withdraws) {
-            SPOOL_LET(w, db_.prepare("UPDATE jobs SET control = ?, updated_at = ? WHERE id = ?"));
+            TACTUS_TRY(w, db_.prepare("UPDATE jobs SET control = ?, updated_at = ? WHERE id = ?"));
             w.bind(1, to_string(Control::none)).bind(2, now_seconds()).bind(3, id);
-            SPOOL_TRY(w.run());
-            SPOOL_TRY(insert_event(id, j.printer_id, to_string(action),
+            TACTUS_TRY_VOID(w.run());
+            TACTUS_TRY_VOID(insert_event(id, j.printer_id, to_string(action),
                                    std::string(to_string(action)) + " requested by the operator: the " +
                                        to_string(j.control) + " had not reached the runner and is withdrawn"));
-            SPOOL_TRY(tx.commit());
+            TACTUS_TRY_VOID(tx.commit());
             return job(id);
         }
         auto t = apply(j.state, held, action);
@@ -476,7 +474,7 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
                             "first (pause, then stop serve, or retry after it fails)",
                             "--from-sheet");
         }
-        SPOOL_LET(s, db_.prepare(
+        TACTUS_TRY(s, db_.prepare(
                          "UPDATE jobs SET state = ?, control = ?, reason = ?, updated_at = ?, "
                          "resume_sheet = coalesce(?, resume_sheet), retries = "
                          "CASE WHEN ? THEN 0 ELSE retries END, not_before = "
@@ -492,12 +490,12 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
             .bind(4, now).bind(5, sheet).bind(6, std::int64_t{requeued}).bind(7, std::int64_t{requeued})
             .bind(8, std::int64_t{finishes}).bind(9, now).bind(10, id);
         if (requeued) s.bind(3, std::string_view{});
-        SPOOL_TRY(s.run());
+        TACTUS_TRY_VOID(s.run());
         std::string message = std::string(to_string(action)) + " requested by the operator";
         if (t->control != Control::none) message += " (passed to the runner)";
         if (resume_sheet) message += "; restart at sheet " + std::to_string(*resume_sheet);
-        SPOOL_TRY(insert_event(id, j.printer_id, to_string(action), message));
-        SPOOL_TRY(tx.commit());
+        TACTUS_TRY_VOID(insert_event(id, j.printer_id, to_string(action), message));
+        TACTUS_TRY_VOID(tx.commit());
     }
     return job(id);
 }
@@ -505,37 +503,37 @@ Result<JobRecord> Spool::act(JobId id, Action action, std::optional<std::size_t>
 // --- runners
 
 Result<void> Spool::claim_printer(PrinterId printer_id, std::string_view token) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(p, printer(printer_id));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(p, printer(printer_id));
     if (!p.runner.empty() && p.runner != token && runner_alive(p.runner))
         return fail(ErrorKind::device, "printer '" + p.name + "' is already served by " + p.runner, p.name);
     if (!p.runner.empty() && p.runner != token)
-        SPOOL_TRY(insert_event({}, p.id, "recovered",
+        TACTUS_TRY_VOID(insert_event({}, p.id, "recovered",
                                "runner " + p.runner + " is gone; " + std::string(token) + " takes over"));
-    SPOOL_LET(set, db_.prepare("UPDATE printers SET runner = ? WHERE id = ?"));
+    TACTUS_TRY(set, db_.prepare("UPDATE printers SET runner = ? WHERE id = ?"));
     set.bind(1, token).bind(2, p.id);
-    SPOOL_TRY(set.run());
+    TACTUS_TRY_VOID(set.run());
     // Jobs the dead runner held: running ones were interrupted mid-stream and
     // go back to the queue; their write-ahead record stays so the next run
     // reconciles with the controller before sending anything.
-    SPOOL_LET(held, db_.prepare(job_query("WHERE j.printer_id = ? AND j.runner != '' AND j.runner != ?")));
+    TACTUS_TRY(held, db_.prepare(job_query("WHERE j.printer_id = ? AND j.runner != '' AND j.runner != ?")));
     held.bind(1, p.id).bind(2, token);
     std::vector<JobRecord> orphans;
     for (;;) {
-        SPOOL_LET(row, held.step());
+        TACTUS_TRY(row, held.step());
         if (!row) break;
-        SPOOL_LET(j, read_job(held));
+        TACTUS_TRY(j, read_job(held));
         orphans.push_back(std::move(j));
     }
     for (const auto& j : orphans) {
-        SPOOL_LET(u, db_.prepare(
+        TACTUS_TRY(u, db_.prepare(
                          "UPDATE jobs SET runner = '', control = '', updated_at = ?, "
                          "state = CASE WHEN state = 'running' THEN 'queued' ELSE state END, "
                          "reason = CASE WHEN state = 'running' THEN 'interrupted: resumes at the first "
                          "unfinished sheet' ELSE reason END WHERE id = ?"));
         u.bind(1, now_seconds()).bind(2, j.id);
-        SPOOL_TRY(u.run());
-        SPOOL_TRY(insert_event(j.id, p.id, "interrupted",
+        TACTUS_TRY_VOID(u.run());
+        TACTUS_TRY_VOID(insert_event(j.id, p.id, "interrupted",
                                "the runner holding it (" + j.runner + ") stopped while the job was " +
                                    to_string(j.state)));
     }
@@ -543,46 +541,46 @@ Result<void> Spool::claim_printer(PrinterId printer_id, std::string_view token) 
 }
 
 Result<void> Spool::release_printer(PrinterId printer_id, std::string_view token) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("UPDATE printers SET runner = '' WHERE id = ? AND runner = ?"));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare("UPDATE printers SET runner = '' WHERE id = ? AND runner = ?"));
     s.bind(1, printer_id).bind(2, token);
-    SPOOL_TRY(s.run());
-    SPOOL_LET(u, db_.prepare("UPDATE jobs SET runner = '', updated_at = ?, "
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY(u, db_.prepare("UPDATE jobs SET runner = '', updated_at = ?, "
                              "state = CASE WHEN state = 'running' THEN 'queued' ELSE state END "
                              "WHERE printer_id = ? AND runner = ?"));
     u.bind(1, now_seconds()).bind(2, printer_id).bind(3, token);
-    SPOOL_TRY(u.run());
+    TACTUS_TRY_VOID(u.run());
     return tx.commit();
 }
 
 Result<std::optional<JobRecord>> Spool::claim_next(PrinterId printer_id, std::string_view token,
                                                    double now) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.state = 'queued' AND "
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.state = 'queued' AND "
                                        "j.not_before <= ? ORDER BY j.priority DESC, j.id LIMIT 1")));
     s.bind(1, printer_id).bind(2, now);
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(row, s.step());
     if (!row) return std::optional<JobRecord>{};
-    SPOOL_LET(j, read_job(s));
-    SPOOL_LET(u, db_.prepare("UPDATE jobs SET state = 'running', runner = ?, reason = '', "
+    TACTUS_TRY(j, read_job(s));
+    TACTUS_TRY(u, db_.prepare("UPDATE jobs SET state = 'running', runner = ?, reason = '', "
                              "control = '', updated_at = ?, started_at = coalesce(started_at, ?) "
                              "WHERE id = ?"));
     u.bind(1, token).bind(2, now).bind(3, now).bind(4, j.id);
-    SPOOL_TRY(u.run());
-    SPOOL_TRY(insert_event(j.id, printer_id, "started", "taken by runner " + std::string(token)));
-    SPOOL_TRY(tx.commit());
+    TACTUS_TRY_VOID(u.run());
+    TACTUS_TRY_VOID(insert_event(j.id, printer_id, "started", "taken by runner " + std::string(token)));
+    TACTUS_TRY_VOID(tx.commit());
     return job(j.id);
 }
 
 Result<void> Spool::set_sheet_passes(JobId id, const std::vector<std::size_t>& passes) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("INSERT INTO progress(job_id, sheet, passes_total) VALUES(?,?,?) "
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare("INSERT INTO progress(job_id, sheet, passes_total) VALUES(?,?,?) "
                              "ON CONFLICT(job_id, sheet) DO UPDATE SET passes_total = "
                              "excluded.passes_total WHERE passes_done <= excluded.passes_total"));
     for (std::size_t i = 0; i < passes.size(); ++i) {
         s.reset();
         s.bind(1, id).bind(2, i64(i + 1)).bind(3, i64(passes[i]));
-        SPOOL_TRY(s.run());
+        TACTUS_TRY_VOID(s.run());
     }
     return tx.commit();
 }
@@ -590,10 +588,10 @@ Result<void> Spool::set_sheet_passes(JobId id, const std::vector<std::size_t>& p
 Result<void> Spool::record_passes(JobId id, std::size_t sheet, std::size_t passes_done) {
     // One autocommit statement: the cheapest durable write, done once per
     // executed pass. max() keeps a late or repeated report from lowering it.
-    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
+    TACTUS_TRY(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
                              "WHERE job_id = ? AND sheet = ? AND ? <= passes_total"));
     s.bind(1, i64(passes_done)).bind(2, id).bind(3, i64(sheet)).bind(4, i64(passes_done));
-    SPOOL_TRY(s.run());
+    TACTUS_TRY_VOID(s.run());
     if (db_.changes() != 1)
         return fail(ErrorKind::internal, "progress for sheet " + std::to_string(sheet) + " pass " +
                         std::to_string(passes_done) + " does not fit the job's plan",
@@ -602,31 +600,31 @@ Result<void> Spool::record_passes(JobId id, std::size_t sheet, std::size_t passe
 }
 
 Result<void> Spool::spoil_sheet(JobId id, std::size_t sheet, std::string_view message) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
                              "WHERE job_id = ? AND sheet = ?"));
     s.bind(1, id).bind(2, i64(sheet));
-    SPOOL_TRY(s.run());
-    SPOOL_TRY(insert_event(id, {}, "spoiled", message));
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY_VOID(insert_event(id, {}, "spoiled", message));
     return tx.commit();
 }
 
 Result<void> Spool::restart_sheet(JobId id, std::size_t sheet, std::string_view message) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0 WHERE job_id = ? AND sheet = ?"));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(s, db_.prepare("UPDATE progress SET passes_done = 0 WHERE job_id = ? AND sheet = ?"));
     s.bind(1, id).bind(2, i64(sheet));
-    SPOOL_TRY(s.run());
-    SPOOL_TRY(insert_event(id, {}, "reprint", message));
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY_VOID(insert_event(id, {}, "reprint", message));
     return tx.commit();
 }
 
 Result<std::uint16_t> Spool::begin_run(JobId id, std::size_t start_sheet, std::size_t first_pass,
                                        std::uint16_t avoid) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(j, job_locked(id));
-    SPOOL_LET(q, db_.prepare("SELECT next_link_job FROM printers WHERE id = ?"));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(j, job_locked(id));
+    TACTUS_TRY(q, db_.prepare("SELECT next_link_job FROM printers WHERE id = ?"));
     q.bind(1, j.printer_id);
-    SPOOL_LET(row, q.step());
+    TACTUS_TRY(row, q.step());
     if (!row) return fail(ErrorKind::internal, "no printer for the job", job_where(id));
     // 0x8001..0xFFFF in turn, skipping the controller's current id.
     auto next = [](std::int64_t v) -> std::uint16_t {
@@ -634,67 +632,67 @@ Result<std::uint16_t> Spool::begin_run(JobId id, std::size_t start_sheet, std::s
     };
     std::uint16_t link_job = next(q.int64(0));
     if (link_job == avoid) link_job = next(std::int64_t{link_job} + 1);
-    SPOOL_LET(p, db_.prepare("UPDATE printers SET next_link_job = ? WHERE id = ?"));
+    TACTUS_TRY(p, db_.prepare("UPDATE printers SET next_link_job = ? WHERE id = ?"));
     p.bind(1, std::int64_t{link_job} + 1).bind(2, j.printer_id);
-    SPOOL_TRY(p.run());
-    SPOOL_LET(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_first_pass = ?, "
+    TACTUS_TRY_VOID(p.run());
+    TACTUS_TRY(s, db_.prepare("UPDATE jobs SET link_job = ?, run_start_sheet = ?, run_first_pass = ?, "
                              "run_open = 1, updated_at = ? WHERE id = ?"));
     s.bind(1, std::int64_t{link_job}).bind(2, i64(start_sheet)).bind(3, i64(first_pass)).bind(4, now_seconds())
         .bind(5, id);
-    SPOOL_TRY(s.run());
-    SPOOL_TRY(tx.commit());
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY_VOID(tx.commit());
     return link_job;
 }
 
 Result<std::vector<JobRecord>> Spool::open_runs(PrinterId printer_id) {
-    SPOOL_LET(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.run_open = 1 ORDER BY j.id")));
+    TACTUS_TRY(s, db_.prepare(job_query("WHERE j.printer_id = ? AND j.run_open = 1 ORDER BY j.id")));
     s.bind(1, printer_id);
     std::vector<JobRecord> out;
     for (;;) {
-        SPOOL_LET(row, s.step());
+        TACTUS_TRY(row, s.step());
         if (!row) break;
-        SPOOL_LET(j, read_job(s));
+        TACTUS_TRY(j, read_job(s));
         out.push_back(std::move(j));
     }
     return out;
 }
 
 Result<void> Spool::settle_run(JobId id, const RunSettlement& settlement) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(j, job_locked(id));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(j, job_locked(id));
     for (const auto& [sheet, done] : settlement.record) {
-        SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
+        TACTUS_TRY(s, db_.prepare("UPDATE progress SET passes_done = max(passes_done, ?) "
                                  "WHERE job_id = ? AND sheet = ? AND ? <= passes_total"));
         s.bind(1, i64(done)).bind(2, id).bind(3, i64(sheet)).bind(4, i64(done));
-        SPOOL_TRY(s.run());
+        TACTUS_TRY_VOID(s.run());
     }
     if (settlement.discard) {
-        SPOOL_LET(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
+        TACTUS_TRY(s, db_.prepare("UPDATE progress SET passes_done = 0, spoiled = spoiled + 1 "
                                  "WHERE job_id = ? AND sheet = ?"));
         s.bind(1, id).bind(2, i64(*settlement.discard));
-        SPOOL_TRY(s.run());
+        TACTUS_TRY_VOID(s.run());
     }
-    SPOOL_TRY(insert_event(id, j.printer_id, "reconciled", settlement.message));
-    if (settlement.discard) SPOOL_TRY(insert_event(id, j.printer_id, "spoiled", settlement.discard_message));
-    SPOOL_LET(c, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
+    TACTUS_TRY_VOID(insert_event(id, j.printer_id, "reconciled", settlement.message));
+    if (settlement.discard) TACTUS_TRY_VOID(insert_event(id, j.printer_id, "spoiled", settlement.discard_message));
+    TACTUS_TRY(c, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
     c.bind(1, now_seconds()).bind(2, id);
-    SPOOL_TRY(c.run());
+    TACTUS_TRY_VOID(c.run());
     return tx.commit();
 }
 
 Result<void> Spool::end_run(JobId id) {
-    SPOOL_LET(s, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
+    TACTUS_TRY(s, db_.prepare("UPDATE jobs SET run_open = 0, updated_at = ? WHERE id = ?"));
     s.bind(1, now_seconds()).bind(2, id);
     return s.run();
 }
 
 Result<void> Spool::set_state(JobId id, JobState state, std::string_view reason,
                               std::string_view kind, std::string_view message, bool held) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(j, job_locked(id));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(j, job_locked(id));
     const double now = now_seconds();
     const bool release = !held || is_terminal(state) || state == JobState::queued;
-    SPOOL_LET(s, db_.prepare(
+    TACTUS_TRY(s, db_.prepare(
                      "UPDATE jobs SET state = ?, reason = ?, updated_at = ?, "
                      "runner = CASE WHEN ? THEN '' ELSE runner END, "
                      "control = CASE WHEN ? THEN '' ELSE control END, "
@@ -702,49 +700,49 @@ Result<void> Spool::set_state(JobId id, JobState state, std::string_view reason,
     s.bind(1, to_string(state)).bind(2, reason).bind(3, now).bind(4, std::int64_t{release})
         .bind(5, std::int64_t{release}).bind(6, std::int64_t{is_terminal(state)}).bind(7, now)
         .bind(8, id);
-    SPOOL_TRY(s.run());
-    SPOOL_TRY(insert_event(id, j.printer_id, kind, message));
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY_VOID(insert_event(id, j.printer_id, kind, message));
     return tx.commit();
 }
 
 Result<void> Spool::requeue(JobId id, std::string_view reason, double not_before, bool count_retry) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(j, job_locked(id));
-    SPOOL_LET(s, db_.prepare("UPDATE jobs SET state = 'queued', runner = '', control = '', "
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(j, job_locked(id));
+    TACTUS_TRY(s, db_.prepare("UPDATE jobs SET state = 'queued', runner = '', control = '', "
                              "reason = ?, not_before = ?, retries = retries + ?, updated_at = ? "
                              "WHERE id = ?"));
     s.bind(1, reason).bind(2, not_before).bind(3, std::int64_t{count_retry}).bind(4, now_seconds())
         .bind(5, id);
-    SPOOL_TRY(s.run());
-    SPOOL_TRY(insert_event(id, j.printer_id, "requeued", reason));
+    TACTUS_TRY_VOID(s.run());
+    TACTUS_TRY_VOID(insert_event(id, j.printer_id, "requeued", reason));
     return tx.commit();
 }
 
 Result<Control> Spool::take_control(JobId id) {
-    SPOOL_LET(tx, sql::Transaction::begin(db_));
-    SPOOL_LET(q, db_.prepare("SELECT control FROM jobs WHERE id = ?"));
+    TACTUS_TRY(tx, sql::Transaction::begin(db_));
+    TACTUS_TRY(q, db_.prepare("SELECT control FROM jobs WHERE id = ?"));
     q.bind(1, id);
-    SPOOL_LET(row, q.step());
+    TACTUS_TRY(row, q.step());
     if (!row) return fail(ErrorKind::input, "no such job", job_where(id));
-    SPOOL_LET(control, parse_control(q.text(0)));
+    TACTUS_TRY(control, parse_control(q.text(0)));
     if (control != Control::none) {
-        SPOOL_LET(clear, db_.prepare("UPDATE jobs SET control = '' WHERE id = ?"));
+        TACTUS_TRY(clear, db_.prepare("UPDATE jobs SET control = '' WHERE id = ?"));
         clear.bind(1, id);
-        SPOOL_TRY(clear.run());
+        TACTUS_TRY_VOID(clear.run());
     }
-    SPOOL_TRY(tx.commit());
+    TACTUS_TRY_VOID(tx.commit());
     return control;
 }
 
 Result<void> Spool::clear_resume_sheet(JobId id) {
-    SPOOL_LET(s, db_.prepare("UPDATE jobs SET resume_sheet = NULL WHERE id = ?"));
+    TACTUS_TRY(s, db_.prepare("UPDATE jobs SET resume_sheet = NULL WHERE id = ?"));
     s.bind(1, id);
     return s.run();
 }
 
 Result<std::int64_t> Spool::data_version() {
-    SPOOL_LET(s, db_.prepare("PRAGMA data_version"));
-    SPOOL_LET(row, s.step());
+    TACTUS_TRY(s, db_.prepare("PRAGMA data_version"));
+    TACTUS_TRY(row, s.step());
     if (!row) return fail(ErrorKind::internal, "no data_version", db_.path().string());
     return s.int64(0);
 }

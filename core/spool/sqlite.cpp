@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "spool/sqlite.hpp"
+#include "common/try.hpp"
 
 #include <sqlite3.h>
 
@@ -164,9 +165,8 @@ Result<bool> Statement::step() {
 
 Result<void> Statement::run() {
     for (;;) {
-        auto row = step();
-        if (!row) return std::unexpected(row.error());
-        if (!*row) return {};
+        TACTUS_TRY(row, step());
+        if (!row) return {};
     }
 }
 
@@ -189,7 +189,7 @@ bool Statement::is_null(int column) const {
 }
 
 Result<Transaction> Transaction::begin(Database& db) {
-    if (auto r = db.exec("BEGIN IMMEDIATE"); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(db.exec("BEGIN IMMEDIATE"));
     return Transaction(db);
 }
 

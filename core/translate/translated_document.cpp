@@ -8,6 +8,7 @@
 #include "common/utf8.hpp"
 #include "document/soft_break.hpp"
 #include "translate/word_division.hpp"
+#include "common/try.hpp"
 
 namespace tactus::translate {
 namespace {
@@ -44,20 +45,19 @@ public:
         : tr_(tr), room_(room), out_(out) {}
 
     Result<void> add(std::u32string_view text, std::span<const std::uint8_t> emph, BreakBefore join) {
-        auto m = tr_.translate_mapped(text, emph);
-        if (!m) return std::unexpected(m.error());
-        auto breaks = find_line_breaks(text, m->cells, m->source);
-        if (!breaks.empty()) breaks[0] = m->cells[0].blank() ? BreakBefore::blank : join;
-        const std::size_t n = m->cells.size();
+        TACTUS_TRY(m, tr_.translate_mapped(text, emph));
+        auto breaks = find_line_breaks(text, m.cells, m.source);
+        if (!breaks.empty()) breaks[0] = m.cells[0].blank() ? BreakBefore::blank : join;
+        const std::size_t n = m.cells.size();
         std::size_t i = 0;
         while (i < n) {
             std::size_t j = i + 1;
             while (j < n && !is_line_break(breaks[j])) ++j;
-            if (room_ > 0 && j - i > room_ && !m->cells[i].blank()) {
-                if (auto ok = divide(text, emph, *m, breaks[i], i, j); !ok) return ok;
+            if (room_ > 0 && j - i > room_ && !m.cells[i].blank()) {
+                if (auto ok = divide(text, emph, m, breaks[i], i, j); !ok) return ok;
             } else {
-                out_.cells.insert(out_.cells.end(), m->cells.begin() + static_cast<std::ptrdiff_t>(i),
-                                  m->cells.begin() + static_cast<std::ptrdiff_t>(j));
+                out_.cells.insert(out_.cells.end(), m.cells.begin() + static_cast<std::ptrdiff_t>(i),
+                                  m.cells.begin() + static_cast<std::ptrdiff_t>(j));
                 out_.breaks.insert(out_.breaks.end(), breaks.begin() + static_cast<std::ptrdiff_t>(i),
                                    breaks.begin() + static_cast<std::ptrdiff_t>(j));
             }
@@ -172,9 +172,8 @@ Result<void> translate_note_reference(const Translator& tr, std::u32string numbe
     out.cells.insert(out.cells.end(), indicator.begin(), indicator.end());
     if (!number.empty()) {
         if (indicator.empty()) number = U"(" + number + U")";
-        auto cells = tr.translate(number);
-        if (!cells) return std::unexpected(cells.error());
-        out.cells.insert(out.cells.end(), cells->begin(), cells->end());
+        TACTUS_TRY(cells, tr.translate(number));
+        out.cells.insert(out.cells.end(), cells.begin(), cells.end());
     }
     out.breaks.resize(out.cells.size(), BreakBefore::never);
     return {};
@@ -212,10 +211,9 @@ void attach(TranslatedBlock& out, std::span<const document::Cell> cells) {
 
 Result<void> translate_run(const Translator& tr, std::string_view utf8, std::uint8_t emphasis,
                            std::size_t room, TranslatedBlock& out, BreakBefore join) {
-    auto u = utf8_to_utf32(utf8);
-    if (!u) return std::unexpected(u.error());
-    std::vector<std::uint8_t> emph(u->size(), emphasis);
-    return translate_text(tr, *u, emph, room, out, {}, join);
+    TACTUS_TRY(u, utf8_to_utf32(utf8));
+    std::vector<std::uint8_t> emph(u.size(), emphasis);
+    return translate_text(tr, u, emph, room, out, {}, join);
 }
 
 // One item after a level indicator needs no grouping (UEB §3.24: the
@@ -236,12 +234,11 @@ bool is_one_item(std::u32string_view t) {
 Result<void> translate_positioned(const Translator& tr, const document::Span& s, std::size_t room,
                                   TranslatedBlock& out) {
     if (!is_ueb(tr)) return translate_run(tr, s.text, s.emphasis, room, out, BreakBefore::never);
-    auto u = utf8_to_utf32(s.text);
-    if (!u) return std::unexpected(u.error());
-    const auto first = u->find_first_not_of(U' ');
-    const auto last = u->find_last_not_of(U' ');
+    TACTUS_TRY(u, utf8_to_utf32(s.text));
+    const auto first = u.find_first_not_of(U' ');
+    const auto last = u.find_last_not_of(U' ');
     if (first == std::u32string::npos) return translate_run(tr, s.text, s.emphasis, room, out, BreakBefore::never);
-    const std::u32string_view item = std::u32string_view(*u).substr(first, last - first + 1);
+    const std::u32string_view item = std::u32string_view(u).substr(first, last - first + 1);
     document::BrailleLine indicator = tr.note_reference_indicator();
     indicator.back() = s.position == document::Position::superscript ? kSuperscript : kSubscript;
     const bool group = !is_one_item(item);
@@ -291,11 +288,10 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
             continue;
         }
         if (spans[i].note_reference) {
-            auto u = utf8_to_utf32(spans[i].text);
-            if (!u) return std::unexpected(u.error());
+            TACTUS_TRY(u, utf8_to_utf32(spans[i].text));
             const bool joined = !tr.note_reference_indicator().empty() && follows_unspaced(spans, i);
-            if (joined) number = std::move(*u);
-            if (auto ok = translate_note_reference(tr, joined ? std::u32string() : std::move(*u), out); !ok) return ok;
+            if (joined) number = std::move(u);
+            if (auto ok = translate_note_reference(tr, joined ? std::u32string() : std::move(u), out); !ok) return ok;
             ++i;
             continue;
         }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "translate/word_division.hpp"
+#include "common/try.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -42,9 +43,8 @@ public:
             std::size_t window = first_window();
             for (;;) {
                 end = std::min(word_.size(), pos_ + window);
-                auto r = translate(end, false);
-                if (!r) return std::unexpected(r.error());
-                rest = std::move(*r);
+                TACTUS_TRY(r, translate(end, false));
+                rest = std::move(r);
                 if (end == word_.size() || enough(rest, end)) break;
                 // Too few cells: twice the characters; else the characters
                 // the line's cells came from and the lookahead.
@@ -54,7 +54,7 @@ public:
                 sink_(std::move(rest.cells));
                 break;
             }
-            if (auto ok = next_piece(end, rest); !ok) return std::unexpected(ok.error());
+            TACTUS_TRY_VOID(next_piece(end, rest));
         }
         return {};
     }
@@ -158,10 +158,9 @@ private:
                     return {};
                 }
                 if (numeric_space) continue;
-                auto left = translate(q, true);
-                if (!left) return std::unexpected(left.error());
-                if (left->cells.size() <= room_) {
-                    accept(std::move(left->cells), q, false);
+                TACTUS_TRY(left, translate(q, true));
+                if (left.cells.size() <= room_) {
+                    accept(std::move(left.cells), q, false);
                     return {};
                 }
             }

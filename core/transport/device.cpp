@@ -8,6 +8,7 @@
 #include "transport/lpt_port.hpp"
 #include "transport/serial_port.hpp"
 #include "transport/tty_port.hpp"
+#include "common/try.hpp"
 
 namespace tactus::transport {
 
@@ -63,15 +64,13 @@ std::string format_device(const DeviceSpec& spec) {
 }
 
 Result<void> check_device(std::string_view device) {
-    auto spec = parse_device(device);
-    if (!spec) return std::unexpected(spec.error());
-    if (spec->scheme == "sim") {
-        if (auto s = sim_settings(*spec); !s) return std::unexpected(s.error());
+    TACTUS_TRY(spec, parse_device(device));
+    if (spec.scheme == "sim") {
+        TACTUS_TRY_VOID(sim_settings(spec));
         return {};
     }
-    if (spec->scheme == "lpt") return {};
-    auto uart = uart_settings(*spec);
-    if (!uart) return std::unexpected(uart.error());
+    if (spec.scheme == "lpt") return {};
+    TACTUS_TRY_VOID(uart_settings(spec));
     return {};
 }
 
@@ -136,26 +135,22 @@ Result<UartSettings> uart_settings(const DeviceSpec& spec) {
 }
 
 Result<std::unique_ptr<ByteStream>> open_device(std::string_view device) {
-    auto spec = parse_device(device);
-    if (!spec) return std::unexpected(spec.error());
-    if (spec->scheme == "hid") return open_hid(*spec);
-    if (spec->scheme == "lpt") {
-        if (!spec->options.empty()) return fail(ErrorKind::usage, "lpt takes no options", "lpt:" + spec->path);
-        return open_lpt(*spec);
+    TACTUS_TRY(spec, parse_device(device));
+    if (spec.scheme == "hid") return open_hid(spec);
+    if (spec.scheme == "lpt") {
+        if (!spec.options.empty()) return fail(ErrorKind::usage, "lpt takes no options", "lpt:" + spec.path);
+        return open_lpt(spec);
     }
     // The simulator belongs to the controller stage: controller::open_device.
-    if (spec->scheme == "sim")
+    if (spec.scheme == "sim")
         return fail(ErrorKind::internal, "the built-in simulator is not a cable", "device \"" + std::string(device) + "\"");
-    auto uart = uart_settings(*spec);
-    if (!uart) return std::unexpected(uart.error());
-    if (spec->scheme == "pty") {
-        auto p = TtyPort::open(spec->path, *uart);
-        if (!p) return std::unexpected(p.error());
-        return std::unique_ptr<ByteStream>(std::move(*p));
+    TACTUS_TRY(uart, uart_settings(spec));
+    if (spec.scheme == "pty") {
+        TACTUS_TRY(p, TtyPort::open(spec.path, uart));
+        return std::unique_ptr<ByteStream>(std::move(p));
     }
-    auto p = SerialPort::open(spec->path, *uart);
-    if (!p) return std::unexpected(p.error());
-    return std::unique_ptr<ByteStream>(std::move(*p));
+    TACTUS_TRY(p, SerialPort::open(spec.path, uart));
+    return std::unique_ptr<ByteStream>(std::move(p));
 }
 
 }  // namespace tactus::transport

@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "transport/hid_uart.hpp"
+#include "common/try.hpp"
 
 namespace tactus::transport {
 namespace {
@@ -81,9 +82,8 @@ Result<std::unique_ptr<ByteStream>> open_hid(const DeviceSpec& spec) {
         return fail(ErrorKind::device, "not a supported HID-UART bridge (CP2110 10c4:ea80, CP2114 10c4:eab0, FT260 "
                     "0403:6030)",
                     where);
-    auto uart = uart_settings(spec);
-    if (!uart) return std::unexpected(uart.error());
-    if (auto r = ensure_init(); !r) return std::unexpected(r.error());
+    TACTUS_TRY(uart, uart_settings(spec));
+    TACTUS_TRY_VOID(ensure_init());
     auto opener = [vid, pid, serial, where]() -> Result<std::unique_ptr<HidDevice>> {
         const std::wstring wserial = widen(serial);
         hid_device* d = hid_open(static_cast<unsigned short>(vid), static_cast<unsigned short>(pid),
@@ -100,14 +100,13 @@ Result<std::unique_ptr<ByteStream>> open_hid(const DeviceSpec& spec) {
         }
         return std::unique_ptr<HidDevice>(std::make_unique<HidapiDevice>(d));
     };
-    auto h = HidUart::open(opener, *bridge, *uart, where);
-    if (!h) return std::unexpected(h.error());
-    return std::unique_ptr<ByteStream>(std::move(*h));
+    TACTUS_TRY(h, HidUart::open(opener, *bridge, uart, where));
+    return std::unique_ptr<ByteStream>(std::move(h));
 }
 
 Result<std::vector<PortInfo>> list_hid_uarts() {
     std::vector<PortInfo> out;
-    if (auto r = ensure_init(); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(ensure_init());
     hid_device_info* list = hid_enumerate(0, 0);
     for (auto* d = list; d; d = d->next) {
         const auto bridge = bridge_for(d->vendor_id, d->product_id);

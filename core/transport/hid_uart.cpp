@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport/hid_uart.hpp"
+#include "common/try.hpp"
 
 #include <algorithm>
 
@@ -87,15 +88,14 @@ std::vector<std::vector<std::uint8_t>> uart_setup(HidBridge b, const UartSetting
 Result<std::unique_ptr<HidUart>> HidUart::open(Opener opener, HidBridge bridge,
                                                const UartSettings& uart, std::string name) {
     std::unique_ptr<HidUart> h(new HidUart(std::move(opener), bridge, uart, std::move(name)));
-    if (auto r = h->start(); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(h->start());
     return h;
 }
 
 Result<void> HidUart::start() {
     dev_.reset();
-    auto d = opener_();
-    if (!d) return std::unexpected(d.error());
-    dev_ = std::move(*d);
+    TACTUS_TRY(d, opener_());
+    dev_ = std::move(d);
     for (const auto& f : hid_report::uart_setup(bridge_, uart_))
         if (auto r = dev_->send_feature(f); !r)
             return fail(ErrorKind::device, std::string(bridge_name(bridge_)) + " refused its UART setup: " +

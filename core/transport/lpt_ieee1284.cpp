@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "transport/lpt_port.hpp"
+#include "common/try.hpp"
 
 namespace tactus::transport {
 namespace {
@@ -110,9 +111,8 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
         }
         return std::unique_ptr<ParallelPortLines>(std::make_unique<Ieee1284Lines>(found));
     };
-    auto p = LptPort::open(opener, where);
-    if (!p) return std::unexpected(p.error());
-    return std::unique_ptr<ByteStream>(std::move(*p));
+    TACTUS_TRY(p, LptPort::open(opener, where));
+    return std::unique_ptr<ByteStream>(std::move(p));
 }
 
 Result<std::vector<PortInfo>> list_parallel_ports() {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport/lpt_port.hpp"
+#include "common/try.hpp"
 
 #include <thread>
 
@@ -7,15 +8,14 @@ namespace tactus::transport {
 
 Result<std::unique_ptr<LptPort>> LptPort::open(Opener opener, std::string name, LptTimings t) {
     std::unique_ptr<LptPort> p(new LptPort(std::move(opener), std::move(name), t));
-    if (auto r = p->reopen(); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(p->reopen());
     return p;
 }
 
 Result<void> LptPort::reopen() {
     lines_.reset();
-    auto l = opener_();
-    if (!l) return std::unexpected(l.error());
-    lines_ = std::move(*l);
+    TACTUS_TRY(l, opener_());
+    lines_ = std::move(l);
     ctl_ = LptControl{};  // compatibility mode, idle
     return lines_->write_control(ctl_);
 }
@@ -24,9 +24,8 @@ Result<void> LptPort::reopen() {
 Result<bool> LptPort::wait_for(const std::function<bool(const LptStatus&)>& ok) {
     const auto deadline = std::chrono::steady_clock::now() + timings_.handshake;
     for (;;) {
-        auto st = lines_->read_status();
-        if (!st) return std::unexpected(st.error());
-        if (ok(*st)) return true;
+        TACTUS_TRY(st, lines_->read_status());
+        if (ok(st)) return true;
         if (std::chrono::steady_clock::now() > deadline) return false;
         lines_->settle();
     }
@@ -35,9 +34,8 @@ Result<bool> LptPort::wait_for(const std::function<bool(const LptStatus&)>& ok) 
 // Compatibility mode, one byte: wait until not Busy, data on D0-D7, pulse
 // nStrobe low; the peripheral latches it, raises Busy, pulses nAck, drops Busy.
 Result<void> LptPort::write_byte(std::uint8_t b) {
-    auto ready = wait_for([](const LptStatus& s) { return !s.busy; });
-    if (!ready) return std::unexpected(ready.error());
-    if (!*ready) return fail(ErrorKind::device, "printer busy: the controller does not take data (Busy stays high)", name_);
+    TACTUS_TRY(ready, wait_for([](const LptStatus& s) { return !s.busy; }));
+    if (!ready) return fail(ErrorKind::device, "printer busy: the controller does not take data (Busy stays high)", name_);
     if (auto r = lines_->write_data(b); !r) return r;
     lines_->settle();
     ctl_.n_strobe = false;
@@ -45,9 +43,8 @@ Result<void> LptPort::write_byte(std::uint8_t b) {
     lines_->settle();
     ctl_.n_strobe = true;
     if (auto r = lines_->write_control(ctl_); !r) return r;
-    auto done = wait_for([](const LptStatus& s) { return !s.busy; });
-    if (!done) return std::unexpected(done.error());
-    if (!*done) return fail(ErrorKind::device, "no acknowledge from the controller (Busy stuck high)", name_);
+    TACTUS_TRY(done, wait_for([](const LptStatus& s) { return !s.busy; }));
+    if (!done) return fail(ErrorKind::device, "no acknowledge from the controller (Busy stuck high)", name_);
     return {};
 }
 
@@ -64,7 +61,7 @@ Result<bool> LptPort::negotiate_nibble() {
     if (auto r = lines_->write_data(0x00); !r) return std::unexpected(r.error());  // nibble mode
     ctl_.n_select_in = true;
     ctl_.n_auto_fd = false;
-    if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(lines_->write_control(ctl_));
     auto e2 = wait_for([](const LptStatus& s) {
         return !s.n_ack && s.paper_error && s.n_fault && s.select;
     });
@@ -75,17 +72,15 @@ Result<bool> LptPort::negotiate_nibble() {
         return fail(ErrorKind::device, "the controller does not answer IEEE 1284 negotiation (not 1284-capable?)", name_);
     }
     ctl_.n_strobe = false;
-    if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(lines_->write_control(ctl_));
     lines_->settle();
     ctl_.n_strobe = true;
     ctl_.n_auto_fd = true;
-    if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
-    auto e6 = wait_for([](const LptStatus& s) { return s.n_ack; });
-    if (!e6) return std::unexpected(e6.error());
-    if (!*e6) return fail(ErrorKind::device, "IEEE 1284 negotiation did not complete", name_);
-    auto st = lines_->read_status();
-    if (!st) return std::unexpected(st.error());
-    return !st->n_fault;
+    TACTUS_TRY_VOID(lines_->write_control(ctl_));
+    TACTUS_TRY(e6, wait_for([](const LptStatus& s) { return s.n_ack; }));
+    if (!e6) return fail(ErrorKind::device, "IEEE 1284 negotiation did not complete", name_);
+    TACTUS_TRY(st, lines_->read_status());
+    return !st.n_fault;
 }
 
 // Two nibbles (events 7-11 twice): nFault, Select, PError, Busy carry bits 0-3.
@@ -93,20 +88,17 @@ Result<std::uint8_t> LptPort::read_nibble_byte() {
     std::uint8_t value = 0;
     for (int half = 0; half < 2; ++half) {
         ctl_.n_auto_fd = false;  // HostBusy low: ready for a nibble
-        if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
-        auto e9 = wait_for([](const LptStatus& s) { return !s.n_ack; });
-        if (!e9) return std::unexpected(e9.error());
-        if (!*e9) return fail(ErrorKind::device, "nibble transfer stalled (no nAck)", name_);
-        auto st = lines_->read_status();
-        if (!st) return std::unexpected(st.error());
-        const unsigned nib = (st->n_fault ? 1U : 0U) | (st->select ? 2U : 0U) |
-                             (st->paper_error ? 4U : 0U) | (st->busy ? 8U : 0U);
+        TACTUS_TRY_VOID(lines_->write_control(ctl_));
+        TACTUS_TRY(e9, wait_for([](const LptStatus& s) { return !s.n_ack; }));
+        if (!e9) return fail(ErrorKind::device, "nibble transfer stalled (no nAck)", name_);
+        TACTUS_TRY(st, lines_->read_status());
+        const unsigned nib = (st.n_fault ? 1U : 0U) | (st.select ? 2U : 0U) |
+                             (st.paper_error ? 4U : 0U) | (st.busy ? 8U : 0U);
         value = static_cast<std::uint8_t>(value | (nib << (4 * half)));
         ctl_.n_auto_fd = true;
-        if (auto r = lines_->write_control(ctl_); !r) return std::unexpected(r.error());
-        auto e11 = wait_for([](const LptStatus& s) { return s.n_ack; });
-        if (!e11) return std::unexpected(e11.error());
-        if (!*e11) return fail(ErrorKind::device, "nibble transfer stalled (nAck stuck low)", name_);
+        TACTUS_TRY_VOID(lines_->write_control(ctl_));
+        TACTUS_TRY(e11, wait_for([](const LptStatus& s) { return s.n_ack; }));
+        if (!e11) return fail(ErrorKind::device, "nibble transfer stalled (nAck stuck low)", name_);
     }
     return value;
 }
@@ -116,15 +108,13 @@ Result<void> LptPort::terminate() {
     ctl_.n_select_in = false;
     ctl_.n_auto_fd = true;
     if (auto r = lines_->write_control(ctl_); !r) return r;
-    auto e24 = wait_for([](const LptStatus& s) { return !s.n_ack; });
-    if (!e24) return std::unexpected(e24.error());
+    TACTUS_TRY(e24, wait_for([](const LptStatus& s) { return !s.n_ack; }));
     ctl_.n_auto_fd = false;
     if (auto r = lines_->write_control(ctl_); !r) return r;
-    auto e27 = wait_for([](const LptStatus& s) { return s.n_ack; });
-    if (!e27) return std::unexpected(e27.error());
+    TACTUS_TRY(e27, wait_for([](const LptStatus& s) { return s.n_ack; }));
     ctl_.n_auto_fd = true;
     if (auto r = lines_->write_control(ctl_); !r) return r;
-    if (!*e24 || !*e27) return fail(ErrorKind::device, "IEEE 1284 termination did not complete", name_);
+    if (!e24 || !e27) return fail(ErrorKind::device, "IEEE 1284 termination did not complete", name_);
     return {};
 }
 
@@ -132,19 +122,16 @@ Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::m
     if (!lines_) return fail(ErrorKind::device, "device not open", name_);
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     for (;;) {
-        auto avail = negotiate_nibble();
-        if (!avail) return std::unexpected(avail.error());
+        TACTUS_TRY(avail, negotiate_nibble());
         std::size_t n = 0;
-        bool more = *avail;
+        bool more = avail;
         while (more && n < buffer.size()) {
-            auto b = read_nibble_byte();
-            if (!b) return std::unexpected(b.error());
-            buffer[n++] = *b;
-            auto st = lines_->read_status();
-            if (!st) return std::unexpected(st.error());
-            more = !st->n_fault;
+            TACTUS_TRY(b, read_nibble_byte());
+            buffer[n++] = b;
+            TACTUS_TRY(st, lines_->read_status());
+            more = !st.n_fault;
         }
-        if (auto r = terminate(); !r) return std::unexpected(r.error());
+        TACTUS_TRY_VOID(terminate());
         if (n > 0) return n;
         if (std::chrono::steady_clock::now() >= deadline) return std::size_t{0};
         // Nothing yet: poll again shortly (the 8051 answers within a frame time).
@@ -155,9 +142,8 @@ Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::m
 
 Result<LptPort::Condition> LptPort::condition() {
     if (!lines_) return fail(ErrorKind::device, "device not open", name_);
-    auto st = lines_->read_status();
-    if (!st) return std::unexpected(st.error());
-    return Condition{st->paper_error, !st->n_fault, st->select};
+    TACTUS_TRY(st, lines_->read_status());
+    return Condition{st.paper_error, !st.n_fault, st.select};
 }
 
 }  // namespace tactus::transport

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport/serial_port.hpp"
+#include "common/try.hpp"
 
 #include <libserialport.h>
 
@@ -33,7 +34,7 @@ std::string str(const char* s) { return s ? s : ""; }
 Result<std::unique_ptr<SerialPort>> SerialPort::open(const std::string& path,
                                                      const UartSettings& uart) {
     std::unique_ptr<SerialPort> p(new SerialPort(path, uart));
-    if (auto r = p->open_port(); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(p->open_port());
     return p;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport/tty_port.hpp"
+#include "common/try.hpp"
 
 namespace tactus::transport {
 namespace {
@@ -19,7 +20,7 @@ platform::LineSettings line_settings(const UartSettings& uart) {
 
 Result<std::unique_ptr<TtyPort>> TtyPort::open(const std::string& path, const UartSettings& uart) {
     std::unique_ptr<TtyPort> p(new TtyPort(path, uart));
-    if (auto r = p->open_fd(); !r) return std::unexpected(r.error());
+    TACTUS_TRY_VOID(p->open_fd());
     return p;
 }
 
