@@ -73,13 +73,11 @@ per_target=$(( fuzz_total * parallel / (${#targets[@]} > 0 ? ${#targets[@]} : 1)
 [ "$per_target" -ge 10 ] || per_target=10
 echo "${#targets[@]} targets, ${per_target} s each, ${parallel} at a time"
 fuzz_one() {
-  local target=$1 seconds=$2 name corpus work log rc=0
+  local target=$1 seconds=$2 name work log rc=0
   name=$(basename "$target")
-  corpus=tests/fuzz/corpus/${name#fuzz_}
-  [ -d "$corpus" ] || corpus=tests/fuzz/corpus/$name
   work=$(mktemp -d)
   log=$(mktemp)
-  [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
+  tools/fuzz-corpus.sh "$name" "$work"
   "$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
     -print_final_stats=1 "$work" >"$log" 2>&1 || rc=$?
   echo "-- $name (exit $rc)"
