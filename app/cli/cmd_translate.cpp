@@ -105,7 +105,9 @@ void back_translate_pef(const translate::Translator& translator, const std::stri
 }
 
 void run_translate(const TranslateArgs& a) {
-    const auto translator = require(translate::open_translator(a.tables, a.back ? translate::LanguageSwitchOptions{.enabled = false} : a.language.options()));
+    auto language = a.language.options();
+    if (a.back) language.enabled = false;  // braille has no script to tell languages by
+    const auto translator = require(translate::open_translator(a.tables, language));
     const std::string name = a.file == "-" ? "<stdin>" : a.file;
     int number = 0;
     if (a.file == "-" && !a.back) {

@@ -26,12 +26,14 @@ bool is_mainland_tag(std::string_view tag) {
            lower.find("-cn-") != std::string::npos || lower.ends_with("-sg");
 }
 
-// May a character no script claims (space, digit, punctuation) be written
-// with this slot's table? The Chinese tables know every punctuation mark; an
-// English table knows none of the CJK ones (，。「」 give dots 7-8 escapes).
+// May a character no script claims (space, digit, punctuation) go with a
+// passage in this slot's language? An English table knows no CJK punctuation
+// (，。「」 give dots 7-8 escapes); a Chinese passage takes CJK and full-width
+// punctuation and spaces, while ASCII punctuation after a Chinese word in an
+// English sentence is the sentence's ("say 你好, then").
 bool suits(TableSlot slot, char32_t c) {
-    if (slot != TableSlot::english) return true;
-    return c < 0x3000;
+    if (slot == TableSlot::english) return c < 0x3000;
+    return c == U' ' || c == 0x3000 || c == 0xA0 || c >= 0x2E80;
 }
 
 }  // namespace
@@ -202,7 +204,11 @@ Result<Translator> open_translator(std::string tables, const LanguageSwitchOptio
     // A second table the user named is checked now, where the mistake is made.
     if (!options.second_table.empty()) {
         auto second = s->translator(s->primary_is_chinese() ? TableSlot::english : TableSlot::chinese_tw);
-        if (!second) return std::unexpected(located(second.error(), "--second-table"));
+        if (!second) {
+            auto e = second.error();
+            e.where = "--second-table";
+            return std::unexpected(std::move(e));
+        }
     }
     t->set_language_switch(std::move(s));
     return t;

@@ -3,6 +3,7 @@
 // (translate/language_switch.hpp, translate/code_switch.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -248,8 +249,11 @@ TEST(LanguageSwitch, BreaksStayIndexedAcrossTheSwitch) {
         ASSERT_EQ(tb.breaks.size(), tb.cells.size());
         ASSERT_FALSE(tb.cells.empty());
         EXPECT_EQ(tb.breaks[0], translate::BreakBefore::never);
-        for (std::size_t i = 0; i < tb.cells.size(); ++i)
-            if (tb.breaks[i] == translate::BreakBefore::blank) EXPECT_TRUE(tb.cells[i].blank()) << i;
+        for (std::size_t i = 0; i < tb.cells.size(); ++i) {
+            if (tb.breaks[i] == translate::BreakBefore::blank) {
+                EXPECT_TRUE(tb.cells[i].blank()) << i;
+            }
+        }
         if (room == 0) continue;
         // A divided word's lines are at most `room` cells between forced breaks.
         std::size_t line = 0;
@@ -273,8 +277,9 @@ TEST(LanguageSwitch, LessonChineseLineGivesNoDotsSevenEightWarning) {
         auto paged = pipeline::lay_out_file(kImportData / "lesson.md", o);
         EXPECT_TRUE(paged) << paged.error().to_string();
         std::size_t n = 0;
-        if (paged)
+        if (paged) {
             for (const auto& w : paged->warnings) n += w.find("dots 7-8") != std::string::npos;
+        }
         return n;
     };
     EXPECT_EQ(dots_warnings(true), 0u);
