@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "translate/language_switch.hpp"
 
+#include <unicode/translit.h>
 #include <unicode/uscript.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "common/utf8.hpp"
 #include "translate/catalogue.hpp"
@@ -150,10 +152,50 @@ std::vector<LanguageRun> LanguageSwitch::split(std::u32string_view text, std::sp
     for (std::size_t i = 0; i < n;) {
         std::size_t j = i + 1;
         while (j < n && slot[j] == slot[i]) ++j;
-        runs.push_back(LanguageRun{i, j, slot[i]});
+        auto s = slot[i];
+        const bool unmarked = std::all_of(marks.begin() + static_cast<std::ptrdiff_t>(std::min(i, marks.size())),
+                                          marks.begin() + static_cast<std::ptrdiff_t>(std::min(j, marks.size())),
+                                          [](TableSlot m) { return m == TableSlot::unmarked; });
+        if (s == TableSlot::chinese_tw && unmarked && simplified_only(text.substr(i, j - i))) s = TableSlot::chinese_cn;
+        runs.push_back(LanguageRun{i, j, s});
         i = j;
     }
     return runs;
+}
+
+// Simplified characters are those ICU's Simplified-to-Traditional
+// transliteration changes, Traditional ones those Traditional-to-Simplified
+// changes (as translate/script_check.cpp counts them).
+struct LanguageSwitch::Transliterators {
+    std::unique_ptr<icu::Transliterator> to_traditional, to_simplified;
+};
+
+bool LanguageSwitch::simplified_only(std::u32string_view han) const {
+    std::lock_guard guard(mutex_);
+    if (!transliterators_) {
+        auto t = std::make_shared<Transliterators>();
+        UErrorCode status = U_ZERO_ERROR;
+        t->to_traditional.reset(icu::Transliterator::createInstance("Hans-Hant", UTRANS_FORWARD, status));
+        if (U_SUCCESS(status))
+            t->to_simplified.reset(icu::Transliterator::createInstance("Hant-Hans", UTRANS_FORWARD, status));
+        if (U_FAILURE(status)) t = std::make_shared<Transliterators>();
+        transliterators_ = std::move(t);
+    }
+    auto& to_traditional_ = transliterators_->to_traditional;
+    auto& to_simplified_ = transliterators_->to_simplified;
+    if (!to_traditional_ || !to_simplified_) return false;
+    bool simplified = false;
+    for (char32_t c : han) {
+        if (script_of(c) != USCRIPT_HAN) continue;
+        const icu::UnicodeString original(static_cast<UChar32>(c));
+        icu::UnicodeString s = original;
+        to_simplified_->transliterate(s);
+        if (s != original) return false;  // a Traditional character
+        icu::UnicodeString t = original;
+        to_traditional_->transliterate(t);
+        simplified = simplified || t != original;
+    }
+    return simplified;
 }
 
 Result<const Translator*> LanguageSwitch::translator(TableSlot slot) const {

@@ -73,7 +73,9 @@ public:
     [[nodiscard]] TableSlot slot_for_language(std::string_view language_tag) const;
 
     // The text cut into runs of one table each. `marks` is empty or one slot
-    // per code point (TableSlot::unmarked: decided by its script). A space,
+    // per code point (TableSlot::unmarked: decided by its script; unmarked
+    // Chinese in Simplified characters only, none of them Traditional, goes
+    // to the mainland table, other Chinese to Taiwan's). A space,
     // digit or punctuation mark between two runs of the same other language
     // belongs to them ("New York", "中文，好"); elsewhere to the document's
     // own table. Always at least one run for non-empty text; one primary run
@@ -94,8 +96,12 @@ private:
     bool primary_chinese_ = false;
     bool primary_ueb_ = false;
     bool primary_mainland_ = false;
+    [[nodiscard]] bool simplified_only(std::u32string_view han) const;
+
     mutable std::mutex mutex_;
     mutable std::array<std::shared_ptr<const Translator>, kTableSlots> tables_;
+    struct Transliterators;  // ICU's Hans-Hant and Hant-Hans, made on first use
+    mutable std::shared_ptr<Transliterators> transliterators_;
 };
 
 // The document's table with the switch in it (off when `options.enabled` is

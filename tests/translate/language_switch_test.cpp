@@ -79,6 +79,19 @@ TEST(LanguageSwitch, SplitsChineseOutOfEnglishByScript) {
     EXPECT_EQ(runs_of(tr, U"plain English only, 42."), (std::vector<std::string>{"0:plain English only, 42."}));
 }
 
+// Unmarked Chinese in Simplified characters (汉, 语 have Traditional forms
+// 漢, 語) goes to the mainland table; text with a Traditional character, or
+// only characters both write alike, to Taiwan's.
+TEST(LanguageSwitch, SimplifiedChineseGoesToTheMainlandTable) {
+    const auto tr = open_mixed("en-ueb-g2.ctb");
+    EXPECT_EQ(runs_of(tr, U"say 汉语 now"), (std::vector<std::string>{"0:say ", "3:汉语", "0: now"}));
+    EXPECT_EQ(runs_of(tr, U"say 漢語 now"), (std::vector<std::string>{"0:say ", "2:漢語", "0: now"}));
+    EXPECT_EQ(runs_of(tr, U"say 中文 now"), (std::vector<std::string>{"0:say ", "2:中文", "0: now"}));
+    const auto cn = open_one("zhcn-g1.ctb");
+    const auto tb = paragraph(tr, "say 汉语 now");
+    EXPECT_TRUE(contains(tb.cells, cells_of(cn, U"汉语"))) << document::to_unicode_text(tb.cells);
+}
+
 TEST(LanguageSwitch, SplitsEnglishOutOfChineseByScript) {
     const auto tr = open_mixed("zh-tw.ctb");
     EXPECT_EQ(runs_of(tr, U"我喜歡apple和New York。"),
