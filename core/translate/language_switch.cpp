@@ -5,6 +5,7 @@
 #include <unicode/uscript.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 
 #include "common/utf8.hpp"
@@ -36,6 +37,41 @@ bool is_mainland_tag(std::string_view tag) {
 bool suits(TableSlot slot, char32_t c) {
     if (slot == TableSlot::english) return c < 0x3000;
     return c == U' ' || c == 0x3000 || c == 0xA0 || c >= 0x2E80;
+}
+
+// The installed tables do not change while Tactus runs, and an opened
+// translator does not change at all: both are looked up once per process.
+// Every editor paragraph layout and every document opens a switch of its own;
+// listing the catalogue and reading zh-tw.ctb's files again each time cost a
+// random-edit test run minutes.
+std::mutex& cache_mutex() {
+    static std::mutex m;
+    return m;
+}
+
+std::string catalogue_table(const std::string& language, const std::string& grade) {
+    static std::map<std::string, std::string> known;
+    const auto key = language + "/" + grade;
+    {
+        std::lock_guard guard(cache_mutex());
+        if (auto it = known.find(key); it != known.end()) return it->second;
+    }
+    auto table = recommended_table(language, grade);
+    std::lock_guard guard(cache_mutex());
+    return known.emplace(key, std::move(table)).first->second;
+}
+
+Result<std::shared_ptr<const Translator>> shared_translator(const std::string& table) {
+    static std::map<std::string, std::shared_ptr<const Translator>> opened;
+    {
+        std::lock_guard guard(cache_mutex());
+        if (auto it = opened.find(table); it != opened.end()) return it->second;
+    }
+    auto t = Translator::open(table);
+    if (!t) return std::unexpected(t.error());
+    auto shared = std::make_shared<const Translator>(std::move(*t));
+    std::lock_guard guard(cache_mutex());
+    return opened.emplace(table, std::move(shared)).first->second;
 }
 
 }  // namespace
@@ -207,16 +243,16 @@ Result<const Translator*> LanguageSwitch::translator(TableSlot slot) const {
     const bool second = slot == TableSlot::english ? primary_chinese_ : !primary_chinese_;
     std::string table = second ? options_.second_table : std::string{};
     if (table.empty()) {
-        table = slot == TableSlot::english      ? recommended_table("en", options_.english_grade)
-                : slot == TableSlot::chinese_cn ? recommended_table("zh-CN")
-                                                : recommended_table("zh-TW");
+        table = slot == TableSlot::english      ? catalogue_table("en", options_.english_grade)
+                : slot == TableSlot::chinese_cn ? catalogue_table("zh-CN", {})
+                                                : catalogue_table("zh-TW", {});
     }
     if (table.empty())
         return fail(std::string("no installed braille table for ") +
                     (slot == TableSlot::english ? "English" : "Chinese") + " passages (liblouis catalogue)");
-    auto opened = Translator::open(table);
+    auto opened = shared_translator(table);
     if (!opened) return std::unexpected(opened.error());
-    t = std::make_shared<const Translator>(std::move(*opened));
+    t = std::move(*opened);
     return t.get();
 }
 
