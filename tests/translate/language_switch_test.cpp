@@ -225,7 +225,6 @@ TEST(LanguageSwitch, OneLanguageTextIsUnchanged) {
     };
     const std::vector<Case> cases = {
         {kImportData / "books" / "jekyll-and-hyde.epub", "en-ueb-g2.ctb"},
-        {kImportData / "books" / "jekyll-and-hyde.epub", "en-ueb-g1.ctb"},
         {fs::path(TACTUS_RESOURCES_DIR) / "samples" / "chinese-tw.txt", "zh-tw.ctb"},
         {fs::path(TACTUS_RESOURCES_DIR) / "samples" / "chinese-cn.txt", "zhcn-g2.ctb"},
     };
