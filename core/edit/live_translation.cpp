@@ -15,6 +15,7 @@
 #include "layout/line_breaker.hpp"
 #include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
+#include "translate/language_switch.hpp"
 #include "translate/script_check.hpp"
 
 namespace tactus::edit {
@@ -24,7 +25,9 @@ using live_lines::braille_text_line;
 
 Result<LiveLayout> LiveLayout::create(const std::string& tables, layout::LayoutOptions options) {
     if (auto ok = validate(options); !ok) return std::unexpected(ok.error());
-    auto translator = translate::Translator::open(tables);
+    // As the pipeline does: passages in another language with their table,
+    // so the editor shows the braille that is embossed.
+    auto translator = translate::open_translator(tables, {});
     if (!translator) return std::unexpected(translator.error());
     LiveLayout l(std::move(*translator), std::move(options));
     l.relayout_from(0);
@@ -116,7 +119,9 @@ void LiveLayout::translate_entry(std::size_t i) {
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
-    auto translator = translate::Translator::open(tables);
+    // As the pipeline does: passages in another language with their table,
+    // so the editor shows the braille that is embossed.
+    auto translator = translate::open_translator(tables, {});
     if (!translator) return std::unexpected(translator.error());
     translator_ = std::move(*translator);
     numbers_.clear();

@@ -93,8 +93,11 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     }
     if (layout::is_ready_braille(document) && !options.reflow_braille)
         return layout::keep_braille_pages(document, options.layout);
-    auto translator = translate::Translator::open(options.tables);
+    auto translator = translate::open_translator(options.tables, options.language_switch);
     if (!translator) return std::unexpected(translator.error());
+    // The second language's tables are compiled once, here, not in every worker.
+    if (const auto* sw = translator->language_switch())
+        if (auto ok = sw->prepare(document); !ok) return std::unexpected(ok.error());
     if (options.book) {
         auto book = lay_out_book(document, options.layout, *options.book, *translator);
         if (!book) return std::unexpected(book.error());
