@@ -120,6 +120,9 @@ public:
         if (feeder_.joinable()) feeder_.join();
         if (drainer_.joinable()) drainer_.join();
         drain_trace();
+        if (std::getenv("TACTUS_LPT_EMU_STATS"))
+            std::fprintf(stderr, "lpt:emu: %ld console lines, %.2f ms a line, %.3f s simulated, %ld instructions\n",
+                         lines_, lines_ ? wall_s_ * 1000 / static_cast<double>(lines_) : 0.0, clock_s_, instructions_);
         std::error_code ec;
         if (!dir_.empty() && !std::getenv("TACTUS_KEEP_EMULATOR_DIR")) fs::remove_all(dir_, ec);
     }
@@ -212,10 +215,11 @@ private:
         busy_.emplace(std::move(*b));
         if (auto r = busy_->sync(); !r) return r;
         // s51 naps 100 ms whenever it finds no command waiting while the chip
-        // is stopped; a second console always holding a no-op keeps it awake,
-        // so each lockstep line costs what s51 takes to do it
-        // (bench/firmware/lpt-bridge.md). One thread writes, one reads, so
-        // neither side ever blocks the other.
+        // is stopped; a second console kept full of no-ops keeps it awake, so
+        // each lockstep line costs what s51 takes to do it. Kept full: a few
+        // no-ops refilled as they are answered run dry between the host's
+        // lines and s51 naps again (bench/firmware/lpt-bridge.md). One thread
+        // writes, one reads, so neither side ever blocks the other.
         feeder_ = std::thread([this] {
             std::string batch;
             for (int i = 0; i < 64; ++i) batch += "echo\n";
@@ -278,7 +282,11 @@ private:
         changed_ = false;
         if (!reads.empty()) line += reads + ";";
         line += "step " + std::to_string(steps);
+        const auto t0 = std::chrono::steady_clock::now();
         auto out = cmd_->command(line);
+        wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        ++lines_;
+        instructions_ += steps;
         if (!out) return remember(out.error());
         const auto at = out->find("stepped ");
         if (at == std::string::npos) {
@@ -332,6 +340,8 @@ private:
     bool changed_ = true;
     long steps_ = kReactSteps;
     double clock_s_ = 0;
+    long lines_ = 0, instructions_ = 0;  // for TACTUS_LPT_EMU_STATS
+    double wall_s_ = 0;
 };
 
 Result<std::unique_ptr<transport::ParallelPortLines>> open_emulated(const transport::DeviceSpec& spec) {
@@ -354,7 +364,7 @@ void register_emulated_lpt() {
     transport::LptTimings t;
     // On the chip's clock: each poll that finds no reply lets it run this long
     // (its motion goes on meanwhile), as a real host's keep-alive would.
-    t.poll_interval = std::chrono::milliseconds(20);
+    t.poll_interval = std::chrono::milliseconds(50);
     transport::register_lpt_cable("emu", {.open = open_emulated, .timings = t});
 }
 
