@@ -22,6 +22,7 @@
 #include "platform/durable_file.hpp"
 #include "platform/termination.hpp"
 #include "profile/profile.hpp"
+#include "transport/device.hpp"
 #include "transport/lpt_port.hpp"
 
 namespace tactus::cli {
@@ -101,6 +102,9 @@ struct EmuOptions {
     std::string log;
     std::string trace;
     bool paper_out = false;
+    // With paper_out: the operator loads paper this long (chip time) after
+    // the host's side first shows PError in compatibility mode.
+    std::optional<double> reload_s;
 };
 
 class EmulatedLptLines final : public transport::ParallelPortLines {
@@ -145,6 +149,7 @@ public:
         if (!out) return std::unexpected(out.error());
         const auto p2 = sfr_value(*out, "P2:"), p3 = sfr_value(*out, "P3:");
         if (!p2 || !p3) return fail(ErrorKind::device, "s51 did not show the port latches: " + out->substr(0, 200), "lpt:emu");
+        operator_loads_paper(((*p2 >> 2) & 1U) != 0);
         return LptStatus{.n_ack = ((*p3 >> 5) & 1U) != 0,
                          .busy = ((*p2 >> 3) & 1U) != 0,
                          .paper_error = ((*p2 >> 2) & 1U) != 0,
@@ -254,6 +259,17 @@ private:
         }
     }
 
+    // PError in compatibility mode is paper out (in nibble mode it is a data
+    // bit): the operator sees it and, reload_s later, loads paper.
+    void operator_loads_paper(bool perror) {
+        if (!o_.paper_out || !o_.reload_s) return;
+        if (perror && !ctl_.n_select_in && !perror_seen_s_) perror_seen_s_ = clock_s_;
+        if (perror_seen_s_ && clock_s_ >= *perror_seen_s_ + *o_.reload_s) {
+            o_.paper_out = false;
+            changed_ = true;
+        }
+    }
+
     std::string log_tail() const {
         std::ifstream in(dir_ / "s51.log");
         std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -340,6 +356,7 @@ private:
     bool changed_ = true;
     long steps_ = kReactSteps;
     double clock_s_ = 0;
+    std::optional<double> perror_seen_s_;
     long lines_ = 0, instructions_ = 0;  // for TACTUS_LPT_EMU_STATS
     double wall_s_ = 0;
 };
@@ -351,8 +368,10 @@ Result<std::unique_ptr<transport::ParallelPortLines>> open_emulated(const transp
         else if (k == "log") o.log = v;
         else if (k == "trace") o.trace = v;
         else if (k == "paper" && (v == "out" || v == "in")) o.paper_out = v == "out";
+        else if (k == "reload" && transport::option_number(v) && *transport::option_number(v) >= 0)
+            o.reload_s = *transport::option_number(v);
         else
-            return fail(ErrorKind::usage, "unknown option \"" + k + "=" + v + "\" (lpt:emu takes fw=, log=, trace=, paper=in|out)",
+            return fail(ErrorKind::usage, "unknown option \"" + k + "=" + v + "\" (lpt:emu takes fw=, log=, trace=, paper=in|out, reload=SECONDS)",
                         "lpt:emu");
     }
     return EmulatedLptLines::open(o);

@@ -12,7 +12,8 @@
 //
 // Options: fw= the emulator build's image (its .map beside it), log= a strike
 // log (JSON lines, as `sim --strike-log` writes), trace= keep the pin trace
-// (VCD) there, paper=out (the paper sensor low from the start).
+// (VCD) there, paper=out (the paper sensor low from the start), reload=S
+// (with paper=out: paper loaded S seconds of chip time after PError shows).
 
 namespace tactus::cli {
 

@@ -47,6 +47,25 @@ TEST_F(FirmwareOverLpt, TheStrikesReadFromThePinsAreThePlan) {
     EXPECT_EQ(test::read_strike_log(log.string()), want);
 }
 
+// Paper out over the parallel port: the firmware finds no paper at the
+// sheet's start and shows it on PError; the job waits, the operator loads
+// paper half a second (chip time) after PError showed, and the job goes on
+// by itself: every planned strike once, none twice, none missing.
+TEST_F(FirmwareOverLpt, PaperOutOnPErrorWaitsAndTheJobResumesStrikingEachDotOnce) {
+    const auto doc = dir_ / "word.md";
+    std::ofstream(doc) << "Tactus\n";
+    const auto log = dir_ / "strikes.jsonl";
+    const std::string device =
+        "lpt:emu?fw=" + std::string(TACTUS_FIRMWARE_IHX) + "&paper=out&reload=0.5&log=" + log.string();
+    const auto r = test::run_captured({TACTUS_CLI, "emboss", doc.string(), "--firmware-tables",
+                                       TACTUS_FIRMWARE_EMU_TABLES, "--device", device});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE((r.out + r.err).find("paper out"), std::string::npos) << r.out << r.err;
+    const auto want = controller::planned_strikes(test::plan_with_firmware_tables(doc.string(), TACTUS_FIRMWARE_EMU_TABLES));
+    ASSERT_FALSE(want.empty());
+    EXPECT_EQ(test::read_strike_log(log.string()), want);
+}
+
 // A device string the cable cannot use is refused before anything runs, with
 // what is wrong and the exit code of a usage error or a missing device.
 TEST(FirmwareOverLptDevice, ABadDeviceStringIsRefusedWithTheReason) {
