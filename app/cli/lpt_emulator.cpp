@@ -39,7 +39,10 @@ constexpr double kXtalHz = 11.0592e6;  // s51 -X; its "ticks" are oscillator clo
 // reading without changing anything (it waits: Busy, a reply, motion).
 constexpr long kReactSteps = 400;
 constexpr long kMostSteps = 150000;
-constexpr long kSettleSteps = 30;  // the lines held before the next change (a strobe pulse's width)
+// The lines held before the next change: a strobe pulse as long as the
+// firmware takes to answer it (its interrupt is edge-triggered), so the
+// status read after the pulse already shows the answer.
+constexpr long kSettleSteps = kReactSteps;
 constexpr long kBootSteps = 200000;
 
 Result<void> device_error(const std::string& what) { return fail(ErrorKind::device, what, "lpt:emu"); }
@@ -137,7 +140,7 @@ public:
         return {};
     }
     Result<void> write_control(const LptControl& lines) override {
-        if (!(lines == ctl_)) changed_ = true;
+        if (!(lines == ctl_)) changed_ = control_changed_ = true;
         ctl_ = lines;
         return {};
     }
@@ -157,7 +160,9 @@ public:
                          .n_fault = (*p2 & 1U) != 0};
     }
     void settle() override {
-        if (changed_) (void)exchange("", kSettleSteps);
+        // New data alone needs no time: s51 sets the data pins before the
+        // control pins on the line that carries both (pins()).
+        if (control_changed_) (void)exchange("", kSettleSteps);
     }
     [[nodiscard]] std::optional<double> clock() const override { return clock_s_; }
     bool run_for(std::chrono::microseconds d) override {
@@ -295,7 +300,7 @@ private:
         if (failed_) return std::unexpected(*failed_);
         std::string line;
         if (changed_) line = pins() + ";";
-        changed_ = false;
+        changed_ = control_changed_ = false;
         if (!reads.empty()) line += reads + ";";
         line += "step " + std::to_string(steps);
         const auto t0 = std::chrono::steady_clock::now();
@@ -354,6 +359,7 @@ private:
     LptControl ctl_{};
     std::uint8_t data_ = 0;
     bool changed_ = true;
+    bool control_changed_ = false;
     long steps_ = kReactSteps;
     double clock_s_ = 0;
     std::optional<double> perror_seen_s_;
@@ -383,7 +389,7 @@ void register_emulated_lpt() {
     transport::LptTimings t;
     // On the chip's clock: each poll that finds no reply lets it run this long
     // (its motion goes on meanwhile), as a real host's keep-alive would.
-    t.poll_interval = std::chrono::milliseconds(50);
+    t.poll_interval = std::chrono::milliseconds(150);
     transport::register_lpt_cable("emu", {.open = open_emulated, .timings = t});
 }
 
