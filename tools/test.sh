@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 jobs=$(nproc)
 # The fuzz stage's whole budget in seconds, shared by the targets (at least
 # 10 s each), two at a time on a machine with two cores or more.
-fuzz_total=${TACTUS_FUZZ_SECONDS_TOTAL:-240}
+fuzz_total=${TACTUS_FUZZ_SECONDS_TOTAL:-160}
 
 stages=()
 stage_start=0
