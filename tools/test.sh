@@ -85,6 +85,9 @@ fuzz_one() {
   rm -rf "$work" "$log"
   return "$rc"
 }
+# The leaks of third-party libraries the sanitize tests also suppress
+# (liblouis's lou_getTableInfo): the fuzz targets reach the same calls.
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"
 export -f fuzz_one
 printf '%s\n' "${targets[@]}" | xargs -P "$parallel" -I{} bash -c 'fuzz_one "$1" "$2"' _ {} "$per_target"
 
