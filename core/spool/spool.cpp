@@ -106,6 +106,18 @@ double now_seconds() {
 
 namespace {
 
+// The tables, the version and the application id of a new spool, in one
+// transaction, in WAL mode.
+Result<void> write_schema(sql::Database& db) {
+    SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
+    auto tx = sql::Transaction::begin(db);
+    if (!tx) return std::unexpected(tx.error());
+    SPOOL_TRY(db.exec(kSchema));
+    SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
+                      "; PRAGMA application_id=" + std::to_string(kApplicationId)));
+    return tx->commit();
+}
+
 // A new spool is made whole beside its place, then linked into it, so no
 // process ever opens a half-made one: cupsd starts a server's first job's
 // filter and backend together and both create the spool; writing the schema
@@ -124,13 +136,7 @@ Result<void> create_spool_file(const std::filesystem::path& path, int busy_timeo
             return std::unexpected(e);
         }
         sql::Database db = std::move(*opened);
-        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
-        auto tx = sql::Transaction::begin(db);
-        if (!tx) return std::unexpected(tx.error());
-        SPOOL_TRY(db.exec(kSchema));
-        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
-                          "; PRAGMA application_id=" + std::to_string(kApplicationId)));
-        SPOOL_TRY(tx->commit());
+        SPOOL_TRY(write_schema(db));
     }  // closed: the log is folded into the file and removed with it
     std::error_code linked, ec;
     std::filesystem::create_hard_link(made, path, linked);
@@ -218,13 +224,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         // root polling the CUPS backend's new spool made it read-only for lp.
         if (!options.create) return not_there_yet();
         if (read_only) return fail("the spool database is empty and read-only", path.string());
-        SPOOL_TRY(db.exec("PRAGMA journal_mode=WAL"));
-        auto tx = sql::Transaction::begin(db);
-        if (!tx) return std::unexpected(tx.error());
-        SPOOL_TRY(db.exec(kSchema));
-        SPOOL_TRY(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
-                          "; PRAGMA application_id=" + std::to_string(kApplicationId)));
-        SPOOL_TRY(tx->commit());
+        SPOOL_TRY(write_schema(db));
     } else if (app_id != kApplicationId) {
         return fail("this SQLite file is not a Tactus spool (application id " +
                         std::to_string(app_id) + "); it was left untouched",
