@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 jobs=$(nproc)
 # The fuzz stage's whole budget in seconds, shared by the targets (at least
 # 10 s each), two at a time on a machine with two cores or more.
-fuzz_total=${TACTUS_FUZZ_SECONDS_TOTAL:-240}
+fuzz_total=${TACTUS_FUZZ_SECONDS_TOTAL:-160}
 
 stages=()
 stage_start=0
@@ -73,13 +73,11 @@ per_target=$(( fuzz_total * parallel / (${#targets[@]} > 0 ? ${#targets[@]} : 1)
 [ "$per_target" -ge 10 ] || per_target=10
 echo "${#targets[@]} targets, ${per_target} s each, ${parallel} at a time"
 fuzz_one() {
-  local target=$1 seconds=$2 name corpus work log rc=0
+  local target=$1 seconds=$2 name work log rc=0
   name=$(basename "$target")
-  corpus=tests/fuzz/corpus/${name#fuzz_}
-  [ -d "$corpus" ] || corpus=tests/fuzz/corpus/$name
   work=$(mktemp -d)
   log=$(mktemp)
-  [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
+  tools/fuzz-corpus.sh "$name" "$work"
   "$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
     -print_final_stats=1 "$work" >"$log" 2>&1 || rc=$?
   echo "-- $name (exit $rc)"
@@ -87,6 +85,9 @@ fuzz_one() {
   rm -rf "$work" "$log"
   return "$rc"
 }
+# The leaks of third-party libraries the sanitize tests also suppress
+# (liblouis's lou_getTableInfo): the fuzz targets reach the same calls.
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"
 export -f fuzz_one
 printf '%s\n' "${targets[@]}" | xargs -P "$parallel" -I{} bash -c 'fuzz_one "$1" "$2"' _ {} "$per_target"
 

@@ -280,7 +280,7 @@ void add_emboss_command(CLI::App& app) {
     args->layout.add_to(*cmd, /*with_interpoint=*/false);
     cmd->add_option("--profile,-p", args->profile, "Printer profile (JSON); default: the source embosser");
     cmd->add_option("--device,-d", args->device,
-                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, sim, or a "
+                    "serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/N, hid:VID:PID, lpt:/dev/parport0, lpt:emu?fw=FILE.ihx (the reference firmware in s51, docs/transports.md), sim, or a "
                     "CUPS queue ipp://host[:port]/printers/NAME (the server lays the document out with its "
                     "embosser's profile; --table, --cells, --lines, --page-numbers, --no-print-pages, "
                     "--eight-dot, --encoding, --copies and --title go with the job; the command follows "

@@ -23,6 +23,7 @@ struct ServeArgs {
     int poll_ms = 100;
     int reconnect_ms = 30000;
     int fault_wait_ms = 120000;
+    int write_retry_ms = 10000;
 };
 
 std::atomic<bool> g_stop{false};
@@ -43,6 +44,7 @@ void run_serve(const ServeArgs& a) {
     options.max_retries = a.max_retries;
     options.retry_backoff = std::chrono::milliseconds(a.retry_ms);
     options.poll = std::chrono::milliseconds(a.poll_ms);
+    options.write_retry = std::chrono::milliseconds(a.write_retry_ms);
     options.link.reconnect_deadline = std::chrono::milliseconds(a.reconnect_ms);
     options.link.fault_wait = std::chrono::milliseconds(a.fault_wait_ms);
     const auto link_options = options.link;
@@ -89,6 +91,10 @@ void add_serve_command(CLI::App& app) {
         ->capture_default_str()->check(CLI::PositiveNumber);
     cmd->add_option("--fault-wait-ms", a->fault_wait_ms, "How long to wait for paper before pausing the job")
         ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_option("--write-retry-ms", a->write_retry_ms,
+                    "How long a refused write to the spool (disk full) is tried again before the job is "
+                    "stopped and paused with that reason, and serve exits 1")
+        ->capture_default_str()->check(CLI::NonNegativeNumber);
     cmd->callback([a] { run_serve(*a); });
 }
 

@@ -41,22 +41,7 @@ struct SimArgs {
     ProtocolArgs protocol;  // the C++ model's protocol and tables
 };
 
-// One strike as a JSON line, flushed: a reader sees every strike at once. The
-// same format for the C++ controller and the firmware in the emulator.
-void log_strike(std::ofstream& log, const controller::LoggedStrike& s) {
-    if (!log) return;
-    log << nlohmann::json{{"sheet", s.sheet},
-                          {"side", s.side == plan::Side::front ? "front" : "back"},
-                          {"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
-                          {"carriage_step", s.carriage_step},
-                          {"feed_step", s.feed_step},
-                          {"x_mm", s.x_mm},
-                          {"y_mm", s.y_mm},
-                          {"time_s", s.time_s}}
-               .dump()
-        << '\n'
-        << std::flush;
-}
+void log_strike(std::ofstream& log, const controller::LoggedStrike& s) { write_strike_json(log, s); }
 
 std::ofstream open_log(const std::string& path) {
     std::ofstream log;

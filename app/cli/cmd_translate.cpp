@@ -6,10 +6,13 @@
 #include <iterator>
 
 #include "command.hpp"
+#include "language_args.hpp"
 #include "common/file_io.hpp"
 #include "common/utf8.hpp"
 #include "import/import.hpp"
 #include "translate/catalogue.hpp"
+#include "translate/language_switch.hpp"
+#include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
 
 namespace tactus::cli {
@@ -20,7 +23,27 @@ struct TranslateArgs {
     std::string to = "unicode";
     std::string file = "-";
     bool back = false;
+    LanguageArgs language;
 };
+
+// A piece with a passage in another language: translated as a paragraph is
+// (translate_block), each language with its table and the signs around it,
+// then written in the display asked for. Text all in the table's language
+// never comes here: it stays exactly what liblouis gives.
+std::optional<std::u32string> translate_mixed(const translate::Translator& translator, std::u32string_view piece,
+                                              bool brf, const std::string& where) {
+    const auto* sw = translator.language_switch();
+    if (!sw) return std::nullopt;
+    const auto runs = sw->split(piece);
+    if (runs.size() <= 1 && (runs.empty() || runs.front().slot == translate::TableSlot::primary)) return std::nullopt;
+    document::Block block;
+    block.spans.push_back(document::Span{utf32_to_utf8(piece)});
+    const auto tb = translate::translate_block(block, translator);
+    if (!tb) fail_with(located(tb.error(), where));
+    std::u32string out;
+    for (const auto c : tb->cells) out += brf ? static_cast<char32_t>(document::cell_to_brf(c)) : c.unicode();
+    return out;
+}
 
 // A line of braille (Unicode braille or Braille ASCII) as cells.
 document::BrailleLine braille_cells(std::u32string_view text, const std::string& where) {
@@ -48,8 +71,10 @@ std::string translate_line(const translate::Translator& translator, const Transl
     for (;;) {
         const auto feed = std::min(text->find(U'\f', from), text->size());
         const std::u32string_view piece = std::u32string_view(*text).substr(from, feed - from);
-        const auto braille = a.back ? translator.back_translate(braille_cells(piece, where))
-                                    : translator.translate_with_display(piece, display);
+        const auto mixed = a.back ? std::nullopt : translate_mixed(translator, piece, a.to == "brf", where);
+        const auto braille = a.back  ? translator.back_translate(braille_cells(piece, where))
+                             : mixed ? Result<std::u32string>(*mixed)
+                                     : translator.translate_with_display(piece, display);
         if (!braille) fail_with(located(braille.error(), where));
         out += utf32_to_utf8(*braille);
         if (feed == text->size()) break;
@@ -80,7 +105,9 @@ void back_translate_pef(const translate::Translator& translator, const std::stri
 }
 
 void run_translate(const TranslateArgs& a) {
-    const auto translator = require(translate::Translator::open(a.tables));
+    auto language = a.language.options();
+    if (a.back) language.enabled = false;  // braille has no script to tell languages by
+    const auto translator = require(translate::open_translator(a.tables, language));
     const std::string name = a.file == "-" ? "<stdin>" : a.file;
     int number = 0;
     if (a.file == "-" && !a.back) {
@@ -122,6 +149,7 @@ void add_translate_command(CLI::App& app) {
                                    "Translate text to braille line by line (no layout)");
     cmd->add_option("--table,-t", args->tables, "liblouis table list, e.g. en-ueb-g2.ctb")
         ->capture_default_str();
+    args->language.add_to(*cmd);
     cmd->add_option("--to", args->to, "Output: unicode braille or brf (Braille ASCII)")
         ->check(CLI::IsMember({"unicode", "brf"}))
         ->capture_default_str();

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "command.hpp"
 #include "controller/firmware_trace.hpp"
 #include "platform/channel.hpp"
@@ -23,26 +25,6 @@ namespace tactus::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A symbol's address from the linker's map next to the image: the firmware's
-// sheet number in internal RAM (the pin trace says where the carriage and the
-// paper are, the sheet only the firmware knows), and the strike-fired label
-// the reset breakpoint goes on.
-unsigned map_symbol(const fs::path& map, const std::string& symbol) {
-    std::ifstream in(map);
-    if (!in)
-        throw CommandFailed(exit_bad_input, map.string() + ": the linker map of the firmware image is missing "
-                                                           "(it is written beside the .ihx by make -C firmware emu)");
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream w(line);
-        std::string addr, name;
-        if (w >> addr && addr.ends_with(':')) w >> addr;  // a code symbol's "C:" area mark
-        if (w >> name && name == symbol) return static_cast<unsigned>(std::stoul(addr, nullptr, 16));
-    }
-    throw CommandFailed(exit_bad_input, map.string() + ": no " + symbol + ": not a Tactus firmware map" +
-                                            (symbol == "_fw_strike_fired" ? " of the emulator build (make -C firmware emu)"
-                                                                          : ""));
-}
 
 // Removes the run's folder and stops the emulator, however the run ends.
 struct Run {
@@ -117,16 +99,36 @@ private:
 
 }  // namespace
 
+// A symbol's address from the linker's map next to the image: the firmware's
+// sheet number in internal RAM (the pin trace says where the carriage and the
+// paper are, the sheet only the firmware knows), and the strike-fired label
+// the reset breakpoint goes on.
+unsigned firmware_map_symbol(const std::filesystem::path& map, const std::string& symbol) {
+    std::ifstream in(map);
+    if (!in)
+        throw CommandFailed(exit_bad_input, map.string() + ": the linker map of the firmware image is missing "
+                                                           "(it is written beside the .ihx by make -C firmware emu)");
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream w(line);
+        std::string addr, name;
+        if (w >> addr && addr.ends_with(':')) w >> addr;  // a code symbol's "C:" area mark
+        if (w >> name && name == symbol) return static_cast<unsigned>(std::stoul(addr, nullptr, 16));
+    }
+    throw CommandFailed(exit_bad_input, map.string() + ": no " + symbol + ": not a Tactus firmware map" +
+                                            (symbol == "_fw_strike_fired" ? " of the emulator build (make -C firmware emu)"
+                                                                          : ""));
+}
+
 void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<bool>& stop,
                            const std::function<void(const controller::LoggedStrike&)>& on_strike) {
     const fs::path ihx = fs::absolute(o.ihx);
     if (!fs::is_regular_file(ihx))
         throw CommandFailed(exit_bad_input, o.ihx + ": no such firmware image (build it with make -C firmware emu)");
     const auto map = fs::path(ihx).replace_extension(".map");
-    const unsigned sheet_at = map_symbol(map, "_fw_sheet");
-    const unsigned strike_fired = o.reset_at_strike > 0 ? map_symbol(map, "_fw_strike_fired") : 0;
+    const unsigned sheet_at = firmware_map_symbol(map, "_fw_sheet");
+    const unsigned strike_fired = o.reset_at_strike > 0 ? firmware_map_symbol(map, "_fw_strike_fired") : 0;
     const bool reload = o.paper_out && o.paper_reload_reads > 0;
-    const unsigned paper_read = reload ? map_symbol(map, "_fw_paper_present") : 0;
+    const unsigned paper_read = reload ? firmware_map_symbol(map, "_fw_paper_present") : 0;
     if (!platform::find_in_path("s51"))
         throw CommandFailed(exit_device, "sim --firmware: s51 not found (apt-get install sdcc-ucsim)");
     Run run;
@@ -256,6 +258,21 @@ void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<b
                                               std::to_string(fired) + " strikes: " +
                                               (why.empty() ? "s51 gave no reason" : why));
     }
+}
+
+void write_strike_json(std::ostream& log, const controller::LoggedStrike& s) {
+    if (!log) return;
+    log << nlohmann::json{{"sheet", s.sheet},
+                          {"side", s.side == plan::Side::front ? "front" : "back"},
+                          {"hammer", s.hammer == plan::Hammer::convex ? "convex" : "concave"},
+                          {"carriage_step", s.carriage_step},
+                          {"feed_step", s.feed_step},
+                          {"x_mm", s.x_mm},
+                          {"y_mm", s.y_mm},
+                          {"time_s", s.time_s}}
+               .dump()
+        << '\n'
+        << std::flush;
 }
 
 }  // namespace tactus::cli

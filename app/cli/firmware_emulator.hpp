@@ -11,7 +11,9 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 
 #include "controller/sim_controller.hpp"
@@ -43,5 +45,15 @@ struct FirmwareEmulatorOptions {
 // is missing (the image, its .map, s51) and the exit code.
 void run_firmware_emulator(const FirmwareEmulatorOptions& o, const std::atomic<bool>& stop,
                            const std::function<void(const controller::LoggedStrike&)>& on_strike);
+
+// A symbol's address from the linker's map beside the image (make -C
+// firmware emu writes it): where the firmware keeps its sheet number, the
+// labels a breakpoint goes on. Throws CommandFailed naming what is missing.
+unsigned firmware_map_symbol(const std::filesystem::path& map, const std::string& symbol);
+
+// One strike as a JSON line, flushed: a reader sees every strike at once. The
+// same format for the C++ controller and the firmware in the emulator
+// (`sim --strike-log`, `lpt:emu?log=`).
+void write_strike_json(std::ostream& log, const controller::LoggedStrike& s);
 
 }  // namespace tactus::cli

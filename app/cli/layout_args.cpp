@@ -18,6 +18,7 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf, .pef, or an .svg drawing (a tactile graphic)")->required();
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
+    language.add_to(cmd);
     std::string presets;
     for (const auto& p : layout::layout_presets()) presets += "\n  " + p.name + ": " + p.description;
     cmd.add_option("--preset", preset, "Page format preset (default a4):" + presets);
@@ -74,6 +75,7 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
 pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     pipeline::PipelineOptions o;
     o.tables = tables;
+    o.language_switch = language.options();
     o.import.encoding = encoding;
     o.import.ruby = require(import::parse_ruby_guide(ruby), exit_usage);
     o.import.format = require(import::parse_source_format(format), exit_usage);

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "language_args.hpp"
 #include "pipeline/pipeline.hpp"
 #include "machine/firmware_tables.hpp"
 #include "profile/profile.hpp"
@@ -15,6 +16,7 @@ namespace tactus::cli {
 struct LayoutArgs {
     std::string file;
     std::string tables = translate::kDefaultTable;
+    LanguageArgs language;
     std::string preset;
     std::string format = "auto";
     std::string encoding;

@@ -2,9 +2,11 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "lpt_emulator.hpp"
 
 int main(int argc, char** argv) {
     using namespace tactus::cli;
+    register_emulated_lpt();  // lpt:emu?fw=...: the firmware's pins in s51
     CLI::App app{"Tactus: translate, lay out and emboss braille", "tactus-cli"};
     app.set_version_flag("--version", "tactus-cli 0.1.0");
     app.require_subcommand(1);

@@ -15,6 +15,7 @@
 #include "layout/line_breaker.hpp"
 #include "layout/braille_pages.hpp"
 #include "layout/paginator.hpp"
+#include "translate/language_switch.hpp"
 #include "translate/script_check.hpp"
 #include "common/try.hpp"
 
@@ -25,7 +26,9 @@ using live_lines::braille_text_line;
 
 Result<LiveLayout> LiveLayout::create(const std::string& tables, layout::LayoutOptions options) {
     TACTUS_TRY_VOID(validate(options));
-    TACTUS_TRY(translator, translate::Translator::open(tables));
+    // As the pipeline does: passages in another language with their table,
+    // so the editor shows the braille that is embossed.
+    TACTUS_TRY(translator, translate::open_translator(tables, {}));
     LiveLayout l(std::move(translator), std::move(options));
     l.relayout_from(0);
     return l;
@@ -116,7 +119,9 @@ void LiveLayout::translate_entry(std::size_t i) {
 }
 
 Result<void> LiveLayout::set_tables(const std::string& tables) {
-    TACTUS_TRY(translator, translate::Translator::open(tables));
+    // As the pipeline does: passages in another language with their table,
+    // so the editor shows the braille that is embossed.
+    TACTUS_TRY(translator, translate::open_translator(tables, {}));
     translator_ = std::move(translator);
     numbers_.clear();
     for (std::size_t i = 0; i < entries_.size(); ++i) translate_entry(i);

@@ -94,7 +94,9 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     }
     if (layout::is_ready_braille(document) && !options.reflow_braille)
         return layout::keep_braille_pages(document, options.layout);
-    TACTUS_TRY(translator, translate::Translator::open(options.tables));
+    TACTUS_TRY(translator, translate::open_translator(options.tables, options.language_switch));
+    // The second language's tables are compiled once, here, not in every worker.
+    if (const auto* sw = translator.language_switch()) TACTUS_TRY_VOID(sw->prepare(document));
     if (options.book) {
         TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator));
         auto doc = std::move(book.pages);

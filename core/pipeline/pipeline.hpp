@@ -17,12 +17,16 @@
 #include "layout/page.hpp"
 #include "pipeline/book_layout.hpp"
 #include "translate/catalogue.hpp"
+#include "translate/language_switch.hpp"
 
 namespace tactus::pipeline {
 
 struct PipelineOptions {
     import::ImportOptions import;
     std::string tables = translate::kDefaultTable;
+    // Passages in another language with that language's table (on unless
+    // turned off; docs/translation.md, "Passages in another language").
+    translate::LanguageSwitchOptions language_switch;
     layout::LayoutOptions layout;
     // Translation processes for big documents: 0 picks by size and cores
     // (TranslationWorkers::suggested_workers), 1 keeps everything in-process.

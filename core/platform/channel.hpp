@@ -44,6 +44,14 @@ private:
 // have (all false on a timeout or an interrupted wait).
 OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, std::chrono::nanoseconds timeout);
 
+// A TCP connection to this machine's loopback address: a local program's
+// console (s51 serves one with -Z). Blocking; TCP_NODELAY, as a console's
+// lines are short and each waits for its answer.
+OsResult<Channel> connect_loopback(std::uint16_t port);
+// A TCP port on the loopback address nobody listens on at this moment (another
+// program may take it before it is used: the user retries).
+OsResult<std::uint16_t> unused_loopback_port();
+
 // Makes a FIFO at `path` and opens it both ways, so opening it elsewhere
 // never waits for this side. POSIX only: Windows has no FIFO in its file system.
 OsResult<Channel> open_fifo(const std::filesystem::path& path);

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/channel.hpp"
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -51,6 +55,38 @@ OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, st
     if (r < 0 && errno != EINTR) return std::unexpected(last_error());
     for (std::size_t i = 0; r > 0 && i < fds.size(); ++i) ready[i] = (fds[i].revents & POLLIN) != 0;
     return ready;
+}
+
+namespace {
+sockaddr_in loopback(std::uint16_t port) {
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    return a;
+}
+}  // namespace
+
+OsResult<Channel> connect_loopback(std::uint16_t port) {
+    Channel c(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+    if (!c.is_open()) return std::unexpected(last_error());
+    const auto a = loopback(port);
+    if (::connect(static_cast<int>(c.native()), reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0)
+        return std::unexpected(last_error());
+    const int one = 1;
+    ::setsockopt(static_cast<int>(c.native()), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    return c;
+}
+
+OsResult<std::uint16_t> unused_loopback_port() {
+    Channel c(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+    if (!c.is_open()) return std::unexpected(last_error());
+    auto a = loopback(0);
+    socklen_t len = sizeof a;
+    if (::bind(static_cast<int>(c.native()), reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0 ||
+        ::getsockname(static_cast<int>(c.native()), reinterpret_cast<sockaddr*>(&a), &len) != 0)
+        return std::unexpected(last_error());
+    return ntohs(a.sin_port);
 }
 
 OsResult<Channel> open_fifo(const std::filesystem::path& path) {

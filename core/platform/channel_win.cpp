@@ -83,6 +83,14 @@ OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, st
     }
 }
 
+OsResult<Channel> connect_loopback(std::uint16_t) {
+    return os_fail("a console over TCP is not wired up on Windows", OsErrorKind::unsupported);
+}
+
+OsResult<std::uint16_t> unused_loopback_port() {
+    return os_fail("a console over TCP is not wired up on Windows", OsErrorKind::unsupported);
+}
+
 OsResult<Channel> open_fifo(const std::filesystem::path&) {
     return os_fail("Windows has no FIFO in its file system", OsErrorKind::unsupported);
 }

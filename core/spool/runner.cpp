@@ -97,11 +97,18 @@ Result<void> Runner::start() {
     spool_.emplace(std::move(s));
     TACTUS_TRY(p, spool_->printer(printer_name_));
     printer_ = p;
-    return spool_->claim_printer(printer_.id, token_);
+    if (auto r = spool_->claim_printer(printer_.id, token_); !r) return r;
+    reserve_ = DiskReserve(db_path_.string() + ".reserve-" + std::to_string(printer_.id));
+    if (!reserve_.hold())
+        (void)spool_->log({}, printer_.id, "disk",
+                          "no room for the spool's reserve beside " + db_path_.string() +
+                              ": a disk that fills mid-job may leave the job shown as running");
+    return {};
 }
 
 void Runner::finish() {
     link_.reset();
+    reserve_.release();
     if (spool_) (void)spool_->release_printer(printer_.id, token_);
     spool_.reset();
 }
@@ -117,8 +124,13 @@ Result<void> Runner::run(const std::atomic<bool>& stop) {
 Result<std::optional<RunEnd>> Runner::run_next(const std::atomic<bool>& stop) {
     TACTUS_TRY(job, spool_->claim_next(printer_.id, token_, now_seconds()));
     if (!job) return std::optional<RunEnd>{};
-    TACTUS_TRY(end, run_job(std::move(*job), stop));
-    return std::optional<RunEnd>{end};
+    const JobId id = job->id;
+    auto end = run_job(std::move(*job), stop);
+    // The spool refused a write mid-job (a full or failing disk): the job
+    // must not stay "running" with nobody running it.
+    if (!end && end.error().kind == ErrorKind::io) return std::unexpected(cannot_record(id, end.error()));
+    if (!end) return std::unexpected(end.error());
+    return std::optional<RunEnd>{*end};
 }
 
 Result<void> Runner::connect() {
@@ -178,6 +190,22 @@ Result<RunEnd> Runner::transient_failure(const JobRecord& job, const std::string
                                   std::to_string(static_cast<int>(backoff / 1000)) + " s: " + why,
                               now_seconds() + backoff / 1000.0, true));
     return RunEnd::requeued;
+}
+
+Error Runner::cannot_record(JobId id, const Error& why) {
+    const std::string reason = "the spool cannot be written (" + why.message +
+                               "): make room on its disk, then resume the job (it starts again at its "
+                               "first unfinished sheet)";
+    reserve_.release();
+    const auto paused = spool_->set_state(id, JobState::paused, reason, "disk", reason);
+    reserve_.hold();  // taken again if the disk has room by now, else at the next start
+    const auto job = std::to_string(id);
+    return Error{"cannot record progress in the spool (" + why.message + "); " +
+                     (paused ? "job " + job + " is paused: make room on the disk, then `tactus-cli queue resume " +
+                                   job + "` and start serve again"
+                             : "the job could not be paused either and resumes at the next start") +
+                     " (the controller's count is kept for it)",
+                 why.where, ErrorKind::io};
 }
 
 Result<RunEnd> Runner::wait_for_printer(const JobRecord& job, const std::string& why) {
@@ -353,14 +381,20 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     auto on_progress = [&](const link::Progress& p) {
         last_faults = p.status.ack.faults;
         if (p.executed) {
-            // Recorded before the link goes on. If the disk refuses, keep trying:
-            // the link stalls, the controller's keep-alive pauses it and its
-            // count survives in its RAM for the next reconciliation.
+            // Recorded before the link goes on. If the disk refuses, try again
+            // for a while (the link stalls meanwhile); then stop the job on the
+            // controller as a stopping server does: the run stays open, so the
+            // next start settles it with the controller's count.
+            const auto refused_since = std::chrono::steady_clock::now();
             for (;;) {
                 auto r = s.record_passes(job.id, p.executed->sheet, p.executed->pass_in_sheet + 1);
                 if (r) break;
                 db_error = r.error();
                 if (stop.load() || cancel.cancelled()) return;
+                if (std::chrono::steady_clock::now() - refused_since >= options_.write_retry) {
+                    cancel.cancel();
+                    return;
+                }
                 std::this_thread::sleep_for(options_.poll);
             }
             db_error.reset();
@@ -391,9 +425,7 @@ Result<RunEnd> Runner::run_job(JobRecord job, const std::atomic<bool>& stop) {
     watcher.join();
     if (db_error) {
         link_.reset();  // the next start settles the open run with the controller's count
-        return std::unexpected(Error{"cannot record progress in the spool (" + db_error->message +
-                                         "); the controller's count is kept for the next start",
-                                     db_error->where, db_error->kind});
+        return std::unexpected(*db_error);  // run_next pauses the job with it
     }
     if (!outcome) {
         // Nothing was sent: the plan is one the protocol cannot carry. Retrying

@@ -17,6 +17,7 @@
 
 #include "common/result.hpp"
 #include "link/link.hpp"
+#include "spool/disk_reserve.hpp"
 #include "spool/records.hpp"
 #include "spool/spool.hpp"
 
@@ -32,6 +33,11 @@ struct RunnerOptions {
     std::chrono::milliseconds max_backoff{60000};
     // How often an idle runner looks for work and a busy one for operator requests.
     std::chrono::milliseconds poll{100};
+    // How long a refused write of a job's progress (disk full, failing disk) is
+    // tried again before the job is stopped and paused with that reason: long
+    // enough to ride out a moment's shortage, short enough that nobody waits
+    // on a silent printer.
+    std::chrono::milliseconds write_retry{10000};
     link::LinkOptions link;
 };
 
@@ -64,8 +70,9 @@ public:
     // Opens the spool and takes the printer (refused while another live runner has it).
     Result<void> start();
     // Runs jobs until `stop` is set. Returns an error only when the spool itself
-    // becomes unusable (the database cannot be written): then nothing more can
-    // be recorded, so nothing more may be embossed.
+    // becomes unusable (the database cannot be written: the job under way is
+    // stopped and paused with that reason): then nothing more can be recorded,
+    // so nothing more may be embossed.
     Result<void> run(const std::atomic<bool>& stop);
     // Runs the next ready job, if any, to its end, pause or requeue.
     Result<std::optional<RunEnd>> run_next(const std::atomic<bool>& stop);
@@ -86,6 +93,9 @@ private:
     // waits in the queue as it would for a busy printer, however long that
     // takes, trying again with back-off; it is not a fault of the job.
     Result<RunEnd> wait_for_printer(const JobRecord& job, const std::string& why);
+    // The spool refused a write of the job's run: the job is paused with the
+    // reason (in the room the reserve gives back) and the error passed up.
+    Error cannot_record(JobId id, const Error& why);
 
     std::filesystem::path db_path_;
     std::string printer_name_;
@@ -97,6 +107,7 @@ private:
     std::optional<link::Link> link_;
     std::uint16_t controller_job_ = 0;  // the job id the controller last reported
     int unreachable_ = 0;               // connection attempts failed in a row
+    DiskReserve reserve_;               // room for the last write when the disk fills
 };
 
 }  // namespace tactus::spool

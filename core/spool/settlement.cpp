@@ -9,13 +9,20 @@ namespace {
 std::string sheet_word(std::size_t n) { return "sheet " + std::to_string(n); }
 
 // After the controller's count was lost: the first unfinished sheet of the
-// stream is the one that was under way; if passes of it were recorded it has
-// dots on it. Nothing beyond the record is claimed.
+// stream is the one that was under way. If passes of it were recorded it has
+// dots on it. If none were but the stream had finished sheets before it, the
+// controller had gone on to it (the stream runs ahead of the record): its
+// first pass may have struck dots before the count was lost (serve and the
+// controller killed together), so it is discarded too, said to be possibly
+// blank; a partly embossed sheet reported as good would end up in the book.
+// Only the stream's very first sheet with nothing recorded is left alone:
+// then nothing shows the stream ever began.
 RunSettlement without_count(const JobRecord& job, const std::vector<SheetProgress>& progress,
                             const std::string& why) {
     RunSettlement s;
     s.message = why;
-    for (std::size_t k = std::max<std::size_t>(job.run_start_sheet, 1); k <= progress.size(); ++k) {
+    const std::size_t start = std::max<std::size_t>(job.run_start_sheet, 1);
+    for (std::size_t k = start; k <= progress.size(); ++k) {
         const auto& p = progress[k - 1];
         if (p.done()) continue;
         if (p.passes_done > 0) {
@@ -24,6 +31,11 @@ RunSettlement without_count(const JobRecord& job, const std::vector<SheetProgres
                                 "was lost: at least " + std::to_string(p.passes_done) + " of " +
                                 std::to_string(p.passes_total) +
                                 " passes were embossed; discard it, it is embossed again in full";
+        } else if (k > start) {
+            s.discard = k;
+            s.discard_message = sheet_word(k) + " followed " + sheet_word(k - 1) +
+                                " in the stream when it stopped and the controller's count was lost: its first "
+                                "pass may have begun (it may be blank); discard it, it is embossed again in full";
         }
         break;
     }

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <random>
 #include <system_error>
 
 #include "spool/runner_token.hpp"
@@ -103,6 +104,58 @@ double now_seconds() {
     return duration<double>(system_clock::now().time_since_epoch()).count();
 }
 
+namespace {
+
+// The tables, the version and the application id of a new spool, in one
+// transaction, in WAL mode.
+Result<void> write_schema(sql::Database& db) {
+    TACTUS_TRY_VOID(db.exec("PRAGMA journal_mode=WAL"));
+    auto tx = sql::Transaction::begin(db);
+    if (!tx) return std::unexpected(tx.error());
+    TACTUS_TRY_VOID(db.exec(kSchema));
+    TACTUS_TRY_VOID(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
+                      "; PRAGMA application_id=" + std::to_string(kApplicationId)));
+    return tx->commit();
+}
+
+// A new spool is made whole beside its place, then linked into it, so no
+// process ever opens a half-made one: cupsd starts a server's first job's
+// filter and backend together and both create the spool; writing the schema
+// in place, the loser met "table printers already exists" or a file it could
+// not open, and its failure stopped the CUPS queue. The link fails if another
+// creator came first, and then its spool is the one everybody opens.
+Result<void> create_spool_file(const std::filesystem::path& path, int busy_timeout_ms) {
+    std::random_device random;
+    auto made = path;
+    made += ".new-" + std::to_string(random()) + std::to_string(random());
+    {
+        auto opened = sql::Database::open(made, true, busy_timeout_ms);
+        if (!opened) {
+            auto e = opened.error();  // said of the spool, not of its draft
+            e.where = path.string();
+            return std::unexpected(e);
+        }
+        sql::Database db = std::move(*opened);
+        TACTUS_TRY_VOID(write_schema(db));
+    }  // closed: the log is folded into the file and removed with it
+    std::error_code linked, ec;
+    std::filesystem::create_hard_link(made, path, linked);
+    if (linked && linked != std::errc::file_exists && !std::filesystem::exists(path, ec))
+        // No hard links on this file system (FAT, some network shares): a
+        // rename, which another creator could still overtake in a moment.
+        std::filesystem::rename(made, path, linked);
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
+        auto leftover = made;
+        leftover += suffix;
+        std::filesystem::remove(leftover, ec);
+    }
+    if (!std::filesystem::exists(path, ec))
+        return fail(ErrorKind::io, "cannot create the spool database: " + linked.message(), path.string());
+    return {};
+}
+
+}  // namespace
+
 Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options) {
     std::error_code ec;
     const bool exists = std::filesystem::exists(path, ec);
@@ -120,6 +173,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
                 return fail(ErrorKind::io, "cannot create the spool folder: " + ec.message(),
                             path.parent_path().string());
         }
+        TACTUS_TRY_VOID(create_spool_file(path, options.busy_timeout_ms));
     }
     TACTUS_TRY(opened, sql::Database::open(path, options.create, options.busy_timeout_ms));
     sql::Database db = std::move(opened);
@@ -169,13 +223,7 @@ Result<Spool> Spool::open(const std::filesystem::path& path, OpenOptions options
         // root polling the CUPS backend's new spool made it read-only for lp.
         if (!options.create) return not_there_yet();
         if (read_only) return fail(ErrorKind::input, "the spool database is empty and read-only", path.string());
-        TACTUS_TRY_VOID(db.exec("PRAGMA journal_mode=WAL"));
-        auto tx = sql::Transaction::begin(db);
-        if (!tx) return std::unexpected(tx.error());
-        TACTUS_TRY_VOID(db.exec(kSchema));
-        TACTUS_TRY_VOID(db.exec("PRAGMA user_version=" + std::to_string(kSchemaVersion) +
-                          "; PRAGMA application_id=" + std::to_string(kApplicationId)));
-        TACTUS_TRY_VOID(tx->commit());
+        TACTUS_TRY_VOID(write_schema(db));
     } else if (app_id != kApplicationId) {
         return fail(ErrorKind::input, "this SQLite file is not a Tactus spool (application id " +
                         std::to_string(app_id) + "); it was left untouched",

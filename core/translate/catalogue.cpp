@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
@@ -82,6 +83,35 @@ std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
         return a.file < b.file;
     });
     return out;
+}
+
+bool is_chinese_tag(std::string_view tag) {
+    const auto lang = tag.substr(0, tag.find_first_of("-_"));
+    return lang == "zh" || lang == "cmn" || lang == "yue" || lang == "wuu" || lang == "nan";
+}
+
+namespace {
+
+// "zh-Hant-HK" -> "cmn-TW", "zh-CN" -> "cmn-CN", "en-GB" -> "en": the tag as
+// the catalogue's tables carry it.
+std::string catalogue_tag(std::string_view tag) {
+    std::string lower;
+    for (char c : tag) lower += c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!is_chinese_tag(lower)) return lower.substr(0, lower.find('-'));
+    const bool mainland = lower.find("-hans") != std::string::npos || lower.ends_with("-cn") ||
+                          lower.find("-cn-") != std::string::npos || lower.ends_with("-sg");
+    return mainland ? "cmn-CN" : "cmn-TW";
+}
+
+}  // namespace
+
+std::string recommended_table(std::string_view language_tag, std::string_view grade) {
+    const auto wanted = catalogue_tag(language_tag);
+    for (const auto& t : table_catalogue()) {
+        if (!t.recommended) break;  // recommended tables come first
+        if (t.language_tag == wanted && (grade.empty() || t.grade == grade)) return t.file;
+    }
+    return {};
 }
 
 std::string table_language_tag(std::string_view tables) {

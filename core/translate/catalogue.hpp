@@ -29,6 +29,16 @@ std::vector<TableInfo> table_catalogue(std::string_view display_locale = "en");
 // list. What a PEF's dc:language says, for the CLI and the app alike.
 std::string table_language_tag(std::string_view tables);
 
+// The recommended table for a language given as a BCP 47 tag ("en", "zh-TW",
+// "zh-Hans", "cmn-CN"), first in the catalogue's order; `grade` ("1", "2")
+// picks among a language's tables when given. Chinese without a region or
+// script is Taiwan's (the product's table for Chinese); Simplified script or a
+// mainland region is China's. Empty when no recommended table is for it.
+std::string recommended_table(std::string_view language_tag, std::string_view grade = {});
+
+// True for a tag of Chinese ("zh", "cmn", "yue", ...).
+bool is_chinese_tag(std::string_view tag);
+
 // The table Tactus uses when none is chosen.
 inline constexpr const char* kDefaultTable = "en-ueb-g2.ctb";
 

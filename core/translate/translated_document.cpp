@@ -7,6 +7,8 @@
 
 #include "common/utf8.hpp"
 #include "document/soft_break.hpp"
+#include "translate/code_switch.hpp"
+#include "translate/language_switch.hpp"
 #include "translate/word_division.hpp"
 #include "common/try.hpp"
 
@@ -20,7 +22,12 @@ constexpr std::size_t kChunk = 4096;  // code points per liblouis call
 // a soft line break with the spaces around it is one space (document/soft_break.hpp).
 // Decoded straight into `text`, reserved once: decoding a 50 MB paragraph into
 // a copy and then pushing it code point by code point peaked at 720 MB.
-Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph) {
+// `marks`, when the translator switches tables by language and a span is
+// marked with one, gets the table of every code point (TableSlot::unmarked
+// for a span without a language); it stays empty otherwise.
+Result<void> flatten(std::span<const document::Span> spans, std::u32string& text, std::vector<std::uint8_t>& emph,
+                     const LanguageSwitch* language_switch, std::vector<TableSlot>& marks) {
+    const bool marked = language_switch && std::ranges::any_of(spans, [](const document::Span& s) { return !s.language.empty(); });
     std::size_t bytes = 0;
     for (const auto& span : spans) bytes += span.text.size();
     text.reserve(text.size() + bytes);
@@ -33,6 +40,7 @@ Result<void> flatten(std::span<const document::Span> spans, std::u32string& text
         for (auto i = start; i < text.size(); ++i)
             if (const auto c = text[i]; c == U'\n' || c == U'\r' || c == U'\t' || c == U'\f' || c == U'\v') text[i] = U' ';
         emph.resize(text.size(), span.emphasis);
+        if (marked) marks.resize(text.size(), language_switch->slot_for_language(span.language));
     }
     return {};
 }
@@ -154,6 +162,116 @@ Result<void> translate_text(const Translator& tr, std::u32string_view text,
         join = BreakBefore::allowed;
         start = end;
         if (progress) progress(start);
+    }
+    return {};
+}
+
+void attach_cells(TranslatedBlock& out, std::span<const document::Cell> cells, BreakBefore first) {
+    if (cells.empty()) return;
+    const auto at = out.cells.size();
+    out.cells.insert(out.cells.end(), cells.begin(), cells.end());
+    out.breaks.resize(out.cells.size(), BreakBefore::never);
+    out.breaks[at] = first;
+}
+
+bool is_word_space(char32_t c) { return c == U' ' || c == 0x3000 || c == 0xA0; }
+
+// A run of the other language with the signs its rule puts around it
+// (translate/code_switch.hpp). `text` is the whole text the run is part of,
+// for what comes before and after it; the first cell written may start a
+// line as `first` says, the signs are never parted from the run.
+Result<void> translate_foreign_run(const Translator& tr, SwitchForm form, std::u32string_view text, LanguageRun run,
+                                   std::span<const std::uint8_t> emph, std::size_t room, TranslatedBlock& out,
+                                   BreakBefore first) {
+    const auto emph_of = [&](std::size_t from, std::size_t n) {
+        return emph.empty() ? emph : emph.subspan(from, n);
+    };
+    const bool unspaced_before = run.begin > 0 && !is_word_space(text[run.begin - 1]);
+    const bool unspaced_after = run.end < text.size() && !is_word_space(text[run.end]);
+    const auto body = text.substr(run.begin, run.end - run.begin);
+    switch (form) {
+        case SwitchForm::none:
+            return translate_text(tr, body, emph_of(run.begin, body.size()), room, out, {}, first);
+        case SwitchForm::passage: {
+            attach_cells(out, kNonUebOpen, first);
+            if (auto ok = translate_text(tr, body, emph_of(run.begin, body.size()), room, out, {}, BreakBefore::never); !ok)
+                return ok;
+            attach_cells(out, kNonUebClose, BreakBefore::never);
+            return {};
+        }
+        case SwitchForm::letter_sign: {
+            BreakBefore next = first;
+            if (unspaced_before) {
+                attach_cells(out, kLetterSign, first);
+                next = BreakBefore::never;
+            }
+            if (auto ok = translate_text(tr, body, emph_of(run.begin, body.size()), room, out, {}, next); !ok) return ok;
+            // The space the code puts between Latin letters and the Chinese after them.
+            if (unspaced_after) attach_cells(out, std::array{document::Cell{}}, BreakBefore::blank);
+            return {};
+        }
+        case SwitchForm::word:
+            break;
+    }
+    // UEB §14.3.1: the word indicator before every symbols-sequence; its
+    // effect ends at the next space, else at the word terminator.
+    BreakBefore next = first;
+    for (std::size_t i = run.begin; i < run.end;) {
+        if (is_word_space(text[i])) {
+            attach_cells(out, std::array{document::Cell{}}, BreakBefore::blank);
+            while (i < run.end && is_word_space(text[i])) ++i;
+            next = BreakBefore::allowed;
+            continue;
+        }
+        std::size_t j = i;
+        while (j < run.end && !is_word_space(text[j])) ++j;
+        attach_cells(out, kNonUebWord, next);
+        if (auto ok = translate_text(tr, text.substr(i, j - i), emph_of(i, j - i), room, out, {}, BreakBefore::never); !ok)
+            return ok;
+        if (j == run.end && unspaced_after) attach_cells(out, kNonUebWordEnd, BreakBefore::never);
+        i = j;
+    }
+    return {};
+}
+
+// Text of a block, each run of another language with its own table when the
+// translator switches tables (translate/language_switch.hpp); otherwise, or
+// when the text is all in the document's language, exactly translate_text.
+Result<void> translate_languages(const Translator& tr, std::u32string_view text, std::span<const std::uint8_t> emph,
+                                 std::span<const TableSlot> marks, std::size_t room, TranslatedBlock& out,
+                                 const std::function<void(std::size_t)>& progress, BreakBefore join) {
+    const auto* sw = tr.language_switch();
+    if (!sw) return translate_text(tr, text, emph, room, out, progress, join);
+    const auto runs = sw->split(text, marks);
+    if (runs.size() <= 1 && (runs.empty() || runs.front().slot == TableSlot::primary))
+        return translate_text(tr, text, emph, room, out, progress, join);
+    const bool any_emphasis =
+        std::ranges::any_of(emph, [](std::uint8_t e) { return e != document::emphasis_none; });
+    const auto whole_emph = any_emphasis ? emph : std::span<const std::uint8_t>{};
+    const auto print = print_break_opportunities(text);
+    for (const auto& run : runs) {
+        // Where the run meets what came before: after a word space a line may
+        // end, else where print allows a break (between Chinese and Latin).
+        BreakBefore first = join;
+        if (run.begin > 0)
+            first = !out.cells.empty() && out.cells.back().blank() ? BreakBefore::allowed
+                    : print[run.begin]                              ? BreakBefore::allowed
+                                                                    : BreakBefore::between_chars;
+        const auto body = text.substr(run.begin, run.end - run.begin);
+        if (run.slot == TableSlot::primary) {
+            if (auto ok = translate_text(tr, body, whole_emph.empty() ? whole_emph : whole_emph.subspan(run.begin, body.size()),
+                                         room, out, {}, first);
+                !ok)
+                return ok;
+        } else {
+            auto other = sw->translator(run.slot);
+            if (!other) return std::unexpected(other.error());
+            if (auto ok = translate_foreign_run(**other, switch_form(sw->indicators(), body), text, run, whole_emph,
+                                                room, out, first);
+                !ok)
+                return ok;
+        }
+        if (progress) progress(run.end);
     }
     return {};
 }
@@ -299,11 +417,13 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         while (j < spans.size() && !is_marked(spans[j])) ++j;
         std::u32string text;
         std::vector<std::uint8_t> emph;
-        if (auto ok = flatten(spans.subspan(i, j - i), text, emph); !ok) return ok;
+        std::vector<TableSlot> marks;
+        if (auto ok = flatten(spans.subspan(i, j - i), text, emph, tr.language_switch(), marks); !ok) return ok;
         const std::size_t prefix = number.size();
         if (prefix) {
             text.insert(0, number);
             emph.insert(emph.begin(), prefix, document::emphasis_none);
+            if (!marks.empty()) marks.insert(marks.begin(), prefix, TableSlot::unmarked);
             number.clear();
         }
         // Spaces at a block's ends are print's (a text file's indent, a line
@@ -313,11 +433,13 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
             const auto keep = end == std::u32string::npos ? 0 : end + 1;
             text.resize(keep);
             emph.resize(keep);
+            if (!marks.empty()) marks.resize(keep);
         }
         if (i == 0) {
             const auto lead = std::min(text.size(), text.find_first_not_of(U' '));
             text.erase(0, lead);
             emph.erase(emph.begin(), emph.begin() + static_cast<std::ptrdiff_t>(lead));
+            if (!marks.empty()) marks.erase(marks.begin(), marks.begin() + static_cast<std::ptrdiff_t>(lead));
         }
         if (text.empty()) {
             i = j;
@@ -330,7 +452,7 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
         const std::function<void(std::size_t)> shifted = [&](std::size_t n) {
             progress(done + (n > prefix ? n - prefix : 0));
         };
-        if (auto ok = translate_text(tr, text, emph, room, out, progress ? shifted : progress, join); !ok)
+        if (auto ok = translate_languages(tr, text, emph, marks, room, out, progress ? shifted : progress, join); !ok)
             return ok;
         done += text.size() - prefix;
         i = j;

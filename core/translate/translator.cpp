@@ -211,6 +211,8 @@ Result<Translator> Translator::open(std::string tables) {
         std::lock_guard guard(louis::lock());
         t.hyphenation_ = find_hyphenation(first, table_info(first, "language"));
         t.system_ = table_metadata(first, "system");
+        t.language_ = table_metadata(first, "region");
+        if (t.language_.empty()) t.language_ = table_metadata(first, "language");
         t.ueb_ = t.system_ == "ueb";
         if (t.ueb_) t.division_.number_continuation = document::Cell{0x10};  // dot 5
         // `compbrl` switches a whole word to computer braille when any of its

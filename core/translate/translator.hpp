@@ -4,6 +4,7 @@
 // display table (unicode.dis) so cells come back as Unicode braille whatever the
 // table's own display defaults are.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -14,6 +15,8 @@
 #include "document/cell.hpp"
 
 namespace tactus::translate {
+
+class LanguageSwitch;
 
 // Cells with the print character each one was made from (liblouis's inputPos):
 // an indicator or a contraction carries the position of the characters it
@@ -59,6 +62,14 @@ public:
     // "cmn-bopomofo"), read from the first table or, when it has none (en-us-g2.ctb),
     // from the first table it includes that has one; empty when none says.
     [[nodiscard]] const std::string& braille_system() const { return system_; }
+    // The language of the table (liblouis `#+region:`, else `#+language:`,
+    // e.g. "en", "cmn-TW"), read as braille_system() is; empty when none says.
+    [[nodiscard]] const std::string& language() const { return language_; }
+
+    // The tables for passages in another language than the table's
+    // (translate/language_switch.hpp); null: one table for everything.
+    [[nodiscard]] const LanguageSwitch* language_switch() const { return switch_.get(); }
+    void set_language_switch(std::shared_ptr<const LanguageSwitch> s) { switch_ = std::move(s); }
     // The code's note reference indicator, written before a note's reference
     // number (docs/layout.md, "Notes"): in UEB the superscript indicator, dots
     // 35, after the grade 1 indicator, dots 56, in contracted braille (print's
@@ -98,7 +109,9 @@ private:
     bool ueb_ = false;
     bool word_wide_rules_ = true;
     std::string system_;
+    std::string language_;
     document::BrailleLine note_indicator_;
+    std::shared_ptr<const LanguageSwitch> switch_;
 };
 
 }  // namespace tactus::translate

@@ -137,10 +137,7 @@ Result<UartSettings> uart_settings(const DeviceSpec& spec) {
 Result<std::unique_ptr<ByteStream>> open_device(std::string_view device) {
     TACTUS_TRY(spec, parse_device(device));
     if (spec.scheme == "hid") return open_hid(spec);
-    if (spec.scheme == "lpt") {
-        if (!spec.options.empty()) return fail(ErrorKind::usage, "lpt takes no options", "lpt:" + spec.path);
-        return open_lpt(spec);
-    }
+    if (spec.scheme == "lpt") return open_lpt(spec);
     // The simulator belongs to the controller stage: controller::open_device.
     if (spec.scheme == "sim")
         return fail(ErrorKind::internal, "the built-in simulator is not a cable", "device \"" + std::string(device) + "\"");

@@ -82,6 +82,13 @@ std::string port_list(const parport_list& list) {
 
 Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
     const std::string where = "lpt:" + spec.path;
+    if (const LptCable* cable = registered_lpt_cable(spec)) {
+        auto opener = [open = cable->open, spec] { return open(spec); };
+        auto p = LptPort::open(opener, where, cable->timings);
+        if (!p) return std::unexpected(p.error());
+        return std::unique_ptr<ByteStream>(std::move(*p));
+    }
+    if (!spec.options.empty()) return fail(ErrorKind::usage, "lpt takes no options", where);
     const std::string wanted = spec.path;
     auto opener = [wanted, where]() -> Result<std::unique_ptr<ParallelPortLines>> {
         parport_list list{};

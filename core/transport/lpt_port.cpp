@@ -2,9 +2,41 @@
 #include "transport/lpt_port.hpp"
 #include "common/try.hpp"
 
+#include <map>
+#include <mutex>
 #include <thread>
 
 namespace tactus::transport {
+
+namespace {
+std::mutex g_cables_mutex;
+std::map<std::string, LptCable>& cables() {
+    static std::map<std::string, LptCable> m;
+    return m;
+}
+}  // namespace
+
+void register_lpt_cable(const std::string& name, LptCable cable) {
+    const std::scoped_lock lock(g_cables_mutex);
+    cables()[name] = std::move(cable);
+}
+
+const LptCable* registered_lpt_cable(const DeviceSpec& spec) {
+    const std::scoped_lock lock(g_cables_mutex);
+    const auto it = cables().find(spec.path);
+    return it == cables().end() ? nullptr : &it->second;
+}
+
+double LptPort::now() const {
+    if (lines_)
+        if (auto c = lines_->clock()) return *c;
+    return ByteStream::now();
+}
+
+void LptPort::sleep(std::chrono::microseconds duration) {
+    if (lines_ && lines_->run_for(duration)) return;
+    ByteStream::sleep(duration);
+}
 
 Result<std::unique_ptr<LptPort>> LptPort::open(Opener opener, std::string name, LptTimings t) {
     std::unique_ptr<LptPort> p(new LptPort(std::move(opener), std::move(name), t));
@@ -22,11 +54,11 @@ Result<void> LptPort::reopen() {
 
 // Polls the status lines until `ok`, or the handshake time runs out (false).
 Result<bool> LptPort::wait_for(const std::function<bool(const LptStatus&)>& ok) {
-    const auto deadline = std::chrono::steady_clock::now() + timings_.handshake;
+    const double deadline = now() + std::chrono::duration<double>(timings_.handshake).count();
     for (;;) {
         TACTUS_TRY(st, lines_->read_status());
         if (ok(st)) return true;
-        if (std::chrono::steady_clock::now() > deadline) return false;
+        if (now() > deadline) return false;
         lines_->settle();
     }
 }
@@ -120,7 +152,7 @@ Result<void> LptPort::terminate() {
 
 Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::microseconds timeout) {
     if (!lines_) return fail(ErrorKind::device, "device not open", name_);
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    const double deadline = now() + std::chrono::duration<double>(timeout).count();
     for (;;) {
         TACTUS_TRY(avail, negotiate_nibble());
         std::size_t n = 0;
@@ -133,10 +165,10 @@ Result<std::size_t> LptPort::read(std::span<std::uint8_t> buffer, std::chrono::m
         }
         TACTUS_TRY_VOID(terminate());
         if (n > 0) return n;
-        if (std::chrono::steady_clock::now() >= deadline) return std::size_t{0};
+        if (now() >= deadline) return std::size_t{0};
         // Nothing yet: poll again shortly (the 8051 answers within a frame time).
         lines_->settle();
-        std::this_thread::sleep_for(std::chrono::microseconds(500));
+        sleep(timings_.poll_interval);
     }
 }
 

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "transport/byte_stream.hpp"
@@ -46,10 +48,20 @@ public:
     // Lets the lines settle (the 1284 minimum setup/hold time; a test cable
     // lets its peripheral react).
     virtual void settle() = 0;
+    // The peripheral's own clock in seconds, when it has one: an emulated
+    // chip's simulated time, which runs only as the cable lets it. The port
+    // then times its handshakes and the link its timeouts on it (ByteStream::now).
+    [[nodiscard]] virtual std::optional<double> clock() const { return std::nullopt; }
+    // Lets a peripheral with its own clock run this long on it while the host
+    // waits (ByteStream::sleep); false: it has none, the host sleeps.
+    virtual bool run_for(std::chrono::microseconds) { return false; }
 };
 
 struct LptTimings {
     std::chrono::microseconds handshake{200000};  // a peripheral that does not answer in time
+    // Between two nibble-mode polls that found no reply. An emulated chip
+    // runs this long between them, so it is also how far its motion gets per poll.
+    std::chrono::microseconds poll_interval{500};
 };
 
 class LptPort final : public ByteStream {
@@ -64,6 +76,9 @@ public:
     Result<void> reopen() override;
     // Centronics is byte-paced by the peripheral: no fixed line rate.
     [[nodiscard]] std::string describe() const override { return name_; }
+    // The peripheral's clock when the cable has one (ParallelPortLines::clock).
+    [[nodiscard]] double now() const override;
+    void sleep(std::chrono::microseconds duration) override;
 
     // The controller's condition, read from the status lines in compatibility mode.
     struct Condition {
@@ -88,8 +103,21 @@ private:
     LptControl ctl_;
 };
 
-// lpt:/dev/parport0 (or lpt:parport0) through libieee1284.
+// lpt:/dev/parport0 (or lpt:parport0) through libieee1284; lpt:NAME?... a
+// cable registered under NAME (register_lpt_cable).
 Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec);
+
+// A cable that is not a port of this machine, opened by the program that
+// knows it: `lpt:emu?fw=...`, the firmware's pins in the s51 emulator, which
+// tactus-cli registers (core runs no emulator). The factory reads the
+// device string's options; its timings are the port's.
+struct LptCable {
+    std::function<Result<std::unique_ptr<ParallelPortLines>>(const DeviceSpec&)> open;
+    LptTimings timings;
+};
+void register_lpt_cable(const std::string& name, LptCable cable);
+// The registered cable named by `spec.path`, if any.
+const LptCable* registered_lpt_cable(const DeviceSpec& spec);
 Result<std::vector<PortInfo>> list_parallel_ports();
 
 }  // namespace tactus::transport

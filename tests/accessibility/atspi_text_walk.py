@@ -21,37 +21,15 @@ import time
 
 import pyatspi
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from atspi_walk import find_app, walk  # noqa: E402
+
 LIMIT_S = 0.100
 BOUNDARIES = [("char", pyatspi.TEXT_BOUNDARY_CHAR), ("word start", pyatspi.TEXT_BOUNDARY_WORD_START),
               ("word end", pyatspi.TEXT_BOUNDARY_WORD_END), ("sentence start", pyatspi.TEXT_BOUNDARY_SENTENCE_START),
               ("sentence end", pyatspi.TEXT_BOUNDARY_SENTENCE_END), ("line start", pyatspi.TEXT_BOUNDARY_LINE_START),
               ("line end", pyatspi.TEXT_BOUNDARY_LINE_END)]
 GRANULARITIES = [("paragraph", pyatspi.TEXT_GRANULARITY_PARAGRAPH)]
-
-
-def find_app(name, seconds=60):
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        desktop = pyatspi.Registry.getDesktop(0)
-        for i in range(desktop.childCount):
-            app = desktop.getChildAtIndex(i)
-            if app is not None and app.name == name:
-                return app
-        time.sleep(0.3)
-    return None
-
-
-def walk(obj, path, out, depth=0):
-    if obj is None or depth > 60:
-        return
-    out.append((obj, path))
-    for i in range(obj.childCount):
-        try:
-            child = obj.getChildAtIndex(i)
-        except Exception:
-            continue
-        if child is not None:
-            walk(child, path + [f"{child.getRoleName()}:{child.name}"], out, depth + 1)
 
 
 class Watchdog:
@@ -84,7 +62,7 @@ def main():
     calls = 0
     slowest = (0.0, "")
     try:
-        app = find_app("tactus")
+        app = find_app("tactus", time.time() + 60)
         if app is None:
             raise SystemExit("FAIL: tactus never appeared on the AT-SPI bus")
         # Wait for the document: the preview's line holds braille cells then.

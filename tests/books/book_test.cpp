@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <pugixml.hpp>
 
 #include "../export/pef_checks.hpp"
@@ -241,6 +243,49 @@ TEST(BookLayout, AShortBookInTwoVolumes) {
     for (std::size_t at = pef->find("<volume "); at != std::string::npos; at = pef->find("<volume ", at + 1)) ++volumes;
     EXPECT_EQ(volumes, 2u);
     expect_golden("jekyll-short-volumes.pef", *pef);
+}
+
+// The same book through `tactus-cli layout --volumes`: the command line's
+// options reach the book layout (the BRF is the golden above, byte for byte),
+// `--brf-volumes files` writes one file per volume, and the PEF carries the
+// volumes and passes the schema.
+TEST(BookLayout, TheCommandLineLaysOutTheSameVolumes) {
+    const fs::path dir = fs::temp_directory_path() / ("tactus-book-cli-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string cli = TACTUS_CLI;
+    const std::string common = " layout --volumes --sheets-per-volume 6 --book-publisher 'Standard Ebooks' "
+                               "--book-year 2017 --transcriber Tactus '" +
+                               book("jekyll-and-hyde-short.html").string() + "'";
+    auto quiet = [](const std::string& c) { return std::system((c + " >/dev/null 2>&1").c_str()); };
+
+    ASSERT_EQ(quiet("'" + cli + "'" + common + " --to brf -o '" + (dir / "book.brf").string() + "'"), 0);
+    EXPECT_EQ(read_text(dir / "book.brf"), read_text(fs::path(TACTUS_BOOKS_GOLDEN_DIR) / "jekyll-short-volumes.brf"));
+
+    ASSERT_EQ(quiet("'" + cli + "'" + common + " --to brf --brf-volumes files -o '" + (dir / "vol.brf").string() +
+                    "'"),
+              0);
+    ASSERT_TRUE(fs::exists(dir / "vol-1.brf"));
+    ASSERT_TRUE(fs::exists(dir / "vol-2.brf"));
+    EXPECT_FALSE(fs::exists(dir / "vol-3.brf"));
+    EXPECT_FALSE(fs::exists(dir / "vol.brf"));
+    const auto first = read_text(dir / "vol-1.brf");
+    const auto second = read_text(dir / "vol-2.brf");
+    EXPECT_THAT(first, ::testing::HasSubstr(",VOLUME #A ( #B"));
+    EXPECT_THAT(second, ::testing::HasSubstr(",VOLUME #B ( #B"));
+    EXPECT_THAT(first, ::testing::Not(::testing::HasSubstr(",VOLUME #B ( #B")));
+    // Together they hold the one-file book's pages: the volume files are its parts.
+    const auto whole = read_text(dir / "book.brf");
+    EXPECT_NE(whole.find(first.substr(0, first.size() / 2)), std::string::npos);
+    EXPECT_NE(whole.find(second.substr(second.size() / 2)), std::string::npos);
+
+    ASSERT_EQ(quiet("'" + cli + "'" + common + " --to pef -o '" + (dir / "book.pef").string() + "'"), 0);
+    const auto pef = read_text(dir / "book.pef");
+    EXPECT_EQ(validate_pef_schema(pef), "");
+    std::size_t volumes = 0;
+    for (std::size_t at = pef.find("<volume "); at != std::string::npos; at = pef.find("<volume ", at + 1)) ++volumes;
+    EXPECT_EQ(volumes, 2u);
+    fs::remove_all(dir);
 }
 
 }  // namespace

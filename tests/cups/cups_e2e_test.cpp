@@ -68,7 +68,11 @@ TEST(CupsE2E, AnotherUsersJobIsEmbossedExactlyAsPlanned) {
 TEST(CupsE2E, CancelInCupsAbortsOnTheController) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
-    PtySim sim(rig.e.dir.path(), "sim", {}, 100);  // slow motion: the job is still running when cancelled
+    // Ten times the machine's speed: the five copies take about 400 s at the
+    // machine's pace, so 40 s here, long after the cancel (cupsd's cancel reaches the
+    // backend within seconds even on a loaded machine; at 100 times the job
+    // could end first).
+    PtySim sim(rig.e.dir.path(), "sim", {}, 10);
     ASSERT_TRUE(rig.add_queue(sim));
     const auto doc = rig.lesson_file("lesson.md", 6);
     std::string out;
@@ -119,7 +123,7 @@ TEST(CupsE2E, PaperOutShowsInLpstatThenTheJobCarriesOn) {
 TEST(CupsE2E, CupsdKilledMidJobLosesNoSheetAndDoublesNone) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
-    PtySim sim(rig.e.dir.path(), "sim", {}, 300);
+    PtySim sim(rig.e.dir.path(), "sim", {}, 60);  // the three copies last about 3 s: still running when killed
     int cups_id = 0;
     spool::JobId id = 0;
     ASSERT_NO_FATAL_FAILURE(start_mid_job(rig, sim, cups_id, id));
@@ -138,7 +142,7 @@ TEST(CupsE2E, CupsdKilledMidJobLosesNoSheetAndDoublesNone) {
 TEST(CupsE2E, BackendKilledMidJobResumesWithoutLossOrDoubles) {
     CupsRig rig;
     REQUIRE_CUPS(rig);
-    PtySim sim(rig.e.dir.path(), "sim", {}, 300);
+    PtySim sim(rig.e.dir.path(), "sim", {}, 60);  // the three copies last about 3 s: still running when killed
     int cups_id = 0;
     spool::JobId id = 0;
     ASSERT_NO_FATAL_FAILURE(start_mid_job(rig, sim, cups_id, id));

@@ -61,6 +61,25 @@ TEST(CliTranslate, UnknownTableIsBadInput) {
     EXPECT_NE(r.err.find("xx-nonexistent.ctb"), std::string::npos) << r.err;
 }
 
+// A line with a Chinese word: the word in zh-tw.ctb's braille with UEB's
+// non-UEB word indicator (^( in BRF); --one-table gives liblouis's own line,
+// escape codes and all; a second table that does not exist is bad input
+// naming the option.
+TEST(CliTranslate, PassagesInAnotherLanguageGetTheirTable) {
+    const std::string line = "The word \xE4\xB8\xAD\xE6\x96\x87 means Chinese.\n";
+    const auto mixed = run_captured(cli({"translate", "--to", "brf", "-"}), line);
+    ASSERT_EQ(mixed.exit_code, 0) << mixed.err;
+    EXPECT_EQ(mixed.out, ",! ^W ^(A&'=1 M1NS ,*9ESE4\n");
+    const auto one = run_captured(cli({"translate", "--to", "brf", "--one-table", "-"}), line);
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const auto peer = run_captured({"lou_translate", "en-us-brf.dis,en-ueb-g2.ctb"}, line);
+    EXPECT_EQ(one.out, peer.out);
+    EXPECT_NE(one.out, mixed.out);
+    const auto bad = run_captured(cli({"translate", "--second-table", "xx-nonexistent.ctb", "-"}), line);
+    EXPECT_EQ(bad.exit_code, 3);
+    EXPECT_NE(bad.err.find("--second-table"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run_captured(cli({})).exit_code, 2);
     EXPECT_EQ(run_captured(cli({"layout", "--cells", "1", "x.md", "--to", "brf"})).exit_code, 2);

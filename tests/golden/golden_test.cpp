@@ -35,7 +35,10 @@ std::string render(const GoldenCase& c) {
     pipeline::PipelineOptions o;
     o.tables = c.tables;
     o.layout.geometry.interpoint = c.interpoint;
-    auto doc = pipeline::lay_out_file((c.input.starts_with("structure") ? kStructure : kSamples) / c.input, o);
+    const auto dir = c.input.starts_with("structure") ? kStructure
+                     : c.input.starts_with("mixed/") ? fs::path(TACTUS_GOLDEN_DIR) / ".."
+                                                     : kSamples;
+    auto doc = pipeline::lay_out_file(dir / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
     if (!doc) return {};
     exporter::PefMetadata meta;
@@ -75,6 +78,11 @@ INSTANTIATE_TEST_SUITE_P(
         GoldenCase{"welcome-interpoint.brf", "welcome.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"welcome-g1.pef", "welcome.md", "en-ueb-g1.ctb", true, exporter::ExportFormat::pef},
         GoldenCase{"chinese-tw.brf", "chinese-tw.txt", "zh-tw.ctb", true, exporter::ExportFormat::brf},
+        // Passages in another language (docs/translation.md): English in
+        // Taiwanese braille, Chinese in UEB contracted, HTML lang spans.
+        GoldenCase{"mixed-zh-tw-english.brf", "mixed/zh-tw-english.md", "zh-tw.ctb", false, exporter::ExportFormat::brf},
+        GoldenCase{"mixed-ueb-chinese.brf", "mixed/ueb-chinese.md", "en-ueb-g2.ctb", false, exporter::ExportFormat::brf},
+        GoldenCase{"mixed-lang-spans.brf", "mixed/lang-spans.html", "en-ueb-g2.ctb", false, exporter::ExportFormat::brf},
         GoldenCase{"chinese-cn.txt", "chinese-cn.txt", "zhcn-g2.ctb", false, exporter::ExportFormat::unicode},
         GoldenCase{"structure-md.brf", "structure.md", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},
         GoldenCase{"structure-docx.brf", "structure.docx", "en-ueb-g2.ctb", true, exporter::ExportFormat::brf},

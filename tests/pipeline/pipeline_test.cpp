@@ -87,6 +87,21 @@ void expect_workers_match(const document::Document& doc, unsigned workers, std::
 // pages as in process.
 TEST(Pipeline, WorkersCarryStructureBlocks) { expect_workers_match(structured_blocks(400), 2, 10); }
 
+// Passages in another language through forked workers: the second tables are
+// opened before the fork, and the pages are the in-process ones.
+TEST(Pipeline, WorkersCarryPassagesInAnotherLanguage) {
+    document::Document d;
+    for (int i = 0; i < 300; ++i) {
+        document::Block b;
+        document::Span marked{"\xE4\xBD\xA0\xE5\xA5\xBD"};  // 你好
+        marked.language = "zh-CN";
+        b.spans = {document::Span{"Line " + std::to_string(i) + " says \xE4\xB8\xAD\xE6\x96\x87 and "}, marked,
+                   document::Span{" again."}};
+        d.blocks.push_back(std::move(b));
+    }
+    expect_workers_match(d, 2, 10);
+}
+
 // Forked workers must give byte-identical pages to the in-process translator.
 TEST(Pipeline, WorkerProcessesMatchInProcessTranslation) { expect_workers_match(many_blocks(1500), 3, 50); }
 

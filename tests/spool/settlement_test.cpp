@@ -91,6 +91,24 @@ TEST(Settlement, AnotherJobsCountIsNeverUsed) {
     EXPECT_EQ(lost.discard_message.find("interrupted after"), std::string::npos);
 }
 
+TEST(Settlement, ALostCountDiscardsTheSheetAfterTheLastFinishedOneOfTheStream) {
+    // Serve and the controller died together during sheet 3's first pass: no
+    // pass of it is recorded, but the stream had finished sheets 1 and 2, so
+    // the controller had gone on to sheet 3 and may have struck dots on it.
+    const auto lost = settle(run(0x8005, 1, 0), shape({4, 5, 0}), status(0, 0));
+    EXPECT_FALSE(lost.controller_count);
+    ASSERT_TRUE(lost.discard);
+    EXPECT_EQ(*lost.discard, 3U);
+    EXPECT_NE(lost.discard_message.find("may be blank"), std::string::npos) << lost.discard_message;
+    // The same from a stream that began at sheet 2.
+    const auto later = settle(run(0x8005, 2, 4), shape({4, 5, 0}), status(0, 0));
+    ASSERT_TRUE(later.discard);
+    EXPECT_EQ(*later.discard, 3U);
+    // The stream's first sheet with nothing recorded: nothing shows it began.
+    const auto first = settle(run(0x8005, 2, 4), shape({4, 0, 0}), status(0, 0));
+    EXPECT_FALSE(first.discard);
+}
+
 TEST(Settlement, ACountOutsideTheStreamIsNotUsed) {
     // Same id, but the count lies before the stream's first pass (or the plan shape changed).
     const auto before = settle(run(0x8006, 2, 4), shape({4, 0, 0}), status(0x8006, 2, encode::flag::job_active));

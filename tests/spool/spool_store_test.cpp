@@ -12,6 +12,7 @@
 #include <csignal>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include "common/file_io.hpp"
 #include "spool/runner_token.hpp"
@@ -99,6 +100,34 @@ TEST(SpoolStore, AReaderLeavesAnEmptySpoolFileToItsCreator) {
     auto created = Spool::open(db);
     ASSERT_TRUE(created) << created.error().to_string();
     EXPECT_TRUE(created->add_printer("lab", "pty:/dev/null", kProfile));
+}
+
+// cupsd starts a server's first job's filter and backend together, and both
+// create the spool: the loser once met a half-made file and failed ("unable
+// to open database file"), which stops the CUPS queue. Creators racing on a
+// fresh path must all open the one spool, whoever wins.
+TEST(SpoolStore, CreatorsRacingOnANewPathAllOpenTheSameSpool) {
+    TempDir dir;
+    for (int round = 0; round < 30; ++round) {
+        const auto db = dir / ("spool-" + std::to_string(round) + ".db");
+        constexpr int kCreators = 4;
+        std::vector<std::string> errors(kCreators);
+        std::vector<std::thread> creators;
+        for (int i = 0; i < kCreators; ++i)
+            creators.emplace_back([&, i] {
+                auto s = Spool::open(db);
+                if (!s) errors[static_cast<std::size_t>(i)] = s.error().to_string();
+                else if (auto p = s->printers(); !p) errors[static_cast<std::size_t>(i)] = p.error().to_string();
+            });
+        for (auto& t : creators) t.join();
+        for (int i = 0; i < kCreators; ++i) EXPECT_EQ(errors[static_cast<std::size_t>(i)], "") << "round " << round;
+        auto s = Spool::open(db, {.create = false});
+        ASSERT_TRUE(s) << s.error().to_string();
+        EXPECT_TRUE(s->add_printer("lab", "pty:/dev/null", kProfile));
+    }
+    // Nothing of the making is left beside the spools.
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(entry.path().filename().string().find(".new-"), std::string::npos) << entry.path();
 }
 
 TEST(SpoolStore, ProfileSnapshotIsTakenAtSubmission) {
