@@ -46,6 +46,14 @@ public:
     [[nodiscard]] bool cable_out() const { return now_ >= pulled_.first && now_ < pulled_.second; }
     // Host-side lines seen while the cable was out (the host kept trying).
     [[nodiscard]] std::size_t reads_while_pulled() const { return reads_while_pulled_; }
+    // What a host reading the status lines in compatibility mode (between
+    // transfers) saw, counted in passes of the firmware's loop: the condition
+    // shown while it stood, and shown while it did not (a wrong line).
+    struct ConditionSeen {
+        std::size_t fault_on_nfault = 0, nfault_without_fault = 0;
+        std::size_t paper_out_on_perror = 0, perror_with_paper = 0;
+    };
+    [[nodiscard]] const ConditionSeen& condition_seen() const { return seen_; }
 
 private:
     class Lines final : public transport::ParallelPortLines {
@@ -56,7 +64,10 @@ private:
             return {};
         }
         Result<void> write_control(const transport::LptControl& c) override {
-            if (!b_.cable_out()) b_.port_.set_control(c);
+            if (!b_.cable_out()) {
+                b_.port_.set_control(c);
+                b_.host_ctl_ = c;
+            }
             return {};
         }
         Result<transport::LptStatus> read_status() override {
@@ -102,11 +113,21 @@ private:
         port_.set_condition((st.ack.faults & encode::fault::paper_out) != 0,
                             st.ack.state == encode::ControllerState::fault, true);
         pins_ = port_.status();
+        if (!host_ctl_.n_select_in) {  // compatibility mode: the lines carry the condition
+            const bool fault = st.ack.state == encode::ControllerState::fault;
+            const bool paper_out = (st.ack.faults & encode::fault::paper_out) != 0;
+            if (fault && !pins_.n_fault) ++seen_.fault_on_nfault;
+            if (!fault && !pins_.n_fault) ++seen_.nfault_without_fault;
+            if (paper_out && pins_.paper_error) ++seen_.paper_out_on_perror;
+            if (!paper_out && pins_.paper_error) ++seen_.perror_with_paper;
+        }
     }
 
     std::shared_ptr<controller::SimController> ctl_;
     controller::LptPeripheral port_;
     transport::LptStatus pins_;
+    transport::LptControl host_ctl_;
+    ConditionSeen seen_;
     double now_ = 0;
     bool halted_ = false;
     std::pair<double, double> pulled_{-1, -1};
