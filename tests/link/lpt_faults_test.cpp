@@ -15,6 +15,7 @@
 #include "link/link.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/profile.hpp"
+#include "../common/pty_emboss.hpp"
 #include "../common/sim_lpt_cable.hpp"
 #include "../common/test_plans.hpp"
 
@@ -139,6 +140,23 @@ TEST(LptFaults, AWarmResetMidPassResumesAtTheExactStrike) {
     EXPECT_EQ(rig.ctl->resets(), 1U);
     EXPECT_EQ(rig.ctl->strike_log(), controller::planned_strikes(rig.plan));
     EXPECT_EQ(out.stats.restarts, 1U);
+}
+
+// A real one-page document nobody here wrote (pandoc's test/docx
+// block_quotes.docx: 57 passes, 729 strikes), laid out, translated and
+// planned by the pipeline, embossed through the parallel port: every dot of
+// the plan struck once, in order. (Through the firmware in s51 a page would
+// take most of an hour; FirmwareOverLpt embosses a laid-out word there.)
+TEST(LptDocument, AOnePageDocumentIsEmbossedDotForDot) {
+    auto rig = make_rig(1, 1, 1, 1);
+    rig.plan = test::plan_with_firmware_tables(std::string(TACTUS_TEST_DATA) + "/import/public/pandoc-block_quotes.docx",
+                                               TACTUS_FIRMWARE_TABLES);
+    ASSERT_EQ(rig.plan.sheets.size(), 1U);
+    const auto want = controller::planned_strikes(rig.plan);
+    ASSERT_GT(want.size(), 500U);
+    const auto out = run(rig);
+    EXPECT_EQ(out.end, link::JobEnd::completed) << out.error.to_string();
+    EXPECT_EQ(rig.ctl->strike_log(), want);
 }
 
 }  // namespace
