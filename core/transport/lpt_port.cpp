@@ -49,7 +49,17 @@ Result<void> LptPort::reopen() {
     TACTUS_TRY(l, opener_());
     lines_ = std::move(l);
     ctl_ = LptControl{};  // compatibility mode, idle
-    return lines_->write_control(ctl_);
+    if (auto r = lines_->write_control(ctl_); !r) return r;
+    // The host's port opens whether or not a controller is on the cable: the
+    // controller is there once it shows ready. A pulled cable or a switched-off
+    // embosser leaves the status lines floating high, Busy among them, so a
+    // reconnect keeps waiting for it instead of failing on its first byte.
+    auto ready = wait_for([](const LptStatus& st) { return !st.busy; });
+    if (!ready) return std::unexpected(ready.error());
+    if (!*ready)
+        return fail(ErrorKind::device, "no controller ready on the port (Busy stays high: cable out, or the embosser off)",
+                    name_);
+    return {};
 }
 
 // Polls the status lines until `ok`, or the handshake time runs out (false).

@@ -1,9 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// One protocol-conformance suite, run against both controllers over a real
-// pty, so the two can never drift apart: the C++ simulated
-// controller speaking protocol 3 (`tactus-cli sim --pty --firmware-tables`,
-// given the tables the firmware was built with) and the reference firmware in
-// s51 (`tactus-cli sim --firmware --pty`). Every case runs against both:
+// One protocol-conformance suite, run against both controllers and over both
+// cables, so the two can never drift apart: the C++ simulated controller
+// speaking protocol 3 (`tactus-cli sim --pty --firmware-tables`, given the
+// tables the firmware was built with) and the reference firmware in s51
+// (`tactus-cli sim --firmware --pty`), over a real pty; and the same two
+// behind the parallel port (compatibility mode out, IEEE 1284 nibble mode
+// back): the C++ controller in-process on virtual time behind the port model
+// the firmware runs (LptPeripheral, test::SimLptBench), every case; the
+// firmware's own pins in s51 (`lpt:emu`), a few cases only, since s51's
+// console costs milliseconds a line and a case there takes seconds.
+// Every case runs against both controllers:
 // sessions, sequence numbers, duplicates, out-of-order frames, refusals,
 // silence on a bad CRC, HELLO_REPLY's table identity and the host's refusal
 // of other tables, the DATA check, the window over the ring, duplicate DATA
@@ -21,6 +27,7 @@
 #include <vector>
 
 #include "controller/open_device.hpp"
+#include "controller/sim_transport.hpp"
 #include "controller/sim_controller.hpp"
 #include "encode/crc16.hpp"
 #include "encode/frame.hpp"
@@ -31,7 +38,11 @@
 #include "profile/profile.hpp"
 #include "transport/byte_stream.hpp"
 #include "../common/process.hpp"
+#include "../common/sim_lpt_cable.hpp"
 #include "../common/test_plans.hpp"
+#ifdef TACTUS_FIRMWARE_IHX
+#include "lpt_emulator.hpp"
+#endif
 
 namespace tactus {
 namespace {
@@ -44,6 +55,7 @@ struct Controller {
     std::string name;
     bool firmware = false;
     std::uint8_t protocol = 2;
+    bool lpt = false;  // behind the parallel port, not a serial line
 };
 // Test names in ctest read "GetParam() = cpp_simulator_v3", not the struct's bytes.
 void PrintTo(const Controller& c, std::ostream* os) { *os << c.name; }
@@ -66,6 +78,10 @@ machine::FirmwareTables tables() {
 class Conformance : public ::testing::TestWithParam<Controller> {
 protected:
     void SetUp() override {
+        if (GetParam().lpt) {
+            open_lpt();
+            return;
+        }
         std::vector<std::string> args{TACTUS_CLI, "sim", "--pty"};
 #ifdef TACTUS_FIRMWARE_IHX
         if (GetParam().firmware) args.insert(args.end(), {"--firmware", TACTUS_FIRMWARE_IHX});
@@ -83,8 +99,49 @@ protected:
         ASSERT_TRUE(s) << s.error().to_string();
         line_ = std::move(*s);
     }
-    // The controller's own options (faults it is started with).
+    // The controller's own options (faults it is started with): `tactus-cli
+    // sim`'s, the in-process controller's, the `lpt:emu` cable's.
     [[nodiscard]] virtual std::vector<std::string> extra_args() const { return {}; }
+    virtual void prepare(controller::SimController&) const {}
+    [[nodiscard]] virtual std::string lpt_emu_options() const { return {}; }
+
+    // The cases the firmware's pins in s51 run: a session with the table
+    // identity (a frame each way, about 12 s) and a corrupt frame left
+    // unanswered then the next one taken (about 24 s). Each frame there costs
+    // seconds (the sequence cases about 53 s, the DATA check 73 s, paper out
+    // on PError 118 s, which FirmwareOverLpt covers end to end).
+    [[nodiscard]] static bool in_s51_lpt_subset(const std::string& test) {
+        for (const char* t : {"ACorruptFrameIsNeverAnswered", "HelloReplyCarriesTheTableIdentity"})
+            if (test.rfind(t, 0) == 0) return true;
+        return false;
+    }
+    void open_lpt() {
+        if (GetParam().firmware) {
+#ifdef TACTUS_FIRMWARE_IHX
+            const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+            if (!in_s51_lpt_subset(test)) GTEST_SKIP() << "not in the parallel-port subset run in s51";
+            cli::register_emulated_lpt();
+            auto s = controller::open_device("lpt:emu?fw=" + std::string(TACTUS_FIRMWARE_IHX) + lpt_emu_options());
+            ASSERT_TRUE(s) << s.error().to_string();
+            line_ = std::move(*s);
+#endif
+            return;
+        }
+        controller::SimOptions o;
+        if (GetParam().protocol == 3) o.firmware = tables();
+        auto ctl = std::make_shared<controller::SimController>(o);
+        prepare(*ctl);
+        bench_ = std::make_unique<test::SimLptBench>(ctl);
+        auto port = bench_->open_port();
+        ASSERT_TRUE(port) << port.error().to_string();
+        line_ = std::move(*port);
+    }
+    // The controller stops answering: s51 or the C++ server stopped
+    // (SIGSTOP), the in-process chip halted.
+    void halt_controller() {
+        if (bench_) bench_->halt();
+        if (server_) server_->signal(SIGSTOP);
+    }
     void TearDown() override {
         line_.reset();
         if (server_) {
@@ -199,6 +256,7 @@ protected:
     }
 
     std::optional<Process> server_;
+    std::unique_ptr<test::SimLptBench> bench_;  // declared before line_: the port's lines point into it
     std::unique_ptr<transport::ByteStream> line_;
     encode::FrameDecoder decoder_;
     std::vector<encode::Frame> pending_;
@@ -484,6 +542,12 @@ protected:
         if (GetParam().firmware) return {"--paper-out-at", "1", "--paper-reload-reads", "4000"};
         return {"--paper-out-at", "1", "--paper-reload", "1"};
     }
+    void prepare(controller::SimController& c) const override {
+        c.inject_paper_out_at_sheet(1);
+        c.set_paper_reload(1);
+    }
+    // The operator loads paper a second (chip time) after PError showed.
+    [[nodiscard]] std::string lpt_emu_options() const override { return "&paper=out&reload=1"; }
 };
 
 // Paper out (docs/protocol.md, "Pause, resume, abort, faults, restarts"): the
@@ -561,7 +625,7 @@ TEST_P(Conformance, TheHostGivesUpOnASilentControllerInBoundedTime) {
                               if (p.executed && !stopped) {
                                   stopped = true;
                                   stopped_at = l.stream().now();
-                                  server_->signal(SIGSTOP);
+                                  halt_controller();
                               }
                           },
                           cancel);
@@ -576,9 +640,13 @@ TEST_P(Conformance, TheHostGivesUpOnASilentControllerInBoundedTime) {
 }
 
 std::vector<Controller> controllers() {
-    std::vector<Controller> c{{"cpp_simulator_v2", false, 2}, {"cpp_simulator_v3", false, 3}};
+    std::vector<Controller> c{{"cpp_simulator_v2", false, 2},
+                              {"cpp_simulator_v3", false, 3},
+                              {"cpp_simulator_v2_lpt", false, 2, true},
+                              {"cpp_simulator_v3_lpt", false, 3, true}};
 #ifdef TACTUS_FIRMWARE_IHX
     c.push_back({"firmware_in_s51", true, 3});
+    c.push_back({"firmware_in_s51_lpt", true, 3, true});
 #endif
     return c;
 }

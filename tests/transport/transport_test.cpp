@@ -257,20 +257,40 @@ TEST(Lpt, StatusLinesCarryTheCondition) {
     EXPECT_FALSE(c->online);
 }
 
-// A peripheral that never answers: Busy stuck high.
+// A peripheral that never answers: Busy stuck high (from the first data
+// byte on, when `after_data`; else from the start, as a pulled cable).
 class DeadLines final : public ParallelPortLines {
 public:
-    Result<void> write_data(std::uint8_t) override { return {}; }
+    explicit DeadLines(bool after_data) : busy_(!after_data) {}
+    Result<void> write_data(std::uint8_t) override {
+        busy_ = true;
+        return {};
+    }
     Result<void> write_control(const LptControl&) override { return {}; }
-    Result<LptStatus> read_status() override { return LptStatus{true, true, false, false, true}; }
+    Result<LptStatus> read_status() override { return LptStatus{true, busy_, false, false, true}; }
     void settle() override {}
+
+private:
+    bool busy_;
 };
 
+Result<std::unique_ptr<LptPort>> open_dead(bool after_data) {
+    return LptPort::open([after_data]() -> Result<std::unique_ptr<ParallelPortLines>> {
+        return std::unique_ptr<ParallelPortLines>(std::make_unique<DeadLines>(after_data));
+    }, "lpt:dead", LptTimings{std::chrono::milliseconds(20)});
+}
+
 TEST(Lpt, StuckBusyIsABoundedError) {
-    auto port = LptPort::open([]() -> Result<std::unique_ptr<ParallelPortLines>> { return std::unique_ptr<ParallelPortLines>(std::make_unique<DeadLines>()); },
-                              "lpt:dead", LptTimings{std::chrono::milliseconds(20)});
-    ASSERT_TRUE(port);
-    const std::vector<std::uint8_t> b{1};
+    // Busy from the start: no controller is found on the port (a reconnect
+    // keeps trying rather than failing on its first byte).
+    auto none = open_dead(false);
+    ASSERT_FALSE(none);
+    EXPECT_NE(none.error().message.find("no controller ready on the port (Busy stays high"), std::string::npos)
+        << none.error().message;
+    // Ready at first, then Busy stuck: the byte fails within the handshake time.
+    auto port = open_dead(true);
+    ASSERT_TRUE(port) << port.error().to_string();
+    const std::vector<std::uint8_t> b{1, 2};
     auto r = (*port)->write(b);
     ASSERT_FALSE(r);
     EXPECT_NE(r.error().message.find("Busy"), std::string::npos);
