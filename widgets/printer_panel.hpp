@@ -14,7 +14,8 @@
 // beside the cables, found off the GUI thread. Ctrl+P to such a queue sends
 // the document over IPP (core/ipp, as `tactus-cli emboss --device ipp://...`)
 // and the job view follows the job on the server; it is not in the local
-// spool, and quitting the app leaves it to the server.
+// spool, and quitting the app leaves it to the server. That part of the panel
+// is printer_panel_queues.cpp.
 //
 // For technicians: a device picker that takes any device string, Connect
 // (HELLO, CONFIGURE with the profile being edited, STATUS), faults injected
@@ -51,6 +52,8 @@ class Spool;
 }
 
 namespace tactus::gui {
+
+struct RemoteQueueJob;  // printer_panel_rows.hpp
 
 class PrinterPanel : public QWidget {
     Q_OBJECT
@@ -144,7 +147,7 @@ Q_SIGNALS:
 
 private:
     struct AppRunner;
-    struct QueueJob;
+    using QueueJob = RemoteQueueJob;
     struct Watch {
         spool::JobState state = spool::JobState::queued;
         std::string reason;

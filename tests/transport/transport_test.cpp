@@ -413,6 +413,54 @@ TEST(Device, FormatIsTheInverseOfParse) {
     EXPECT_EQ(format_device(*parse_device("sim")), "sim");
 }
 
+// Each device type, with and without options, on the paths and values users
+// have: by-id serial paths with spaces, percent signs, '#' and non-ASCII
+// names, option values holding '=', ':' or '?', options out of key order.
+// parse -> format -> parse keeps the spec; format writes the options in key
+// order and the rest of the string as typed.
+TEST(Device, FormatKeepsEveryTypesPathAndOptions) {
+    struct Case {
+        std::string text, written;
+    };
+    const Case cases[] = {
+        {"sim", "sim"},
+        {"sim?speed=max", "sim?speed=max"},
+        {"sim?speed=10&baud=9600&seed=7", "sim?baud=9600&seed=7&speed=10"},
+        {"sim?noise=1e-3&paper-reload=5&protocol=2", "sim?noise=1e-3&paper-reload=5&protocol=2"},
+        {"serial:/dev/ttyUSB0", "serial:/dev/ttyUSB0"},
+        {"serial:/dev/ttyUSB0?parity=none&flow=rtscts&baud=57600",
+         "serial:/dev/ttyUSB0?baud=57600&flow=rtscts&parity=none"},
+        {"serial:/dev/serial/by-id/usb-FTDI_FT232R USB UART_A50285BI-if00-port0?baud=9600",
+         "serial:/dev/serial/by-id/usb-FTDI_FT232R USB UART_A50285BI-if00-port0?baud=9600"},
+        {"serial:/dev/serial/by-id/usb-Pr\xc3\xa4gemaschine_#2_100%-if00", "serial:/dev/serial/by-id/usb-Pr\xc3\xa4gemaschine_#2_100%-if00"},
+        {"serial:COM3?stop=2", "serial:COM3?stop=2"},
+        {"pty:/dev/pts/3", "pty:/dev/pts/3"},
+        {"pty:/dev/pts/3?baud=115200", "pty:/dev/pts/3?baud=115200"},
+        {"hid:10c4:ea80", "hid:10c4:ea80"},
+        {"hid:10c4:ea80:ABC123?baud=115200&parity=even", "hid:10c4:ea80:ABC123?baud=115200&parity=even"},
+        {"lpt:/dev/parport0", "lpt:/dev/parport0"},
+        {"lpt:emu?fw=/tmp/a b/fw=1.ihx&log=x:y?z", "lpt:emu?fw=/tmp/a b/fw=1.ihx&log=x:y?z"},
+        {"lpt:emu?log=&fw=f.ihx", "lpt:emu?fw=f.ihx&log="},
+    };
+    for (const auto& c : cases) {
+        const auto spec = parse_device(c.text);
+        ASSERT_TRUE(spec) << c.text << ": " << spec.error().to_string();
+        const auto written = format_device(*spec);
+        EXPECT_EQ(written, c.written);
+        const auto again = parse_device(written);
+        ASSERT_TRUE(again) << written << ": " << again.error().to_string();
+        EXPECT_EQ(again->scheme, spec->scheme) << c.text;
+        EXPECT_EQ(again->path, spec->path) << c.text;
+        EXPECT_EQ(again->options, spec->options) << c.text;
+    }
+    // The parts come back as typed, '=' in a value included.
+    const auto emu = parse_device("lpt:emu?fw=/tmp/a b/fw=1.ihx&log=x:y?z");
+    ASSERT_TRUE(emu);
+    EXPECT_EQ(emu->path, "emu");
+    EXPECT_EQ(emu->options.at("fw"), "/tmp/a b/fw=1.ihx");
+    EXPECT_EQ(emu->options.at("log"), "x:y?z");
+}
+
 TEST(Device, BadStringsSayWhatIsWrong) {
     EXPECT_NE(parse_device("usb:/dev/x").error().message.find("unknown device type"), std::string::npos);
     EXPECT_NE(parse_device("serial:").error().message.find("missing the device path"), std::string::npos);
