@@ -31,6 +31,9 @@ works the app by keyboard only, asserting after every key what Orca says:
   braille_words  Ctrl+Right and Ctrl+Left in the braille pane, Control held as
           a user holds it: each move says the braille word passed, the first
           one included (once it said the blank cell alone).
+  select_typing  Ctrl+A then typing, in the print text and in a profile
+          field: no "Text unselected." (the typed text replaced the
+          selection); Shift+Right taking a selection back is still heard.
   controls  combo boxes say their value on focus, on Up in the closed box and
           when their list opens (once said "Table: combo box." and "List with
           201 items." only, and "Tactus frame." at each list); Space in the
@@ -421,6 +424,29 @@ def scenario_braille_words(tactus, sample, work):
     return 0
 
 
+def scenario_select_typing(tactus, sample, work):
+    """Ctrl+A then typing replaces the selection: no "Text unselected." after it
+    (once heard after each such edit of a field), while taking a selection back
+    with Shift+arrow is still said to be unselected."""
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", sample])
+        # The print text has the focus at start.
+        s.step("Ctrl+A selects the print text", keys=["ctrl+a"], expect=[r"selected"], quiet=0.8)
+        s.step("typing replaces it", type_text="x", allow_silent=True, forbid=[r"unselected", r"Selection deleted"],
+               quiet=0.8)
+        s.step("Ctrl+6 goes to the paper width", keys=["ctrl+6"], expect=[r"Width in mm"], quiet=0.8)
+        s.step("Ctrl+A selects the width", keys=["ctrl+a"], expect=[r"selected"], quiet=0.8)
+        s.step("typing replaces the width", type_text="297", allow_silent=True, forbid=[r"unselected", r"Selection deleted"],
+               quiet=0.8)
+        s.step("Shift+Left selects a digit", keys=["shift+Left"], expect=[r"selected"], forbid=[r"unselected"],
+               quiet=0.8)
+        s.step("Shift+Right takes it back, heard", keys=["shift+Right"], expect=[r"unselected"], quiet=0.8)
+        print(s.summary())
+    return 0
+
+
 def scenario_controls(tactus, sample, work):
     s = OrcaSession("tactus", work)
     table = r"English \u2014 Unified English contracted braille"
@@ -470,7 +496,7 @@ def scenario_controls(tactus, sample, work):
     return 0
 
 
-SCENARIOS = {"braille_words": scenario_braille_words, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
+SCENARIOS = {"braille_words": scenario_braille_words, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
              "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall}
 
 
