@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QSplitterHandle>
 
 #include "announcer.hpp"
@@ -365,8 +366,52 @@ bool selection_dropped_on_leaving(QAccessibleEvent* e) {
     return change->selectionStart() == change->selectionEnd();
 }
 
+// A spin box is two accessible objects here: the spin button, which Qt reports
+// text changes for, and its line edit, which holds the text interface and
+// reports the selection. Orca keeps each object's selection to tell what a
+// selection event changed. Typing over a selection (Ctrl+A, then a digit) only
+// told it that the line edit's selection was gone, and it said "Text
+// unselected." though the typed text had replaced the selection. The typed
+// text is told for the line edit too, as for a text field of its own: Orca
+// reads the line edit's selection again on an insertion, finds none, and the
+// selection's end that follows changes nothing it would say. (The removal is
+// not: Orca would take the removed selection for a deletion and say
+// "Selection deleted.".) A selection taken back with Shift+arrow has no text
+// change and is still heard.
+void insertion_in_spin_box_edit(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::TextInserted && e->type() != QAccessible::TextUpdated) return;
+    auto* spin = qobject_cast<QAbstractSpinBox*>(e->object());
+    if (!spin) return;
+    auto* edit = spin->findChild<QLineEdit*>(QString(), Qt::FindDirectChildrenOnly);
+    if (!edit) return;
+    const auto inserted = e->type() == QAccessible::TextInserted
+                              ? static_cast<QAccessibleTextInsertEvent*>(e)->textInserted()
+                              : static_cast<QAccessibleTextUpdateEvent*>(e)->textInserted();
+    const int at = e->type() == QAccessible::TextInserted ? static_cast<QAccessibleTextInsertEvent*>(e)->changePosition()
+                                                          : static_cast<QAccessibleTextUpdateEvent*>(e)->changePosition();
+    if (inserted.isEmpty()) return;
+    QAccessibleTextInsertEvent copy(edit, at, inserted);
+    pass_on(&copy);
+}
+
+// The editor's panes mirror one another's selection: Ctrl+A in the print text
+// selects every cell of the braille pane too. Orca took the unfocused pane's
+// selection as news (it read the braille after Ctrl+A in the print text), kept
+// it, and when typing replaced the selection and the braille was rebuilt, said
+// "Text unselected." for the pane the user was not in. A text pane's selection
+// is passed on only while it has the focus; Orca reads a pane's selection
+// afresh when the focus comes to it.
+bool selection_of_unfocused_pane(QAccessibleEvent* e) {
+    if (e->type() != QAccessible::TextSelectionChanged) return false;
+    auto* o = e->object();
+    auto* pane = qobject_cast<QAbstractScrollArea*>(o);
+    if (!pane || !(qobject_cast<QTextEdit*>(o) || qobject_cast<QPlainTextEdit*>(o))) return false;
+    return !pane->hasFocus();
+}
+
 void update_handler(QAccessibleEvent* e) {
-    if (hide_combo_activation(e) || selection_dropped_on_leaving(e)) return;
+    if (hide_combo_activation(e) || selection_dropped_on_leaving(e) || selection_of_unfocused_pane(e)) return;
+    insertion_in_spin_box_edit(e);
     if (e->type() == QAccessible::ValueChanged)
         // Only a change made in the closed box: one chosen in the open list is
         // heard as the list item, then as the box when the focus returns.

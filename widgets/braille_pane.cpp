@@ -189,6 +189,12 @@ namespace {
 // The braille pane (or a read-only log) for a screen reader: Qt's text interface
 // for a plain text edit, but with the units of text_units.hpp: words that end at
 // blank cells, and a unit that always holds the offset asked about.
+//
+// A blank cell (U+2800) is shown to the screen reader as the space it is.
+// Orca takes the word passed by Ctrl+Right to start after the last space or
+// letter before the caret; a braille cell is neither to it, so the first word
+// move said the blank cell alone instead of the word. Same length, so every
+// offset stays the pane's own.
 class AccessiblePlainText : public QAccessibleWidget, public QAccessibleTextInterface {
 public:
     explicit AccessiblePlainText(QPlainTextEdit* w) : QAccessibleWidget(w, QAccessible::EditableText) {}
@@ -207,7 +213,7 @@ public:
         return s;
     }
     QString text(QAccessible::Text t) const override {
-        if (t == QAccessible::Value) return pane()->toPlainText();
+        if (t == QAccessible::Value) return shown();
         return QAccessibleWidget::text(t);
     }
 
@@ -240,7 +246,7 @@ public:
         c.setPosition(clamped(position));
         pane()->setTextCursor(c);
     }
-    QString text(int start, int end) const override { return pane()->toPlainText().mid(start, end - start); }
+    QString text(int start, int end) const override { return shown().mid(start, end - start); }
     int characterCount() const override { return static_cast<int>(pane()->toPlainText().size()); }
     QRect characterRect(int offset) const override {
         QTextCursor c(pane()->document());
@@ -259,16 +265,17 @@ public:
         return {};
     }
     QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_at_offset(pane()->toPlainText(), offset, b, start, end, lines());
+        return text_at_offset(shown(), offset, b, start, end, lines());
     }
     QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_before_offset(pane()->toPlainText(), offset, b, start, end, lines());
+        return text_before_offset(shown(), offset, b, start, end, lines());
     }
     QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_after_offset(pane()->toPlainText(), offset, b, start, end, lines());
+        return text_after_offset(shown(), offset, b, start, end, lines());
     }
 
 private:
+    QString shown() const { return pane()->toPlainText().replace(QChar(0x2800), QLatin1Char(' ')); }
     int clamped(int offset) const { return std::clamp(offset, 0, characterCount()); }
     // A line is a wrapped line of the pane, as shown.
     LineUnits lines() const {

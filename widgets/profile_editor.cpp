@@ -188,6 +188,7 @@ void ProfileEditor::edited() {
             f.box->setStyleSheet(bad ? QStringLiteral("QDoubleSpinBox { border: 2px solid #c00000; }") : QString());
         }
         const auto text = tr("%1 %2. The plan and preview keep the last valid profile.").arg(label, why);
+        bad_label_ = label;
         // Back on the field later, the screen reader says it is invalid and why.
         for (auto& f : fields_) mark_invalid(f.box, f.name == field ? why : QString());
         status_->setText(text);
@@ -204,7 +205,10 @@ void ProfileEditor::edited() {
     valid_ = candidate;
     status_->setText(tr("Profile is valid."));
     status_->setProperty("error", false);
-    if (was_error) Q_EMIT message(tr("Profile is valid again."), false);  // the fix is heard, as the error was
+    // The fix is heard as the error was, naming the field the error named (the
+    // user may have fixed it from another field, as a wider paper fixes a margin).
+    if (was_error) Q_EMIT message(tr("%1 is valid again.", "a profile field whose error is fixed").arg(bad_label_), false);
+    bad_label_.clear();
     if (changed) Q_EMIT profile_changed(valid_);
 }
 

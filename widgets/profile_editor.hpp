@@ -48,6 +48,7 @@ private:
     std::vector<Field> fields_;
     profile::PrinterProfile valid_;
     QLabel* status_ = nullptr;
+    QString bad_label_;  // the field the standing error names, as the form reads it
     bool loading_ = false;
 };
 

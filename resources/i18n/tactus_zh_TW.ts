@@ -53,7 +53,7 @@
         <translation>無法完成 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/accessibility.cpp" line="44" />
+        <location filename="../../widgets/accessibility.cpp" line="45" />
         <source>Divider between print and braille</source>
         <translation>明眼字與點字的分隔線</translation>
     </message>
@@ -1488,22 +1488,22 @@
 <context>
     <name>tactus::gui::PrintPane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="296" />
+        <location filename="../../widgets/braille_pane.cpp" line="303" />
         <source>Print text</source>
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="316" />
+        <location filename="../../widgets/braille_pane.cpp" line="323" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="317" />
+        <location filename="../../widgets/braille_pane.cpp" line="324" />
         <source>The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them</source>
         <translation>帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="315" />
+        <location filename="../../widgets/braille_pane.cpp" line="322" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>
@@ -2497,32 +2497,33 @@
         <translation>%1 %2。規劃與預覽仍使用上一個有效的設定檔。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="205" />
+        <location filename="../../widgets/profile_editor.cpp" line="206" />
         <source>Profile is valid.</source>
         <translation>設定檔有效。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="207" />
-        <source>Profile is valid again.</source>
-        <translation>設定檔又有效了。</translation>
+        <location filename="../../widgets/profile_editor.cpp" line="210" />
+        <source>%1 is valid again.</source>
+        <comment>a profile field whose error is fixed</comment>
+        <translation>%1 又有效了。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="214" />
+        <location filename="../../widgets/profile_editor.cpp" line="218" />
         <source>Cannot load %1: %2</source>
         <translation>無法載入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="220" />
+        <location filename="../../widgets/profile_editor.cpp" line="224" />
         <source>Loaded profile %1</source>
         <translation>已載入設定檔 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="226" />
+        <location filename="../../widgets/profile_editor.cpp" line="230" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="229" />
+        <location filename="../../widgets/profile_editor.cpp" line="233" />
         <source>Saved profile to %1</source>
         <translation>已將設定檔儲存到 %1</translation>
     </message>

@@ -323,7 +323,7 @@ T = {
     "the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it":
         "文字大多是繁體中文；適合用台灣注音點字（%1）",
     "the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it":
-        "文字大多是簡體中文；適合用中文雙拼點字（%1）", "Profile is valid again.": "設定檔又有效了。",
+        "文字大多是簡體中文；適合用中文雙拼點字（%1）", "%1 is valid again.": "%1 又有效了。",
 }
 
 
