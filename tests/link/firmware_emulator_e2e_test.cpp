@@ -5,7 +5,7 @@
 // it (protocol 3, found from HELLO_REPLY), and the strikes read back from the
 // chip's port pins must be the host's plan, dot for dot. Needs sdcc, s51 and
 // socat (tools/install-deps.sh); ctest label "emulator". One emulator at a
-// time (RUN_SERIAL): s51 takes a whole core.
+// time (RESOURCE_LOCK s51): s51 takes a whole core.
 #include <gtest/gtest.h>
 
 #include <cmath>
