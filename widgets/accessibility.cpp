@@ -20,6 +20,7 @@
 #include "braille_pane.hpp"
 #include "sheet_preview.hpp"
 #include "status_label.hpp"
+#include "accessible_text_pane.hpp"
 #include "text_units.hpp"
 
 namespace tactus::gui {
@@ -214,6 +215,7 @@ QAccessibleInterface* factory(const QString& classname, QObject* object) {
         return make_accessible_sheet_preview(static_cast<SheetPreview*>(w));
     if (classname == QLatin1String("tactus::gui::BraillePane"))
         return make_accessible_plain_text(static_cast<BraillePane*>(w));
+    if (classname == QLatin1String("tactus::gui::PrintPane")) return make_accessible_rich_text(static_cast<PrintPane*>(w));
     // A read-only log: Qt's interface answers a word read at a word's edge with
     // the unit before the offset.
     if (auto* log = qobject_cast<QPlainTextEdit*>(w); log && log->isReadOnly() && classname == QLatin1String("QPlainTextEdit"))

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "braille_pane.hpp"
 
-#include <QAccessibleWidget>
 #include <QDropEvent>
 #include <QInputMethodEvent>
 #include <QKeyEvent>
@@ -11,7 +10,6 @@
 #include <QPainter>
 #include <QScrollBar>
 #include <QTextBlock>
-#include <QTextLayout>
 #include <QUrl>
 #include <algorithm>
 
@@ -184,119 +182,6 @@ void BraillePane::insertFromMimeData(const QMimeData* source) {
     if (!cells.empty()) Q_EMIT cells_typed(cells);
 }
 
-namespace {
-
-// The braille pane (or a read-only log) for a screen reader: Qt's text interface
-// for a plain text edit, but with the units of text_units.hpp: words that end at
-// blank cells, and a unit that always holds the offset asked about.
-//
-// A blank cell (U+2800) is shown to the screen reader as the space it is.
-// Orca takes the word passed by Ctrl+Right to start after the last space or
-// letter before the caret; a braille cell is neither to it, so the first word
-// move said the blank cell alone instead of the word. Same length, so every
-// offset stays the pane's own.
-class AccessiblePlainText : public QAccessibleWidget, public QAccessibleTextInterface {
-public:
-    explicit AccessiblePlainText(QPlainTextEdit* w) : QAccessibleWidget(w, QAccessible::EditableText) {}
-    QPlainTextEdit* pane() const { return static_cast<QPlainTextEdit*>(widget()); }
-
-    void* interface_cast(QAccessible::InterfaceType t) override {
-        if (t == QAccessible::TextInterface) return static_cast<QAccessibleTextInterface*>(this);
-        return QAccessibleWidget::interface_cast(t);
-    }
-    QAccessible::State state() const override {
-        auto s = QAccessibleWidget::state();
-        s.editable = !pane()->isReadOnly();
-        s.readOnly = pane()->isReadOnly();
-        s.multiLine = true;
-        s.selectableText = true;
-        return s;
-    }
-    QString text(QAccessible::Text t) const override {
-        if (t == QAccessible::Value) return shown();
-        return QAccessibleWidget::text(t);
-    }
-
-    // QAccessibleTextInterface
-    void selection(int index, int* start, int* end) const override {
-        const auto c = pane()->textCursor();
-        if (index != 0 || !c.hasSelection()) {
-            *start = *end = 0;
-            return;
-        }
-        *start = c.selectionStart();
-        *end = c.selectionEnd();
-    }
-    int selectionCount() const override { return pane()->textCursor().hasSelection() ? 1 : 0; }
-    void addSelection(int start, int end) override { setSelection(0, start, end); }
-    void removeSelection(int) override {
-        auto c = pane()->textCursor();
-        c.clearSelection();
-        pane()->setTextCursor(c);
-    }
-    void setSelection(int, int start, int end) override {
-        auto c = pane()->textCursor();
-        c.setPosition(clamped(start));
-        c.setPosition(clamped(end), QTextCursor::KeepAnchor);
-        pane()->setTextCursor(c);
-    }
-    int cursorPosition() const override { return pane()->textCursor().position(); }
-    void setCursorPosition(int position) override {
-        auto c = pane()->textCursor();
-        c.setPosition(clamped(position));
-        pane()->setTextCursor(c);
-    }
-    QString text(int start, int end) const override { return shown().mid(start, end - start); }
-    int characterCount() const override { return static_cast<int>(pane()->toPlainText().size()); }
-    QRect characterRect(int offset) const override {
-        QTextCursor c(pane()->document());
-        c.setPosition(clamped(offset));
-        auto r = pane()->cursorRect(c);
-        r.setWidth(std::max(1, pane()->fontMetrics().horizontalAdvance(QChar(0x2800))));
-        return {pane()->viewport()->mapToGlobal(r.topLeft()), r.size()};
-    }
-    int offsetAtPoint(const QPoint& point) const override {
-        return pane()->cursorForPosition(pane()->viewport()->mapFromGlobal(point)).position();
-    }
-    void scrollToSubstring(int, int) override { pane()->ensureCursorVisible(); }
-    QString attributes(int, int* start, int* end) const override {
-        *start = 0;
-        *end = characterCount();
-        return {};
-    }
-    QString textAtOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_at_offset(shown(), offset, b, start, end, lines());
-    }
-    QString textBeforeOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_before_offset(shown(), offset, b, start, end, lines());
-    }
-    QString textAfterOffset(int offset, QAccessible::TextBoundaryType b, int* start, int* end) const override {
-        return text_after_offset(shown(), offset, b, start, end, lines());
-    }
-
-private:
-    QString shown() const { return pane()->toPlainText().replace(QChar(0x2800), QLatin1Char(' ')); }
-    int clamped(int offset) const { return std::clamp(offset, 0, characterCount()); }
-    // A line is a wrapped line of the pane, as shown.
-    LineUnits lines() const {
-        const auto* doc = pane()->document();
-        return [doc](int offset) {
-            const auto block = doc->findBlock(offset);
-            if (!block.isValid()) return TextUnit{offset, offset};
-            const int whole_end = block.position() + block.length();
-            const auto* layout = block.layout();
-            const auto line = layout ? layout->lineForTextPosition(offset - block.position()) : QTextLine();
-            if (!line.isValid()) return TextUnit{block.position(), whole_end};
-            const int start = block.position() + line.textStart();
-            const bool last = line.lineNumber() == layout->lineCount() - 1;
-            return TextUnit{start, last ? whole_end : start + line.textLength()};
-        };
-    }
-};
-
-}  // namespace
-
-QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane) { return new AccessiblePlainText(pane); }
 
 PrintPane::PrintPane(QWidget* parent) : QTextEdit(parent) {
     setObjectName(QStringLiteral("printPane"));

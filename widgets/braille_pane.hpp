@@ -11,7 +11,6 @@
 #include "document/cell.hpp"
 #include "six_key.hpp"
 
-class QAccessibleInterface;
 
 namespace tactus::gui {
 
@@ -41,9 +40,6 @@ private:
     SixKeyChord chord_;
 };
 
-// The accessible interface of the braille pane and of read-only plain texts,
-// for the app's accessibility factory.
-QAccessibleInterface* make_accessible_plain_text(QPlainTextEdit* pane);
 
 // The print side: a rich text edit (the structured view, structured_print.hpp,
 // or the lines as codes); forwards dropped files to the window instead of

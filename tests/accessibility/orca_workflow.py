@@ -28,8 +28,8 @@ works the app by keyboard only, asserting after every key what Orca says:
           once froze the app), word by word in the braille pane, every menu of
           the bar by Right (once the document was read instead).
   corners_zh  the same in the Chinese interface, on the preview's first lines.
-  braille_words  Ctrl+Right and Ctrl+Left in the braille pane, Control held as
-          a user holds it: each move says the braille word passed, the first
+  braille_words  Ctrl+Right and Ctrl+Left in both panes, Control held as
+          a user holds it: each move says the word passed, the first
           one included (once it said the blank cell alone).
   select_typing  Ctrl+A then typing, in the print text and in a profile
           field: no "Text unselected." (the typed text replaced the
@@ -398,32 +398,42 @@ def held_ctrl(s, key):
         subprocess.run(["xdotool", "keyup", "Control_L"], check=True, timeout=20)
 
 
+def walk_words(s, pane, gap):
+    """Three Ctrl+Right and two Ctrl+Left, Control held, in the focused text
+    called `pane`: each move must be heard saying the word it passed."""
+    text = focused_text("tactus", pane)
+    for key in ("Right", "Right", "Right", "Left", "Left"):
+        before = text.caretOffset
+        mark = s.mark()
+        held_ctrl(s, key)
+        s.settle(mark, quiet=0.5)
+        after = text.caretOffset
+        passed = gap.sub("", text.getText(min(before, after), max(before, after)))
+        heard = [p.text for p in s.phrases_since(mark)]
+        print(f"{pane}: Ctrl+{key} {before}->{after}: passed {passed!r}, heard {heard}", flush=True)
+        if not passed:
+            raise StepFailed(f"{pane}: Ctrl+{key} passed no word ({before}->{after})")
+        if not any(gap.sub("", t) == passed for t in heard):
+            raise StepFailed(f"{pane}: Ctrl+{key} passed the word {passed!r} but Orca said {heard}")
+
+
 def scenario_braille_words(tactus, sample, work):
-    """Ctrl+Right and Ctrl+Left in the braille pane: Orca says the braille word
-    passed (the cells between blank cells), from the first move on. It once said
-    the blank cell alone at the first move: Orca takes a word to start after the
-    last space or letter before the caret, and a blank cell was neither."""
+    """Ctrl+Right and Ctrl+Left in both panes: Orca says the word passed, from
+    the first move on; in the braille pane a word is the cells between blank
+    cells. It once said the blank cell alone at the first move: Orca takes a
+    word to start after the last space or letter before the caret, and a blank
+    cell was neither. In the print text the first move was once silent."""
     s = OrcaSession("tactus", work)
     with s:
         s.start()
         s.launch([tactus, "--no-recovery", sample])
         s.step("Ctrl+2 speaks the braille pane", keys=["ctrl+2"], expect=[r"Braille"], quiet=0.8)
         s.step("Ctrl+Home, Down to the first paragraph", keys=["ctrl+Home", "Down"], allow_silent=True, quiet=0.5)
-        text = focused_text("tactus", "Braille")
-        gap = re.compile(r"[\s\u2800]+")
-        for key in ("Right", "Right", "Right", "Left", "Left"):
-            before = text.caretOffset
-            mark = s.mark()
-            held_ctrl(s, key)
-            s.settle(mark, quiet=0.5)
-            after = text.caretOffset
-            passed = gap.sub("", text.getText(min(before, after), max(before, after)))
-            heard = [p.text for p in s.phrases_since(mark)]
-            print(f"Ctrl+{key} {before}->{after}: passed {passed!r}, heard {heard}", flush=True)
-            if not passed:
-                raise StepFailed(f"Ctrl+{key} passed no braille word ({before}->{after})")
-            if not any(gap.sub("", t) == passed for t in heard):
-                raise StepFailed(f"Ctrl+{key} passed the braille word {passed!r} but Orca said {heard}")
+        walk_words(s, "Braille", re.compile(r"[\s\u2800]+"))
+        s.step("Ctrl+1 speaks the print text", keys=["ctrl+1"], expect=[r"Print text"], quiet=0.8)
+        s.step("Ctrl+Home, Down to the first paragraph", keys=["ctrl+Home", "Down", "Down"], allow_silent=True,
+               quiet=0.5)
+        walk_words(s, "Print text", re.compile(r"[\s.,;:!?]+"))
     return 0
 
 
