@@ -31,26 +31,14 @@ protected:
     fs::path dir_;
 };
 
-// A short document (every s51 console line costs milliseconds: one word keeps
-// the run near a minute), embossed through the firmware's parallel port.
-TEST_F(FirmwareOverLpt, TheStrikesReadFromThePinsAreThePlan) {
-    const auto doc = dir_ / "word.md";
-    std::ofstream(doc) << "Tactus\n";
-    const auto log = dir_ / "strikes.jsonl";
-    const std::string device = "lpt:emu?fw=" + std::string(TACTUS_FIRMWARE_IHX) + "&log=" + log.string();
-    const auto r = test::run_captured({TACTUS_CLI, "emboss", doc.string(), "--firmware-tables",
-                                       TACTUS_FIRMWARE_EMU_TABLES, "--device", device});
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    EXPECT_NE(r.out.find("(protocol 3)"), std::string::npos) << r.out;
-    const auto want = controller::planned_strikes(test::plan_with_firmware_tables(doc.string(), TACTUS_FIRMWARE_EMU_TABLES));
-    ASSERT_FALSE(want.empty());
-    EXPECT_EQ(test::read_strike_log(log.string()), want);
-}
-
-// Paper out over the parallel port: the firmware finds no paper at the
-// sheet's start and shows it on PError; the job waits, the operator loads
-// paper half a second (chip time) after PError showed, and the job goes on
-// by itself: every planned strike once, none twice, none missing.
+// A short document embossed through the firmware's parallel port, starting
+// with paper out: the firmware finds no paper at the sheet's start and shows
+// it on PError; the job waits, the operator loads paper half a second (chip
+// time) after PError showed, and the job goes on by itself: every planned
+// strike once, none twice, none missing. One word, because every s51 console
+// line costs milliseconds and the port takes thousands (about 3 minutes); the
+// same job without paper out ran a second one of 2 minutes, which this one
+// holds whole (HELLO, protocol 3, every strike), so it was dropped.
 TEST_F(FirmwareOverLpt, PaperOutOnPErrorWaitsAndTheJobResumesStrikingEachDotOnce) {
     const auto doc = dir_ / "word.md";
     std::ofstream(doc) << "Tactus\n";
@@ -60,6 +48,7 @@ TEST_F(FirmwareOverLpt, PaperOutOnPErrorWaitsAndTheJobResumesStrikingEachDotOnce
     const auto r = test::run_captured({TACTUS_CLI, "emboss", doc.string(), "--firmware-tables",
                                        TACTUS_FIRMWARE_EMU_TABLES, "--device", device});
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("(protocol 3)"), std::string::npos) << r.out;
     EXPECT_NE((r.out + r.err).find("paper out"), std::string::npos) << r.out << r.err;
     const auto want = controller::planned_strikes(test::plan_with_firmware_tables(doc.string(), TACTUS_FIRMWARE_EMU_TABLES));
     ASSERT_FALSE(want.empty());
