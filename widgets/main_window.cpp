@@ -23,7 +23,6 @@
 #include <QPushButton>
 #include <QMimeData>
 #include <QProgressDialog>
-#include <QSaveFile>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
@@ -35,9 +34,12 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <filesystem>
+#include <string_view>
 
 #include "announcer.hpp"
 #include "braille_pane.hpp"
+#include "common/file_io.hpp"
 #include "editor_widget.hpp"
 #include "edit/braille_carrier.hpp"
 #include "edit/editor_lines.hpp"
@@ -72,17 +74,19 @@ QString autosave_dir() {
     return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave");
 }
 
+// Core's atomic write (common/file_io, the rule the CLI follows too), its error
+// in the window's words: the file, then what failed and where when that is
+// not the file itself (the temporary copy beside it).
 bool write_atomically(const QString& path, const QByteArray& bytes, QString* error) {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        *error = QObject::tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), f.errorString());
-        return false;
-    }
-    if (f.write(bytes) != bytes.size() || !f.commit()) {
-        *error = QObject::tr("Saving %1 failed: %2").arg(QDir::toNativeSeparators(path), f.errorString());
-        return false;
-    }
-    return true;
+    const auto written = write_file_atomic(std::filesystem::path(path.toStdU16String()),
+                                           std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    if (written) return true;
+    const auto& e = written.error();
+    const auto why = e.where.empty() || std::filesystem::path(e.where) == std::filesystem::path(path.toStdU16String())
+                         ? e.message
+                         : e.to_string();
+    *error = QObject::tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), QString::fromStdString(why));
+    return false;
 }
 
 bool process_alive(qint64 pid) { return tactus::platform::process_alive(pid); }
