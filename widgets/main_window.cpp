@@ -20,7 +20,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPushButton>
 #include <QMimeData>
 #include <QProgressDialog>
 #include <QComboBox>
@@ -38,6 +37,7 @@
 #include <string_view>
 
 #include "announcer.hpp"
+#include "ask.hpp"
 #include "braille_pane.hpp"
 #include "common/file_io.hpp"
 #include "editor_widget.hpp"
@@ -815,23 +815,15 @@ bool MainWindow::may_reflow_braille() {
         return false;
     }
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("pageTooSmallQuestion"));
-    box.setInformativeText(detail);
-    // The name is what Orca says first ("alert ..."); the question and the
-    // details are the box's labels, which Orca reads next (a description on
-    // the box as well made Orca read all of it twice).
-    box.setAccessibleName(tr("The printer's page is too small"));
-    auto* reflow = box.addButton(tr("&Reflow"), QMessageBox::AcceptRole);
-    auto* stop = box.addButton(tr("&Stop"), QMessageBox::RejectRole);
-    reflow->setObjectName(QStringLiteral("reflowButton"));
-    stop->setObjectName(QStringLiteral("stopButton"));
-    reflow->setAccessibleDescription(tr("Lay the braille out again on the printer's page and go on"));
-    stop->setAccessibleDescription(tr("Emboss or export nothing"));
-    box.setDefaultButton(stop);
-    box.setEscapeButton(stop);
-    box.exec();
-    if (box.clickedButton() == reflow) return true;
+    if (ask(this, {.title = tr("Tactus"),
+                   .text = question,
+                   .detail = detail,
+                   .accessible_name = tr("The printer's page is too small"),
+                   .object_name = QStringLiteral("pageTooSmallQuestion"),
+                   .go = {tr("&Reflow"), QStringLiteral("reflowButton"),
+                          tr("Lay the braille out again on the printer's page and go on")},
+                   .stay = {tr("&Stop"), QStringLiteral("stopButton"), tr("Emboss or export nothing")}}))
+        return true;
     report(tr("Stopped: nothing was embossed or exported (the printer's page is too small for %1)").arg(name));
     return false;
 }
@@ -849,20 +841,15 @@ bool MainWindow::may_save_as_utf8(const QString& path, const Error& why) {
         return false;
     }
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("encodingQuestion"));
-    box.setInformativeText(detail);
-    // As the page-too-small question: the name first, then the box's labels.
-    box.setAccessibleName(tr("A character does not fit the file's encoding"));
-    auto* utf8 = box.addButton(tr("Save as &UTF-8"), QMessageBox::AcceptRole);
-    auto* cancel = box.addButton(QMessageBox::Cancel);
-    utf8->setObjectName(QStringLiteral("saveUtf8Button"));
-    utf8->setAccessibleDescription(tr("Save the whole file as UTF-8 from now on"));
-    cancel->setAccessibleDescription(tr("Save nothing"));
-    box.setDefaultButton(cancel);
-    box.setEscapeButton(cancel);
-    box.exec();
-    if (box.clickedButton() == utf8) return true;
+    if (ask(this, {.title = tr("Tactus"),
+                   .text = question,
+                   .detail = detail,
+                   .accessible_name = tr("A character does not fit the file's encoding"),
+                   .object_name = QStringLiteral("encodingQuestion"),
+                   .go = {tr("Save as &UTF-8"), QStringLiteral("saveUtf8Button"),
+                          tr("Save the whole file as UTF-8 from now on")},
+                   .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
+        return true;
     report(tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
     return false;
 }
@@ -871,18 +858,15 @@ bool MainWindow::may_stop_embossing() {
     const auto job = printer_->embossing();
     if (!job || !interactive_) return true;
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"),
-                    tr("%1 is being embossed. Quit anyway?").arg(QString::fromStdString(job->title)),
-                    QMessageBox::NoButton, this);
-    box.setInformativeText(tr("The job stays in the print queue. The sheet in the embosser now is discarded; the "
-                              "rest is embossed when Tactus or tactus-cli serve runs printer %1 again.")
-                               .arg(QString::fromStdString(job->printer)));
-    auto* quit = box.addButton(tr("&Quit"), QMessageBox::AcceptRole);
-    auto* stay = box.addButton(tr("&Keep embossing"), QMessageBox::RejectRole);
-    box.setDefaultButton(stay);
-    box.setEscapeButton(stay);
-    box.exec();
-    return box.clickedButton() == quit;
+    return ask(this, {.title = tr("Tactus"),
+                      .text = tr("%1 is being embossed. Quit anyway?").arg(QString::fromStdString(job->title)),
+                      .detail = tr("The job stays in the print queue. The sheet in the embosser now is discarded; "
+                                   "the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.")
+                                    .arg(QString::fromStdString(job->printer)),
+                      .accessible_name = {},
+                      .object_name = {},
+                      .go = {tr("&Quit"), {}, {}},
+                      .stay = {tr("&Keep embossing"), {}, {}}});
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
