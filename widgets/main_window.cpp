@@ -6,7 +6,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDateTime>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -15,20 +14,15 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPushButton>
 #include <QMimeData>
 #include <QProgressDialog>
-#include <QSaveFile>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QToolBar>
@@ -37,6 +31,8 @@
 #include <algorithm>
 
 #include "announcer.hpp"
+#include "ask.hpp"
+#include "atomic_write.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
 #include "edit/braille_carrier.hpp"
@@ -45,7 +41,6 @@
 #include "export/export.hpp"
 #include "export/text_export.hpp"
 #include "layout/braille_pages.hpp"
-#include "platform/process_info.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
@@ -67,25 +62,6 @@ namespace {
 
 constexpr int kMaxRecent = 8;
 constexpr std::size_t kSynchronousRelayoutLines = 3000;  // above: new tables re-lay off-thread
-
-QString autosave_dir() {
-    return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave");
-}
-
-bool write_atomically(const QString& path, const QByteArray& bytes, QString* error) {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        *error = QObject::tr("Cannot write %1: %2").arg(QDir::toNativeSeparators(path), f.errorString());
-        return false;
-    }
-    if (f.write(bytes) != bytes.size() || !f.commit()) {
-        *error = QObject::tr("Saving %1 failed: %2").arg(QDir::toNativeSeparators(path), f.errorString());
-        return false;
-    }
-    return true;
-}
-
-bool process_alive(qint64 pid) { return tactus::platform::process_alive(pid); }
 
 }  // namespace
 
@@ -208,11 +184,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     apply_system_look(*preview_);
     sp->set_document(&editor_->layout().paged());
 
-    autosave_timer_.setInterval(QSettings().value(QStringLiteral("autosave/seconds"), 30).toInt() * 1000);
-    connect(&autosave_timer_, &QTimer::timeout, this, [this] {
+    connect(&autosave_, &Autosave::due, this, [this] {
         if (!editor_->undo_stack()->isClean()) autosave_now();
     });
-    autosave_timer_.start();
+    autosave_.start();
     update_title();
     update_status();
 }
@@ -446,7 +421,7 @@ QString MainWindow::table_warning(const QString& detail) const {
 void MainWindow::new_document() {
     auto layout = edit::LiveLayout::create(editor_->layout().tables(), editor_->layout().options());
     if (!layout) return;
-    remove_autosave();
+    autosave_.remove();
     editor_->adopt(std::move(*layout));
     path_.clear();
     update_title();
@@ -526,7 +501,7 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         return;
     }
     if (replace_text) {
-        remove_autosave();
+        autosave_.remove();
         editor_->adopt(std::move(*r->layout));
         pages_kept_ = editor_->layout().pages_kept();
         const QFileInfo info(r->path);
@@ -661,7 +636,7 @@ bool MainWindow::save_to(const QString& path) {
     path_ = QFileInfo(path).absoluteFilePath();
     source_name_ = QFileInfo(path).fileName();
     editor_->undo_stack()->setClean();
-    remove_autosave();
+    autosave_.remove();
     add_recent(path_);
     update_title();
     report(tr("Saved %1").arg(QFileInfo(path).fileName()));
@@ -811,23 +786,15 @@ bool MainWindow::may_reflow_braille() {
         return false;
     }
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("pageTooSmallQuestion"));
-    box.setInformativeText(detail);
-    // The name is what Orca says first ("alert ..."); the question and the
-    // details are the box's labels, which Orca reads next (a description on
-    // the box as well made Orca read all of it twice).
-    box.setAccessibleName(tr("The printer's page is too small"));
-    auto* reflow = box.addButton(tr("&Reflow"), QMessageBox::AcceptRole);
-    auto* stop = box.addButton(tr("&Stop"), QMessageBox::RejectRole);
-    reflow->setObjectName(QStringLiteral("reflowButton"));
-    stop->setObjectName(QStringLiteral("stopButton"));
-    reflow->setAccessibleDescription(tr("Lay the braille out again on the printer's page and go on"));
-    stop->setAccessibleDescription(tr("Emboss or export nothing"));
-    box.setDefaultButton(stop);
-    box.setEscapeButton(stop);
-    box.exec();
-    if (box.clickedButton() == reflow) return true;
+    if (ask(this, {.title = tr("Tactus"),
+                   .text = question,
+                   .detail = detail,
+                   .accessible_name = tr("The printer's page is too small"),
+                   .object_name = QStringLiteral("pageTooSmallQuestion"),
+                   .go = {tr("&Reflow"), QStringLiteral("reflowButton"),
+                          tr("Lay the braille out again on the printer's page and go on")},
+                   .stay = {tr("&Stop"), QStringLiteral("stopButton"), tr("Emboss or export nothing")}}))
+        return true;
     report(tr("Stopped: nothing was embossed or exported (the printer's page is too small for %1)").arg(name));
     return false;
 }
@@ -845,20 +812,15 @@ bool MainWindow::may_save_as_utf8(const QString& path, const Error& why) {
         return false;
     }
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"), question, QMessageBox::NoButton, this);
-    box.setObjectName(QStringLiteral("encodingQuestion"));
-    box.setInformativeText(detail);
-    // As the page-too-small question: the name first, then the box's labels.
-    box.setAccessibleName(tr("A character does not fit the file's encoding"));
-    auto* utf8 = box.addButton(tr("Save as &UTF-8"), QMessageBox::AcceptRole);
-    auto* cancel = box.addButton(QMessageBox::Cancel);
-    utf8->setObjectName(QStringLiteral("saveUtf8Button"));
-    utf8->setAccessibleDescription(tr("Save the whole file as UTF-8 from now on"));
-    cancel->setAccessibleDescription(tr("Save nothing"));
-    box.setDefaultButton(cancel);
-    box.setEscapeButton(cancel);
-    box.exec();
-    if (box.clickedButton() == utf8) return true;
+    if (ask(this, {.title = tr("Tactus"),
+                   .text = question,
+                   .detail = detail,
+                   .accessible_name = tr("A character does not fit the file's encoding"),
+                   .object_name = QStringLiteral("encodingQuestion"),
+                   .go = {tr("Save as &UTF-8"), QStringLiteral("saveUtf8Button"),
+                          tr("Save the whole file as UTF-8 from now on")},
+                   .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
+        return true;
     report(tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
     return false;
 }
@@ -867,18 +829,15 @@ bool MainWindow::may_stop_embossing() {
     const auto job = printer_->embossing();
     if (!job || !interactive_) return true;
     FocusReturn back(this, editor_->print_pane());
-    QMessageBox box(QMessageBox::Question, tr("Tactus"),
-                    tr("%1 is being embossed. Quit anyway?").arg(QString::fromStdString(job->title)),
-                    QMessageBox::NoButton, this);
-    box.setInformativeText(tr("The job stays in the print queue. The sheet in the embosser now is discarded; the "
-                              "rest is embossed when Tactus or tactus-cli serve runs printer %1 again.")
-                               .arg(QString::fromStdString(job->printer)));
-    auto* quit = box.addButton(tr("&Quit"), QMessageBox::AcceptRole);
-    auto* stay = box.addButton(tr("&Keep embossing"), QMessageBox::RejectRole);
-    box.setDefaultButton(stay);
-    box.setEscapeButton(stay);
-    box.exec();
-    return box.clickedButton() == quit;
+    return ask(this, {.title = tr("Tactus"),
+                      .text = tr("%1 is being embossed. Quit anyway?").arg(QString::fromStdString(job->title)),
+                      .detail = tr("The job stays in the print queue. The sheet in the embosser now is discarded; "
+                                   "the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.")
+                                    .arg(QString::fromStdString(job->printer)),
+                      .accessible_name = {},
+                      .object_name = {},
+                      .go = {tr("&Quit"), {}, {}},
+                      .stay = {tr("&Keep embossing"), {}, {}}});
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
@@ -893,7 +852,7 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     QSettings s;
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
     s.setValue(QStringLiteral("window/state"), saveState());
-    remove_autosave();
+    autosave_.remove();
     e->accept();
 }
 
@@ -1017,68 +976,28 @@ void MainWindow::show_plan(const DocumentPlanPtr& plan) {
 // ---- autosave and recovery ----
 
 bool MainWindow::autosave_now() {
-    QDir().mkpath(autosave_dir());
-    if (autosave_path_.isEmpty())
-        autosave_path_ = autosave_dir() + QStringLiteral("/%1-%2.md").arg(static_cast<qint64>(tactus::platform::current_process_id())).arg(QDateTime::currentMSecsSinceEpoch());
     // Ready-made braille with a PEF's structure is kept as PEF, so a recovery
     // has its sections, volumes, grids and metadata (edit::structured_braille_pef,
     // the rule a CUPS job follows too); anything else as the editor's lines.
     const auto base = document_base_name();
     const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
     const bool as_pef = pef && pef->has_value();
-    const auto info = QFileInfo(autosave_path_);
-    const auto path = info.path() + QLatin1Char('/') + info.completeBaseName() +
-                      (as_pef ? QStringLiteral(".pef") : QStringLiteral(".md"));
-    if (path != autosave_path_) {
-        remove_autosave();  // the copy in the other format
-        autosave_path_ = path;
-    }
+    const auto& layout = editor_->layout();
+    const AutosaveMeta meta{.document_path = path_,
+                            .name = source_name_,
+                            .table = QString::fromStdString(layout.tables()),
+                            .line_ending = QString::fromStdString(layout.line_ending()),
+                            .encoding = QString::fromStdString(layout.encoding()),
+                            .byte_order_mark = layout.byte_order_mark()};
     QString error;
-    if (!write_atomically(autosave_path_, as_pef ? QByteArray::fromStdString(**pef) : editor_->text().toUtf8(), &error)) {
-        message_->show_message(error, 10000);
+    if (!autosave_.write(as_pef ? QByteArray::fromStdString(**pef) : editor_->text().toUtf8(), as_pef, meta, &error)) {
+        if (!error.isEmpty()) message_->show_message(error, 10000);
         return false;
     }
-    QJsonObject meta{{QStringLiteral("pid"), static_cast<qint64>(tactus::platform::current_process_id())},
-                     {QStringLiteral("path"), path_},
-                     {QStringLiteral("name"), source_name_},
-                     {QStringLiteral("table"), QString::fromStdString(editor_->layout().tables())},
-                     {QStringLiteral("line_ending"), QString::fromStdString(editor_->layout().line_ending())},
-                     {QStringLiteral("encoding"), QString::fromStdString(editor_->layout().encoding())},
-                     {QStringLiteral("byte_order_mark"), editor_->layout().byte_order_mark()},
-                     {QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
-    return write_atomically(autosave_path_ + QStringLiteral(".json"), QJsonDocument(meta).toJson(), &error);
+    return true;
 }
 
-void MainWindow::remove_autosave() {
-    if (autosave_path_.isEmpty()) return;
-    QFile::remove(autosave_path_);
-    QFile::remove(autosave_path_ + QStringLiteral(".json"));
-    autosave_path_.clear();
-}
-
-QList<Recovery> MainWindow::pending_recoveries() {
-    QList<Recovery> out;
-    const QDir dir(autosave_dir());
-    for (const auto& info :
-         dir.entryInfoList({QStringLiteral("*.md.json"), QStringLiteral("*.pef.json")}, QDir::Files, QDir::Time)) {
-        QFile f(info.absoluteFilePath());
-        if (!f.open(QIODevice::ReadOnly)) continue;
-        const auto meta = QJsonDocument::fromJson(f.readAll()).object();
-        const auto pid = meta.value(QStringLiteral("pid")).toInteger();
-        if (pid == tactus::platform::current_process_id() || process_alive(pid)) continue;  // that Tactus is still running
-        Recovery r;
-        r.autosave_path = info.absoluteFilePath().chopped(5);
-        if (!QFileInfo::exists(r.autosave_path)) continue;
-        r.document_path = meta.value(QStringLiteral("path")).toString();
-        r.table = meta.value(QStringLiteral("table")).toString();
-        r.line_ending = meta.value(QStringLiteral("line_ending")).toString();
-        r.encoding = meta.value(QStringLiteral("encoding")).toString();
-        r.byte_order_mark = meta.value(QStringLiteral("byte_order_mark")).toBool();
-        r.saved_at = QDateTime::fromString(meta.value(QStringLiteral("time")).toString(), Qt::ISODate);
-        out << r;
-    }
-    return out;
-}
+QList<Recovery> MainWindow::pending_recoveries() { return Autosave::pending(); }
 
 bool MainWindow::recover(const Recovery& r) {
     QFile f(r.autosave_path);
@@ -1116,8 +1035,7 @@ bool MainWindow::recover(const Recovery& r) {
     path_ = r.document_path;
     source_name_ = r.document_path.isEmpty() ? tr("Recovered") : QFileInfo(r.document_path).fileName();
     editor_->undo_stack()->resetClean();  // recovered text is unsaved work
-    QFile::remove(r.autosave_path);
-    QFile::remove(r.autosave_path + QStringLiteral(".json"));
+    Autosave::discard(r);
     autosave_now();
     update_title();
     report(tr("Recovered unsaved changes to %1").arg(source_name_));
@@ -1125,22 +1043,7 @@ bool MainWindow::recover(const Recovery& r) {
 }
 
 void MainWindow::offer_recovery() {
-    for (const auto& r : pending_recoveries()) {
-        const auto name = r.document_path.isEmpty() ? tr("an untitled document") : QFileInfo(r.document_path).fileName();
-        const auto answer = QMessageBox::question(
-            this, tr("Recover unsaved work"),
-            tr("Tactus closed without saving %1 (autosaved %2). Recover it?")
-                .arg(name, QLocale().toString(r.saved_at.toLocalTime(), QLocale::ShortFormat)),
-            QMessageBox::Yes | QMessageBox::No | QMessageBox::Discard);
-        if (answer == QMessageBox::Yes) {
-            recover(r);
-            return;
-        }
-        if (answer == QMessageBox::Discard) {
-            QFile::remove(r.autosave_path);
-            QFile::remove(r.autosave_path + QStringLiteral(".json"));
-        }
-    }
+    if (const auto r = Autosave::ask(this)) recover(*r);
 }
 
 // ---- help ----

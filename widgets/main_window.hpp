@@ -6,10 +6,10 @@
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QPointer>
-#include <QDateTime>
 #include <QTimer>
 #include <memory>
 
+#include "autosave.hpp"
 #include "document_loader.hpp"
 #include "motion_model.hpp"
 
@@ -31,16 +31,6 @@ class VibrationView;
 class FindReplaceDialog;
 class PreviewPanel;
 class TablePicker;
-
-struct Recovery {
-    QString autosave_path;  // the autosaved copy: the editor's lines (.md), or PEF for structured braille (.pef)
-    QString document_path;  // what it was a copy of ("" when untitled)
-    QString table;
-    QDateTime saved_at;
-    QString line_ending;  // a text file's ("\r\n", ...): it is saved with it again
-    QString encoding;     // a text file's ("BIG5", ...): it is saved in it again
-    bool byte_order_mark = false;
-};
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -91,7 +81,7 @@ public:
     bool recover(const Recovery& r);
     void offer_recovery();  // asks the user (interactive start only)
     bool autosave_now();
-    [[nodiscard]] QString autosave_path() const { return autosave_path_; }
+    [[nodiscard]] QString autosave_path() const { return autosave_.path(); }
 
 Q_SIGNALS:
     void planned(const tactus::gui::DocumentPlanPtr& plan);
@@ -138,7 +128,6 @@ private:
     bool may_save_as_utf8(const QString& path, const Error& why);
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
-    void remove_autosave();
     QDockWidget* add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
     void schedule_plan();
     void start_plan();
@@ -159,8 +148,7 @@ private:
     // Says so when an edit makes ready-made braille be laid out again (its own
     // pages, sections and volumes no longer kept), and when they are kept again.
     void tell_pages_kept();
-    QString autosave_path_;
-    QTimer autosave_timer_;
+    Autosave autosave_;
     QPointer<QFutureWatcher<LoadResultPtr>> busy_;
     QProgressDialog* progress_ = nullptr;
     std::shared_ptr<FocusReturn> busy_return_;  // where the focus goes when the background work ends

@@ -22,6 +22,23 @@ std::string not_regular(platform::FileType type) {
     }
 }
 
+// The file a write replaces: a symbolic link's final target, else the path.
+// A dangling link is replaced by the file, as there is no target to keep.
+std::filesystem::path write_target(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_symlink(path, ec)) return path;
+    auto target = std::filesystem::canonical(path, ec);
+    return ec ? path : target;
+}
+
+// The replaced file's permissions on its replacement (nothing to keep for a new file).
+void keep_permissions(const std::filesystem::path& replaced, const std::filesystem::path& replacement) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(replaced, ec);
+    if (ec || !std::filesystem::exists(st)) return;
+    std::filesystem::permissions(replacement, st.permissions(), std::filesystem::perm_options::replace, ec);
+}
+
 }  // namespace
 
 Result<std::string> read_file(const std::filesystem::path& path, std::size_t max_bytes) {
@@ -49,7 +66,8 @@ Result<std::string> read_file(const std::filesystem::path& path, std::size_t max
     return bytes;
 }
 
-Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
+Result<void> write_file_atomic(const std::filesystem::path& asked, std::string_view bytes) {
+    const auto path = write_target(asked);
     const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     std::random_device rd;
     const auto tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
@@ -64,6 +82,7 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::string_vi
         platform::remove_file(tmp);
         return fail(ErrorKind::io, "cannot flush to disk: " + s.error().what, path.string());
     }
+    keep_permissions(path, tmp);
     if (auto r = platform::replace_file(tmp, path); !r) {
         platform::remove_file(tmp);
         return fail(ErrorKind::io, "cannot replace file: " + r.error().what, path.string());
@@ -71,8 +90,9 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::string_vi
     return {};
 }
 
-Result<void> write_file_atomic(const std::filesystem::path& path,
+Result<void> write_file_atomic(const std::filesystem::path& asked,
                                const std::function<Result<void>(std::ostream&)>& produce) {
+    const auto path = write_target(asked);
     const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     std::random_device rd;
     const auto tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
@@ -91,6 +111,7 @@ Result<void> write_file_atomic(const std::filesystem::path& path,
     // Make the data durable before the rename makes it visible.
     if (auto s = platform::sync_file(tmp); !s)
         return discard(Error{"cannot flush to disk: " + s.error().what, path.string(), ErrorKind::io});
+    keep_permissions(path, tmp);
     if (auto r = platform::replace_file(tmp, path); !r)
         return discard(Error{"cannot replace file: " + r.error().what, path.string(), ErrorKind::io});
     return {};

@@ -18,6 +18,9 @@ Result<std::string> read_file(const std::filesystem::path& path,
 
 // Writes atomically: a temporary file in the same directory, fsync, rename.
 // A crash leaves either the old file or the new one, never half of either.
+// A path that is a symbolic link writes its target, the link kept (a teacher's
+// file linked from a shared folder stays linked), and the file replaced keeps
+// its permissions (one made private stays private).
 Result<void> write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 // The same for output too big to hold in memory: `produce` writes into a stream

@@ -197,6 +197,24 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::Autosave</name>
+    <message>
+        <location filename="../../widgets/autosave.cpp" line="98" />
+        <source>an untitled document</source>
+        <translation>未命名文件</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/autosave.cpp" line="100" />
+        <source>Recover unsaved work</source>
+        <translation>復原未儲存的內容</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/autosave.cpp" line="101" />
+        <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
+        <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::BraillePane</name>
     <message>
         <location filename="../../widgets/braille_pane.cpp" line="52" />
@@ -1083,21 +1101,6 @@
         <location filename="../../widgets/main_window.cpp" line="1123" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1129" />
-        <source>an untitled document</source>
-        <translation>未命名文件</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1131" />
-        <source>Recover unsaved work</source>
-        <translation>復原未儲存的內容</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1132" />
-        <source>Tactus closed without saving %1 (autosaved %2). Recover it?</source>
-        <translation>Tactus 關閉時 %1 尚未儲存（自動儲存於 %2）。要復原嗎？</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="1151" />

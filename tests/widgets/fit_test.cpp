@@ -4,6 +4,7 @@
 // button, tab and header is checked against the room it was given, and a
 // screenshot of each view is saved for CI's artefacts
 // (TACTUS_SCREENSHOT_DIR, default: screenshots/ in the working directory).
+// The question asked at start, before any window, is in zh_TW too.
 #include <QAbstractAxis>
 #include <QAbstractButton>
 #include <QChart>
@@ -14,7 +15,10 @@
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QHeaderView>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
+#include <QMessageBox>
 #include <QTabBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -22,6 +26,7 @@
 #include <QtTest>
 
 #include "announcer.hpp"
+#include "autosave.hpp"
 #include "gui_test_support.hpp"
 #include "main_window.hpp"
 
@@ -182,6 +187,46 @@ private Q_SLOTS:
         }
         problems.removeDuplicates();
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
+    // The offer to recover work a crashed Tactus left is asked by the
+    // autosave, not the window: its words are translated in its own context.
+    void the_recovery_question_is_in_zh_TW() {
+        QTranslator translator;
+        QVERIFY2(translator.load(QStringLiteral("tactus_zh_TW"), QStringLiteral(TACTUS_QM_DIR)),
+                 "the app's .qm file is not built");
+        QCoreApplication::installTranslator(&translator);
+        const auto restore = qScopeGuard([&] { QCoreApplication::removeTranslator(&translator); });
+        QDir dir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + QStringLiteral("/autosave"));
+        QVERIFY(dir.removeRecursively() && dir.mkpath(QStringLiteral(".")));
+        const auto copy = dir.filePath(QStringLiteral("1-1.md"));
+        const auto write = [](const QString& path, const QByteArray& bytes) {
+            QFile f(path);
+            return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+        };
+        QVERIFY(write(copy, "Unsaved words."));
+        // Owned by a process that does not exist: a Tactus that crashed.
+        const QJsonObject meta{{QStringLiteral("pid"), 999999999},
+                               {QStringLiteral("path"), QString()},
+                               {QStringLiteral("time"), QDateTime::currentDateTimeUtc().toString(Qt::ISODate)}};
+        QVERIFY(write(copy + QStringLiteral(".json"), QJsonDocument(meta).toJson()));
+        QString title, text;
+        QTimer answer;
+        connect(&answer, &QTimer::timeout, this, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box) return;
+            answer.stop();
+            title = box->windowTitle();
+            text = box->text();
+            box->button(QMessageBox::Discard)->click();
+        });
+        answer.start(10);
+        QVERIFY(!Autosave::ask(nullptr));
+        QCOMPARE(title, QStringLiteral("復原未儲存的內容"));
+        QVERIFY2(text.startsWith(QStringLiteral("Tactus 關閉時 未命名文件 尚未儲存")), qPrintable(text));
+        QVERIFY2(text.endsWith(QStringLiteral("要復原嗎？")), qPrintable(text));
+        QVERIFY(!QFile::exists(copy));  // declined for good
+        QVERIFY(Autosave::pending().isEmpty());
     }
 };
 

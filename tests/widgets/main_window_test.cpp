@@ -565,6 +565,22 @@ private Q_SLOTS:
         QVERIFY(again.editor()->print_pane()->accessibleDescription().startsWith(QStringLiteral("The print text with its styles")));
     }
 
+    // A save that cannot be written says which file and why (core's atomic
+    // write: the temporary copy beside the file could not be made), keeps the
+    // document unsaved, and leaves nothing behind.
+    void a_save_that_cannot_be_written_says_where_and_why() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QTest::keyClicks(w.editor()->print_pane(), "x");
+        const auto path = dir.filePath(QStringLiteral("no such folder/saved.md"));
+        QVERIFY(!w.save_to(path));
+        const auto said = w.announcer()->message();
+        QVERIFY2(said.startsWith(QStringLiteral("Cannot write %1: ").arg(QDir::toNativeSeparators(path))), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("cannot create")), qPrintable(said));
+        QVERIFY(w.isWindowModified());
+        QVERIFY(!QFileInfo::exists(QFileInfo(path).path()));
+    }
+
     // A text file is its text in the editor (no Markdown
     // escapes), is saved in place as text, and comes back unchanged.
     void a_text_file_is_shown_and_saved_as_it_is() {
