@@ -28,7 +28,7 @@ protected:
     fs::path dir_;
 };
 
-std::string slurp(const fs::path& p) {
+std::string contents_of(const fs::path& p) {
     auto r = read_file(p);
     return r ? *r : "<unreadable: " + r.error().message + ">";
 }
@@ -40,8 +40,8 @@ TEST_F(AtomicWrite, AWriteThroughASymbolicLinkKeepsTheLinkAndWritesItsTarget) {
     fs::create_symlink(target, link);
     ASSERT_TRUE(write_file_atomic(link, "new"));
     EXPECT_TRUE(fs::is_symlink(link));
-    EXPECT_EQ(slurp(target), "new");
-    EXPECT_EQ(slurp(link), "new");
+    EXPECT_EQ(contents_of(target), "new");
+    EXPECT_EQ(contents_of(link), "new");
     // The streamed form as well, through a link to a link.
     const auto link2 = dir_ / "again.md";
     fs::create_symlink(link, link2);
@@ -51,7 +51,7 @@ TEST_F(AtomicWrite, AWriteThroughASymbolicLinkKeepsTheLinkAndWritesItsTarget) {
     }));
     EXPECT_TRUE(fs::is_symlink(link2));
     EXPECT_TRUE(fs::is_symlink(link));
-    EXPECT_EQ(slurp(target), "streamed");
+    EXPECT_EQ(contents_of(target), "streamed");
     // Nothing left beside either: no temporary file in the link's folder or the target's.
     std::size_t entries = 0;
     for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_ / "shared")) ++entries;
@@ -63,7 +63,7 @@ TEST_F(AtomicWrite, ADanglingLinkIsReplacedByTheFile) {
     fs::create_symlink(dir_ / "nowhere" / "gone.md", link);
     ASSERT_TRUE(write_file_atomic(link, "here"));
     EXPECT_FALSE(fs::is_symlink(link));
-    EXPECT_EQ(slurp(link), "here");
+    EXPECT_EQ(contents_of(link), "here");
 }
 
 TEST_F(AtomicWrite, TheReplacedFileKeepsItsPermissions) {
@@ -78,7 +78,7 @@ TEST_F(AtomicWrite, TheReplacedFileKeepsItsPermissions) {
         return {};
     }));
     EXPECT_EQ(fs::status(file).permissions() & fs::perms::all, fs::perms::owner_all | fs::perms::group_read);
-    EXPECT_EQ(slurp(file), "streamed");
+    EXPECT_EQ(contents_of(file), "streamed");
 }
 
 }  // namespace
