@@ -76,8 +76,8 @@ public:
         QTextCursor c(pane()->document());
         c.setPosition(clamped(offset));
         auto r = pane()->cursorRect(c);
-        const auto all = pane()->toPlainText();
-        const QChar ch = offset >= 0 && offset < all.size() ? all[offset] : QChar(u' ');
+        // The width of the one character there, read from the document.
+        const QChar ch = offset >= 0 && offset < characterCount() ? pane()->document()->characterAt(offset) : QChar(u' ');
         r.setWidth(std::max(1, pane()->fontMetrics().horizontalAdvance(ch)));
         return {pane()->viewport()->mapToGlobal(r.topLeft()), r.size()};
     }
