@@ -26,8 +26,8 @@ struct ServeArgs {
     int write_retry_ms = 10000;
 };
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_serve_signal(int) { g_stop.store(true); }
+std::atomic<bool> g_serve_stop{false};
+extern "C" void on_serve_signal(int) { g_serve_stop.store(true); }
 
 void run_serve(const ServeArgs& a) {
     spool::Spool s = open_spool(a.db, false);
@@ -63,9 +63,9 @@ void run_serve(const ServeArgs& a) {
     std::vector<std::optional<Error>> errors(runners.size());
     for (std::size_t i = 0; i < runners.size(); ++i)
         threads.emplace_back([&, i] {
-            if (auto r = runners[i]->run(g_stop); !r) {
+            if (auto r = runners[i]->run(g_serve_stop); !r) {
                 errors[i] = r.error();
-                g_stop = true;  // the spool is unusable: stop every printer
+                g_serve_stop = true;  // the spool is unusable: stop every printer
             }
         });
     for (auto& t : threads) t.join();

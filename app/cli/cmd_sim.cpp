@@ -19,8 +19,8 @@
 namespace tactus::cli {
 namespace {
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int) { g_stop.store(true); }
+std::atomic<bool> g_sim_stop{false};
+extern "C" void on_signal(int) { g_sim_stop.store(true); }
 
 // What the options default to, to tell which were given.
 struct PtyServerOptionsDefaults : controller::PtyServerOptions {};
@@ -81,7 +81,7 @@ void run_firmware_sim(const SimArgs& a) {
     auto log = open_log(a.strike_log);
     platform::on_termination(on_signal);
     platform::ignore_broken_pipe();
-    run_firmware_emulator(o, g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); });
+    run_firmware_emulator(o, g_sim_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); });
 }
 
 // With --mute-after-pass: one line when the controller goes quiet, one when it
@@ -137,7 +137,7 @@ void run_sim(const SimArgs& a) {
     platform::on_termination(on_signal);
     platform::ignore_broken_pipe();
     std::cout << server->path() << std::endl;
-    auto r = server->serve(g_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); },
+    auto r = server->serve(g_sim_stop, [&](const controller::LoggedStrike& s) { log_strike(log, s); },
                            [&](const controller::SimController& c) {
         if (a.mute_after_pass > 0) watch(c);
     });

@@ -12,8 +12,8 @@
 namespace tactus::cli {
 namespace {
 
-std::atomic<bool> g_cancel{false};
-extern "C" void on_interrupt_remote(int) { g_cancel.store(true); }
+std::atomic<bool> g_remote_cancel{false};
+extern "C" void on_interrupt_remote(int) { g_remote_cancel.store(true); }
 
 bool given(const CLI::App& cmd, const char* name) { return cmd.count(name) > 0; }
 
@@ -68,7 +68,7 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
     request.options = queue_options(layout, cmd);
     // Ctrl-C cancels the job on the server (as it stops a local job), and the
     // command still waits to see it end. One line per status worth telling.
-    g_cancel.store(false);
+    g_remote_cancel.store(false);
     int id = 0;
     const auto end = ipp::send_and_follow(
         queue, request,
@@ -77,7 +77,7 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
             std::cout << "sent " << layout.file << " to " << uri << " as job " << id << std::endl;
             platform::on_termination(on_interrupt_remote);
         },
-        [](const ipp::RemoteJobStatus& s) { std::cout << describe(s) << std::endl; }, g_cancel);
+        [](const ipp::RemoteJobStatus& s) { std::cout << describe(s) << std::endl; }, g_remote_cancel);
     platform::default_termination();
     const auto last = require(end);
     switch (last.state) {

@@ -1,28 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "encode/messages.hpp"
 #include "common/try.hpp"
+#include "encode/big_endian.hpp"
 
 #include <algorithm>
 #include <string>
 
 namespace tactus::encode {
 namespace {
-// Multi-byte fields are big-endian: the byte order 8051 C compilers use in RAM,
-// so the firmware copies them without swapping.
-void put16(std::vector<std::uint8_t>& o, std::uint16_t v) {
-    o.push_back(static_cast<std::uint8_t>(v >> 8));
-    o.push_back(static_cast<std::uint8_t>(v & 0xFF));
-}
-void put32(std::vector<std::uint8_t>& o, std::uint32_t v) {
-    put16(o, static_cast<std::uint16_t>(v >> 16));
-    put16(o, static_cast<std::uint16_t>(v & 0xFFFF));
-}
-std::uint16_t get16(std::span<const std::uint8_t> p, std::size_t at) {
-    return static_cast<std::uint16_t>((p[at] << 8) | p[at + 1]);
-}
-std::uint32_t get32(std::span<const std::uint8_t> p, std::size_t at) {
-    return (static_cast<std::uint32_t>(get16(p, at)) << 16) | get16(p, at + 2);
-}
 
 Result<void> need(std::span<const std::uint8_t> p, std::size_t n, const char* what) {
     if (p.size() != n)

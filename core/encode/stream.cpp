@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "encode/big_endian.hpp"
 #include "encode/frame.hpp"
 #include "encode/varint.hpp"
 #include "motion/steps.hpp"
@@ -40,11 +41,6 @@ void put_segment(std::vector<std::uint8_t>& out, const motion::StepSegment& s, c
     put_uvar(out, (static_cast<std::uint32_t>(s.count) << 4) | shift);
     put_svar(out, static_cast<std::int32_t>((s.interval_q16 >> shift) - (ref >> shift)));
     put_svar(out, s.add_q16 >> shift);
-}
-
-void put16(std::vector<std::uint8_t>& o, std::uint16_t v) {
-    o.push_back(static_cast<std::uint8_t>(v >> 8));
-    o.push_back(static_cast<std::uint8_t>(v & 0xFF));
 }
 
 std::string at_byte(std::size_t pos) { return "op byte " + std::to_string(pos); }

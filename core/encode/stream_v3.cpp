@@ -6,17 +6,13 @@
 #include <optional>
 #include <string>
 
+#include "encode/big_endian.hpp"
 #include "encode/crc16.hpp"
 #include "motion/table_move.hpp"
 #include "common/try.hpp"
 
 namespace tactus::encode {
 namespace {
-
-void put16(std::vector<std::uint8_t>& o, std::uint16_t v) {
-    o.push_back(static_cast<std::uint8_t>(v >> 8));
-    o.push_back(static_cast<std::uint8_t>(v & 0xFF));
-}
 
 // v3's varints are big-endian, the firmware's shape: one byte 0-127, or two
 // bytes 1xxxxxxx xxxxxxxx (15 bits); an svar keeps its sign in the top bit

@@ -7,7 +7,7 @@
 namespace tactus::import::detail {
 namespace {
 
-std::string_view trim(std::string_view s) {
+std::string_view trim_blanks(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
     return s;
@@ -15,7 +15,7 @@ std::string_view trim(std::string_view s) {
 
 // A scalar without its quotes ("A title", 'A title').
 std::string_view unquote(std::string_view v) {
-    v = trim(v);
+    v = trim_blanks(v);
     if (v.size() >= 2 && (v.front() == '"' || v.front() == '\'') && v.back() == v.front())
         return v.substr(1, v.size() - 2);
     return v;
@@ -36,10 +36,10 @@ std::string_view dublin_core(std::string_view key) {
 
 std::optional<FrontMatter> front_matter(std::string_view markdown) {
     const auto first_end = markdown.find('\n');
-    if (first_end == std::string_view::npos || trim(markdown.substr(0, first_end)) != "---") return std::nullopt;
+    if (first_end == std::string_view::npos || trim_blanks(markdown.substr(0, first_end)) != "---") return std::nullopt;
     // As pandoc: the opening line is not followed by a blank line (that is a
     // thematic break and a paragraph).
-    if (first_end + 1 >= markdown.size() || trim(markdown.substr(first_end + 1, markdown.find('\n', first_end + 1) - first_end - 1)).empty())
+    if (first_end + 1 >= markdown.size() || trim_blanks(markdown.substr(first_end + 1, markdown.find('\n', first_end + 1) - first_end - 1)).empty())
         return std::nullopt;
     FrontMatter fm;
     fm.lines = 1;
@@ -50,7 +50,7 @@ std::optional<FrontMatter> front_matter(std::string_view markdown) {
         const auto line = markdown.substr(at, end - at);
         at = std::min(end + 1, markdown.size());
         ++fm.lines;
-        const auto t = trim(line);
+        const auto t = trim_blanks(line);
         if (t == "---" || t == "...") {
             fm.length = at;
             return fm;
@@ -65,11 +65,11 @@ std::optional<FrontMatter> front_matter(std::string_view markdown) {
         if (line.empty() || line.front() == ' ' || line.front() == '\t' || t.starts_with('#')) continue;
         const auto colon = t.find(':');
         if (colon == std::string_view::npos) return std::nullopt;  // not YAML: Markdown after a rule
-        const auto name = dublin_core(trim(t.substr(0, colon)));
+        const auto name = dublin_core(trim_blanks(t.substr(0, colon)));
         if (name.empty()) continue;
         auto value = unquote(t.substr(colon + 1));
         if (value.empty()) {
-            key = trim(t.substr(0, colon));  // a list may follow
+            key = trim_blanks(t.substr(0, colon));  // a list may follow
             continue;
         }
         if (value.front() == '[' && value.back() == ']') {  // [a, b]

@@ -19,6 +19,7 @@
 
 #include "common/utf8.hpp"
 #include "import/document_builder.hpp"
+#include "import/trim.hpp"
 #include "import/importers.hpp"
 #include "import/markdown_footnotes.hpp"
 #include "import/markdown_front_matter.hpp"
@@ -26,12 +27,6 @@
 
 namespace tactus::import::detail {
 namespace {
-
-std::string_view trim(std::string_view s) {
-    const auto first = s.find_first_not_of(" \t\r\n");
-    if (first == std::string_view::npos) return {};
-    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 // md4c hands entities over undecoded ("&amp;", "&#233;"). Numeric ones are
 // decoded exactly; of the named ones the common typographic set is known, and

@@ -17,18 +17,18 @@ namespace tactus::import::detail {
 using document::BlockKind;
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+bool is_html_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-    while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+std::string_view trim_html_space(std::string_view s) {
+    while (!s.empty() && is_html_space(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_html_space(s.back())) s.remove_suffix(1);
     return s;
 }
 
 bool has_token(std::string_view list, std::string_view token) {
     while (!list.empty()) {
-        while (!list.empty() && is_space(list.front())) list.remove_prefix(1);
-        const auto end = std::min(list.size(), static_cast<std::size_t>(std::find_if(list.begin(), list.end(), is_space) - list.begin()));
+        while (!list.empty() && is_html_space(list.front())) list.remove_prefix(1);
+        const auto end = std::min(list.size(), static_cast<std::size_t>(std::find_if(list.begin(), list.end(), is_html_space) - list.begin()));
         auto word = list.substr(0, end);
         // "epub:footnote", "z3998:..." prefixes: the word after the colon counts.
         if (const auto colon = word.rfind(':'); colon != std::string_view::npos && token.find(':') == std::string_view::npos)
@@ -124,8 +124,8 @@ std::string all_text(const pugi::xml_node& n) {
 std::string collapsed(std::string_view s) {
     std::string out;
     bool space = false;
-    for (const char c : trim(s)) {
-        if (is_space(c)) {
+    for (const char c : trim_html_space(s)) {
+        if (is_html_space(c)) {
             space = true;
             continue;
         }
@@ -141,7 +141,7 @@ std::string collapsed(std::string_view s) {
 void linear_math(const pugi::xml_node& n, std::string& out, int depth) {
     if (depth <= 0) return;
     const auto add = [&out](std::string_view s) {
-        s = trim(s);
+        s = trim_html_space(s);
         if (s.empty()) return;
         if (!out.empty() && out.back() != ' ' && out.back() != '(') out += ' ';
         out += s;
@@ -328,7 +328,7 @@ void MarkupWalk::text(std::string_view raw, const Context& ctx) {
     // is not emphasised).
     std::string run;
     for (const char c : raw) {
-        if (is_space(c)) {
+        if (is_html_space(c)) {
             space_pending_ = true;
             continue;
         }
@@ -392,7 +392,7 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
         return {};
     }
     if (name == "svg") {
-        if (const auto t = child(node, "title"); t && !trim(t.text().get()).empty()) image(node, ctx);
+        if (const auto t = child(node, "title"); t && !trim_html_space(t.text().get()).empty()) image(node, ctx);
         else warn(node, "an SVG graphic with no <title> left out");
         return {};
     }
@@ -471,7 +471,7 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
         while (!all.empty()) {
             const auto nl = all.find('\n');
             const auto line_text = all.substr(0, nl);
-            if (!trim(line_text).empty()) {
+            if (!trim_html_space(line_text).empty()) {
                 builder_.begin(ctx.kind, ctx.level, current_line_);
                 builder_.add_text(line_text, ctx.emphasis, document::Position::baseline, ctx.language);
                 builder_.trim_end();
@@ -700,8 +700,8 @@ Result<void> MarkupWalk::note(const pugi::xml_node& node, const Context& parent,
 void MarkupWalk::page_break(const pugi::xml_node& node) {
     std::string label;
     if (local_name(node) == "pagenum") label = collapsed(all_text(node));
-    else if (const auto t = node.attribute("title"); t && !trim(t.value()).empty()) label = collapsed(t.value());
-    else if (const auto a = node.attribute("aria-label"); a && !trim(a.value()).empty()) label = collapsed(a.value());
+    else if (const auto t = node.attribute("title"); t && !trim_html_space(t.value()).empty()) label = collapsed(t.value());
+    else if (const auto a = node.attribute("aria-label"); a && !trim_html_space(a.value()).empty()) label = collapsed(a.value());
     else label = collapsed(all_text(node));
     // "Page 12": the number is the label.
     if (const auto space = label.rfind(' '); space != std::string::npos) label = label.substr(space + 1);
@@ -749,7 +749,7 @@ void MarkupWalk::image(const pugi::xml_node& node, const Context& ctx) {
 
 void MarkupWalk::math(const pugi::xml_node& node, const Context& ctx) {
     std::string linear;
-    if (const auto alt = node.attribute("alttext"); alt && !trim(alt.value()).empty()) linear = collapsed(alt.value());
+    if (const auto alt = node.attribute("alttext"); alt && !trim_html_space(alt.value()).empty()) linear = collapsed(alt.value());
     else linear_math(node, linear, 64);
     if (linear.empty()) return;
     if (!builder_.is_open()) open(ctx);

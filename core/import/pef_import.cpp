@@ -11,6 +11,7 @@
 
 #include "common/utf8.hpp"
 #include "import/document_builder.hpp"
+#include "import/trim.hpp"
 #include "import/importers.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
@@ -21,12 +22,6 @@ namespace {
 
 constexpr std::string_view pef_ns = "http://www.daisy.org/ns/2008/pef";
 constexpr std::string_view dc_ns = "http://purl.org/dc/elements/1.1/";
-
-std::string_view trim(std::string_view s) {
-    const auto first = s.find_first_not_of(" \t\r\n");
-    if (first == std::string_view::npos) return {};
-    return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 // The grid in force for a section: its volume's attributes, overridden by its own.
 struct Grid {

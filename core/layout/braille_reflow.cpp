@@ -39,7 +39,7 @@ bool is_letter_cell(Cell c) {
     return std::ranges::find(letters, c.dots) != std::end(letters);
 }
 
-bool is_blank(const BrailleLine& l) {
+bool line_is_blank(const BrailleLine& l) {
     return std::ranges::all_of(l, [](Cell c) { return c.blank(); });
 }
 
@@ -82,7 +82,7 @@ std::vector<Page> pages_of(const document::Document& doc) {
 
 std::size_t first_text_line(const Page& p) {
     std::size_t i = 0;
-    while (i < p.size() && (p[i].furniture || is_blank(p[i].cells))) ++i;
+    while (i < p.size() && (p[i].furniture || line_is_blank(p[i].cells))) ++i;
     return i;
 }
 
@@ -91,12 +91,12 @@ void remove_furniture(std::vector<Page>& pages) {
         const auto first = first_text_line(p);
         if (first == p.size()) continue;
         std::size_t last = p.size() - 1;
-        while (last > first && is_blank(p[last].cells)) --last;
+        while (last > first && line_is_blank(p[last].cells)) --last;
         for (const auto i : {first, last}) {
             auto& cells = p[i].cells;
             if (strip_page_number(cells)) {
                 p[i].numbered = true;
-                if (is_blank(cells)) p[i].furniture = true;
+                if (line_is_blank(cells)) p[i].furniture = true;
             }
         }
     }

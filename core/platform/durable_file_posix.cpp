@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/durable_file.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +12,6 @@
 namespace tactus::platform {
 namespace {
 
-int fd_of(std::intptr_t h) { return static_cast<int>(h); }
 
 FileType type_of(mode_t mode) {
     if (S_ISREG(mode)) return FileType::regular;

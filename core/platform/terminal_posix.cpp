@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/terminal.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -13,7 +14,6 @@
 namespace tactus::platform {
 namespace {
 
-int fd_of(std::intptr_t h) { return static_cast<int>(h); }
 
 speed_t speed_of(int baud) {
     switch (baud) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/worker_process.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -12,7 +13,6 @@
 namespace tactus::platform {
 namespace {
 
-int fd_of(std::intptr_t h) { return static_cast<int>(h); }
 
 }  // namespace
 

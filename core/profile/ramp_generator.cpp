@@ -33,7 +33,7 @@ std::string fmt(double v, int digits) {
     else std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
 }
-std::string num(double v) { return fmt(v, -1); }
+std::string num_repr(double v) { return fmt(v, -1); }
 
 // Python's round(): to the nearest, ties to even (the default rounding mode).
 long round_even(double v) { return static_cast<long>(std::nearbyint(v)); }
@@ -67,8 +67,8 @@ Result<Ramp> s_curve_table(const Axis& axis, const std::string& name) {
     // The tables are walked from flash; a ramp this long would not fit in it
     // (and would take minutes to integrate).
     if (total > kMaxRampSeconds)
-        return fail(ErrorKind::input, "the ramp from rest to " + num(v) + " mm/s takes " + fmt(total, 2) +
-                        " s; the firmware's tables hold ramps of at most " + num(kMaxRampSeconds) +
+        return fail(ErrorKind::input, "the ramp from rest to " + num_repr(v) + " mm/s takes " + fmt(total, 2) +
+                        " s; the firmware's tables hold ramps of at most " + num_repr(kMaxRampSeconds) +
                         " s (raise " + name + ".a_max_mm_s2 or " + name + ".j_max_mm_s3, or lower " + name +
                         ".v_max_mm_s)",
                     "field " + name + ".a_max_mm_s2");
@@ -127,7 +127,7 @@ Result<std::uint32_t> grid_steps(const std::vector<GridValue>& values, double sp
         const double s = v * spm;
         const long r = round_even(s);
         if (std::fabs(s - static_cast<double>(r)) > 1e-6)
-            return fail(ErrorKind::input, "is " + num(v) + " mm, not a whole number of " + std::string(axis) + " steps (" +
+            return fail(ErrorKind::input, "is " + num_repr(v) + " mm, not a whole number of " + std::string(axis) + " steps (" +
                             fmt(s, 3) + "); the firmware moves on a grid of whole steps",
                         std::string("field ") + field);
         if (r != 0) g = std::gcd(g, std::labs(r));
@@ -181,12 +181,12 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
         if (cruise >= static_cast<long>(min)) return {};
         const std::string field = std::string(axis) + ".v_max_mm_s";
         if (std::string_view(axis) == "carriage")
-            return fail(ErrorKind::input, num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm = " +
+            return fail(ErrorKind::input, num_repr(a.v_max_mm_s) + " mm/s x " + num_repr(a.steps_per_mm) + " steps/mm = " +
                             fmt(kTick / static_cast<double>(cruise), 0) +
                             " steps/s; the 89C52 step interrupt sustains at most " +
                             fmt(kTick / min, 0) + " steps/s",
                         "field " + field);
-        return fail(ErrorKind::input, num(a.v_max_mm_s) + " mm/s x " + num(a.steps_per_mm) + " steps/mm exceeds the " +
+        return fail(ErrorKind::input, num_repr(a.v_max_mm_s) + " mm/s x " + num_repr(a.steps_per_mm) + " steps/mm exceeds the " +
                         fmt(kTick / min, 0) + " steps/s the feed's interrupt path sustains",
                     "field " + field);
     };
@@ -204,7 +204,7 @@ Result<machine::FirmwareTables> make_firmware_tables(const PrinterProfile& p) {
     t.feed.intervals = std::move(f.intervals);
     // The carriage cruises on the fast path: its interval must fit one reload byte.
     if (c.cruise > static_cast<long>(kFastMaxTicks))
-        return fail(ErrorKind::input, num(p.carriage.v_max_mm_s) + " mm/s x " + num(p.carriage.steps_per_mm) + " steps/mm = " +
+        return fail(ErrorKind::input, num_repr(p.carriage.v_max_mm_s) + " mm/s x " + num_repr(p.carriage.steps_per_mm) + " steps/mm = " +
                         fmt(kTick / static_cast<double>(c.cruise), 0) +
                         " steps/s; the firmware's carriage cruises at " + fmt(kTick / kFastMaxTicks, 0) +
                         " steps/s or faster",

@@ -28,7 +28,6 @@ namespace fault = encode::fault;
 constexpr std::uint8_t kOperatorFaults =
     fault::paper_out | fault::limit_switch | fault::hammer | fault::power_on_reset;
 
-std::string sheet_word(std::size_t n) { return "sheet " + std::to_string(n); }
 
 void sleep_unless(const std::atomic<bool>& stop, milliseconds d) {
     const auto until = std::chrono::steady_clock::now() + d;

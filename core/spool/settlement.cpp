@@ -6,7 +6,6 @@
 namespace tactus::spool {
 namespace {
 
-std::string sheet_word(std::size_t n) { return "sheet " + std::to_string(n); }
 
 // After the controller's count was lost: the first unfinished sheet of the
 // stream is the one that was under way. If passes of it were recorded it has

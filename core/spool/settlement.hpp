@@ -16,6 +16,9 @@
 
 namespace tactus::spool {
 
+// "sheet 3": how the runner and the settlement name a sheet in their messages.
+inline std::string sheet_word(std::size_t n) { return "sheet " + std::to_string(n); }
+
 struct RunSettlement {
     // Sheets whose executed passes the record had not yet caught up with:
     // (sheet, passes done), never lowering what is recorded.

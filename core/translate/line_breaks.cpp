@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "translate/line_breaks.hpp"
+#include "translate/break_space.hpp"
 
 #include <unicode/brkiter.h>
 #include <unicode/locid.h>
@@ -11,7 +12,6 @@
 namespace tactus::translate {
 namespace {
 
-bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000 || c == 0xA0; }
 
 }  // namespace
 
@@ -78,7 +78,7 @@ LineBreaks find_line_breaks(std::u32string_view text, const document::BrailleLin
         // numeric space (dot 5 inside "84 2") at a line end would read as the
         // line continuation indicator and make 842 of it.
         if (print_allows && !cells[i - 1].blank() && source[i - 1] < text.size() &&
-            is_space(text[source[i - 1]]))
+            is_break_space(text[source[i - 1]]))
             print_allows = false;
         out[i] = print_allows ? BreakBefore::allowed : BreakBefore::between_chars;
     }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "translate/word_division.hpp"
+#include "translate/break_space.hpp"
 #include "common/try.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@ namespace tactus::translate {
 namespace {
 
 bool is_digit(char32_t c) { return c >= U'0' && c <= U'9'; }
-bool is_space(char32_t c) { return c == U' ' || c == U'\t' || c == 0x3000 || c == 0xA0; }
 
 // Index of the first cell made from print character `q` or later: where a cut
 // before character q falls in the cells, if it is clean (no cell of an earlier
@@ -28,7 +28,7 @@ public:
             std::size_t room, const PieceSink& sink)
         : tr_(tr), word_(word), emphasis_(emphasis), room_(room),
           rules_(tr.division_rules()), hyphenation_(tr.hyphenation_points(word)), sink_(sink),
-          short_window_(!tr.has_word_wide_rules() && std::ranges::none_of(word, is_space) &&
+          short_window_(!tr.has_word_wide_rules() && std::ranges::none_of(word, is_break_space) &&
                         std::ranges::all_of(emphasis, [](std::uint8_t e) { return e == 0; })) {}
 
     Result<void> run() {
@@ -138,9 +138,9 @@ private:
             for (std::size_t q = hint; q > pos_; --q) {
                 const bool digits = is_digit(word_[q - 1]) && is_digit(word_[q]);
                 // A space inside a word is UEB's numeric space ("6 1" is one number).
-                const bool numeric_space = q >= pos_ + 2 && is_space(word_[q - 1]) && is_digit(word_[q - 2]) &&
+                const bool numeric_space = q >= pos_ + 2 && is_break_space(word_[q - 1]) && is_digit(word_[q - 2]) &&
                                            is_digit(word_[q]);
-                if ((is_space(word_[q - 1]) || is_space(word_[q])) && !numeric_space) continue;
+                if ((is_break_space(word_[q - 1]) || is_break_space(word_[q])) && !numeric_space) continue;
                 const bool syllable = q < hyphenation_.size() && hyphenation_[q];
                 if (pass == 0 && !digits && !numeric_space && !syllable) continue;
                 if ((digits || numeric_space) && rules_.number_continuation) {
