@@ -85,10 +85,7 @@ bool SimControllerV2::start_next_op(double now) {
         decoded && decoded->first.code == OpCode::move && decoded->first.continuation;
     // A safe point: the carriage is at rest, not between two parts of one move.
     if (pause_requested_ && !continuation) {
-        pause_requested_ = false;
-        state_ = ControllerState::paused;
-        set_waiting(false, now);
-        ack();
+        pause_here(now);
         return false;
     }
     if (!decoded) {
@@ -107,16 +104,7 @@ bool SimControllerV2::start_next_op(double now) {
         stop_job(fault::stream_error, now);
         return false;
     }
-    if (op.code == OpCode::sheet_begin && paper_out_sheet_ && *paper_out_sheet_ == op.id)
-        paper_present_ = false;
-    if (op.code == OpCode::sheet_begin && !paper_present_) {
-        faults_ |= fault::paper_out;
-        state_ = ControllerState::fault;
-        set_waiting(false, now);
-        if (options_.reload_paper_after_s >= 0) reload_at_ = now + options_.reload_paper_after_s;
-        ack();
-        return false;
-    }
+    if (op.code == OpCode::sheet_begin && !paper_for_sheet(op.id, now)) return false;
     if (op.code == OpCode::strike && skip_ == 0) {
         const std::size_t nth = strike_count_ + 1;
         if (limit_at_ && *limit_at_ == nth) {

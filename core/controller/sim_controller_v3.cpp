@@ -10,7 +10,6 @@
 #include <algorithm>
 
 #include "controller/sim_controller_v3.hpp"
-#include "controller/sim_v3_entry.hpp"
 #include "encode/crc16.hpp"
 #include "encode/stream_v3.hpp"
 
@@ -27,7 +26,6 @@ namespace {
 
 // link.c's vstate.st
 enum : std::uint8_t { VS_OP, VS_FIXED, VS_FLAGS, VS_SKIP, VS_FEED, VS_FEED2, VS_FIRST, VS_FIRST2, VS_N, VS_ENTRY, VS_ENTRY2 };
-constexpr std::uint8_t kPassFlagsAll = 0x1F;
 
 }  // namespace
 
@@ -167,7 +165,7 @@ bool SimControllerV3::check_ops(std::span<const std::uint8_t> p) {
                 }
                 continue;
             case VS_FLAGS:
-                if (b & static_cast<std::uint8_t>(~kPassFlagsAll)) return false;
+                if (b & static_cast<std::uint8_t>(~pf::all)) return false;
                 vs.flags = b;
                 vs.st = (b & pf::skip) ? VS_SKIP : VS_FEED;
                 continue;
@@ -183,7 +181,7 @@ bool SimControllerV3::check_ops(std::span<const std::uint8_t> p) {
                 done_at = i + 1;  // the header: the feed may start
                 continue;
             case VS_ENTRY:
-                if (b & kEntryExt) {
+                if (b & op3::entry::ext) {
                     vs.st = VS_ENTRY2;
                     continue;
                 }

@@ -14,7 +14,6 @@
 #include <cstdlib>
 
 #include "controller/sim_controller_v3.hpp"
-#include "controller/sim_v3_entry.hpp"
 #include "encode/stream_v3.hpp"
 
 namespace tactus::controller {
@@ -40,10 +39,7 @@ bool SimControllerV3::dropped() {
     if (!p_drop_) return false;
     p_drop_ = false;
     xs_ = X::fetch;
-    pause_requested_ = false;
-    state_ = ControllerState::paused;
-    set_waiting(false, now_);
-    ack();
+    pause_here(now_);
     return true;
 }
 
@@ -137,13 +133,13 @@ void SimControllerV3::pass_begin(double now) {
 
 void SimControllerV3::strike_move(double now) {
     const std::uint8_t e = at(0);
-    ham_ccv_ = (e & kEntryConcave) != 0;
+    ham_ccv_ = (e & op3::entry::concave) != 0;
     const auto grid = options_.firmware->carriage.grid_steps;
     if (p_is_first_) {
         carriage(p_first_ * grid, (p_flags_ & pf::first_neg) != 0, now);
     } else {
-        std::uint32_t d = e & kEntryDist;
-        if (e & kEntryExt) d = (d << 8) | at(1);
+        std::uint32_t d = e & op3::entry::dist;
+        if (e & op3::entry::ext) d = (d << 8) | at(1);
         carriage(d * grid, (p_flags_ & pf::sweep_neg) != 0, now);
     }
     xs_ = X::move;
@@ -165,10 +161,7 @@ bool SimControllerV3::fetch(double now) {
         return false;
     }
     if (pause_requested_) {
-        pause_requested_ = false;
-        state_ = ControllerState::paused;
-        set_waiting(false, now);
-        ack();
+        pause_here(now);
         return true;
     }
     const std::uint8_t op = at(0);
@@ -206,16 +199,8 @@ bool SimControllerV3::fetch(double now) {
             ack();
             break;
         case op3::op_sheet_begin:
-            if (paper_out_sheet_ && *paper_out_sheet_ == be16(1)) paper_present_ = false;
-            if (!paper_present_) {
-                // Nothing is dropped: the op runs again once paper is in.
-                faults_ |= fault::paper_out;
-                state_ = ControllerState::fault;
-                set_waiting(false, now);
-                if (options_.reload_paper_after_s >= 0) reload_at_ = now + options_.reload_paper_after_s;
-                ack();
-                return true;
-            }
+            // Nothing is dropped without paper: the op runs again once paper is in.
+            if (!paper_for_sheet(be16(1), now)) return true;
             sheet_ = be16(1);
             feed_ = 0;  // the sheet's top edge is the feed origin
             consume(3);
@@ -338,7 +323,7 @@ bool SimControllerV3::poll(double now) {
             fired_ = false;
             if (dropped()) return true;  // the entry went with the ring
             {
-                const std::size_t n = (at(0) & kEntryExt) ? 2 : 1;
+                const std::size_t n = (at(0) & op3::entry::ext) ? 2 : 1;
                 ring_.erase(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(n));
                 ops_done_ -= n;
             }

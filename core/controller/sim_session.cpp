@@ -200,6 +200,24 @@ void SimSession::abort_job(double now) {
     }
 }
 
+void SimSession::pause_here(double now) {
+    pause_requested_ = false;
+    state_ = ControllerState::paused;
+    set_waiting(false, now);
+    ack();
+}
+
+bool SimSession::paper_for_sheet(std::uint16_t sheet, double now) {
+    if (paper_out_sheet_ && *paper_out_sheet_ == sheet) paper_present_ = false;
+    if (paper_present_) return true;
+    faults_ |= fault::paper_out;
+    state_ = ControllerState::fault;
+    set_waiting(false, now);
+    if (options_.reload_paper_after_s >= 0) reload_at_ = now + options_.reload_paper_after_s;
+    ack();
+    return false;
+}
+
 void SimSession::pass_executed() {
     pass_active_ = false;
     strikes_in_pass_ = 0;

@@ -134,6 +134,13 @@ protected:
     // ABORT, once the protocol has stopped its executor and dropped the ring:
     // no job, and no fault but a reset's.
     void abort_job(double now);
+    // A safe point (at rest) reached with a pause asked for: the job holds
+    // still until RESUME, and the host is told.
+    void pause_here(double now);
+    // SHEET_BEGIN: whether the sheet found paper. Without it the job stops
+    // with paper out, the op kept to run again once paper is in, and the
+    // simulated operator loads paper after SimOptions::reload_paper_after_s.
+    [[nodiscard]] bool paper_for_sheet(std::uint16_t sheet, double now);
     // A pass executed: the host counts it from this ACK. The mute and wedge
     // injections take effect here.
     void pass_executed();
