@@ -15,6 +15,7 @@
 #include "encode/frame.hpp"
 #include "encode/stream.hpp"
 #include "encode/stream_v3.hpp"
+#include "machine/reference_firmware.hpp"
 #include "pipeline/pipeline.hpp"
 #include "plan/planner.hpp"
 #include "profile/firmware_tables.hpp"
@@ -25,7 +26,7 @@ using namespace tactus;
 
 namespace {
 
-constexpr std::size_t kFirmwareMaxOps = 31;  // the firmware's payload: 33 bytes, 2 of them the check
+namespace fw = machine::reference_firmware;  // its DATA payload: kMaxOps of ops and the check
 
 std::size_t v3_line_bytes(const plan::JobPlan& job, const machine::FirmwareTables& t, const machine::StrikeTiming& st) {
     auto s = encode::encode_job_v3(job, t, st, 1, {});
@@ -34,7 +35,7 @@ std::size_t v3_line_bytes(const plan::JobPlan& job, const machine::FirmwareTable
         std::exit(1);
     }
     std::size_t n = 0;
-    for (const auto& [b, e] : encode::chunk_stream_v3(*s, kFirmwareMaxOps)) n += e - b + 2 + encode::kFrameOverhead;
+    for (const auto& [b, e] : encode::chunk_stream_v3(*s, fw::kMaxOps)) n += e - b + fw::kDataCheckBytes + encode::kFrameOverhead;
     return n;
 }
 

@@ -3,14 +3,13 @@
 // (docs/protocol.md, "Version 3 on the host"): its link, each rule the
 // firmware's in the same order (firmware/src/link.c: sessions, window,
 // duplicates, the DATA check, the job-stream check as bytes are copied in),
-// and its reset. The executor (exec.c) is in sim_controller_v3_exec.cpp. The
+// and its reset, after the shared session checks (sim_session.cpp). The
+// executor (exec.c) is in sim_controller_v3_exec.cpp. The
 // conformance suite (tests/link/protocol_conformance_test.cpp) runs the same
 // cases against both, so they cannot drift apart.
 #include <algorithm>
-#include <cstdlib>
 
-#include "controller/sim_controller.hpp"
-#include "controller/sim_v3_entry.hpp"
+#include "controller/sim_controller_v3.hpp"
 #include "encode/crc16.hpp"
 #include "encode/stream_v3.hpp"
 
@@ -27,34 +26,30 @@ namespace {
 
 // link.c's vstate.st
 enum : std::uint8_t { VS_OP, VS_FIXED, VS_FLAGS, VS_SKIP, VS_FEED, VS_FEED2, VS_FIRST, VS_FIRST2, VS_N, VS_ENTRY, VS_ENTRY2 };
-constexpr std::uint8_t kPassFlagsAll = 0x1F;
 
 }  // namespace
 
-std::size_t SimController::v3_ring_free() const {
+SimControllerV3::SimControllerV3(SimOptions options) : SimSession(std::move(options)) { boot(0, false); }
+
+std::size_t SimControllerV3::ring_free() const {
     return ring_.size() >= v3::kRingBytes ? 0 : v3::kRingBytes - ring_.size();
 }
 
-void SimController::v3_flush() {
+void SimControllerV3::flush() {
     ring_.clear();
     ops_done_ = 0;
-    v3c_ = {};
+    check_ = {};
 }
 
 // main.c: a warm start keeps RAM (progress, the pass flag, the counters) and
 // clears the registers; a cold one starts from nothing.
-void SimController::v3_boot(double now, bool keep_ram) {
+void SimControllerV3::boot(double now, bool keep_ram) {
     // The timer stops with the chip: a phase under way is cut where it is,
     // its steps already counted (exec.c counts a move when it starts).
     phase_busy_ = false;
     last_event_ = now - 1;  // nothing scheduled: the next phase starts when given
-    expected_seq_ = 0;
-    session_ = false;
-    nonce_ = 0;
-    homed_ = false;
-    pause_requested_ = false;
-    decoder_.reset();
-    v3_flush();
+    reset_link();
+    flush();
     set_waiting(false, now);
     xs_ = X::fetch;
     c_neg_ = false;  // exec_init
@@ -66,36 +61,26 @@ void SimController::v3_boot(double now, bool keep_ram) {
         state_ = job_active_ ? ControllerState::fault : ControllerState::idle;
     } else {
         power_on_ram();
+        cfg_travel_ = cfg_home_iv_ = cfg_hammer_ = cfg_settle_ = 0;
     }
-    free_reported_ = v3_ring_free();
+    free_reported_ = ring_free();
 }
 
 // --- the link (link.c)
 
-void SimController::v3_report_room() {
-    if (!session_) return;
-    const std::size_t free = v3_ring_free();
-    if (free >= free_reported_ + v3::kMaxPayload || (free >= v3::kMaxPayload && free_reported_ < v3::kMaxPayload))
-        ack();
-}
-
-void SimController::v3_starved() {
-    if (session_ && v3_ring_free() > free_reported_) ack();
-}
-
-void SimController::v3_frame(const encode::Frame& f, double now) {
+void SimControllerV3::frame(const encode::Frame& f, double now) {
     if (!receiving(now)) return;
     // The firmware's receive area is what the ring leaves free plus its slack:
     // a frame that cannot be stored there is a false start (decoder.c), never
     // answered.
     if (f.payload.size() + encode::kFrameOverhead - 1 > v3::kBufferBytes - ring_.size()) return;
     if (f.type == static_cast<std::uint8_t>(FrameType::hello)) {
-        v3_hello(f, now);
+        hello(f, now);
         return;
     }
     if (!in_sequence(f)) return;
     if (f.type == static_cast<std::uint8_t>(FrameType::data)) {
-        v3_data(f, now);
+        data(f, now);
         return;
     }
     if (f.type < static_cast<std::uint8_t>(FrameType::configure) ||
@@ -103,10 +88,10 @@ void SimController::v3_frame(const encode::Frame& f, double now) {
         nak(NakReason::unknown_type);
         return;
     }
-    v3_control(f, now);
+    control(f, now);
 }
 
-void SimController::v3_hello(const encode::Frame& f, double now) {
+void SimControllerV3::hello(const encode::Frame& f, double now) {
     // A HELLO of a new session, whichever version it offers, comes from a
     // host that replaced the one that died with a reply on the wire
     // (mute_after_pass): the line back works again. Unmuted only on the v3
@@ -120,15 +105,12 @@ void SimController::v3_hello(const encode::Frame& f, double now) {
         return;
     }
     const auto n = static_cast<std::uint16_t>((f.payload[0] << 8) | f.payload[1]);
-    // A repeated HELLO of the same session is answered but changes nothing: a
-    // stale duplicate must never rewind the sequence.
-    if (!session_ || n != nonce_) {
+    if (new_session(n)) {
         // A new session: the host re-sends the job from the progress it is
         // told, so whatever is buffered is dropped and the job holds still.
-        v3_flush();
-        if (job_active_ && (state_ == ControllerState::running || state_ == ControllerState::waiting ||
-                            state_ == ControllerState::homing)) {
-            if (xs_ != X::fetch || phase_busy_) {
+        flush();
+        if (job_active_ && job_moving()) {
+            if (busy()) {
                 pause_requested_ = true;
             } else {
                 state_ = ControllerState::paused;
@@ -140,13 +122,7 @@ void SimController::v3_hello(const encode::Frame& f, double now) {
         // took the new host's stream as that pass's strikes.
         if (xs_ == X::feed || xs_ == X::move || xs_ == X::settle || xs_ == X::dwell || xs_ == X::next)
             p_drop_ = true;
-        session_ = true;
-        muted_ = false;
-        nonce_ = n;
-        expected_seq_ = static_cast<std::uint8_t>(f.seq + 1);
-        faults_ &= static_cast<std::uint8_t>(~(fault::power_on_reset | fault::warm_reset));
-        if (state_ == ControllerState::fault && faults_ == 0)
-            state_ = job_active_ ? ControllerState::paused : ControllerState::idle;
+        open_session(n, f.seq);
     }
     encode::HelloReply r;
     r.protocol = encode::kProtocolV3;
@@ -164,9 +140,9 @@ void SimController::v3_hello(const encode::Frame& f, double now) {
 // link.c check_ops: the job-stream grammar over one payload's ops, carried
 // across frames. Sets ops_done_ past the last thing the executor may start: a
 // whole op, a pass header, or a whole strike entry (passes stream).
-bool SimController::v3_check_ops(std::span<const std::uint8_t> p) {
+bool SimControllerV3::check_ops(std::span<const std::uint8_t> p) {
     std::size_t done_at = 0;
-    auto& vs = v3c_;
+    auto& vs = check_;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const std::uint8_t b = p[i];
         switch (vs.st) {
@@ -189,7 +165,7 @@ bool SimController::v3_check_ops(std::span<const std::uint8_t> p) {
                 }
                 continue;
             case VS_FLAGS:
-                if (b & static_cast<std::uint8_t>(~kPassFlagsAll)) return false;
+                if (b & static_cast<std::uint8_t>(~pf::all)) return false;
                 vs.flags = b;
                 vs.st = (b & pf::skip) ? VS_SKIP : VS_FEED;
                 continue;
@@ -205,7 +181,7 @@ bool SimController::v3_check_ops(std::span<const std::uint8_t> p) {
                 done_at = i + 1;  // the header: the feed may start
                 continue;
             case VS_ENTRY:
-                if (b & kEntryExt) {
+                if (b & op3::entry::ext) {
                     vs.st = VS_ENTRY2;
                     continue;
                 }
@@ -221,7 +197,7 @@ bool SimController::v3_check_ops(std::span<const std::uint8_t> p) {
     return true;
 }
 
-void SimController::v3_data(const encode::Frame& f, double now) {
+void SimControllerV3::data(const encode::Frame& f, double now) {
     if (f.payload.size() < 3 || f.payload.size() > v3::kMaxPayload) {
         nak(NakReason::bad_payload);
         return;
@@ -235,31 +211,30 @@ void SimController::v3_data(const encode::Frame& f, double now) {
         ++data_check_errors_;
         return;
     }
-    if (ops.size() > v3_ring_free()) {
+    if (ops.size() > ring_free()) {
         nak(NakReason::no_space);
         return;
     }
     const std::size_t done_before = ops_done_;
-    if (!v3_check_ops(ops)) {
+    if (!check_ops(ops)) {
         // A malformed op: a host bug, and the ops before it may end
         // mid-record. The ring is dropped with a fault.
         ops_done_ = done_before;
-        v3_flush();
+        flush();
         faults_ |= fault::stream_error;
         state_ = ControllerState::fault;
-        if (xs_ != X::fetch || phase_busy_) v3_abort_motion();
+        if (busy()) abort_motion();
         nak(NakReason::bad_payload);
         return;
     }
-    ++expected_seq_;
-    ++frames_accepted_;
+    accept();
     ring_.insert(ring_.end(), ops.begin(), ops.end());
     max_ring_used_ = std::max(max_ring_used_, ring_.size());
     ack();
     advance(now);  // the main loop runs on: an idle executor starts what arrived
 }
 
-void SimController::v3_control(const encode::Frame& f, double now) {
+void SimControllerV3::control(const encode::Frame& f, double now) {
     const auto type = static_cast<FrameType>(f.type);
     if (type == FrameType::configure) {
         const auto& p = f.payload;
@@ -280,8 +255,7 @@ void SimController::v3_control(const encode::Frame& f, double now) {
         config_.hammer_ticks = cfg_hammer_;
         config_.keepalive_ms = be16(8);
         configured_ = true;
-        ++expected_seq_;
-        ++frames_accepted_;
+        accept();
         ack();
         return;
     }
@@ -289,14 +263,12 @@ void SimController::v3_control(const encode::Frame& f, double now) {
         nak(NakReason::bad_payload);
         return;
     }
-    ++expected_seq_;
-    ++frames_accepted_;
-    const bool busy = xs_ != X::fetch || phase_busy_;
+    accept();
+    const bool in_motion = busy();
     switch (type) {
         case FrameType::pause:
-            if (state_ == ControllerState::running || state_ == ControllerState::waiting ||
-                state_ == ControllerState::homing) {
-                if (busy) {
+            if (job_moving()) {
+                if (in_motion) {
                     pause_requested_ = true;
                 } else {
                     state_ = ControllerState::paused;
@@ -305,26 +277,12 @@ void SimController::v3_control(const encode::Frame& f, double now) {
             }
             break;
         case FrameType::resume:
-            pause_requested_ = false;
-            faults_ &= static_cast<std::uint8_t>(
-                ~(fault::host_timeout | fault::limit_switch | fault::hammer | fault::stream_error | fault::underrun));
-            if (paper_present_) faults_ &= static_cast<std::uint8_t>(~fault::paper_out);
-            if ((faults_ & (fault::paper_out | fault::power_on_reset | fault::warm_reset)) == 0 &&
-                (state_ == ControllerState::paused || state_ == ControllerState::fault))
-                state_ = job_active_ ? ControllerState::running : ControllerState::idle;
+            resume_job();
             break;
         case FrameType::abort:
-            v3_abort_motion();
-            v3_flush();
-            if (job_active_) job_ended_ = false;  // an aborted job did not run to its end
-            job_active_ = false;
-            pass_active_ = false;
-            pause_requested_ = false;
-            set_waiting(false, now);
-            if ((faults_ & (fault::power_on_reset | fault::warm_reset)) == 0) {
-                faults_ = 0;
-                state_ = ControllerState::idle;
-            }
+            abort_motion();
+            flush();
+            abort_job(now);
             break;
         case FrameType::status: reply(FrameType::status_reply, encode::encode_status(status())); return;
         default: break;  // KEEPALIVE: the ACK is the point

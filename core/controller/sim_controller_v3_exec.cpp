@@ -13,8 +13,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "controller/sim_controller.hpp"
-#include "controller/sim_v3_entry.hpp"
+#include "controller/sim_controller_v3.hpp"
 #include "encode/stream_v3.hpp"
 
 namespace tactus::controller {
@@ -36,18 +35,15 @@ constexpr std::uint64_t kMinTimerGap = 64;  // motion.c start(): timer_go never 
 
 // Leaves a dropped pass at a safe point (at rest): it stays active, with its
 // strike count, and the job holds still until RESUME.
-bool SimController::v3_dropped() {
+bool SimControllerV3::dropped() {
     if (!p_drop_) return false;
     p_drop_ = false;
     xs_ = X::fetch;
-    pause_requested_ = false;
-    state_ = ControllerState::paused;
-    set_waiting(false, now_);
-    ack();
+    pause_here(now_);
     return true;
 }
 
-void SimController::v3_phase(double now, std::uint64_t first_ticks, std::uint64_t total_ticks) {
+void SimControllerV3::phase(double now, std::uint64_t first_ticks, std::uint64_t total_ticks) {
     if (first_ticks < kMinTimerGap) {
         total_ticks += kMinTimerGap - first_ticks;
         first_ticks = kMinTimerGap;
@@ -62,7 +58,7 @@ void SimController::v3_phase(double now, std::uint64_t first_ticks, std::uint64_
     phase_busy_ = true;
 }
 
-void SimController::v3_abort_motion() {
+void SimControllerV3::abort_motion() {
     // A move cut short leaves the counter at its target, not where the steps
     // got to: the position is no longer known until the next HOME.
     if (phase_busy_) {
@@ -75,31 +71,31 @@ void SimController::v3_abort_motion() {
     // host's restart skips exactly those (ABORT clears the flag itself).
 }
 
-void SimController::v3_fault(std::uint8_t bits, double now) {
-    v3_abort_motion();
+void SimControllerV3::stop_on_fault(std::uint8_t bits, double now) {
+    abort_motion();
     faults_ |= bits;
     state_ = ControllerState::fault;
-    v3_flush();
+    flush();
     set_waiting(false, now);
     ack();
 }
 
-std::uint32_t SimController::v3_uvar(std::size_t& i) const {
-    const std::uint8_t b = v3_at(i++);
+std::uint32_t SimControllerV3::uvar(std::size_t& i) const {
+    const std::uint8_t b = at(i++);
     if (!(b & 0x80)) return b;
-    return (static_cast<std::uint32_t>(b & 0x7F) << 8) | v3_at(i++);
+    return (static_cast<std::uint32_t>(b & 0x7F) << 8) | at(i++);
 }
 
-std::int32_t SimController::v3_svar(std::size_t& i) const {
-    const bool two = (v3_at(i) & 0x80) != 0;
-    const auto u = static_cast<std::int32_t>(v3_uvar(i));
+std::int32_t SimControllerV3::svar(std::size_t& i) const {
+    const bool two = (at(i) & 0x80) != 0;
+    const auto u = static_cast<std::int32_t>(uvar(i));
     if (two) return (u & 0x4000) ? u - 0x8000 : u;
     return (u & 0x40) ? u - 128 : u;
 }
 
 // A carriage move of `steps` toward home when `neg`; a reversal adds the
 // backlash to the motor's move (the sources' rule), counted in the position.
-void SimController::v3_carriage(std::uint32_t steps, bool neg, double now) {
+void SimControllerV3::carriage(std::uint32_t steps, bool neg, double now) {
     if (steps == 0) return;
     const auto& t = options_.firmware->carriage;
     std::uint32_t motor = steps;
@@ -107,17 +103,17 @@ void SimController::v3_carriage(std::uint32_t steps, bool neg, double now) {
     c_neg_ = neg;
     carriage_ += neg ? -static_cast<std::int32_t>(motor) : static_cast<std::int32_t>(motor);
     const auto gap = options_.firmware->start_gap_ticks;
-    v3_phase(now, gap + t.interval(1, motor), gap + t.move_ticks(motor));
+    phase(now, gap + t.interval(1, motor), gap + t.move_ticks(motor));
 }
 
-void SimController::v3_pass_begin(double now) {
+void SimControllerV3::pass_begin(double now) {
     std::size_t i = 1;
-    p_flags_ = v3_at(i++);
+    p_flags_ = at(i++);
     skip_ = 0;
-    if (p_flags_ & pf::skip) skip_ = v3_at(i++);
-    const std::int32_t feed = v3_svar(i);
-    p_first_ = v3_uvar(i);
-    p_left_ = v3_at(i++);
+    if (p_flags_ & pf::skip) skip_ = at(i++);
+    const std::int32_t feed = svar(i);
+    p_first_ = uvar(i);
+    p_left_ = at(i++);
     ring_.erase(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(i));
     ops_done_ -= i;
     strikes_in_pass_ = skip_;
@@ -131,70 +127,53 @@ void SimController::v3_pass_begin(double now) {
         f_neg_ = neg;
         feed_ += neg ? -static_cast<std::int32_t>(steps) : static_cast<std::int32_t>(steps);
         const auto gap = options_.firmware->start_gap_ticks;
-        v3_phase(now, gap + t.interval(1, steps), gap + t.move_ticks(steps));
+        phase(now, gap + t.interval(1, steps), gap + t.move_ticks(steps));
     }
 }
 
-void SimController::v3_strike_move(double now) {
-    const std::uint8_t e = v3_at(0);
-    ham_ccv_ = (e & kEntryConcave) != 0;
+void SimControllerV3::strike_move(double now) {
+    const std::uint8_t e = at(0);
+    ham_ccv_ = (e & op3::entry::concave) != 0;
     const auto grid = options_.firmware->carriage.grid_steps;
     if (p_is_first_) {
-        v3_carriage(p_first_ * grid, (p_flags_ & pf::first_neg) != 0, now);
+        carriage(p_first_ * grid, (p_flags_ & pf::first_neg) != 0, now);
     } else {
-        std::uint32_t d = e & kEntryDist;
-        if (e & kEntryExt) d = (d << 8) | v3_at(1);
-        v3_carriage(d * grid, (p_flags_ & pf::sweep_neg) != 0, now);
+        std::uint32_t d = e & op3::entry::dist;
+        if (e & op3::entry::ext) d = (d << 8) | at(1);
+        carriage(d * grid, (p_flags_ & pf::sweep_neg) != 0, now);
     }
     xs_ = X::move;
 }
 
-void SimController::v3_pass_end() {
-    pass_active_ = false;
+void SimControllerV3::pass_end() {
     ++pass_index_;
     executed_passes_ = pass_index_;
-    strikes_in_pass_ = 0;
     xs_ = X::fetch;
-    if (mute_after_ && executed_passes_ == *mute_after_) {
-        mute_after_.reset();
-        muted_ = true;
-    }
-    if (wedge_after_ && executed_passes_ == *wedge_after_) {
-        wedge_after_.reset();
-        wedged_ = true;
-    }
-    ack();  // the host counts a pass only when it is executed
+    pass_executed();
 }
 
 // exec.c fetch(): the next op at the head of the ring. Returns whether
 // anything changed (the main loop polls again at once).
-bool SimController::v3_fetch(double now) {
+bool SimControllerV3::fetch(double now) {
     if (state_ == ControllerState::paused || state_ == ControllerState::fault) return false;
     if (ops_done_ == 0) {
-        if (job_active_ && state_ != ControllerState::waiting) {
-            state_ = ControllerState::waiting;
-            set_waiting(true, now);
-            v3_starved();
-        }
+        wait_for_data(now);
         return false;
     }
     if (pause_requested_) {
-        pause_requested_ = false;
-        state_ = ControllerState::paused;
-        set_waiting(false, now);
-        ack();
+        pause_here(now);
         return true;
     }
-    const std::uint8_t op = v3_at(0);
+    const std::uint8_t op = at(0);
     if (!job_active_ && op != op3::op_job_begin) {
-        v3_fault(fault::stream_error, now);  // ops outside a job: a host bug
+        stop_on_fault(fault::stream_error, now);  // ops outside a job: a host bug
         return true;
     }
     if (state_ == ControllerState::waiting) {
         state_ = ControllerState::running;
         set_waiting(false, now);
     }
-    auto be16 = [&](std::size_t i) { return static_cast<std::uint16_t>((v3_at(i) << 8) | v3_at(i + 1)); };
+    auto be16 = [&](std::size_t i) { return static_cast<std::uint16_t>((at(i) << 8) | at(i + 1)); };
     auto consume = [&](std::size_t n) {
         ring_.erase(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(n));
         ops_done_ -= n;
@@ -220,16 +199,8 @@ bool SimController::v3_fetch(double now) {
             ack();
             break;
         case op3::op_sheet_begin:
-            if (paper_out_sheet_ && *paper_out_sheet_ == be16(1)) paper_present_ = false;
-            if (!paper_present_) {
-                // Nothing is dropped: the op runs again once paper is in.
-                faults_ |= fault::paper_out;
-                state_ = ControllerState::fault;
-                set_waiting(false, now);
-                if (options_.reload_paper_after_s >= 0) reload_at_ = now + options_.reload_paper_after_s;
-                ack();
-                return true;
-            }
+            // Nothing is dropped without paper: the op runs again once paper is in.
+            if (!paper_for_sheet(be16(1), now)) return true;
             sheet_ = be16(1);
             feed_ = 0;  // the sheet's top edge is the feed origin
             consume(3);
@@ -248,7 +219,7 @@ bool SimController::v3_fetch(double now) {
             if (carriage_ > 0) {
                 const std::uint64_t gap = options_.firmware->start_gap_ticks;
                 const auto n = static_cast<std::uint64_t>(carriage_);
-                v3_phase(now, gap + cfg_home_iv_, gap + n * cfg_home_iv_);
+                phase(now, gap + cfg_home_iv_, gap + n * cfg_home_iv_);
             }
             break;
         }
@@ -260,7 +231,7 @@ bool SimController::v3_fetch(double now) {
             const std::int32_t d = target - from;
             consume(3);
             if (!feed && (!homed_ || target < 0 || target > cfg_travel_)) {
-                v3_fault(fault::stream_error, now);
+                stop_on_fault(fault::stream_error, now);
                 return true;
             }
             if (d == 0) break;
@@ -272,27 +243,27 @@ bool SimController::v3_fetch(double now) {
                 carriage_ = target;
             }
             const std::uint64_t gap = options_.firmware->start_gap_ticks;
-            v3_phase(now, gap + cfg_home_iv_, gap + static_cast<std::uint64_t>(std::abs(d)) * cfg_home_iv_);
+            phase(now, gap + cfg_home_iv_, gap + static_cast<std::uint64_t>(std::abs(d)) * cfg_home_iv_);
             xs_ = X::seek;
             break;
         }
         case op3::op_pass:
             if (!homed_) {
-                v3_fault(fault::stream_error, now);  // the host must home before positioning
+                stop_on_fault(fault::stream_error, now);  // the host must home before positioning
                 return true;
             }
-            v3_pass_begin(now);
+            pass_begin(now);
             break;
-        default: v3_fault(fault::stream_error, now); break;  // checked on receipt: cannot happen
+        default: stop_on_fault(fault::stream_error, now); break;  // checked on receipt: cannot happen
     }
     return true;
 }
 
 // exec.c exec_poll(), once the phase under way (if any) is done.
-bool SimController::v3_poll(double now) {
+bool SimControllerV3::poll(double now) {
     if (phase_busy_) return false;
     switch (xs_) {
-        case X::fetch: return v3_fetch(now);
+        case X::fetch: return fetch(now);
         case X::home:
             carriage_ = 0;
             homed_ = true;
@@ -301,9 +272,9 @@ bool SimController::v3_poll(double now) {
             return true;
         case X::seek: xs_ = X::fetch; return true;
         case X::feed:
-            if (v3_dropped()) return true;
+            if (dropped()) return true;
             if (p_left_ == 0) {
-                v3_pass_end();
+                pass_end();
                 return true;
             }
             p_is_first_ = true;
@@ -314,13 +285,13 @@ bool SimController::v3_poll(double now) {
                 (skip_ == 0 && limit_at_ && *limit_at_ == strike_count_ + 1)) {
                 if (skip_ == 0 && limit_at_ && *limit_at_ == strike_count_ + 1) limit_at_.reset();
                 homed_ = false;
-                v3_fault(fault::limit_switch, now);
+                stop_on_fault(fault::limit_switch, now);
                 return true;
             }
             // The hammer comes down at the settle's end, from the timer.
             xs_ = X::settle;
             fired_ = skip_ == 0;
-            v3_phase(now, cfg_settle_, cfg_settle_);
+            phase(now, cfg_settle_, cfg_settle_);
             return true;
         case X::settle:
             xs_ = X::dwell;
@@ -329,26 +300,15 @@ bool SimController::v3_poll(double now) {
             } else {
                 ++strikes_in_pass_;
                 ++strike_count_;
-                LoggedStrike l;
-                l.sheet = sheet_;
-                l.hammer = ham_ccv_ ? plan::Hammer::concave : plan::Hammer::convex;
-                l.side = ham_ccv_ ? plan::Side::back : plan::Side::front;
-                l.carriage_step = carriage_;
-                l.feed_step = feed_;
-                l.pass_index = pass_index_;
-                l.job_id = job_id_;
-                l.time_s = now;
-                l.x_mm = carriage_ * 1000.0 / config_.carriage_steps_per_m;
-                l.y_mm = feed_ * 1000.0 / config_.feed_steps_per_m;
-                log_.push_back(l);
+                log_strike(ham_ccv_ ? plan::Hammer::concave : plan::Hammer::convex, now);
             }
-            v3_phase(now, cfg_hammer_, cfg_hammer_);
+            phase(now, cfg_hammer_, cfg_hammer_);
             return true;
         case X::dwell:
             // Both hammers must be back before the head moves on.
             if (fired_ && hammer_at_ && *hammer_at_ == strike_count_) {
                 hammer_at_.reset();
-                v3_fault(fault::hammer, now);
+                stop_on_fault(fault::hammer, now);
                 return true;
             }
             // A reset just after the strike, the head at rest (the emulator's
@@ -361,14 +321,14 @@ bool SimController::v3_poll(double now) {
                 return true;
             }
             fired_ = false;
-            if (v3_dropped()) return true;  // the entry went with the ring
+            if (dropped()) return true;  // the entry went with the ring
             {
-                const std::size_t n = (v3_at(0) & kEntryExt) ? 2 : 1;
+                const std::size_t n = (at(0) & op3::entry::ext) ? 2 : 1;
                 ring_.erase(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(n));
                 ops_done_ -= n;
             }
             if (--p_left_ == 0) {
-                v3_pass_end();
+                pass_end();
                 return true;
             }
             p_is_first_ = false;
@@ -381,14 +341,14 @@ bool SimController::v3_poll(double now) {
             }
             return true;
         case X::next:
-            if (v3_dropped()) return true;
+            if (dropped()) return true;
             if (state_ == ControllerState::paused || state_ == ControllerState::fault) return false;
             if (ops_done_ == 0) {
                 // The next strike's entry has not arrived: wait at rest.
                 if (state_ != ControllerState::waiting) {
                     state_ = ControllerState::waiting;
                     set_waiting(true, now);
-                    v3_starved();
+                    tell_room();
                 }
                 return false;
             }
@@ -396,13 +356,23 @@ bool SimController::v3_poll(double now) {
                 state_ = ControllerState::running;
                 set_waiting(false, now);
             }
-            v3_strike_move(now);
+            strike_move(now);
             return true;
     }
     return false;
 }
 
-void SimController::v3_advance(double t) {
+std::optional<double> SimControllerV3::next_event() const {
+    std::optional<double> t;
+    auto consider = [&](std::optional<double> v) {
+        if (v && (!t || *v < *t)) t = v;
+    };
+    if (phase_busy_) consider(phase_end_);
+    consider(reload_at_);
+    return t;
+}
+
+void SimControllerV3::advance(double t) {
     for (;;) {
         // The earliest of: the phase under way ends, the operator loads paper.
         std::optional<double> next;
@@ -421,8 +391,8 @@ void SimController::v3_advance(double t) {
         }
         // The main loop: poll the executor until it waits for something.
         bool progressed = false;
-        while (!phase_busy_ && v3_poll(now_)) progressed = true;
-        if (session_) v3_report_room();
+        while (!phase_busy_ && poll(now_)) progressed = true;
+        report_room(v3::kMaxPayload);
         if (next && *next <= t) continue;
         if (!progressed) break;
     }

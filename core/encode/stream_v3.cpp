@@ -178,7 +178,7 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
                     return fail(ErrorKind::input, "moves reach carriage step " + std::to_string(carriage.pos) +
                                     " but the strike is planned at " + std::to_string(pass.strikes[i].carriage_step),
                                 mw);
-                const std::uint8_t h = pass.strikes[i].hammer == plan::Hammer::concave ? 0x80 : 0x00;
+                const std::uint8_t h = pass.strikes[i].hammer == plan::Hammer::concave ? v3::entry::concave : 0x00;
                 if (i == 0) {
                     first_units = *u;
                     first_neg = m.steps < 0;
@@ -191,10 +191,10 @@ Result<JobStream> encode_job_v3(const plan::JobPlan& plan, const machine::Firmwa
                             return fail(ErrorKind::input, "the pass's strikes do not all run one way", mw);
                         sweep_neg = m.steps < 0;
                     }
-                    if (*u < 64) {
+                    if (*u <= v3::entry::dist) {
                         entries.push_back(static_cast<std::uint8_t>(h | *u));
                     } else if (*u < 0x4000) {
-                        entries.push_back(static_cast<std::uint8_t>(h | 0x40 | (*u >> 8)));
+                        entries.push_back(static_cast<std::uint8_t>(h | v3::entry::ext | (*u >> 8)));
                         entries.push_back(static_cast<std::uint8_t>(*u & 0xFF));
                     } else {
                         return fail(ErrorKind::input, "a strike " + std::to_string(*u) + " grid units from the last", mw);

@@ -48,7 +48,14 @@ inline constexpr std::uint8_t no_feed = 0x02;
 inline constexpr std::uint8_t sweep_neg = 0x04;
 inline constexpr std::uint8_t first_neg = 0x08;
 inline constexpr std::uint8_t skip = 0x10;
+inline constexpr std::uint8_t all = 0x1F;  // any other bit set: a malformed record
 }  // namespace pass_flag
+// A strike entry's first byte: h e dddddd, a second distance byte when e.
+namespace entry {
+inline constexpr std::uint8_t concave = 0x80;  // h: the concave hammer (the back side's dot)
+inline constexpr std::uint8_t ext = 0x40;      // e: a second byte of distance follows
+inline constexpr std::uint8_t dist = 0x3F;     // the distance (its high bits when e)
+}  // namespace entry
 }  // namespace v3
 
 // The plan as a v3 job stream from `start`. JobStream::op_ends holds the end

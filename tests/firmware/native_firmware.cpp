@@ -131,7 +131,7 @@ void NativeFirmware::power_loss(double now) {
     boot(false);
 }
 
-// One phase on the timer, scheduled from its last event (SimController::v3_phase).
+// One phase on the timer, scheduled from its last event (SimControllerV3::phase).
 void NativeFirmware::phase(std::uint64_t first_ticks, std::uint64_t total_ticks) {
     if (first_ticks < kMinTimerGap) {
         total_ticks += kMinTimerGap - first_ticks;

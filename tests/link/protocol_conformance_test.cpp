@@ -394,7 +394,7 @@ TEST_P(Conformance, TheWindowIsTheRing) {
     hello(0);
     configure_v3(1);
     const std::size_t ring = controller::v3::kRingBytes;
-    const std::size_t max_ops = controller::v3::kMaxPayload - 2;
+    const std::size_t max_ops = controller::v3::kMaxOps;
     send_data(2, std::vector<std::uint8_t>(max_ops + 1, encode::v3::op_sheet_end));
     expect_nak(NakReason::bad_payload, 2);
     std::uint8_t seq = paused_job(2, 0x0777);

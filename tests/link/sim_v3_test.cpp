@@ -284,7 +284,7 @@ TEST(SimV3, RandomValidFramesNeverBreakTheController) {
             } else if (type == 3) {
                 // Ops from the v3 alphabet and random bytes.
                 static constexpr std::uint8_t kOps[] = {0x10, 0x11, 0x12, 0x13, 0x14, 0x40, 0x42, 0x43};
-                std::vector<std::uint8_t> ops(1 + rng() % 31);
+                std::vector<std::uint8_t> ops(1 + rng() % controller::v3::kMaxOps);
                 for (auto& b : ops) b = rng() % 2 ? kOps[rng() % 8] : static_cast<std::uint8_t>(rng());
                 payload = encode::data_payload_v3(ops);
             }
