@@ -23,6 +23,8 @@ DotOptions dot_options(const profile::PrinterProfile& m, const machine::Firmware
     return o;
 }
 
+double simplify_tolerance_mm(const DotOptions& o) { return std::min(o.x_step_mm, o.y_step_mm); }
+
 Area page_area(const profile::PrinterProfile& m) {
     return {m.paper.margin_left_mm, m.paper.margin_top_mm, m.paper.width_mm - m.paper.margin_right_mm,
             m.paper.height_mm - m.paper.margin_bottom_mm};
