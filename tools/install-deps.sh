@@ -11,7 +11,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-16 libclang-rt-16-dev
   liblouis-dev liblouis-bin liblouis-data
   libserialport-dev libhidapi-dev libieee1284-3-dev libsqlite3-dev
-  libpugixml-dev nlohmann-json3-dev libcli11-dev libuchardet-dev libicu-dev
+  libpugixml-dev libpng-dev libjpeg62-turbo-dev nlohmann-json3-dev libcli11-dev libuchardet-dev libicu-dev
   libmd4c-dev libzip-dev libgumbo-dev pandoc libgtest-dev libgmock-dev googletest libeigen3-dev
   qt6-base-dev qt6-charts-dev qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools libgl-dev

@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "graphic/graphic_page.hpp"
+#include "graphic/raster_trace.hpp"
 #include "graphic/svg_import.hpp"
 #include "layout/braille_pages.hpp"
 #include "platform/console.hpp"
@@ -15,7 +16,7 @@
 namespace tactus::cli {
 
 void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
-    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf, .pef, or an .svg drawing (a tactile graphic)")->required();
+    cmd.add_option("file", file, "Document: .txt, .md, .docx, .odt, .html, .epub, .xml (DTBook), .brf, .pef, or an .svg drawing or a .png/.jpg picture (a tactile graphic)")->required();
     cmd.add_option("--table,-t", tables, "liblouis table list (see `tactus-cli tables`)")
         ->capture_default_str();
     language.add_to(cmd);
@@ -45,6 +46,10 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--margin-right", margin_right, "Right margin in cells");
     cmd.add_option("--margin-top", margin_top, "Top margin in lines");
     cmd.add_option("--margin-bottom", margin_bottom, "Bottom margin in lines");
+    cmd.add_option("--image-threshold", image_threshold,
+                   "A .png/.jpg picture: the grey level (0 black to 254) at or below which a pixel is ink; "
+                   "default: Otsu's threshold for the picture")
+        ->check(CLI::Range(0, 254));
     cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, html, epub, dtbook, brf, pef")
         ->capture_default_str();
     cmd.add_flag("--volumes", volumes,
@@ -153,14 +158,20 @@ private:
 layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
                                       const profile::PrinterProfile* machine,
                                       const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol) {
-    if (graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg")) {
+    const bool svg = graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg");
+    const bool picture = graphic::is_raster_path(args.file) && args.format == "auto";
+    if (svg || picture) {
         const auto m = machine ? *machine : profile::default_profile();
         std::optional<machine::FirmwareTables> grid = firmware;
         if (!grid && !legacy_protocol)
             if (auto made = profile::make_firmware_tables(m)) grid = std::move(*made);
-        const auto drawing = require(graphic::load_svg(args.file));
+        const auto dots = graphic::dot_options(m, grid ? &*grid : nullptr);
+        graphic::TraceOptions trace;
+        trace.threshold = args.image_threshold;
+        trace.simplify_mm = graphic::simplify_tolerance_mm(dots);
+        const auto drawing = require(svg ? graphic::load_svg(args.file) : graphic::load_image(args.file, trace));
         const auto table = require(translate::Translator::open(options.tables), exit_usage);
-        auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, graphic::dot_options(m, grid ? &*grid : nullptr)));
+        auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, dots));
         for (const auto& w : laid.document.warnings)
             std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
         return std::move(laid.document);

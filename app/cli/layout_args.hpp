@@ -19,6 +19,7 @@ struct LayoutArgs {
     LanguageArgs language;
     std::string preset;
     std::string format = "auto";
+    int image_threshold = -1;  // a picture's ink threshold; -1: Otsu's
     std::string encoding;
     std::string ruby = "after";
     std::string page_numbers = "bottom-right";
@@ -48,7 +49,7 @@ struct LayoutArgs {
 // Imports `args.file`, tells the user before anything else happens when
 // ready-made braille does not fit the page (exit_page_too_small) or the table
 // does not suit the text (a warning), then lays it out. Warnings go to stderr.
-// An SVG drawing becomes a graphic page for `machine` (the bundled profile
+// An SVG drawing or a PNG/JPEG picture (its dark regions traced) becomes a graphic page for `machine` (the bundled profile
 // when none is given): its dots are placed on that machine's step grid.
 // `firmware`: the tables of a protocol-3 plan, whose grid the dots then keep
 // (graphic::dot_options); without them, the grid of the tables the profile

@@ -18,10 +18,18 @@ DotOptions dot_options(const profile::PrinterProfile& m, const machine::Firmware
     // Half the dot pitch: the distance the back offset keeps between the dots
     // of the two sides so that neither crushes the other (plan::min_dot_separation_mm).
     o.min_distance_mm = m.geometry.dot_pitch_mm / 2;
-    o.spacing_mm = std::max(o.spacing_mm, o.min_distance_mm * 1.2);
+    // The spacings the profile gives (profile::validate keeps a line's at
+    // least 1.2 times the least distance).
+    o.spacing_mm = m.graphic.line_dot_spacing_mm;
+    o.dotted_spacing_mm = m.graphic.dotted_dot_spacing_mm;
+    o.dash_gap_mm = m.graphic.dash_gap_mm;
+    o.texture_pitch_mm = m.graphic.texture_pitch_mm;
+    o.texture_spacing_mm = m.graphic.texture_dot_spacing_mm;
     o.label_clearance_mm = 2 * m.geometry.dot_pitch_mm;
     return o;
 }
+
+double simplify_tolerance_mm(const DotOptions& o) { return std::min(o.x_step_mm, o.y_step_mm); }
 
 Area page_area(const profile::PrinterProfile& m) {
     return {m.paper.margin_left_mm, m.paper.margin_top_mm, m.paper.width_mm - m.paper.margin_right_mm,

@@ -20,6 +20,10 @@ namespace tactus::graphic {
 // and 50 feed steps for the bundled profile: 0.25 mm across, 1.25 mm down).
 DotOptions dot_options(const profile::PrinterProfile& machine, const machine::FirmwareTables* firmware = nullptr);
 
+// How far a picture's traced outline may stray from its pixel contour: the
+// finer of the grid's two steps: the dots are rounded that far anyway.
+double simplify_tolerance_mm(const DotOptions& options);
+
 // The area a graphic may use: the paper inside the profile's margins.
 Area page_area(const profile::PrinterProfile& machine);
 

@@ -136,6 +136,19 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
                     "is an SVG drawing: Tactus embosses it as a tactile graphic laid out for a printer "
                     "(tactus-cli layout, plan or emboss with the file; docs/graphics.md), not as a document's text",
                     where);
+    // So is a PNG or JPEG picture: read as text it would be its bytes.
+    if (options.format == SourceFormat::automatic) {
+        const auto ext = extension_of(name);
+        const bool png = ext == "png" || bytes.starts_with("\x89PNG\r\n\x1a\n");
+        const bool jpeg = ext == "jpg" || ext == "jpeg" || bytes.starts_with("\xFF\xD8\xFF");
+        if (png || jpeg)
+            return fail(ErrorKind::input,
+                        std::string("is a ") + (png ? "PNG" : "JPEG") +
+                            " picture: Tactus embosses it as a tactile graphic traced from its dark regions, laid out "
+                            "for a printer (tactus-cli layout, plan or emboss with the file; docs/graphics.md), not as "
+                            "a document's text",
+                        where);
+    }
     const auto format = options.format == SourceFormat::automatic
                             ? detect_source_format(bytes, name)
                             : options.format;

@@ -96,6 +96,18 @@ struct Vibration {
     bool operator==(const Vibration&) const = default;
 };
 
+// The dot spacings of tactile graphics (docs/graphics.md, "Dots", which cites
+// where the defaults come from): along a solid line, along a dotted one, the
+// gap between a dashed line's dashes, and a texture's rows and the dots along them.
+struct Graphic {
+    double line_dot_spacing_mm = 1.5;
+    double dotted_dot_spacing_mm = 3.0;
+    double dash_gap_mm = 4.5;
+    double texture_pitch_mm = 5.0;
+    double texture_dot_spacing_mm = 2.5;
+    bool operator==(const Graphic&) const = default;
+};
+
 struct PrinterProfile {
     std::string name = "Tactus A4 interpoint (source embosser)";
     Paper paper;
@@ -110,6 +122,7 @@ struct PrinterProfile {
     Motion motion;
     Dynamics dynamics;
     Vibration vibration;
+    Graphic graphic;
     bool operator==(const PrinterProfile&) const = default;
 };
 

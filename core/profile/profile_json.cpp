@@ -200,6 +200,12 @@ json to_json(const PrinterProfile& p) {
          {{"tolerance_um", p.vibration.tolerance_um},
           {"damping_band", p.vibration.damping_band},
           {"frequency_band", p.vibration.frequency_band}}},
+        {"graphic",
+         {{"line_dot_spacing_mm", p.graphic.line_dot_spacing_mm},
+          {"dotted_dot_spacing_mm", p.graphic.dotted_dot_spacing_mm},
+          {"dash_gap_mm", p.graphic.dash_gap_mm},
+          {"texture_pitch_mm", p.graphic.texture_pitch_mm},
+          {"texture_dot_spacing_mm", p.graphic.texture_dot_spacing_mm}}},
     };
 }
 
@@ -211,7 +217,7 @@ Result<PrinterProfile> from_json(const json& j) {
     p.dynamics.motor_stiffness_nm_rad = 0;
     static constexpr const char* kSections[] = {"name",     "paper", "geometry", "head",
                                                  "carriage", "feed",  "motion",   "dynamics",
-                                                 "vibration"};
+                                                 "vibration", "graphic"};
     for (const auto& [key, value] : j.items()) {
         (void)value;
         bool known = false;
@@ -262,6 +268,15 @@ Result<PrinterProfile> from_json(const json& j) {
                            {{"tolerance_um", &p.vibration.tolerance_um},
                             {"damping_band", &p.vibration.damping_band},
                             {"frequency_band", &p.vibration.frequency_band}});
+    // Optional, as a section and field by field: a profile written before it
+    // existed, or one that changes a single spacing, keeps the other defaults.
+    if (r && j.contains("graphic"))
+        r = read_object(j, "graphic",
+                        {{"line_dot_spacing_mm", &p.graphic.line_dot_spacing_mm, true},
+                         {"dotted_dot_spacing_mm", &p.graphic.dotted_dot_spacing_mm, true},
+                         {"dash_gap_mm", &p.graphic.dash_gap_mm, true},
+                         {"texture_pitch_mm", &p.graphic.texture_pitch_mm, true},
+                         {"texture_dot_spacing_mm", &p.graphic.texture_dot_spacing_mm, true}});
     if (!r) return std::unexpected(r.error());
     TACTUS_TRY_VOID(validate(p));
     return p;

@@ -148,6 +148,23 @@ std::optional<ProfileProblem> first_problem(const PrinterProfile& p) {
     const double half_step_um = 500.0 / p.carriage.steps_per_mm;
     c.require(!(v.tolerance_um < half_step_um),
               {"vibration.tolerance_um", ProblemKind::finer_than_half_step, v.tolerance_um, half_step_um, 0, 0, "um"});
+
+    // Graphics: bounds from the cell's dot pitch. Along a line, no closer than
+    // 1.2 half pitches: half a pitch is the hammer's least distance between
+    // any two dots (plan::min_dot_separation_mm), and the fifth more keeps
+    // neighbours apart after each is rounded onto the grid. No wider than two
+    // pitches: beyond that a finger reads a row of dots, not a line.
+    const auto& gr = p.graphic;
+    const double pitch = g.dot_pitch_mm;
+    c.range(gr.line_dot_spacing_mm, 0.6 * pitch, 2 * pitch, "graphic.line_dot_spacing_mm", "mm");
+    // A dotted line and a dashed line's gaps must be told from a solid line:
+    // dots half as far apart again, gaps of at least two spacings (one dot left out).
+    c.range(gr.dotted_dot_spacing_mm, 1.5 * gr.line_dot_spacing_mm, 20, "graphic.dotted_dot_spacing_mm", "mm");
+    c.range(gr.dash_gap_mm, 2 * gr.line_dot_spacing_mm, 30, "graphic.dash_gap_mm", "mm");
+    // A texture's rows at least a dot pitch apart (closer, the area feels solid)
+    // and its dots no closer than a line's.
+    c.range(gr.texture_pitch_mm, pitch, 50, "graphic.texture_pitch_mm", "mm");
+    c.range(gr.texture_dot_spacing_mm, 0.6 * pitch, 50, "graphic.texture_dot_spacing_mm", "mm");
     return c.first;
 }
 

@@ -22,6 +22,8 @@
 #include "profile/controller_config.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/page_geometry.hpp"
+#include "profile/profile_json.hpp"
+#include "common/file_io.hpp"
 #include "profile/profile.hpp"
 #include "translate/catalogue.hpp"
 
@@ -198,6 +200,73 @@ TEST(GraphicPipeline, TheSpoolSnapshotKeepsTheGraphicsDots) {
 
 // Where a document's text is imported (the app, a queued file), an SVG is
 // refused with the reason, not read as text.
+// The profile's graphic spacings reach the dots: a solid line's dots at the
+// profile's spacing, a dotted line's at its own, a texture's rows at its
+// pitch; and the CLI plans with them from a --profile file.
+TEST(GraphicPipeline, TheProfilesSpacingsPlaceTheDots) {
+    const std::string svg =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"150mm\" height=\"100mm\" viewBox=\"0 0 150 100\">"
+        "<path d=\"M10 10 H130\" stroke=\"black\"/>"
+        "<path d=\"M10 30 H130\" stroke=\"black\" stroke-dasharray=\"0.5 2\"/>"
+        "<rect x=\"10\" y=\"45\" width=\"120\" height=\"50\" fill=\"black\"/></svg>";
+    const auto d = graphic::read_svg(svg);
+    ASSERT_TRUE(d) << d.error().to_string();
+    const auto t = translate::Translator::open(translate::kDefaultTable);
+    ASSERT_TRUE(t);
+    // Counted per kind and row, on one motor step of grid (protocol 2) so no grid rounding hides a spacing.
+    struct Counts {
+        std::size_t solid = 0, dotted = 0, texture_rows = 0;
+    };
+    const auto count = [&](const profile::PrinterProfile& prof) {
+        const auto g = graphic::lay_out_drawing(*d, prof, profile::page_geometry(prof), *t, graphic::dot_options(prof));
+        EXPECT_TRUE(g) << g.error().to_string();
+        Counts c;
+        std::set<long long> rows;
+        const double top = prof.paper.margin_top_mm;
+        for (const auto& dot : g->dots.dots) {
+            if (dot.kind == graphic::DotKind::texture) rows.insert(std::llround(dot.at.y * 100));
+            if (dot.kind != graphic::DotKind::line) continue;
+            if (std::abs(dot.at.y - (top + 10)) < 0.1) ++c.solid;
+            if (std::abs(dot.at.y - (top + 30)) < 0.1) ++c.dotted;
+        }
+        c.texture_rows = rows.size();
+        return c;
+    };
+    const auto by_default = count(profile::default_profile());
+    EXPECT_EQ(by_default.solid, 81U);   // 120 mm at 1.5 mm: 80 intervals
+    EXPECT_EQ(by_default.dotted, 41U);  // at 3 mm: 40
+    auto prof = profile::default_profile();
+    prof.graphic.line_dot_spacing_mm = 2.0;
+    prof.graphic.dotted_dot_spacing_mm = 4.0;
+    prof.graphic.texture_pitch_mm = 7.5;
+    ASSERT_TRUE(profile::validate(prof));
+    const auto changed = count(prof);
+    EXPECT_EQ(changed.solid, 61U);
+    EXPECT_EQ(changed.dotted, 31U);
+    EXPECT_LT(changed.texture_rows, by_default.texture_rows);
+    EXPECT_GT(changed.texture_rows, 0U);
+
+    // The CLI reads the spacings from the profile it plans for.
+    const auto dir = std::filesystem::temp_directory_path() / ("tactus-graphic-profile-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    ASSERT_TRUE(write_file_atomic(dir / "line.svg", svg));
+    ASSERT_TRUE(write_file_atomic(dir / "machine.json", profile::to_json(prof).dump(2)));
+    const auto with_default = cli({"plan", "--protocol", "2", (dir / "line.svg").string()});
+    const auto with_profile = cli({"plan", "--protocol", "2", "--profile", (dir / "machine.json").string(), (dir / "line.svg").string()});
+    std::filesystem::remove_all(dir);
+    ASSERT_EQ(with_default.code, 0) << with_default.out;
+    ASSERT_EQ(with_profile.code, 0) << with_profile.out;
+    const auto strikes = [](const std::string& out) {
+        const auto at = out.find(" strikes");
+        const auto from = out.rfind(' ', at - 1);
+        return out.substr(from + 1, at - from - 1);
+    };
+    EXPECT_NE(strikes(with_default.out), strikes(with_profile.out)) << with_default.out << with_profile.out;
+    const auto g = graphic::lay_out_drawing(*d, prof, profile::page_geometry(prof), *t, graphic::dot_options(prof));
+    ASSERT_TRUE(g);
+    EXPECT_EQ(strikes(with_profile.out), std::to_string(g->dots.dots.size())) << with_profile.out;
+}
+
 TEST(GraphicPipeline, TheTextImporterRefusesAnSvg) {
     const auto r = import::import_file(kShapes, {});
     ASSERT_FALSE(r);

@@ -238,3 +238,52 @@ TEST(ProfileProblem, GivesTheFieldTheKindAndTheNumbers) {
     EXPECT_GT(wide->value, wide->limit);
     EXPECT_FALSE(first_problem(default_profile()));
 }
+
+// The graphic dot spacings: read, written, optional (a profile from before
+// the section, or one setting a single spacing, keeps the defaults), and
+// refused outside their physical range with the field and the bounds.
+TEST(ProfileGraphic, SpacingsRoundTripAndAreOptional) {
+    auto p = default_profile();
+    p.graphic = {2.0, 3.5, 5.0, 6.0, 3.0};
+    const auto back = parse_profile(to_json(p).dump());
+    ASSERT_TRUE(back) << back.error().to_string();
+    EXPECT_EQ(back->graphic, p.graphic);
+    const auto without = edited([](json& j) { j.erase("graphic"); });
+    ASSERT_TRUE(without) << without.error().to_string();
+    EXPECT_EQ(without->graphic, Graphic{});
+    const auto one = edited([](json& j) {
+        j["graphic"] = json::object();
+        j["graphic"]["line_dot_spacing_mm"] = 1.8;
+    });
+    ASSERT_TRUE(one) << one.error().to_string();
+    EXPECT_DOUBLE_EQ(one->graphic.line_dot_spacing_mm, 1.8);
+    EXPECT_DOUBLE_EQ(one->graphic.texture_pitch_mm, Graphic{}.texture_pitch_mm);
+    expect_error(edited([](json& j) { j["graphic"]["line_spacing"] = 1.5; }), "field graphic.line_spacing",
+                 "unknown field");
+}
+
+TEST(ProfileGraphic, OutOfRangeSpacingsAreRefused) {
+    // Closer than 1.2 half dot pitches: the hammer's least distance after rounding.
+    expect_error(edited([](json& j) { j["graphic"]["line_dot_spacing_mm"] = 1.0; }),
+                 "field graphic.line_dot_spacing_mm", "is 1 mm, must be between 1.5 and 5 mm");
+    expect_error(edited([](json& j) { j["graphic"]["line_dot_spacing_mm"] = 6; }),
+                 "field graphic.line_dot_spacing_mm", "must be between 1.5 and 5 mm");
+    // A dotted line that a finger could not tell from a solid one.
+    expect_error(edited([](json& j) { j["graphic"]["dotted_dot_spacing_mm"] = 2.0; }),
+                 "field graphic.dotted_dot_spacing_mm", "must be between 2.25 and 20 mm");
+    expect_error(edited([](json& j) { j["graphic"]["dash_gap_mm"] = 2.0; }), "field graphic.dash_gap_mm",
+                 "must be between 3 and 30 mm");
+    expect_error(edited([](json& j) { j["graphic"]["texture_pitch_mm"] = 1.0; }), "field graphic.texture_pitch_mm",
+                 "must be between 2.5 and 50 mm");
+    expect_error(edited([](json& j) { j["graphic"]["texture_dot_spacing_mm"] = 0.5; }),
+                 "field graphic.texture_dot_spacing_mm", "must be between 1.5 and 50 mm");
+    expect_error(edited([](json& j) { j["graphic"]["dash_gap_mm"] = "wide"; }), "field graphic.dash_gap_mm",
+                 "must be a number");
+    // The bounds follow the cell's dot pitch: a 3 mm pitch needs 1.8 mm along a line.
+    const auto wider = edited([](json& j) {
+        j["geometry"]["dot_pitch_mm"] = 3.0;
+        j["geometry"]["back_offset_x_mm"] = 1.5;
+        j["geometry"]["back_offset_y_mm"] = 1.5;
+    });
+    expect_error(wider, "field graphic.line_dot_spacing_mm", "must be between 1.8 and 6 mm");
+}
