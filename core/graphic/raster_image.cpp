@@ -134,7 +134,7 @@ int decode_jpeg(const unsigned char* data, unsigned long size, JpegErrors* error
     return errors->warning[0] != '\0' ? 1 : 0;
 }
 
-std::string lower(std::string s) {
+std::string ascii_lower(std::string s) {
     for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
 }
@@ -209,7 +209,7 @@ Result<GreyImage> read_raster(std::string_view bytes) {
 }
 
 bool is_raster_path(const std::filesystem::path& path) {
-    const auto e = lower(path.extension().string());
+    const auto e = ascii_lower(path.extension().string());
     return e == ".png" || e == ".jpg" || e == ".jpeg";
 }
 

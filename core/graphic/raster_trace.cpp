@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/file_io.hpp"
+#include "graphic/flatten.hpp"
 #include "common/try.hpp"
 
 namespace tactus::graphic {
@@ -81,14 +82,6 @@ private:
     std::unordered_map<std::uint64_t, Node> nodes_;
     std::vector<std::uint64_t> order_;
 };
-
-double distance_to_segment(Point p, Point a, Point b) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
-    t = std::clamp(t, 0.0, 1.0);
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
 
 // Douglas-Peucker on pts[first..last] (both kept), without recursion.
 void simplify_open(const std::vector<Point>& pts, std::size_t first, std::size_t last, double tolerance,
