@@ -2,11 +2,13 @@
 #include "pipeline/book_layout.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <optional>
 
 #include "common/utf8.hpp"
 #include "layout/paginator.hpp"
+#include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "common/try.hpp"
 
@@ -37,23 +39,24 @@ struct Heading {
 class BookMaker {
 public:
     BookMaker(const document::Document& doc, const layout::LayoutOptions& layout, const BookOptions& book,
-              const translate::Translator& translator)
-        : doc_(doc), layout_(layout), book_(book), translator_(translator) {
+              const translate::Translator& translator, unsigned workers)
+        : doc_(doc), layout_(layout), book_(book), translator_(translator), workers_(workers) {
         body_ = layout_;
         if (book_.running_heads) body_.top_margin += 1;  // line 1 holds the running head (§1.8)
     }
 
     Result<BookLayout> make() {
-        TACTUS_TRY_VOID(translate_all());
-        // First pass: where each block falls, to choose the volume breaks.
+        // First pass, as the blocks come from translation: where each block
+        // falls, to choose the volume breaks.
         std::vector<std::size_t> start_page;
         std::size_t total_pages = 0;
         {
             layout::Paginator p(body_, [this](int n) { return number(n); });
-            for (const auto& b : blocks_) {
+            TACTUS_TRY_VOID(translate_all([&](translate::TranslatedBlock b) {
                 start_page.push_back(p.pages_closed());
                 p.add(b);
-            }
+                blocks_.push_back(std::move(b));
+            }));
             total_pages = std::move(p).finish().pages.size();
             if (error_) return std::unexpected(*error_);
         }
@@ -126,11 +129,21 @@ public:
     }
 
 private:
-    Result<void> translate_all() {
+    // Each block of the body translated, in document order, to `take`.
+    Result<void> translate_all(const std::function<void(translate::TranslatedBlock)>& take) {
+        const auto room = [this](const document::Block& b) { return layout::word_room(body_, b.kind, b.level); };
+        if (workers_ > 1 && TranslationWorkers::available()) {
+            TACTUS_TRY(pool, TranslationWorkers::start(doc_, translator_, workers_, 64, room));
+            for (;;) {
+                TACTUS_TRY(block, pool.next());
+                if (!block) return {};
+                take(std::move(*block));
+            }
+        }
         for (const auto& b : doc_.blocks) {
-            auto tb = translate::translate_block(b, translator_, layout::word_room(body_, b.kind, b.level));
+            auto tb = translate::translate_block(b, translator_, room(b));
             if (!tb) return std::unexpected(located(tb.error(), doc_.source_name));
-            blocks_.push_back(std::move(*tb));
+            take(std::move(*tb));
         }
         return {};
     }
@@ -340,6 +353,7 @@ private:
     layout::LayoutOptions body_;
     BookOptions book_;
     const translate::Translator& translator_;
+    unsigned workers_;
     std::vector<translate::TranslatedBlock> blocks_;
     std::vector<Heading> headings_;
     std::map<int, BrailleLine> numbers_;
@@ -349,9 +363,10 @@ private:
 }  // namespace
 
 Result<BookLayout> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
-                                const BookOptions& book, const translate::Translator& translator) {
+                                const BookOptions& book, const translate::Translator& translator,
+                                unsigned translation_workers) {
     if (book.sheets_per_volume < 2) return fail(ErrorKind::usage, "sheets per volume must be at least 2", "sheets-per-volume");
-    return BookMaker(document, layout, book, translator).make();
+    return BookMaker(document, layout, book, translator, translation_workers).make();
 }
 
 }  // namespace tactus::pipeline

@@ -49,9 +49,12 @@ struct BookLayout {
     std::vector<VolumeRange> volumes;
 };
 
-// `number_cells` renders a body page number in the document's code (the
-// pipeline's digits); the translator gives the title page and contents text.
+// The translator gives the body, the title page and contents text and the
+// page numbers. `translation_workers` above 1 translates the body in that many
+// forked processes (pipeline/translation_workers.hpp), as the plain layout
+// does; the pages are the same either way.
 Result<BookLayout> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
-                                const BookOptions& book, const translate::Translator& translator);
+                                const BookOptions& book, const translate::Translator& translator,
+                                unsigned translation_workers = 1);
 
 }  // namespace tactus::pipeline

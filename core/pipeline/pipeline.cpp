@@ -97,8 +97,12 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     TACTUS_TRY(translator, translate::open_translator(options.tables, options.language_switch));
     // The second language's tables are compiled once, here, not in every worker.
     if (const auto* sw = translator.language_switch()) TACTUS_TRY_VOID(sw->prepare(document));
+    // Forked workers translate a big document, for the book layout and the plain one alike.
+    const unsigned workers = options.translation_workers != 0
+                                 ? options.translation_workers
+                                 : TranslationWorkers::suggested_workers(document);
     if (options.book) {
-        TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator));
+        TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator, workers));
         auto doc = std::move(book.pages);
         doc.metadata = document.metadata;
         std::vector<std::string> first = document.warnings;
@@ -135,9 +139,6 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
         return finish(std::move(paginator), std::move(script_warnings), document);
     }
 
-    const unsigned workers = options.translation_workers != 0
-                                 ? options.translation_workers
-                                 : TranslationWorkers::suggested_workers(document);
     if (workers > 1 && TranslationWorkers::available()) {
         auto pool = TranslationWorkers::start(document, translator, workers, 64, room);
         std::size_t done = 0, index = 0;

@@ -135,6 +135,7 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     tb.level = b.level;
     tb.span = std::max(1, b.span);
     tb.source_line = b.source_line;
+    tb.box = b.box;
     if (b.kind == document::BlockKind::braille) tb.lines = b.braille_lines;
     if (b.kind == document::BlockKind::print_page_break) tb.label = std::move(cells);
     else tb.cells = std::move(cells);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
+#include <optional>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -67,12 +68,16 @@ document::Document structured_blocks(std::size_t n) {
     return d;
 }
 
-// Forked workers give byte-identical pages to the in-process translator.
-void expect_workers_match(const document::Document& doc, unsigned workers, std::size_t min_pages) {
+// Forked workers give byte-identical pages to the in-process translator, in
+// the plain layout or, given `book`, the book layout.
+void expect_workers_match(const document::Document& doc, unsigned workers, std::size_t min_pages,
+                          std::optional<pipeline::BookOptions> book = std::nullopt) {
     pipeline::PipelineOptions single;
     single.translation_workers = 1;
+    single.book = book;
     pipeline::PipelineOptions parallel;
     parallel.translation_workers = workers;
+    parallel.book = book;
     const auto a = pipeline::lay_out(doc, single);
     const auto b = pipeline::lay_out(doc, parallel);
     ASSERT_TRUE(a) << a.error().to_string();
@@ -86,6 +91,36 @@ void expect_workers_match(const document::Document& doc, unsigned workers, std::
 // Structure blocks (notes, quotes, tables) through forked workers: the same
 // pages as in process.
 TEST(Pipeline, WorkersCarryStructureBlocks) { expect_workers_match(structured_blocks(400), 2, 10); }
+
+// Boxed blocks through forked workers: each block keeps its box, so the box
+// lines are drawn where they are in process.
+document::Document boxed_blocks(std::size_t n) {
+    auto doc = structured_blocks(n);
+    for (std::size_t i = 0; i < doc.blocks.size(); ++i)
+        if (i % 40 >= 30) doc.blocks[i].box = static_cast<int>(i / 40) + 1;
+    return doc;
+}
+
+TEST(Pipeline, WorkersKeepBoxes) {
+    const auto doc = boxed_blocks(400);
+    pipeline::PipelineOptions o;
+    o.translation_workers = 1;
+    const auto in_process = pipeline::lay_out(doc, o);
+    ASSERT_TRUE(in_process) << in_process.error().to_string();
+    EXPECT_NE(exporter::to_brf(*in_process).value(), exporter::to_brf(*pipeline::lay_out(structured_blocks(400), o)).value())
+        << "the boxes change the pages";
+    expect_workers_match(doc, 2, 10);
+}
+
+// The book layout through forked workers: the same volumes, contents and
+// running heads as in process.
+TEST(Pipeline, WorkersLayOutTheSameBook) {
+    pipeline::BookOptions book;
+    book.sheets_per_volume = 20;
+    book.title = "Generated";
+    expect_workers_match(many_blocks(1500), 3, 50, book);
+    expect_workers_match(boxed_blocks(400), 2, 10, book);
+}
 
 // Passages in another language through forked workers: the second tables are
 // opened before the fork, and the pages are the in-process ones.
