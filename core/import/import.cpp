@@ -105,12 +105,15 @@ std::string_view source_format_name(SourceFormat format) {
 SourceFormat detect_source_format(std::string_view bytes, std::string_view name) {
     if (const auto f = format_from_extension(extension_of(name))) return *f;
     if (bytes.starts_with("PK\x03\x04")) {
-        // OpenDocument and EPUB packages store their type, uncompressed, as the first entry.
-        if (bytes.substr(30, 8) == "mimetype" &&
-            bytes.substr(38).starts_with("application/vnd.oasis.opendocument.text"))
-            return SourceFormat::odt;
-        if (bytes.substr(30, 8) == "mimetype" && bytes.substr(38).starts_with("application/epub+zip"))
-            return SourceFormat::epub;
+        // OpenDocument and EPUB packages store their type, uncompressed, as the
+        // first entry: its name at byte 30 of the local header, its content
+        // after it. A file cut short before them is a damaged DOCX to its reader.
+        constexpr std::size_t kName = 30, kContent = kName + 8;
+        const auto stored_type = bytes.size() >= kContent && bytes.substr(kName, 8) == "mimetype"
+                                     ? bytes.substr(kContent)
+                                     : std::string_view{};
+        if (stored_type.starts_with("application/vnd.oasis.opendocument.text")) return SourceFormat::odt;
+        if (stored_type.starts_with("application/epub+zip")) return SourceFormat::epub;
         return SourceFormat::docx;
     }
     // An .xml file is told by its root element: DTBook (NIMAS), XHTML, PEF.
