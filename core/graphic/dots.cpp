@@ -80,10 +80,15 @@ private:
 };
 
 // n intervals of a stroke of length L: about `spacing` each, never under `floor_mm`.
+// Counted in double and bounded before the conversion: a damaged drawing's
+// stroke can be far longer than any integer (fuzz_graphic_svg found 2.9e41 mm).
+// A million intervals is 1.5 km of line at 1.5 mm, far beyond any page; the
+// dots past the page are left out and counted anyway.
+constexpr double kMaxIntervals = 1 << 20;
 int intervals(double L, double spacing, double floor_mm) {
-    auto n = static_cast<long long>(std::llround(L / spacing));
-    n = std::min<long long>(n, static_cast<long long>(std::floor(L / floor_mm)));
-    return static_cast<int>(std::clamp<long long>(n, 1, 1 << 24));
+    const double n = std::min(std::round(L / spacing), std::floor(L / floor_mm));
+    if (!(n >= 1)) return 1;
+    return static_cast<int>(std::min(n, kMaxIntervals));
 }
 
 // Arc lengths of a stroke's dots in its style's pattern.
@@ -108,7 +113,8 @@ std::vector<double> pattern(double L, bool closed, LineStyle style, const DotOpt
     // Dashed: m dashes of three dots two spacings long, the gaps between them even.
     const double dash = 2 * o.spacing_mm;
     const double period = dash + o.dash_gap_mm;
-    long long m = closed ? std::llround(L / period) : std::llround((L + o.dash_gap_mm) / period);
+    const double dashes = std::round(closed ? L / period : (L + o.dash_gap_mm) / period);
+    long long m = dashes >= 1 ? static_cast<long long>(std::min(dashes, kMaxIntervals)) : 0;
     const auto gap_of = [&](long long k) { return closed ? L / static_cast<double>(k) - dash
                                                          : (L - static_cast<double>(k) * dash) / static_cast<double>(k - 1); };
     while (m > 1 && gap_of(m) < 2 * o.spacing_mm) --m;

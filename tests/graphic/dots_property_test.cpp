@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
@@ -281,6 +283,26 @@ TEST(GraphicDots, ALabelWithNoRoomGoesToTheKey) {
     std::size_t found = 0;
     for (const auto& d : placed.dots.dots) found += d.kind == DotKind::label && d.source == 1;
     EXPECT_GT(found, 0U);
+}
+
+}  // namespace
+}  // namespace tactus::graphic
+
+namespace tactus::graphic {
+namespace {
+
+// A damaged drawing (found by fuzz_graphic_svg) whose stroke is 2.9e41 mm
+// long: counting its dot intervals converted that length to an integer,
+// undefined behaviour the sanitizer build stops on. The count is now bounded
+// before the conversion; the dots that land stay on the page.
+TEST(DotsDamagedDrawing, AStrokeLongerThanAnyIntegerIsPlacedWithoutOverflow) {
+    std::ifstream in(std::string(TACTUS_TEST_DATA) + "/graphics/damaged/stroke_longer_than_an_integer.svg",
+                     std::ios::binary);
+    ASSERT_TRUE(in);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const Area area = page_area(kMachine);
+    const auto p = place(text, dot_options(kMachine), area);
+    for (const auto& dot : p.dots.dots) EXPECT_TRUE(area.contains(dot.at));
 }
 
 }  // namespace
