@@ -171,6 +171,16 @@ inline RunResult run_captured(const std::vector<std::string>& args, const std::s
     return r;
 }
 
+// Runs to completion with stderr merged into stdout (err stays empty): for a
+// test that reads a command's messages in the order they were written.
+inline RunResult run_merged(const std::vector<std::string>& args) {
+    Process p(args, Process::Options{{}, true, {}});
+    RunResult r;
+    r.out = p.read_all();
+    r.exit_code = p.wait();
+    return r;
+}
+
 // tactus-cli with these arguments.
 inline std::vector<std::string> cli(std::vector<std::string> args) {
     args.insert(args.begin(), TACTUS_CLI);

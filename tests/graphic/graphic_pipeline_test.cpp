@@ -147,34 +147,22 @@ TEST(GraphicPipeline, ADotOffThePaperIsRefusedByThePlanner) {
     EXPECT_NE(job.error().message.find("graphic dot 2"), std::string::npos) << job.error().message;
 }
 
-struct Run {
-    int code = -1;
-    std::string out;
-};
-
-Run cli(const std::vector<std::string>& args) {
-    std::vector<std::string> argv{TACTUS_CLI};
-    argv.insert(argv.end(), args.begin(), args.end());
-    test::Process p(argv, test::Process::Options{{}, true, {}});
-    Run r;
-    r.out = p.read_all();
-    r.code = p.wait();
-    return r;
-}
+// tactus-cli with these arguments, its messages merged into its output.
+test::RunResult cli(const std::vector<std::string>& args) { return test::run_merged(test::cli(args)); }
 
 TEST(GraphicPipeline, TheCliLaysOutPlansAndEmbossesAnSvg) {
     const auto layout = cli({"layout", kShapes, "--summary"});
-    ASSERT_EQ(layout.code, 0) << layout.out;
+    ASSERT_EQ(layout.exit_code, 0) << layout.out;
     EXPECT_NE(layout.out.find("graphic:"), std::string::npos) << layout.out;
     const auto plan = cli({"plan", kShapes});
-    ASSERT_EQ(plan.code, 0) << plan.out;
+    ASSERT_EQ(plan.exit_code, 0) << plan.out;
     const auto g = shapes_layout(profile::default_profile());
     EXPECT_NE(plan.out.find(std::to_string(g.document.pages[0].graphic.size())), std::string::npos) << plan.out;
     const auto emboss = cli({"emboss", "--device", "sim?speed=max", kShapes});
-    ASSERT_EQ(emboss.code, 0) << emboss.out;
+    ASSERT_EQ(emboss.exit_code, 0) << emboss.out;
     EXPECT_NE(emboss.out.find("embossed"), std::string::npos) << emboss.out;
     const auto bad = cli({"plan", std::string(TACTUS_TEST_DATA) + "/graphics/broken.svg"});
-    EXPECT_EQ(bad.code, 3) << bad.out;
+    EXPECT_EQ(bad.exit_code, 3) << bad.out;
     EXPECT_NE(bad.out.find("broken.svg:line 4: attribute d"), std::string::npos) << bad.out;
 }
 
@@ -254,8 +242,8 @@ TEST(GraphicPipeline, TheProfilesSpacingsPlaceTheDots) {
     const auto with_default = cli({"plan", "--protocol", "2", (dir / "line.svg").string()});
     const auto with_profile = cli({"plan", "--protocol", "2", "--profile", (dir / "machine.json").string(), (dir / "line.svg").string()});
     std::filesystem::remove_all(dir);
-    ASSERT_EQ(with_default.code, 0) << with_default.out;
-    ASSERT_EQ(with_profile.code, 0) << with_profile.out;
+    ASSERT_EQ(with_default.exit_code, 0) << with_default.out;
+    ASSERT_EQ(with_profile.exit_code, 0) << with_profile.out;
     const auto strikes = [](const std::string& out) {
         const auto at = out.find(" strikes");
         const auto from = out.rfind(' ', at - 1);

@@ -459,36 +459,24 @@ TEST(RasterRead, RealFilesTrace) {
     for (const auto& dot : laid.dots.dots) EXPECT_TRUE(area.contains(dot.at));
 }
 
-struct Run {
-    int code = -1;
-    std::string out;
-};
-
-Run cli(const std::vector<std::string>& args) {
-    std::vector<std::string> argv{TACTUS_CLI};
-    argv.insert(argv.end(), args.begin(), args.end());
-    test::Process p(argv, test::Process::Options{{}, true, {}});
-    Run r;
-    r.out = p.read_all();
-    r.code = p.wait();
-    return r;
-}
+// tactus-cli with these arguments, its messages merged into its output.
+test::RunResult cli(const std::vector<std::string>& args) { return test::run_merged(test::cli(args)); }
 
 TEST(RasterCli, LayoutPlanAndEmbossTakeAPictureLikeAnSvg) {
     const auto picture = kPictures + "shapes.png";
     const auto layout = cli({"layout", picture, "--summary"});
-    ASSERT_EQ(layout.code, 0) << layout.out;
+    ASSERT_EQ(layout.exit_code, 0) << layout.out;
     EXPECT_NE(layout.out.find("graphic:"), std::string::npos) << layout.out;
     const auto plan = cli({"plan", kPictures + "testorig.jpg"});
-    ASSERT_EQ(plan.code, 0) << plan.out;
+    ASSERT_EQ(plan.exit_code, 0) << plan.out;
     const auto emboss = cli({"emboss", "--device", "sim?speed=max", picture});
-    ASSERT_EQ(emboss.code, 0) << emboss.out;
+    ASSERT_EQ(emboss.exit_code, 0) << emboss.out;
     EXPECT_NE(emboss.out.find("embossed"), std::string::npos) << emboss.out;
     // The threshold option: everything below 1 is ink (nothing here), so the graphic is empty.
     const auto dark_only = cli({"layout", picture, "--summary", "--image-threshold", "0"});
-    EXPECT_EQ(dark_only.code, 0) << dark_only.out;
+    EXPECT_EQ(dark_only.exit_code, 0) << dark_only.out;
     const auto bad = cli({"layout", picture, "--image-threshold", "300"});
-    EXPECT_EQ(bad.code, 2) << bad.out;
+    EXPECT_EQ(bad.exit_code, 2) << bad.out;
     // Bad bytes in a .png: exit status 3 (input), the file and the reason.
     const auto broken = std::filesystem::temp_directory_path() / ("tactus-broken-" + std::to_string(getpid()) + ".png");
     {
@@ -498,7 +486,7 @@ TEST(RasterCli, LayoutPlanAndEmbossTakeAPictureLikeAnSvg) {
     }
     const auto refused = cli({"plan", broken.string()});
     std::filesystem::remove(broken);
-    EXPECT_EQ(refused.code, 3) << refused.out;
+    EXPECT_EQ(refused.exit_code, 3) << refused.out;
     EXPECT_NE(refused.out.find(broken.string() + ": unreadable PNG"), std::string::npos) << refused.out;
     // Where a document's text is imported, a picture is refused with the reason.
     const auto imported = import::import_file(picture, {});
