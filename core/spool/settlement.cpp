@@ -14,10 +14,14 @@ namespace {
 // first pass may have struck dots before the count was lost (serve and the
 // controller killed together), so it is discarded too, said to be possibly
 // blank; a partly embossed sheet reported as good would end up in the book.
-// Only the stream's very first sheet with nothing recorded is left alone:
-// then nothing shows the stream ever began.
+// The stream's very first sheet with nothing recorded is the same case when
+// the controller has run no job since its power came on (job id 0): its
+// memory is gone, so whether the stream began cannot be known, and a sheet
+// that may have dots is discarded rather than counted as blank paper. When
+// the controller still names an earlier job, the stream's JOB_BEGIN never
+// reached it: nothing of the stream was struck, and nothing is discarded.
 RunSettlement without_count(const JobRecord& job, const std::vector<SheetProgress>& progress,
-                            const std::string& why) {
+                            const std::string& why, bool memory_lost) {
     RunSettlement s;
     s.message = why;
     const std::size_t start = std::max<std::size_t>(job.run_start_sheet, 1);
@@ -35,6 +39,11 @@ RunSettlement without_count(const JobRecord& job, const std::vector<SheetProgres
             s.discard_message = sheet_word(k) + " followed " + sheet_word(k - 1) +
                                 " in the stream when it stopped and the controller's count was lost: its first "
                                 "pass may have begun (it may be blank); discard it, it is embossed again in full";
+        } else if (memory_lost) {
+            s.discard = k;
+            s.discard_message = sheet_word(k) + " began the stream when it stopped, and the controller has run no "
+                                "job since its power came on (its count was lost): its first pass may have begun "
+                                "(it may be blank); discard it, it is embossed again in full";
         }
         break;
     }
@@ -66,14 +75,16 @@ RunSettlement settle(const JobRecord& job, const std::vector<SheetProgress>& pro
         return without_count(job, progress,
                              "the controller does not know this stream (it reports job " + std::to_string(theirs) +
                                  ", the stream was job " + std::to_string(ours) +
-                                 "): it never began, or the controller lost its memory");
+                                 "): it never began, or the controller lost its memory",
+                             theirs == 0);
     const std::size_t executed = status.ack.executed_passes;
     if (job.run_first_pass != first[start - 1] || executed < first[start - 1] || executed > total)
         return without_count(job, progress,
                              "the controller's count (" + std::to_string(executed) +
                                  " passes) does not fit this stream (passes " +
                                  std::to_string(first[start - 1] + 1) + " to " + std::to_string(total) +
-                                 "); it is not used");
+                                 "); it is not used",
+                             false);
 
     RunSettlement s;
     s.controller_count = true;

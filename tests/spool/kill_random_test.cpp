@@ -37,5 +37,38 @@ TEST_P(KillTest, SigkillAtRandomPointsNeverLosesOrRepeatsASheet) {
 
 INSTANTIATE_TEST_SUITE_P(Shards, KillTest, ::testing::Range(0, 4));
 
+// A power cut of the whole bench: `serve` and the controller die together at
+// random moments, and a fresh controller (which has lost its count of the
+// sheet in its paper path) takes the old one's place. Every partly embossed
+// sheet, however few strikes it got before the cut, must be reported as
+// discarded, so the paper count a teacher reads is the paper used.
+TEST(KillTogether, ServeAndTheControllerKilledTogetherReportEveryPartialSheet) {
+    constexpr int kKills = 40;
+    test::TempDir dir;
+    test::KillOptions o;
+    o.cli = TACTUS_CLI;
+    o.dir = dir.path();
+    o.kills = kKills;
+    o.seed = test::kill_seed(100);
+    o.controller_kill_percent = 50;
+    // Slower sheets and later kills than the shards above, so most kills land
+    // with a sheet in the machine; a few kills per job, so the loop also
+    // starts, finishes and audits several jobs.
+    o.time_scale = "100";
+    o.max_delay_ms = 1500;
+    o.kills_per_job = 8;
+    o.text = "The spool keeps every page.\n\nA teacher queues a book and walks away; the technician clears a jam.\n";
+    std::cout << "[ kill test ] serve and controller, seed " << o.seed << std::endl;
+    SCOPED_TRACE("seed " + std::to_string(o.seed));
+    const auto r = test::kill_loop(o);
+    EXPECT_EQ(r.problems, "");
+    EXPECT_GE(r.kills, kKills) << "the time budget ran out";
+    EXPECT_GT(r.controller_kills, kKills / 5) << "too few kills took the controller down to test anything";
+    EXPECT_GT(r.partial_sheets, 0u) << "no kill landed mid-sheet";
+    std::cout << "[ kill test ] serve and controller: " << r.kills << " SIGKILLs (" << r.controller_kills
+              << " with the controller) over " << r.rounds << " jobs, " << r.sheets << " sheets audited, "
+              << r.partial_sheets << " partial sheets (all reported), seed " << o.seed << "\n";
+}
+
 }  // namespace
 }  // namespace tactus::spool

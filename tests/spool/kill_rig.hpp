@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -67,7 +68,13 @@ struct KillOptions {
     int max_delay_ms = 700;          // a kill lands 0..max after serve starts
     int kills_per_job = 0;           // then the job runs to its end (0: no limit)
     std::string copies = "4";
+    std::string time_scale = "1000";  // the simulator's speed-up of the machine's time
     std::string text;                // the document queued each round
+    // Percent of the kills that take the controller down with `serve` (a
+    // power cut of the whole bench): the simulator is SIGKILLed too and a new
+    // one, which knows nothing of the sheet in its paper path, takes its place
+    // on a new pseudo-terminal, appending to the same strike log.
+    int controller_kill_percent = 0;
     std::function<void(const std::string&)> progress;  // one line per finished round
 };
 
@@ -76,6 +83,7 @@ struct KillReport {
     int rounds = 0;
     std::size_t sheets = 0;           // sheets audited
     std::size_t partial_sheets = 0;   // partial attempts (each reported as discarded)
+    int controller_kills = 0;         // kills that took the simulator down too
     std::size_t lost = 0;             // sheets never completed
     std::size_t doubled = 0;          // sheets embossed more than once
     std::string problems;             // empty: exactly once everywhere
@@ -98,24 +106,33 @@ inline KillReport kill_loop(const KillOptions& o) {
     auto problem = [&](const std::string& p) { r.problems += "round " + std::to_string(r.rounds) + ": " + p + "\n"; };
     const auto doc = o.dir / "doc.txt";
     std::ofstream(doc) << o.text;
+    bool printer_added = false;
     while (r.kills < o.kills && Clock::now() - start < o.budget && r.problems.empty()) {
         ++r.rounds;
         const auto log = o.dir / ("round" + std::to_string(r.rounds) + ".strikes");
         // Protocol 3 (the simulator's default): the firmware the default profile makes.
-        Process sim({o.cli, "sim", "--pty", "--time-scale", "1000", "--baud", "230400",
-                     "--strike-log", log.string()},
-                    (o.dir / "sim.log").string());
-        const auto pty = sim.read_line(std::chrono::seconds(10));
-        if (pty.empty()) {
-            problem("the simulator did not start");
-            break;
-        }
-        const auto device = "pty:" + pty + "?baud=230400";
-        if (const auto [code, out] = cli({"queue", "printer", r.rounds == 1 ? "add" : "set", "lab", "--device", device});
-            code != 0) {
-            problem("printer: " + out);
-            break;
-        }
+        std::optional<Process> sim;
+        auto start_sim = [&]() -> bool {
+            sim.reset();
+            sim.emplace(std::vector<std::string>{o.cli, "sim", "--pty", "--time-scale", o.time_scale, "--baud", "230400",
+                                                 "--strike-log", log.string()},
+                        (o.dir / "sim.log").string());
+            const auto pty = sim->read_line(std::chrono::seconds(10));
+            if (pty.empty()) {
+                problem("the simulator did not start");
+                return false;
+            }
+            const auto device = "pty:" + pty + "?baud=230400";
+            if (const auto [code, out] =
+                    cli({"queue", "printer", printer_added ? "set" : "add", "lab", "--device", device});
+                code != 0) {
+                problem("printer: " + out);
+                return false;
+            }
+            printer_added = true;
+            return true;
+        };
+        if (!start_sim()) break;
         const auto [code, out] = cli({"emboss", "--queue", doc.string(), "--copies", o.copies});
         const auto pos = out.find("queued job ");
         if (code != 0 || pos == std::string::npos) {
@@ -130,6 +147,7 @@ inline KillReport kill_loop(const KillOptions& o) {
             return j ? std::optional<JobState>(j->state) : std::nullopt;
         };
         bool completed = false;
+        bool controller_killed = false;
         int job_kills = 0;
         for (;;) {
             Process serve({o.cli, "serve", "--db", db.string(), "--poll-ms", "20", "--retry-ms", "200", "--reconnect-ms",
@@ -151,11 +169,21 @@ inline KillReport kill_loop(const KillOptions& o) {
                 if (serve.wait() != 0) problem("serve did not stop cleanly on SIGTERM");
                 break;
             }
+            const bool with_controller =
+                std::uniform_int_distribution<int>(0, 99)(rng) < o.controller_kill_percent;
             serve.signal(SIGKILL);
+            if (with_controller) sim->signal(SIGKILL);
             serve.wait();
             ++r.kills;
             ++job_kills;
+            if (with_controller) {
+                sim->wait();
+                ++r.controller_kills;
+                controller_killed = true;
+                if (!start_sim()) break;
+            }
         }
+        if (!r.problems.empty()) break;
         auto s = Spool::open(db, {.create = false});
         if (!s) {
             problem("spool: " + s.error().to_string());
@@ -176,9 +204,9 @@ inline KillReport kill_loop(const KillOptions& o) {
             problem("plan: " + plan.error().to_string());
             break;
         }
-        sim.signal(SIGTERM);
-        sim.wait();
-        const auto audit = audit_strikes(*plan, read_strike_log(log), *s->progress(id));
+        sim->signal(SIGTERM);
+        sim->wait();
+        const auto audit = audit_strikes(*plan, read_strike_log(log), *s->progress(id), true, controller_killed);
         r.sheets += audit.sheets_checked;
         r.partial_sheets += audit.partial_attempts;
         std::istringstream lines(audit.problems);

@@ -104,9 +104,25 @@ TEST(Settlement, ALostCountDiscardsTheSheetAfterTheLastFinishedOneOfTheStream) {
     const auto later = settle(run(0x8005, 2, 4), shape({4, 5, 0}), status(0, 0));
     ASSERT_TRUE(later.discard);
     EXPECT_EQ(*later.discard, 3U);
-    // The stream's first sheet with nothing recorded: nothing shows it began.
+    // The stream's first sheet with nothing recorded, on a controller that
+    // still names the job before the stream: the stream's JOB_BEGIN never
+    // reached it, so nothing was struck.
+    const auto never = settle(run(0x8005, 2, 4), shape({4, 0, 0}), status(0x8004, 9, encode::flag::job_ended));
+    EXPECT_FALSE(never.discard);
+}
+
+TEST(Settlement, AControllerThatLostItsMemoryMayHaveStruckTheStreamsFirstSheet) {
+    // Serve and the controller died together during the first pass of the
+    // stream's first sheet: nothing of it is recorded, and the controller
+    // that answers now has run no job since its power came on (job 0). It may
+    // have struck dots, so the sheet is discarded, said to be possibly blank.
     const auto first = settle(run(0x8005, 2, 4), shape({4, 0, 0}), status(0, 0));
-    EXPECT_FALSE(first.discard);
+    EXPECT_FALSE(first.controller_count);
+    EXPECT_TRUE(first.record.empty());
+    ASSERT_TRUE(first.discard);
+    EXPECT_EQ(*first.discard, 2U);
+    EXPECT_NE(first.discard_message.find("began the stream"), std::string::npos) << first.discard_message;
+    EXPECT_NE(first.discard_message.find("may be blank"), std::string::npos) << first.discard_message;
 }
 
 TEST(Settlement, ACountOutsideTheStreamIsNotUsed) {

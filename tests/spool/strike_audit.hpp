@@ -11,6 +11,11 @@
 //     that many sheets as discarded (`spoiled`), so no partial sheet went
 //     unreported;
 //   - no strike is out of sequence (a dot struck twice, or one skipped).
+// When the controller may have lost its count (killed or powered off with the
+// host), a sheet it finished just before the cut cannot be told from one it
+// left unfinished: the spool must discard it and emboss it again. Then a
+// complete attempt followed by another is allowed, provided the spool
+// reported it as discarded like any partial one.
 #include <map>
 #include <sstream>
 #include <string>
@@ -30,7 +35,8 @@ struct AuditResult {
 
 inline AuditResult audit_strikes(const plan::JobPlan& plan,
                                  const std::vector<controller::LoggedStrike>& log,
-                                 const std::vector<SheetProgress>& progress, bool require_all = true) {
+                                 const std::vector<SheetProgress>& progress, bool require_all = true,
+                                 bool count_may_be_lost = false) {
     std::map<std::size_t, std::vector<controller::LoggedStrike>> planned, struck;
     for (const auto& s : controller::planned_strikes(plan)) planned[s.sheet].push_back(s);
     for (const auto& s : log) struck[s.sheet].push_back(s);
@@ -59,7 +65,9 @@ inline AuditResult audit_strikes(const plan::JobPlan& plan,
         if (started) attempts.push_back(idx);
         std::size_t complete = 0, partial = 0;
         for (std::size_t a = 0; a < attempts.size(); ++a) {
-            if (attempts[a] == p.size()) {
+            if (attempts[a] == p.size() && count_may_be_lost && a + 1 != attempts.size()) {
+                ++partial;  // finished as the count was lost: must be reported as discarded
+            } else if (attempts[a] == p.size()) {
                 ++complete;
                 if (a + 1 != attempts.size()) out << "sheet " << sheet << ": struck again after it was complete\n";
             } else {
