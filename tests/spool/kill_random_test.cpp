@@ -43,7 +43,7 @@ INSTANTIATE_TEST_SUITE_P(Shards, KillTest, ::testing::Range(0, 4));
 // sheet, however few strikes it got before the cut, must be reported as
 // discarded, so the paper count a teacher reads is the paper used.
 TEST(KillTogether, ServeAndTheControllerKilledTogetherReportEveryPartialSheet) {
-    constexpr int kKills = 40;
+    constexpr int kKills = 30;
     test::TempDir dir;
     test::KillOptions o;
     o.cli = TACTUS_CLI;
