@@ -39,15 +39,28 @@ constexpr std::string_view kNamespaces =
 
 constexpr int kMaxListLevel = 10;  // text:list-level-style levels 1..10
 
-constexpr std::string_view list_style_name(ListStyle s) {
+// A list style is one kind of label per level, 1 to 10: 'b' bullet, 'd'
+// "1.", 'p' "1)", 'n' none. LibreOffice draws every level of a list with the
+// style of its outermost text:list, so a list's style holds the kind of each
+// of its levels; a nested list whose items are another kind names its own.
+using Signature = std::string;
+
+constexpr char kind_char(ListStyle s) {
     switch (s) {
-        case ListStyle::bullet: return "L_bullet";
-        case ListStyle::decimal_dot: return "L_dot";
-        case ListStyle::decimal_paren: return "L_paren";
-        case ListStyle::plain: return "L_plain";
+        case ListStyle::bullet: return 'b';
+        case ListStyle::decimal_dot: return 'd';
+        case ListStyle::decimal_paren: return 'p';
+        case ListStyle::plain: return 'n';
     }
-    return "L_plain";
+    return 'n';
 }
+
+constexpr ListStyle style_of(char kind) {
+    return kind == 'b' ? ListStyle::bullet : kind == 'd' ? ListStyle::decimal_dot
+                       : kind == 'p' ? ListStyle::decimal_paren : ListStyle::plain;
+}
+
+Signature uniform(ListStyle s) { return Signature(kMaxListLevel, kind_char(s)); }
 
 class OdtWriter {
 public:
@@ -135,7 +148,7 @@ private:
                     continue;
                 }
                 case BlockKind::list_item:
-                    list_item(out, b, i, break_before);
+                    list_item(out, b, i, end, in_box, break_before);
                     break_before = false;
                     ++i;
                     continue;
@@ -182,9 +195,41 @@ private:
     // ---- Lists ----
 
     struct OpenList {
-        ListStyle style;
+        ListStyle style;       // the kind of its items
+        Signature signature;   // its list style, inherited by the lists in it
         bool item_open = false;
     };
+
+    std::string list_style(const Signature& signature) {
+        const auto [it, added] = list_styles_.try_emplace(signature, "L" + std::to_string(list_styles_.size() + 1));
+        return it->second;
+    }
+
+    // The kinds of the levels of the list starting at `begin`: each level's
+    // first item's, up to where the walk closes the list.
+    [[nodiscard]] Signature list_signature(std::size_t begin, std::size_t end, bool in_box) const {
+        Signature sig(kMaxListLevel, 'd');
+        std::vector<bool> seen(kMaxListLevel, false);
+        for (std::size_t j = begin; j < end; ++j) {
+            const Block& b = doc_.blocks[j];
+            if (!in_box && b.box != doc_.blocks[begin].box) break;
+            if (b.kind == BlockKind::note) continue;
+            if (b.kind == BlockKind::print_page_break) {
+                const Block* next = next_shown(j, end);
+                if (next && next->kind == BlockKind::list_item) continue;
+                break;
+            }
+            if (b.kind != BlockKind::list_item) break;
+            const auto level = static_cast<std::size_t>(std::clamp(b.level, 1, kMaxListLevel));
+            const char kind = kind_char(office::list_label(b).style);
+            if (level == 1 && seen[0] && sig[0] != kind) break;
+            if (!seen[level - 1]) {
+                sig[level - 1] = kind;
+                seen[level - 1] = true;
+            }
+        }
+        return sig;
+    }
 
     void close_top(std::string& out) {
         if (lists_.back().item_open) out += "</text:list-item>";
@@ -200,7 +245,8 @@ private:
     // starts another list there. The importer's count is replayed (its
     // counters are the top list's, shared by the lists nested in it): a
     // number that does not follow on is written as the item's start value.
-    void list_item(std::string& out, const Block& b, std::size_t index, bool break_before) {
+    void list_item(std::string& out, const Block& b, std::size_t index, std::size_t end, bool in_box,
+                   bool break_before) {
         const auto label = office::list_label(b);
         int level = std::max(b.level, 1);
         if (level > kMaxListLevel) {
@@ -220,8 +266,23 @@ private:
                 out += "<text:list-item>";
                 lists_.back().item_open = true;
             }
-            out += "<text:list text:style-name=\"" + std::string(list_style_name(label.style)) + "\">";
-            lists_.push_back({label.style, false});
+            const auto at = lists_.size();  // the new list's level, 0-based
+            const bool items_here = at + 1 == depth;
+            if (lists_.empty()) {
+                const auto sig = list_signature(index, end, in_box);
+                out += "<text:list text:style-name=\"" + list_style(sig) + "\">";
+                lists_.push_back({style_of(sig[at]), sig, false});
+                continue;
+            }
+            const auto& inherited = lists_.back().signature;
+            if (!items_here || inherited[at] == kind_char(label.style)) {
+                out += "<text:list>";
+                lists_.push_back({style_of(inherited[at]), inherited, false});
+            } else {
+                const auto own = uniform(label.style);
+                out += "<text:list text:style-name=\"" + list_style(own) + "\">";
+                lists_.push_back({label.style, own, false});
+            }
         }
         auto& number = counters_[depth];
         const int expected = number == 0 ? 1 : number + 1;
@@ -428,24 +489,23 @@ private:
                "<style:paragraph-properties fo:break-before=\"page\"/></style:style>"
                "<style:style style:name=\"Box\" style:family=\"graphic\"><style:graphic-properties "
                "fo:border=\"0.06pt solid #000000\" fo:padding=\"0.1cm\"/></style:style>";
-        for (const auto style : {ListStyle::bullet, ListStyle::decimal_dot, ListStyle::decimal_paren, ListStyle::plain}) {
-            out += "<text:list-style style:name=\"" + std::string(list_style_name(style)) + "\">";
+        for (const auto& [sig, name] : list_styles_) {
+            out += "<text:list-style style:name=\"" + name + "\">";
             for (int l = 1; l <= kMaxListLevel; ++l) {
                 const auto level = std::to_string(l);
+                const char kind = sig[static_cast<std::size_t>(l - 1)];
                 const std::string properties =
                     "<style:list-level-properties text:list-level-position-and-space-mode=\"label-alignment\">"
                     "<style:list-level-label-alignment text:label-followed-by=\"listtab\" fo:margin-left=\"" +
                     std::to_string(l * 0.635).substr(0, 5) + "cm\" fo:text-indent=\"-0.635cm\"/>"
                     "</style:list-level-properties>";
-                if (style == ListStyle::bullet)
+                if (kind == 'b')
                     out += "<text:list-level-style-bullet text:level=\"" + level + "\" text:bullet-char=\"\u2022\">" +
                            properties + "</text:list-level-style-bullet>";
                 else
                     out += "<text:list-level-style-number text:level=\"" + level + "\" style:num-format=\"" +
-                           (style == ListStyle::plain ? "" : "1") + "\"" +
-                           (style == ListStyle::decimal_dot     ? " style:num-suffix=\".\""
-                            : style == ListStyle::decimal_paren ? " style:num-suffix=\")\""
-                                                                : "") +
+                           (kind == 'n' ? "" : "1") + "\"" +
+                           (kind == 'd' ? " style:num-suffix=\".\"" : kind == 'p' ? " style:num-suffix=\")\"" : "") +
                            ">" + properties + "</text:list-level-style-number>";
             }
             out += "</text:list-style>";
@@ -508,6 +568,7 @@ private:
     std::vector<OpenList> lists_;
     std::array<int, kMaxListLevel + 2> counters_{};  // the importer's, per level (1-based)
     std::map<std::string, std::string> breaking_;     // parent style -> breaking style
+    std::map<Signature, std::string> list_styles_;    // list style -> its name
     std::map<std::string, std::pair<std::string, Span>> text_styles_;
     int notes_written_ = 0;
     int pictures_ = 0;
