@@ -26,7 +26,8 @@ std::string_view document_format_name(DocumentFormat format);
 // The document in `format`, written atomically (a failure leaves the old
 // file). Markdown and text are written in the document's own encoding
 // (Document::encoding, UTF-8 when empty). Gives the warnings: what the format
-// does not keep.
+// does not keep (Markdown: boxes, underline, raised text, an image's
+// description as such, languages; text: every style).
 Result<std::vector<std::string>> save_document(const document::Document& document, DocumentFormat format,
                                                const std::filesystem::path& path);
 

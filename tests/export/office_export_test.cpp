@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 
+#include "export/document_save.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
 
@@ -351,4 +352,26 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
             EXPECT_SAME_BLOCKS(blocks_of(reopen(once, format)), blocks_of(once));
         }
     }
+}
+
+// Markdown and text name what they leave out, as the office writers do.
+TEST(OfficeExport, MarkdownAndTextNameWhatTheyLeaveOut) {
+    const auto dir = std::filesystem::temp_directory_path() / "tactus_print_losses_test";
+    std::filesystem::create_directories(dir);
+    const auto doc = every_construct();
+    auto md = exporter::save_document(doc, exporter::DocumentFormat::markdown, dir / "out.md");
+    ASSERT_TRUE(md);
+    std::string said;
+    for (const auto& w : *md) said += w + "\n";
+    for (const auto* what : {"a box is written", "underline is left out", "raised and lowered text",
+                             "an image's description"})
+        EXPECT_NE(said.find(what), std::string::npos) << what << " in\n" << said;
+    EXPECT_EQ(said.find("heading"), std::string::npos) << said;  // Markdown keeps headings
+    auto txt = exporter::save_document(doc, exporter::DocumentFormat::text, dir / "out.txt");
+    ASSERT_TRUE(txt);
+    said.clear();
+    for (const auto& w : *txt) said += w + "\n";
+    EXPECT_NE(said.find("text: a heading is written as a plain line (7 times; the first at block 1)"), std::string::npos)
+        << said;
+    std::filesystem::remove_all(dir);
 }
