@@ -18,6 +18,7 @@
 #include "export/document_save.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
+#include "../common/process.hpp"
 
 using namespace tactus;
 using document::Block;
@@ -322,7 +323,7 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
     std::mt19937 random(20261207);
     const std::vector<std::string> words = {"alpha", "beta", "&amp;", "<tag>", "中文", "x  y", "end."};
     const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(random); };
-    for (int round = 0; round < 60; ++round) {
+    for (int round = 0; round < 100; ++round) {
         document::Document doc;
         for (int i = 0, n = static_cast<int>(pick(12)) + 1; i < n; ++i) {
             std::vector<Span> spans;
@@ -332,7 +333,19 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
                 if (!spans.empty() && spans.back().emphasis == e) e = static_cast<std::uint8_t>(e ^ 1u);
                 spans.push_back(text((k == 0 ? "" : " ") + words[pick(words.size())], e));
             }
-            switch (pick(4)) {
+            if (pick(4) == 0) {
+                // Raised text, an image's description, a note reference.
+                Span extra = text(words[pick(2)]);
+                switch (pick(3)) {
+                    case 0: extra.position = document::Position::superscript; break;
+                    case 1: extra.transcriber_note = true; break;
+                    default: extra.note_reference = true; extra.text = "9"; break;
+                }
+                spans.push_back(extra);
+                spans.push_back(text(" end"));
+            }
+            const bool referring = spans.size() > 1 && spans[spans.size() - 2].note_reference;
+            switch (pick(referring ? 4 : 7)) {
                 case 0: doc.blocks.push_back(block(BlockKind::heading, static_cast<int>(pick(6)) + 1, spans)); break;
                 case 1: doc.blocks.push_back(block(BlockKind::quote, 1, spans)); break;
                 case 2: {
@@ -341,8 +354,37 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
                     doc.blocks.push_back(block(BlockKind::list_item, level, spans));
                     break;
                 }
+                case 4: {  // a table
+                    for (std::size_t r = 0, rows = pick(3) + 1; r < rows; ++r) {
+                        Block row;
+                        row.kind = BlockKind::table_row;
+                        row.level = r == 0 && pick(2) ? 1 : 0;
+                        doc.blocks.push_back(row);
+                        for (std::size_t c = 0, cells = pick(3) + 1; c < cells; ++c)
+                            doc.blocks.push_back(block(BlockKind::table_cell, static_cast<int>(c), {text(words[pick(words.size())])}));
+                    }
+                    break;
+                }
+                case 5: {  // a page break
+                    Block page;
+                    page.kind = BlockKind::print_page_break;
+                    page.label = "2";
+                    page.label_counted = true;
+                    doc.blocks.push_back(page);
+                    break;
+                }
+                case 6: {  // a box
+                    const int box = static_cast<int>(doc.blocks.size()) + 1;
+                    for (std::size_t k = 0, m = pick(2) + 1; k < m; ++k) {
+                        doc.blocks.push_back(block(BlockKind::paragraph, 0, {text(words[pick(words.size())])}));
+                        doc.blocks.back().box = box;
+                    }
+                    break;
+                }
                 default: doc.blocks.push_back(block(BlockKind::paragraph, 0, spans));
             }
+            if (referring && document::is_text_kind(doc.blocks.back().kind))
+                doc.blocks.push_back(block(BlockKind::note, 0, {reference("9"), text(" A note.")}));
         }
         // The importers count list numbers: take the document they give,
         // and check it is a fixed point of a save and an open.
@@ -373,5 +415,35 @@ TEST(OfficeExport, MarkdownAndTextNameWhatTheyLeaveOut) {
     for (const auto& w : *txt) said += w + "\n";
     EXPECT_NE(said.find("text: a heading is written as a plain line (7 times; the first at block 1)"), std::string::npos)
         << said;
+    std::filesystem::remove_all(dir);
+}
+
+// tactus-cli convert: the format from the output's name (or --to), what is
+// left out on stderr, and the documented exit codes for bad input (3) and an
+// output format it cannot tell (2).
+TEST(OfficeExport, ConvertCommand) {
+    const auto dir = std::filesystem::temp_directory_path() / "tactus_convert_test";
+    std::filesystem::create_directories(dir);
+    const std::string cli = TACTUS_CLI;
+    const auto lesson = (data / "import/lesson.docx").string();
+    auto r = test::run_captured({cli, "convert", lesson, (dir / "lesson.odt").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    auto odt = import::import_file(dir / "lesson.odt");
+    auto docx = import::import_file(lesson);
+    ASSERT_TRUE(odt && docx);
+    EXPECT_SAME_BLOCKS(blocks_of(*odt), blocks_of(*docx));
+    r = test::run_captured({cli, "convert", "--to", "docx", lesson, (dir / "lesson.out").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(slurp(dir / "lesson.out").substr(0, 2), "PK");
+    // Ready-made braille in a print format: named on stderr, written all the same.
+    r = test::run_captured({cli, "convert", (data / "import/lesson.pef").string(), (dir / "braille.docx").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("ready-made braille is left out"), std::string::npos) << r.err;
+    r = test::run_captured({cli, "convert", (data / "import/truncated.docx").string(), (dir / "bad.odt").string()});
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.odt"));
+    r = test::run_captured({cli, "convert", lesson, (dir / "lesson.xyz").string()});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--to"), std::string::npos) << r.err;
     std::filesystem::remove_all(dir);
 }
