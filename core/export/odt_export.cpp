@@ -444,7 +444,11 @@ private:
                 for (int c = 1; c < span; ++c) out += "<table:covered-table-cell/>";
                 column = std::max(column, cell.level) + span;
             }
-            if (j == i) out += "<table:table-cell/>";
+            if (j == i) {
+                // A row holds at least one cell (ODF): it comes back with an empty one.
+                losses_.add("a table row without cells gets an empty cell", i);
+                out += "<table:table-cell/>";
+            }
             out += "</table:table-row>";
             i = j;
         }

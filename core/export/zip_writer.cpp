@@ -30,7 +30,6 @@ Result<std::string> zip_package(const std::vector<ZipPart>& parts) {
         zip_error_fini(&error);
         return std::unexpected(e);
     }
-    zip_source_keep(buffer.get());  // read back after zip_close
     zip_t* z = zip_open_from_source(buffer.get(), ZIP_TRUNCATE, &error);
     if (!z) {
         auto e = zip_failure("open", &error);
@@ -38,6 +37,9 @@ Result<std::string> zip_package(const std::vector<ZipPart>& parts) {
         return std::unexpected(e);
     }
     zip_error_fini(&error);
+    // The archive holds the buffer now; one more reference reads it back
+    // after zip_close.
+    zip_source_keep(buffer.get());
     for (const auto& part : parts) {
         // The part's bytes live in `parts` until zip_close has written them.
         zip_source_t* data = zip_source_buffer(z, part.bytes.data(), part.bytes.size(), 0);
