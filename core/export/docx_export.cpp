@@ -141,7 +141,8 @@ private:
     }
 
     void paragraph(std::string& out, const Block& b, std::size_t index, bool break_before) {
-        std::string ppr;
+        // CT_PPr's order: pStyle, then pageBreakBefore, then numPr.
+        std::string ppr, numbering;
         std::vector<Span> spans = b.spans;
         switch (b.kind) {
             case BlockKind::heading:
@@ -159,14 +160,16 @@ private:
                     losses_.add("a list deeper than 9 levels is written at the 9th", index);
                     level = kMaxListLevel;
                 }
-                ppr += "<w:pStyle w:val=\"ListParagraph\"/><w:numPr><w:ilvl w:val=\"" + std::to_string(level - 1) +
-                       "\"/><w:numId w:val=\"" + std::to_string(num_for(label, level - 1)) + "\"/></w:numPr>";
+                ppr += "<w:pStyle w:val=\"ListParagraph\"/>";
+                numbering = "<w:numPr><w:ilvl w:val=\"" + std::to_string(level - 1) + "\"/><w:numId w:val=\"" +
+                            std::to_string(num_for(label, level - 1)) + "\"/></w:numPr>";
                 break;
             }
             default:
                 break;
         }
         if (break_before) ppr += "<w:pageBreakBefore/>";
+        ppr += numbering;
         out += "<w:p>";
         if (!ppr.empty()) out += "<w:pPr>" + ppr + "</w:pPr>";
         runs(out, spans, index);
