@@ -47,6 +47,7 @@
 #include "motion_view.hpp"
 #include "printer_panel.hpp"
 #include "profile_editor.hpp"
+#include "save_formats.hpp"
 #include "vibration_view.hpp"
 #include "preview_panel.hpp"
 #include "sheet_geometry.hpp"
@@ -432,7 +433,7 @@ void MainWindow::open_dialog() {
     FocusReturn back(this, editor_->print_pane());
     const auto path = QFileDialog::getOpenFileName(
         this, tr("Open or import"), QFileInfo(path_).absolutePath(),
-        tr("Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)"));
+        tr("Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef);;All files (*)"));
     if (!path.isEmpty()) open_file(path);
 }
 
@@ -505,11 +506,8 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         editor_->adopt(std::move(*r->layout));
         pages_kept_ = editor_->layout().pages_kept();
         const QFileInfo info(r->path);
-        // Saved in place when Tactus writes the format (Markdown, text), else "Save as".
-        const auto suffix = info.suffix().toLower();
-        const bool writable = suffix == QLatin1String("md") || suffix == QLatin1String("markdown") ||
-                              suffix == QLatin1String("txt") || suffix == QLatin1String("text");
-        path_ = writable ? info.absoluteFilePath() : QString();
+        // Saved in place when Tactus writes the format (Markdown, text, DOCX, ODT), else "Save as".
+        path_ = saved_in_place(info.filePath()) ? info.absoluteFilePath() : QString();
         source_name_ = info.fileName();
         add_recent(info.absoluteFilePath());
         update_title();
@@ -590,14 +588,13 @@ bool MainWindow::save_as() {
     if (suggested.isEmpty() && !source_name_.isEmpty())
         suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
     FocusReturn back(this, editor_->print_pane());
-    const auto markdown = tr("Markdown (*.md)");
-    const auto text = tr("Plain text (*.txt)");
-    QString filter = edit::dialect_for(suggested.toStdString()) == edit::Dialect::text ? text : markdown;
-    auto path = QFileDialog::getSaveFileName(this, tr("Save as"), suggested, markdown + QStringLiteral(";;") + text,
+    QString filter = save_as_filter_for(suggested);
+    auto path = QFileDialog::getSaveFileName(this, tr("Save as"), suggested, save_as_filters().join(QStringLiteral(";;")),
                                              &filter);
     if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += filter == text ? QStringLiteral(".txt") : QStringLiteral(".md");
-    return save_to(path);
+    path = with_filter_suffix(path, filter);
+    // Braille is exported from the pages; the document keeps its own file.
+    return is_braille_export(path) ? export_to(path) : save_to(path);
 }
 
 QByteArray MainWindow::file_bytes(const QString& file_name) const {
@@ -613,9 +610,11 @@ bool MainWindow::save_to(const QString& path) {
     // In the file's format and, for a text file, its own encoding (core's writer).
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
+    std::vector<std::string> warnings;  // what the format does not keep
     const auto bytes_for = [&] {
         const auto& layout = editor_->layout();
-        return edit::file_bytes(lines, layout.dialect(), layout.document(), path.toStdString(), layout.line_ending());
+        return edit::file_bytes(lines, layout.dialect(), layout.document(), path.toStdString(), layout.line_ending(),
+                                &warnings);
     };
     auto bytes = bytes_for();
     if (!bytes && exporter::is_unrepresentable_error(bytes.error())) {
@@ -639,7 +638,10 @@ bool MainWindow::save_to(const QString& path) {
     autosave_.remove();
     add_recent(path_);
     update_title();
-    report(tr("Saved %1").arg(QFileInfo(path).fileName()));
+    // One message: what the format does not keep follows the file's name.
+    auto said = tr("Saved %1").arg(QFileInfo(path).fileName());
+    if (!warnings.empty()) said += QLatin1Char(' ') + QString::fromStdString(warnings.front());
+    report(said);
     return true;
 }
 

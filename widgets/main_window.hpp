@@ -141,7 +141,7 @@ private:
     QLabel* status_ = nullptr;
     MessageLabel* message_ = nullptr;
     QMenu* recent_menu_ = nullptr;
-    QString path_;         // where Save writes (Markdown only); empty: ask
+    QString path_;         // where Save writes (a print format Tactus writes); empty: ask
     QString source_name_;  // the file the document came from, for the title
     bool interactive_ = false;
     bool pages_kept_ = false;  // the layout kept ready-made braille's own pages when it last changed

@@ -99,5 +99,6 @@ void add_vibration_command(CLI::App& app);
 void add_sim_command(CLI::App& app);
 void add_ports_command(CLI::App& app);
 void add_emboss_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
 
 }  // namespace tactus::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     add_sim_command(app);
     add_ports_command(app);
     add_emboss_command(app);
+    add_convert_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

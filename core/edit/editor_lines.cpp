@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 #include "common/utf8.hpp"
+#include "export/document_save.hpp"
+#include "export/office_export.hpp"
 #include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
@@ -372,7 +375,16 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
 }
 
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
-                               std::string_view file_name, std::string_view line_ending) {
+                               std::string_view file_name, std::string_view line_ending,
+                               std::vector<std::string>* warnings) {
+    if (const auto format = exporter::document_format_for(std::filesystem::path(file_name));
+        format == exporter::DocumentFormat::docx || format == exporter::DocumentFormat::odt) {
+        auto file = exporter::to_office(blocks, format == exporter::DocumentFormat::docx ? exporter::OfficeFormat::docx
+                                                                                        : exporter::OfficeFormat::odt);
+        if (!file) return std::unexpected(file.error());
+        if (warnings) warnings->insert(warnings->end(), file->warnings.begin(), file->warnings.end());
+        return std::move(file->bytes);
+    }
     // One rule for every print file the editor writes, text or Markdown: the
     // encoding the document was opened with.
     return exporter::encode_text(file_text(lines, dialect, blocks, file_name, line_ending), blocks.encoding,

@@ -65,8 +65,11 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
 // as for a new document or a DOCX, is UTF-8), so a file opened and saved is the
 // same bytes. Fails, writing nothing, when the text holds a character that
 // encoding cannot (exporter::is_unrepresentable_error).
+// A .docx or .odt name gives the blocks as that word-processor file
+// (exporter::to_office), with what it does not keep added to `warnings`.
 Result<std::string> file_bytes(std::span<const std::string> lines, Dialect dialect, const document::Document& blocks,
-                               std::string_view file_name, std::string_view line_ending = "\n");
+                               std::string_view file_name, std::string_view line_ending = "\n",
+                               std::vector<std::string>* warnings = nullptr);
 
 // The text a reader sees: without the heading marks, bullet and emphasis marks.
 // Used to map the cursor between print and braille word by word.

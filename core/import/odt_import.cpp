@@ -74,6 +74,7 @@ struct OdtStyle {
     bool break_before = false;
     bool break_after = false;
     bool quote = false;  // "Quotations" (by name or display name)
+    document::Align align = document::Align::none;  // fo:text-align; start/left is the default
     document::Position position = document::Position::baseline;
 };
 
@@ -109,6 +110,10 @@ public:
             const auto para = child(s, "paragraph-properties");
             style.break_before = attribute(para, "break-before") == "page";
             style.break_after = attribute(para, "break-after") == "page";
+            if (const auto a = attribute(para, "text-align"); a == "center")
+                style.align = document::Align::centre;
+            else if (a == "end" || a == "right")
+                style.align = document::Align::right;
             style.quote = is_quote_style_name(attribute(s, "name")) || is_quote_style_name(attribute(s, "display-name"));
             styles_[std::string(attribute(s, "name"))] = std::move(style);
         }
@@ -142,6 +147,13 @@ public:
         for (auto s = find(name); s && depth < 16; s = find(s->parent), ++depth)
             if (s->quote) return true;
         return false;
+    }
+    // The nearest alignment a paragraph style or its parents set.
+    [[nodiscard]] document::Align align(std::string_view name) const {
+        int depth = 0;
+        for (auto s = find(name); s && depth < 16; s = find(s->parent), ++depth)
+            if (s->align != document::Align::none) return s->align;
+        return document::Align::none;
     }
     [[nodiscard]] bool break_after(std::string_view name) const {
         const auto* s = find(name);
@@ -280,21 +292,31 @@ private:
                 rows(r, header);
             else if (name == "table-row") {
                 out_.begin_row(header);
+                int spanned = 0;  // covered cells that belong to the last cell's span
                 for (const auto& cell : r.children()) {
                     // A cell merged across columns has table:number-columns-spanned;
                     // the columns it (or a cell merged down from the row above)
                     // covers are <table:covered-table-cell>s, which hold no cell
                     // of their own: the next cell keeps its column.
                     const auto kind = local_name(cell);
+                    // The covered cells right after a spanned cell are its
+                    // own columns, which begin_cell has counted already.
                     if (kind == "covered-table-cell") {
-                        out_.skip_columns(repeated(cell));
+                        const int n = repeated(cell);
+                        const int own = std::min(n, spanned);
+                        spanned -= own;
+                        if (n > own) out_.skip_columns(n - own);
                         continue;
                     }
                     if (kind != "table-cell") continue;
+                    const int span = std::clamp(whole_number(attribute(cell, "number-columns-spanned"), 1), 1, 1024);
+                    spanned = span - 1;
+                    // The alignment of the cell's first paragraph, as for DOCX.
+                    const auto align = styles_.align(attribute(child(cell, "p"), "style-name"));
                     // table:number-columns-repeated: the same cell in as many
                     // columns (LibreOffice writes a run of empty cells so).
                     for (int n = repeated(cell); n > 0; --n) {
-                        out_.begin_cell(whole_number(attribute(cell, "number-columns-spanned"), 1));
+                        out_.begin_cell(span, align);
                         container(cell);
                         out_.end_cell();
                     }

@@ -90,7 +90,11 @@ T = {
     "Table row %1 of %2": "表格第 %1 列，共 %2 列",
     "Translating with %1": "正在以 %1 轉譯", "Cannot use table %1: %2": "無法使用點字表 %1：%2", "Braille table: %1": "點字表：%1",
     "Open or import": "開啟或匯入",
-    "Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)",
+    "Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef);;所有檔案 (*)",
+    # Save As's formats (widgets/save_formats.cpp).
+    "Word document (*.docx)": "Word 文件 (*.docx)",
+    "OpenDocument text (*.odt)": "OpenDocument 文字文件 (*.odt)",
+    "PEF braille (*.pef)": "PEF 點字 (*.pef)",
     "Opening %1": "正在開啟 %1", "Cancel": "取消", "%1 percent": "百分之 %1",
     "Cancelled; the document is unchanged": "已取消，文件未變更", "Cannot open %1: %2": "無法開啟 %1：%2",
     "the document": "文件", "Opened %1: %n sheet(s)": "已開啟 %1：%n 張",

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "export/office_common.hpp"
+
+#include <algorithm>
+
+#include "export/markdown_syntax.hpp"
+
+namespace tactus::exporter::office {
+
+std::string escape(std::string_view text, std::size_t* dropped) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+                    if (dropped) ++*dropped;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out;
+}
+
+ListLabel list_label(const document::Block& item) {
+    ListLabel out;
+    if (item.spans.empty()) return out;
+    const auto& first = item.spans.front();
+    if (first.emphasis != document::emphasis_none || first.note_reference || first.transcriber_note ||
+        first.position != document::Position::baseline || !first.language.empty())
+        return out;
+    const std::string_view text = first.text;
+    std::size_t length = 0;
+    if (text.starts_with(markdown::kBullet)) {
+        out.style = ListStyle::bullet;
+        length = markdown::kBullet.size();
+    } else if (const auto ordinal = markdown::ordinal_length(text);
+               ordinal > 0 && ordinal < text.size() && text[ordinal] == ' ' && text[0] != '0') {
+        out.style = text[ordinal - 1] == '.' ? ListStyle::decimal_dot : ListStyle::decimal_paren;
+        out.number = std::stoi(std::string(text.substr(0, ordinal - 1)));
+        length = ordinal + 1;
+    } else {
+        return out;
+    }
+    // The importers write a label only in front of text: a label with
+    // nothing after it is the item's text.
+    bool rest = text.substr(length).find_first_not_of(" \t\n") != std::string_view::npos;
+    for (std::size_t i = 1; i < item.spans.size() && !rest; ++i)
+        rest = item.spans[i].note_reference || item.spans[i].transcriber_note ||
+               item.spans[i].text.find_first_not_of(" \t\n") != std::string::npos;
+    if (!rest) return ListLabel{};
+    out.length = length;
+    return out;
+}
+
+std::vector<document::Span> without_label(const document::Block& item, const ListLabel& label) {
+    auto spans = item.spans;
+    if (label.length == 0 || spans.empty()) return spans;
+    spans.front().text.erase(0, label.length);
+    if (spans.front().text.empty()) spans.erase(spans.begin());
+    return spans;
+}
+
+std::vector<document::Span> note_body(const document::Block& note) {
+    std::vector<document::Span> spans(note.spans.begin() + (note.spans.empty() ? 0 : 1), note.spans.end());
+    if (!spans.empty() && !spans.front().note_reference && !spans.front().transcriber_note &&
+        spans.front().text.starts_with(' ')) {
+        spans.front().text.erase(0, 1);
+        if (spans.front().text.empty()) spans.erase(spans.begin());
+    }
+    return spans;
+}
+
+Notes::Notes(const document::Document& document) {
+    for (std::size_t i = 0; i < document.blocks.size(); ++i) {
+        const auto& b = document.blocks[i];
+        if (b.kind == document::BlockKind::note) {
+            if (!b.spans.empty() && b.spans.front().note_reference) by_label.emplace(b.spans.front().text, i);
+            continue;
+        }
+        for (const auto& s : b.spans)
+            if (s.note_reference) referenced.insert(s.text);
+    }
+}
+
+void Losses::add(const std::string& what, std::size_t block) {
+    const auto it = std::find_if(kinds_.begin(), kinds_.end(), [&](const auto& k) { return k.first == what; });
+    if (it != kinds_.end()) {
+        ++it->second.count;
+        return;
+    }
+    kinds_.emplace_back(what, Count{1, block});
+}
+
+std::vector<std::string> Losses::lines(std::string_view format) const {
+    std::vector<std::string> out;
+    for (const auto& [what, c] : kinds_)
+        out.push_back(std::string(format) + ": " + what + " (" + std::to_string(c.count) +
+                      (c.count == 1 ? " time" : " times") + "; the first at block " + std::to_string(c.first + 1) + ")");
+    return out;
+}
+
+std::string_view placeholder_png() {
+    static constexpr char png[] =
+        "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x01\x00\x00\x00\x01\x08\x06"
+        "\x00\x00\x00\x1f\x15\xc4\x89\x00\x00\x00\x0b\x49\x44\x41\x54\x78\xda\x63\x60\x00\x02\x00\x00\x05\x00\x01"
+        "\xe9\xfa\xdc\xd8\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82";
+    return {png, sizeof png - 1};
+}
+
+std::size_t table_end(const std::vector<document::Block>& blocks, std::size_t begin, std::size_t end) {
+    std::size_t i = begin;
+    while (i < end && document::is_table_kind(blocks[i].kind)) ++i;
+    return i;
+}
+
+int table_columns(const std::vector<document::Block>& blocks, std::size_t begin, std::size_t end) {
+    int columns = 1;
+    for (std::size_t i = begin; i < end; ++i)
+        if (blocks[i].kind == document::BlockKind::table_cell)
+            columns = std::max(columns, blocks[i].level + std::max(blocks[i].span, 1));
+    return columns;
+}
+
+}  // namespace tactus::exporter::office
