@@ -24,9 +24,9 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
     range_->setAccessibleDescription(
         tr("As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents"));
     range_->setPlaceholderText(tr("e.g. 3-10, 5-, p1-p2"));
-    auto* range_label = new QLabel(tr("Pa&ges:"), this);
+    auto* range_label = new QLabel(tr("P&ages:"), this);
     range_label->setBuddy(range_);
-    auto* scope_label = new QLabel(tr("E&mboss:"), this);
+    auto* scope_label = new QLabel(tr("Emb&oss:"), this);
     scope_label->setBuddy(scope_);
     summary_ = new QLabel(this);
     summary_->setObjectName(QStringLiteral("embossChoiceSummary"));
