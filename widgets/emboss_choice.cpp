@@ -24,9 +24,9 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
     range_->setAccessibleDescription(
         tr("As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents"));
     range_->setPlaceholderText(tr("e.g. 3-10, 5-, p1-p2"));
-    auto* range_label = new QLabel(tr("P&ages:"), this);
+    auto* range_label = new QLabel(tr("Pages:"), this);
     range_label->setBuddy(range_);
-    auto* scope_label = new QLabel(tr("Emb&oss:"), this);
+    auto* scope_label = new QLabel(tr("Em&boss:"), this);
     scope_label->setBuddy(scope_);
     summary_ = new QLabel(this);
     summary_->setObjectName(QStringLiteral("embossChoiceSummary"));
@@ -44,9 +44,12 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
     layout->addLayout(row);
     layout->addWidget(summary_);
 
-    connect(scope_, &QComboBox::currentIndexChanged, this, [this] {
-        range_->setEnabled(scope_->currentIndex() == scope_->count() - 1);
-        update_summary();
+    connect(scope_, &QComboBox::currentIndexChanged, this, &EmbossChoice::update_summary);
+    // Said when the choice is made, not at every key typed.
+    connect(scope_, &QComboBox::activated, this, [this] { Q_EMIT said(summary()); });
+    connect(range_, &QLineEdit::editingFinished, this, [this] {
+        if (range_->isModified()) Q_EMIT said(summary());
+        range_->setModified(false);
     });
     connect(range_, &QLineEdit::textEdited, this, [this] {
         // Typing a range chooses the range.
@@ -76,7 +79,6 @@ void EmbossChoice::update_choices() {
             scope_->addItem(tr("Volume %1 of %2").arg(v + 1).arg(volumes_.size()));
     scope_->addItem(tr("Page range"));
     scope_->setCurrentIndex(was_range ? scope_->count() - 1 : 0);
-    range_->setEnabled(was_range);
     update_summary();
 }
 

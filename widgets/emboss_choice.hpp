@@ -3,8 +3,9 @@
 // What Ctrl+P embosses, on the printer panel: the whole document, one volume
 // of a book, or a range of braille pages named as the pages number them
 // ("3-10", "5-", "p1-p2"; pipeline::parse_page_range, the CLI's --pages rule).
-// The choice is said as it is made ("Pages 3 to 10: 4 sheets"), and a range
-// that names no page says why.
+// The choice is said as it is made ("Pages 3 to 10: 4 sheets", on Enter or on
+// leaving the range; typing a range chooses it), and a range that names no
+// page says why.
 #include <QString>
 #include <QWidget>
 #include <cstddef>
@@ -46,6 +47,8 @@ public:
 
 Q_SIGNALS:
     void changed();
+    // The choice the user just made, to be heard ("Pages 3 to 10: 4 sheets").
+    void said(const QString& text);
 
 private:
     void update_choices();

@@ -45,8 +45,8 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     both_->setChecked(true);
     previous_ = make(tr("Pr&evious sheet"), QKeySequence(tr("Ctrl+PgUp")), QStringLiteral("previousSheet"));
     next_ = make(tr("Ne&xt sheet"), QKeySequence(tr("Ctrl+PgDown")), QStringLiteral("nextSheet"));
-    previous_volume_ = make(tr("Previous vo&lume"), QKeySequence(tr("Ctrl+Alt+PgUp")), QStringLiteral("previousVolume"));
-    next_volume_ = make(tr("Nex&t volume"), QKeySequence(tr("Ctrl+Alt+PgDown")), QStringLiteral("nextVolume"));
+    previous_volume_ = make(tr("Previou&s volume"), QKeySequence(tr("Ctrl+Alt+PgUp")), QStringLiteral("previousVolume"));
+    next_volume_ = make(tr("Next vo&lume"), QKeySequence(tr("Ctrl+Alt+PgDown")), QStringLiteral("nextVolume"));
     zoom_in_ = make(tr("Zoom &in"), QKeySequence::ZoomIn, QStringLiteral("zoomIn"));
     zoom_out_ = make(tr("Zoom o&ut"), QKeySequence::ZoomOut, QStringLiteral("zoomOut"));
     contrast_ = make(tr("&High contrast"), QKeySequence(tr("Ctrl+Alt+H")), QStringLiteral("highContrast"));

@@ -163,6 +163,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     connect_ = new QPushButton(tr("&Connect"), this);
     connect_->setObjectName(QStringLiteral("connectButton"));
     choice_ = new EmbossChoice(this);  // after the device row, as it is laid out and tabbed through
+    connect(choice_, &EmbossChoice::said, this, [this](const QString& text) { Q_EMIT message(text, false); });
     status_label_ = new QLabel(tr("Not connected"), this);
     status_label_->setObjectName(QStringLiteral("controllerStatus"));
     expose_status(status_label_, tr("Controller status"));

@@ -4,7 +4,7 @@
 <context>
     <name>tactus::gui::EmbossChoice</name>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="120"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>Whole document: %n sheet</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>Volume %1 of %2: %n sheet</numerusform>
@@ -20,7 +20,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="127"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="129"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>Pages %1 to %2: %n sheet</numerusform>

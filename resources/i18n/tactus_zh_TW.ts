@@ -328,13 +328,13 @@
     </message>
     <message>
         <location filename="../../widgets/emboss_choice.cpp" line="27" />
-        <source>P&amp;ages:</source>
-        <translation>頁(&amp;A)：</translation>
+        <source>Pages:</source>
+        <translation>頁：</translation>
     </message>
     <message>
         <location filename="../../widgets/emboss_choice.cpp" line="29" />
-        <source>Emb&amp;oss:</source>
-        <translation>列印(&amp;O)：</translation>
+        <source>Em&amp;boss:</source>
+        <translation>列印(&amp;B)：</translation>
     </message>
     <message>
         <location filename="../../widgets/emboss_choice.cpp" line="34" />
@@ -342,37 +342,37 @@
         <translation>要列印的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="73" />
+        <location filename="../../widgets/emboss_choice.cpp" line="76" />
         <source>Whole document</source>
         <translation>整份文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="76" />
+        <location filename="../../widgets/emboss_choice.cpp" line="79" />
         <source>Volume %1 of %2</source>
         <translation>第 %1 冊，共 %2 冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="77" />
+        <location filename="../../widgets/emboss_choice.cpp" line="80" />
         <source>Page range</source>
         <translation>頁碼範圍</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="114" />
+        <location filename="../../widgets/emboss_choice.cpp" line="116" />
         <source>No pages chosen: %1</source>
         <translation>未選擇任何頁：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="120" />
+        <location filename="../../widgets/emboss_choice.cpp" line="122" />
         <source>Whole document: %n sheet(s)</source>
         <translation><numerusform>整份文件：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="122" />
+        <location filename="../../widgets/emboss_choice.cpp" line="124" />
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation><numerusform>第 %1 冊，共 %2 冊：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="127" />
+        <location filename="../../widgets/emboss_choice.cpp" line="129" />
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation><numerusform>第 %1 頁到第 %2 頁：%n 張</numerusform></translation>
     </message>
@@ -1520,23 +1520,23 @@
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="48" />
-        <source>Previous vo&amp;lume</source>
-        <translation>上一冊(&amp;L)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/preview_panel.cpp" line="48" />
         <source>Ctrl+Alt+PgUp</source>
         <translation>Ctrl+Alt+PgUp</translation>
     </message>
     <message>
-        <location filename="../../widgets/preview_panel.cpp" line="49" />
-        <source>Nex&amp;t volume</source>
-        <translation>下一冊(&amp;T)</translation>
+        <location filename="../../widgets/preview_panel.cpp" line="48" />
+        <source>Previou&amp;s volume</source>
+        <translation>上一冊(&amp;S)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="49" />
         <source>Ctrl+Alt+PgDown</source>
         <translation>Ctrl+Alt+PgDown</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/preview_panel.cpp" line="49" />
+        <source>Next vo&amp;lume</source>
+        <translation>下一冊(&amp;L)</translation>
     </message>
     <message>
         <location filename="../../widgets/preview_panel.cpp" line="50" />
@@ -1663,199 +1663,199 @@
     </message>
     <message>
         <location filename="../../widgets/printer_panel.cpp" line="163" />
-        <location filename="../../widgets/printer_panel.cpp" line="531" />
-        <location filename="../../widgets/printer_panel.cpp" line="579" />
+        <location filename="../../widgets/printer_panel.cpp" line="532" />
+        <location filename="../../widgets/printer_panel.cpp" line="580" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="166" />
-        <location filename="../../widgets/printer_panel.cpp" line="895" />
+        <location filename="../../widgets/printer_panel.cpp" line="167" />
+        <location filename="../../widgets/printer_panel.cpp" line="896" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="168" />
+        <location filename="../../widgets/printer_panel.cpp" line="169" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="173" />
+        <location filename="../../widgets/printer_panel.cpp" line="174" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="178" />
+        <location filename="../../widgets/printer_panel.cpp" line="179" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="179" />
+        <location filename="../../widgets/printer_panel.cpp" line="180" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="180" />
+        <location filename="../../widgets/printer_panel.cpp" line="181" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="190" />
+        <location filename="../../widgets/printer_panel.cpp" line="191" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="191" />
+        <location filename="../../widgets/printer_panel.cpp" line="192" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="192" />
+        <location filename="../../widgets/printer_panel.cpp" line="193" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="198" />
+        <location filename="../../widgets/printer_panel.cpp" line="199" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="199" />
+        <location filename="../../widgets/printer_panel.cpp" line="200" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="203" />
+        <location filename="../../widgets/printer_panel.cpp" line="204" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="208" />
+        <location filename="../../widgets/printer_panel.cpp" line="209" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="218" />
+        <location filename="../../widgets/printer_panel.cpp" line="219" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="219" />
+        <location filename="../../widgets/printer_panel.cpp" line="220" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="221" />
+        <location filename="../../widgets/printer_panel.cpp" line="222" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="222" />
+        <location filename="../../widgets/printer_panel.cpp" line="223" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="223" />
+        <location filename="../../widgets/printer_panel.cpp" line="224" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="224" />
+        <location filename="../../widgets/printer_panel.cpp" line="225" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="226" />
+        <location filename="../../widgets/printer_panel.cpp" line="227" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="227" />
+        <location filename="../../widgets/printer_panel.cpp" line="228" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="233" />
+        <location filename="../../widgets/printer_panel.cpp" line="234" />
         <source>The plan's own speed</source>
         <translation>依列印計畫的實際速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="234" />
+        <location filename="../../widgets/printer_panel.cpp" line="235" />
         <source>10 times faster</source>
         <translation>快 10 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="235" />
+        <location filename="../../widgets/printer_panel.cpp" line="236" />
         <source>As fast as the computer can</source>
         <translation>以電腦能達到的最快速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="236" />
+        <location filename="../../widgets/printer_panel.cpp" line="237" />
         <source>Simulator speed</source>
         <translation>模擬器速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="238" />
+        <location filename="../../widgets/printer_panel.cpp" line="239" />
         <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
         <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="240" />
+        <location filename="../../widgets/printer_panel.cpp" line="241" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="247" />
+        <location filename="../../widgets/printer_panel.cpp" line="248" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="268" />
+        <location filename="../../widgets/printer_panel.cpp" line="269" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="323" />
+        <location filename="../../widgets/printer_panel.cpp" line="324" />
         <source>Built-in simulated embosser</source>
         <translation>內建模擬點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="326" />
+        <location filename="../../widgets/printer_panel.cpp" line="327" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="327" />
+        <location filename="../../widgets/printer_panel.cpp" line="328" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="330" />
+        <location filename="../../widgets/printer_panel.cpp" line="331" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
@@ -1880,82 +1880,82 @@
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="357" />
+        <location filename="../../widgets/printer_panel.cpp" line="358" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="369" />
+        <location filename="../../widgets/printer_panel.cpp" line="370" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="392" />
+        <location filename="../../widgets/printer_panel.cpp" line="393" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="397" />
+        <location filename="../../widgets/printer_panel.cpp" line="398" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="407" />
+        <location filename="../../widgets/printer_panel.cpp" line="408" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="418" />
+        <location filename="../../widgets/printer_panel.cpp" line="419" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="422" />
+        <location filename="../../widgets/printer_panel.cpp" line="423" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="429" />
+        <location filename="../../widgets/printer_panel.cpp" line="430" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="433" />
+        <location filename="../../widgets/printer_panel.cpp" line="434" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="449" />
+        <location filename="../../widgets/printer_panel.cpp" line="450" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="460" />
+        <location filename="../../widgets/printer_panel.cpp" line="461" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="472" />
+        <location filename="../../widgets/printer_panel.cpp" line="473" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="482" />
+        <location filename="../../widgets/printer_panel.cpp" line="483" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="487" />
+        <location filename="../../widgets/printer_panel.cpp" line="488" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="500" />
+        <location filename="../../widgets/printer_panel.cpp" line="501" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="512" />
+        <location filename="../../widgets/printer_panel.cpp" line="513" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
@@ -2035,129 +2035,129 @@
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="673" />
+        <location filename="../../widgets/printer_panel.cpp" line="674" />
         <source>%1 paused</source>
         <translation>%1 已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="675" />
+        <location filename="../../widgets/printer_panel.cpp" line="676" />
         <source>%1 resumed</source>
         <translation>%1 已繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="785" />
-        <location filename="../../widgets/printer_panel.cpp" line="788" />
+        <location filename="../../widgets/printer_panel.cpp" line="786" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="788" />
+        <location filename="../../widgets/printer_panel.cpp" line="789" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel.cpp" line="790" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="798" />
+        <location filename="../../widgets/printer_panel.cpp" line="799" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="851" />
-        <location filename="../../widgets/printer_panel.cpp" line="888" />
+        <location filename="../../widgets/printer_panel.cpp" line="852" />
+        <location filename="../../widgets/printer_panel.cpp" line="889" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="856" />
+        <location filename="../../widgets/printer_panel.cpp" line="857" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="864" />
+        <location filename="../../widgets/printer_panel.cpp" line="865" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="888" />
+        <location filename="../../widgets/printer_panel.cpp" line="889" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="899" />
+        <location filename="../../widgets/printer_panel.cpp" line="900" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="902" />
+        <location filename="../../widgets/printer_panel.cpp" line="903" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="903" />
+        <location filename="../../widgets/printer_panel.cpp" line="904" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="908" />
+        <location filename="../../widgets/printer_panel.cpp" line="909" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="911" />
+        <location filename="../../widgets/printer_panel.cpp" line="912" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="962" />
+        <location filename="../../widgets/printer_panel.cpp" line="963" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="987" />
+        <location filename="../../widgets/printer_panel.cpp" line="988" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="988" />
+        <location filename="../../widgets/printer_panel.cpp" line="989" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1006" />
+        <location filename="../../widgets/printer_panel.cpp" line="1007" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1010" />
+        <location filename="../../widgets/printer_panel.cpp" line="1011" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1016" />
+        <location filename="../../widgets/printer_panel.cpp" line="1017" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1020" />
+        <location filename="../../widgets/printer_panel.cpp" line="1021" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1024" />
+        <location filename="../../widgets/printer_panel.cpp" line="1025" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1028" />
+        <location filename="../../widgets/printer_panel.cpp" line="1029" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="473" />
+        <location filename="../../widgets/printer_panel.cpp" line="474" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
@@ -2167,12 +2167,12 @@
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="521" />
+        <location filename="../../widgets/printer_panel.cpp" line="522" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="516" />
+        <location filename="../../widgets/printer_panel.cpp" line="517" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
@@ -2188,18 +2188,18 @@
         <translation>無法列出 CUPS 伺服器 %1 上的佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="528" />
+        <location filename="../../widgets/printer_panel.cpp" line="529" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="541" />
-        <location filename="../../widgets/printer_panel.cpp" line="556" />
+        <location filename="../../widgets/printer_panel.cpp" line="542" />
+        <location filename="../../widgets/printer_panel.cpp" line="557" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="560" />
+        <location filename="../../widgets/printer_panel.cpp" line="561" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
@@ -2209,85 +2209,85 @@
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="580" />
+        <location filename="../../widgets/printer_panel.cpp" line="581" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="609" />
+        <location filename="../../widgets/printer_panel.cpp" line="610" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="663" />
+        <location filename="../../widgets/printer_panel.cpp" line="664" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="670" />
-        <location filename="../../widgets/printer_panel.cpp" line="860" />
+        <location filename="../../widgets/printer_panel.cpp" line="671" />
+        <location filename="../../widgets/printer_panel.cpp" line="861" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="677" />
+        <location filename="../../widgets/printer_panel.cpp" line="678" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="714" />
+        <location filename="../../widgets/printer_panel.cpp" line="715" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="716" />
+        <location filename="../../widgets/printer_panel.cpp" line="717" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="778" />
+        <location filename="../../widgets/printer_panel.cpp" line="779" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="561" />
+        <location filename="../../widgets/printer_panel.cpp" line="562" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="686" />
+        <location filename="../../widgets/printer_panel.cpp" line="687" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="687" />
-        <location filename="../../widgets/printer_panel.cpp" line="691" />
+        <location filename="../../widgets/printer_panel.cpp" line="688" />
+        <location filename="../../widgets/printer_panel.cpp" line="692" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="664" />
+        <location filename="../../widgets/printer_panel.cpp" line="665" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="706" />
-        <location filename="../../widgets/printer_panel.cpp" line="736" />
+        <location filename="../../widgets/printer_panel.cpp" line="707" />
+        <location filename="../../widgets/printer_panel.cpp" line="737" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="714" />
+        <location filename="../../widgets/printer_panel.cpp" line="715" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="967" />
+        <location filename="../../widgets/printer_panel.cpp" line="968" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="977" />
+        <location filename="../../widgets/printer_panel.cpp" line="978" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>

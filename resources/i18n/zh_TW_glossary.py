@@ -328,9 +328,9 @@ T = {
     "Volume %1 of %2, blank page": "第 %1 冊，共 %2 冊，空白頁", "Volume %1 of %2, page %3": "第 %1 冊，共 %2 冊，第 %3 頁",
     "Volume %1 of %2": "第 %1 冊，共 %2 冊", "Volume %1 of %2 is the last": "第 %1 冊（共 %2 冊）是最後一冊",
     "Volume": "冊", "Go to volume (%1, %2)": "前往某一冊（%1、%2）",
-    "Previous vo&lume": "上一冊(&L)", "Nex&t volume": "下一冊(&T)",
+    "Previou&s volume": "上一冊(&S)", "Next vo&lume": "下一冊(&L)",
     "%1; %2": "%1；%2",
-    "Emboss": "列印範圍", "Emb&oss:": "列印(&O)：", "P&ages:": "頁(&A)：",
+    "Emboss": "列印範圍", "Em&boss:": "列印(&B)：", "Pages:": "頁：",
     "The whole document, one volume of a book, or a range of braille pages": "整份文件、書的其中一冊，或一段點字頁",
     "Braille pages to emboss": "要列印的點字頁",
     "As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents":
