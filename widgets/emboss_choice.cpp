@@ -47,9 +47,15 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
     connect(scope_, &QComboBox::currentIndexChanged, this, &EmbossChoice::update_summary);
     // Said when the choice is made, not at every key typed.
     connect(scope_, &QComboBox::activated, this, [this] { Q_EMIT said(summary()); });
+    connect(range_, &QLineEdit::returnPressed, this, [this] {
+        said_range_ = range_->text();
+        Q_EMIT said(summary());
+    });
     connect(range_, &QLineEdit::editingFinished, this, [this] {
-        if (range_->isModified()) Q_EMIT said(summary());
-        range_->setModified(false);
+        // Leaving a range that was changed says it too, once.
+        if (range_->text() == said_range_) return;
+        said_range_ = range_->text();
+        Q_EMIT said(summary());
     });
     connect(range_, &QLineEdit::textEdited, this, [this] {
         // Typing a range chooses the range.

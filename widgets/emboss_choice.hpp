@@ -60,6 +60,7 @@ private:
     QComboBox* scope_;
     QLineEdit* range_;
     QLabel* summary_;
+    QString said_range_;  // the range last said
 };
 
 }  // namespace tactus::gui

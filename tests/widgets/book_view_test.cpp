@@ -125,7 +125,24 @@ private Q_SLOTS:
         for (auto* c : choice->findChildren<QWidget*>())
             if (c->focusPolicy() != Qt::NoFocus && !qobject_cast<QLabel*>(c))
                 QVERIFY2(!c->accessibleName().isEmpty(), qPrintable(c->objectName()));
-        choice->choose_range(QStringLiteral("3-10"));
+        // Tab goes from the choice to the range, as Orca's user does.
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.show_panel(QStringLiteral("printer"));
+        auto* scope = choice->findChild<QComboBox*>(QStringLiteral("embossScope"));
+        scope->setFocus(Qt::ShortcutFocusReason);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QVERIFY2(QApplication::focusWidget() == choice->findChild<QLineEdit*>(QStringLiteral("embossPages")),
+                 qPrintable(QApplication::focusWidget() ? QApplication::focusWidget()->objectName() + QLatin1Char(' ') +
+                                                              QApplication::focusWidget()->accessibleName()
+                                                        : QStringLiteral("none")));
+        // Typed as a user types it, the range is said on Enter.
+        QSignalSpy said(w.announcer(), &Announcer::announced);
+        QTest::keyClicks(QApplication::focusWidget(), QStringLiteral("3-10"));
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+        QVERIFY(!said.isEmpty());
+        QVERIFY2(said.last()[0].toString().startsWith(QStringLiteral("Pages 3 to 10: 4 sheet")),
+                 qPrintable(said.last()[0].toString()));
         const auto range = choice->chosen();
         QVERIFY(range);
         // Body pages 3 to 10 are eight pages after the title and contents.
