@@ -84,7 +84,7 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     volume_box_->setToolTip(tr("Go to volume (%1, %2)")
                                 .arg(previous_volume_->shortcut().toString(QKeySequence::NativeText),
                                      next_volume_->shortcut().toString(QKeySequence::NativeText)));
-    volume_box_action_ = bar->addWidget(volume_box_);
+    volume_box_action_ = nullptr;
     connect(volume_box_, &QComboBox::activated, this, [this](int index) {
         if (index >= 0) go_to_volume(static_cast<std::size_t>(index));
     });
@@ -92,6 +92,9 @@ PreviewPanel::PreviewPanel(QWidget* parent) : QWidget(parent) {
     view_bar->setObjectName(QStringLiteral("previewViewBar"));
     view_bar->setAccessibleName(tr("Preview view controls"));
     view_bar->addActions({zoom_out_, zoom_in_, contrast_, pdf_});
+    // On the second row, where a dock of ordinary width still shows it.
+    view_bar->addSeparator();
+    volume_box_action_ = view_bar->addWidget(volume_box_);
     label_ = new QLabel(this);
     label_->setObjectName(QStringLiteral("previewLabel"));
     expose_status(label_, tr("Preview status"));

@@ -569,7 +569,10 @@ def scenario_book(tactus, sample, work):
                expect=[r"[Vv]olume 2 of 2, page t1"], once=[r"[Vv]olume 2 of 2, page t1"])
         s.step("Ctrl+7 goes to the printer", keys=["ctrl+7"], expect=[r"Embosser"])
         s.step("Alt+B goes to what to emboss", keys=["alt+b"], expect=[r"Emboss"])
-        s.step("Tab names the page range", keys=["Tab"], allow_silent=True, quiet=0.8)
+        # AT-SPI gets the focus event for "Braille pages to emboss" here, but
+        # Orca 43 says nothing after Alt+B then Tab (a known gap, docs/gui.md);
+        # the range is heard when Enter says it.
+        s.step("Tab goes to the page range", keys=["Tab"], allow_silent=True, quiet=0.8)
         s.step("typing a range", type_text="3-10", allow_silent=True, quiet=0.8)
         s.step("Enter says the range with its sheets", keys=["Return"],
                expect=[r"Pages 3 to 10: 4 sheets"], once=[r"Pages 3 to 10: 4 sheets"])
