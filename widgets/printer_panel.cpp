@@ -537,11 +537,15 @@ void PrinterPanel::disconnect_device() {
 spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocument& pages,
                                   const profile::PrinterProfile& p) {
     const auto range = choice_->chosen();
-    auto part = range ? spool::select_pages(pages, range->first, range->second) : std::unexpected(range.error());
-    if (!part) {
-        show_fault(tr("Cannot queue %1: %2").arg(title, qs(part.error().message)));
+    // The whole document goes as it is (an empty one too); a part is cut from it.
+    const bool whole = range && range->first == 0;
+    auto cut = range ? (whole ? Result<layout::PagedDocument>{} : spool::select_pages(pages, range->first, range->second))
+                     : std::unexpected(range.error());
+    if (!cut) {
+        show_fault(tr("Cannot queue %1: %2").arg(title, qs(cut.error().message)));
         return 0;
     }
+    const auto* part = whole ? &pages : &*cut;
     const auto printer = setup_printer(selected_device(), p);
     if (printer.empty()) return 0;
     spool::JobSubmission job;
