@@ -31,6 +31,7 @@
 #include <algorithm>
 
 #include "announcer.hpp"
+#include "book_view.hpp"
 #include "ask.hpp"
 #include "atomic_write.hpp"
 #include "braille_pane.hpp"
@@ -144,21 +145,35 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(find_, &FindReplaceDialog::message, this, [this](const QString& m) { report(m); });
 
     auto* sp = preview_->preview();
+    // A book (an EPUB, a long text) is previewed and embossed in its book layout.
+    book_ = new BookView(this);
+    book_->set_source([this] { return editor_->has_layout() ? &editor_->layout() : nullptr; },
+                      [this] { return source_name_; });
+    preview_->set_book(book_);
+    connect(preview_, &PreviewPanel::announce, announcer_, &Announcer::announce);
+    connect(book_, &BookView::changed, this, [this, sp] {
+        const auto* shown = book_->shown(&editor_->layout().paged());
+        sp->set_document(shown);
+        printer_->emboss_choice()->set_pages(book_->labels(), book_->volumes(), shown->geometry);
+    });
     sp->set_back_translator([this](const document::BrailleLine& cells) {
         return editor_->has_layout() ? QString::fromStdString(editor_->layout().back_translate(cells)) : QString{};
     });
     sp->set_print_word([this](std::size_t page, int line, int cell) {
-        return editor_->has_layout() ? QString::fromStdU32String(edit::print_word_at(editor_->layout(), edit::PagePosition{page, line, cell}))
-                                     : QString{};
+        // The editor's print words are on its own pages, not a book's.
+        return editor_->has_layout() && !book_->active()
+                   ? QString::fromStdU32String(edit::print_word_at(editor_->layout(), edit::PagePosition{page, line, cell}))
+                   : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
-        sp->set_document(&editor_->layout().paged());
+        sp->set_document(book_->shown(&editor_->layout().paged()));
+        book_->schedule();
         update_status();
         schedule_plan();
         tell_pages_kept();
     });
     connect(editor_, &EditorWidget::position_changed, this, [this, sp](const edit::PagePosition& p) {
-        if (!sp->hasFocus()) sp->show_position(p.page, p.line, p.cell);
+        if (!sp->hasFocus() && !book_->active()) sp->show_position(p.page, p.line, p.cell);
         update_status();
     });
     connect(editor_, &EditorWidget::cell_entered, announcer_, &Announcer::announce);
@@ -183,7 +198,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     build_menus();
     restore_settings();
     apply_system_look(*preview_);
-    sp->set_document(&editor_->layout().paged());
+    book_->refresh_now();
 
     connect(&autosave_, &Autosave::due, this, [this] {
         if (!editor_->undo_stack()->isClean()) autosave_now();
@@ -912,7 +927,8 @@ bool MainWindow::emboss() {
                    : printer_->send_to_queue(name, base + QStringLiteral(".md"), file_bytes(base + QStringLiteral(".md")),
                                              tables_->table());
     } else {
-        sent = printer_->submit(name, editor_->layout().paged(), profile_->profile()) != 0;
+        book_->flush();
+        sent = printer_->submit(name, *book_->shown(&editor_->layout().paged()), profile_->profile()) != 0;
     }
     if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.

@@ -30,6 +30,7 @@ class ProfileEditor;
 class VibrationView;
 class FindReplaceDialog;
 class PreviewPanel;
+class BookView;
 class TablePicker;
 
 class MainWindow : public QMainWindow {
@@ -54,6 +55,8 @@ public:
     [[nodiscard]] EditorWidget* editor() const { return editor_; }
     [[nodiscard]] PreviewPanel* preview_panel() const { return preview_; }
     [[nodiscard]] Announcer* announcer() const { return announcer_; }
+    // The book layout the preview shows and the printer embosses, when the document reads as a book.
+    [[nodiscard]] BookView* book_view() const { return book_; }
     [[nodiscard]] TablePicker* table_picker() const { return tables_; }
     [[nodiscard]] MotionView* motion_view() const { return motion_; }
     [[nodiscard]] VibrationView* vibration_view() const { return vibration_; }
@@ -135,6 +138,7 @@ private:
 
     EditorWidget* editor_ = nullptr;
     PreviewPanel* preview_ = nullptr;
+    BookView* book_ = nullptr;
     TablePicker* tables_ = nullptr;
     Announcer* announcer_ = nullptr;
     FindReplaceDialog* find_ = nullptr;

@@ -39,6 +39,7 @@
 #include "spool/runner_token.hpp"
 #include "spool/snapshot.hpp"
 #include "spool/spool.hpp"
+#include "emboss_choice.hpp"
 #include "status_label.hpp"
 #include "transport/device.hpp"
 
@@ -161,6 +162,8 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     auto* refresh_button = new QPushButton(tr("&Refresh"), this);
     connect_ = new QPushButton(tr("&Connect"), this);
     connect_->setObjectName(QStringLiteral("connectButton"));
+    choice_ = new EmbossChoice(this);  // after the device row, as it is laid out and tabbed through
+    connect(choice_, &EmbossChoice::said, this, [this](const QString& text) { Q_EMIT message(text, false); });
     status_label_ = new QLabel(tr("Not connected"), this);
     status_label_->setObjectName(QStringLiteral("controllerStatus"));
     expose_status(status_label_, tr("Controller status"));
@@ -257,6 +260,7 @@ PrinterPanel::PrinterPanel(QWidget* parent) : QWidget(parent) {
     job_row->addWidget(from_page_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(device_row);
+    layout->addWidget(choice_);
     layout->addWidget(status_label_);
     layout->addWidget(fault_);
     layout->addWidget(queue_, 2);
@@ -532,13 +536,25 @@ void PrinterPanel::disconnect_device() {
 
 spool::JobId PrinterPanel::submit(const QString& title, const layout::PagedDocument& pages,
                                   const profile::PrinterProfile& p) {
+    const auto range = choice_->chosen();
+    // The whole document goes as it is (an empty one too); a part is cut from it.
+    const bool whole = range && range->first == 0;
+    auto cut = range ? (whole ? Result<layout::PagedDocument>{} : spool::select_pages(pages, range->first, range->second))
+                     : std::unexpected(range.error());
+    if (!cut) {
+        show_fault(tr("Cannot queue %1: %2").arg(title, qs(cut.error().message)));
+        return 0;
+    }
+    const auto* part = whole ? &pages : &*cut;
     const auto printer = setup_printer(selected_device(), p);
     if (printer.empty()) return 0;
     spool::JobSubmission job;
     job.printer = printer;
     job.title = title.toStdString();
-    job.document = spool::to_snapshot(pages);
-    job.sheets_per_copy = pages.sheet_count();
+    job.document = spool::to_snapshot(*part);
+    job.sheets_per_copy = part->sheet_count();
+    job.first_page = range->first;
+    job.last_page = range->second;
     job.user = spool::this_user_name();
     auto id = spool_->submit(job);
     if (!id) {

@@ -54,6 +54,7 @@ class Spool;
 namespace tactus::gui {
 
 struct RemoteQueueJob;  // printer_panel_rows.hpp
+class EmbossChoice;
 
 class PrinterPanel : public QWidget {
     Q_OBJECT
@@ -104,7 +105,12 @@ public:
     // up with `p` if needed, as `emboss --queue --device` does) and makes sure a
     // runner serves the printer. An unreachable embosser does not stop it: the
     // job waits in the queue. Returns the spool job id, or 0 with the fault shown.
+    // Only the pages chosen on the panel go into the job (emboss_choice(): the
+    // whole document, a volume or a page range); a range that names no page
+    // queues nothing and says why.
     spool::JobId submit(const QString& title, const layout::PagedDocument& pages, const profile::PrinterProfile& p);
+    // What Ctrl+P embosses: the whole document, a volume, a page range.
+    [[nodiscard]] EmbossChoice* emboss_choice() const { return choice_; }
 
     // The spool's jobs as the queue view shows them (all printers; unfinished
     // first in queue order, then the 100 most recent finished ones).
@@ -200,6 +206,7 @@ private:
     QString status_;
 
     QComboBox* devices_;
+    EmbossChoice* choice_;
     QPushButton* connect_;
     QLabel* status_label_;
     QLabel* fault_;

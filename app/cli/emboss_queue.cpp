@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "pipeline/page_range.hpp"
 #include "pipeline/pipeline.hpp"
 #include "profile/profile.hpp"
 #include "profile/profile_json.hpp"
@@ -18,21 +19,6 @@
 namespace tactus::cli {
 namespace {
 
-std::pair<std::size_t, std::size_t> parse_range(const std::string& r) {
-    if (r.empty()) return {0, 0};
-    std::size_t first = 0, last = 0;
-    const auto dash = r.find('-');
-    try {
-        first = std::stoul(r.substr(0, dash));
-        last = dash == std::string::npos ? first : (dash + 1 == r.size() ? 0 : std::stoul(r.substr(dash + 1)));
-    } catch (const std::exception&) {
-        throw CLI::ValidationError("--pages", "expected FIRST-LAST, FIRST- or N, e.g. 3-10");
-    }
-    if (first == 0) throw CLI::ValidationError("--pages", "pages count from 1");
-    return {first, last};
-}
-
-
 }  // namespace
 
 void add_emboss_queue_options(CLI::App& cmd, EmbossQueueArgs& a) {
@@ -43,7 +29,8 @@ void add_emboss_queue_options(CLI::App& cmd, EmbossQueueArgs& a) {
                    "With --queue: the queue's printer (default: the one on --device, set up on first use; "
                    "else the only one set up)");
     cmd.add_option("--copies", a.copies, "With --queue or an ipp:// device: copies")->capture_default_str()->check(CLI::Range(1, 10000));
-    cmd.add_option("--pages", a.pages, "With --queue: braille page range, e.g. 3-10, 5- or 7 (default: all)");
+    cmd.add_option("--pages", a.pages, "With --queue: braille pages as numbered on them, e.g. 3-10, 5- or 7; in a book (--volumes) also "
+                   "t1 (title page) and p1-p2 (contents) (default: all)");
     cmd.add_option("--priority", a.priority, "With --queue: higher runs first")->capture_default_str();
     cmd.add_option("--title", a.title, "With --queue or an ipp:// device: job title (default: the file name)");
 }
@@ -93,13 +80,18 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     spool::Spool s = open_spool(a.db, !a.device.empty());
     const std::string printer = choose_printer(s, a);
     const auto record = require(s.printer(printer));
-    const auto [first, last] = parse_range(a.pages);
+    // The range as the pages show their numbers (core's one rule, the app's too).
+    std::optional<pipeline::PageRange> range;
+    if (!a.pages.empty()) range = require(pipeline::parse_page_range(a.pages), exit_usage);
     // The page format is the queue printer's unless the command line overrides
     // it, as for direct embossing.
     const auto profile = profile::parse_profile(record.profile_json);
     if (!profile) fail_with(exit_bad_input, located(profile.error(), "printer " + record.name));
     const auto options = layout.pipeline_options(*profile);
-    const auto doc = lay_out_for_cli(layout, options, &*profile);
+    std::vector<std::string> labels;
+    const auto doc = lay_out_for_cli(layout, options, &*profile, std::nullopt, false, &labels);
+    std::size_t first = 0, last = 0;
+    if (range) std::tie(first, last) = require(pipeline::find_page_range(labels, *range));
     const auto part = require(spool::select_pages(doc, first, last));
     // The print job the runner will make, made once now: a job the printer
     // cannot be sent (more passes than the controller counts, a page the
@@ -112,7 +104,7 @@ void enqueue_emboss(const LayoutArgs& layout, const EmbossQueueArgs& a) {
     job.sheets_per_copy = part.sheet_count();
     job.copies = a.copies;
     job.first_page = first;
-    job.last_page = first ? (last ? last : doc.pages.size()) : 0;
+    job.last_page = last;
     job.priority = a.priority;
     job.user = spool::this_user_name();
     const auto id = require(s.submit(job));

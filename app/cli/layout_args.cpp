@@ -9,6 +9,7 @@
 #include "graphic/raster_trace.hpp"
 #include "graphic/svg_import.hpp"
 #include "layout/braille_pages.hpp"
+#include "pipeline/page_range.hpp"
 #include "platform/console.hpp"
 #include "profile/firmware_tables.hpp"
 #include "profile/page_geometry.hpp"
@@ -157,7 +158,8 @@ private:
 
 layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
                                       const profile::PrinterProfile* machine,
-                                      const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol) {
+                                      const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol,
+                                      std::vector<std::string>* labels) {
     const bool svg = graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg");
     const bool picture = graphic::is_raster_path(args.file) && args.format == "auto";
     if (svg || picture) {
@@ -174,6 +176,7 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
         auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, dots));
         for (const auto& w : laid.document.warnings)
             std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
+        if (labels) *labels = pipeline::page_labels(laid.document);
         return std::move(laid.document);
     }
     const auto doc = require(import::import_file(args.file, options.import));
@@ -185,7 +188,7 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
         ProgressLine progress;
         auto with_progress = options;
         with_progress.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
-        laid = pipeline::lay_out(doc, with_progress);
+        laid = pipeline::lay_out(doc, with_progress, labels);
     }
     auto paged = require(std::move(laid));
     for (const auto& w : paged.warnings) std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';

@@ -54,10 +54,12 @@ struct LayoutArgs {
 // `firmware`: the tables of a protocol-3 plan, whose grid the dots then keep
 // (graphic::dot_options); without them, the grid of the tables the profile
 // makes (protocol 3, the default everywhere), or the motor steps when the
-// reference firmware cannot run the profile.
+// reference firmware cannot run the profile. `labels`: the number each page
+// shows (pipeline::page_labels), for --pages.
 layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
                                       const profile::PrinterProfile* machine = nullptr,
                                       const std::optional<machine::FirmwareTables>& firmware = std::nullopt,
-                                      bool legacy_protocol = false);
+                                      bool legacy_protocol = false,
+                                      std::vector<std::string>* labels = nullptr);
 
 }  // namespace tactus::cli

@@ -8,6 +8,7 @@
 
 #include "common/utf8.hpp"
 #include "layout/paginator.hpp"
+#include "pipeline/book_choice.hpp"
 #include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "common/try.hpp"
@@ -104,9 +105,11 @@ public:
         }
 
         for (std::size_t v = 0; v < bodies.size(); ++v) {
-            TACTUS_TRY(prelims, preliminary_pages(v, bodies.size()));
+            std::size_t title_pages = 0;
+            TACTUS_TRY(prelims, preliminary_pages(v, bodies.size(), title_pages));
             VolumeRange range;
             range.first_page = out.pages.pages.size();
+            range.contents_first_page = range.first_page + title_pages;
             layout::PageSection volume_section;
             volume_section.first_page = range.first_page;
             volume_section.duplex = layout_.geometry.interpoint;
@@ -181,11 +184,7 @@ private:
     // volume is divided at the block where the target is reached (§1.6).
     std::vector<std::size_t> volume_starts(const std::vector<std::size_t>& start_page, std::size_t total_pages) const {
         std::vector<std::size_t> starts{0};
-        const std::size_t per_volume =
-            std::max<std::size_t>(2, static_cast<std::size_t>(book_.sheets_per_volume) * (layout_.geometry.interpoint ? 2 : 1));
-        // Room for the preliminary pages: a title page and a contents page or two.
-        const std::size_t prelims = (book_.title_page ? 2u : 0u) + (book_.contents ? 2u : 0u);
-        const std::size_t room = per_volume > prelims + 2 ? per_volume - prelims : per_volume;
+        const std::size_t room = volume_body_room(book_, layout_.geometry);
         if (total_pages <= room) return starts;
         while (true) {
             const auto first = starts.back();
@@ -227,7 +226,9 @@ private:
 
     std::string book_title() const { return !book_.title.empty() ? book_.title : metadata(doc_, "title"); }
 
-    Result<std::vector<layout::Page>> preliminary_pages(std::size_t volume, std::size_t volumes) {
+    // `title_pages`: how many of them are the title part (t-numbered, with its blank back).
+    Result<std::vector<layout::Page>> preliminary_pages(std::size_t volume, std::size_t volumes,
+                                                        std::size_t& title_pages) {
         std::vector<translate::TranslatedBlock> blocks;
         const auto line = [&](std::string_view text, BlockKind kind = BlockKind::heading, int level = 1) -> Result<void> {
             if (text.empty()) return {};
@@ -275,10 +276,15 @@ private:
             }
         }
         std::vector<layout::Page> pages;
+        bool contents = false;
         for (const auto& [prefix, part] : {std::pair{'t', &title_blocks}, std::pair{'p', &blocks}}) {
             if (part->empty()) continue;
             // Each part starts on a new sheet, so its numbering matches the sheet's side.
             if (layout_.geometry.interpoint && pages.size() % 2 == 1) pages.push_back(blank_page());
+            if (prefix == 'p') {
+                title_pages = pages.size();
+                contents = true;
+            }
             layout::Paginator p(layout_, [this, prefix](int n) { return prelim_number(prefix, n); });
             for (const auto& b : *part) p.add(b);
             append(pages, std::move(p).finish().pages);
@@ -287,6 +293,7 @@ private:
         if (pages.empty()) return pages;
         // The body starts on a new sheet: a blank back after an odd count.
         if (layout_.geometry.interpoint && pages.size() % 2 == 1) pages.push_back(blank_page());
+        if (!contents) title_pages = pages.size();
         return pages;
     }
 

@@ -40,6 +40,9 @@ struct BookOptions {
 // One volume's pages in PagedDocument::pages: its preliminary pages, then its body.
 struct VolumeRange {
     std::size_t first_page = 0;
+    // Where the p-numbered preliminary pages (the contents) start: the pages
+    // before it are the t-numbered title page (page_labels reads this).
+    std::size_t contents_first_page = 0;
     std::size_t body_first_page = 0;
     std::size_t end_page = 0;  // one past its last page
 };

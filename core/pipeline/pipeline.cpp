@@ -13,6 +13,7 @@
 #include "layout/braille_reflow.hpp"
 #include "layout/paginator.hpp"
 #include "translate/script_check.hpp"
+#include "pipeline/page_range.hpp"
 #include "pipeline/translation_workers.hpp"
 #include "translate/translated_document.hpp"
 #include "translate/translator.hpp"
@@ -79,7 +80,21 @@ layout::PagedDocument finish(layout::Paginator paginator, std::vector<std::strin
 
 }  // namespace
 
-Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options) {
+namespace {
+Result<layout::PagedDocument> lay_out_pages(const document::Document& document, const PipelineOptions& options,
+                                            std::vector<std::string>* labels);
+}  // namespace
+
+Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options,
+                                      std::vector<std::string>* labels) {
+    auto laid = lay_out_pages(document, options, labels);
+    if (laid && labels && labels->size() != laid->pages.size()) *labels = page_labels(*laid);
+    return laid;
+}
+
+namespace {
+Result<layout::PagedDocument> lay_out_pages(const document::Document& document, const PipelineOptions& options,
+                                            std::vector<std::string>* labels) {
     TACTUS_TRY_VOID(validate(options.layout));
     if (document.blocks.empty() && !options.allow_empty) {
         // Pictures without a description, say, are not nothing: the reader
@@ -103,6 +118,7 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
                                  : TranslationWorkers::suggested_workers(document);
     if (options.book) {
         TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator, workers));
+        if (labels) *labels = page_labels(book);
         auto doc = std::move(book.pages);
         doc.metadata = document.metadata;
         std::vector<std::string> first = document.warnings;
@@ -181,6 +197,8 @@ Result<layout::PagedDocument> lay_out(const document::Document& document, const 
     if (number_error) return std::unexpected(*number_error);
     return finish(std::move(paginator), std::move(script_warnings), document);
 }
+
+}  // namespace
 
 Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,
                                    const PipelineOptions& options) {

@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/result.hpp"
 #include "document/document.hpp"
@@ -45,7 +46,10 @@ struct PipelineOptions {
     std::function<void(std::size_t, std::size_t)> progress;
 };
 
-Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options);
+// `labels`, when given, receives the number each page shows (page_range.hpp:
+// "12"; a book's preliminary pages "t1", "p1"), for a range the user names.
+Result<layout::PagedDocument> lay_out(const document::Document& document, const PipelineOptions& options,
+                                      std::vector<std::string>* labels = nullptr);
 Result<layout::PagedDocument> lay_out_file(const std::filesystem::path& path,
                                    const PipelineOptions& options);
 

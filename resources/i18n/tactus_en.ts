@@ -2,6 +2,33 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>tactus::gui::EmbossChoice</name>
+    <message numerus="yes">
+        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
+        <source>Whole document: %n sheet(s)</source>
+        <translation>
+            <numerusform>Whole document: %n sheet</numerusform>
+            <numerusform>Whole document: %n sheets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
+        <source>Volume %1 of %2: %n sheet(s)</source>
+        <translation>
+            <numerusform>Volume %1 of %2: %n sheet</numerusform>
+            <numerusform>Volume %1 of %2: %n sheets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/emboss_choice.cpp" line="129"/>
+        <source>Pages %1 to %2: %n sheet(s)</source>
+        <translation>
+            <numerusform>Pages %1 to %2: %n sheet</numerusform>
+            <numerusform>Pages %1 to %2: %n sheets</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::FindReplaceDialog</name>
     <message numerus="yes">
         <location filename="../../widgets/find_replace.cpp" line="114"/>
@@ -15,7 +42,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="492"/>
+        <location filename="../../widgets/main_window.cpp" line="533"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -23,7 +50,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="497"/>
+        <location filename="../../widgets/main_window.cpp" line="538"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -31,7 +58,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="655"/>
+        <location filename="../../widgets/main_window.cpp" line="696"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>
@@ -42,7 +69,7 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="430"/>
+        <location filename="../../widgets/printer_panel_queues.cpp" line="85"/>
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation>
             <numerusform>%n Tactus queue found on CUPS servers</numerusform>
@@ -50,7 +77,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="755"/>
+        <location filename="../../widgets/printer_panel_queues.cpp" line="189"/>
         <source>%1: %n sheet(s) embossed</source>
         <translation>
             <numerusform>%1: %n sheet embossed</numerusform>

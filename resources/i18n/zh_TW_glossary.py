@@ -328,6 +328,21 @@ T = {
         "文字大多是繁體中文；適合用台灣注音點字（%1）",
     "the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it":
         "文字大多是簡體中文；適合用中文雙拼點字（%1）", "%1 is valid again.": "%1 又有效了。",
+    # A book: its volumes, and what the printer panel embosses of it.
+    "Volume %1 of %2, blank page": "第 %1 冊，共 %2 冊，空白頁", "Volume %1 of %2, page %3": "第 %1 冊，共 %2 冊，第 %3 頁",
+    "Volume %1 of %2": "第 %1 冊，共 %2 冊", "Volume %1 of %2 is the last": "第 %1 冊（共 %2 冊）是最後一冊",
+    "Volume": "冊", "Go to volume (%1, %2)": "前往某一冊（%1、%2）",
+    "Previou&s volume": "上一冊(&S)", "Next vo&lume": "下一冊(&L)",
+    "%1; %2": "%1；%2",
+    "Emboss": "列印範圍", "Em&boss:": "列印(&B)：", "Pages:": "頁：",
+    "The whole document, one volume of a book, or a range of braille pages": "整份文件、書的其中一冊，或一段點字頁",
+    "Braille pages to emboss": "要列印的點字頁",
+    "As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents":
+        "依頁面上的頁碼：3-10、5-（到最後）、7；書中 t1 為書名頁，p1-p2 為目錄",
+    "e.g. 3-10, 5-, p1-p2": "例如 3-10、5-、p1-p2", "To emboss": "要列印的內容",
+    "Whole document": "整份文件", "Page range": "頁碼範圍", "No pages chosen: %1": "未選擇任何頁：%1",
+    "Whole document: %n sheet(s)": "整份文件：%n 張", "Volume %1 of %2: %n sheet(s)": "第 %1 冊，共 %2 冊：%n 張",
+    "Pages %1 to %2: %n sheet(s)": "第 %1 頁到第 %2 頁：%n 張",
 }
 
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <tuple>
 
 #include "common/file_io.hpp"
 #include "process.hpp"
@@ -87,6 +88,29 @@ TEST(QueueCli, ANewcomersFirstQueuedJobSetsUpTheSpoolAndAPrinterForTheDevice) {
     const auto [lcode, printers] = cli(db, {"queue", "printer", "list"}, err);
     EXPECT_EQ(lcode, 0);
     EXPECT_EQ(printers, "null  pty:/dev/null\n");
+}
+
+// --pages names braille pages as they are numbered, a book's preliminary
+// pages too (Jekyll and Hyde in two volumes: t1 the title page, p1 the contents).
+TEST(QueueCli, PagesAreNamedAsTheBookNumbersThem) {
+    TempDir dir;
+    const auto db = dir / "spool.db", err = dir / "err";
+    const auto book = (std::filesystem::path(TACTUS_TEST_DATA) / "import" / "books" / "jekyll-and-hyde.epub").string();
+    const auto queue = [&](const std::string& pages) {
+        return cli(db, {"emboss", "--queue", "--device", "pty:/dev/null", "--volumes", "--pages", pages, book}, err);
+    };
+    auto [code, out] = queue("3-10");
+    ASSERT_EQ(code, 0) << test::read_text(err);
+    EXPECT_NE(out.find("4 sheet(s)"), std::string::npos) << out;
+    std::tie(code, out) = queue("t1-p1");  // the title page, its blank back, the contents page
+    ASSERT_EQ(code, 0) << test::read_text(err);
+    EXPECT_NE(out.find("2 sheet(s)"), std::string::npos) << out;
+    EXPECT_EQ(queue("999").first, 3);
+    EXPECT_NE(test::read_text(err).find("page 999 is not in the document"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(queue("10-3").first, 3);
+    EXPECT_NE(test::read_text(err).find("comes before"), std::string::npos) << test::read_text(err);
+    EXPECT_EQ(queue("x-1").first, 2);
+    EXPECT_NE(test::read_text(err).find("expected FIRST-LAST"), std::string::npos) << test::read_text(err);
 }
 
 TEST(QueueCli, SeveralPrintersAndNoneChosenAreNamed) {

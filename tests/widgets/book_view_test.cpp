@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A book in the app: an EPUB (Jekyll and Hyde, Standard Ebooks, public
+// domain) opens in the book layout; the preview moves by volume and says
+// "Volume 2 of N, page t1"; the printer panel embosses a chosen volume or
+// page range, and the built-in simulator strikes exactly those sheets.
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <set>
+
+#include "announcer.hpp"
+#include "book_view.hpp"
+#include "controller/builtin_sim.hpp"
+#include "emboss_choice.hpp"
+#include "gui_test_support.hpp"
+#include "main_window.hpp"
+#include "preview_panel.hpp"
+#include "printer_panel.hpp"
+#include "profile/profile.hpp"
+#include "spool/spool.hpp"
+
+using namespace tactus;
+using namespace tactus::gui;
+
+namespace {
+
+QString jekyll() {
+    return QString::fromLatin1(TACTUS_TEST_DATA) + QStringLiteral("/import/books/jekyll-and-hyde.epub");
+}
+
+std::size_t dots_of(const layout::PagedDocument& doc, std::size_t first, std::size_t last) {
+    std::size_t n = 0;
+    for (std::size_t i = first - 1; i < last; ++i)
+        for (const auto& line : doc.pages[i].lines)
+            for (const auto c : line) n += static_cast<std::size_t>(__builtin_popcount(c.dots));
+    return n;
+}
+
+}  // namespace
+
+class BookViewTest : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+    // The book in volumes of 20 sheets: several volumes from a short novel.
+    static void open_book(MainWindow& w) {
+        QVERIFY(w.open_file_now(jekyll()));
+        pipeline::BookOptions options;
+        options.sheets_per_volume = 20;
+        w.book_view()->set_options(options);
+        QVERIFY2(w.book_view()->active(), qPrintable(w.book_view()->error()));
+    }
+
+private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("TactusTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tactus-test"));
+        QSettings().clear();
+        install_accessibility();
+    }
+    void init() { test::fresh_spool(dir_.path()); }
+
+    void a_short_text_is_not_a_book() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        w.book_view()->refresh_now();
+        QVERIFY(!w.book_view()->active());
+        auto* chooser = w.preview_panel()->findChild<QComboBox*>(QStringLiteral("volumeChooser"));
+        QVERIFY(chooser);
+        QVERIFY(!w.preview_panel()->next_volume_action()->isEnabled());
+        QVERIFY(!w.preview_panel()->label_text().contains(QStringLiteral("Volume")));
+    }
+
+    void the_preview_moves_by_volume_and_says_where_it_is() {
+        MainWindow w;
+        w.show();
+        open_book(w);
+        auto* book = w.book_view();
+        const auto volumes = book->volumes().size();
+        QVERIFY2(volumes >= 2, qPrintable(QString::number(volumes)));
+        auto* panel = w.preview_panel();
+        auto* sp = panel->preview();
+        // The preview shows the book: the title page first.
+        QCOMPARE(sp->document(), book->shown(nullptr));
+        QVERIFY2(panel->label_text().startsWith(QStringLiteral("Volume 1 of %1, page t1; Sheet 1 of").arg(volumes)),
+                 qPrintable(panel->label_text()));
+        QSignalSpy said(w.announcer(), &Announcer::announced);
+        panel->next_volume_action()->trigger();
+        QCOMPARE(panel->volume(), std::size_t{1});
+        const auto second = book->volumes()[1];
+        QCOMPARE(sp->sheet(), sp->document()->geometry.sheet_of_page(second.first_page));
+        QVERIFY2(!said.isEmpty() && said.last()[0].toString().startsWith(
+                                        QStringLiteral("Volume 2 of %1, page t1; Sheet").arg(volumes)),
+                 qPrintable(said.isEmpty() ? QString() : said.last()[0].toString()));
+        auto* chooser = panel->findChild<QComboBox*>(QStringLiteral("volumeChooser"));
+        QCOMPARE(chooser->accessibleName(), QStringLiteral("Volume"));
+        QCOMPARE(chooser->count(), static_cast<int>(volumes));
+        QCOMPARE(chooser->currentIndex(), 1);
+        // The next sheet of volume 2 is its contents page, numbered p1.
+        sp->set_sheet(sp->document()->geometry.sheet_of_page(second.contents_first_page));
+        QVERIFY2(panel->label_text().startsWith(QStringLiteral("Volume 2 of %1, page p1").arg(volumes)),
+                 qPrintable(panel->label_text()));
+        // The last volume says so; back goes to volume 1.
+        for (std::size_t v = 1; v < volumes; ++v) panel->next_volume_action()->trigger();
+        QVERIFY(said.last()[0].toString().contains(QStringLiteral("is the last")));
+        chooser->activated(0);
+        QCOMPARE(panel->volume(), std::size_t{0});
+        QCOMPARE(sp->sheet(), std::size_t{1});
+    }
+
+    void a_page_range_embosses_exactly_its_sheets() {
+        MainWindow w;
+        open_book(w);
+        auto* book = w.book_view();
+        auto* printer = w.printer_panel();
+        auto* choice = printer->emboss_choice();
+        const auto& pages = *book->shown(nullptr);
+        // Every control has a name a screen reader says.
+        for (auto* c : choice->findChildren<QWidget*>())
+            if (c->focusPolicy() != Qt::NoFocus && !qobject_cast<QLabel*>(c))
+                QVERIFY2(!c->accessibleName().isEmpty(), qPrintable(c->objectName()));
+        // Tab goes from the choice to the range, as Orca's user does.
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.show_panel(QStringLiteral("printer"));
+        auto* scope = choice->findChild<QComboBox*>(QStringLiteral("embossScope"));
+        scope->setFocus(Qt::ShortcutFocusReason);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QVERIFY2(QApplication::focusWidget() == choice->findChild<QLineEdit*>(QStringLiteral("embossPages")),
+                 qPrintable(QApplication::focusWidget() ? QApplication::focusWidget()->objectName() + QLatin1Char(' ') +
+                                                              QApplication::focusWidget()->accessibleName()
+                                                        : QStringLiteral("none")));
+        // Typed as a user types it, the range is said on Enter.
+        QSignalSpy said(w.announcer(), &Announcer::announced);
+        QTest::keyClicks(QApplication::focusWidget(), QStringLiteral("3-10"));
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+        QVERIFY(!said.isEmpty());
+        QVERIFY2(said.last()[0].toString().startsWith(QStringLiteral("Pages 3 to 10: 4 sheet")),
+                 qPrintable(said.last()[0].toString()));
+        const auto range = choice->chosen();
+        QVERIFY(range);
+        // Body pages 3 to 10 are eight pages after the title and contents.
+        QCOMPARE(book->labels()[range->first - 1], std::string("3"));
+        QCOMPARE(book->labels()[range->second - 1], std::string("10"));
+        QCOMPARE(range->second - range->first + 1, std::size_t{8});
+        // "4 sheet(s)" untranslated, "4 sheets" in English.
+        QVERIFY2(choice->summary().startsWith(QStringLiteral("Pages 3 to 10: 4 sheet")), qPrintable(choice->summary()));
+        printer->select_device(QStringLiteral("sim?speed=max"));
+        QSignalSpy finished(printer, &PrinterPanel::job_finished);
+        const auto id = printer->submit(QStringLiteral("jekyll"), pages, profile::default_profile());
+        QVERIFY(id > 0);
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished[0][1].toBool(), qPrintable(finished[0][2].toString()));
+        auto spool = spool::Spool::open(printer->spool_path().string(), {.create = false});
+        QVERIFY(spool);
+        const auto job = spool->job(id);
+        QVERIFY(job);
+        QCOMPARE(job->sheets_per_copy, std::size_t{4});
+        // The simulator struck four sheets, every dot of those pages and no other.
+        std::set<int> sheets;
+        std::size_t strikes = 0;
+        for (const auto& s : printer->simulator().strikes()) {
+            sheets.insert(s.sheet);
+            ++strikes;
+        }
+        QCOMPARE(sheets.size(), std::size_t{4});
+        QCOMPARE(strikes, dots_of(pages, range->first, range->second));
+
+        // A range that names no page queues nothing and says why.
+        choice->choose_range(QStringLiteral("900-990"));
+        QVERIFY(choice->summary().contains(QStringLiteral("page 900 is not in the document")));
+        QCOMPARE(printer->submit(QStringLiteral("jekyll"), pages, profile::default_profile()), spool::JobId{0});
+        // A volume: its own sheets, title page first.
+        choice->choose_volume(1);
+        const auto v = choice->chosen();
+        QVERIFY(v);
+        QCOMPARE(v->first - 1, book->volumes()[1].first_page);
+        QCOMPARE(v->second, book->volumes()[1].end_page);
+        QVERIFY(choice->summary().startsWith(QStringLiteral("Volume 2 of")));
+    }
+};
+
+QTEST_MAIN(BookViewTest)
+#include "book_view_test.moc"

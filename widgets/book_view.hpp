@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The book the preview shows and the printer embosses: when the open document
+// reads as a book (pipeline::lays_out_as_book, core's one rule: an EPUB, or a
+// text longer than a volume), its book layout (pipeline::lay_out_book: title
+// page, contents, p-numbered preliminary pages, volumes), laid out again a
+// moment after the editor's layout changes; otherwise the editor's own pages.
+// The editor keeps its plain layout: its lines map to those pages as they did.
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "layout/page.hpp"
+#include "pipeline/book_layout.hpp"
+
+namespace tactus::edit {
+class LiveLayout;
+}
+
+namespace tactus::gui {
+
+class BookView : public QObject {
+    Q_OBJECT
+public:
+    explicit BookView(QObject* parent = nullptr);
+
+    // Where the document comes from: the editor's layout and the file's name
+    // (its extension says EPUB). Both are read when the book is laid out.
+    void set_source(std::function<const edit::LiveLayout*()> layout, std::function<QString()> file_name);
+    // The book's options (sheets per volume, ...); lays the book out again.
+    void set_options(const pipeline::BookOptions& options);
+    [[nodiscard]] const pipeline::BookOptions& options() const { return options_; }
+
+    // The editor's layout changed: the book follows shortly (edits come in bursts).
+    void schedule();
+    // Decides and lays out now; emits changed().
+    void refresh_now();
+    // Lays out now if a change is waiting (before embossing what is shown).
+    void flush() {
+        if (timer_.isActive()) refresh_now();
+    }
+
+    // The document reads as a book and its book layout is ready.
+    [[nodiscard]] bool active() const { return book_.has_value(); }
+    // The pages to show and emboss: the book's, else `plain`.
+    [[nodiscard]] const layout::PagedDocument* shown(const layout::PagedDocument* plain) const;
+    [[nodiscard]] const std::vector<pipeline::VolumeRange>& volumes() const;
+    // The number each shown page carries ("t1", "p2", "14"), for the page
+    // range the printer panel takes; the plain pages' when no book.
+    [[nodiscard]] const std::vector<std::string>& labels() const { return labels_; }
+    // The volume (0-based) that holds page `page`; 0 without volumes.
+    [[nodiscard]] std::size_t volume_of(std::size_t page) const;
+    // "Volume 2 of 3, page p1" for a page of the book; empty when no book.
+    [[nodiscard]] QString place(std::size_t page) const;
+    // Why the book could not be laid out (the preview then shows the plain pages).
+    [[nodiscard]] const QString& error() const { return error_; }
+
+Q_SIGNALS:
+    void changed();
+
+private:
+    std::function<const edit::LiveLayout*()> layout_;
+    std::function<QString()> file_name_;
+    pipeline::BookOptions options_;
+    std::optional<pipeline::BookLayout> book_;
+    std::vector<std::string> labels_;
+    QString error_;
+    QTimer timer_;
+};
+
+}  // namespace tactus::gui
