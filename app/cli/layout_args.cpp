@@ -5,9 +5,7 @@
 #include <iostream>
 
 #include "command.hpp"
-#include "graphic/graphic_page.hpp"
-#include "graphic/raster_trace.hpp"
-#include "graphic/svg_import.hpp"
+#include "graphic/drawing_file.hpp"
 #include "layout/braille_pages.hpp"
 #include "platform/console.hpp"
 #include "profile/firmware_tables.hpp"
@@ -158,20 +156,16 @@ private:
 layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::PipelineOptions& options,
                                       const profile::PrinterProfile* machine,
                                       const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol) {
-    const bool svg = graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg");
-    const bool picture = graphic::is_raster_path(args.file) && args.format == "auto";
+    const auto kind = graphic::drawing_kind(args.file);
+    const bool svg = kind == graphic::DrawingKind::svg && (args.format == "auto" || args.format == "svg");
+    const bool picture = kind == graphic::DrawingKind::picture && args.format == "auto";
     if (svg || picture) {
         const auto m = machine ? *machine : profile::default_profile();
-        std::optional<machine::FirmwareTables> grid = firmware;
-        if (!grid && !legacy_protocol)
-            if (auto made = profile::make_firmware_tables(m)) grid = std::move(*made);
-        const auto dots = graphic::dot_options(m, grid ? &*grid : nullptr);
-        graphic::TraceOptions trace;
-        trace.threshold = args.image_threshold;
-        trace.simplify_mm = graphic::simplify_tolerance_mm(dots);
-        const auto drawing = require(svg ? graphic::load_svg(args.file) : graphic::load_image(args.file, trace));
         const auto table = require(translate::Translator::open(options.tables), exit_usage);
-        auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, dots));
+        const graphic::DrawingFileOptions drawing_options{.image_threshold = args.image_threshold,
+                                                          .firmware = firmware ? &*firmware : nullptr,
+                                                          .legacy_protocol = legacy_protocol};
+        auto laid = require(graphic::lay_out_drawing_file(args.file, kind, m, options.layout.geometry, table, drawing_options));
         for (const auto& w : laid.document.warnings)
             std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
         return std::move(laid.document);

@@ -13,7 +13,26 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::GraphicView</name>
+    <message numerus="yes">
+        <location filename="../../widgets/document_loader.cpp"/>
+        <source>%n dot(s).</source>
+        <translation>
+            <numerusform>%n dot.</numerusform>
+            <numerusform>%n dots.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::MainWindow</name>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp"/>
+        <source>Graphic %1 | %n sheet(s)</source>
+        <translation>
+            <numerusform>Graphic %1 | %n sheet</numerusform>
+            <numerusform>Graphic %1 | %n sheets</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <location filename="../../widgets/main_window.cpp" line="492"/>
         <source>Opened %1: %n sheet(s)</source>
@@ -79,6 +98,14 @@
 </context>
 <context>
     <name>tactus::gui::SheetPreview</name>
+    <message numerus="yes">
+        <location filename="../../widgets/sheet_preview.cpp"/>
+        <source>Graphic: %n dot(s).</source>
+        <translation>
+            <numerusform>Graphic: %n dot.</numerusform>
+            <numerusform>Graphic: %n dots.</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <location filename="../../widgets/sheet_preview.cpp" line="261"/>
         <source>; %n front and back dots too close</source>
