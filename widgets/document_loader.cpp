@@ -134,8 +134,9 @@ QString GraphicView::summary() const {
     if (!labels.isEmpty())
         text += QLatin1Char('\n') +
                 QCoreApplication::translate("tactus::gui::GraphicView", "Labels: %1.").arg(labels.join(QStringLiteral("; ")));
+    const int count = static_cast<int>(dots);  // lupdate misses a cast inside translate()
     text += QLatin1Char('\n') +
-            QCoreApplication::translate("tactus::gui::GraphicView", "%n dot(s).", nullptr, static_cast<int>(dots));
+            QCoreApplication::translate("tactus::gui::GraphicView", "%n dot(s).", "on all the graphic's pages", count);
     return text;
 }
 

@@ -17,6 +17,7 @@
     <message numerus="yes">
         <location filename="../../widgets/document_loader.cpp"/>
         <source>%n dot(s).</source>
+        <comment>on all the graphic's pages</comment>
         <translation>
             <numerusform>%n dot.</numerusform>
             <numerusform>%n dots.</numerusform>

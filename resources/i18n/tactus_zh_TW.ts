@@ -8,14 +8,9 @@
         <translation>輸入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="78" />
+        <location filename="../../widgets/atomic_write.cpp" line="21" />
         <source>Cannot write %1: %2</source>
         <translation>無法寫入 %1：%2</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="82" />
-        <source>Saving %1 failed: %2</source>
-        <translation>儲存 %1 失敗：%2</translation>
     </message>
     <message>
         <location filename="../../widgets/sheet_preview.cpp" line="80" />
@@ -38,22 +33,22 @@
         <translation>第 %1 張（%2）－ 第 %3 / %4 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="430" />
+        <location filename="../../widgets/sheet_preview.cpp" line="456" />
         <source>Tactus interpoint proof</source>
         <translation>Tactus 雙面點字校稿</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="437" />
+        <location filename="../../widgets/sheet_preview.cpp" line="463" />
         <source>Cannot write %1</source>
         <translation>無法寫入 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="448" />
+        <location filename="../../widgets/sheet_preview.cpp" line="474" />
         <source>Cannot finish %1</source>
         <translation>無法完成 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/accessibility.cpp" line="45" />
+        <location filename="../../widgets/accessibility.cpp" line="46" />
         <source>Divider between print and braille</source>
         <translation>明眼字與點字的分隔線</translation>
     </message>
@@ -73,67 +68,67 @@
         <translation>%1 小時 %2 分</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="83" />
-        <location filename="../../widgets/printer_panel.cpp" line="96" />
+        <location filename="../../widgets/printer_panel.cpp" line="57" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="42" />
         <source>waiting</source>
         <translation>等待中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="85" />
-        <location filename="../../widgets/printer_panel.cpp" line="97" />
+        <location filename="../../widgets/printer_panel.cpp" line="58" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="44" />
         <source>embossing</source>
         <translation>列印中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="98" />
+        <location filename="../../widgets/printer_panel.cpp" line="59" />
         <source>paused</source>
         <translation>已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="89" />
-        <location filename="../../widgets/printer_panel.cpp" line="99" />
+        <location filename="../../widgets/printer_panel.cpp" line="60" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="48" />
         <source>done</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="84" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="43" />
         <source>held</source>
         <translation>保留中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="86" />
-        <location filename="../../widgets/printer_panel.cpp" line="100" />
+        <location filename="../../widgets/printer_panel.cpp" line="61" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="45" />
         <source>stopped</source>
         <translation>已停止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="87" />
-        <location filename="../../widgets/printer_panel.cpp" line="101" />
+        <location filename="../../widgets/printer_panel.cpp" line="62" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="46" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="88" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="47" />
         <source>aborted</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="154" />
+        <location filename="../../widgets/printer_panel.cpp" line="115" />
         <source>the strikes could not be checked: %1</source>
         <translation>無法核對擊點：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="156" />
+        <location filename="../../widgets/printer_panel.cpp" line="117" />
         <source>%1 strikes embossed but %2 planned: the simulator disagrees with the plan</source>
         <translation>已列印 %1 個擊點，但規劃為 %2 個：模擬器與規劃不符</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="159" />
+        <location filename="../../widgets/printer_panel.cpp" line="120" />
         <source>all %1 strikes of sheets %2 to %3 checked against the plan</source>
         <translation>第 %2 至 %3 張的全部 %1 個擊點均已與規劃核對</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="161" />
+        <location filename="../../widgets/printer_panel.cpp" line="122" />
         <source>all %1 strikes checked against the plan</source>
         <translation>全部 %1 個擊點均已與規劃核對</translation>
     </message>
@@ -217,12 +212,12 @@
 <context>
     <name>tactus::gui::BraillePane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="52" />
+        <location filename="../../widgets/braille_pane.cpp" line="50" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="54" />
+        <location filename="../../widgets/braille_pane.cpp" line="52" />
         <source>The braille of each paragraph. Type with S D F J K L as dots 3 2 1 4 5 6; space, backspace and delete edit cells</source>
         <translation>每一段的點字。以 S D F J K L 輸入第 3 2 1 4 5 6 點；空白鍵、退格鍵與刪除鍵編輯點字方</translation>
     </message>
@@ -230,7 +225,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="610" />
+        <location filename="../../widgets/editor_widget.cpp" line="613" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -286,7 +281,7 @@
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="606" />
+        <location filename="../../widgets/editor_widget.cpp" line="609" />
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -370,825 +365,875 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::GraphicView</name>
+    <message>
+        <location filename="../../widgets/document_loader.cpp" line="132" />
+        <source>Graphic: %1.</source>
+        <translation>圖形：%1。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/document_loader.cpp" line="136" />
+        <source>Labels: %1.</source>
+        <translation>標籤：%1。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/document_loader.cpp" line="139" />
+        <source>%n dot(s).</source>
+        <comment>on all the graphic's pages</comment>
+        <translation><numerusform>%n 點。</numerusform></translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="94" />
-        <location filename="../../widgets/main_window.cpp" line="607" />
-        <location filename="../../widgets/main_window.cpp" line="760" />
-        <location filename="../../widgets/main_window.cpp" line="814" />
-        <location filename="../../widgets/main_window.cpp" line="848" />
-        <location filename="../../widgets/main_window.cpp" line="870" />
+        <location filename="../../widgets/main_window.cpp" line="70" />
+        <location filename="../../widgets/main_window.cpp" line="624" />
+        <location filename="../../widgets/main_window.cpp" line="777" />
+        <location filename="../../widgets/main_window.cpp" line="831" />
+        <location filename="../../widgets/main_window.cpp" line="857" />
+        <location filename="../../widgets/main_window.cpp" line="874" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="104" />
+        <location filename="../../widgets/main_window.cpp" line="80" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="111" />
+        <location filename="../../widgets/main_window.cpp" line="87" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="112" />
+        <location filename="../../widgets/main_window.cpp" line="88" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="113" />
+        <location filename="../../widgets/main_window.cpp" line="89" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="118" />
+        <location filename="../../widgets/main_window.cpp" line="94" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="149" />
+        <location filename="../../widgets/main_window.cpp" line="126" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="151" />
+        <location filename="../../widgets/main_window.cpp" line="128" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="152" />
+        <location filename="../../widgets/main_window.cpp" line="129" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="159" />
+        <location filename="../../widgets/main_window.cpp" line="136" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="164" />
+        <location filename="../../widgets/main_window.cpp" line="141" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="232" />
+        <location filename="../../widgets/main_window.cpp" line="208" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="235" />
+        <location filename="../../widgets/main_window.cpp" line="211" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="212" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="213" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="213" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="214" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="214" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="240" />
+        <location filename="../../widgets/main_window.cpp" line="216" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="240" />
+        <location filename="../../widgets/main_window.cpp" line="216" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
-        <location filename="../../widgets/main_window.cpp" line="876" />
+        <location filename="../../widgets/main_window.cpp" line="218" />
+        <location filename="../../widgets/main_window.cpp" line="881" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="218" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="243" />
+        <location filename="../../widgets/main_window.cpp" line="219" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246" />
+        <location filename="../../widgets/main_window.cpp" line="222" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="251" />
+        <location filename="../../widgets/main_window.cpp" line="227" />
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
+        <location filename="../../widgets/main_window.cpp" line="229" />
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="255" />
+        <location filename="../../widgets/main_window.cpp" line="231" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="237" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="239" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="263" />
+        <location filename="../../widgets/main_window.cpp" line="239" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="267" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="267" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="276" />
+        <location filename="../../widgets/main_window.cpp" line="252" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="276" />
+        <location filename="../../widgets/main_window.cpp" line="252" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="280" />
+        <location filename="../../widgets/main_window.cpp" line="256" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="280" />
+        <location filename="../../widgets/main_window.cpp" line="256" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="260" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="284" />
+        <location filename="../../widgets/main_window.cpp" line="260" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="288" />
+        <location filename="../../widgets/main_window.cpp" line="264" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="288" />
+        <location filename="../../widgets/main_window.cpp" line="264" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="293" />
+        <location filename="../../widgets/main_window.cpp" line="269" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="293" />
+        <location filename="../../widgets/main_window.cpp" line="269" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="296" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="296" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="299" />
+        <location filename="../../widgets/main_window.cpp" line="275" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="317" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>&amp;Body text</source>
         <translation>內文(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="317" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>Ctrl+Alt+0</source>
         <translation>Ctrl+Alt+0</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="320" />
+        <location filename="../../widgets/main_window.cpp" line="296" />
         <source>Heading &amp;%1</source>
         <translation>標題 %1(&amp;%1)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="320" />
+        <location filename="../../widgets/main_window.cpp" line="296" />
         <source>Ctrl+Alt+%1</source>
         <translation>Ctrl+Alt+%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="322" />
+        <location filename="../../widgets/main_window.cpp" line="298" />
         <source>B&amp;ulleted list</source>
         <translation>項目符號清單(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="322" />
+        <location filename="../../widgets/main_window.cpp" line="298" />
         <source>Ctrl+Alt+L</source>
         <translation>Ctrl+Alt+L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="324" />
+        <location filename="../../widgets/main_window.cpp" line="300" />
         <source>&amp;Numbered list</source>
         <translation>編號清單(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="324" />
+        <location filename="../../widgets/main_window.cpp" line="300" />
         <source>Ctrl+Alt+N</source>
         <translation>Ctrl+Alt+N</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="326" />
+        <location filename="../../widgets/main_window.cpp" line="302" />
         <source>&amp;Quotation</source>
         <translation>引文(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="326" />
+        <location filename="../../widgets/main_window.cpp" line="302" />
         <source>Ctrl+Alt+Q</source>
         <translation>Ctrl+Alt+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="328" />
+        <location filename="../../widgets/main_window.cpp" line="304" />
         <source>&amp;Page break</source>
         <translation>分頁(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="328" />
+        <location filename="../../widgets/main_window.cpp" line="304" />
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
+        <location filename="../../widgets/main_window.cpp" line="305" />
         <source>Bol&amp;d</source>
         <translation>粗體(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
+        <location filename="../../widgets/main_window.cpp" line="305" />
         <source>Ctrl+B</source>
         <translation>Ctrl+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="331" />
+        <location filename="../../widgets/main_window.cpp" line="307" />
         <source>&amp;Italic</source>
         <translation>斜體(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="331" />
+        <location filename="../../widgets/main_window.cpp" line="307" />
         <source>Ctrl+I</source>
         <translation>Ctrl+I</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="333" />
+        <location filename="../../widgets/main_window.cpp" line="309" />
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="336" />
+        <location filename="../../widgets/main_window.cpp" line="312" />
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="313" />
         <source>Show the print text's Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="347" />
+        <location filename="../../widgets/main_window.cpp" line="323" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="349" />
+        <location filename="../../widgets/main_window.cpp" line="325" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="356" />
+        <location filename="../../widgets/main_window.cpp" line="332" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="361" />
+        <location filename="../../widgets/main_window.cpp" line="337" />
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="364" />
+        <location filename="../../widgets/main_window.cpp" line="340" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="373" />
+        <location filename="../../widgets/main_window.cpp" line="349" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="415" />
+        <location filename="../../widgets/main_window.cpp" line="391" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="422" />
+        <location filename="../../widgets/main_window.cpp" line="398" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="426" />
-        <location filename="../../widgets/main_window.cpp" line="554" />
+        <location filename="../../widgets/main_window.cpp" line="403" />
+        <location filename="../../widgets/main_window.cpp" line="568" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="436" />
+        <location filename="../../widgets/main_window.cpp" line="413" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="438" />
+        <location filename="../../widgets/main_window.cpp" line="415" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="439" />
+        <location filename="../../widgets/main_window.cpp" line="416" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="442" />
+        <location filename="../../widgets/main_window.cpp" line="419" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459" />
+        <location filename="../../widgets/main_window.cpp" line="439" />
+        <source>Cannot lay out %1 again: %2</source>
+        <translation>無法重新排版 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="441" />
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="465" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="460" />
-        <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)</source>
-        <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="466" />
+        <location filename="../../widgets/main_window.cpp" line="473" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="481" />
+        <location filename="../../widgets/main_window.cpp" line="488" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="489" />
+        <location filename="../../widgets/main_window.cpp" line="496" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="516" />
+        <location filename="../../widgets/main_window.cpp" line="523" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="521" />
+        <location filename="../../widgets/main_window.cpp" line="528" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="522" />
+        <location filename="../../widgets/main_window.cpp" line="529" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="543" />
+        <location filename="../../widgets/main_window.cpp" line="552" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="548" />
+        <location filename="../../widgets/main_window.cpp" line="562" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="580" />
+        <location filename="../../widgets/main_window.cpp" line="597" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="583" />
+        <location filename="../../widgets/main_window.cpp" line="600" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="583" />
+        <location filename="../../widgets/main_window.cpp" line="600" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="594" />
-        <location filename="../../widgets/main_window.cpp" line="761" />
-        <location filename="../../widgets/main_window.cpp" line="772" />
-        <location filename="../../widgets/main_window.cpp" line="930" />
+        <location filename="../../widgets/main_window.cpp" line="611" />
+        <location filename="../../widgets/main_window.cpp" line="778" />
+        <location filename="../../widgets/main_window.cpp" line="789" />
+        <location filename="../../widgets/main_window.cpp" line="931" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="599" />
+        <location filename="../../widgets/main_window.cpp" line="616" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="618" />
+        <location filename="../../widgets/main_window.cpp" line="635" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="619" />
+        <location filename="../../widgets/main_window.cpp" line="636" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="621" />
+        <location filename="../../widgets/main_window.cpp" line="638" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="667" />
+        <location filename="../../widgets/main_window.cpp" line="684" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="926" />
+        <location filename="../../widgets/main_window.cpp" line="927" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="673" />
+        <location filename="../../widgets/main_window.cpp" line="690" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="673" />
+        <location filename="../../widgets/main_window.cpp" line="690" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="675" />
+        <location filename="../../widgets/main_window.cpp" line="692" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="697" />
+        <location filename="../../widgets/main_window.cpp" line="714" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="706" />
+        <location filename="../../widgets/main_window.cpp" line="723" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="713" />
+        <location filename="../../widgets/main_window.cpp" line="730" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="714" />
+        <location filename="../../widgets/main_window.cpp" line="731" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="725" />
+        <location filename="../../widgets/main_window.cpp" line="742" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="760" />
+        <location filename="../../widgets/main_window.cpp" line="777" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="871" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="873" />
+        <location filename="../../widgets/main_window.cpp" line="876" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="877" />
+        <location filename="../../widgets/main_window.cpp" line="882" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="773" />
+        <location filename="../../widgets/main_window.cpp" line="790" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="787" />
+        <location filename="../../widgets/main_window.cpp" line="804" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="796" />
+        <location filename="../../widgets/main_window.cpp" line="813" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="796" />
+        <location filename="../../widgets/main_window.cpp" line="813" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="800" />
+        <location filename="../../widgets/main_window.cpp" line="817" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="946" />
+        <location filename="../../widgets/main_window.cpp" line="955" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="801" />
+        <location filename="../../widgets/main_window.cpp" line="818" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="806" />
+        <location filename="../../widgets/main_window.cpp" line="823" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="136" />
+        <location filename="../../widgets/main_window.cpp" line="112" />
         <source>The document cannot be laid out for this printer's page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="652" />
+        <location filename="../../widgets/main_window.cpp" line="669" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="838" />
+        <location filename="../../widgets/main_window.cpp" line="847" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="839" />
+        <location filename="../../widgets/main_window.cpp" line="848" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="852" />
+        <location filename="../../widgets/main_window.cpp" line="860" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="853" />
+        <location filename="../../widgets/main_window.cpp" line="862" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="856" />
+        <location filename="../../widgets/main_window.cpp" line="863" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="857" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="862" />
+        <location filename="../../widgets/main_window.cpp" line="866" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="820" />
+        <location filename="../../widgets/main_window.cpp" line="834" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="821" />
+        <location filename="../../widgets/main_window.cpp" line="836" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="822" />
+        <location filename="../../widgets/main_window.cpp" line="838" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="837" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="826" />
+        <location filename="../../widgets/main_window.cpp" line="838" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="831" />
+        <location filename="../../widgets/main_window.cpp" line="840" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="566" />
+        <location filename="../../widgets/main_window.cpp" line="580" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="567" />
+        <location filename="../../widgets/main_window.cpp" line="466" />
+        <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
+        <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="554" />
+        <source>%1. %2</source>
+        <comment>a message, then what the graphic is</comment>
+        <translation>%1。%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="557" />
+        <source>Warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="581" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="589" />
+        <source>Graphic %1 | %n sheet(s)</source>
+        <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1013" />
+        <location filename="../../widgets/main_window.cpp" line="947" />
+        <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
+        <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1022" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1086" />
-        <location filename="../../widgets/main_window.cpp" line="1095" />
+        <location filename="../../widgets/main_window.cpp" line="1055" />
+        <location filename="../../widgets/main_window.cpp" line="1064" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1117" />
+        <location filename="../../widgets/main_window.cpp" line="1088" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1123" />
+        <location filename="../../widgets/main_window.cpp" line="1093" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1151" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1155" />
+        <location filename="../../widgets/main_window.cpp" line="1110" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1157" />
+        <location filename="../../widgets/main_window.cpp" line="1112" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1157" />
+        <location filename="../../widgets/main_window.cpp" line="1112" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1186" />
+        <location filename="../../widgets/main_window.cpp" line="1141" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1186" />
+        <location filename="../../widgets/main_window.cpp" line="1141" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1187" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1187" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1188" />
+        <location filename="../../widgets/main_window.cpp" line="1143" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1188" />
+        <location filename="../../widgets/main_window.cpp" line="1143" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1189" />
+        <location filename="../../widgets/main_window.cpp" line="1144" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1189" />
+        <location filename="../../widgets/main_window.cpp" line="1144" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1190" />
+        <location filename="../../widgets/main_window.cpp" line="1145" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1190" />
+        <location filename="../../widgets/main_window.cpp" line="1145" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1191" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1191" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1197" />
+        <location filename="../../widgets/main_window.cpp" line="1152" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1198" />
+        <location filename="../../widgets/main_window.cpp" line="1153" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1491,22 +1536,22 @@
 <context>
     <name>tactus::gui::PrintPane</name>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="303" />
+        <location filename="../../widgets/braille_pane.cpp" line="188" />
         <source>Print text</source>
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="323" />
+        <location filename="../../widgets/braille_pane.cpp" line="208" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="324" />
+        <location filename="../../widgets/braille_pane.cpp" line="209" />
         <source>The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them</source>
         <translation>帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="322" />
+        <location filename="../../widgets/braille_pane.cpp" line="207" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>
@@ -1514,646 +1559,646 @@
 <context>
     <name>tactus::gui::PrinterPanel</name>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="217" />
+        <location filename="../../widgets/printer_panel.cpp" line="154" />
         <source>Embosser</source>
         <translation>點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="219" />
+        <location filename="../../widgets/printer_panel.cpp" line="156" />
         <source>The built-in simulator, serial ports with their USB descriptions, HID bridges and parallel ports, and the Tactus queues of the CUPS servers this computer sees, marked network queue; or type a device string such as pty:/dev/pts/3, serial:/dev/ttyUSB0?baud=57600 or ipp://server/printers/Embosser</source>
         <translation>內建模擬器、序列埠（含 USB 說明）、HID 轉接器與平行埠，以及本電腦看得到的 CUPS 伺服器上的 Tactus 佇列（標為網路佇列）；也可以輸入裝置字串，例如 pty:/dev/pts/3、serial:/dev/ttyUSB0?baud=57600 或 ipp://server/printers/Embosser</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="224" />
+        <location filename="../../widgets/printer_panel.cpp" line="161" />
         <source>&amp;Refresh</source>
         <translation>重新整理(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="225" />
-        <location filename="../../widgets/printer_panel.cpp" line="639" />
-        <location filename="../../widgets/printer_panel.cpp" line="830" />
+        <location filename="../../widgets/printer_panel.cpp" line="162" />
+        <location filename="../../widgets/printer_panel.cpp" line="528" />
+        <location filename="../../widgets/printer_panel.cpp" line="568" />
         <source>&amp;Connect</source>
         <translation>連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="227" />
-        <location filename="../../widgets/printer_panel.cpp" line="1152" />
+        <location filename="../../widgets/printer_panel.cpp" line="164" />
+        <location filename="../../widgets/printer_panel.cpp" line="884" />
         <source>Not connected</source>
         <translation>未連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="229" />
+        <location filename="../../widgets/printer_panel.cpp" line="166" />
         <source>Controller status</source>
         <translation>控制器狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="234" />
+        <location filename="../../widgets/printer_panel.cpp" line="171" />
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="239" />
+        <location filename="../../widgets/printer_panel.cpp" line="176" />
         <source>Job queue</source>
         <translation>工作佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="240" />
+        <location filename="../../widgets/printer_panel.cpp" line="177" />
         <source>The print spool's jobs, from this window, tactus-cli and the network</source>
         <translation>列印佇列中的工作，來自本視窗、tactus-cli 與網路</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Document</source>
         <translation>文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>State</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Progress</source>
         <translation>進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Sheet</source>
         <translation>紙張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Job</source>
         <translation>工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="241" />
+        <location filename="../../widgets/printer_panel.cpp" line="178" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="251" />
+        <location filename="../../widgets/printer_panel.cpp" line="188" />
         <source>&amp;Pause</source>
         <translation>暫停(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="252" />
+        <location filename="../../widgets/printer_panel.cpp" line="189" />
         <source>Res&amp;ume</source>
         <translation>繼續(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="253" />
+        <location filename="../../widgets/printer_panel.cpp" line="190" />
         <source>Ca&amp;ncel job</source>
         <translation>取消工作(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="259" />
+        <location filename="../../widgets/printer_panel.cpp" line="196" />
         <source>Braille page to resume from</source>
         <translation>從哪一個點字頁繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="260" />
+        <location filename="../../widgets/printer_panel.cpp" line="197" />
         <source>Resume from pa&amp;ge</source>
         <translation>從指定頁繼續(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="264" />
+        <location filename="../../widgets/printer_panel.cpp" line="201" />
         <source>Link log</source>
         <translation>連線紀錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="269" />
+        <location filename="../../widgets/printer_panel.cpp" line="206" />
         <source>Simulator faults (built-in simulator)</source>
         <translation>模擬器故障（內建模擬器）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="279" />
+        <location filename="../../widgets/printer_panel.cpp" line="216" />
         <source>Paper out</source>
         <translation>缺紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="280" />
+        <location filename="../../widgets/printer_panel.cpp" line="217" />
         <source>The feeder runs empty; the simulated operator loads paper 5 seconds later</source>
         <translation>送紙器沒紙了；模擬的操作員會在 5 秒後補紙</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="282" />
+        <location filename="../../widgets/printer_panel.cpp" line="219" />
         <source>Pull the cable</source>
         <translation>拔除纜線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="283" />
+        <location filename="../../widgets/printer_panel.cpp" line="220" />
         <source>The cable is out for 5 seconds; the link reconnects</source>
         <translation>纜線拔除 5 秒；連線會重新建立</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="284" />
+        <location filename="../../widgets/printer_panel.cpp" line="221" />
         <source>Line noise</source>
         <translation>線路雜訊</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="285" />
+        <location filename="../../widgets/printer_panel.cpp" line="222" />
         <source>For 2 seconds, 1 byte in 100 is lost, changed or doubled; the link sends again</source>
         <translation>持續 2 秒，每 100 個位元組中有 1 個遺失、改變或重複；連線會重新傳送</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="287" />
+        <location filename="../../widgets/printer_panel.cpp" line="224" />
         <source>Controller reset</source>
         <translation>控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="288" />
+        <location filename="../../widgets/printer_panel.cpp" line="225" />
         <source>A watchdog reset: the controller keeps its place and the job continues</source>
         <translation>看門狗重設：控制器記得目前位置，工作繼續進行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="294" />
+        <location filename="../../widgets/printer_panel.cpp" line="231" />
         <source>The plan's own speed</source>
         <translation>依列印計畫的實際速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="295" />
+        <location filename="../../widgets/printer_panel.cpp" line="232" />
         <source>10 times faster</source>
         <translation>快 10 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="296" />
+        <location filename="../../widgets/printer_panel.cpp" line="233" />
         <source>As fast as the computer can</source>
         <translation>以電腦能達到的最快速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="297" />
+        <location filename="../../widgets/printer_panel.cpp" line="234" />
         <source>Simulator speed</source>
         <translation>模擬器速度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="299" />
+        <location filename="../../widgets/printer_panel.cpp" line="236" />
         <source>How fast the built-in simulator embosses: at the plan's own speed, as the embosser would, or faster. It sets the speed option of the device string, for example sim?speed=10</source>
         <translation>內建模擬器的列印速度：依列印計畫的實際速度（與點字印表機相同），或更快。它會設定裝置字串的 speed 選項，例如 sim?speed=10</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="301" />
+        <location filename="../../widgets/printer_panel.cpp" line="238" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="308" />
+        <location filename="../../widgets/printer_panel.cpp" line="245" />
         <source>E&amp;mbosser:</source>
         <translation>點字印表機(&amp;M)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="328" />
+        <location filename="../../widgets/printer_panel.cpp" line="265" />
         <source>Lin&amp;k log (for technicians):</source>
         <translation>連線紀錄（技術人員用）(&amp;K)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="383" />
+        <location filename="../../widgets/printer_panel.cpp" line="320" />
         <source>Built-in simulated embosser</source>
         <translation>內建模擬點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="386" />
+        <location filename="../../widgets/printer_panel.cpp" line="323" />
         <source>The built-in simulated embosser, on this computer</source>
         <translation>內建的模擬點字印表機，在本電腦上</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="387" />
+        <location filename="../../widgets/printer_panel.cpp" line="324" />
         <source>An embosser on a cable to this computer</source>
         <translation>以纜線連接本電腦的點字印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="390" />
+        <location filename="../../widgets/printer_panel.cpp" line="327" />
         <source>Listing devices: %1</source>
         <translation>列出裝置：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="412" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="70" />
         <source>Network queue %1 on %2</source>
         <translation>網路佇列 %1（位於 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="417" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="75" />
         <source>Network queue %1 on the CUPS server %2</source>
         <translation>網路佇列 %1，位於 CUPS 伺服器 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="420" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="78" />
         <source>A Tactus queue on another computer: the document is sent there over the network and laid out with that embosser's profile</source>
         <translation>另一台電腦上的 Tactus 佇列：文件經網路送到那裡，並依該點字印表機的設定檔排版</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="427" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="85" />
         <source>%n Tactus queue(s) found on CUPS servers</source>
         <translation><numerusform>在 CUPS 伺服器上找到 %n 個 Tactus 佇列</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="465" />
+        <location filename="../../widgets/printer_panel.cpp" line="354" />
         <source>The built-in simulator will run as %1 (%2); it takes effect at the next Connect or job</source>
         <translation>內建模擬器將以 %1 執行（%2）；於下次連線或下一個工作時生效</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="477" />
+        <location filename="../../widgets/printer_panel.cpp" line="366" />
         <source>%1 times faster</source>
         <translation>快 %1 倍</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="500" />
+        <location filename="../../widgets/printer_panel.cpp" line="389" />
         <source>No place for the print queue: set TACTUS_SPOOL_DB or HOME.</source>
         <translation>沒有地方存放列印佇列：請設定 TACTUS_SPOOL_DB 或 HOME。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="505" />
+        <location filename="../../widgets/printer_panel.cpp" line="394" />
         <source>Cannot open the print queue: %1</source>
         <translation>無法開啟列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="515" />
+        <location filename="../../widgets/printer_panel.cpp" line="404" />
         <source>“%1” is not a device Tactus can open: %2. Examples: sim, serial:/dev/ttyUSB0?baud=57600, pty:/dev/pts/3, hid:10c4:ea80, lpt:/dev/parport0.</source>
         <translation>「%1」不是 Tactus 能開啟的裝置：%2。範例：sim、serial:/dev/ttyUSB0?baud=57600、pty:/dev/pts/3、hid:10c4:ea80、lpt:/dev/parport0。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="526" />
+        <location filename="../../widgets/printer_panel.cpp" line="415" />
         <source>Cannot set up a printer for %1: %2</source>
         <translation>無法為 %1 設定印表機：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="530" />
+        <location filename="../../widgets/printer_panel.cpp" line="419" />
         <source>Set up printer %1 on %2 with the profile being edited</source>
         <translation>已在 %2 上設定印表機 %1，使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="537" />
+        <location filename="../../widgets/printer_panel.cpp" line="426" />
         <source>Cannot give printer %1 the profile being edited: %2</source>
         <translation>無法將正在編輯的設定檔套用到印表機 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="541" />
+        <location filename="../../widgets/printer_panel.cpp" line="430" />
         <source>Printer %1 now uses the profile being edited</source>
         <translation>印表機 %1 現在使用正在編輯的設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="557" />
+        <location filename="../../widgets/printer_panel.cpp" line="446" />
         <source>Printer %1 is run by %2: this window shows its jobs</source>
         <translation>印表機 %1 由 %2 執行：本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="568" />
+        <location filename="../../widgets/printer_panel.cpp" line="457" />
         <source>Printer %1: %2; this window shows its jobs</source>
         <translation>印表機 %1：%2；本視窗顯示它的工作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="580" />
+        <location filename="../../widgets/printer_panel.cpp" line="469" />
         <source>This window runs printer %1</source>
         <translation>本視窗執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="590" />
+        <location filename="../../widgets/printer_panel.cpp" line="479" />
         <source>This window no longer runs printer %1</source>
         <translation>本視窗不再執行印表機 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="595" />
+        <location filename="../../widgets/printer_panel.cpp" line="484" />
         <source>%1 is a CUPS queue: there is nothing to connect to. Ctrl+P sends the document to it.</source>
         <translation>%1 是 CUPS 佇列，不需要連線。按 Ctrl+P 即可將文件送過去。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="608" />
+        <location filename="../../widgets/printer_panel.cpp" line="497" />
         <source>Connecting to %1</source>
         <translation>正在連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="620" />
+        <location filename="../../widgets/printer_panel.cpp" line="509" />
         <source>Cannot connect to %1: %2. Check that it is switched on and plugged in, then try again.</source>
         <translation>無法連線到 %1：%2。請確認電源已開啟且纜線已接好，然後再試一次。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="673" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="106" />
         <source>“%1” is not a CUPS queue: %2</source>
         <translation>「%1」不是 CUPS 佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="685" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="118" />
         <source>Cannot send %1: cannot write a copy to send (%2)</source>
         <translation>無法送出 %1：無法寫入要送出的副本（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="712" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="145" />
         <source>Sending %1 to %2 (%3)</source>
         <translation>正在將 %1 送到 %2（%3）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="713" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="146" />
         <source>Sending %1 to %2</source>
         <translation>正在將 %1 送到 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="740" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="173" />
         <source>Sent %1 to %2 as job %3</source>
         <translation>已將 %1 送到 %2，工作 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="747" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="180" />
         <source>Embossing %1 on %2</source>
         <translation>正在以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="750" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="183" />
         <source>%1 waits on %2: %3</source>
         <translation>%1 在 %2 等待中：%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/printer_panel.cpp" line="756" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="189" />
         <source>%1: %n sheet(s) embossed</source>
         <translation><numerusform>%1：已列印 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="761" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="194" />
         <source>Job %1 on %2: %3</source>
         <translation>%2 的工作 %1：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="772" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="205" />
         <source>%1: the job on %2 can no longer be followed: %3</source>
         <translation>%1：無法再追蹤 %2 上的工作：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="773" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="206" />
         <source>%1 was not sent to %2: %3</source>
         <translation>%1 未送到 %2：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="786" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="219" />
         <source>Embossed %1 on %2</source>
         <translation>已以 %2 列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="788" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="221" />
         <source>%1 cancelled on %2</source>
         <translation>%1 已在 %2 取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="789" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="222" />
         <source>%1 cancelled on %2: %3</source>
         <translation>%1 已在 %2 取消：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="791" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="224" />
         <source>%1 stopped on %2: %3</source>
         <translation>%1 已在 %2 停止：%3</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="924" />
+        <location filename="../../widgets/printer_panel.cpp" line="662" />
         <source>%1 paused</source>
         <translation>%1 已暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="926" />
+        <location filename="../../widgets/printer_panel.cpp" line="664" />
         <source>%1 resumed</source>
         <translation>%1 已繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1036" />
-        <location filename="../../widgets/printer_panel.cpp" line="1039" />
+        <location filename="../../widgets/printer_panel.cpp" line="774" />
+        <location filename="../../widgets/printer_panel.cpp" line="777" />
         <source>sending</source>
         <translation>傳送中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1039" />
+        <location filename="../../widgets/printer_panel.cpp" line="777" />
         <source>not sent</source>
         <translation>未送出</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1040" />
+        <location filename="../../widgets/printer_panel.cpp" line="778" />
         <source>cancelling</source>
         <translation>取消中</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1049" />
+        <location filename="../../widgets/printer_panel.cpp" line="787" />
         <source>Progress of the sheet in hand of %1</source>
         <translation>%1 目前這張的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1108" />
-        <location filename="../../widgets/printer_panel.cpp" line="1145" />
+        <location filename="../../widgets/printer_panel.cpp" line="840" />
+        <location filename="../../widgets/printer_panel.cpp" line="877" />
         <source>job %1</source>
         <translation>工作 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1113" />
+        <location filename="../../widgets/printer_panel.cpp" line="845" />
         <source>job %1: </source>
         <translation>工作 %1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1121" />
+        <location filename="../../widgets/printer_panel.cpp" line="853" />
         <source>%1 The printer is running again.</source>
         <translation>%1 印表機已恢復運作。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1145" />
+        <location filename="../../widgets/printer_panel.cpp" line="877" />
         <source>%1 goes on: the printer is running again</source>
         <translation>%1 繼續進行：印表機已恢復運作</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1156" />
+        <location filename="../../widgets/printer_panel.cpp" line="888" />
         <source>run by this window</source>
         <translation>由本視窗執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1159" />
+        <location filename="../../widgets/printer_panel.cpp" line="891" />
         <source>run by %1</source>
         <translation>由 %1 執行</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1160" />
+        <location filename="../../widgets/printer_panel.cpp" line="892" />
         <source>no runner: start tactus-cli serve or press Connect</source>
         <translation>沒有執行者：請啟動 tactus-cli serve 或按「連線」</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1165" />
+        <location filename="../../widgets/printer_panel.cpp" line="897" />
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1168" />
+        <location filename="../../widgets/printer_panel.cpp" line="900" />
         <source>Printer %1, %2</source>
         <translation>印表機 %1，%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1219" />
+        <location filename="../../widgets/printer_panel.cpp" line="951" />
         <source>Job %1: %2 sent to the queue</source>
         <translation>工作 %1：%2 已送入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1244" />
+        <location filename="../../widgets/printer_panel.cpp" line="976" />
         <source>%1: cancel sent to %2</source>
         <translation>%1：已向 %2 送出取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1245" />
+        <location filename="../../widgets/printer_panel.cpp" line="977" />
         <source>Cancelling %1 on %2</source>
         <translation>正在取消 %2 上的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1263" />
+        <location filename="../../widgets/printer_panel.cpp" line="995" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1267" />
+        <location filename="../../widgets/printer_panel.cpp" line="999" />
         <source>%1 is embossed again from sheet %2</source>
         <translation>%1 從第 %2 張重新列印</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1273" />
+        <location filename="../../widgets/printer_panel.cpp" line="1005" />
         <source>Simulator: the paper runs out</source>
         <translation>模擬器：紙張用完</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1277" />
+        <location filename="../../widgets/printer_panel.cpp" line="1009" />
         <source>Simulator: the cable is pulled for 5 seconds</source>
         <translation>模擬器：纜線拔除 5 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1281" />
+        <location filename="../../widgets/printer_panel.cpp" line="1013" />
         <source>Simulator: line noise for 2 seconds</source>
         <translation>模擬器：線路雜訊 2 秒</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1285" />
+        <location filename="../../widgets/printer_panel.cpp" line="1017" />
         <source>Simulator: the controller resets</source>
         <translation>模擬器：控制器重設</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="581" />
+        <location filename="../../widgets/printer_panel.cpp" line="470" />
         <source>Dis&amp;connect</source>
         <translation>中斷連線(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="223" />
+        <location filename="../../widgets/printer_panel.cpp" line="160" />
         <source>Embosser device</source>
         <translation>點字印表機裝置</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="629" />
+        <location filename="../../widgets/printer_panel.cpp" line="518" />
         <source>Connected to %1</source>
         <translation>已連線到 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="624" />
+        <location filename="../../widgets/printer_panel.cpp" line="513" />
         <source>Connected to %1: %2</source>
         <translation>已連線到 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="67" />
+        <location filename="../../widgets/printer_panel.cpp" line="128" />
         <source>%1: %2</source>
         <comment>a message and its detail</comment>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="406" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="64" />
         <source>Cannot list the CUPS queues on %1: %2</source>
         <translation>無法列出 CUPS 伺服器 %1 上的佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="636" />
+        <location filename="../../widgets/printer_panel.cpp" line="525" />
         <source>Disconnected from printer %1</source>
         <translation>已與印表機 %1 中斷連線</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="656" />
+        <location filename="../../widgets/printer_panel.cpp" line="545" />
         <source>Cannot queue %1: %2</source>
         <translation>無法將 %1 排入佇列：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="660" />
+        <location filename="../../widgets/printer_panel.cpp" line="549" />
         <source>Queued %1 as job %2 on printer %3</source>
         <translation>已將 %1 排入印表機 %3，工作 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="679" />
+        <location filename="../../widgets/printer_panel_queues.cpp" line="112" />
         <source>%1 at %2</source>
         <translation>%2 的 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="831" />
+        <location filename="../../widgets/printer_panel.cpp" line="569" />
         <source>The print queue cannot be written (%1): this window stopped running printer %2</source>
         <translation>無法寫入列印佇列（%1）：本視窗已停止執行印表機 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="860" />
+        <location filename="../../widgets/printer_panel.cpp" line="598" />
         <source>Cannot read the print queue: %1</source>
         <translation>無法讀取列印佇列：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="914" />
+        <location filename="../../widgets/printer_panel.cpp" line="652" />
         <source>Embossing %1 (job %2) on %3</source>
         <translation>正在以 %3 列印 %1（工作 %2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="921" />
-        <location filename="../../widgets/printer_panel.cpp" line="1117" />
+        <location filename="../../widgets/printer_panel.cpp" line="659" />
+        <location filename="../../widgets/printer_panel.cpp" line="849" />
         <source>%1 paused: %2</source>
         <translation>%1 已暫停：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="928" />
+        <location filename="../../widgets/printer_panel.cpp" line="666" />
         <source>%1 waits: %2</source>
         <translation>%1 等待中：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="965" />
+        <location filename="../../widgets/printer_panel.cpp" line="703" />
         <source>%1 cancelled</source>
         <translation>%1 已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="967" />
+        <location filename="../../widgets/printer_panel.cpp" line="705" />
         <source>%1 stopped: %2. The job is kept; fix the problem, then resume it.</source>
         <translation>%1 已停止：%2。工作已保留；排除問題後請繼續。</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1029" />
+        <location filename="../../widgets/printer_panel.cpp" line="767" />
         <source>Progress of %1</source>
         <translation>%1 的進度</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="661" />
+        <location filename="../../widgets/printer_panel.cpp" line="550" />
         <source>%1 added to the queue</source>
         <translation>%1 已加入佇列</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="937" />
+        <location filename="../../widgets/printer_panel.cpp" line="675" />
         <source>%1: sheet %2 of %3</source>
         <translation>%1：第 %2 張，共 %3 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="938" />
-        <location filename="../../widgets/printer_panel.cpp" line="942" />
+        <location filename="../../widgets/printer_panel.cpp" line="676" />
+        <location filename="../../widgets/printer_panel.cpp" line="680" />
         <source>%1: %2 percent, sheet %3 of %4</source>
         <translation>%1：百分之 %2，第 %3 張，共 %4 張</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="915" />
+        <location filename="../../widgets/printer_panel.cpp" line="653" />
         <source>Embossing %1</source>
         <translation>正在列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="957" />
-        <location filename="../../widgets/printer_panel.cpp" line="987" />
+        <location filename="../../widgets/printer_panel.cpp" line="695" />
+        <location filename="../../widgets/printer_panel.cpp" line="725" />
         <source>Embossed %1</source>
         <translation>已列印 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="965" />
+        <location filename="../../widgets/printer_panel.cpp" line="703" />
         <source>%1 cancelled; resume from sheet %2</source>
         <translation>%1 已取消；可從第 %2 張繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1224" />
+        <location filename="../../widgets/printer_panel.cpp" line="956" />
         <source>Pausing</source>
         <translation>正在暫停</translation>
     </message>
     <message>
-        <location filename="../../widgets/printer_panel.cpp" line="1234" />
+        <location filename="../../widgets/printer_panel.cpp" line="966" />
         <source>Resuming</source>
         <translation>正在繼續</translation>
     </message>
@@ -2182,6 +2227,11 @@
         <location filename="../../widgets/profile_editor.cpp" line="88" />
         <location filename="../../widgets/profile_editor.cpp" line="90" />
         <location filename="../../widgets/profile_editor.cpp" line="96" />
+        <location filename="../../widgets/profile_editor.cpp" line="107" />
+        <location filename="../../widgets/profile_editor.cpp" line="108" />
+        <location filename="../../widgets/profile_editor.cpp" line="109" />
+        <location filename="../../widgets/profile_editor.cpp" line="110" />
+        <location filename="../../widgets/profile_editor.cpp" line="111" />
         <source>mm</source>
         <translation>mm</translation>
     </message>
@@ -2428,105 +2478,135 @@
         <translation>µm</translation>
     </message>
     <message>
+        <location filename="../../widgets/profile_editor.cpp" line="106" />
+        <source>Tactile graphics</source>
+        <translation>觸覺圖形</translation>
+    </message>
+    <message>
         <location filename="../../widgets/profile_editor.cpp" line="107" />
+        <source>Dot spacing along a solid line</source>
+        <translation>實線的點距</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="108" />
+        <source>Dot spacing along a dotted line</source>
+        <translation>點線的點距</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="109" />
+        <source>Gap between dashes</source>
+        <translation>虛線段之間的間隔</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="110" />
+        <source>Texture row spacing</source>
+        <translation>紋理的行距</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="111" />
+        <source>Dot spacing along a texture row</source>
+        <translation>紋理行上的點距</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/profile_editor.cpp" line="116" />
         <source>Profile fields</source>
         <translation>設定檔欄位</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="111" />
+        <location filename="../../widgets/profile_editor.cpp" line="120" />
         <source>Profile check</source>
         <translation>設定檔檢查</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="112" />
+        <location filename="../../widgets/profile_editor.cpp" line="121" />
         <source>&amp;Load profile...</source>
         <translation>載入設定檔(&amp;L)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="113" />
+        <location filename="../../widgets/profile_editor.cpp" line="122" />
         <source>Save pr&amp;ofile...</source>
         <translation>儲存設定檔(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="114" />
+        <location filename="../../widgets/profile_editor.cpp" line="123" />
         <source>&amp;Defaults</source>
         <translation>預設值(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="116" />
+        <location filename="../../widgets/profile_editor.cpp" line="125" />
         <source>Load printer profile</source>
         <translation>載入印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="116" />
-        <location filename="../../widgets/profile_editor.cpp" line="120" />
+        <location filename="../../widgets/profile_editor.cpp" line="125" />
+        <location filename="../../widgets/profile_editor.cpp" line="129" />
         <source>Profiles (*.json)</source>
         <translation>設定檔 (*.json)</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="120" />
+        <location filename="../../widgets/profile_editor.cpp" line="129" />
         <source>Save printer profile</source>
         <translation>儲存印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="143" />
+        <location filename="../../widgets/profile_editor.cpp" line="152" />
         <source>%1 to %2 %3</source>
         <translation>%1 到 %2 %3</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="144" />
+        <location filename="../../widgets/profile_editor.cpp" line="153" />
         <source>%1 in %2</source>
         <translation>%1（%2）</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="145" />
+        <location filename="../../widgets/profile_editor.cpp" line="154" />
         <source>Range %1; profile field %2</source>
         <translation>範圍 %1；設定檔欄位 %2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="148" />
+        <location filename="../../widgets/profile_editor.cpp" line="157" />
         <source>%1:</source>
         <comment>a form field's label</comment>
         <translation>%1：</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="155" />
+        <location filename="../../widgets/profile_editor.cpp" line="164" />
         <source>Invalid: %1. %2</source>
         <translation>無效：%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="190" />
+        <location filename="../../widgets/profile_editor.cpp" line="199" />
         <source>%1 %2. The plan and preview keep the last valid profile.</source>
         <translation>%1 %2。規劃與預覽仍使用上一個有效的設定檔。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="206" />
+        <location filename="../../widgets/profile_editor.cpp" line="215" />
         <source>Profile is valid.</source>
         <translation>設定檔有效。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="210" />
+        <location filename="../../widgets/profile_editor.cpp" line="219" />
         <source>%1 is valid again.</source>
         <comment>a profile field whose error is fixed</comment>
         <translation>%1 又有效了。</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="218" />
+        <location filename="../../widgets/profile_editor.cpp" line="227" />
         <source>Cannot load %1: %2</source>
         <translation>無法載入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="224" />
+        <location filename="../../widgets/profile_editor.cpp" line="233" />
         <source>Loaded profile %1</source>
         <translation>已載入設定檔 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="230" />
+        <location filename="../../widgets/profile_editor.cpp" line="239" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/profile_editor.cpp" line="233" />
+        <location filename="../../widgets/profile_editor.cpp" line="242" />
         <source>Saved profile to %1</source>
         <translation>已將設定檔儲存到 %1</translation>
     </message>
@@ -2544,60 +2624,73 @@
         <translation>方向鍵在點字方之間移動；Page Up 與 Page Down 換頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="228" />
+        <location filename="../../widgets/sheet_preview.cpp" line="242" />
         <source>Sheet %1 %2, line %3, cell %4</source>
         <translation>第 %1 張%2，第 %3 行，第 %4 方</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="230" />
+        <location filename="../../widgets/sheet_preview.cpp" line="244" />
+        <location filename="../../widgets/sheet_preview.cpp" line="255" />
         <source>back</source>
         <translation>背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="230" />
+        <location filename="../../widgets/sheet_preview.cpp" line="244" />
+        <location filename="../../widgets/sheet_preview.cpp" line="255" />
         <source>front</source>
         <translation>正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="233" />
+        <location filename="../../widgets/sheet_preview.cpp" line="247" />
         <source>: no page</source>
         <translation>：沒有這一頁</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/sheet_preview.cpp" line="251" />
+        <source>Graphic: %n dot(s).</source>
+        <translation><numerusform>圖形：%n 點。</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="237" />
+        <location filename="../../widgets/sheet_preview.cpp" line="253" />
+        <source>Sheet %1 %2: %3</source>
+        <comment>a sheet, its side, what its graphic is</comment>
+        <translation>第 %1 張%2：%3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/sheet_preview.cpp" line="260" />
         <source>: blank</source>
         <translation>：空方</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="239" />
+        <location filename="../../widgets/sheet_preview.cpp" line="262" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="239" />
+        <location filename="../../widgets/sheet_preview.cpp" line="262" />
         <source>%1: %2</source>
         <comment>a cell's place and its dots</comment>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="244" />
-        <location filename="../../widgets/sheet_preview.cpp" line="252" />
+        <location filename="../../widgets/sheet_preview.cpp" line="267" />
+        <location filename="../../widgets/sheet_preview.cpp" line="275" />
         <source>, in the word “%1”</source>
         <translation>，在「%1」中</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="258" />
-        <location filename="../../widgets/sheet_preview.cpp" line="346" />
+        <location filename="../../widgets/sheet_preview.cpp" line="281" />
+        <location filename="../../widgets/sheet_preview.cpp" line="369" />
         <source>No document</source>
         <translation>沒有文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/sheet_preview.cpp" line="259" />
+        <location filename="../../widgets/sheet_preview.cpp" line="282" />
         <source>Sheet %1 of %2</source>
         <translation>第 %1 張，共 %2 張</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/sheet_preview.cpp" line="261" />
+        <location filename="../../widgets/sheet_preview.cpp" line="284" />
         <source>; %n front and back dots too close</source>
         <translation><numerusform>；有 %n 組正背面點距離過近</numerusform></translation>
     </message>
