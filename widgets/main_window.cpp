@@ -429,6 +429,7 @@ void MainWindow::show_graphic(std::optional<GraphicView> graphic, const QString&
     graphic_path_ = graphic_ ? path : QString();
     auto* sp = preview_->preview();
     sp->set_graphic_summary(graphic_ ? graphic_->summary() : QString());
+    editor_->print_pane()->set_graphic(graphic_.has_value());
     sp->set_document(&paged());
     if (!graphic_) editor_->print_pane()->setReadOnly(false);
 }

@@ -387,11 +387,11 @@
     <name>tactus::gui::MainWindow</name>
     <message>
         <location filename="../../widgets/main_window.cpp" line="70" />
-        <location filename="../../widgets/main_window.cpp" line="624" />
-        <location filename="../../widgets/main_window.cpp" line="777" />
-        <location filename="../../widgets/main_window.cpp" line="831" />
-        <location filename="../../widgets/main_window.cpp" line="857" />
-        <location filename="../../widgets/main_window.cpp" line="874" />
+        <location filename="../../widgets/main_window.cpp" line="625" />
+        <location filename="../../widgets/main_window.cpp" line="778" />
+        <location filename="../../widgets/main_window.cpp" line="832" />
+        <location filename="../../widgets/main_window.cpp" line="858" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -492,7 +492,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="218" />
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="882" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -783,7 +783,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="403" />
-        <location filename="../../widgets/main_window.cpp" line="568" />
+        <location filename="../../widgets/main_window.cpp" line="569" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
@@ -808,210 +808,210 @@
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="439" />
+        <location filename="../../widgets/main_window.cpp" line="440" />
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="441" />
+        <location filename="../../widgets/main_window.cpp" line="442" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="465" />
+        <location filename="../../widgets/main_window.cpp" line="466" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="473" />
+        <location filename="../../widgets/main_window.cpp" line="474" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="488" />
+        <location filename="../../widgets/main_window.cpp" line="489" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="496" />
+        <location filename="../../widgets/main_window.cpp" line="497" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="523" />
+        <location filename="../../widgets/main_window.cpp" line="524" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="528" />
+        <location filename="../../widgets/main_window.cpp" line="529" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
+        <location filename="../../widgets/main_window.cpp" line="530" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="552" />
+        <location filename="../../widgets/main_window.cpp" line="553" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="562" />
+        <location filename="../../widgets/main_window.cpp" line="563" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="597" />
+        <location filename="../../widgets/main_window.cpp" line="598" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="600" />
+        <location filename="../../widgets/main_window.cpp" line="601" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="600" />
+        <location filename="../../widgets/main_window.cpp" line="601" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="611" />
-        <location filename="../../widgets/main_window.cpp" line="778" />
-        <location filename="../../widgets/main_window.cpp" line="789" />
-        <location filename="../../widgets/main_window.cpp" line="931" />
+        <location filename="../../widgets/main_window.cpp" line="612" />
+        <location filename="../../widgets/main_window.cpp" line="779" />
+        <location filename="../../widgets/main_window.cpp" line="790" />
+        <location filename="../../widgets/main_window.cpp" line="932" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="617" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="635" />
+        <location filename="../../widgets/main_window.cpp" line="636" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="636" />
+        <location filename="../../widgets/main_window.cpp" line="637" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="638" />
+        <location filename="../../widgets/main_window.cpp" line="639" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="684" />
+        <location filename="../../widgets/main_window.cpp" line="685" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="927" />
+        <location filename="../../widgets/main_window.cpp" line="928" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="690" />
+        <location filename="../../widgets/main_window.cpp" line="691" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="690" />
+        <location filename="../../widgets/main_window.cpp" line="691" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="692" />
+        <location filename="../../widgets/main_window.cpp" line="693" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="714" />
+        <location filename="../../widgets/main_window.cpp" line="715" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="723" />
+        <location filename="../../widgets/main_window.cpp" line="724" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="730" />
+        <location filename="../../widgets/main_window.cpp" line="731" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="731" />
+        <location filename="../../widgets/main_window.cpp" line="732" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="742" />
+        <location filename="../../widgets/main_window.cpp" line="743" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="777" />
+        <location filename="../../widgets/main_window.cpp" line="778" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="875" />
+        <location filename="../../widgets/main_window.cpp" line="876" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="876" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="883" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="790" />
+        <location filename="../../widgets/main_window.cpp" line="791" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="804" />
+        <location filename="../../widgets/main_window.cpp" line="805" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="813" />
+        <location filename="../../widgets/main_window.cpp" line="814" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="813" />
+        <location filename="../../widgets/main_window.cpp" line="814" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="817" />
+        <location filename="../../widgets/main_window.cpp" line="818" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="955" />
+        <location filename="../../widgets/main_window.cpp" line="956" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="818" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="823" />
+        <location filename="../../widgets/main_window.cpp" line="824" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1021,219 +1021,219 @@
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="669" />
+        <location filename="../../widgets/main_window.cpp" line="670" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="847" />
+        <location filename="../../widgets/main_window.cpp" line="848" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="848" />
+        <location filename="../../widgets/main_window.cpp" line="849" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="860" />
+        <location filename="../../widgets/main_window.cpp" line="861" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="862" />
+        <location filename="../../widgets/main_window.cpp" line="863" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="863" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="865" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="866" />
+        <location filename="../../widgets/main_window.cpp" line="867" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="834" />
+        <location filename="../../widgets/main_window.cpp" line="835" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="836" />
+        <location filename="../../widgets/main_window.cpp" line="837" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="838" />
+        <location filename="../../widgets/main_window.cpp" line="839" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="837" />
+        <location filename="../../widgets/main_window.cpp" line="838" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="838" />
+        <location filename="../../widgets/main_window.cpp" line="839" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="840" />
+        <location filename="../../widgets/main_window.cpp" line="841" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="580" />
+        <location filename="../../widgets/main_window.cpp" line="581" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="466" />
+        <location filename="../../widgets/main_window.cpp" line="467" />
         <source>Documents (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="554" />
+        <location filename="../../widgets/main_window.cpp" line="555" />
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="557" />
+        <location filename="../../widgets/main_window.cpp" line="558" />
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="581" />
+        <location filename="../../widgets/main_window.cpp" line="582" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="589" />
+        <location filename="../../widgets/main_window.cpp" line="590" />
         <source>Graphic %1 | %n sheet(s)</source>
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="947" />
+        <location filename="../../widgets/main_window.cpp" line="948" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1022" />
+        <location filename="../../widgets/main_window.cpp" line="1023" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1055" />
-        <location filename="../../widgets/main_window.cpp" line="1064" />
+        <location filename="../../widgets/main_window.cpp" line="1056" />
+        <location filename="../../widgets/main_window.cpp" line="1065" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1088" />
+        <location filename="../../widgets/main_window.cpp" line="1089" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1093" />
+        <location filename="../../widgets/main_window.cpp" line="1094" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1106" />
+        <location filename="../../widgets/main_window.cpp" line="1107" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1110" />
+        <location filename="../../widgets/main_window.cpp" line="1111" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1112" />
+        <location filename="../../widgets/main_window.cpp" line="1113" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1112" />
+        <location filename="../../widgets/main_window.cpp" line="1113" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1141" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1141" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142" />
+        <location filename="../../widgets/main_window.cpp" line="1143" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142" />
+        <location filename="../../widgets/main_window.cpp" line="1143" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1143" />
+        <location filename="../../widgets/main_window.cpp" line="1144" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1143" />
+        <location filename="../../widgets/main_window.cpp" line="1144" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144" />
+        <location filename="../../widgets/main_window.cpp" line="1145" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144" />
+        <location filename="../../widgets/main_window.cpp" line="1145" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1145" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1145" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1146" />
+        <location filename="../../widgets/main_window.cpp" line="1147" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1146" />
+        <location filename="../../widgets/main_window.cpp" line="1147" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1152" />
+        <location filename="../../widgets/main_window.cpp" line="1153" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1153" />
+        <location filename="../../widgets/main_window.cpp" line="1154" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -1541,17 +1541,22 @@
         <translation>明眼字</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="208" />
+        <location filename="../../widgets/braille_pane.cpp" line="212" />
+        <source>What the tactile graphic is: its title, description, labels and dots</source>
+        <translation>這個觸覺圖形的內容：標題、描述、標籤與點數</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/braille_pane.cpp" line="214" />
         <source>One paragraph per line: # for headings, - for list items, *italic*, **bold**</source>
         <translation>每行一段：# 為標題、- 為清單項目、*斜體*、**粗體**</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="209" />
+        <location filename="../../widgets/braille_pane.cpp" line="215" />
         <source>The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them</source>
         <translation>帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/braille_pane.cpp" line="207" />
+        <location filename="../../widgets/braille_pane.cpp" line="213" />
         <source>The text file's lines as written: a blank line between paragraphs, a form feed starts a print page</source>
         <translation>文字檔的各行照原樣：段落之間空一行，換頁字元開始新的印刷頁</translation>
     </message>

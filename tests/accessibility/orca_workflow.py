@@ -510,7 +510,8 @@ def scenario_graphic(tactus, sample, work):
         s.launch([tactus, "--no-recovery", svg])
         s.step("Ctrl+3 says what the graphic is", keys=["ctrl+3"],
                expect=[r"Interpoint preview", title, desc, r"\d+ dots"])
-        s.step("Ctrl+1 reads it in the print pane", keys=["ctrl+1", "ctrl+Home"], expect=[title])
+        s.step("Ctrl+1 reads it in the print pane", keys=["ctrl+1", "ctrl+Home"],
+               expect=[title, r"What the tactile graphic is"], forbid=[r"text file's lines"])
         print(s.summary())
     return 0
 

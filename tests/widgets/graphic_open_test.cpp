@@ -93,6 +93,8 @@ private Q_SLOTS:
         QVERIFY2(pane->toPlainText().startsWith(QStringLiteral("Graphic: Test shapes. A circle, a labelled triangle")),
                  qPrintable(pane->toPlainText()));
         QVERIFY(pane->toPlainText().contains(QStringLiteral("Labels: ")));
+        QVERIFY2(pane->accessibleDescription().startsWith(QStringLiteral("What the tactile graphic is")),
+                 qPrintable(pane->accessibleDescription()));
         QVERIFY(pane->toPlainText().contains(QStringLiteral("\n%1 dot").arg(dots)));
         // What a screen reader hears on the preview.
         auto* sp = w.preview_panel()->preview();
@@ -105,6 +107,7 @@ private Q_SLOTS:
         QVERIFY(w.open_file_now(test::sample("welcome.md")));
         QVERIFY(!w.graphic());
         QVERIFY(!pane->isReadOnly());
+        QVERIFY(!pane->accessibleDescription().startsWith(QStringLiteral("What the tactile graphic is")));
         QCOMPARE(sp->document(), &w.editor()->layout().paged());
     }
 
