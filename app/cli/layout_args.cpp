@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <memory>
 
 #include "command.hpp"
 #include "graphic/drawing_file.hpp"
@@ -48,6 +49,12 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
                    "A .png/.jpg picture: the grey level (0 black to 254) at or below which a pixel is ink; "
                    "default: Otsu's threshold for the picture")
         ->check(CLI::Range(0, 254));
+    cmd.add_option("--images", images,
+                   "Pictures in DOCX, ODT and Markdown: descriptions (their descriptions only, as transcriber's "
+                   "notes) or graphics (each PNG, JPEG or SVG picture also embossed as a graphic page on a sheet "
+                   "of its own, after its description)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"descriptions", "graphics"}));
     cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, html, epub, dtbook, brf, pef")
         ->capture_default_str();
     cmd.add_flag("--volumes", volumes,
@@ -82,6 +89,7 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     o.import.encoding = encoding;
     o.import.ruby = require(import::parse_ruby_guide(ruby), exit_usage);
     o.import.format = require(import::parse_source_format(format), exit_usage);
+    o.import.images = images == "graphics";
     if (!preset.empty()) {
         const auto p = layout::find_layout_preset(preset);
         if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset", ErrorKind::usage});
@@ -179,6 +187,22 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
         ProgressLine progress;
         auto with_progress = options;
         with_progress.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+        if (options.import.images) {
+            // Each picture on the machine's page and grid, as a drawing file of its own would be.
+            auto table = std::make_shared<translate::Translator>(
+                require(translate::Translator::open(options.tables), exit_usage));
+            const auto m = machine ? *machine : profile::default_profile();
+            const graphic::DrawingFileOptions drawing_options{.image_threshold = args.image_threshold,
+                                                              .firmware = firmware ? &*firmware : nullptr,
+                                                              .legacy_protocol = legacy_protocol};
+            with_progress.graphic_pages = [table, m, drawing_options,
+                                           geometry = options.layout.geometry](const document::Image& image)
+                -> Result<layout::PagedDocument> {
+                auto pictured = graphic::lay_out_picture(image, m, geometry, *table, drawing_options);
+                if (!pictured) return std::unexpected(pictured.error());
+                return std::move(pictured->document);
+            };
+        }
         laid = pipeline::lay_out(doc, with_progress);
     }
     auto paged = require(std::move(laid));

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "common/result.hpp"
+#include "document/document.hpp"
 #include "graphic/graphic_page.hpp"
 #include "machine/firmware_tables.hpp"
 #include "profile/profile.hpp"
@@ -33,5 +34,11 @@ Result<GraphicLayout> lay_out_drawing_file(const std::filesystem::path& path, Dr
                                            const profile::PrinterProfile& machine,
                                            const layout::PageGeometry& geometry, const translate::Translator& table,
                                            const DrawingFileOptions& options = {});
+
+// A picture a document holds (document::Block::images: PNG, JPEG or SVG bytes)
+// laid out as lay_out_drawing_file lays out the same file: the same dots.
+Result<GraphicLayout> lay_out_picture(const document::Image& image, const profile::PrinterProfile& machine,
+                                      const layout::PageGeometry& geometry, const translate::Translator& table,
+                                      const DrawingFileOptions& options = {});
 
 }  // namespace tactus::graphic
