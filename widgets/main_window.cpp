@@ -628,7 +628,18 @@ void MainWindow::report(const QString& message, bool error) {
 
 bool MainWindow::save() { return path_.isEmpty() ? save_as() : save_to(path_); }
 
+bool MainWindow::refuse_saving_graphic() {
+    if (!graphic_) return false;
+    // The print pane holds what the graphic is, not a document: written as
+    // Markdown it would replace a drawing (or stand beside it) as text nobody wants.
+    report(tr("Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save")
+               .arg(QFileInfo(graphic_path_).fileName()),
+           true);
+    return true;
+}
+
 bool MainWindow::save_as() {
+    if (refuse_saving_graphic()) return false;
     auto suggested = path_;
     if (suggested.isEmpty() && !source_name_.isEmpty())
         suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
@@ -653,6 +664,7 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
 }
 
 bool MainWindow::save_to(const QString& path) {
+    if (refuse_saving_graphic()) return false;
     // In the file's format and, for a text file, its own encoding (core's writer).
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());

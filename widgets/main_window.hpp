@@ -42,6 +42,8 @@ public:
     void open_file(const QString& path);
     // Opens synchronously (tests, the benchmark); returns false with a message on failure.
     bool open_file_now(const QString& path);
+    // A standalone drawing is open: says why it is not saved, and returns true.
+    bool refuse_saving_graphic();
     bool save_to(const QString& path);
     // The document as the editor holds it, as the file `file_name` would hold
     // it (plain text for .txt, else Markdown): what Save writes, and what is

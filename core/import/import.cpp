@@ -173,7 +173,9 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             const auto text = decoded->text(bytes);
             // Pictures are read from the document's folder (its name's).
             std::error_code folder_error;
-            const auto folder = std::filesystem::absolute(std::filesystem::path(name).parent_path(), folder_error);
+            auto parent = std::filesystem::path(name).parent_path();
+            if (parent.empty()) parent = ".";
+            const auto folder = std::filesystem::absolute(parent, folder_error);
             doc = format == SourceFormat::text ? detail::import_text(text)
                                                : detail::import_markdown(text, options.images ? &folder : nullptr);
             encoding = decoded->encoding;

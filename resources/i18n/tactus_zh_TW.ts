@@ -388,10 +388,10 @@
     <message>
         <location filename="../../widgets/main_window.cpp" line="70" />
         <location filename="../../widgets/main_window.cpp" line="625" />
-        <location filename="../../widgets/main_window.cpp" line="778" />
-        <location filename="../../widgets/main_window.cpp" line="832" />
-        <location filename="../../widgets/main_window.cpp" line="858" />
-        <location filename="../../widgets/main_window.cpp" line="875" />
+        <location filename="../../widgets/main_window.cpp" line="790" />
+        <location filename="../../widgets/main_window.cpp" line="844" />
+        <location filename="../../widgets/main_window.cpp" line="870" />
+        <location filename="../../widgets/main_window.cpp" line="887" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -492,7 +492,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="218" />
-        <location filename="../../widgets/main_window.cpp" line="882" />
+        <location filename="../../widgets/main_window.cpp" line="894" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -879,9 +879,9 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="612" />
-        <location filename="../../widgets/main_window.cpp" line="779" />
-        <location filename="../../widgets/main_window.cpp" line="790" />
-        <location filename="../../widgets/main_window.cpp" line="932" />
+        <location filename="../../widgets/main_window.cpp" line="791" />
+        <location filename="../../widgets/main_window.cpp" line="802" />
+        <location filename="../../widgets/main_window.cpp" line="944" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -891,127 +891,132 @@
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="636" />
+        <location filename="../../widgets/main_window.cpp" line="635" />
+        <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
+        <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="647" />
         <source>Markdown (*.md)</source>
         <translation>Markdown (*.md)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="637" />
+        <location filename="../../widgets/main_window.cpp" line="648" />
         <source>Plain text (*.txt)</source>
         <translation>純文字 (*.txt)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="639" />
+        <location filename="../../widgets/main_window.cpp" line="650" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="685" />
+        <location filename="../../widgets/main_window.cpp" line="697" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="928" />
+        <location filename="../../widgets/main_window.cpp" line="940" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="691" />
+        <location filename="../../widgets/main_window.cpp" line="703" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="691" />
+        <location filename="../../widgets/main_window.cpp" line="703" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="693" />
+        <location filename="../../widgets/main_window.cpp" line="705" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="715" />
+        <location filename="../../widgets/main_window.cpp" line="727" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="724" />
+        <location filename="../../widgets/main_window.cpp" line="736" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="731" />
+        <location filename="../../widgets/main_window.cpp" line="743" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="732" />
+        <location filename="../../widgets/main_window.cpp" line="744" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="743" />
+        <location filename="../../widgets/main_window.cpp" line="755" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="778" />
+        <location filename="../../widgets/main_window.cpp" line="790" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="876" />
+        <location filename="../../widgets/main_window.cpp" line="888" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="877" />
+        <location filename="../../widgets/main_window.cpp" line="889" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="883" />
+        <location filename="../../widgets/main_window.cpp" line="895" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="791" />
+        <location filename="../../widgets/main_window.cpp" line="803" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="805" />
+        <location filename="../../widgets/main_window.cpp" line="817" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="814" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="814" />
+        <location filename="../../widgets/main_window.cpp" line="826" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="818" />
+        <location filename="../../widgets/main_window.cpp" line="830" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="956" />
+        <location filename="../../widgets/main_window.cpp" line="968" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="831" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="824" />
+        <location filename="../../widgets/main_window.cpp" line="836" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1021,72 +1026,72 @@
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="670" />
+        <location filename="../../widgets/main_window.cpp" line="682" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="848" />
+        <location filename="../../widgets/main_window.cpp" line="860" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849" />
+        <location filename="../../widgets/main_window.cpp" line="861" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="861" />
+        <location filename="../../widgets/main_window.cpp" line="873" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="863" />
+        <location filename="../../widgets/main_window.cpp" line="875" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="876" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="865" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="867" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="835" />
+        <location filename="../../widgets/main_window.cpp" line="847" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="837" />
+        <location filename="../../widgets/main_window.cpp" line="849" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="839" />
+        <location filename="../../widgets/main_window.cpp" line="851" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="838" />
+        <location filename="../../widgets/main_window.cpp" line="850" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="839" />
+        <location filename="../../widgets/main_window.cpp" line="851" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="841" />
+        <location filename="../../widgets/main_window.cpp" line="853" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
@@ -1122,118 +1127,118 @@
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="948" />
+        <location filename="../../widgets/main_window.cpp" line="960" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1023" />
+        <location filename="../../widgets/main_window.cpp" line="1035" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1056" />
-        <location filename="../../widgets/main_window.cpp" line="1065" />
+        <location filename="../../widgets/main_window.cpp" line="1068" />
+        <location filename="../../widgets/main_window.cpp" line="1077" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1089" />
+        <location filename="../../widgets/main_window.cpp" line="1101" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1094" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1107" />
+        <location filename="../../widgets/main_window.cpp" line="1119" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1111" />
+        <location filename="../../widgets/main_window.cpp" line="1123" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1113" />
+        <location filename="../../widgets/main_window.cpp" line="1125" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1113" />
+        <location filename="../../widgets/main_window.cpp" line="1125" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142" />
+        <location filename="../../widgets/main_window.cpp" line="1154" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142" />
+        <location filename="../../widgets/main_window.cpp" line="1154" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1143" />
+        <location filename="../../widgets/main_window.cpp" line="1155" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1143" />
+        <location filename="../../widgets/main_window.cpp" line="1155" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144" />
+        <location filename="../../widgets/main_window.cpp" line="1156" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144" />
+        <location filename="../../widgets/main_window.cpp" line="1156" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1145" />
+        <location filename="../../widgets/main_window.cpp" line="1157" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1145" />
+        <location filename="../../widgets/main_window.cpp" line="1157" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1146" />
+        <location filename="../../widgets/main_window.cpp" line="1158" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1146" />
+        <location filename="../../widgets/main_window.cpp" line="1158" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1147" />
+        <location filename="../../widgets/main_window.cpp" line="1159" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1147" />
+        <location filename="../../widgets/main_window.cpp" line="1159" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1153" />
+        <location filename="../../widgets/main_window.cpp" line="1165" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1154" />
+        <location filename="../../widgets/main_window.cpp" line="1166" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

@@ -107,6 +107,9 @@ T = {
     "Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)":
         "無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）",
     "Tactile graphics": "觸覺圖形",
+    # A drawing open on its own: the print pane holds what it is, not a document to save.
+    "Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save":
+        "無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存",
     "What the tactile graphic is: its title, description, labels and dots": "這個觸覺圖形的內容：標題、描述、標籤與點數",
     "Dot spacing along a solid line": "實線的點距",
     "Dot spacing along a dotted line": "點線的點距",

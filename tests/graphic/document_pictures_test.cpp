@@ -113,6 +113,12 @@ TEST(DocumentPictures, MarkdownReadsPicturesBesideItAndRefusesOnesOutsideItsFold
     EXPECT_EQ(images[0]->name, "movie.jpg");
     EXPECT_EQ(images[0]->bytes, *read_file(kData + "/pictures/movie.jpg", std::size_t{1} << 20));
     EXPECT_TRUE(has_warning(doc.warnings, "line 5: picture ../pictures_outside.png: outside the document's folder"));
+    // Named without a folder (`tactus-cli layout pictures.md` in its folder): the working directory is its folder.
+    const auto cwd = std::filesystem::current_path();
+    std::filesystem::current_path(kData + "/pictures");
+    const auto here = import_pictures("pictures.md");
+    std::filesystem::current_path(cwd);
+    EXPECT_EQ(images_of(here).size(), 1U);
 }
 
 // Laid out for the default machine as the CLI does, pictures as graphics.

@@ -111,6 +111,28 @@ private Q_SLOTS:
         QCOMPARE(sp->document(), &w.editor()->layout().paged());
     }
 
+    // Saving would write the print pane's summary as Markdown over (or beside) the drawing.
+    void a_drawing_is_not_saved_as_text() {
+        MainWindow w;
+        w.set_interactive(false);
+        const auto copy = dir_.filePath(QStringLiteral("shapes.svg"));
+        QFile::remove(copy);
+        QVERIFY(QFile::copy(QStringLiteral(TACTUS_TEST_DATA "/graphics/shapes.svg"), copy));
+        QFile before(copy);
+        QVERIFY(before.open(QIODevice::ReadOnly));
+        const auto bytes = before.readAll();
+        before.close();
+        QVERIFY(w.open_file_now(copy));
+        QVERIFY(w.graphic());
+        QVERIFY(!w.save_to(copy));
+        const auto markdown = dir_.filePath(QStringLiteral("shapes.md"));
+        QVERIFY(!w.save_to(markdown));
+        QVERIFY(!QFile::exists(markdown));
+        QFile after(copy);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), bytes);
+    }
+
     void a_png_shows_the_dots_the_cli_counts() {
         MainWindow w;
         w.set_interactive(false);
