@@ -191,6 +191,30 @@ TEST(DocumentPictures, EachPictureIsAGraphicPageOnASheetOfItsOwnWithTheDrawingFi
     EXPECT_EQ(strikes, paged.pages[graphic_pages[0]].graphic.size());
 }
 
+TEST(DocumentPictures, APictureThatCannotBeReadStaysItsDescriptionWithAWarning) {
+    const auto prof = profile::default_profile();
+    document::Document doc;
+    document::Block block;
+    block.spans.push_back({.text = "A map of the island", .transcriber_note = true});
+    // A PNG signature, then nothing a PNG reader can use.
+    block.images.push_back({std::string("\x89PNG\r\n\x1a\nnot a picture", 22), "image/png", "media/map.png"});
+    doc.blocks.push_back(block);
+    const auto paged = lay_out_with_graphics(doc, prof);
+    ASSERT_FALSE(paged.pages.empty());
+    for (const auto& p : paged.pages) EXPECT_TRUE(p.graphic.empty());
+    EXPECT_EQ(paged.pages.size(), 1U);  // the description's page, nothing after it
+    EXPECT_TRUE(has_warning(paged.warnings, "picture media/map.png: ")) << paged.warnings.size();
+    EXPECT_TRUE(has_warning(paged.warnings, "its description stays"));
+    // The description is laid out as without the picture.
+    auto plain = doc;
+    plain.blocks[0].images.clear();
+    pipeline::PipelineOptions o;
+    o.layout.geometry = profile::page_geometry(prof);
+    const auto without = pipeline::lay_out(plain, o);
+    ASSERT_TRUE(without);
+    EXPECT_EQ(paged.pages[0].lines, without->pages[0].lines);
+}
+
 TEST(DocumentPictures, WithoutTheOptionTheBrailleIsWhatItWas) {
     for (const auto& [source, golden] : {std::pair<std::string, std::string>{kInline, "pandoc-inline_images.brf"},
                                          {kVml, "pandoc-image_vml.brf"},
