@@ -50,7 +50,7 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
                    "default: Otsu's threshold for the picture")
         ->check(CLI::Range(0, 254));
     cmd.add_option("--images", images,
-                   "Pictures in DOCX, ODT and Markdown: descriptions (their descriptions only, as transcriber's "
+                   "Pictures in DOCX, ODT, Markdown, HTML and EPUB: descriptions (their descriptions only, as transcriber's "
                    "notes) or graphics (each PNG, JPEG or SVG picture also embossed as a graphic page on a sheet "
                    "of its own, after its description)")
         ->capture_default_str()

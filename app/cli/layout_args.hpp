@@ -20,7 +20,7 @@ struct LayoutArgs {
     std::string preset;
     std::string format = "auto";
     int image_threshold = -1;  // a picture's ink threshold; -1: Otsu's
-    // Pictures in a DOCX, ODT or Markdown document: "descriptions" (their
+    // Pictures in a DOCX, ODT, Markdown, HTML or EPUB document: "descriptions" (their
     // descriptions only, as transcriber's notes) or "graphics" (each also a
     // graphic page on a sheet of its own; docs/graphics.md).
     std::string images = "descriptions";

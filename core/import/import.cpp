@@ -196,10 +196,17 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a PEF document", where);
             doc = detail::import_pef(bytes);
             break;
-        case SourceFormat::html: doc = detail::import_html(bytes); break;
+        case SourceFormat::html: {
+            std::error_code folder_error;
+            auto parent = std::filesystem::path(name).parent_path();
+            if (parent.empty()) parent = ".";
+            const auto folder = std::filesystem::absolute(parent, folder_error);
+            doc = detail::import_html(bytes, options.images ? &folder : nullptr);
+            break;
+        }
         case SourceFormat::epub:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not an EPUB", where);
-            doc = detail::import_epub(bytes);
+            doc = detail::import_epub(bytes, options.images);
             break;
         case SourceFormat::dtbook:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a DTBook document", where);

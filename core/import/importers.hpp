@@ -21,8 +21,8 @@ Result<document::Document> import_brf(std::string_view bytes);
 Result<document::Document> import_pef(std::string_view bytes);
 Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby = RubyGuide::after, bool images = false);
 // HTML5 or XHTML (markup_import.cpp), EPUB 2/3 (epub_import.cpp), DTBook/NIMAS.
-Result<document::Document> import_html(std::string_view bytes);
-Result<document::Document> import_epub(std::string_view bytes);
+Result<document::Document> import_html(std::string_view bytes, const std::filesystem::path* image_folder = nullptr);
+Result<document::Document> import_epub(std::string_view bytes, bool images = false);
 Result<document::Document> import_dtbook(std::string_view bytes);
 
 }  // namespace tactus::import::detail

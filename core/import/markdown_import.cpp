@@ -134,30 +134,9 @@ public:
         auto warn = [&](const std::string& why) {
             builder_.warn("line " + std::to_string(line) + ": picture " + src + ": " + why + "; its description stays");
         };
-        if (src.empty()) return;
-        if (src.find(':') != std::string::npos || src.starts_with('/') || src.starts_with('\\')) {
-            warn("not a file beside the document (a URL or an absolute path)");
-            return;
-        }
-        std::error_code ec;
-        const auto folder = std::filesystem::weakly_canonical(*image_folder_, ec);
-        const auto file = std::filesystem::weakly_canonical(*image_folder_ / src, ec);
-        const auto inside = file.lexically_relative(folder);
-        if (ec || inside.empty() || *inside.begin() == "..") {
-            warn("outside the document's folder, so it is not read");
-            return;
-        }
-        auto bytes = read_file(file, max_import_bytes);
-        if (!bytes) {
-            warn(bytes.error().message);
-            return;
-        }
-        auto type = picture_media_type(*bytes, src);
-        if (type.empty()) {
-            builder_.warn("line " + std::to_string(line) + ": " + unsupported_picture_warning(src));
-            return;
-        }
-        pending_image_ = document::Image{std::move(*bytes), std::move(type), src};
+        std::string why;
+        pending_image_ = picture_file(*image_folder_, src, why);
+        if (!why.empty()) warn(why);
     }
 
     void leave_image() {

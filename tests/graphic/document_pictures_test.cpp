@@ -121,6 +121,26 @@ TEST(DocumentPictures, MarkdownReadsPicturesBesideItAndRefusesOnesOutsideItsFold
     EXPECT_EQ(images_of(here).size(), 1U);
 }
 
+TEST(DocumentPictures, EpubAndHtmlKeepTheirImgPicturesAndNameAGif) {
+    const std::string epub = kData + "/public/pandoc-img_no_cover.epub";
+    const auto book = import_pictures(epub);
+    const auto in_book = images_of(book);
+    ASSERT_EQ(in_book.size(), 2U);
+    EXPECT_EQ(in_book[0]->name, "EPUB/img/check.png");
+    EXPECT_EQ(in_book[0]->media_type, "image/png");
+    EXPECT_EQ(in_book[1]->name, "EPUB/img/check.jpg");
+    for (const auto* i : in_book) EXPECT_EQ(i->bytes, package_part(epub, i->name));
+    EXPECT_TRUE(has_warning(book.warnings, "picture ../img/check.gif: not PNG, JPEG or SVG"));
+
+    const auto page = import_pictures(kData + "/pictures/pandoc-html-reader.html");
+    const auto in_page = images_of(page);
+    ASSERT_EQ(in_page.size(), 2U);
+    EXPECT_EQ(in_page[0]->name, "lalune.jpg");
+    EXPECT_EQ(in_page[0]->bytes, *read_file(kData + "/pictures/lalune.jpg", std::size_t{1} << 20));
+    EXPECT_EQ(in_page[1]->name, "movie.jpg");
+    EXPECT_TRUE(images_of(import_pictures(kData + "/pictures/pandoc-html-reader.html", false)).empty());
+}
+
 // Laid out for the default machine as the CLI does, pictures as graphics.
 layout::PagedDocument lay_out_with_graphics(const document::Document& doc, const profile::PrinterProfile& prof) {
     pipeline::PipelineOptions o;
