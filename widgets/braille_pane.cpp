@@ -197,6 +197,11 @@ void PrintPane::set_text_file(bool text_file) {
     describe();
 }
 
+void PrintPane::set_graphic(bool graphic) {
+    graphic_ = graphic;
+    describe();
+}
+
 void PrintPane::set_codes_shown(bool codes) {
     codes_ = codes;
     describe();
@@ -204,7 +209,8 @@ void PrintPane::set_codes_shown(bool codes) {
 
 void PrintPane::describe() {
     setAccessibleDescription(
-        text_file_ ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
+        graphic_     ? tr("What the tactile graphic is: its title, description, labels and dots")
+        : text_file_ ? tr("The text file's lines as written: a blank line between paragraphs, a form feed starts a print page")
         : codes_   ? tr("One paragraph per line: # for headings, - for list items, *italic*, **bold**")
                    : tr("The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them"));
 }

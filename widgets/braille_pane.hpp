@@ -55,6 +55,8 @@ public:
     // What the lines are, for a screen reader: a text file's own lines, or the
     // Markdown dialect's one paragraph a line.
     void set_text_file(bool text_file);
+    // The pane says what an open tactile graphic is (read only), not text to edit.
+    void set_graphic(bool graphic);
     // The lines shown structured (headings, lists, emphasis) or as their codes.
     void set_codes_shown(bool codes);
 
@@ -70,6 +72,7 @@ protected:
 private:
     std::function<QString(int)> marker_;
     bool text_file_ = false;
+    bool graphic_ = false;
     bool codes_ = false;
     void describe();
 };

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "document_loader.hpp"
 
+#include <QFileInfo>
+#include <QCoreApplication>
 #include <QPromise>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "edit/editor_lines.hpp"
+#include "graphic/drawing_file.hpp"
 #include "import/import.hpp"
 #include "import/text_lines.hpp"
 
@@ -56,8 +59,40 @@ LoadResultPtr load_text(const QString& path, const std::string& tables, const la
     return r;
 }
 
+// A drawing: its pages from the core (the CLI's function), and the print
+// pane's lines saying what it is, in the text dialect (read, not edited).
+LoadResultPtr load_drawing(const QString& path, graphic::DrawingKind kind, const std::string& tables,
+                           const layout::LayoutOptions& options, const profile::PrinterProfile& machine,
+                           const std::function<bool(int)>& progress) {
+    const auto failed = [&path](Error e) {
+        auto r = std::make_shared<LoadResult>();
+        r->error = std::move(e);
+        r->path = path;
+        return r;
+    };
+    auto table = translate::Translator::open(tables);
+    if (!table) return failed(table.error());
+    auto laid = graphic::lay_out_drawing_file(path.toStdString(), kind, machine, options.geometry, *table);
+    if (!laid) return failed(laid.error());
+    GraphicView view;
+    view.title = QString::fromStdString(laid->placed.title).simplified();
+    if (view.title.isEmpty()) view.title = QFileInfo(path).fileName();
+    view.description = QString::fromStdString(laid->placed.description).simplified();
+    for (const auto& label : laid->placed.labels) view.labels << QString::fromStdString(label.text);
+    for (const auto& page : laid->document.pages) view.dots += page.graphic.size();
+    view.paged = std::move(laid->document);
+    std::vector<std::string> lines;
+    for (const auto& line : view.summary().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
+    auto r = build(std::move(lines), tables, options, edit::Dialect::text, progress);
+    r->graphic = std::move(view);
+    r->path = path;
+    return r;
+}
+
 LoadResultPtr load(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
-                   const std::function<bool(int)>& progress) {
+                   const profile::PrinterProfile& machine, const std::function<bool(int)>& progress) {
+    if (const auto kind = graphic::drawing_kind(path.toStdString()); kind != graphic::DrawingKind::none)
+        return load_drawing(path, kind, tables, options, machine, progress);
     if (edit::dialect_for(path.toStdString()) == edit::Dialect::text) return load_text(path, tables, options, progress);
     auto doc = import::import_file(path.toStdString());
     if (!doc) {
@@ -93,9 +128,22 @@ std::function<bool(int)> reporter(QPromise<LoadResultPtr>& promise) {
 
 }  // namespace
 
-QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const layout::LayoutOptions& options) {
-    return QtConcurrent::run([path, tables, options](QPromise<LoadResultPtr>& promise) {
-        promise.addResult(load(path, tables, options, reporter(promise)));
+QString GraphicView::summary() const {
+    QString text = QCoreApplication::translate("tactus::gui::GraphicView", "Graphic: %1.").arg(title);
+    if (!description.isEmpty()) text += QLatin1Char(' ') + description;
+    if (!labels.isEmpty())
+        text += QLatin1Char('\n') +
+                QCoreApplication::translate("tactus::gui::GraphicView", "Labels: %1.").arg(labels.join(QStringLiteral("; ")));
+    const int count = static_cast<int>(dots);  // lupdate misses a cast inside translate()
+    text += QLatin1Char('\n') +
+            QCoreApplication::translate("tactus::gui::GraphicView", "%n dot(s).", "on all the graphic's pages", count);
+    return text;
+}
+
+QFuture<LoadResultPtr> load_file(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
+                                 const profile::PrinterProfile& machine) {
+    return QtConcurrent::run([path, tables, options, machine](QPromise<LoadResultPtr>& promise) {
+        promise.addResult(load(path, tables, options, machine, reporter(promise)));
     });
 }
 
@@ -108,8 +156,9 @@ QFuture<LoadResultPtr> lay_out_lines(std::vector<std::string> lines, const std::
     });
 }
 
-LoadResultPtr load_file_now(const QString& path, const std::string& tables, const layout::LayoutOptions& options) {
-    return load(path, tables, options, {});
+LoadResultPtr load_file_now(const QString& path, const std::string& tables, const layout::LayoutOptions& options,
+                            const profile::PrinterProfile& machine) {
+    return load(path, tables, options, machine, {});
 }
 
 }  // namespace tactus::gui

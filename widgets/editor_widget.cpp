@@ -592,6 +592,9 @@ void EditorWidget::edit_braille(std::size_t line, std::size_t from, std::size_t 
 }
 
 void EditorWidget::braille_typed(const document::BrailleLine& cells) {
+    // The braille pane edits the print text: not while that is read only (a
+    // graphic's description, a re-layout under way).
+    if (print_->isReadOnly()) return;
     const auto c = braille_->textCursor();
     const auto line = static_cast<std::size_t>(braille_->document()->findBlock(c.selectionStart()).blockNumber());
     const auto start_block = braille_->document()->findBlock(c.selectionStart());
@@ -615,6 +618,7 @@ void EditorWidget::braille_typed(const document::BrailleLine& cells) {
 }
 
 void EditorWidget::braille_erase(bool backward) {
+    if (print_->isReadOnly()) return;
     const auto c = braille_->textCursor();
     const auto block = c.block();
     const auto line = static_cast<std::size_t>(block.blockNumber());

@@ -117,6 +117,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             }
         }
         preview_->preview()->set_geometry(sheet_geometry(p));
+        if (graphic_) lay_out_graphic_again();
         vibration_->set_profile(p);
         schedule_plan();
     });
@@ -152,7 +153,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     preview_->set_book(book_);
     connect(preview_, &PreviewPanel::announce, announcer_, &Announcer::announce);
     connect(book_, &BookView::changed, this, [this, sp] {
-        const auto* shown = book_->shown(&editor_->layout().paged());
+        const auto* shown = book_->shown(&paged());
         sp->set_document(shown);
         printer_->emboss_choice()->set_pages(book_->labels(), book_->volumes(), shown->geometry);
     });
@@ -166,7 +167,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
-        sp->set_document(book_->shown(&editor_->layout().paged()));
+        sp->set_document(book_->shown(&paged()));
         book_->schedule();
         update_status();
         schedule_plan();
@@ -198,6 +199,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     build_menus();
     restore_settings();
     apply_system_look(*preview_);
+    sp->set_document(&paged());
     book_->refresh_now();
 
     connect(&autosave_, &Autosave::due, this, [this] {
@@ -413,6 +415,7 @@ void MainWindow::set_table(const QString& table) {
         report(tr("Cannot use table %1: %2").arg(table, QString::fromStdString(ok.error().to_string())), true);
         return;
     }
+    if (graphic_) lay_out_graphic_again();  // its labels are in the table's braille
     const auto& warnings = editor_->layout().paged().warnings;
     report(tr("Braille table: %1").arg(tables_->currentText()) +
            (warnings.empty() ? QString() : QLatin1Char(' ') + table_warning(QString::fromStdString(warnings.front()))));
@@ -434,10 +437,40 @@ QString MainWindow::table_warning(const QString& detail) const {
         .arg(tables_->currentText(), said);
 }
 
+const layout::PagedDocument& MainWindow::paged() const {
+    return graphic_ ? graphic_->paged : editor_->layout().paged();
+}
+
+void MainWindow::show_graphic(std::optional<GraphicView> graphic, const QString& path) {
+    graphic_ = std::move(graphic);
+    graphic_path_ = graphic_ ? path : QString();
+    auto* sp = preview_->preview();
+    sp->set_graphic_summary(graphic_ ? graphic_->summary() : QString());
+    editor_->print_pane()->set_graphic(graphic_.has_value());
+    sp->set_document(&paged());
+    if (!graphic_) editor_->print_pane()->setReadOnly(false);
+}
+
+void MainWindow::lay_out_graphic_again() {
+    auto r = load_file_now(graphic_path_, editor_->layout().tables(), editor_->layout().options(), profile_->profile());
+    if (!r->graphic || !r->layout) {
+        report(tr("Cannot lay out %1 again: %2")
+                   .arg(QDir::toNativeSeparators(graphic_path_),
+                        r->error ? QString::fromStdString(r->error->to_string()) : tr("cancelled")),
+               true);
+        return;
+    }
+    show_graphic(std::move(r->graphic), r->path);
+    editor_->adopt(std::move(*r->layout));
+    editor_->print_pane()->setReadOnly(true);
+    schedule_plan();
+}
+
 void MainWindow::new_document() {
     auto layout = edit::LiveLayout::create(editor_->layout().tables(), editor_->layout().options());
     if (!layout) return;
     autosave_.remove();
+    show_graphic(std::nullopt, {});
     editor_->adopt(std::move(*layout));
     path_.clear();
     update_title();
@@ -448,18 +481,19 @@ void MainWindow::open_dialog() {
     FocusReturn back(this, editor_->print_pane());
     const auto path = QFileDialog::getOpenFileName(
         this, tr("Open or import"), QFileInfo(path_).absolutePath(),
-        tr("Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef);;All files (*)"));
+        tr("Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;"
+           "Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)"));
     if (!path.isEmpty()) open_file(path);
 }
 
 void MainWindow::open_file(const QString& path) {
     if (busy_) return;
     start_busy(tr("Opening %1").arg(QFileInfo(path).fileName()),
-               load_file(path, editor_->layout().tables(), editor_->layout().options()), true);
+               load_file(path, editor_->layout().tables(), editor_->layout().options(), profile_->profile()), true);
 }
 
 bool MainWindow::open_file_now(const QString& path) {
-    auto r = load_file_now(path, editor_->layout().tables(), editor_->layout().options());
+    auto r = load_file_now(path, editor_->layout().tables(), editor_->layout().options(), profile_->profile());
     finish_load(r, true);
     return r->layout.has_value() || (!r->error && !r->cancelled);
 }
@@ -518,7 +552,9 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
     }
     if (replace_text) {
         autosave_.remove();
+        show_graphic(std::move(r->graphic), r->path);
         editor_->adopt(std::move(*r->layout));
+        editor_->print_pane()->setReadOnly(graphic_.has_value());  // what the graphic is, not text to edit
         pages_kept_ = editor_->layout().pages_kept();
         const QFileInfo info(r->path);
         // Saved in place when Tactus writes the format (Markdown, text, DOCX, ODT), else "Save as".
@@ -526,10 +562,15 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         source_name_ = info.fileName();
         add_recent(info.absoluteFilePath());
         update_title();
-        const auto& paged = editor_->layout().paged();
+        const auto& paged = this->paged();
         // One message: a second one would cut the first off in the screen reader.
         auto said = tr("Opened %1: %n sheet(s)", nullptr, static_cast<int>(paged.sheet_count())).arg(info.fileName());
-        if (!paged.warnings.empty())
+        if (graphic_) {
+            said = tr("%1. %2", "a message, then what the graphic is")
+                       .arg(said, graphic_->summary().replace(QLatin1Char('\n'), QLatin1Char(' ')));
+            if (!paged.warnings.empty())
+                said += QLatin1Char(' ') + tr("Warning: %1").arg(QString::fromStdString(paged.warnings.front()));
+        } else if (!paged.warnings.empty())
             said += QLatin1Char(' ') + table_warning(QString::fromStdString(paged.warnings.front()));
         report(said);
         if (editor_->layout().error_count() > 0)
@@ -559,6 +600,9 @@ void MainWindow::tell_pages_kept() {
 QString MainWindow::status_text() const {
     if (!editor_->has_layout()) return {};
     const auto& layout = editor_->layout();
+    if (graphic_)
+        return tr("Graphic %1 | %n sheet(s)", nullptr, static_cast<int>(std::max<std::size_t>(1, graphic_->paged.sheet_count())))
+            .arg(graphic_->title);
     const auto& paged = layout.paged();
     const auto pos = editor_->current_position();
     const bool interpoint = paged.geometry.interpoint;
@@ -598,7 +642,18 @@ void MainWindow::report(const QString& message, bool error) {
 
 bool MainWindow::save() { return path_.isEmpty() ? save_as() : save_to(path_); }
 
+bool MainWindow::refuse_saving_graphic() {
+    if (!graphic_) return false;
+    // The print pane holds what the graphic is, not a document: written as
+    // Markdown it would replace a drawing (or stand beside it) as text nobody wants.
+    report(tr("Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save")
+               .arg(QFileInfo(graphic_path_).fileName()),
+           true);
+    return true;
+}
+
 bool MainWindow::save_as() {
+    if (refuse_saving_graphic()) return false;
     auto suggested = path_;
     if (suggested.isEmpty() && !source_name_.isEmpty())
         suggested = QFileInfo(source_name_).completeBaseName() + QStringLiteral(".md");
@@ -622,6 +677,7 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
 }
 
 bool MainWindow::save_to(const QString& path) {
+    if (refuse_saving_graphic()) return false;
     // In the file's format and, for a text file, its own encoding (core's writer).
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
@@ -672,7 +728,7 @@ void MainWindow::export_dialog(const QString& format) {
 
 bool MainWindow::export_to(const QString& path) {
     if (!may_reflow_braille()) return false;
-    const auto& paged = editor_->layout().paged();
+    const auto& paged = this->paged();
     const auto suffix = QFileInfo(path).suffix().toLower();
     Result<std::string> bytes = fail(ErrorKind::usage, "unknown export format", suffix.toStdString());
     if (suffix == QLatin1String("brf")) {
@@ -710,7 +766,7 @@ void MainWindow::print_pdf_dialog() {
 bool MainWindow::print_pdf_to(const QString& path) {
     QString error;
     const auto* sp = preview_->preview();
-    if (!print_to_pdf(editor_->layout().paged(), sp->geometry(), sp->mode(), path, &error)) {
+    if (!print_to_pdf(paged(), sp->geometry(), sp->mode(), path, &error)) {
         report(error, true);
         return false;
     }
@@ -916,6 +972,14 @@ bool MainWindow::emboss() {
     const bool to_queue = printer_->selected_is_queue();
     if (!to_queue && !may_reflow_braille()) return false;
     bool sent = false;
+    if (to_queue && graphic_) {
+        // A CUPS queue imports a document's text; a drawing's dots depend on
+        // the printer, so it goes through the spool to a device (docs/graphics.md).
+        report(tr("Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)")
+                   .arg(name),
+               true);
+        return false;
+    }
     if (to_queue) {
         const auto pef = edit::structured_braille_pef(editor_->layout(), base.toStdString());
         if (pef && !*pef) {
@@ -928,7 +992,7 @@ bool MainWindow::emboss() {
                                              tables_->table());
     } else {
         book_->flush();
-        sent = printer_->submit(name, *book_->shown(&editor_->layout().paged()), profile_->profile()) != 0;
+        sent = printer_->submit(name, *book_->shown(&paged()), profile_->profile()) != 0;
     }
     if (!sent) {
         // The fault is on the printer panel, beside the device picker: go there.
@@ -973,11 +1037,11 @@ void MainWindow::start_plan() {
         planning_ = nullptr;
         show_plan(watcher->future().result());
     });
-    watcher->setFuture(plan_document_async(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept));
+    watcher->setFuture(plan_document_async(paged(), profile_->profile(), kPlannedSheetsKept));
 }
 
 DocumentPlanPtr MainWindow::plan_now() {
-    auto plan = plan_document(editor_->layout().paged(), profile_->profile(), kPlannedSheetsKept);
+    auto plan = plan_document(paged(), profile_->profile(), kPlannedSheetsKept);
     show_plan(plan);
     return plan;
 }
@@ -1049,6 +1113,8 @@ bool MainWindow::recover(const Recovery& r) {
         layout->reset(std::move(lines));
         editor_->adopt(std::move(*layout));
     }
+    show_graphic(std::nullopt, {});
+    editor_->print_pane()->setReadOnly(false);
     tables_->set_table(QString::fromStdString(table));
     path_ = r.document_path;
     source_name_ = r.document_path.isEmpty() ? tr("Recovered") : QFileInfo(r.document_path).fileName();

@@ -43,6 +43,8 @@ public:
     void open_file(const QString& path);
     // Opens synchronously (tests, the benchmark); returns false with a message on failure.
     bool open_file_now(const QString& path);
+    // A standalone drawing is open: says why it is not saved, and returns true.
+    bool refuse_saving_graphic();
     bool save_to(const QString& path);
     // The document as the editor holds it, as the file `file_name` would hold
     // it (plain text for .txt, else Markdown): what Save writes, and what is
@@ -53,6 +55,11 @@ public:
     void set_table(const QString& table);
 
     [[nodiscard]] EditorWidget* editor() const { return editor_; }
+    // The pages shown, exported, planned and embossed: the open graphic's,
+    // else the editor's document laid out.
+    [[nodiscard]] const layout::PagedDocument& paged() const;
+    // The open drawing (File > Open of an .svg, .png, .jpg), or null.
+    [[nodiscard]] const GraphicView* graphic() const { return graphic_ ? &*graphic_ : nullptr; }
     [[nodiscard]] PreviewPanel* preview_panel() const { return preview_; }
     [[nodiscard]] Announcer* announcer() const { return announcer_; }
     // The book layout the preview shows and the printer embosses, when the document reads as a book.
@@ -129,6 +136,11 @@ private:
     // A character the text file's encoding cannot hold: asks whether to save
     // as UTF-8 (true) or not at all.
     bool may_save_as_utf8(const QString& path, const Error& why);
+    // The open drawing laid out again, for a new profile or table (its dots
+    // depend on both), as the CLI lays it out for them.
+    void lay_out_graphic_again();
+    // The drawing (or none) becomes the document shown: preview, print pane.
+    void show_graphic(std::optional<GraphicView> graphic, const QString& path);
     void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
     QDockWidget* add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
@@ -147,6 +159,8 @@ private:
     QMenu* recent_menu_ = nullptr;
     QString path_;         // where Save writes (a print format Tactus writes); empty: ask
     QString source_name_;  // the file the document came from, for the title
+    std::optional<GraphicView> graphic_;
+    QString graphic_path_;
     bool interactive_ = false;
     bool pages_kept_ = false;  // the layout kept ready-made braille's own pages when it last changed
     // Says so when an edit makes ready-made braille be laid out again (its own

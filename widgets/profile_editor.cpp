@@ -101,6 +101,15 @@ ProfileEditor::ProfileEditor(QWidget* parent) : QWidget(parent) {
     add(dynamics, "dynamics.damping_ratio", tr("Damping ratio"), QString(), 0, 0.99, 3, [](P& p) -> double& { return p.dynamics.damping_ratio; });
     add(dynamics, "vibration.tolerance_um", tr("Position tolerance at the strike"), tr("\u00b5m"), 0.1, 1e5, 1, [](P& p) -> double& { return p.vibration.tolerance_um; });
 
+    // Tactile graphics' dot spacings: the spin boxes only keep the number sane;
+    // their real bounds follow the dot pitch and each other (core's validate()).
+    auto* graphic = group(tr("Tactile graphics"));
+    add(graphic, "graphic.line_dot_spacing_mm", tr("Dot spacing along a solid line"), tr("mm"), 0.1, 100, 2, [](P& p) -> double& { return p.graphic.line_dot_spacing_mm; });
+    add(graphic, "graphic.dotted_dot_spacing_mm", tr("Dot spacing along a dotted line"), tr("mm"), 0.1, 100, 2, [](P& p) -> double& { return p.graphic.dotted_dot_spacing_mm; });
+    add(graphic, "graphic.dash_gap_mm", tr("Gap between dashes"), tr("mm"), 0.1, 100, 2, [](P& p) -> double& { return p.graphic.dash_gap_mm; });
+    add(graphic, "graphic.texture_pitch_mm", tr("Texture row spacing"), tr("mm"), 0.1, 100, 2, [](P& p) -> double& { return p.graphic.texture_pitch_mm; });
+    add(graphic, "graphic.texture_dot_spacing_mm", tr("Dot spacing along a texture row"), tr("mm"), 0.1, 100, 2, [](P& p) -> double& { return p.graphic.texture_dot_spacing_mm; });
+
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(inner);
     scroll->setWidgetResizable(true);

@@ -11,6 +11,12 @@ DotPoint point(const plan::PlacedDot& d) {
 std::vector<DotPoint> dots(const layout::Page& page, plan::Side side, const SheetGeometry& g) {
     std::vector<DotPoint> out;
     for (const auto& d : plan::page_dots(g.profile, page, side)) out.push_back(point(d));
+    // A graphic's dots where the hammer strikes them (plan's rule for a point
+    // of a side); they belong to no cell (line, cell and dot 0).
+    for (const auto& d : page.graphic) {
+        const auto place = plan::place_on_paper(g.profile, side, d.x_mm, d.y_mm);
+        out.push_back({place.paper_x_mm, place.paper_y_mm, 0, 0, 0});
+    }
     return out;
 }
 

@@ -30,10 +30,10 @@ struct DotPoint {
     double y_mm = 0;
     int line = 0;
     int cell = 0;
-    int dot = 0;  // 1..8
+    int dot = 0;  // 1..8; 0 for a graphic's dot
 };
 
-// Dot centres of a page on the front side.
+// Dot centres of a page on the front side: its cells', then its graphic's.
 std::vector<DotPoint> front_dots(const layout::Page& page, const SheetGeometry& g);
 // Dot centres of a page embossed on the back, in front-view coordinates.
 std::vector<DotPoint> back_dots(const layout::Page& page, const SheetGeometry& g);

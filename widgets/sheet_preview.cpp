@@ -146,6 +146,20 @@ void SheetPreview::set_document(const layout::PagedDocument* doc) {
     refresh();
 }
 
+void SheetPreview::set_graphic_summary(const QString& summary) {
+    graphic_summary_ = summary;
+    cursor_changed();
+}
+
+std::size_t SheetPreview::shown_dot_count() const {
+    if (!doc_ || doc_->pages.empty()) return 0;
+    const auto sheet = doc_->sheet(sheet_);
+    std::size_t n = 0;
+    if (const auto* front = options_.mode == SideMode::back ? sheet.back : sheet.front) n += front_dots(*front, geometry_).size();
+    if (options_.mode == SideMode::both && sheet.back) n += back_dots(*sheet.back, geometry_).size();
+    return n;
+}
+
 void SheetPreview::set_geometry(const SheetGeometry& g) {
     geometry_ = g;
     updateGeometry();
@@ -231,6 +245,15 @@ QString SheetPreview::cursor_description() const {
                               .arg(options_.cursor_line + 1)
                               .arg(options_.cursor_cell + 1);
     if (!page) return where + tr(": no page");
+    if (!page->graphic.empty()) {
+        // A graphic has no cells to walk: the side, and what the graphic is.
+        const auto what = graphic_summary_.isEmpty()
+                              ? tr("Graphic: %n dot(s).", nullptr, static_cast<int>(page->graphic.size()))
+                              : QString(graphic_summary_).replace(QLatin1Char('\n'), QLatin1Char(' '));
+        return tr("Sheet %1 %2: %3", "a sheet, its side, what its graphic is")
+            .arg(sheet_)
+            .arg(options_.cursor_on_back ? tr("back") : tr("front"), what);
+    }
     const auto l = static_cast<std::size_t>(options_.cursor_line);
     const auto c = static_cast<std::size_t>(options_.cursor_cell);
     if (l >= page->lines.size() || c >= page->lines[l].size() || page->lines[l][c].blank())
@@ -346,7 +369,10 @@ void SheetPreview::paintEvent(QPaintEvent*) {
         p.drawText(rect(), Qt::AlignCenter, tr("No document"));
         return;
     }
-    paint_sheet(p, doc_->sheet(sheet_), geometry_, options_, px_per_mm());
+    auto shown = options_;
+    // A graphic's side has no cells: no cell cursor on it.
+    if (const auto* page = cursor_side_page(); page && !page->graphic.empty()) shown.cursor_line = shown.cursor_cell = -1;
+    paint_sheet(p, doc_->sheet(sheet_), geometry_, shown, px_per_mm());
     if (hasFocus()) {
         // A visible focus frame for keyboard users, beyond the cell cursor.
         p.setPen(QPen(palette().highlight(), 3));

@@ -38,6 +38,12 @@ public:
     // The document is borrowed: the owner calls set_document again after every change.
     void set_document(const layout::PagedDocument* doc);
     void set_geometry(const SheetGeometry& g);
+    // What the graphic is (GraphicView::summary), said for a page that holds
+    // a graphic's dots instead of its cells; empty for a text document.
+    void set_graphic_summary(const QString& summary);
+    // Dots drawn on the side shown (front, back, or the front with the back's
+    // pits): the cells' and the graphic's, as a sighted reader counts them.
+    [[nodiscard]] std::size_t shown_dot_count() const;
     void set_back_translator(std::function<QString(const document::BrailleLine&)> f) { back_translate_ = std::move(f); }
     // The print word that produced the cell at (page index, line, cell); the
     // back-translation is only the fallback when it gives nothing.
@@ -92,6 +98,7 @@ private:
     void refresh();
 
     const layout::PagedDocument* doc_ = nullptr;
+    QString graphic_summary_;
     SheetGeometry geometry_;
     PaintOptions options_;
     std::size_t sheet_ = 1;

@@ -57,13 +57,16 @@ void print_summary(std::ostream& out, const layout::PagedDocument& doc, const pi
     for (const auto& s : doc.sections) volumes += s.starts_volume ? 1 : 0;
     if (volumes > 1) out << "volumes:    " << volumes << '\n';
     std::size_t graphic_dots = 0, graphic_pages = 0;
+    std::string numbers;  // the graphic pages' braille page numbers, which a document's pictures move
     for (const auto& p : doc.pages) {
         graphic_dots += p.graphic.size();
-        if (!p.graphic.empty()) ++graphic_pages;
+        if (p.graphic.empty()) continue;
+        ++graphic_pages;
+        numbers += (numbers.empty() ? "" : ", ") + std::to_string(p.braille_number);
     }
     if (graphic_pages > 0)
         out << "graphic:    " << graphic_dots << " dots on " << graphic_pages << " graphic page"
-            << (graphic_pages == 1 ? "" : "s") << '\n';
+            << (graphic_pages == 1 ? " (braille page " : "s (braille pages ") << numbers << ")\n";
     for (const auto& w : doc.warnings) out << "warning:    " << w << '\n';
 }
 

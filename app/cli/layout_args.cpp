@@ -3,11 +3,10 @@
 
 #include <chrono>
 #include <iostream>
+#include <memory>
 
 #include "command.hpp"
-#include "graphic/graphic_page.hpp"
-#include "graphic/raster_trace.hpp"
-#include "graphic/svg_import.hpp"
+#include "graphic/drawing_file.hpp"
 #include "layout/braille_pages.hpp"
 #include "pipeline/page_range.hpp"
 #include "platform/console.hpp"
@@ -51,6 +50,12 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
                    "A .png/.jpg picture: the grey level (0 black to 254) at or below which a pixel is ink; "
                    "default: Otsu's threshold for the picture")
         ->check(CLI::Range(0, 254));
+    cmd.add_option("--images", images,
+                   "Pictures in DOCX, ODT, Markdown, HTML and EPUB: descriptions (their descriptions only, as transcriber's "
+                   "notes) or graphics (each PNG, JPEG or SVG picture also embossed as a graphic page on a sheet "
+                   "of its own, after its description)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"descriptions", "graphics"}));
     cmd.add_option("--format", format, "Input format: auto, txt, md, docx, odt, html, epub, dtbook, brf, pef")
         ->capture_default_str();
     cmd.add_flag("--volumes", volumes,
@@ -85,6 +90,7 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     o.import.encoding = encoding;
     o.import.ruby = require(import::parse_ruby_guide(ruby), exit_usage);
     o.import.format = require(import::parse_source_format(format), exit_usage);
+    o.import.images = images == "graphics";
     if (!preset.empty()) {
         const auto p = layout::find_layout_preset(preset);
         if (!p) fail_with(exit_usage, Error{"unknown preset '" + preset + "'", "--preset", ErrorKind::usage});
@@ -160,20 +166,16 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
                                       const profile::PrinterProfile* machine,
                                       const std::optional<machine::FirmwareTables>& firmware, bool legacy_protocol,
                                       std::vector<std::string>* labels) {
-    const bool svg = graphic::is_svg_path(args.file) && (args.format == "auto" || args.format == "svg");
-    const bool picture = graphic::is_raster_path(args.file) && args.format == "auto";
+    const auto kind = graphic::drawing_kind(args.file);
+    const bool svg = kind == graphic::DrawingKind::svg && (args.format == "auto" || args.format == "svg");
+    const bool picture = kind == graphic::DrawingKind::picture && args.format == "auto";
     if (svg || picture) {
         const auto m = machine ? *machine : profile::default_profile();
-        std::optional<machine::FirmwareTables> grid = firmware;
-        if (!grid && !legacy_protocol)
-            if (auto made = profile::make_firmware_tables(m)) grid = std::move(*made);
-        const auto dots = graphic::dot_options(m, grid ? &*grid : nullptr);
-        graphic::TraceOptions trace;
-        trace.threshold = args.image_threshold;
-        trace.simplify_mm = graphic::simplify_tolerance_mm(dots);
-        const auto drawing = require(svg ? graphic::load_svg(args.file) : graphic::load_image(args.file, trace));
         const auto table = require(translate::Translator::open(options.tables), exit_usage);
-        auto laid = require(graphic::lay_out_drawing(drawing, m, options.layout.geometry, table, dots));
+        const graphic::DrawingFileOptions drawing_options{.image_threshold = args.image_threshold,
+                                                          .firmware = firmware ? &*firmware : nullptr,
+                                                          .legacy_protocol = legacy_protocol};
+        auto laid = require(graphic::lay_out_drawing_file(args.file, kind, m, options.layout.geometry, table, drawing_options));
         for (const auto& w : laid.document.warnings)
             std::cerr << "tactus-cli: " << args.file << ": warning: " << w << '\n';
         if (labels) *labels = pipeline::page_labels(laid.document);
@@ -188,6 +190,22 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
         ProgressLine progress;
         auto with_progress = options;
         with_progress.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+        if (options.import.images) {
+            // Each picture on the machine's page and grid, as a drawing file of its own would be.
+            auto table = std::make_shared<translate::Translator>(
+                require(translate::Translator::open(options.tables), exit_usage));
+            const auto m = machine ? *machine : profile::default_profile();
+            const graphic::DrawingFileOptions drawing_options{.image_threshold = args.image_threshold,
+                                                              .firmware = firmware ? &*firmware : nullptr,
+                                                              .legacy_protocol = legacy_protocol};
+            with_progress.graphic_pages = [table, m, drawing_options,
+                                           geometry = options.layout.geometry](const document::Image& image)
+                -> Result<layout::PagedDocument> {
+                auto pictured = graphic::lay_out_picture(image, m, geometry, *table, drawing_options);
+                if (!pictured) return std::unexpected(pictured.error());
+                return std::move(pictured->document);
+            };
+        }
         laid = pipeline::lay_out(doc, with_progress, labels);
     }
     auto paged = require(std::move(laid));

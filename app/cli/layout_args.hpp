@@ -20,6 +20,10 @@ struct LayoutArgs {
     std::string preset;
     std::string format = "auto";
     int image_threshold = -1;  // a picture's ink threshold; -1: Otsu's
+    // Pictures in a DOCX, ODT, Markdown, HTML or EPUB document: "descriptions" (their
+    // descriptions only, as transcriber's notes) or "graphics" (each also a
+    // graphic page on a sheet of its own; docs/graphics.md).
+    std::string images = "descriptions";
     std::string encoding;
     std::string ruby = "after";
     std::string page_numbers = "bottom-right";

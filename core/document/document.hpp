@@ -75,6 +75,17 @@ constexpr bool is_table_kind(BlockKind k) { return k == BlockKind::table_row || 
 // layout does not follow it (docs/layout.md, "Tables").
 enum class Align : std::uint8_t { none, left, centre, right };
 
+// A picture the source holds (a DOCX a:blip part, an ODT draw:image, a
+// Markdown image file): its bytes as stored and what they are. Kept only when
+// the import is asked for pictures (import::ImportOptions::images); layout
+// then makes each a graphic page (docs/graphics.md, "Pictures in documents").
+struct Image {
+    std::string bytes;       // the file's bytes, undecoded
+    std::string media_type;  // "image/png", "image/jpeg", "image/svg+xml"
+    std::string name;        // where it came from ("word/media/image1.png"), for messages
+    bool operator==(const Image&) const = default;
+};
+
 struct Block {
     BlockKind kind = BlockKind::paragraph;
     int level = 0;
@@ -92,6 +103,9 @@ struct Block {
     // non-zero number are one box, drawn between box lines (docs/layout.md,
     // "Boxed material"); 0 = not in a box.
     int box = 0;
+    // The pictures this block holds, in order; their descriptions are its
+    // transcriber's notes. Empty unless the import kept pictures.
+    std::vector<Image> images;
     bool operator==(const Block&) const = default;
 
     // The plain text of all spans, for display and tests.

@@ -57,6 +57,11 @@ void DocumentBuilder::add_transcriber_note(std::string_view utf8) {
     current_.spans.push_back(std::move(span));
 }
 
+void DocumentBuilder::add_image(document::Image image) {
+    if (!open_) begin(document::BlockKind::paragraph, 0, 0);
+    current_.images.push_back(std::move(image));
+}
+
 void DocumentBuilder::begin_box() {
     if (box_depth_++ > 0) return;
     end();
@@ -90,7 +95,7 @@ void DocumentBuilder::add_text(std::string_view utf8, std::uint8_t emphasis, doc
 void DocumentBuilder::end() {
     if (!open_ || in_note_) return;  // end_note() ends a note
     open_ = false;
-    const bool keep = current_.kind == document::BlockKind::table_cell ||
+    const bool keep = current_.kind == document::BlockKind::table_cell || !current_.images.empty() ||
                       std::any_of(current_.spans.begin(), current_.spans.end(),
                                   [](const document::Span& s) { return visible(s.text); });
     if (keep) push(std::move(current_));

@@ -38,6 +38,9 @@ public:
     // Appends a transcriber's note (document::Span::transcriber_note) to the
     // open block; opens a paragraph if none is open.
     void add_transcriber_note(std::string_view utf8);
+    // A picture's bytes, kept on the block being built (document::Block::images);
+    // a block holding one is kept even without text.
+    void add_image(document::Image image);
     // Boxed material (document::Block::box): the blocks kept between
     // begin_box and end_box are one box. A box in a box is part of it.
     void begin_box();

@@ -22,6 +22,7 @@
 // comments.
 #include <pugixml.hpp>
 
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -30,6 +31,7 @@
 #include "import/importers.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "import/picture_part.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
 #include "common/try.hpp"
@@ -281,7 +283,8 @@ private:
             const auto boxes = anchor.select_nodes(".//*[local-name()='txbxContent']");
             for (const auto& b : boxes) boxes_.push_back(b.node());
             if (!boxes.empty()) continue;
-            picture(attribute(docPr, "descr"), attribute(docPr, "title"), anchor);
+            const auto blip = anchor.select_node(".//*[local-name()='blip']").node();
+            picture(attribute(docPr, "descr"), attribute(docPr, "title"), anchor, attribute(blip, "embed"));
         }
     }
 
@@ -295,18 +298,50 @@ private:
             if (shape.type() != pugi::node_element) continue;
             const auto image = shape.select_node(".//*[local-name()='imagedata']").node();
             if (!image) continue;
-            picture(attribute(shape, "alt"), attribute(image, "title"), shape);
+            picture(attribute(shape, "alt"), attribute(image, "title"), shape, attribute(image, "id"));
         }
     }
 
-    void picture(std::string_view description, std::string_view title, const pugi::xml_node& where_node) {
+    void picture(std::string_view description, std::string_view title, const pugi::xml_node& where_node,
+                 std::string_view relationship) {
         const auto text = description.find_first_not_of(" \t\r\n") != std::string_view::npos ? description : title;
-        if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+        const bool described = text.find_first_not_of(" \t\r\n") != std::string_view::npos;
+        auto image = picture_bytes(relationship);
+        if (described) out_.transcriber_note(text);
+        if (image)
+            out_.image(std::move(*image), described, where(where_node));
+        else if (!described)
             out_.picture_without_description(where(where_node));
-            return;
-        }
-        out_.transcriber_note(text);
     }
+
+    // The picture a relationship names, when pictures are kept and the
+    // graphic stage can read its type (else a warning naming it).
+    std::optional<document::Image> picture_bytes(std::string_view relationship) {
+        if (!package_ || relationship.empty()) return std::nullopt;
+        const auto target = image_targets_.find(std::string(relationship));
+        if (target == image_targets_.end()) return std::nullopt;
+        auto bytes = package_->read(target->second, max_import_bytes);
+        if (!bytes) {
+            out_.warn("picture " + target->second + ": " + bytes.error().message + "; its description stays");
+            return std::nullopt;
+        }
+        auto type = picture_media_type(*bytes, target->second);
+        if (type.empty()) {
+            out_.warn(unsupported_picture_warning(target->second));
+            return std::nullopt;
+        }
+        return document::Image{std::move(*bytes), std::move(type), target->second};
+    }
+
+public:
+    // Keep pictures' bytes (ImportOptions::images): `targets` maps the main
+    // part's relationship ids to the parts they name.
+    void keep_images(const XmlPackage& package, std::unordered_map<std::string, std::string> targets) {
+        package_ = &package;
+        image_targets_ = std::move(targets);
+    }
+
+private:
 
     void run(const pugi::xml_node& r) {
         const auto rPr = child(r, "rPr");
@@ -385,6 +420,8 @@ private:
     pugi::xml_node footnotes_root_, endnotes_root_;
     std::unordered_set<std::string> referenced_;  // "footnote:2", "endnote:1"
     RubyGuide ruby_;
+    const XmlPackage* package_ = nullptr;
+    std::unordered_map<std::string, std::string> image_targets_;
     std::string_view part_, bytes_;     // the main part, for the places warnings name
     std::vector<pugi::xml_node> boxes_;  // text boxes met in the paragraph being read
     int box_depth_ = 0;
@@ -392,9 +429,22 @@ private:
     int in_hyperlink_ = 0;  // inside w:hyperlink (nested ones count)
 };
 
+// The main part's relationships by id, their targets as part names.
+Result<std::unordered_map<std::string, std::string>> relationship_targets(const XmlPackage& package,
+                                                                          std::string_view source) {
+    std::unordered_map<std::string, std::string> out;
+    XmlPart rels;
+    TACTUS_TRY(found, package.load(rels_of(source), rels, false));
+    if (!found) return out;
+    for (const auto& r : rels.root().children())
+        if (local_name(r) == "Relationship" && attribute(r, "TargetMode") != "External")
+            out.emplace(std::string(attribute(r, "Id")), resolve_target(folder_of(source), attribute(r, "Target")));
+    return out;
+}
+
 }  // namespace
 
-Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
+Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby, bool images) {
     TACTUS_TRY(package, XmlPackage::open(bytes, "a Word document"));
 
     auto main_part = related(package, "", "officeDocument");
@@ -420,6 +470,10 @@ Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby) {
         return fail(ErrorKind::input, "not a Word document: no <w:document>/<w:body>", *main_part);
     BodyReader reader(styles, numbering, footnotes_xml.root(), endnotes_xml.root(), ruby, *main_part,
                       document_xml.bytes);
+    if (images) {
+        TACTUS_TRY(targets, relationship_targets(package, *main_part));
+        reader.keep_images(package, std::move(targets));
+    }
     reader.container(body);
     return reader.finish();
 }

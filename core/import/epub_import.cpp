@@ -20,6 +20,7 @@
 #include "import/importers.hpp"
 #include "import/markup_document.hpp"
 #include "import/markup_walk.hpp"
+#include "import/picture_part.hpp"
 #include "import/xml_util.hpp"
 #include "import/zip_archive.hpp"
 #include "common/try.hpp"
@@ -46,7 +47,7 @@ struct ManifestItem {
 
 }  // namespace
 
-Result<document::Document> import_epub(std::string_view bytes) {
+Result<document::Document> import_epub(std::string_view bytes, bool images) {
     auto zip = ZipArchive::open(bytes);
     if (!zip) return fail(ErrorKind::input, "not an EPUB: " + zip.error().message, zip.error().where);
     if (zip->contains("mimetype")) {
@@ -111,7 +112,28 @@ Result<document::Document> import_epub(std::string_view bytes) {
         trees.push_back(std::move(tree));
     }
     if (parts.empty()) return fail(ErrorKind::input, "the EPUB's spine lists no content document (XHTML)", opf_path);
-    auto doc = MarkupWalk(std::move(parts)).run();
+    MarkupWalk walk(std::move(parts));
+    if (images)
+        walk.keep_pictures([&zip](std::string_view part, std::string_view src, std::string& why)
+                               -> std::optional<document::Image> {
+            const auto name = resolve_path(part, src);
+            if (!zip->contains(name)) {
+                why = "not in the EPUB";
+                return std::nullopt;
+            }
+            auto picture = zip->read(name, max_import_bytes);
+            if (!picture) {
+                why = picture.error().message;
+                return std::nullopt;
+            }
+            auto type = picture_media_type(*picture, name);
+            if (type.empty()) {
+                why = std::string(unsupported_picture_reason);
+                return std::nullopt;
+            }
+            return document::Image{std::move(*picture), std::move(type), name};
+        });
+    auto doc = walk.run();
     if (!doc) return doc;
     doc->warnings.insert(doc->warnings.begin(), warnings.begin(), warnings.end());
     // Dublin Core, in the package's order; PEF names the same elements.

@@ -171,8 +171,13 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             auto decoded = detail::decode_text(bytes, options.encoding);
             if (!decoded) return std::unexpected(located(decoded.error(), where));
             const auto text = decoded->text(bytes);
+            // Pictures are read from the document's folder (its name's).
+            std::error_code folder_error;
+            auto parent = std::filesystem::path(name).parent_path();
+            if (parent.empty()) parent = ".";
+            const auto folder = std::filesystem::absolute(parent, folder_error);
             doc = format == SourceFormat::text ? detail::import_text(text)
-                                               : detail::import_markdown(text);
+                                               : detail::import_markdown(text, options.images ? &folder : nullptr);
             encoding = decoded->encoding;
             byte_order_mark = decoded->byte_order_mark;
             line_ending = line_ending_of(text);
@@ -180,21 +185,28 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
         }
         case SourceFormat::docx:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a DOCX document", where);
-            doc = detail::import_docx(bytes, options.ruby);
+            doc = detail::import_docx(bytes, options.ruby, options.images);
             break;
         case SourceFormat::odt:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not an ODT document", where);
-            doc = detail::import_odt(bytes, options.ruby);
+            doc = detail::import_odt(bytes, options.ruby, options.images);
             break;
         case SourceFormat::brf: doc = detail::import_brf(bytes); break;
         case SourceFormat::pef:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a PEF document", where);
             doc = detail::import_pef(bytes);
             break;
-        case SourceFormat::html: doc = detail::import_html(bytes); break;
+        case SourceFormat::html: {
+            std::error_code folder_error;
+            auto parent = std::filesystem::path(name).parent_path();
+            if (parent.empty()) parent = ".";
+            const auto folder = std::filesystem::absolute(parent, folder_error);
+            doc = detail::import_html(bytes, options.images ? &folder : nullptr);
+            break;
+        }
         case SourceFormat::epub:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not an EPUB", where);
-            doc = detail::import_epub(bytes);
+            doc = detail::import_epub(bytes, options.images);
             break;
         case SourceFormat::dtbook:
             if (bytes.empty()) return fail(ErrorKind::input, "empty file is not a DTBook document", where);

@@ -25,6 +25,11 @@ struct ImportOptions {
     SourceFormat format = SourceFormat::automatic;
     std::string encoding;  // text and Markdown only; empty = detect
     RubyGuide ruby = RubyGuide::after;  // DOCX and ODT
+    // Keep the bytes of pictures a graphic can be made of (PNG, JPEG, SVG) on
+    // the block they stand in (document::Block::images): DOCX, ODT, Markdown,
+    // HTML and EPUB.
+    // A picture of another type keeps only its description, with a warning.
+    bool images = false;
 };
 
 // "after", "omit".

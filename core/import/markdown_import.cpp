@@ -15,10 +15,15 @@
 #include <md4c.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <vector>
 
+#include "common/file_io.hpp"
 #include "common/utf8.hpp"
 #include "import/document_builder.hpp"
+#include "import/import.hpp"
+#include "import/picture_part.hpp"
 #include "import/trim.hpp"
 #include "import/importers.hpp"
 #include "import/markdown_footnotes.hpp"
@@ -94,11 +99,15 @@ public:
         parser.leave_block = [](MD_BLOCKTYPE t, void* d, void* self) {
             return static_cast<MarkdownReader*>(self)->leave_block(t, d);
         };
-        parser.enter_span = [](MD_SPANTYPE t, void*, void* self) {
-            return static_cast<MarkdownReader*>(self)->span(t, +1);
+        parser.enter_span = [](MD_SPANTYPE t, void* d, void* self) {
+            auto* reader = static_cast<MarkdownReader*>(self);
+            if (t == MD_SPAN_IMG) reader->enter_image(*static_cast<const MD_SPAN_IMG_DETAIL*>(d));
+            return reader->span(t, +1);
         };
         parser.leave_span = [](MD_SPANTYPE t, void*, void* self) {
-            return static_cast<MarkdownReader*>(self)->span(t, -1);
+            auto* reader = static_cast<MarkdownReader*>(self);
+            if (t == MD_SPAN_IMG) reader->leave_image();
+            return reader->span(t, -1);
         };
         parser.text = [](MD_TEXTTYPE t, const MD_CHAR* s, MD_SIZE n, void* self) {
             return static_cast<MarkdownReader*>(self)->text(t, std::string_view(s, n));
@@ -113,7 +122,31 @@ public:
     void page_break(int line) { builder_.print_page_break(line); }
     DocumentBuilder& builder() { return builder_; }
 
+    // Pictures are kept (ImportOptions::images) from files in `folder`, the
+    // document's own, or below it.
+    void keep_images(std::filesystem::path folder) { image_folder_ = std::move(folder); }
+
+    void enter_image(const MD_SPAN_IMG_DETAIL& d) {
+        pending_image_.reset();
+        if (!image_folder_) return;
+        const std::string src(d.src.text, d.src.size);
+        const int line = line_of(d.src.text);
+        auto warn = [&](const std::string& why) {
+            builder_.warn("line " + std::to_string(line) + ": picture " + src + ": " + why + "; its description stays");
+        };
+        std::string why;
+        pending_image_ = picture_file(*image_folder_, src, why);
+        if (!why.empty()) warn(why);
+    }
+
+    void leave_image() {
+        if (pending_image_) builder_.add_image(std::move(*pending_image_));
+        pending_image_.reset();
+    }
+
 private:
+    std::optional<std::filesystem::path> image_folder_;
+    std::optional<document::Image> pending_image_;
     struct List {
         bool ordered = false;
         unsigned next = 1;
@@ -426,7 +459,7 @@ private:
 
 }  // namespace
 
-Result<document::Document> import_markdown(std::string_view source) {
+Result<document::Document> import_markdown(std::string_view source, const std::filesystem::path* image_folder) {
     // Front matter is metadata: left out of the text, its lines kept as blank
     // lines so every line after it keeps its number in messages.
     const auto front = front_matter(source);
@@ -440,6 +473,7 @@ Result<document::Document> import_markdown(std::string_view source) {
     const std::string_view utf8 = prepared.text;
     const LineIndex lines(utf8);
     MarkdownReader reader(utf8, lines, prepared.notes);
+    if (image_folder) reader.keep_images(*image_folder);
     // CommonMark treats a form feed as blank space; as the print page break of
     // plain text it splits the input, and each piece is parsed on its own.
     std::size_t start = 0;

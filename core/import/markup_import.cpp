@@ -11,6 +11,7 @@
 #include "import/importers.hpp"
 #include "import/markup_document.hpp"
 #include "import/markup_walk.hpp"
+#include "import/picture_part.hpp"
 #include "import/xml_util.hpp"
 #include "common/try.hpp"
 
@@ -48,12 +49,17 @@ void add_metadata(document::Document& doc, std::string name, std::string_view va
 
 }  // namespace
 
-Result<document::Document> import_html(std::string_view bytes) {
+Result<document::Document> import_html(std::string_view bytes, const std::filesystem::path* image_folder) {
     TACTUS_TRY(text, markup_text(bytes));
     auto parsed = parse_xhtml_or_html(std::move(text), {});
     if (!parsed) return std::unexpected(parsed.error());
     const auto& tree = **parsed;
-    auto doc = MarkupWalk({MarkupPart{{}, tree.xml, tree.lines()}}).run();
+    MarkupWalk walk({MarkupPart{{}, tree.xml, tree.lines()}});
+    if (image_folder)
+        walk.keep_pictures([folder = *image_folder](std::string_view, std::string_view src, std::string& why) {
+            return picture_file(folder, src, why);
+        });
+    auto doc = walk.run();
     if (!doc) return doc;
     const auto html = tree.xml.document_element();
     const auto head = child(html, "head");

@@ -735,6 +735,7 @@ void MarkupWalk::image(const pugi::xml_node& node, const Context& ctx) {
     if (ctx.inline_only || (builder_.is_open() && !block_fresh_)) {
         if (!builder_.is_open()) open(ctx);
         builder_.add_text(std::string(block_fresh_ ? "" : " ") + "[" + note + "]", ctx.emphasis, document::Position::baseline, ctx.language);
+        attach_picture(node);
         block_fresh_ = false;
         space_pending_ = true;
         return;
@@ -742,9 +743,21 @@ void MarkupWalk::image(const pugi::xml_node& node, const Context& ctx) {
     close();
     builder_.begin(BlockKind::paragraph, 0, line(node));
     builder_.add_text(note, document::emphasis_none, document::Position::baseline, ctx.language);
+    attach_picture(node);
     builder_.end();
     block_fresh_ = true;
     space_pending_ = false;
+}
+
+void MarkupWalk::attach_picture(const pugi::xml_node& node) {
+    if (!pictures_ || local_name(node) != "img") return;
+    const std::string_view src = node.attribute("src").value();
+    if (src.empty()) return;
+    std::string why;
+    if (auto picture = pictures_(parts_[part_].name, src, why))
+        builder_.add_image(std::move(*picture));
+    else if (!why.empty())
+        warn(node, "picture " + std::string(src) + ": " + why + "; its description stays");
 }
 
 void MarkupWalk::math(const pugi::xml_node& node, const Context& ctx) {

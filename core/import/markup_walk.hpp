@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <map>
 #include <set>
 #include <string>
@@ -53,6 +54,13 @@ public:
     explicit MarkupWalk(std::vector<MarkupPart> parts);
     Result<document::Document> run();
 
+    // Reads a described <img>'s picture (ImportOptions::images): given the
+    // part it is in and its src, the picture, or nothing with `why` set when
+    // it cannot be kept (named in a warning; the description stays).
+    using PictureReader = std::function<std::optional<document::Image>(std::string_view part, std::string_view src,
+                                                                         std::string& why)>;
+    void keep_pictures(PictureReader read) { pictures_ = std::move(read); }
+
 private:
     struct Context {
         document::BlockKind kind = document::BlockKind::paragraph;
@@ -86,6 +94,8 @@ private:
 
     std::vector<MarkupPart> parts_;
     std::size_t part_ = 0;  // the part being walked
+    PictureReader pictures_;
+    void attach_picture(const pugi::xml_node& node);
     DocumentBuilder builder_;
     int current_line_ = 0;        // the source line of the element being walked
     bool space_pending_ = false;  // white space seen since the last text

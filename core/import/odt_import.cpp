@@ -28,6 +28,7 @@
 #include <memory>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@
 #include "import/importers.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "import/picture_part.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
 #include "common/try.hpp"
@@ -437,12 +439,44 @@ private:
         if (!child(f, "image") && !child(f, "object") && !child(f, "object-ole")) return;
         std::string description = child(f, "desc").child_value();
         if (description.find_first_not_of(" \t\r\n") == std::string::npos) description = child(f, "title").child_value();
-        if (description.find_first_not_of(" \t\r\n") == std::string::npos) {
+        const bool described = description.find_first_not_of(" \t\r\n") != std::string::npos;
+        auto image = picture_bytes(child(f, "image"));
+        if (described) out_.transcriber_note(collapse_white_space(description));
+        if (image)
+            out_.image(std::move(*image), described, where(f));
+        else if (!described)
             out_.picture_without_description(where(f));
-            return;
-        }
-        out_.transcriber_note(collapse_white_space(description));
     }
+
+    // A draw:image's picture (its xlink:href part of the package), when
+    // pictures are kept and the graphic stage can read its type (else a
+    // warning naming it). An image stored inline (office:binary-data) or
+    // outside the package is left to its description.
+    std::optional<document::Image> picture_bytes(const pugi::xml_node& image) {
+        if (!images_ || !image) return std::nullopt;
+        std::string href(attribute(image, "href"));
+        if (href.starts_with("./")) href.erase(0, 2);
+        if (href.empty() || !package_.contains(href)) {
+            if (!href.empty()) out_.warn("picture " + href + ": not in the package; its description stays");
+            return std::nullopt;
+        }
+        auto bytes = package_.read(href, max_import_bytes);
+        if (!bytes) {
+            out_.warn("picture " + href + ": " + bytes.error().message + "; its description stays");
+            return std::nullopt;
+        }
+        auto type = picture_media_type(*bytes, href);
+        if (type.empty()) {
+            out_.warn(unsupported_picture_warning(href));
+            return std::nullopt;
+        }
+        return document::Image{std::move(*bytes), std::move(type), href};
+    }
+
+public:
+    void keep_images() { images_ = true; }
+
+private:
 
     // A formula object (LibreOffice Math): its MathML as linear text, else
     // its StarMath annotation. The object is inline in a flat ODT, else its
@@ -530,6 +564,7 @@ private:
     const OdtListStyles& lists_;
     const XmlPackage& package_;
     RubyGuide ruby_;
+    bool images_ = false;
     std::string_view content_;  // content.xml, for the places warnings name
     std::vector<pugi::xml_node> boxes_;  // text boxes met in the paragraph being read
     int box_depth_ = 0;
@@ -540,7 +575,7 @@ private:
 
 }  // namespace
 
-Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
+Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby, bool images) {
     TACTUS_TRY(package, XmlPackage::open(bytes, "an OpenDocument text"));
     if (package.contains("mimetype")) {
         auto type = package.read("mimetype", 256);
@@ -565,6 +600,7 @@ Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby) {
     if (local_name(top) != "document-content" || !text)
         return fail(ErrorKind::input, "not an OpenDocument text: no <office:body>/<office:text>", "content.xml");
     OdtReader reader(styles, lists, package, ruby, content_xml.bytes);
+    if (images) reader.keep_images();
     reader.container(text);
     return reader.finish();
 }

@@ -88,7 +88,18 @@ void OfficeText::picture_without_description(std::string where) {
     if (undescribed_pictures_++ == 0) first_undescribed_ = std::move(where);
 }
 
+void OfficeText::image(document::Image image, bool described, std::string where) {
+    if (!builder_.is_open() && note_depth_ == 0 && table_depth_ == 0) builder_.begin(kind_, level_, 0);
+    if (!described && uncaptioned_pictures_++ == 0) first_uncaptioned_ = std::move(where);
+    builder_.add_image(std::move(image));
+}
+
 Result<document::Document> OfficeText::finish() {
+    if (uncaptioned_pictures_ > 0)
+        builder_.warn(std::to_string(uncaptioned_pictures_) +
+                      (uncaptioned_pictures_ == 1 ? " picture has" : " pictures have") +
+                      " no description (alt text): a graphic without a caption; the first is at " +
+                      first_uncaptioned_);
     if (undescribed_pictures_ > 0)
         builder_.warn(std::to_string(undescribed_pictures_) +
                       (undescribed_pictures_ == 1 ? " picture has" : " pictures have") +

@@ -64,6 +64,12 @@ public:
     // A picture with no description: nothing to put in braille, so it is
     // counted and named in one warning (`where`: the first one's place).
     void picture_without_description(std::string where);
+    // A picture's bytes (ImportOptions::images), kept on the paragraph it
+    // stands in, after its description. A picture without a description is
+    // kept too (one warning counts them); it then leaves no warning that it
+    // was left out.
+    void image(document::Image image, bool described, std::string where);
+    void warn(std::string line) { builder_.warn(std::move(line)); }
     void end_paragraph();
     // A print page break between paragraphs, or inside one (the paragraph goes
     // on after it as a block of the same kind).
@@ -106,6 +112,8 @@ private:
     int pending_breaks_ = 0;  // page breaks met inside a table or a note
     int undescribed_pictures_ = 0;
     std::string first_undescribed_;
+    int uncaptioned_pictures_ = 0;
+    std::string first_uncaptioned_;
 };
 
 }  // namespace tactus::import::detail

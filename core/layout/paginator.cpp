@@ -456,6 +456,30 @@ void Paginator::add(const translate::TranslatedBlock& b) {
     }
 }
 
+void Paginator::add_graphic(const PagedDocument& graphic) {
+    if (graphic.pages.empty()) return;
+    flush_table();
+    enter_box(0);
+    for (; trailing_separators_ > 0 && !body_.empty(); --trailing_separators_) body_.pop_back();
+    if (!body_.empty()) close_page();
+    const bool interpoint = o_.geometry.interpoint;
+    // An empty back, unnumbered as every back is, so the graphic starts a sheet.
+    if (interpoint && doc_.pages.size() % 2 == 1) close_page();
+    for (const auto& source : graphic.pages) {
+        Page page = source;
+        page.filler = false;  // a blank back among text pages is a page like any other
+        page.braille_number = o_.first_page_number + static_cast<int>(doc_.pages.size());
+        page.print_page = print_page_;
+        if (page.lines.empty() && page.graphic.empty())
+            page.lines.assign(static_cast<std::size_t>(o_.geometry.lines_per_page), document::BrailleLine{});
+        doc_.pages.push_back(std::move(page));
+    }
+    if (interpoint && doc_.pages.size() % 2 == 1) close_page();
+    doc_.warnings.insert(doc_.warnings.end(), graphic.warnings.begin(), graphic.warnings.end());
+    last_kind_.reset();
+    under_box_line_ = false;
+}
+
 PagedDocument Paginator::finish() && {
     flush_table();
     enter_box(0);

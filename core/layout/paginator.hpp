@@ -28,6 +28,12 @@ public:
     Paginator(LayoutOptions options, std::function<document::BrailleLine(int)> number_cells);
 
     void add(const translate::TranslatedBlock& block);
+    // A graphic's pages (graphic::lay_out_drawing: the graphic page, and a key
+    // page when labels found no room), each numbered on from the text: the
+    // page being filled is closed, the graphic starts on a sheet's front, and
+    // on interpoint paper the back of each of its sheets stays empty, so no
+    // dot struck from behind crushes the graphic's. Text goes on on the next sheet.
+    void add_graphic(const PagedDocument& graphic);
     // Closes the last page and returns the pages. An interpoint document with an
     // odd page count simply has no back on its last sheet.
     PagedDocument finish() &&;

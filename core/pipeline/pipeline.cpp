@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pipeline/pipeline.hpp"
 
+#include <algorithm>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -112,17 +113,23 @@ Result<layout::PagedDocument> lay_out_pages(const document::Document& document, 
     TACTUS_TRY(translator, translate::open_translator(options.tables, options.language_switch));
     // The second language's tables are compiled once, here, not in every worker.
     if (const auto* sw = translator.language_switch()) TACTUS_TRY_VOID(sw->prepare(document));
+    std::string first_book_warning;
     // Forked workers translate a big document, for the book layout and the plain one alike.
     const unsigned workers = options.translation_workers != 0
                                  ? options.translation_workers
                                  : TranslationWorkers::suggested_workers(document);
     if (options.book) {
+        if (options.graphic_pages && std::any_of(document.blocks.begin(), document.blocks.end(),
+                                                 [](const document::Block& b) { return !b.images.empty(); }))
+            first_book_warning = "pictures are not embossed as graphics in a book layout (--volumes): "
+                                 "their descriptions stay";
         TACTUS_TRY(book, lay_out_book(document, options.layout, *options.book, translator, workers));
         if (labels) *labels = page_labels(book);
         auto doc = std::move(book.pages);
         doc.metadata = document.metadata;
         std::vector<std::string> first = document.warnings;
         if (auto w = translate::check_script(document, options.tables)) first.push_back(*w);
+        if (!first_book_warning.empty()) first.push_back(first_book_warning);
         doc.warnings.insert(doc.warnings.begin(), first.begin(), first.end());
         return doc;
     }
@@ -151,6 +158,47 @@ Result<layout::PagedDocument> lay_out_pages(const document::Document& document, 
         // --reflow: the old pages' numbers and running heads out, paragraphs
         // joined and broken again only where braille may break.
         for (const auto& block : layout::reflow_braille(document)) paginator.add(block);
+        if (number_error) return std::unexpected(*number_error);
+        return finish(std::move(paginator), std::move(script_warnings), document);
+    }
+
+    const bool has_images = std::any_of(document.blocks.begin(), document.blocks.end(),
+                                        [](const document::Block& b) { return !b.images.empty(); });
+    if (options.graphic_pages && has_images) {
+        // Pictures as graphic pages: blocks translated here, one at a time, so
+        // the graphic stage's braille labels never meet a translation running
+        // on another thread. A table's pictures follow the whole table.
+        std::vector<const document::Image*> waiting;
+        auto place = [&] {
+            for (const auto* image : waiting) {
+                auto pages = options.graphic_pages(*image);
+                if (!pages) {
+                    script_warnings.push_back("picture " + image->name + ": " + pages.error().message +
+                                              "; its description stays");
+                    continue;
+                }
+                for (auto& w : pages->warnings) w = "picture " + image->name + ": " + w;
+                paginator.add_graphic(*pages);
+            }
+            waiting.clear();
+        };
+        std::size_t done = 0;
+        for (const auto& block : document.blocks) {
+            if (!document::is_table_kind(block.kind)) place();
+            // A paragraph that is only a picture without a description is its graphic alone.
+            const bool picture_only = !block.images.empty() && document::is_text_kind(block.kind) &&
+                                      block.kind != document::BlockKind::table_cell &&
+                                      block.text().find_first_not_of(" \t\r\n") == std::string::npos;
+            if (!picture_only) {
+                auto tb = translate::translate_block(block, translator, room(block));
+                if (!tb) return std::unexpected(located(tb.error(), document.source_name));
+                paginator.add(*tb);
+            }
+            for (const auto& image : block.images) waiting.push_back(&image);
+            if (!document::is_table_kind(block.kind)) place();
+            if (options.progress) options.progress(done += text_size(block), total);
+        }
+        place();
         if (number_error) return std::unexpected(*number_error);
         return finish(std::move(paginator), std::move(script_warnings), document);
     }

@@ -44,6 +44,14 @@ struct PipelineOptions {
     // Hears (code points done, code points in all) as translation goes on, from
     // the translating thread; for a terminal's progress line.
     std::function<void(std::size_t, std::size_t)> progress;
+    // Pictures kept by the import (document::Block::images) as graphic pages:
+    // this makes one picture's pages (the caller's graphic stage, which knows
+    // the machine), placed after the block that holds it on sheets of their
+    // own (layout::Paginator::add_graphic); the picture's description stays in
+    // the text before it as its caption. Empty: pictures stay descriptions.
+    // A picture it fails on stays its description, with a warning naming it.
+    // Called on the caller's thread, never while a block is being translated.
+    std::function<Result<layout::PagedDocument>(const document::Image&)> graphic_pages;
 };
 
 // `labels`, when given, receives the number each page shows (page_range.hpp:

@@ -4,7 +4,7 @@
 <context>
     <name>tactus::gui::EmbossChoice</name>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="128"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>Whole document: %n sheet</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="130"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>Volume %1 of %2: %n sheet</numerusform>
@@ -20,7 +20,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="129"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="135"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>Pages %1 to %2: %n sheet</numerusform>
@@ -40,9 +40,21 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::GraphicView</name>
+    <message numerus="yes">
+        <location filename="../../widgets/document_loader.cpp" line="139"/>
+        <source>%n dot(s).</source>
+        <comment>on all the graphic&apos;s pages</comment>
+        <translation>
+            <numerusform>%n dot.</numerusform>
+            <numerusform>%n dots.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="533"/>
+        <location filename="../../widgets/main_window.cpp" line="567"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -50,7 +62,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="538"/>
+        <location filename="../../widgets/main_window.cpp" line="577"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -58,7 +70,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="696"/>
+        <location filename="../../widgets/main_window.cpp" line="604"/>
+        <source>Graphic %1 | %n sheet(s)</source>
+        <translation>
+            <numerusform>Graphic %1 | %n sheet</numerusform>
+            <numerusform>Graphic %1 | %n sheets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="754"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>
@@ -107,7 +127,15 @@
 <context>
     <name>tactus::gui::SheetPreview</name>
     <message numerus="yes">
-        <location filename="../../widgets/sheet_preview.cpp" line="261"/>
+        <location filename="../../widgets/sheet_preview.cpp" line="251"/>
+        <source>Graphic: %n dot(s).</source>
+        <translation>
+            <numerusform>Graphic: %n dot.</numerusform>
+            <numerusform>Graphic: %n dots.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/sheet_preview.cpp" line="284"/>
         <source>; %n front and back dots too close</source>
         <translation>
             <numerusform>; %n front and back dot too close</numerusform>

@@ -95,6 +95,34 @@ T = {
     "Word document (*.docx)": "Word 文件 (*.docx)",
     "OpenDocument text (*.odt)": "OpenDocument 文字文件 (*.odt)",
     "PEF braille (*.pef)": "PEF 點字 (*.pef)",
+    "Documents (*.md *.markdown *.txt *.docx *.brf *.pef);;All files (*)": "文件 (*.md *.markdown *.txt *.docx *.brf *.pef);;所有檔案 (*)",
+    # Tactile graphics (觸覺圖形) opened in the app: what the graphic is, said and shown.
+    "Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)":
+        "文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)",
+    "Documents (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)":
+        "文件 (*.md *.markdown *.txt *.docx *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)",
+    "Graphic: %1.": "圖形：%1。",
+    "Labels: %1.": "標籤：%1。",
+    "%n dot(s).": "%n 點。",
+    "Graphic: %n dot(s).": "圖形：%n 點。",
+    "Graphic %1 | %n sheet(s)": "圖形 %1 | %n 張",
+    "Sheet %1 %2: %3": "第 %1 張%2：%3",
+    "%1. %2": "%1。%2",
+    "Warning: %1": "警告：%1",
+    "Cannot lay out %1 again: %2": "無法重新排版 %1：%2",
+    "cancelled": "已取消",
+    "Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)":
+        "無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）",
+    "Tactile graphics": "觸覺圖形",
+    # A drawing open on its own: the print pane holds what it is, not a document to save.
+    "Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save":
+        "無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存",
+    "What the tactile graphic is: its title, description, labels and dots": "這個觸覺圖形的內容：標題、描述、標籤與點數",
+    "Dot spacing along a solid line": "實線的點距",
+    "Dot spacing along a dotted line": "點線的點距",
+    "Gap between dashes": "虛線段之間的間隔",
+    "Texture row spacing": "紋理的行距",
+    "Dot spacing along a texture row": "紋理行上的點距",
     "Opening %1": "正在開啟 %1", "Cancel": "取消", "%1 percent": "百分之 %1",
     "Cancelled; the document is unchanged": "已取消，文件未變更", "Cannot open %1: %2": "無法開啟 %1：%2",
     "the document": "文件", "Opened %1: %n sheet(s)": "已開啟 %1：%n 張",

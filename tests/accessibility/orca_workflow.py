@@ -41,6 +41,8 @@ works the app by keyboard only, asserting after every key what Orca says:
           preview says "Volume 2 of 2, page t1"; in the printer panel the
           braille page range is named, and typing 3-10 says "Pages 3 to 10:
           4 sheets".
+  graphic  an SVG with a title and description opened: Orca says both on the
+          preview (with its dots) and in the print pane.
   controls  combo boxes say their value on focus, on Up in the closed box and
           when their list opens (once said "Table: combo box." and "List with
           201 items." only, and "Tactus frame." at each list); Space in the
@@ -499,6 +501,25 @@ def scenario_profile_error(tactus, sample, work):
     return 0
 
 
+def scenario_graphic(tactus, sample, work):
+    """An SVG with a <title> and <desc> opened from the command line: its
+    title and description heard on opening, in the preview and in the print pane."""
+    root = os.path.dirname(os.path.dirname(os.path.dirname(sample)))  # resources/samples/welcome.md
+    svg = os.path.join(root, "tests", "data", "graphics", "shapes.svg")
+    title = r"Graphic: Test shapes"
+    desc = r"A circle, a labelled triangle, a dashed line and a bar chart"
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", svg])
+        s.step("Ctrl+3 says what the graphic is", keys=["ctrl+3"],
+               expect=[r"Interpoint preview", title, desc, r"\d+ dots"])
+        s.step("Ctrl+1 reads it in the print pane", keys=["ctrl+1", "ctrl+Home"],
+               expect=[title, r"What the tactile graphic is"], forbid=[r"text file's lines"])
+        print(s.summary())
+    return 0
+
+
 def scenario_controls(tactus, sample, work):
     s = OrcaSession("tactus", work)
     table = r"English \u2014 Unified English contracted braille"
@@ -581,6 +602,7 @@ def scenario_book(tactus, sample, work):
 
 
 SCENARIOS = {"book": scenario_book, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
+SCENARIOS = {"graphic": scenario_graphic, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
              "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall}
 
 

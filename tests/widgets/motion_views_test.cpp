@@ -5,6 +5,7 @@
 // says, the vibration table agrees with the report, bad profile values are named.
 #include <QDoubleSpinBox>
 #include <QLineEdit>
+#include <QTemporaryDir>
 #include <QTableWidget>
 #include <QtTest>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "motion_view.hpp"
 #include "plan/geometry.hpp"
 #include "preview_panel.hpp"
+#include "profile/profile_json.hpp"
 #include "profile_editor.hpp"
 #include "sheet_geometry.hpp"
 #include "vibration_view.hpp"
@@ -148,6 +150,50 @@ private Q_SLOTS:
         const auto plan = w.plan_now();
         QCOMPARE(plan->profile.carriage.v_max_mm_s, 200.0);
         QCOMPARE(plan->profile.geometry.back_offset_x_mm, 0.5);
+    }
+
+    // The graphic section's spacings: spin boxes named with their unit, held
+    // to core's bounds (which follow the dot pitch and each other), saved and
+    // loaded back.
+    void graphic_spacings_are_checked_saved_and_loaded() {
+        ProfileEditor editor;
+        const QStringList names{QStringLiteral("graphic.line_dot_spacing_mm"), QStringLiteral("graphic.dotted_dot_spacing_mm"),
+                                QStringLiteral("graphic.dash_gap_mm"), QStringLiteral("graphic.texture_pitch_mm"),
+                                QStringLiteral("graphic.texture_dot_spacing_mm")};
+        for (const auto& n : names) {
+            auto* box = editor.field(n);
+            QVERIFY2(box, qPrintable(n));
+            QVERIFY2(box->accessibleName().endsWith(QStringLiteral(" in mm")), qPrintable(box->accessibleName()));
+            QVERIFY(box->accessibleDescription().contains(n));
+        }
+        auto* line = editor.field(names[0]);
+        QCOMPARE(line->value(), profile::default_profile().graphic.line_dot_spacing_mm);
+        // Half a millimetre is closer than 0.6 dot pitches (1.5 mm at 2.5 mm): refused, the last valid kept.
+        line->setValue(0.5);
+        QVERIFY2(editor.error().contains(QStringLiteral("Dot spacing along a solid line in mm")), qPrintable(editor.error()));
+        QVERIFY(line->accessibleDescription().startsWith(QStringLiteral("Invalid: ")));
+        QCOMPARE(editor.profile().graphic.line_dot_spacing_mm, 1.5);
+        // A dotted line must stay 1.5 line spacings apart: 2.5 mm solid needs 3.75 mm dotted.
+        line->setValue(2.5);
+        QVERIFY2(editor.error().contains(QStringLiteral("Dot spacing along a dotted line")), qPrintable(editor.error()));
+        editor.field(names[1])->setValue(4.0);
+        editor.field(names[2])->setValue(6.0);
+        editor.field(names[3])->setValue(7.5);
+        editor.field(names[4])->setValue(3.25);
+        QVERIFY2(editor.error().isEmpty(), qPrintable(editor.error()));
+        const auto want = editor.profile().graphic;
+        QCOMPARE(want.line_dot_spacing_mm, 2.5);
+        QCOMPARE(want.texture_dot_spacing_mm, 3.25);
+        QTemporaryDir dir;
+        const auto path = dir.filePath(QStringLiteral("graphic.json"));
+        QVERIFY(editor.save(path));
+        const auto saved = profile::load_profile(path.toStdString());
+        QVERIFY(saved);
+        QCOMPARE(saved->graphic, want);
+        ProfileEditor other;
+        QVERIFY(other.load(path));
+        QCOMPARE(other.profile().graphic, want);
+        QCOMPARE(other.field(names[3])->value(), 7.5);
     }
 };
 
