@@ -601,8 +601,7 @@ def scenario_book(tactus, sample, work):
     return 0
 
 
-SCENARIOS = {"book": scenario_book, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
-SCENARIOS = {"graphic": scenario_graphic, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
+SCENARIOS = {"book": scenario_book, "graphic": scenario_graphic, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
              "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall}
 
 
