@@ -57,11 +57,7 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
         said_range_ = range_->text();
         Q_EMIT said(summary());
     });
-    connect(range_, &QLineEdit::textEdited, this, [this] {
-        // Typing a range chooses the range.
-        if (scope_->currentIndex() != scope_->count() - 1) scope_->setCurrentIndex(scope_->count() - 1);
-        update_summary();
-    });
+    connect(range_, &QLineEdit::textEdited, this, &EmbossChoice::update_summary);
     update_choices();
 }
 
@@ -136,6 +132,12 @@ void EmbossChoice::update_summary() {
         }
     }
     if (summary_->text() != text) summary_->setText(text);
+    // The range is typed only once "Page range" is chosen: with it in the Tab
+    // order always, Tab from the choice landed in an entry Orca did not speak
+    // (Qt sends the entry's caret event before its focus event, and Orca 43
+    // then takes the focus as already there), so the printer panel's next
+    // controls went unheard to a user who only passed through.
+    range_->setEnabled(index == scope_->count() - 1);
     Q_EMIT changed();
 }
 

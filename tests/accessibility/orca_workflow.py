@@ -578,21 +578,22 @@ def scenario_book(tactus, sample, work):
     with s:
         s.start()
         s.launch([tactus, "--no-recovery", BOOK])
-        # The print text has the focus once the book is open (the progress
-        # dialog may eat a key pressed before): said then, or at Ctrl+1.
-        try:
-            s.wait_phrase(r"Print text", (0, 0, 0, 0, 0), 60)
-        except StepFailed:
-            s.step("Ctrl+1 speaks the print text", keys=["ctrl+1"], expect=[r"Print text"])
+        # The book is open when the app says so ("Opened ...: N sheets"); the
+        # focus then comes back to the print text from the progress dialog,
+        # which Orca may say or not depending on when the dialog closed, so
+        # the scenario waits for the app's own word, not for Orca's.
+        s.wait_phrase(r"Opened jekyll-and-hyde\.epub", (0, 0, 0, 0, 0), 120)
         s.settle(s.mark())
         s.step("Ctrl+3 speaks the preview", keys=["ctrl+3"], expect=[r"Interpoint preview"])
         s.step("Ctrl+Alt+Page Down goes to volume 2", keys=["ctrl+alt+Next"],
                expect=[r"[Vv]olume 2 of 2, page t1"], once=[r"[Vv]olume 2 of 2, page t1"])
         s.step("Ctrl+7 goes to the printer", keys=["ctrl+7"], expect=[r"Embosser"])
         s.step("Alt+B goes to what to emboss", keys=["alt+b"], expect=[r"Emboss"])
+        s.step("End chooses a page range", keys=["End"], expect=[r"Page range"])
         # AT-SPI gets the focus event for "Braille pages to emboss" here, but
-        # Orca 43 says nothing after Alt+B then Tab (a known gap, docs/gui.md);
-        # the range is heard when Enter says it.
+        # Qt sends the entry's caret event first and Orca 43 takes the focus as
+        # already there, so it says nothing (a known gap, docs/gui.md); the
+        # range is heard when Enter says it.
         s.step("Tab goes to the page range", keys=["Tab"], allow_silent=True, quiet=0.8)
         s.step("typing a range", type_text="3-10", allow_silent=True, quiet=0.8)
         s.step("Enter says the range with its sheets", keys=["Return"],

@@ -125,12 +125,19 @@ private Q_SLOTS:
         for (auto* c : choice->findChildren<QWidget*>())
             if (c->focusPolicy() != Qt::NoFocus && !qobject_cast<QLabel*>(c))
                 QVERIFY2(!c->accessibleName().isEmpty(), qPrintable(c->objectName()));
-        // Tab goes from the choice to the range, as Orca's user does.
+        // The range is passed over by Tab until "Page range" is chosen (End
+        // in the choice, as Orca's user does); then Tab goes to it.
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         w.show_panel(QStringLiteral("printer"));
         auto* scope = choice->findChild<QComboBox*>(QStringLiteral("embossScope"));
+        auto* pages_field = choice->findChild<QLineEdit*>(QStringLiteral("embossPages"));
         scope->setFocus(Qt::ShortcutFocusReason);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QVERIFY(QApplication::focusWidget() != pages_field);
+        scope->setFocus(Qt::ShortcutFocusReason);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_End);
+        QCOMPARE(scope->currentIndex(), scope->count() - 1);
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
         QVERIFY2(QApplication::focusWidget() == choice->findChild<QLineEdit*>(QStringLiteral("embossPages")),
                  qPrintable(QApplication::focusWidget() ? QApplication::focusWidget()->objectName() + QLatin1Char(' ') +
