@@ -140,7 +140,7 @@ int run_backend_job(const BackendJob& job, const BackendTuning& tuning,
 
     // --- into the spool, once
     const auto db = cups_spool_path();
-    auto opened = spool::Spool::open(db, {.create = true});
+    auto opened = open_cups_spool();
     if (!opened) {
         say("ERROR: cannot open the Tactus spool: " + opened.error().to_string());
         return backend_stop;

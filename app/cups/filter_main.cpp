@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     // The embosser's profile: the layout is the machine's, as for `emboss --queue`.
     const auto device = cups::device_from_uri(env("DEVICE_URI"));
     if (!device) return fail_job("the queue's device URI is wrong: " + device.error().to_string());
-    auto s = spool::Spool::open(cups::cups_spool_path(), {.create = true});
+    auto s = cups::open_cups_spool();
     if (!s) return fail_job("cannot open the Tactus spool: " + s.error().to_string());
     const auto printer = cups::bind_printer(*s, *device, env("PRINTER"));
     if (!printer) return fail_job(printer.error().to_string());

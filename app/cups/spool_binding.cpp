@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "spool_binding.hpp"
 
+#include <chrono>
+#include <thread>
+
 #include <cstdlib>
 
 #include "profile/profile.hpp"
@@ -30,6 +33,16 @@ Result<std::optional<spool::PrinterRecord>> find(spool::Spool& s, std::string_vi
 std::filesystem::path cups_spool_path() {
     if (const char* v = std::getenv("TACTUS_SPOOL_DB"); v && *v) return v;
     return kSystemSpool;
+}
+
+Result<spool::Spool> open_cups_spool() {
+    const auto path = cups_spool_path();
+    auto opened = spool::Spool::open(path, {.create = true});
+    for (int attempt = 1; !opened && attempt < 20; ++attempt) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        opened = spool::Spool::open(path, {.create = true});
+    }
+    return opened;
 }
 
 Result<spool::PrinterRecord> bind_printer(spool::Spool& s, std::string_view device, std::string_view queue_name) {

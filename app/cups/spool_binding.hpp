@@ -22,6 +22,14 @@ inline constexpr const char* kSystemSpool = "/var/spool/tactus/spool.db";
 
 std::filesystem::path cups_spool_path();
 
+// Opens (creating) the spool the CUPS filter and backend share. A failed open
+// is tried again for up to a second before it counts: the filter and the
+// backend of a job start together, and another user's process (root's
+// `tactus-cli queue list`, say) may be making the WAL's shared-memory file at
+// that moment, which SQLite then briefly refuses as "unable to open database
+// file"; the backend's failure would stop the whole CUPS queue.
+Result<spool::Spool> open_cups_spool();
+
 // The spool printer on `device`'s cable (same kind and path; line settings
 // such as baud are the spool's). None yet: one is added, named after the CUPS
 // queue, with the default profile (`tactus-cli queue printer set NAME
