@@ -81,12 +81,8 @@ public:
 private:
     // ---- Blocks ----
 
-    // The next block after `i` the text shows (notes are written where they
-    // are referred to).
     [[nodiscard]] const Block* next_shown(std::size_t i, std::size_t end) const {
-        for (++i; i < end; ++i)
-            if (doc_.blocks[i].kind != BlockKind::note) return &doc_.blocks[i];
-        return nullptr;
+        return office::next_shown(doc_.blocks, i, end);
     }
 
     void blocks(std::string& out, std::size_t begin, std::size_t end, bool in_box) {

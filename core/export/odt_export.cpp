@@ -84,9 +84,7 @@ public:
 
 private:
     [[nodiscard]] const Block* next_shown(std::size_t i, std::size_t end) const {
-        for (++i; i < end; ++i)
-            if (doc_.blocks[i].kind != BlockKind::note) return &doc_.blocks[i];
-        return nullptr;
+        return office::next_shown(doc_.blocks, i, end);
     }
 
     static std::string break_paragraph() { return "<text:p text:style-name=\"P_break\"/>"; }

@@ -113,6 +113,12 @@ std::string_view placeholder_png() {
     return {png, sizeof png - 1};
 }
 
+const document::Block* next_shown(const std::vector<document::Block>& blocks, std::size_t i, std::size_t end) {
+    for (++i; i < end; ++i)
+        if (blocks[i].kind != document::BlockKind::note) return &blocks[i];
+    return nullptr;
+}
+
 std::size_t table_end(const std::vector<document::Block>& blocks, std::size_t begin, std::size_t end) {
     std::size_t i = begin;
     while (i < end && document::is_table_kind(blocks[i].kind)) ++i;

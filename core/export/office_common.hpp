@@ -69,6 +69,10 @@ private:
 // and not the picture.
 std::string_view placeholder_png();
 
+// The next block after `i` (before `end`) that the text shows: notes are
+// written where they are referred to, not where they stand.
+const document::Block* next_shown(const std::vector<document::Block>& blocks, std::size_t i, std::size_t end);
+
 // The end of the run of table blocks starting at `begin`.
 std::size_t table_end(const std::vector<document::Block>& blocks, std::size_t begin, std::size_t end);
 
