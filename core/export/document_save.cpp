@@ -25,7 +25,9 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
     const bool text = format == DocumentFormat::text;
     for (std::size_t i = 0; i < document.blocks.size(); ++i) {
         const auto& b = document.blocks[i];
-        if (b.box != 0) losses.add("a box is written as the blocks in it, without the box", i);
+        if (b.kind == document::BlockKind::table_cell && b.span > 1)
+            losses.add("a merged cell is written as its columns", i);
+        if (text && b.box != 0) losses.add("a box is written as the blocks in it, without the box", i);
         if (text) {
             switch (b.kind) {
                 case document::BlockKind::heading: losses.add("a heading is written as a plain line", i); break;
@@ -39,9 +41,10 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
         for (const auto& s : b.spans) {
             if (text && (s.emphasis & (document::emphasis_bold | document::emphasis_italic)))
                 losses.add("bold and italic are left out", i);
+            if (s.transcriber_note) losses.add("an image's description is written as plain text", i);
+            if (!text) continue;  // Markdown keeps the rest (document/markdown_html.hpp)
             if (s.emphasis & document::emphasis_underline) losses.add("underline is left out", i);
             if (s.position != document::Position::baseline) losses.add("raised and lowered text is written on the line", i);
-            if (s.transcriber_note) losses.add("an image's description is written as plain text", i);
             if (!s.language.empty()) losses.add("a passage's language is left out", i);
         }
     }
