@@ -394,7 +394,6 @@ private Q_SLOTS:
             if (lines[i] == "<!-- box -->" && box < 0) box = static_cast<int>(i);
         }
         QVERIFY(box >= 0);
-        QCOMPARE(structured::style_of(block(doc, box)), structured::Style::box_start);
         QCOMPARE(e->structure_text(box), QStringLiteral("Box"));
         const int area = find(QStringLiteral("Area m2 and mass m2."));
         QVERIFY(area >= 0);
