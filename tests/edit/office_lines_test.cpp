@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <random>
 #include <sstream>
 
 #include "../common/edit_fixtures.hpp"
@@ -16,6 +17,7 @@
 #include "edit/live_layout.hpp"
 #include "export/office_export.hpp"
 #include "import/import.hpp"
+#include "pipeline/pipeline.hpp"
 
 using namespace tactus;
 
@@ -256,5 +258,54 @@ TEST(OfficeLines, UnderlineRaisedTextLanguagesAndBoxesAreLines) {
                 for (auto& s : b.spans) s.language.clear();
         EXPECT_EQ(office_lines::dump(office_lines::without_lines(reopened->blocks)),
                   office_lines::dump(office_lines::without_lines(want)));
+    }
+}
+
+// The live layout draws a box's lines as the CLI does (the pages of the
+// document the lines stand for), and keeps doing so through edits that add,
+// move and take away box lines and type inside a box.
+TEST(OfficeLines, BoxesLayOutLiveAsTheCliAndThroughEdits) {
+    std::vector<std::string> lines;
+    for (int i = 0; i < 60; ++i) {
+        if (i % 7 == 2) lines.emplace_back("<!-- box -->");
+        lines.push_back("Paragraph " + std::to_string(i) + " with a few words to fill a braille line or two of text.");
+        if (i % 7 == 4) lines.emplace_back("<!-- /box -->");
+        if (i % 14 == 4) lines.emplace_back("<!-- box -->");  // a box right after a box
+        if (i % 14 == 5) lines.emplace_back("<!-- /box -->");
+    }
+    layout::LayoutOptions options;
+    auto live = test::live_layout(lines, "en-ueb-g1.ctb", options);
+    const auto same_as_cli = [&options](const edit::LiveLayout& l) {
+        pipeline::PipelineOptions p;
+        p.tables = "en-ueb-g1.ctb";
+        p.layout = options;
+        auto expected = pipeline::lay_out(l.document(), p);
+        if (!expected) return testing::AssertionFailure() << expected.error().to_string();
+        if (!(l.paged().pages == expected->pages)) return testing::AssertionFailure() << "pages differ";
+        return testing::AssertionSuccess();
+    };
+    ASSERT_TRUE(same_as_cli(live));
+    const auto boxes = [](const document::Document& d) {
+        int n = 0;
+        for (const auto& b : d.blocks) n = std::max(n, b.box);
+        return n;
+    };
+    EXPECT_EQ(boxes(live.document()), 13);
+    std::mt19937 rng(7);
+    for (int step = 0; step < 60; ++step) {
+        const auto at = std::uniform_int_distribution<std::size_t>(0, lines.size() - 1)(rng);
+        std::vector<std::string> replacement;
+        switch (step % 4) {
+            case 0: replacement = {"<!-- box -->", lines[at]}; break;
+            case 1: replacement = {lines[at], "<!-- /box -->"}; break;
+            case 2: replacement = {lines[at] + " typed"}; break;
+            case 3: replacement = {}; break;
+        }
+        live.replace(at, 1, replacement);
+        lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(at));
+        lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(at), replacement.begin(), replacement.end());
+        const auto fresh = test::live_layout(lines, "en-ueb-g1.ctb", options);
+        ASSERT_TRUE(live.paged().pages == fresh.paged().pages) << "step " << step << " at line " << at;
+        ASSERT_TRUE(same_as_cli(live)) << "step " << step;
     }
 }
