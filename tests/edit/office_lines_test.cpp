@@ -67,7 +67,8 @@ bool marked_item(const document::Block& b) {
 // - an image's description is plain text ("an image's description is written
 //   as plain text", exporter::save_document);
 // - a list item whose text starts with neither a bullet nor a number ("IV.
-//   second", a Roman numeral) gets the bullet: every Markdown item has a mark;
+//   second", a Roman numeral) gets the bullet: every Markdown item has a mark
+//   ("a list item without a bullet or number is written with a bullet");
 // - a merged table cell is its columns, the first with the text ("a merged
 //   cell is written as its columns"), and a row has as many cells as its
 //   table's widest (empty ones at a row's end are left out here, on both sides);

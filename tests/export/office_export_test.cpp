@@ -424,7 +424,8 @@ TEST(OfficeExport, MarkdownAndTextNameWhatTheyLeaveOut) {
     ASSERT_TRUE(md);
     std::string said;
     for (const auto& w : *md) said += w + "\n";
-    for (const auto* what : {"a merged cell is written as its columns", "an image's description"})
+    for (const auto* what : {"a merged cell is written as its columns", "an image's description",
+                             "a list item without a bullet or number is written with a bullet (1 time; the first at block 18)"})
         EXPECT_NE(said.find(what), std::string::npos) << what << " in\n" << said;
     // Markdown keeps headings, boxes, underline and raised text.
     for (const auto* kept : {"heading", "box", "underline", "raised"})
