@@ -507,11 +507,16 @@ void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, 
     progress_->setObjectName(QStringLiteral("progress"));
     progress_->setAccessibleName(what);
     progress_->setWindowModality(Qt::WindowModal);
-    progress_->setMinimumDuration(300);
+    progress_->setMinimumDuration(progress_delay_);
     connect(progress_, &QProgressDialog::canceled, watcher, [watcher] { watcher->cancel(); });
-    connect(watcher, &QFutureWatcher<LoadResultPtr>::progressValueChanged, progress_, [this](int v) {
-        progress_->setValue(v);
-        if (v % 25 == 0) announcer_->announce(tr("%1 percent").arg(v));
+    connect(watcher, &QFutureWatcher<LoadResultPtr>::progressValueChanged, progress_, [this, watcher](int v) {
+        // Said before the bar moves: setValue() on a shown modal dialog runs
+        // the event loop, where the job's end may be handled ("Opened ...");
+        // a step said after it replaced that message before the screen reader
+        // read it, and the user heard "100 percent" and never that the
+        // document was open. The start and the end have their own messages.
+        if (v % 25 == 0 && v > 0 && v < 100) announcer_->announce(tr("%1 percent").arg(v));
+        if (busy_ == watcher && progress_) progress_->setValue(v);
     });
     connect(watcher, &QFutureWatcher<LoadResultPtr>::finished, this, [this, watcher, replace_text] {
         LoadResultPtr r;
