@@ -31,6 +31,7 @@ class VibrationView;
 class FindReplaceDialog;
 class PreviewPanel;
 class BookView;
+class BookProgress;
 class TablePicker;
 
 class MainWindow : public QMainWindow {
@@ -156,6 +157,7 @@ private:
     EditorWidget* editor_ = nullptr;
     PreviewPanel* preview_ = nullptr;
     BookView* book_ = nullptr;
+    BookProgress* book_progress_ = nullptr;
     TablePicker* tables_ = nullptr;
     Announcer* announcer_ = nullptr;
     FindReplaceDialog* find_ = nullptr;
@@ -175,7 +177,10 @@ private:
     QPointer<QFutureWatcher<LoadResultPtr>> busy_;
     QProgressDialog* progress_ = nullptr;
     std::shared_ptr<FocusReturn> busy_return_;
-    int progress_delay_ = 300;  // where the focus goes when the background work ends
+    int progress_delay_ = 300;
+    // Messages at the end of background work are said this long after it (report()).
+    static constexpr int kWordAfterBurstMs = 600;
+    bool word_after_burst_ = false;  // where the focus goes when the background work ends
 
     QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
     MotionView* motion_ = nullptr;

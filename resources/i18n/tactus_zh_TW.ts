@@ -244,14 +244,72 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::BookProgress</name>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="31"/>
+        <source>Laying out the book</source>
+        <translation>正在排版書籍</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="35"/>
+        <location filename="../../widgets/book_progress.cpp" line="36"/>
+        <source>Cancel book layout</source>
+        <translation>取消書籍排版</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="44"/>
+        <source>Book layout cancelled; the preview shows the pages laid out before</source>
+        <translation>已取消書籍排版；預覽顯示先前排好的頁面</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="72"/>
+        <source>Laying out the book: %1 percent</source>
+        <translation>正在排版書籍：百分之 %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/book_progress.cpp" line="88"/>
+        <source>%n volume(s)</source>
+        <translation>
+            <numerusform>%n 冊</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/book_progress.cpp" line="89"/>
+        <source>%n sheet(s)</source>
+        <translation>
+            <numerusform>%n 張</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="93"/>
+        <source>Opened %1: %2</source>
+        <translation>已開啟 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="95"/>
+        <source>Book: %1</source>
+        <translation>書籍：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="96"/>
+        <source>The book could not be laid out: %1</source>
+        <translation>無法排版書籍：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_progress.cpp" line="97"/>
+        <source>Book layout cancelled</source>
+        <translation>已取消書籍排版</translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::BookView</name>
     <message>
-        <location filename="../../widgets/book_view.cpp" line="81"/>
+        <location filename="../../widgets/book_view.cpp" line="205"/>
         <source>Volume %1 of %2, blank page</source>
         <translation>第 %1 冊，共 %2 冊，空白頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/book_view.cpp" line="82"/>
+        <location filename="../../widgets/book_view.cpp" line="206"/>
         <source>Volume %1 of %2, page %3</source>
         <translation>第 %1 冊，共 %2 冊，第 %3 頁</translation>
     </message>
@@ -376,41 +434,41 @@
         <translation>要列印的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="82"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="78"/>
         <source>Whole document</source>
         <translation>整份文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="85"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="81"/>
         <source>Volume %1 of %2</source>
         <translation>第 %1 冊，共 %2 冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="86"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="82"/>
         <source>Page range</source>
         <translation>頁碼範圍</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="118"/>
         <source>No pages chosen: %1</source>
         <translation>未選擇任何頁：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="128"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>整份文件：%n 張</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="130"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="126"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>第 %1 冊，共 %2 冊：%n 張</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="135"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="131"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>第 %1 頁到第 %2 頁：%n 張</numerusform>
@@ -521,857 +579,857 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="72"/>
-        <location filename="../../widgets/main_window.cpp" line="639"/>
-        <location filename="../../widgets/main_window.cpp" line="808"/>
-        <location filename="../../widgets/main_window.cpp" line="862"/>
-        <location filename="../../widgets/main_window.cpp" line="888"/>
-        <location filename="../../widgets/main_window.cpp" line="905"/>
+        <location filename="../../widgets/main_window.cpp" line="73"/>
+        <location filename="../../widgets/main_window.cpp" line="672"/>
+        <location filename="../../widgets/main_window.cpp" line="841"/>
+        <location filename="../../widgets/main_window.cpp" line="895"/>
+        <location filename="../../widgets/main_window.cpp" line="921"/>
+        <location filename="../../widgets/main_window.cpp" line="938"/>
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="82"/>
+        <location filename="../../widgets/main_window.cpp" line="83"/>
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="89"/>
+        <location filename="../../widgets/main_window.cpp" line="90"/>
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="90"/>
+        <location filename="../../widgets/main_window.cpp" line="91"/>
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="91"/>
+        <location filename="../../widgets/main_window.cpp" line="92"/>
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="96"/>
+        <location filename="../../widgets/main_window.cpp" line="97"/>
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="128"/>
+        <location filename="../../widgets/main_window.cpp" line="129"/>
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="130"/>
+        <location filename="../../widgets/main_window.cpp" line="131"/>
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="131"/>
+        <location filename="../../widgets/main_window.cpp" line="132"/>
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="138"/>
+        <location filename="../../widgets/main_window.cpp" line="139"/>
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="143"/>
+        <location filename="../../widgets/main_window.cpp" line="144"/>
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="225"/>
+        <location filename="../../widgets/main_window.cpp" line="233"/>
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="228"/>
+        <location filename="../../widgets/main_window.cpp" line="236"/>
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="229"/>
+        <location filename="../../widgets/main_window.cpp" line="237"/>
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230"/>
+        <location filename="../../widgets/main_window.cpp" line="238"/>
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="230"/>
+        <location filename="../../widgets/main_window.cpp" line="238"/>
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="231"/>
+        <location filename="../../widgets/main_window.cpp" line="239"/>
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="231"/>
+        <location filename="../../widgets/main_window.cpp" line="239"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233"/>
+        <location filename="../../widgets/main_window.cpp" line="241"/>
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233"/>
+        <location filename="../../widgets/main_window.cpp" line="241"/>
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="235"/>
-        <location filename="../../widgets/main_window.cpp" line="912"/>
+        <location filename="../../widgets/main_window.cpp" line="243"/>
+        <location filename="../../widgets/main_window.cpp" line="945"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="235"/>
+        <location filename="../../widgets/main_window.cpp" line="243"/>
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236"/>
+        <location filename="../../widgets/main_window.cpp" line="244"/>
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="239"/>
+        <location filename="../../widgets/main_window.cpp" line="247"/>
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="244"/>
+        <location filename="../../widgets/main_window.cpp" line="252"/>
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246"/>
+        <location filename="../../widgets/main_window.cpp" line="254"/>
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="248"/>
+        <location filename="../../widgets/main_window.cpp" line="256"/>
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="254"/>
+        <location filename="../../widgets/main_window.cpp" line="262"/>
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="256"/>
+        <location filename="../../widgets/main_window.cpp" line="264"/>
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="256"/>
+        <location filename="../../widgets/main_window.cpp" line="264"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258"/>
+        <location filename="../../widgets/main_window.cpp" line="266"/>
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="258"/>
+        <location filename="../../widgets/main_window.cpp" line="266"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="260"/>
+        <location filename="../../widgets/main_window.cpp" line="268"/>
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="260"/>
+        <location filename="../../widgets/main_window.cpp" line="268"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265"/>
+        <location filename="../../widgets/main_window.cpp" line="273"/>
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="265"/>
+        <location filename="../../widgets/main_window.cpp" line="273"/>
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="269"/>
+        <location filename="../../widgets/main_window.cpp" line="277"/>
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="269"/>
+        <location filename="../../widgets/main_window.cpp" line="277"/>
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273"/>
+        <location filename="../../widgets/main_window.cpp" line="281"/>
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273"/>
+        <location filename="../../widgets/main_window.cpp" line="281"/>
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="277"/>
+        <location filename="../../widgets/main_window.cpp" line="285"/>
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="277"/>
+        <location filename="../../widgets/main_window.cpp" line="285"/>
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="281"/>
+        <location filename="../../widgets/main_window.cpp" line="289"/>
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="281"/>
+        <location filename="../../widgets/main_window.cpp" line="289"/>
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="286"/>
+        <location filename="../../widgets/main_window.cpp" line="294"/>
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="286"/>
+        <location filename="../../widgets/main_window.cpp" line="294"/>
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="287"/>
+        <location filename="../../widgets/main_window.cpp" line="295"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="287"/>
+        <location filename="../../widgets/main_window.cpp" line="295"/>
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289"/>
+        <location filename="../../widgets/main_window.cpp" line="297"/>
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289"/>
+        <location filename="../../widgets/main_window.cpp" line="297"/>
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="292"/>
+        <location filename="../../widgets/main_window.cpp" line="300"/>
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="310"/>
+        <location filename="../../widgets/main_window.cpp" line="318"/>
         <source>&amp;Body text</source>
         <translation>內文(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="310"/>
+        <location filename="../../widgets/main_window.cpp" line="318"/>
         <source>Ctrl+Alt+0</source>
         <translation>Ctrl+Alt+0</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="313"/>
+        <location filename="../../widgets/main_window.cpp" line="321"/>
         <source>Heading &amp;%1</source>
         <translation>標題 %1(&amp;%1)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="313"/>
+        <location filename="../../widgets/main_window.cpp" line="321"/>
         <source>Ctrl+Alt+%1</source>
         <translation>Ctrl+Alt+%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="315"/>
+        <location filename="../../widgets/main_window.cpp" line="323"/>
         <source>B&amp;ulleted list</source>
         <translation>項目符號清單(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="315"/>
+        <location filename="../../widgets/main_window.cpp" line="323"/>
         <source>Ctrl+Alt+L</source>
         <translation>Ctrl+Alt+L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="317"/>
+        <location filename="../../widgets/main_window.cpp" line="325"/>
         <source>&amp;Numbered list</source>
         <translation>編號清單(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="317"/>
+        <location filename="../../widgets/main_window.cpp" line="325"/>
         <source>Ctrl+Alt+N</source>
         <translation>Ctrl+Alt+N</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="319"/>
+        <location filename="../../widgets/main_window.cpp" line="327"/>
         <source>&amp;Quotation</source>
         <translation>引文(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="319"/>
+        <location filename="../../widgets/main_window.cpp" line="327"/>
         <source>Ctrl+Alt+Q</source>
         <translation>Ctrl+Alt+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="321"/>
+        <location filename="../../widgets/main_window.cpp" line="329"/>
         <source>&amp;Page break</source>
         <translation>分頁(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="321"/>
+        <location filename="../../widgets/main_window.cpp" line="329"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="322"/>
+        <location filename="../../widgets/main_window.cpp" line="330"/>
         <source>Bol&amp;d</source>
         <translation>粗體(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="322"/>
+        <location filename="../../widgets/main_window.cpp" line="330"/>
         <source>Ctrl+B</source>
         <translation>Ctrl+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="324"/>
+        <location filename="../../widgets/main_window.cpp" line="332"/>
         <source>&amp;Italic</source>
         <translation>斜體(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="324"/>
+        <location filename="../../widgets/main_window.cpp" line="332"/>
         <source>Ctrl+I</source>
         <translation>Ctrl+I</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="326"/>
+        <location filename="../../widgets/main_window.cpp" line="334"/>
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329"/>
+        <location filename="../../widgets/main_window.cpp" line="337"/>
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330"/>
+        <location filename="../../widgets/main_window.cpp" line="338"/>
         <source>Show the print text&apos;s Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="340"/>
+        <location filename="../../widgets/main_window.cpp" line="348"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342"/>
+        <location filename="../../widgets/main_window.cpp" line="350"/>
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="349"/>
+        <location filename="../../widgets/main_window.cpp" line="357"/>
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="354"/>
+        <location filename="../../widgets/main_window.cpp" line="362"/>
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="357"/>
+        <location filename="../../widgets/main_window.cpp" line="365"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="366"/>
+        <location filename="../../widgets/main_window.cpp" line="374"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="408"/>
+        <location filename="../../widgets/main_window.cpp" line="416"/>
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="415"/>
+        <location filename="../../widgets/main_window.cpp" line="423"/>
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="420"/>
-        <location filename="../../widgets/main_window.cpp" line="583"/>
+        <location filename="../../widgets/main_window.cpp" line="428"/>
+        <location filename="../../widgets/main_window.cpp" line="605"/>
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="430"/>
+        <location filename="../../widgets/main_window.cpp" line="438"/>
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="432"/>
+        <location filename="../../widgets/main_window.cpp" line="440"/>
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="433"/>
+        <location filename="../../widgets/main_window.cpp" line="441"/>
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="436"/>
+        <location filename="../../widgets/main_window.cpp" line="444"/>
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="457"/>
+        <location filename="../../widgets/main_window.cpp" line="465"/>
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459"/>
+        <location filename="../../widgets/main_window.cpp" line="467"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="483"/>
+        <location filename="../../widgets/main_window.cpp" line="491"/>
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="484"/>
+        <location filename="../../widgets/main_window.cpp" line="492"/>
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="491"/>
+        <location filename="../../widgets/main_window.cpp" line="499"/>
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="506"/>
+        <location filename="../../widgets/main_window.cpp" line="514"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="514"/>
+        <location filename="../../widgets/main_window.cpp" line="526"/>
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="541"/>
+        <location filename="../../widgets/main_window.cpp" line="556"/>
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="546"/>
+        <location filename="../../widgets/main_window.cpp" line="561"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="547"/>
+        <location filename="../../widgets/main_window.cpp" line="562"/>
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="567"/>
+        <location filename="../../widgets/main_window.cpp" line="584"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>已開啟 %1：%n 張</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="569"/>
+        <location filename="../../widgets/main_window.cpp" line="587"/>
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="572"/>
+        <location filename="../../widgets/main_window.cpp" line="590"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="577"/>
+        <location filename="../../widgets/main_window.cpp" line="599"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>有 %n 行無法轉譯，未列入點字</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="604"/>
+        <location filename="../../widgets/main_window.cpp" line="626"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>圖形 %1 | %n 張</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="612"/>
+        <location filename="../../widgets/main_window.cpp" line="634"/>
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="615"/>
+        <location filename="../../widgets/main_window.cpp" line="637"/>
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="615"/>
+        <location filename="../../widgets/main_window.cpp" line="637"/>
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="626"/>
-        <location filename="../../widgets/main_window.cpp" line="809"/>
-        <location filename="../../widgets/main_window.cpp" line="820"/>
-        <location filename="../../widgets/main_window.cpp" line="962"/>
+        <location filename="../../widgets/main_window.cpp" line="648"/>
+        <location filename="../../widgets/main_window.cpp" line="842"/>
+        <location filename="../../widgets/main_window.cpp" line="853"/>
+        <location filename="../../widgets/main_window.cpp" line="995"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="631"/>
+        <location filename="../../widgets/main_window.cpp" line="653"/>
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="649"/>
+        <location filename="../../widgets/main_window.cpp" line="682"/>
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="662"/>
+        <location filename="../../widgets/main_window.cpp" line="695"/>
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="713"/>
+        <location filename="../../widgets/main_window.cpp" line="746"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="958"/>
+        <location filename="../../widgets/main_window.cpp" line="991"/>
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="721"/>
+        <location filename="../../widgets/main_window.cpp" line="754"/>
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="721"/>
+        <location filename="../../widgets/main_window.cpp" line="754"/>
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="723"/>
+        <location filename="../../widgets/main_window.cpp" line="756"/>
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="745"/>
+        <location filename="../../widgets/main_window.cpp" line="778"/>
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="754"/>
+        <location filename="../../widgets/main_window.cpp" line="787"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>已匯出 %1（%n 張）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="761"/>
+        <location filename="../../widgets/main_window.cpp" line="794"/>
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="762"/>
+        <location filename="../../widgets/main_window.cpp" line="795"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="773"/>
+        <location filename="../../widgets/main_window.cpp" line="806"/>
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="808"/>
+        <location filename="../../widgets/main_window.cpp" line="841"/>
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906"/>
+        <location filename="../../widgets/main_window.cpp" line="939"/>
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="907"/>
+        <location filename="../../widgets/main_window.cpp" line="940"/>
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="913"/>
+        <location filename="../../widgets/main_window.cpp" line="946"/>
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="821"/>
+        <location filename="../../widgets/main_window.cpp" line="854"/>
         <source>The printer&apos;s page is too small for the pages of %1. Lay the braille out again on the printer&apos;s page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="835"/>
+        <location filename="../../widgets/main_window.cpp" line="868"/>
         <source>The pages of %1 are %2 cells by %3 lines; the printer&apos;s page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="844"/>
+        <location filename="../../widgets/main_window.cpp" line="877"/>
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="844"/>
+        <location filename="../../widgets/main_window.cpp" line="877"/>
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="848"/>
+        <location filename="../../widgets/main_window.cpp" line="881"/>
         <source>The pages of %1 differ by volume: %2. The printer&apos;s page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="986"/>
+        <location filename="../../widgets/main_window.cpp" line="1019"/>
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849"/>
+        <location filename="../../widgets/main_window.cpp" line="882"/>
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="854"/>
+        <location filename="../../widgets/main_window.cpp" line="887"/>
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="114"/>
+        <location filename="../../widgets/main_window.cpp" line="115"/>
         <source>The document cannot be laid out for this printer&apos;s page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="697"/>
+        <location filename="../../widgets/main_window.cpp" line="730"/>
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878"/>
+        <location filename="../../widgets/main_window.cpp" line="911"/>
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879"/>
+        <location filename="../../widgets/main_window.cpp" line="912"/>
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891"/>
+        <location filename="../../widgets/main_window.cpp" line="924"/>
         <source>A character does not fit the file&apos;s encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="893"/>
+        <location filename="../../widgets/main_window.cpp" line="926"/>
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="894"/>
+        <location filename="../../widgets/main_window.cpp" line="927"/>
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="895"/>
+        <location filename="../../widgets/main_window.cpp" line="928"/>
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="897"/>
+        <location filename="../../widgets/main_window.cpp" line="930"/>
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="865"/>
+        <location filename="../../widgets/main_window.cpp" line="898"/>
         <source>The printer&apos;s page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="867"/>
+        <location filename="../../widgets/main_window.cpp" line="900"/>
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="869"/>
+        <location filename="../../widgets/main_window.cpp" line="902"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="868"/>
+        <location filename="../../widgets/main_window.cpp" line="901"/>
         <source>Lay the braille out again on the printer&apos;s page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="869"/>
+        <location filename="../../widgets/main_window.cpp" line="902"/>
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="871"/>
+        <location filename="../../widgets/main_window.cpp" line="904"/>
         <source>Stopped: nothing was embossed or exported (the printer&apos;s page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="595"/>
+        <location filename="../../widgets/main_window.cpp" line="617"/>
         <source>The braille&apos;s own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="596"/>
+        <location filename="../../widgets/main_window.cpp" line="618"/>
         <source>The braille is laid out again on the printer&apos;s page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="978"/>
+        <location filename="../../widgets/main_window.cpp" line="1011"/>
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1054"/>
+        <location filename="../../widgets/main_window.cpp" line="1087"/>
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1087"/>
-        <location filename="../../widgets/main_window.cpp" line="1096"/>
+        <location filename="../../widgets/main_window.cpp" line="1120"/>
+        <location filename="../../widgets/main_window.cpp" line="1129"/>
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1120"/>
+        <location filename="../../widgets/main_window.cpp" line="1153"/>
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1125"/>
+        <location filename="../../widgets/main_window.cpp" line="1158"/>
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1138"/>
+        <location filename="../../widgets/main_window.cpp" line="1171"/>
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142"/>
+        <location filename="../../widgets/main_window.cpp" line="1175"/>
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144"/>
+        <location filename="../../widgets/main_window.cpp" line="1177"/>
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144"/>
+        <location filename="../../widgets/main_window.cpp" line="1177"/>
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1173"/>
+        <location filename="../../widgets/main_window.cpp" line="1206"/>
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1173"/>
+        <location filename="../../widgets/main_window.cpp" line="1206"/>
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1174"/>
+        <location filename="../../widgets/main_window.cpp" line="1207"/>
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1174"/>
+        <location filename="../../widgets/main_window.cpp" line="1207"/>
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1175"/>
+        <location filename="../../widgets/main_window.cpp" line="1208"/>
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1175"/>
+        <location filename="../../widgets/main_window.cpp" line="1208"/>
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1176"/>
+        <location filename="../../widgets/main_window.cpp" line="1209"/>
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1176"/>
+        <location filename="../../widgets/main_window.cpp" line="1209"/>
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1177"/>
+        <location filename="../../widgets/main_window.cpp" line="1210"/>
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1177"/>
+        <location filename="../../widgets/main_window.cpp" line="1210"/>
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1178"/>
+        <location filename="../../widgets/main_window.cpp" line="1211"/>
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1178"/>
+        <location filename="../../widgets/main_window.cpp" line="1211"/>
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1184"/>
+        <location filename="../../widgets/main_window.cpp" line="1217"/>
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1185"/>
+        <location filename="../../widgets/main_window.cpp" line="1218"/>
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

@@ -111,8 +111,10 @@ private Q_SLOTS:
         QVERIFY(!w.is_busy());
         QVERIFY(w.editor()->text().startsWith(QStringLiteral("# Welcome to Braille")));
         QVERIFY(w.windowTitle().startsWith(QStringLiteral("welcome.md")));
-        QVERIFY(!spoken.isEmpty());
-        QVERIFY(w.announcer()->message().contains(QStringLiteral("Opened welcome.md")));
+        // Said a moment later, once the events of the swap are out (Orca drops
+        // a message that comes with a flood of them).
+        QVERIFY(!w.announcer()->message().contains(QStringLiteral("Opened welcome.md")));
+        QTRY_VERIFY(w.announcer()->message().contains(QStringLiteral("Opened welcome.md")));
         QCOMPARE(w.recent_files().value(0), QFileInfo(test::sample("welcome.md")).absoluteFilePath());
     }
 
@@ -140,7 +142,7 @@ private Q_SLOTS:
         job.addResult(load_file_now(test::sample("welcome.md"), w.editor()->layout().tables(), w.editor()->layout().options()));
         job.finish();
         QVERIFY(opened.wait(30000));
-        QCoreApplication::processEvents();
+        QTRY_VERIFY(w.announcer()->message().startsWith(QStringLiteral("Opened")));
         QStringList said;
         for (const auto& s : spoken) said << s[0].toString();
         QVERIFY2(w.announcer()->message().startsWith(QStringLiteral("Opened welcome.md")),
