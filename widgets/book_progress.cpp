@@ -54,19 +54,22 @@ void BookProgress::on_started() {
     // A layout that replaces a running one (an edit meanwhile) goes on in
     // the same bar and the same quiet time; its steps start again.
     steps_ = std::make_unique<ProgressSteps>(kTenths);
-    if (isHidden()) {
+    if (!running_.isValid()) {
         running_.start();
         spoke_ = false;
     }
     bar_->setValue(0);
-    show();
 }
 
 void BookProgress::on_progress(int percent) {
     if (!steps_) return;
     if (!steps_->update(static_cast<std::size_t>(percent), 100, 1)) return;
-    bar_->setValue(percent);
+    // A layout that ends within the quiet time shows and says nothing: each
+    // change of the bar is an event for the screen reader, and a short book
+    // is laid out again after every pause in typing.
     if (running_.elapsed() < quiet_ms_) return;
+    bar_->setValue(percent);
+    show();
     if (steps_->speak(ProgressSteps::Clock::now())) {
         spoke_ = true;
         announcer_->announce(tr("Laying out the book: %1 percent").arg(percent));
@@ -78,7 +81,8 @@ void BookProgress::opened(const QString& file_name, const QString& plain, const 
 }
 
 void BookProgress::on_ended(bool done) {
-    hide();
+    running_.invalidate();
+    if (!isHidden()) hide();
     steps_.reset();
     const bool spoke = std::exchange(spoke_, false);
     const auto opened = std::exchange(opened_, std::nullopt);

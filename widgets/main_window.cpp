@@ -662,7 +662,8 @@ void MainWindow::report(const QString& message, bool error) {
         // its queue (it falls seconds behind on a loaded machine), drops
         // every name change and "showing" event in it: the announcer's
         // message went with them and "Opened ..." was never heard. Said once
-        // the burst is out, it arrives in a queue Orca has already pruned.
+        // the burst is out, and Orca has had time to work through it (at
+        // 10-20 events a second when loaded), it arrives in a short queue.
         QTimer::singleShot(kWordAfterBurstMs, announcer_, [a = announcer_, message] { a->announce(message); });
     } else {
         announcer_->announce(message);

@@ -179,7 +179,7 @@ private:
     std::shared_ptr<FocusReturn> busy_return_;
     int progress_delay_ = 300;
     // Messages at the end of background work are said this long after it (report()).
-    static constexpr int kWordAfterBurstMs = 600;
+    static constexpr int kWordAfterBurstMs = 1500;
     bool word_after_burst_ = false;  // where the focus goes when the background work ends
 
     QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
