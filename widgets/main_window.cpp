@@ -31,6 +31,7 @@
 #include <algorithm>
 
 #include "announcer.hpp"
+#include "book_progress.hpp"
 #include "book_view.hpp"
 #include "ask.hpp"
 #include "atomic_write.hpp"
@@ -151,6 +152,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     book_->set_source([this] { return editor_->has_layout() ? &editor_->layout() : nullptr; },
                       [this] { return source_name_; });
     preview_->set_book(book_);
+    book_progress_ = new BookProgress(book_, announcer_, [this](const QString& said) {
+        // The end of a book's layout swaps the preview's pages: the same burst of events as an open's end.
+        const bool was = std::exchange(word_after_burst_, true);
+        report(said);
+        word_after_burst_ = was;
+    }, this);
+    statusBar()->addPermanentWidget(book_progress_);
     connect(preview_, &PreviewPanel::announce, announcer_, &Announcer::announce);
     connect(book_, &BookView::changed, this, [this, sp] {
         const auto* shown = book_->shown(&paged());
@@ -510,11 +518,16 @@ void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, 
     progress_->setObjectName(QStringLiteral("progress"));
     progress_->setAccessibleName(what);
     progress_->setWindowModality(Qt::WindowModal);
-    progress_->setMinimumDuration(300);
+    progress_->setMinimumDuration(progress_delay_);
     connect(progress_, &QProgressDialog::canceled, watcher, [watcher] { watcher->cancel(); });
-    connect(watcher, &QFutureWatcher<LoadResultPtr>::progressValueChanged, progress_, [this](int v) {
-        progress_->setValue(v);
-        if (v % 25 == 0) announcer_->announce(tr("%1 percent").arg(v));
+    connect(watcher, &QFutureWatcher<LoadResultPtr>::progressValueChanged, progress_, [this, watcher](int v) {
+        // Said before the bar moves: setValue() on a shown modal dialog runs
+        // the event loop, where the job's end may be handled ("Opened ...");
+        // a step said after it replaced that message before the screen reader
+        // read it, and the user heard "100 percent" and never that the
+        // document was open. The start and the end have their own messages.
+        if (v % 25 == 0 && v > 0 && v < 100) announcer_->announce(tr("%1 percent").arg(v));
+        if (busy_ == watcher && progress_) progress_->setValue(v);
     });
     connect(watcher, &QFutureWatcher<LoadResultPtr>::finished, this, [this, watcher, replace_text] {
         LoadResultPtr r;
@@ -533,7 +546,9 @@ void MainWindow::start_busy(const QString& what, QFuture<LoadResultPtr> future, 
         watcher->deleteLater();
         editor_->print_pane()->setReadOnly(false);
         if (auto back = std::exchange(busy_return_, nullptr)) back->restore();
+        word_after_burst_ = true;
         finish_load(r, replace_text);
+        word_after_burst_ = false;
     });
     announcer_->announce(what);
     watcher->setFuture(future);
@@ -563,19 +578,26 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         // Saved in place when Tactus writes the format (Markdown, text, DOCX, ODT), else "Save as".
         path_ = saved_in_place(info.filePath()) ? info.absoluteFilePath() : QString();
         source_name_ = info.fileName();
+        book_progress_->forget_opened();
+        book_->start();  // now, not after the edits' pause: and no other document's book meanwhile
         add_recent(info.absoluteFilePath());
         update_title();
         const auto& paged = this->paged();
         // One message: a second one would cut the first off in the screen reader.
         auto said = tr("Opened %1: %n sheet(s)", nullptr, static_cast<int>(paged.sheet_count())).arg(info.fileName());
+        QString suffix;
         if (graphic_) {
             said = tr("%1. %2", "a message, then what the graphic is")
                        .arg(said, graphic_->summary().replace(QLatin1Char('\n'), QLatin1Char(' ')));
             if (!paged.warnings.empty())
-                said += QLatin1Char(' ') + tr("Warning: %1").arg(QString::fromStdString(paged.warnings.front()));
+                suffix = QLatin1Char(' ') + tr("Warning: %1").arg(QString::fromStdString(paged.warnings.front()));
         } else if (!paged.warnings.empty())
-            said += QLatin1Char(' ') + table_warning(QString::fromStdString(paged.warnings.front()));
-        report(said);
+            suffix = QLatin1Char(' ') + table_warning(QString::fromStdString(paged.warnings.front()));
+        // A book is said open when its book layout is ready, with its count.
+        if (book_->running())
+            book_progress_->opened(info.fileName(), said, suffix);
+        else
+            report(said + suffix);
         if (editor_->layout().error_count() > 0)
             report(tr("%n line(s) could not be translated; they are left out of the braille", nullptr,
                       static_cast<int>(editor_->layout().error_count())),
@@ -636,7 +658,19 @@ void MainWindow::update_title() {
 
 void MainWindow::report(const QString& message, bool error) {
     message_->show_message(message, 10000);
-    announcer_->announce(message);
+    if (word_after_burst_) {
+        // The end of background work swaps the document: the dialog goes, the
+        // focus comes back, the panes, preview and choosers change, dozens of
+        // AT-SPI events at once. Orca 43, when more than 50 events wait in
+        // its queue (it falls seconds behind on a loaded machine), drops
+        // every name change and "showing" event in it: the announcer's
+        // message went with them and "Opened ..." was never heard. Said once
+        // the burst is out, and Orca has had time to work through it (at
+        // 10-20 events a second when loaded), it arrives in a short queue.
+        QTimer::singleShot(kWordAfterBurstMs, announcer_, [a = announcer_, message] { a->announce(message); });
+    } else {
+        announcer_->announce(message);
+    }
     if (error && interactive_ && isVisible()) {
         FocusReturn back(this, editor_->print_pane());
         QMessageBox::warning(this, tr("Tactus"), message);

@@ -31,6 +31,7 @@ class VibrationView;
 class FindReplaceDialog;
 class PreviewPanel;
 class BookView;
+class BookProgress;
 class TablePicker;
 
 class MainWindow : public QMainWindow {
@@ -85,6 +86,12 @@ public:
     [[nodiscard]] QList<QPair<QString, QString>> shortcut_rows() const;
     // Interactive windows ask before discarding work and show error boxes; tests don't.
     void set_interactive(bool on) { interactive_ = on; }
+    // Background work that ends in a document (opening, a new table): a
+    // progress dialog with Cancel, the steps said, then the result adopted.
+    void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
+    // How long background work runs before its progress dialog shows (300 ms;
+    // a test shows it at once, as a slow machine does).
+    void set_progress_delay(int ms) { progress_delay_ = ms; }
 
     // Crash recovery: autosaves that no running Tactus owns.
     [[nodiscard]] static QList<Recovery> pending_recoveries();
@@ -141,7 +148,6 @@ private:
     void lay_out_graphic_again();
     // The drawing (or none) becomes the document shown: preview, print pane.
     void show_graphic(std::optional<GraphicView> graphic, const QString& path);
-    void start_busy(const QString& what, QFuture<LoadResultPtr> future, bool replace_text);
     void finish_load(const LoadResultPtr& r, bool replace_text);
     QDockWidget* add_dock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
     void schedule_plan();
@@ -151,6 +157,7 @@ private:
     EditorWidget* editor_ = nullptr;
     PreviewPanel* preview_ = nullptr;
     BookView* book_ = nullptr;
+    BookProgress* book_progress_ = nullptr;
     TablePicker* tables_ = nullptr;
     Announcer* announcer_ = nullptr;
     FindReplaceDialog* find_ = nullptr;
@@ -169,7 +176,11 @@ private:
     Autosave autosave_;
     QPointer<QFutureWatcher<LoadResultPtr>> busy_;
     QProgressDialog* progress_ = nullptr;
-    std::shared_ptr<FocusReturn> busy_return_;  // where the focus goes when the background work ends
+    std::shared_ptr<FocusReturn> busy_return_;
+    int progress_delay_ = 300;
+    // Messages at the end of background work are said this long after it (report()).
+    static constexpr int kWordAfterBurstMs = 1500;
+    bool word_after_burst_ = false;  // where the focus goes when the background work ends
 
     QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
     MotionView* motion_ = nullptr;

@@ -40,13 +40,14 @@ struct Heading {
 class BookMaker {
 public:
     BookMaker(const document::Document& doc, const layout::LayoutOptions& layout, const BookOptions& book,
-              const translate::Translator& translator, unsigned workers)
-        : doc_(doc), layout_(layout), book_(book), translator_(translator), workers_(workers) {
+              const translate::Translator& translator, unsigned workers, const BookProgress& progress)
+        : doc_(doc), layout_(layout), book_(book), translator_(translator), workers_(workers), progress_(progress) {
         body_ = layout_;
         if (book_.running_heads) body_.top_margin += 1;  // line 1 holds the running head (§1.8)
     }
 
-    Result<BookLayout> make() {
+    // Nullopt when progress_ stopped it.
+    Result<std::optional<BookLayout>> make() {
         // First pass, as the blocks come from translation: where each block
         // falls, to choose the volume breaks.
         std::vector<std::size_t> start_page;
@@ -58,6 +59,7 @@ public:
                 p.add(b);
                 blocks_.push_back(std::move(b));
             }));
+            if (stopped_) return std::optional<BookLayout>{};
             total_pages = std::move(p).finish().pages.size();
             if (error_) return std::unexpected(*error_);
         }
@@ -135,18 +137,26 @@ private:
     // Each block of the body translated, in document order, to `take`.
     Result<void> translate_all(const std::function<void(translate::TranslatedBlock)>& take) {
         const auto room = [this](const document::Block& b) { return layout::word_room(body_, b.kind, b.level); };
+        const auto total = doc_.blocks.size();
+        std::size_t done = 0;
+        const auto told = [&] {
+            stopped_ = progress_ && progress_(++done, total);
+            return stopped_;
+        };
         if (workers_ > 1 && TranslationWorkers::available()) {
             TACTUS_TRY(pool, TranslationWorkers::start(doc_, translator_, workers_, 64, room));
             for (;;) {
                 TACTUS_TRY(block, pool.next());
                 if (!block) return {};
                 take(std::move(*block));
+                if (told()) return {};
             }
         }
         for (const auto& b : doc_.blocks) {
             auto tb = translate::translate_block(b, translator_, room(b));
             if (!tb) return std::unexpected(located(tb.error(), doc_.source_name));
             take(std::move(*tb));
+            if (told()) return {};
         }
         return {};
     }
@@ -365,6 +375,8 @@ private:
     std::vector<Heading> headings_;
     std::map<int, BrailleLine> numbers_;
     std::optional<Error> error_;
+    const BookProgress& progress_;
+    bool stopped_ = false;
 };
 
 }  // namespace
@@ -372,8 +384,17 @@ private:
 Result<BookLayout> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
                                 const BookOptions& book, const translate::Translator& translator,
                                 unsigned translation_workers) {
+    auto laid = lay_out_book(document, layout, book, translator, BookProgress{}, translation_workers);
+    if (!laid) return std::unexpected(laid.error());
+    if (!laid->has_value()) return fail(ErrorKind::internal, "the book layout stopped with nothing to stop it");
+    return std::move(laid->value());
+}
+
+Result<std::optional<BookLayout>> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
+                                               const BookOptions& book, const translate::Translator& translator,
+                                               const BookProgress& progress, unsigned translation_workers) {
     if (book.sheets_per_volume < 2) return fail(ErrorKind::usage, "sheets per volume must be at least 2", "sheets-per-volume");
-    return BookMaker(document, layout, book, translator, translation_workers).make();
+    return BookMaker(document, layout, book, translator, translation_workers, progress).make();
 }
 
 }  // namespace tactus::pipeline

@@ -12,6 +12,9 @@
 
 #include "common/result.hpp"
 #include "document/document.hpp"
+#include <functional>
+#include <optional>
+
 #include "layout/layout_options.hpp"
 #include "layout/page.hpp"
 #include "translate/translator.hpp"
@@ -59,5 +62,14 @@ struct BookLayout {
 Result<BookLayout> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
                                 const BookOptions& book, const translate::Translator& translator,
                                 unsigned translation_workers = 1);
+
+// Told, after each block of the body is translated (most of the work), how
+// many of all are done; returning true stops the layout (the document changed,
+// the user cancelled).
+using BookProgress = std::function<bool(std::size_t done, std::size_t total)>;
+// As above, with progress; nullopt when `progress` stopped it.
+Result<std::optional<BookLayout>> lay_out_book(const document::Document& document, const layout::LayoutOptions& layout,
+                                               const BookOptions& book, const translate::Translator& translator,
+                                               const BookProgress& progress, unsigned translation_workers = 1);
 
 }  // namespace tactus::pipeline

@@ -2,9 +2,28 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>tactus::gui::BookProgress</name>
+    <message numerus="yes">
+        <location filename="../../widgets/book_progress.cpp" line="92"/>
+        <source>%n volume(s)</source>
+        <translation>
+            <numerusform>%n volume</numerusform>
+            <numerusform>%n volumes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/book_progress.cpp" line="93"/>
+        <source>%n sheet(s)</source>
+        <translation>
+            <numerusform>%n sheet</numerusform>
+            <numerusform>%n sheets</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::EmbossChoice</name>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="128"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>Whole document: %n sheet</numerusform>
@@ -12,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="130"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="126"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>Volume %1 of %2: %n sheet</numerusform>
@@ -20,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="135"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="131"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>Pages %1 to %2: %n sheet</numerusform>
@@ -54,7 +73,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="567"/>
+        <location filename="../../widgets/main_window.cpp" line="587"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -62,7 +81,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="577"/>
+        <location filename="../../widgets/main_window.cpp" line="602"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -70,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="604"/>
+        <location filename="../../widgets/main_window.cpp" line="629"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>Graphic %1 | %n sheet</numerusform>
@@ -78,7 +97,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="754"/>
+        <location filename="../../widgets/main_window.cpp" line="791"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>

@@ -373,6 +373,12 @@ T = {
     "Whole document": "整份文件", "Page range": "頁碼範圍", "No pages chosen: %1": "未選擇任何頁：%1",
     "Whole document: %n sheet(s)": "整份文件：%n 張", "Volume %1 of %2: %n sheet(s)": "第 %1 冊，共 %2 冊：%n 張",
     "Pages %1 to %2: %n sheet(s)": "第 %1 頁到第 %2 頁：%n 張",
+    # The book laid out in the background: the status bar's bar and button, and what is said.
+    "Laying out the book": "正在排版書籍", "Cancel book layout": "取消書籍排版",
+    "Book layout cancelled; the preview shows the pages laid out before": "已取消書籍排版；預覽顯示先前排好的頁面",
+    "Laying out the book: %1 percent": "正在排版書籍：百分之 %1",
+    "%n volume(s)": "%n 冊", "%n sheet(s)": "%n 張", "Opened %1: %2": "已開啟 %1：%2", "Book: %1": "書籍：%1",
+    "The book could not be laid out: %1": "無法排版書籍：%1", "Book layout cancelled": "已取消書籍排版",
 }
 
 

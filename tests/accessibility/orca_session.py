@@ -188,7 +188,14 @@ class OrcaSession:
         env = dict(os.environ, HOME=home,
                    # No audio here: let Orca fail to reach speech-dispatcher quickly
                    # instead of blocking on a sound card (it still logs every phrase).
-                   SPEECHD_ADDRESS="unix_socket:" + os.path.join(self.work, "no-speechd", "socket"))
+                   SPEECHD_ADDRESS="unix_socket:" + os.path.join(self.work, "no-speechd", "socket"),
+                   # ... and not try to start one. Orca connects again whenever a
+                   # script becomes active (the app's window), and each try ran
+                   # `speech-dispatcher --spawn` and waited for it inside Orca's
+                   # main loop: 3 s on a loaded machine, while the app's events
+                   # piled up past Orca's flood limit (50) and it dropped the
+                   # app's notifications. A desktop has speech-dispatcher running.
+                   SPEECHD_CMD=os.path.join(self.work, "no-speechd", "speech-dispatcher"))
         self._spawn(["openbox", "--sm-disable"], env=env, log_name="openbox.log")
         self._spawn(["/usr/bin/python3", os.path.join(HERE, "orca_line_buffered.py"), "-u", os.path.join(home, "orca-prefs"),
                      "--debug-file", self.orca_log.path], env=env, log_name="orca.out")

@@ -578,11 +578,12 @@ def scenario_book(tactus, sample, work):
     with s:
         s.start()
         s.launch([tactus, "--no-recovery", BOOK])
-        # The book is open when the app says so ("Opened ...: N sheets"); the
-        # focus then comes back to the print text from the progress dialog,
-        # which Orca may say or not depending on when the dialog closed, so
-        # the scenario waits for the app's own word, not for Orca's.
-        s.wait_phrase(r"Opened jekyll-and-hyde\.epub", (0, 0, 0, 0, 0), 120)
+        # The book is open when the app says so, once its book layout (on a
+        # worker) is ready: "Opened ...: 2 volumes, N sheets"; the focus comes
+        # back to the print text from the progress dialog, which Orca may say
+        # or not depending on when the dialog closed, so the scenario waits
+        # for the app's own word, not for Orca's.
+        s.wait_phrase(r"Opened jekyll-and-hyde\.epub: 2 volumes, \d+ sheets", (0, 0, 0, 0, 0), 120)
         s.settle(s.mark())
         s.step("Ctrl+3 speaks the preview", keys=["ctrl+3"], expect=[r"Interpoint preview"])
         s.step("Ctrl+Alt+Page Down goes to volume 2", keys=["ctrl+alt+Next"],

@@ -110,3 +110,50 @@ TEST(BookChoice, EpubAndLongTextsAreBooks) {
 }
 
 }  // namespace
+
+namespace {
+
+// The book layout tells its progress block by block, to the last, gives the
+// same pages as without progress, and stops when progress says so (the app
+// lays books out on a worker and stops one the editor has overtaken).
+TEST(BookProgress, CountsEveryBlockAndStopsWhenAsked) {
+    const auto path = std::filesystem::path(TACTUS_TEST_DATA) / "import" / "books" / "jekyll-and-hyde.epub";
+    const auto doc = import::import_file(path);
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    const auto table = translate::Translator::open(translate::kDefaultTable);
+    ASSERT_TRUE(table);
+    pipeline::BookOptions book;
+    book.sheets_per_volume = 20;
+    layout::LayoutOptions layout;
+    const auto plain = pipeline::lay_out_book(*doc, layout, book, *table);
+    ASSERT_TRUE(plain);
+
+    std::size_t calls = 0, last_done = 0, total = 0;
+    const auto told = pipeline::lay_out_book(*doc, layout, book, *table, [&](std::size_t done, std::size_t all) {
+        ++calls;
+        EXPECT_EQ(done, last_done + 1);
+        last_done = done;
+        total = all;
+        return false;
+    });
+    ASSERT_TRUE(told) << told.error().to_string();
+    ASSERT_TRUE(told->has_value());
+    EXPECT_EQ(total, doc->blocks.size());
+    EXPECT_EQ(calls, doc->blocks.size());
+    EXPECT_EQ(last_done, total);
+    const auto& with = (*told)->pages;
+    ASSERT_EQ(with.pages.size(), plain->pages.pages.size());
+    for (std::size_t i = 0; i < with.pages.size(); ++i) EXPECT_EQ(with.pages[i].lines, plain->pages.pages[i].lines) << i;
+    EXPECT_EQ((*told)->volumes.size(), plain->volumes.size());
+
+    std::size_t seen = 0;
+    const auto stopped = pipeline::lay_out_book(*doc, layout, book, *table, [&](std::size_t done, std::size_t all) {
+        seen = done;
+        return done * 2 >= all;
+    });
+    ASSERT_TRUE(stopped);
+    EXPECT_FALSE(stopped->has_value());
+    EXPECT_EQ(seen, (doc->blocks.size() + 1) / 2);
+}
+
+}  // namespace

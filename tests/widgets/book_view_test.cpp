@@ -9,6 +9,8 @@
 #include <QLineEdit>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QThreadPool>
+#include <QTimer>
 #include <QtTest>
 
 #include <set>
@@ -19,6 +21,7 @@
 #include "emboss_choice.hpp"
 #include "gui_test_support.hpp"
 #include "main_window.hpp"
+#include "pipeline/page_range.hpp"
 #include "preview_panel.hpp"
 #include "printer_panel.hpp"
 #include "profile/profile.hpp"
@@ -52,8 +55,19 @@ class BookViewTest : public QObject {
         QVERIFY(w.open_file_now(jekyll()));
         pipeline::BookOptions options;
         options.sheets_per_volume = 20;
+        QSignalSpy ended(w.book_view(), &BookView::ended);
         w.book_view()->set_options(options);
+        QVERIFY(ended.wait(60000));
         QVERIFY2(w.book_view()->active(), qPrintable(w.book_view()->error()));
+    }
+
+    static bool same_pages(const layout::PagedDocument& a, const layout::PagedDocument& b) {
+        if (a.pages.size() != b.pages.size() || a.sections.size() != b.sections.size()) return false;
+        for (std::size_t i = 0; i < a.pages.size(); ++i) {
+            if (a.pages[i].lines != b.pages[i].lines || a.pages[i].braille_number != b.pages[i].braille_number)
+                return false;
+        }
+        return true;
     }
 
 private Q_SLOTS:
@@ -75,6 +89,86 @@ private Q_SLOTS:
         QVERIFY(chooser);
         QVERIFY(!w.preview_panel()->next_volume_action()->isEnabled());
         QVERIFY(!w.preview_panel()->label_text().contains(QStringLiteral("Volume")));
+    }
+
+    // The book is laid out on a worker: the event loop turns meanwhile (a
+    // timer ticks, as the screen reader's requests are answered), and the
+    // book shown is the one the same layout gives on the calling thread.
+    void the_book_is_laid_out_while_the_event_loop_turns() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(jekyll()));
+        auto* book = w.book_view();
+        QSignalSpy ended(book, &BookView::ended);
+        QSignalSpy progressed(book, &BookView::progressed);
+        int ticks = 0;
+        QTimer tick;
+        tick.setInterval(0);
+        connect(&tick, &QTimer::timeout, [&] { ++ticks; });
+        tick.start();
+        book->start();
+        QVERIFY(book->running());
+        QVERIFY(ended.wait(60000));
+        tick.stop();
+        QCOMPARE(ended.last()[0].toBool(), true);
+        QVERIFY2(ticks > 0, "the GUI thread was blocked while the book was laid out");
+        QVERIFY(!progressed.isEmpty());
+        QVERIFY(book->active());
+        const auto shown = *book->shown(nullptr);
+        const auto volumes = book->volumes();
+        const auto labels = book->labels();
+        // The same layout on this thread.
+        book->refresh_now();
+        QVERIFY(book->active());
+        QVERIFY(same_pages(shown, *book->shown(nullptr)));
+        QCOMPARE(volumes.size(), book->volumes().size());
+        for (std::size_t v = 0; v < volumes.size(); ++v) {
+            QCOMPARE(volumes[v].first_page, book->volumes()[v].first_page);
+            QCOMPARE(volumes[v].end_page, book->volumes()[v].end_page);
+        }
+        QCOMPARE(labels, book->labels());
+        QCOMPARE(w.preview_panel()->preview()->document(), book->shown(nullptr));
+    }
+
+    // A layout still running when another document opens is dropped: its
+    // book never replaces the new document's pages.
+    void a_layout_overtaken_by_another_document_is_not_shown() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(jekyll()));
+        auto* book = w.book_view();
+        QSignalSpy changed(book, &BookView::changed);
+        book->start();
+        QVERIFY(book->running());
+        QVERIFY(w.open_file_now(test::sample("welcome.md")));
+        QVERIFY(!book->running());
+        QVERIFY(!book->active());
+        // Let the dropped job end: nothing it made is shown.
+        QThreadPool::globalInstance()->waitForDone();
+        QCoreApplication::processEvents();
+        QVERIFY(!book->active());
+        QCOMPARE(book->labels(), pipeline::page_labels(w.paged()));
+        QCOMPARE(w.preview_panel()->preview()->document(), &w.paged());
+    }
+
+    // Cancel stops the layout; the pages shown stay as they were and the
+    // app's state says no layout is running.
+    void a_cancelled_layout_leaves_the_pages_shown() {
+        MainWindow w;
+        open_book(w);
+        auto* book = w.book_view();
+        const auto before = *book->shown(nullptr);
+        QSignalSpy ended(book, &BookView::ended);
+        pipeline::BookOptions options = book->options();
+        options.sheets_per_volume = 30;
+        book->set_options(options);
+        QVERIFY(book->running());
+        book->cancel();
+        QVERIFY(!book->running());
+        QCOMPARE(ended.size(), 1);
+        QCOMPARE(ended[0][0].toBool(), false);
+        QThreadPool::globalInstance()->waitForDone();
+        QCoreApplication::processEvents();
+        QCOMPARE(ended.size(), 1);
+        QVERIFY(same_pages(before, *book->shown(nullptr)));
     }
 
     void the_preview_moves_by_volume_and_says_where_it_is() {
