@@ -104,9 +104,14 @@ EditorWidget::EditorWidget(QWidget* parent) : QSplitter(Qt::Horizontal, parent) 
         if (!layout_ || static_cast<std::size_t>(line) >= layout_->line_count()) return QString{};
         // Only where the line shows no text of its own: a form feed, or a break in the structured view.
         if (!print_->document()->findBlockByNumber(line).text().trimmed().isEmpty()) return QString{};
-        if (structured() && structured::style_of(print_->document()->findBlockByNumber(line)) ==
-                                structured::Style::braille_page_break)
-            return tr("Braille page break");
+        if (structured()) {
+            switch (structured::style_of(print_->document()->findBlockByNumber(line))) {
+                case structured::Style::braille_page_break: return tr("Braille page break");
+                case structured::Style::box_start:
+                case structured::Style::box_end: return structure_text(line);
+                default: break;
+            }
+        }
         return page_break_text(line);
     });
 }
@@ -142,6 +147,10 @@ QString EditorWidget::structure_text(int line) const {
             return tr("Quotation");
         case Style::note:
             return tr("Note");
+        case Style::box_start:
+            return tr("Box");
+        case Style::box_end:
+            return tr("End of box");
         case Style::table_row: {
             // Its place among the table's rows (the rule under the header is no row).
             int row = 1, rows = 0;
@@ -292,7 +301,8 @@ bool EditorWidget::eventFilter(QObject* watched, QEvent* event) {
     const auto style = structured::style_of(c.block());
     const bool ends_style = style == Style::heading || style == Style::print_page_break ||
                             style == Style::braille_page_break || style == Style::table_delimiter ||
-                            style == Style::blank || style == Style::note;
+                            style == Style::blank || style == Style::note || style == Style::box_start ||
+                            style == Style::box_end;
     if (!ends_style || c.hasSelection() || !c.atBlockEnd()) return false;
     // The new paragraph is body text (a copy of a break's format would be a second break).
     c.insertBlock(structured::block_format(Style::body, 0), structured::base_char_format(Style::body, 0, print_->font()));
@@ -351,7 +361,9 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     if (!structured() || !layout_) return;
     auto c = print_->textCursor();
     const auto has = [emphasis](const QTextCharFormat& f) {
-        return emphasis == document::emphasis_bold ? structured::is_bold(f) : f.fontItalic();
+        return emphasis == document::emphasis_bold        ? structured::is_bold(f)
+               : emphasis == document::emphasis_underline ? f.fontUnderline()
+                                                          : f.fontItalic();
     };
     // On when any of the selection lacks it (as word processors do).
     bool all = c.hasSelection();
@@ -370,6 +382,8 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     if (emphasis == document::emphasis_bold) {
         const bool heading = structured::style_of(c.block()) == structured::Style::heading;
         f.setFontWeight(all ? (heading ? QFont::DemiBold : QFont::Normal) : QFont::Bold);
+    } else if (emphasis == document::emphasis_underline) {
+        f.setFontUnderline(!all);
     } else {
         f.setFontItalic(!all);
     }
@@ -390,6 +404,83 @@ void EditorWidget::insert_page_break() {
     bf.setProperty(structured::kCode, QStringLiteral("<!-- pagebreak -->"));
     edit.setBlockFormat(bf);
     edit.setBlockCharFormat(structured::base_char_format(structured::Style::body, 0, print_->font()));
+    edit.endEditBlock();
+}
+
+void EditorWidget::toggle_box() {
+    if (!structured() || !layout_) return;
+    using structured::Style;
+    auto* doc = print_->document();
+    const auto c = print_->textCursor();
+    auto first = doc->findBlock(c.selectionStart());
+    auto last = doc->findBlock(c.selectionEnd());
+    // A box line selected on its own stands for its box.
+    if (structured::style_of(first) == Style::box_end && first.blockNumber() == last.blockNumber()) first = first.previous();
+    // The box the first paragraph is in: a box line above it with no end between.
+    QTextBlock open, close;
+    int depth = 0;
+    for (auto b = structured::style_of(first) == Style::box_start ? first : first.previous(); b.isValid(); b = b.previous()) {
+        const auto s = structured::style_of(b);
+        if (s == Style::box_end) ++depth;
+        if (s == Style::box_start && depth-- == 0) {
+            open = b;
+            break;
+        }
+    }
+    if (open.isValid()) {
+        depth = 0;
+        for (auto b = open.next(); b.isValid(); b = b.next()) {
+            const auto s = structured::style_of(b);
+            if (s == Style::box_start) ++depth;
+            if (s == Style::box_end && depth-- == 0) {
+                close = b;
+                break;
+            }
+        }
+    }
+    const auto box_line = [this](Style style) {
+        auto bf = structured::block_format(style, 0);
+        bf.setProperty(structured::kCode, QString::fromUtf8(style == Style::box_start ? "<!-- box -->" : "<!-- /box -->"));
+        return bf;
+    };
+    QTextCursor edit(doc);
+    edit.beginEditBlock();
+    if (open.isValid()) {
+        // Out of the box: its lines go, its paragraphs stay.
+        for (auto b : {close, open}) {
+            if (!b.isValid()) continue;
+            if (const auto above = b.previous(); above.isValid()) {
+                // Joined to the paragraph above, which keeps its format.
+                const auto format = above.blockFormat();
+                const auto chars = above.charFormat();
+                edit.setPosition(above.position() + above.length() - 1);
+                edit.setPosition(b.position() + b.length() - 1, QTextCursor::KeepAnchor);
+                edit.removeSelectedText();
+                edit.setBlockFormat(format);
+                edit.setBlockCharFormat(chars);
+            } else if (const auto below = b.next(); below.isValid()) {
+                // The document's first line: the paragraph below takes its place, with its own format.
+                const auto format = below.blockFormat();
+                const auto chars = below.charFormat();
+                edit.setPosition(b.position());
+                edit.setPosition(below.position(), QTextCursor::KeepAnchor);
+                edit.removeSelectedText();
+                edit.setBlockFormat(format);
+                edit.setBlockCharFormat(chars);
+            }
+        }
+    } else {
+        const auto body = structured::base_char_format(Style::body, 0, print_->font());
+        // The line below first, so the first paragraph's position holds.
+        edit.setPosition(last.position() + last.length() - 1);
+        edit.insertBlock(box_line(Style::box_end), body);
+        edit.setPosition(first.position());
+        edit.insertBlock(first.blockFormat(), first.charFormat());
+        edit.movePosition(QTextCursor::PreviousBlock);
+        if (auto* list = edit.block().textList()) list->remove(edit.block());
+        edit.setBlockFormat(box_line(Style::box_start));
+        edit.setBlockCharFormat(body);
+    }
     edit.endEditBlock();
 }
 

@@ -53,10 +53,13 @@ public:
     // view and in a text file they do nothing (the marks are typed there).
     enum class ParagraphStyle { body, heading, bulleted, numbered, quotation };
     void set_paragraph_style(ParagraphStyle style, int level = 1);
-    // Bold or italic (document::Emphasis) on the selection, or off when all
-    // of it has it already. (The editor's Markdown lines have no underline:
-    // docs/editor.md.)
+    // Bold, italic or underline (document::Emphasis) on the selection, or off
+    // when all of it has it already.
     void toggle_emphasis(std::uint8_t emphasis);
+    // The paragraphs the selection touches put in a box (a box line above
+    // them and one below), or, when the first of them is in a box already,
+    // that box's lines taken away. One step of undo.
+    void toggle_box();
     // A print page break as a paragraph of its own before the cursor's paragraph.
     void insert_page_break();
     [[nodiscard]] PrintPane* print_pane() const { return print_; }

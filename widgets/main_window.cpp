@@ -323,6 +323,9 @@ void MainWindow::build_format_actions() {
          [this] { editor_->toggle_emphasis(document::emphasis_bold); });
     make(tr("&Italic"), tr("Ctrl+I"), QStringLiteral("formatItalic"),
          [this] { editor_->toggle_emphasis(document::emphasis_italic); });
+    make(tr("Und&erline"), tr("Ctrl+U"), QStringLiteral("formatUnderline"),
+         [this] { editor_->toggle_emphasis(document::emphasis_underline); });
+    make(tr("Bo&x"), tr("Ctrl+Alt+X"), QStringLiteral("formatBox"), [this] { editor_->toggle_box(); });
     show_codes_ = new QAction(tr("Show &codes"), this);
     show_codes_->setObjectName(QStringLiteral("viewShowCodes"));
     show_codes_->setCheckable(true);

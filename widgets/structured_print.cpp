@@ -31,6 +31,7 @@ const QColor kHeaderTint(0xd5, 0xdf, 0xec);
 const QColor kRuleTint(0x60, 0x70, 0x88);
 const QColor kNoteTint(0xfb, 0xf6, 0xe4);
 const QColor kQuoteTint(0xf1, 0xf1, 0xf1);
+const QColor kBoxTint(0xe4, 0xec, 0xe4);
 
 QTextCharFormat span_format(const Span& s, const QTextCharFormat& base) {
     auto f = base;
@@ -144,6 +145,10 @@ struct Shown {
 
 Shown classify(const std::string& line) {
     Shown s;
+    if (const int box = edit::box_line(line); box != 0) {
+        s.style = box > 0 ? Style::box_start : Style::box_end;
+        return s;
+    }
     s.block = edit::parse_editor_line(line);
     if (!s.block) {
         s.style = edit::is_table_delimiter(line) ? Style::table_delimiter : Style::blank;
@@ -171,7 +176,7 @@ Shown classify(const std::string& line) {
 // Lines whose block shows no text of its own keep the line itself.
 bool keeps_code(Style s) {
     return s == Style::print_page_break || s == Style::braille_page_break || s == Style::table_delimiter ||
-           s == Style::blank || s == Style::braille;
+           s == Style::blank || s == Style::braille || s == Style::box_start || s == Style::box_end;
 }
 
 }  // namespace
@@ -226,6 +231,11 @@ QTextBlockFormat block_format(Style style, int level) {
         case Style::table_delimiter:
             f.setBackground(kRuleTint);
             f.setBottomMargin(0);
+            break;
+        case Style::box_start:
+        case Style::box_end:
+            // The box line: a tinted band the pane writes the box's name on.
+            f.setBackground(kBoxTint);
             break;
         default:
             break;

@@ -5,7 +5,8 @@
 // structure as Qt's rich text (a heading's level and font, a list's numbers
 // or bullets from a QTextList, emphasis as char formats, a table row as its
 // cells at tab stops, a page break as an empty block the pane draws as a
-// rule) and no markup characters; and the way back, a block to its line
+// rule, a box as its box lines around its blocks, underline and raised or
+// lowered text as char formats) and no markup characters; and the way back, a block to its line
 // through core's Markdown writer. One block per line keeps the braille pane,
 // the cursor map and the live layout working line by line (docs/editor.md).
 #include <QFont>
@@ -33,6 +34,8 @@ enum class Style : int {
     table_row,
     table_delimiter,  // a table's "| --- |" line: a thin rule under the header row
     blank,            // a line that stands for no block
+    box_start,        // "<!-- box -->": the line above a box's blocks, drawn as a box line
+    box_end,          // "<!-- /box -->": the line below them
 };
 
 inline constexpr int kStyle = QTextFormat::UserProperty + 1;      // block: Style

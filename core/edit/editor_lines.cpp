@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "common/utf8.hpp"
+#include "document/markdown_html.hpp"
 #include "export/document_save.hpp"
 #include "export/office_export.hpp"
 #include "export/markdown_syntax.hpp"
@@ -79,7 +80,9 @@ std::vector<document::Span> parse_inline(std::string_view content, bool whole_li
                 const auto n = static_cast<std::size_t>(std::stoul(s.text));
                 if (n >= 1 && n <= labels.size()) s.text = labels[n - 1];
                 spans.push_back(std::move(s));
-            } else if (!spans.empty() && !spans.back().note_reference && spans.back().emphasis == s.emphasis) {
+            } else if (!spans.empty() && !spans.back().note_reference && spans.back().emphasis == s.emphasis &&
+                       spans.back().position == s.position && spans.back().language == s.language &&
+                       spans.back().transcriber_note == s.transcriber_note) {
                 spans.back().text += s.text;
             } else {
                 spans.push_back(std::move(s));
@@ -108,6 +111,14 @@ Dialect dialect_for(std::string_view name) {
     std::string ext(name.substr(dot + 1));
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return ext == "txt" || ext == "text" ? Dialect::text : Dialect::markdown;
+}
+
+int box_line(std::string_view line, Dialect dialect) {
+    if (dialect != Dialect::markdown) return 0;
+    const auto t = trim(line);
+    if (t == document::markdown_html::kBoxStart) return +1;
+    if (t == document::markdown_html::kBoxEnd) return -1;
+    return 0;
 }
 
 bool is_table_delimiter(std::string_view line) { return exporter::is_markdown_table_delimiter(line); }
@@ -367,7 +378,7 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
                 // escaped form, which reads back as the same block.
                 kept.push_back(exporter::markdown_line(*block));
             else
-                kept.push_back(block || is_table_delimiter(l) ? l : std::string());
+                kept.push_back(block || is_table_delimiter(l) || box_line(l) != 0 ? l : std::string());
         }
         return with_line_ending(exporter::join_markdown_lines(kept), line_ending);
     }

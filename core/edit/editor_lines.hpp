@@ -5,7 +5,11 @@
 // - Markdown (a .md, .docx, ...): "# Heading", "  - nested item", "3. numbered
 //   item", "<!-- pagebreak 12 -->" or "---", "| a | b |" (a table row; the
 //   delimiter row "|---|---|" under it makes it the header row), a paragraph
-//   with *italic* and **bold**; the lines are core's Markdown writer's
+//   with *italic* and **bold**, <u>underline</u>, <sup>raised</sup> and
+//   <sub>lowered</sub> text, <span lang="de">a passage's language</span>,
+//   "<!-- box -->" ... "<!-- /box -->" lines around a box's blocks (the HTML
+//   core's Markdown writer and importer share, document/markdown_html.hpp);
+//   the lines are core's Markdown writer's
 //   (export/text_export.hpp), which core's importer reads again.
 // - Text (a .txt): the file's own lines, as the author wrote them, with no
 //   escapes and no marks; blank lines separate paragraphs, whose lines run on
@@ -34,6 +38,11 @@ Dialect dialect_for(std::string_view file_name);
 // numbers it: document/print_page.hpp). A table row gives its table_row block;
 // its cells are parse_table_cells's.
 std::optional<document::Block> parse_editor_line(std::string_view utf8, Dialect dialect = Dialect::markdown);
+
+// A box line (document/markdown_html.hpp, "<!-- box -->" and "<!-- /box -->"):
+// +1 starts a box, -1 ends one, 0 for any other line. It stands for no block;
+// the blocks between a box's lines are the box (LiveLayout::document()).
+int box_line(std::string_view utf8, Dialect dialect = Dialect::markdown);
 
 // The cells of a table row line ("| a | *b* |"), one table_cell block each.
 std::vector<document::Block> parse_table_cells(std::string_view utf8);

@@ -118,7 +118,16 @@ document::Document LiveLayout::document() const {
     doc.braille_grid = braille_grid_;
     doc.metadata = metadata_;
     std::optional<document::BrailleSection> mark;  // a section starts at the next block
+    // Boxes numbered 1, 2, 3 in order, as the importer numbers them; a box
+    // line inside a box is part of it (DocumentBuilder::begin_box).
+    int boxes = 0, box = 0, box_depth = 0;
     for (std::size_t i = 0; i < entries_.size();) {
+        if (const int step = box_line(entries_[i].line, dialect_); step != 0) {
+            if (step > 0 && box_depth++ == 0) box = ++boxes;
+            if (step < 0 && box_depth > 0 && --box_depth == 0) box = 0;
+            ++i;
+            continue;
+        }
         std::size_t end = i + 1;
         std::size_t width = 0;
         std::vector<document::Align> aligns;  // the columns', from the delimiter row
@@ -145,6 +154,7 @@ document::Document LiveLayout::document() const {
             }
             doc.blocks.push_back(*e.block);
             doc.blocks.back().source_line = line;
+            doc.blocks.back().box = box;
             if (dialect_ == Dialect::text) {
                 // The further blocks a text line starts (after a form feed inside it).
                 for (const auto& b : e.cells) {
@@ -157,6 +167,7 @@ document::Document LiveLayout::document() const {
             for (const auto& cell : e.cells) {
                 doc.blocks.push_back(cell);
                 doc.blocks.back().source_line = line;
+                doc.blocks.back().box = box;
                 align(doc.blocks.back());
             }
             for (auto c = e.cells.size(); c < width; ++c) {
@@ -164,6 +175,7 @@ document::Document LiveLayout::document() const {
                 empty.kind = document::BlockKind::table_cell;
                 empty.level = static_cast<int>(c);
                 empty.source_line = line;
+                empty.box = box;
                 align(empty);
                 doc.blocks.push_back(std::move(empty));
             }

@@ -174,6 +174,12 @@ private:
         std::size_t pages_before = 0;  // paginator state before this entry
         std::size_t lines_before = 0;
         bool settled_before = false;  // no table or list was open before this entry
+        // Before this entry: the box the box lines above have open (box_line),
+        // and the paginator's (the last block's; a box is closed when the
+        // next block comes), as numbered in the last layout.
+        int box_open_before = 0;
+        int box_depth_before = 0;  // box lines opened and not closed (a box in a box is part of it)
+        int box_laid_before = 0;
     };
 
     LiveLayout(translate::Translator translator, layout::LayoutOptions options)

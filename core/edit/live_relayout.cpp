@@ -244,6 +244,13 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         // What came before the restart decides the blank line before it.
         pag.set_previous_kind(previous_kind(k));
     }
+    // The box open at the restart goes on (its top line is on the pages kept).
+    // Boxes are numbered 1 and 2 in turn: the paginator only tells a box from
+    // the one before it.
+    int box = k > 0 ? entries_[k].box_open_before : 0;
+    int depth = k > 0 ? entries_[k].box_depth_before : 0;
+    int laid = k > 0 ? entries_[k].box_laid_before : 0;
+    if (laid != 0) pag.continue_box(laid);
     std::vector<layout::Page> old = std::move(paged_.pages);
     paged_.pages.clear();
     paged_.pages.reserve(old.size() + 8);
@@ -255,6 +262,8 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         // The old layout was settled here too: a table it had open then is not in its lines.
         if (!e.settled_before || page != e.pages_before || pag.body_lines() != e.lines_before || page >= old.size())
             return false;
+        // In the same box, or in none, as the last layout was here.
+        if (e.box_open_before != box || e.box_depth_before != depth || e.box_laid_before != laid) return false;
         const auto& rows = old[page].lines;
         const auto row0 = static_cast<std::size_t>(body_top(page));
         const auto margin = static_cast<std::size_t>(options_.left_margin);
@@ -283,19 +292,39 @@ RelayoutStats LiveLayout::relayout_from(std::size_t first, std::size_t unchanged
         e.pages_before = base + pag.pages_closed();
         e.lines_before = pag.body_lines();
         e.settled_before = pag.settled();
+        e.box_open_before = box;
+        e.box_depth_before = depth;
+        e.box_laid_before = laid;
+        // A box line opens or closes a box for the blocks after it (a box in a
+        // box is part of it, as LiveLayout::document() reads them); a box
+        // right after another gets the other number.
+        if (const int step = box_line(e.line, dialect_); step != 0) {
+            if (step > 0 && depth++ == 0) box = laid == 1 ? 2 : 1;
+            if (step < 0 && depth > 0 && --depth == 0) box = 0;
+            continue;
+        }
         if (dialect_ == Dialect::markdown && starts_table_line(e.line) && j >= table_end) {
             table_end = j;
             while (table_end < entries_.size() && starts_table_line(entries_[table_end].line)) ++table_end;
             columns = table_columns(j);
         }
         if (e.block && !e.error) {
+            const auto kind = e.block->kind;
+            if (document::is_text_kind(kind) || kind == document::BlockKind::braille ||
+                kind == document::BlockKind::table_row)
+                laid = box;  // as Paginator::add enters a box
+            e.translated.box = box;
             pag.add(e.translated);
-            for (const auto& cell : e.translated_cells) pag.add(cell);
+            for (auto& cell : e.translated_cells) {
+                cell.box = box;
+                pag.add(cell);
+            }
             if (e.block->kind == document::BlockKind::table_row)
                 for (auto c = e.translated_cells.size(); c < columns; ++c) {
                     translate::TranslatedBlock empty;  // as document() pads the row
                     empty.kind = document::BlockKind::table_cell;
                     empty.level = static_cast<int>(c);
+                    empty.box = box;
                     pag.add(empty);
                 }
         }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "common/file_io.hpp"
+#include "export/markdown_syntax.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
 #include "export/text_export.hpp"
@@ -18,6 +19,15 @@ std::string lower(std::string_view s) {
     return out;
 }
 
+// A list item's text starts with its bullet or number, as every Markdown
+// item has one (a roman "IV." from a DOCX list is text, not a mark).
+bool has_item_mark(const document::Block& b) {
+    if (b.spans.empty() || b.spans.front().note_reference) return false;
+    const auto& t = b.spans.front().text;
+    const auto n = markdown::ordinal_length(t);
+    return t.starts_with(markdown::kBullet) || (n > 0 && n < t.size() && t[n] == ' ');
+}
+
 // What Markdown and plain text do not hold, named as the office writers name
 // theirs (office::Losses): the construct, how many, the first block.
 std::vector<std::string> print_losses(const document::Document& document, DocumentFormat format) {
@@ -25,7 +35,11 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
     const bool text = format == DocumentFormat::text;
     for (std::size_t i = 0; i < document.blocks.size(); ++i) {
         const auto& b = document.blocks[i];
-        if (b.box != 0) losses.add("a box is written as the blocks in it, without the box", i);
+        if (b.kind == document::BlockKind::table_cell && b.span > 1)
+            losses.add("a merged cell is written as its columns", i);
+        if (text && b.box != 0) losses.add("a box is written as the blocks in it, without the box", i);
+        if (!text && b.kind == document::BlockKind::list_item && !has_item_mark(b))
+            losses.add("a list item without a bullet or number is written with a bullet", i);
         if (text) {
             switch (b.kind) {
                 case document::BlockKind::heading: losses.add("a heading is written as a plain line", i); break;
@@ -39,9 +53,10 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
         for (const auto& s : b.spans) {
             if (text && (s.emphasis & (document::emphasis_bold | document::emphasis_italic)))
                 losses.add("bold and italic are left out", i);
+            if (s.transcriber_note) losses.add("an image's description is written as plain text", i);
+            if (!text) continue;  // Markdown keeps the rest (document/markdown_html.hpp)
             if (s.emphasis & document::emphasis_underline) losses.add("underline is left out", i);
             if (s.position != document::Position::baseline) losses.add("raised and lowered text is written on the line", i);
-            if (s.transcriber_note) losses.add("an image's description is written as plain text", i);
             if (!s.language.empty()) losses.add("a passage's language is left out", i);
         }
     }

@@ -3,6 +3,7 @@
 #include "export/text_export.hpp"
 
 #include "document/cell_paragraphs.hpp"
+#include "document/markdown_html.hpp"
 #include "document/soft_break.hpp"
 
 #include <algorithm>
@@ -112,6 +113,7 @@ std::string render_spans(const std::vector<document::Span>& spans, bool in_table
             if (spans[k].note_reference) return '[';
             const auto joined = document::soft_breaks_as_spaces(spans[k].text);
             if (joined.empty()) continue;
+            if (!document::markdown_html::open_tags(spans[k]).empty()) return '<';
             const auto mark = emphasis_mark(spans[k].emphasis);
             return mark.empty() || is_space(joined.front()) || trim(joined).empty() ? joined.front() : mark.front();
         }
@@ -128,10 +130,17 @@ std::string render_spans(const std::vector<document::Span>& spans, bool in_table
         const auto joined = document::soft_breaks_as_spaces(span.text);
         std::string_view t = joined;
         const auto mark = emphasis_mark(span.emphasis);
+        // Underline, raised and lowered text and a language are tags around
+        // the whole text, its spaces too, and around the emphasis marks.
+        const auto open = document::markdown_html::open_tags(span);
+        const auto close = document::markdown_html::close_tags(span);
+        out += open;
         const char before = out.empty() ? ' ' : out.back();
+        const char after = close.empty() ? first_written(k + 1) : '<';
         const auto core = trim(t);
         if (mark.empty() || core.empty()) {
-            out += escape_inline(t, in_table, before, first_written(k + 1));
+            out += escape_inline(t, in_table, before, after);
+            out += close;
             continue;
         }
         // Emphasis marks must touch the words: keep surrounding spaces outside.
@@ -141,6 +150,7 @@ std::string render_spans(const std::vector<document::Span>& spans, bool in_table
         out += escape_inline(core, in_table, mark.front(), mark.front());
         out += mark;
         out += std::string(t.substr(lead + core.size()));
+        out += close;
     }
     return out;
 }
@@ -306,8 +316,17 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
     std::vector<std::string> lines;
     lines.reserve(document.blocks.size());
     const auto& blocks = document.blocks;
+    // A box's blocks stand between its box lines (document/markdown_html.hpp).
+    int box = 0;
+    const auto enter_box = [&](int next) {
+        if (next == box) return;
+        if (box != 0) lines.emplace_back(document::markdown_html::kBoxEnd);
+        if (next != 0) lines.emplace_back(document::markdown_html::kBoxStart);
+        box = next;
+    };
     for (std::size_t i = 0; i < blocks.size();) {
         const auto& b = blocks[i];
+        enter_box(b.box);
         if (document::is_table_kind(b.kind)) {
             // One table: its rows, each with the cells after it.
             std::vector<std::pair<bool, std::vector<document::Block>>> rows;
@@ -370,6 +389,7 @@ std::vector<std::string> markdown_lines(const document::Document& document) {
         }
         ++i;
     }
+    enter_box(0);
     return lines;
 }
 

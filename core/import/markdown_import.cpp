@@ -10,10 +10,15 @@
 //    comment <!-- pagebreak --> (<!-- pagebreak 12 --> sets the printed label);
 //    <!-- braillepage --> forces a new braille page;
 //  - code is plain text, one paragraph per line of a code block;
-//  - link and image text are kept, URLs dropped; inline HTML tags are dropped,
-//    other HTML comments are dropped, HTML blocks keep their text without tags.
+//  - <u>, <sup>, <sub> and <span lang="..."> are underline, raised and lowered
+//    text and a passage's language; <!-- box --> and <!-- /box --> lines
+//    enclose a box (document/markdown_html.hpp, the writer's own);
+//  - link and image text are kept, URLs dropped; other inline HTML tags are
+//    dropped, other HTML comments are dropped, HTML blocks keep their text
+//    without tags.
 #include <md4c.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -21,6 +26,7 @@
 
 #include "common/file_io.hpp"
 #include "common/utf8.hpp"
+#include "document/markdown_html.hpp"
 #include "import/document_builder.hpp"
 #include "import/import.hpp"
 #include "import/picture_part.hpp"
@@ -293,10 +299,11 @@ private:
         }
         switch (type) {
             case MD_TEXT_HTML:
-                // Inline tags: their content arrives as text. <br> is a hard line
-                // break, as in HTML (a table cell's paragraphs, written so by the
-                // Markdown writer, document/cell_paragraphs.hpp).
+                // A tag's content arrives as text. <br> is a hard line break, as
+                // in HTML (how the Markdown writer keeps a table cell's
+                // paragraphs apart, document/cell_paragraphs.hpp).
                 if (is_line_break_tag(s)) add("\n", s);
+                else inline_tag(s);
                 return 0;
             case MD_TEXT_SOFTBR: add(" ", s); return 0;
             case MD_TEXT_BR: add("\n", s); return 0;
@@ -317,6 +324,29 @@ private:
             s.remove_prefix(nl + 1);
         }
         return 0;
+    }
+
+    // The inline tags core's writer writes for what Markdown has no mark for;
+    // any other tag is dropped (its content is text all the same).
+    void inline_tag(std::string_view html) {
+        namespace h = document::markdown_html;
+        const auto tag = h::read_tag(html);
+        if (!tag) return;
+        const int delta = tag->closing ? -1 : +1;
+        switch (tag->what) {
+            case h::Tag::What::underline: underline_ += delta; break;
+            case h::Tag::What::superscript: superscript_ += delta; break;
+            case h::Tag::What::subscript: subscript_ += delta; break;
+            case h::Tag::What::language:
+                if (!tag->closing)
+                    languages_.push_back(tag->language.empty() && !languages_.empty() ? languages_.back() : tag->language);
+                else if (!languages_.empty())
+                    languages_.pop_back();
+                break;
+        }
+        underline_ = std::max(underline_, 0);
+        superscript_ = std::max(superscript_, 0);
+        subscript_ = std::max(subscript_, 0);
     }
 
     void open_text_block() {
@@ -395,7 +425,8 @@ private:
             auto doc = inner.builder().finish();
             if (doc)
                 for (const auto& b : doc->blocks)
-                    for (const auto& span : b.spans) builder.add_text(span.text, span.emphasis);
+                    for (const auto& span : b.spans)
+                        builder.add_text(span.text, span.emphasis, span.position, span.language);
         }
         builder.end_note();
     }
@@ -417,7 +448,10 @@ private:
         const auto emphasis = static_cast<std::uint8_t>(
             (italic_ > 0 ? document::emphasis_italic : 0) | (bold_ > 0 ? document::emphasis_bold : 0) |
             (underline_ > 0 ? document::emphasis_underline : 0));
-        builder_.add_text(s, emphasis);
+        const auto position = superscript_ > 0 ? document::Position::superscript
+                              : subscript_ > 0 ? document::Position::subscript
+                                               : document::Position::baseline;
+        builder_.add_text(s, emphasis, position, languages_.empty() ? std::string_view() : languages_.back());
     }
 
     void leave_html() {
@@ -433,6 +467,12 @@ private:
             } else if (body == "braillepage") {
                 // Written by the editor for a forced braille page (a BRF form feed).
                 builder_.braille_page_break(line, DocumentBuilder::BrailleBreak::written);
+            } else if (body == document::markdown_html::kBoxStartBody) {
+                builder_.end();
+                builder_.begin_box();
+            } else if (body == document::markdown_html::kBoxEndBody) {
+                builder_.end();
+                builder_.end_box();
             }
             return;  // any other comment is not content
         }
@@ -468,6 +508,8 @@ private:
     int html_line_ = 0;
     int segment_start_ = 1;
     int italic_ = 0, bold_ = 0, underline_ = 0;
+    int superscript_ = 0, subscript_ = 0;
+    std::vector<std::string> languages_;  // the open <span>s', innermost last
 };
 
 }  // namespace

@@ -54,6 +54,9 @@ public:
     // page's lines (the editor's restart): the blank line before the next block
     // depends on it (blank_line_before).
     void set_previous_kind(std::optional<document::BlockKind> kind) { last_kind_ = kind; }
+    // A restart inside a box (the live layout's): the blocks that follow with
+    // this box number go on in it, with no top box line drawn again.
+    void continue_box(int box) { box_ = box; }
 
 private:
     [[nodiscard]] bool numbered(std::size_t page_index) const;

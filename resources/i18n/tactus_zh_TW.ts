@@ -272,12 +272,12 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="613"/>
+        <location filename="../../widgets/editor_widget.cpp" line="704"/>
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="123"/>
+        <location filename="../../widgets/editor_widget.cpp" line="128"/>
         <source>Print page break</source>
         <translation>原書換頁</translation>
     </message>
@@ -287,48 +287,58 @@
         <translation>點字分頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="123"/>
+        <location filename="../../widgets/editor_widget.cpp" line="128"/>
         <source>Print page break, page %1</source>
         <translation>原書換頁，第 %1 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="133"/>
+        <location filename="../../widgets/editor_widget.cpp" line="138"/>
         <source>Heading level %1</source>
         <translation>標題層級 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="138"/>
+        <location filename="../../widgets/editor_widget.cpp" line="143"/>
         <source>List item %1</source>
         <translation>清單項目 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="139"/>
-        <location filename="../../widgets/editor_widget.cpp" line="140"/>
+        <location filename="../../widgets/editor_widget.cpp" line="144"/>
+        <location filename="../../widgets/editor_widget.cpp" line="145"/>
         <source>List item</source>
         <translation>清單項目</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="142"/>
+        <location filename="../../widgets/editor_widget.cpp" line="147"/>
         <source>Quotation</source>
         <translation>引文</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="144"/>
+        <location filename="../../widgets/editor_widget.cpp" line="149"/>
         <source>Note</source>
         <translation>註解</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="161"/>
+        <location filename="../../widgets/editor_widget.cpp" line="151"/>
+        <source>Box</source>
+        <translation>方框</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="153"/>
+        <source>End of box</source>
+        <translation>方框結束</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="170"/>
         <source>Table header row, %1 columns</source>
         <translation>表格標題列，%1 欄</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="162"/>
+        <location filename="../../widgets/editor_widget.cpp" line="171"/>
         <source>Table row %1 of %2</source>
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="609"/>
+        <location filename="../../widgets/editor_widget.cpp" line="700"/>
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -376,41 +386,41 @@
         <translation>要列印的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="82"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="78"/>
         <source>Whole document</source>
         <translation>整份文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="85"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="81"/>
         <source>Volume %1 of %2</source>
         <translation>第 %1 冊，共 %2 冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="86"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="82"/>
         <source>Page range</source>
         <translation>頁碼範圍</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="122"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="118"/>
         <source>No pages chosen: %1</source>
         <translation>未選擇任何頁：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="128"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>整份文件：%n 張</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="130"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="126"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>第 %1 冊，共 %2 冊：%n 張</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="135"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="131"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>第 %1 頁到第 %2 頁：%n 張</numerusform>
@@ -522,11 +532,11 @@
     <name>tactus::gui::MainWindow</name>
     <message>
         <location filename="../../widgets/main_window.cpp" line="72"/>
-        <location filename="../../widgets/main_window.cpp" line="639"/>
-        <location filename="../../widgets/main_window.cpp" line="808"/>
-        <location filename="../../widgets/main_window.cpp" line="862"/>
-        <location filename="../../widgets/main_window.cpp" line="888"/>
-        <location filename="../../widgets/main_window.cpp" line="905"/>
+        <location filename="../../widgets/main_window.cpp" line="642"/>
+        <location filename="../../widgets/main_window.cpp" line="811"/>
+        <location filename="../../widgets/main_window.cpp" line="865"/>
+        <location filename="../../widgets/main_window.cpp" line="891"/>
+        <location filename="../../widgets/main_window.cpp" line="908"/>
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -627,7 +637,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="235"/>
-        <location filename="../../widgets/main_window.cpp" line="912"/>
+        <location filename="../../widgets/main_window.cpp" line="915"/>
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -863,314 +873,334 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="326"/>
+        <source>Und&amp;erline</source>
+        <translation>底線(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="326"/>
+        <source>Ctrl+U</source>
+        <translation>Ctrl+U</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="328"/>
+        <source>Bo&amp;x</source>
+        <translation>方框(&amp;X)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="328"/>
+        <source>Ctrl+Alt+X</source>
+        <translation>Ctrl+Alt+X</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="329"/>
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329"/>
+        <location filename="../../widgets/main_window.cpp" line="332"/>
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330"/>
+        <location filename="../../widgets/main_window.cpp" line="333"/>
         <source>Show the print text&apos;s Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="340"/>
+        <location filename="../../widgets/main_window.cpp" line="343"/>
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342"/>
+        <location filename="../../widgets/main_window.cpp" line="345"/>
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="349"/>
+        <location filename="../../widgets/main_window.cpp" line="352"/>
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="354"/>
+        <location filename="../../widgets/main_window.cpp" line="357"/>
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="357"/>
+        <location filename="../../widgets/main_window.cpp" line="360"/>
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="366"/>
+        <location filename="../../widgets/main_window.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="408"/>
+        <location filename="../../widgets/main_window.cpp" line="411"/>
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="415"/>
+        <location filename="../../widgets/main_window.cpp" line="418"/>
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="420"/>
-        <location filename="../../widgets/main_window.cpp" line="583"/>
+        <location filename="../../widgets/main_window.cpp" line="423"/>
+        <location filename="../../widgets/main_window.cpp" line="586"/>
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="430"/>
+        <location filename="../../widgets/main_window.cpp" line="433"/>
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="432"/>
+        <location filename="../../widgets/main_window.cpp" line="435"/>
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="433"/>
+        <location filename="../../widgets/main_window.cpp" line="436"/>
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="436"/>
+        <location filename="../../widgets/main_window.cpp" line="439"/>
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="457"/>
+        <location filename="../../widgets/main_window.cpp" line="460"/>
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459"/>
+        <location filename="../../widgets/main_window.cpp" line="462"/>
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="483"/>
+        <location filename="../../widgets/main_window.cpp" line="486"/>
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="484"/>
+        <location filename="../../widgets/main_window.cpp" line="487"/>
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="491"/>
+        <location filename="../../widgets/main_window.cpp" line="494"/>
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="506"/>
+        <location filename="../../widgets/main_window.cpp" line="509"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="514"/>
+        <location filename="../../widgets/main_window.cpp" line="517"/>
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="541"/>
+        <location filename="../../widgets/main_window.cpp" line="544"/>
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="546"/>
+        <location filename="../../widgets/main_window.cpp" line="549"/>
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="547"/>
+        <location filename="../../widgets/main_window.cpp" line="550"/>
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="567"/>
+        <location filename="../../widgets/main_window.cpp" line="570"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>已開啟 %1：%n 張</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="569"/>
+        <location filename="../../widgets/main_window.cpp" line="572"/>
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="572"/>
+        <location filename="../../widgets/main_window.cpp" line="575"/>
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="577"/>
+        <location filename="../../widgets/main_window.cpp" line="580"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>有 %n 行無法轉譯，未列入點字</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="604"/>
+        <location filename="../../widgets/main_window.cpp" line="607"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>圖形 %1 | %n 張</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="612"/>
+        <location filename="../../widgets/main_window.cpp" line="615"/>
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="615"/>
+        <location filename="../../widgets/main_window.cpp" line="618"/>
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="615"/>
+        <location filename="../../widgets/main_window.cpp" line="618"/>
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="626"/>
-        <location filename="../../widgets/main_window.cpp" line="809"/>
-        <location filename="../../widgets/main_window.cpp" line="820"/>
-        <location filename="../../widgets/main_window.cpp" line="962"/>
+        <location filename="../../widgets/main_window.cpp" line="629"/>
+        <location filename="../../widgets/main_window.cpp" line="812"/>
+        <location filename="../../widgets/main_window.cpp" line="823"/>
+        <location filename="../../widgets/main_window.cpp" line="965"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="631"/>
+        <location filename="../../widgets/main_window.cpp" line="634"/>
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="649"/>
+        <location filename="../../widgets/main_window.cpp" line="652"/>
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="662"/>
+        <location filename="../../widgets/main_window.cpp" line="665"/>
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="713"/>
+        <location filename="../../widgets/main_window.cpp" line="716"/>
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="958"/>
+        <location filename="../../widgets/main_window.cpp" line="961"/>
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="721"/>
+        <location filename="../../widgets/main_window.cpp" line="724"/>
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="721"/>
+        <location filename="../../widgets/main_window.cpp" line="724"/>
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="723"/>
+        <location filename="../../widgets/main_window.cpp" line="726"/>
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="745"/>
+        <location filename="../../widgets/main_window.cpp" line="748"/>
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="754"/>
+        <location filename="../../widgets/main_window.cpp" line="757"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>已匯出 %1（%n 張）</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="761"/>
+        <location filename="../../widgets/main_window.cpp" line="764"/>
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="762"/>
+        <location filename="../../widgets/main_window.cpp" line="765"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="773"/>
+        <location filename="../../widgets/main_window.cpp" line="776"/>
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="808"/>
+        <location filename="../../widgets/main_window.cpp" line="811"/>
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906"/>
+        <location filename="../../widgets/main_window.cpp" line="909"/>
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="907"/>
+        <location filename="../../widgets/main_window.cpp" line="910"/>
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="913"/>
+        <location filename="../../widgets/main_window.cpp" line="916"/>
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="821"/>
+        <location filename="../../widgets/main_window.cpp" line="824"/>
         <source>The printer&apos;s page is too small for the pages of %1. Lay the braille out again on the printer&apos;s page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="835"/>
+        <location filename="../../widgets/main_window.cpp" line="838"/>
         <source>The pages of %1 are %2 cells by %3 lines; the printer&apos;s page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="844"/>
+        <location filename="../../widgets/main_window.cpp" line="847"/>
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="844"/>
+        <location filename="../../widgets/main_window.cpp" line="847"/>
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="848"/>
+        <location filename="../../widgets/main_window.cpp" line="851"/>
         <source>The pages of %1 differ by volume: %2. The printer&apos;s page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="986"/>
+        <location filename="../../widgets/main_window.cpp" line="989"/>
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="849"/>
+        <location filename="../../widgets/main_window.cpp" line="852"/>
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="854"/>
+        <location filename="../../widgets/main_window.cpp" line="857"/>
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer&apos;s page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1180,198 +1210,198 @@
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="697"/>
+        <location filename="../../widgets/main_window.cpp" line="700"/>
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878"/>
+        <location filename="../../widgets/main_window.cpp" line="881"/>
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="879"/>
+        <location filename="../../widgets/main_window.cpp" line="882"/>
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891"/>
+        <location filename="../../widgets/main_window.cpp" line="894"/>
         <source>A character does not fit the file&apos;s encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="893"/>
+        <location filename="../../widgets/main_window.cpp" line="896"/>
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="894"/>
+        <location filename="../../widgets/main_window.cpp" line="897"/>
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="895"/>
+        <location filename="../../widgets/main_window.cpp" line="898"/>
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="897"/>
+        <location filename="../../widgets/main_window.cpp" line="900"/>
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="865"/>
+        <location filename="../../widgets/main_window.cpp" line="868"/>
         <source>The printer&apos;s page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="867"/>
+        <location filename="../../widgets/main_window.cpp" line="870"/>
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="869"/>
+        <location filename="../../widgets/main_window.cpp" line="872"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="868"/>
+        <location filename="../../widgets/main_window.cpp" line="871"/>
         <source>Lay the braille out again on the printer&apos;s page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="869"/>
+        <location filename="../../widgets/main_window.cpp" line="872"/>
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="871"/>
+        <location filename="../../widgets/main_window.cpp" line="874"/>
         <source>Stopped: nothing was embossed or exported (the printer&apos;s page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="595"/>
+        <location filename="../../widgets/main_window.cpp" line="598"/>
         <source>The braille&apos;s own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="596"/>
+        <location filename="../../widgets/main_window.cpp" line="599"/>
         <source>The braille is laid out again on the printer&apos;s page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="978"/>
+        <location filename="../../widgets/main_window.cpp" line="981"/>
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1054"/>
+        <location filename="../../widgets/main_window.cpp" line="1057"/>
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1087"/>
-        <location filename="../../widgets/main_window.cpp" line="1096"/>
+        <location filename="../../widgets/main_window.cpp" line="1090"/>
+        <location filename="../../widgets/main_window.cpp" line="1099"/>
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1120"/>
+        <location filename="../../widgets/main_window.cpp" line="1123"/>
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1125"/>
+        <location filename="../../widgets/main_window.cpp" line="1128"/>
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1138"/>
+        <location filename="../../widgets/main_window.cpp" line="1141"/>
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1142"/>
+        <location filename="../../widgets/main_window.cpp" line="1145"/>
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144"/>
+        <location filename="../../widgets/main_window.cpp" line="1147"/>
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1144"/>
+        <location filename="../../widgets/main_window.cpp" line="1147"/>
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1173"/>
+        <location filename="../../widgets/main_window.cpp" line="1176"/>
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1173"/>
+        <location filename="../../widgets/main_window.cpp" line="1176"/>
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1174"/>
+        <location filename="../../widgets/main_window.cpp" line="1177"/>
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1174"/>
+        <location filename="../../widgets/main_window.cpp" line="1177"/>
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1175"/>
+        <location filename="../../widgets/main_window.cpp" line="1178"/>
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1175"/>
+        <location filename="../../widgets/main_window.cpp" line="1178"/>
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1176"/>
+        <location filename="../../widgets/main_window.cpp" line="1179"/>
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1176"/>
+        <location filename="../../widgets/main_window.cpp" line="1179"/>
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1177"/>
+        <location filename="../../widgets/main_window.cpp" line="1180"/>
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1177"/>
+        <location filename="../../widgets/main_window.cpp" line="1180"/>
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1178"/>
+        <location filename="../../widgets/main_window.cpp" line="1181"/>
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1178"/>
+        <location filename="../../widgets/main_window.cpp" line="1181"/>
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1184"/>
+        <location filename="../../widgets/main_window.cpp" line="1187"/>
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1185"/>
+        <location filename="../../widgets/main_window.cpp" line="1188"/>
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

@@ -80,13 +80,15 @@ T = {
     # The structured print pane: styles as a word processor names them.
     "St&yles": "樣式(&Y)", "&Body text": "內文(&B)", "Heading &%1": "標題 %1(&%1)", "B&ulleted list": "項目符號清單(&U)",
     "&Numbered list": "編號清單(&N)", "&Quotation": "引文(&Q)", "&Page break": "分頁(&P)", "Bol&d": "粗體(&D)",
-    "&Italic": "斜體(&I)", "Show &codes": "顯示代碼(&C)",
+    "&Italic": "斜體(&I)", "Und&erline": "底線(&E)", "Bo&x": "方框(&X)", "Show &codes": "顯示代碼(&C)",
     "Show the print text's Markdown codes instead of its styles": "以 Markdown 代碼顯示明眼字，而不是其樣式",
     "The print text with its styles: headings, lists, tables, emphasis; Styles menu to change them":
         "帶樣式的明眼字：標題、清單、表格、強調；用「樣式」功能表變更",
     "Braille page break": "點字分頁",
     "Heading level %1": "標題層級 %1", "List item %1": "清單項目 %1", "List item": "清單項目",
     "Quotation": "引文", "Note": "註解", "Table header row, %1 columns": "表格標題列，%1 欄",
+    # A box's lines (boxed material) in the structured print pane.
+    "Box": "方框", "End of box": "方框結束",
     "Table row %1 of %2": "表格第 %1 列，共 %2 列",
     "Translating with %1": "正在以 %1 轉譯", "Cannot use table %1: %2": "無法使用點字表 %1：%2", "Braille table: %1": "點字表：%1",
     "Open or import": "開啟或匯入",

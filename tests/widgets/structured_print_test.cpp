@@ -6,6 +6,7 @@
 // Styles menu change the model, keep the braille pane in step and undo.
 #include <QAction>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTextList>
 #include <algorithm>
 #include <cctype>
@@ -16,6 +17,7 @@
 #include "edit/editor_lines.hpp"
 #include "editor_widget.hpp"
 #include "gui_test_support.hpp"
+#include "import/import.hpp"
 #include "main_window.hpp"
 #include "structured_print.hpp"
 #include "translate/translator.hpp"
@@ -355,6 +357,128 @@ private Q_SLOTS:
         QCOMPARE(bc.blockNumber(), item);
         QCOMPARE(bc.positionInBlock(), editor->braille_pane()->document()->findBlockByNumber(item).length() - 1);
     }
+
+    // A DOCX with a box and raised and lowered text, opened in the app, a word
+    // underlined with Ctrl+U and a paragraph boxed from the Styles menu, saved
+    // as DOCX and opened again: the same model, with all of them.
+    void underline_boxes_and_raised_text_survive_a_docx_save() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const auto path = dir.filePath(QStringLiteral("constructs.docx"));
+        QVERIFY(QFile::copy(data("constructs/constructs.docx"), path));
+        QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+        const auto original = import::import_file(path.toStdString());
+        QVERIFY(original.has_value());
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        auto* e = w.editor();
+        auto* print = e->print_pane();
+        auto* doc = print->document();
+        const auto act = [&w](const char* name) {
+            auto* a = w.findChild<QAction*>(QString::fromLatin1(name));
+            QVERIFY2(a && a->isEnabled() && !a->shortcut().isEmpty(), name);
+            a->trigger();
+        };
+        const auto find = [doc](const QString& text) {
+            for (auto b = doc->begin(); b.isValid(); b = b.next())
+                if (b.text() == text) return b.blockNumber();
+            return -1;
+        };
+        // The box and the raised text are shown without markup, the box's
+        // lines named for a screen reader.
+        const auto lines = model_lines(*e);
+        int box = -1;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            const auto shown = block(doc, static_cast<int>(i)).text();
+            QVERIFY2(!shown.contains(QLatin1Char('<')), qPrintable(shown));
+            if (lines[i] == "<!-- box -->" && box < 0) box = static_cast<int>(i);
+        }
+        QVERIFY(box >= 0);
+        QCOMPARE(e->structure_text(box), QStringLiteral("Box"));
+        const int area = find(QStringLiteral("Area m2 and mass m2."));
+        QVERIFY(area >= 0);
+        bool raised = false, lowered = false;
+        for (auto it = block(doc, area).begin(); !it.atEnd(); ++it) {
+            const auto v = it.fragment().charFormat().verticalAlignment();
+            raised = raised || v == QTextCharFormat::AlignSuperScript;
+            lowered = lowered || v == QTextCharFormat::AlignSubScript;
+        }
+        QVERIFY(raised && lowered);
+
+        // Ctrl+U on the first word of "After the box.", and on again off.
+        const int after = find(QStringLiteral("After the box."));
+        QVERIFY(after >= 0);
+        QTextCursor c(block(doc, after));
+        c.movePosition(QTextCursor::EndOfWord, QTextCursor::KeepAnchor);
+        print->setTextCursor(c);
+        act("formatUnderline");
+        QCOMPARE(model_lines(*e)[static_cast<std::size_t>(after)], std::string("<u>After</u> the box."));
+        act("formatUnderline");
+        QCOMPARE(model_lines(*e)[static_cast<std::size_t>(after)], std::string("After the box."));
+        act("formatUnderline");
+        // The Box style on the paragraph: a box line above and below it; undone and done again.
+        const auto before_box = e->text();
+        print->setTextCursor(QTextCursor(block(doc, after)));
+        act("formatBox");
+        auto now = model_lines(*e);
+        QCOMPARE(now[static_cast<std::size_t>(after)], std::string("<!-- box -->"));
+        QCOMPARE(now[static_cast<std::size_t>(after) + 1], std::string("<u>After</u> the box."));
+        QCOMPARE(now[static_cast<std::size_t>(after) + 2], std::string("<!-- /box -->"));
+        QCOMPARE(e->braille_pane()->document()->blockCount(), doc->blockCount());
+        QVERIFY(block(doc, after).text().isEmpty());
+        e->undo_stack()->undo();
+        QCOMPARE(e->text(), before_box);
+        e->undo_stack()->redo();
+        QCOMPARE(model_lines(*e)[static_cast<std::size_t>(after)], std::string("<!-- box -->"));
+        // Box again, inside the box: out of it.
+        print->setTextCursor(QTextCursor(block(doc, after + 1)));
+        act("formatBox");
+        QCOMPARE(e->text(), before_box);
+        act("formatBox");
+
+        QVERIFY(w.save_to(path));
+        MainWindow again;
+        QVERIFY(again.open_file_now(path));
+        QVERIFY(again.editor()->layout().document().blocks == e->layout().document().blocks);
+        QCOMPARE(again.editor()->text(), e->text());
+        // What the file held is there, and the new underline and box besides.
+        const auto reopened = import::import_file(path.toStdString());
+        QVERIFY(reopened.has_value());
+        const auto texts = [](const document::Document& d, auto&& has) {
+            QStringList out;
+            for (const auto& b : d.blocks)
+                for (const auto& s : b.spans)
+                    if (has(b, s)) out << QString::fromStdString(s.text);
+            return out;
+        };
+        const auto in_box = [](const document::Block& b, const document::Span&) { return b.box != 0; };
+        const auto up = [](const document::Block&, const document::Span& s) {
+            return s.position == document::Position::superscript;
+        };
+        const auto down = [](const document::Block&, const document::Span& s) {
+            return s.position == document::Position::subscript;
+        };
+        const auto underlined = [](const document::Block&, const document::Span& s) {
+            return (s.emphasis & document::emphasis_underline) != 0;
+        };
+        QVERIFY(!texts(*original, in_box).isEmpty() && !texts(*original, up).isEmpty());
+        const QStringList new_box{QStringLiteral("After"), QStringLiteral(" the box.")};
+        QCOMPARE(texts(*reopened, in_box), texts(*original, in_box) + new_box);
+        QCOMPARE(texts(*reopened, up), texts(*original, up));
+        QCOMPARE(texts(*reopened, down), texts(*original, down));
+        QCOMPARE(texts(*reopened, underlined), texts(*original, underlined) + QStringList{QStringLiteral("After")});
+    }
+
+    // Show codes shows the tags the structure hides.
+    void show_codes_shows_the_tags() {
+        open(data("lesson.docx"));
+        QVERIFY(!editor->print_pane()->toPlainText().contains(QStringLiteral("<u>")));
+        editor->set_codes_shown(true);
+        QVERIFY(editor->print_pane()->toPlainText().contains(QStringLiteral("<u>water cycle</u>")));
+    }
+
+private:
+    static QTextBlock block(QTextDocument* doc, int n) { return doc->findBlockByNumber(n); }
 };
 
 QTEST_MAIN(StructuredPrintTest)
