@@ -59,7 +59,11 @@ enum class BlockKind : std::uint8_t {
                       // block of another kind
     table_cell,       // one cell's text (may be empty); level = column, 0-based;
                       // `span` = the columns it covers (a merged cell: DOCX
-                      // w:gridSpan, ODT table:number-columns-spanned)
+                      // w:gridSpan, ODT table:number-columns-spanned). A line
+                      // break ("\n") in its text ends one of the cell's
+                      // paragraphs: braille starts the next on a line of its own,
+                      // writers write each as a paragraph of the cell
+                      // (document/cell_paragraphs.hpp, docs/layout.md "Tables")
 };
 
 // Blocks whose spans are print text to translate.

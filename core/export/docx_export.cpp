@@ -10,6 +10,7 @@
 #include <array>
 #include <map>
 
+#include "document/cell_paragraphs.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
 #include "export/zip_writer.hpp"
@@ -336,15 +337,21 @@ private:
                 const int span = std::max(cell.span, 1);
                 out += "<w:tc><w:tcPr><w:tcW w:w=\"" + std::to_string(width * span) + "\" w:type=\"dxa\"/>";
                 if (span > 1) out += "<w:gridSpan w:val=\"" + std::to_string(span) + "\"/>";
-                out += "</w:tcPr><w:p>";
-                if (cell.align == document::Align::centre) out += "<w:pPr><w:jc w:val=\"center\"/></w:pPr>";
-                if (cell.align == document::Align::right) out += "<w:pPr><w:jc w:val=\"right\"/></w:pPr>";
+                out += "</w:tcPr>";
+                std::string ppr;
+                if (cell.align == document::Align::centre) ppr = "<w:pPr><w:jc w:val=\"center\"/></w:pPr>";
+                if (cell.align == document::Align::right) ppr = "<w:pPr><w:jc w:val=\"right\"/></w:pPr>";
                 if (cell.align == document::Align::left) {
-                    out += "<w:pPr><w:jc w:val=\"left\"/></w:pPr>";
+                    ppr = "<w:pPr><w:jc w:val=\"left\"/></w:pPr>";
                     losses_.add("a column aligned left comes back as not aligned (left is DOCX's default)", k);
                 }
-                runs(out, cell.spans, k);
-                out += "</w:p></w:tc>";
+                // Each of the cell's paragraphs a w:p of its own (document/cell_paragraphs.hpp).
+                for (const auto& paragraph : document::cell_paragraphs(cell.spans)) {
+                    out += "<w:p>" + ppr;
+                    runs(out, paragraph, k);
+                    out += "</w:p>";
+                }
+                out += "</w:tc>";
                 column = std::max(column, cell.level) + span;
             }
             out += "</w:tr>";

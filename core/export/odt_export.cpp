@@ -11,6 +11,7 @@
 #include <array>
 #include <map>
 
+#include "document/cell_paragraphs.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
 #include "export/zip_writer.hpp"
@@ -437,7 +438,12 @@ private:
                 out += ">";
                 if (cell.align == document::Align::left)
                     losses_.add("a column aligned left comes back as not aligned (left is ODT's default)", k);
-                paragraph(out, cell, k, false);
+                // Each of the cell's paragraphs a text:p of its own (document/cell_paragraphs.hpp).
+                for (auto& spans : document::cell_paragraphs(cell.spans)) {
+                    Block piece = cell;
+                    piece.spans = std::move(spans);
+                    paragraph(out, piece, k, false);
+                }
                 out += "</table:table-cell>";
                 for (int c = 1; c < span; ++c) out += "<table:covered-table-cell/>";
                 column = std::max(column, cell.level) + span;

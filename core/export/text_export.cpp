@@ -2,6 +2,7 @@
 #include "export/markdown_syntax.hpp"
 #include "export/text_export.hpp"
 
+#include "document/cell_paragraphs.hpp"
 #include "document/markdown_html.hpp"
 #include "document/soft_break.hpp"
 
@@ -272,7 +273,11 @@ std::string markdown_table_row(std::span<const document::Block> cells) {
         // A cell keeps its column (`level`): the columns a merged cell covers
         // before it are empty entries, as Markdown has no merged cells.
         while (static_cast<int>(texts.size()) < c.level) texts.emplace_back();
-        auto text = render_spans(c.spans, true);
+        // The cell's paragraphs (document/cell_paragraphs.hpp) <br> apart: a
+        // pipe table's cell is one line, and the importer reads <br> back as the break.
+        std::string text;
+        const auto paragraphs = document::cell_paragraphs(c.spans);
+        for (std::size_t p = 0; p < paragraphs.size(); ++p) text += (p ? "<br>" : "") + render_spans(paragraphs[p], true);
         // An entry of dashes alone would make the row read as the delimiter row.
         if (!trim(text).empty() && trim(text).find_first_not_of("-: ") == std::string_view::npos)
             text.insert(text.find_first_not_of(' '), 1, '\\');

@@ -77,6 +77,14 @@ std::string decode_entity(std::string_view e) {
     return std::string(e);
 }
 
+// <br>, <br/> or <br /> in any case.
+bool is_line_break_tag(std::string_view tag) {
+    if (tag.size() < 4 || tag.front() != '<' || tag.back() != '>') return false;
+    auto name = tag.substr(1, tag.size() - 2);
+    while (!name.empty() && (name.back() == '/' || name.back() == ' ')) name.remove_suffix(1);
+    return name.size() == 2 && (name[0] | 0x20) == 'b' && (name[1] | 0x20) == 'r';
+}
+
 // Text of an HTML block with the tags removed (a <div> around a sentence).
 std::string strip_tags(std::string_view html) {
     std::string out;
@@ -290,7 +298,13 @@ private:
             return 0;
         }
         switch (type) {
-            case MD_TEXT_HTML: inline_tag(s); return 0;  // a tag's content arrives as text
+            case MD_TEXT_HTML:
+                // A tag's content arrives as text. <br> is a hard line break, as
+                // in HTML (how the Markdown writer keeps a table cell's
+                // paragraphs apart, document/cell_paragraphs.hpp).
+                if (is_line_break_tag(s)) add("\n", s);
+                else inline_tag(s);
+                return 0;
             case MD_TEXT_SOFTBR: add(" ", s); return 0;
             case MD_TEXT_BR: add("\n", s); return 0;
             case MD_TEXT_NULLCHAR: add("\xEF\xBF\xBD", s); return 0;

@@ -338,7 +338,7 @@ void MarkupWalk::text(std::string_view raw, const Context& ctx) {
             else run += ' ';
         }
         space_pending_ = false;
-        block_fresh_ = false;
+        block_fresh_ = line_pending_ = after_label_ = false;
         run += c;
     }
     if (run.empty()) return;
@@ -348,9 +348,21 @@ void MarkupWalk::text(std::string_view raw, const Context& ctx) {
 }
 
 void MarkupWalk::pending_space(const Context& ctx) {
+    if (line_pending_) {
+        // The cell's next paragraph: a line break, which no emphasis covers.
+        builder_.add_text("\n", document::emphasis_none, document::Position::baseline, {});
+        line_pending_ = false;
+        return;
+    }
     // A space between two runs is emphasised only as both are ("<b>clouds</b>
     // and": not bold), and in the language of the text before it.
     builder_.add_text(" ", static_cast<std::uint8_t>(last_emphasis_ & ctx.emphasis), document::Position::baseline, last_language_);
+}
+
+void MarkupWalk::cell_paragraph_break(const Context& ctx) {
+    space_pending_ = true;
+    // The item's own paragraph (<li><p>) goes on after its label.
+    if (ctx.kind == BlockKind::table_cell && !after_label_) line_pending_ = true;
 }
 
 Result<void> MarkupWalk::walk_children(const pugi::xml_node& node, const Context& ctx, int depth) {
@@ -418,7 +430,7 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
         return {};
     }
     if (name == "br") {
-        if (ctx.inline_only) space_pending_ = true;
+        if (ctx.inline_only) cell_paragraph_break(ctx);
         else close();
         return {};
     }
@@ -494,10 +506,11 @@ Result<void> MarkupWalk::walk(const pugi::xml_node& node, const Context& parent,
 
 Result<void> MarkupWalk::block(const pugi::xml_node& node, Context ctx, int depth) {
     if (ctx.inline_only) {
-        // A block inside a heading, a cell or a note runs on, a space apart.
-        space_pending_ = true;
+        // A block inside a heading or a note runs on, a space apart; inside
+        // a table cell it is a paragraph of the cell, a line break apart.
+        cell_paragraph_break(ctx);
         auto ok = walk_children(node, ctx, depth);
-        space_pending_ = true;
+        cell_paragraph_break(ctx);
         return ok;
     }
     close();
@@ -510,12 +523,31 @@ Result<void> MarkupWalk::block(const pugi::xml_node& node, Context ctx, int dept
 }
 
 Result<void> MarkupWalk::list(const pugi::xml_node& node, const Context& parent, int depth, bool ordered) {
+    const bool plain = node.attribute("type").value() == std::string_view("pl");
+    int number = whole_number(node.attribute("start").value(), 1);
+    if (parent.inline_only && parent.kind == BlockKind::table_cell) {
+        // A list in a table cell: each item a paragraph of the cell, with its label.
+        for (const auto& c : node.children()) {
+            if (c.type() != pugi::node_element || local_name(c) != "li") {
+                if (auto ok = c.type() == pugi::node_element ? walk(c, parent, depth + 1) : Result<void>{}; !ok) return ok;
+                continue;
+            }
+            number = whole_number(c.attribute("value").value(), number);
+            cell_paragraph_break(parent);
+            if (!plain) {
+                text(ordered ? std::to_string(number) + ". " : std::string("\u2022 "), parent);
+                after_label_ = true;
+            }
+            ++number;
+            if (auto ok = walk_children(c, parent, depth + 1); !ok) return ok;
+            cell_paragraph_break(parent);
+        }
+        return {};
+    }
     if (parent.inline_only) return walk_children(node, parent, depth);
     close();
     Context ctx = parent;
     ctx.list_depth += 1;
-    const bool plain = node.attribute("type").value() == std::string_view("pl");
-    int number = whole_number(node.attribute("start").value(), 1);
     for (const auto& c : node.children()) {
         if (c.type() == pugi::node_pcdata) {
             text(c.value(), ctx);
@@ -609,7 +641,7 @@ Result<void> MarkupWalk::table(const pugi::xml_node& node, const Context& parent
             if (const int l = line(cell); l > 0) current_line_ = l;
             builder_.begin_cell(column, current_line_, span);
             block_fresh_ = true;
-            space_pending_ = false;
+            space_pending_ = line_pending_ = after_label_ = false;
             Context c = parent;
             if (const auto lang = language_of(cell); !lang.empty())
                 c.language = lang == base_language_ ? std::string{} : std::string(lang);
@@ -658,7 +690,7 @@ Result<void> MarkupWalk::reference(const pugi::xml_node& node, const Context& ct
     if (space_pending_ && !block_fresh_) pending_space(ctx);
     space_pending_ = false;
     builder_.note_reference(label);
-    block_fresh_ = false;
+    block_fresh_ = line_pending_ = after_label_ = false;
     if (written) return {};
     ++note_number_;
     notes_written_.insert(found->second.internal_object());
@@ -679,6 +711,7 @@ Result<void> MarkupWalk::note(const pugi::xml_node& node, const Context& parent,
     }
     const bool fresh = block_fresh_;
     const bool space = space_pending_;
+    const bool line_break = line_pending_;
     if (note_depth_ == 0 && !builder_.is_open()) flush_breaks();
     builder_.begin_note(std::move(label), line(node));
     ++note_depth_;
@@ -693,6 +726,7 @@ Result<void> MarkupWalk::note(const pugi::xml_node& node, const Context& parent,
     builder_.end_note();
     block_fresh_ = fresh;
     space_pending_ = space;
+    line_pending_ = line_break;
     if (!builder_.is_open()) flush_breaks();
     return ok;
 }
@@ -736,7 +770,7 @@ void MarkupWalk::image(const pugi::xml_node& node, const Context& ctx) {
         if (!builder_.is_open()) open(ctx);
         builder_.add_text(std::string(block_fresh_ ? "" : " ") + "[" + note + "]", ctx.emphasis, document::Position::baseline, ctx.language);
         attach_picture(node);
-        block_fresh_ = false;
+        block_fresh_ = line_pending_ = after_label_ = false;
         space_pending_ = true;
         return;
     }
@@ -770,7 +804,7 @@ void MarkupWalk::math(const pugi::xml_node& node, const Context& ctx) {
     builder_.add_text(linear, ctx.emphasis, document::Position::baseline, ctx.language);
     last_emphasis_ = ctx.emphasis;
     last_language_ = ctx.language;
-    block_fresh_ = false;
+    block_fresh_ = line_pending_ = after_label_ = false;
     space_pending_ = false;
 }
 

@@ -85,6 +85,8 @@ private:
     void math(const pugi::xml_node& node, const Context& ctx);
     void text(std::string_view raw, const Context& ctx);
     void pending_space(const Context& ctx);
+    // A paragraph of a table cell ends or starts here (a block, a list item, <br>).
+    void cell_paragraph_break(const Context& ctx);
     void open(const Context& ctx);
     void close();
     void warn(const pugi::xml_node& node, std::string what);
@@ -99,6 +101,11 @@ private:
     DocumentBuilder builder_;
     int current_line_ = 0;        // the source line of the element being walked
     bool space_pending_ = false;  // white space seen since the last text
+    // In a table cell: a paragraph, list item or <br> ended since the last
+    // text, so the pending space is a line break, the cell's next paragraph
+    // (document.hpp, table_cell).
+    bool line_pending_ = false;
+    bool after_label_ = false;  // a list item's label in a cell, no text after it yet
     std::uint8_t last_emphasis_ = document::emphasis_none;  // of the last text: a pending space takes these
     std::string last_language_;
     std::string base_language_;  // the root element's: the document's own

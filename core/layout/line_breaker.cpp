@@ -52,6 +52,12 @@ std::vector<document::BrailleLine> break_lines(const document::BrailleLine& cell
             continue;
         }
         std::size_t j = unit_end(i);
+        if (kind(i) == translate::BreakBefore::paragraph && line_has_word) {
+            // The next paragraph of a table cell: a line of its own at the first-line indent.
+            new_line();
+            line.assign(first, document::Cell{});
+            space_before = false;
+        }
         if (kind(i) == translate::BreakBefore::forced && line_has_word) new_line();
         const bool space = space_before && line_has_word;
         space_before = false;

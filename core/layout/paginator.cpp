@@ -218,7 +218,8 @@ void Paginator::flush_table() {
 // least; in body rows guide dots (dot 5, a blank cell on each side) lead from a
 // short entry to the next column. Under a header row, a separation line of
 // dots 2-5 as wide as each column. Returns false, having laid out nothing, when
-// the table does not fit the line or an entry had to be divided.
+// the table does not fit the line, an entry had to be divided or an entry has
+// more than one paragraph.
 bool Paginator::lay_out_simple_table() {
     // Each row as its entries and the columns each covers (a merged cell more
     // than one: it is as wide as those columns and the gaps between them).
@@ -238,7 +239,10 @@ bool Paginator::lay_out_simple_table() {
     for (int pass = 0; pass < 2; ++pass)
         for (const auto& row : rows)
             for (const auto& m : row) {
-                if (std::ranges::find(m.cell->breaks, translate::BreakBefore::forced) != m.cell->breaks.end())
+                // A divided word, or an entry of several paragraphs: not one line.
+                if (std::ranges::any_of(m.cell->breaks, [](translate::BreakBefore b) {
+                        return b == translate::BreakBefore::forced || b == translate::BreakBefore::paragraph;
+                    }))
                     return false;
                 const auto need = entry(*m.cell).size();
                 if (pass == 0 && m.span == 1) widths[m.column] = std::max(widths[m.column], need);
@@ -304,7 +308,8 @@ bool Paginator::lay_out_simple_table() {
 
 // Listed format: each row's entries in column order, one after the other, the
 // first in cell 1 and the others in cell 3, runover lines in cell 5
-// (block_indents of table_cell). A header row is listed first like any row, so
+// (block_indents of table_cell); each further paragraph of an entry starts a
+// line where the entry started (line_breaker.hpp). A header row is listed first like any row, so
 // the reader learns the order of the columns. Empty entries are left out; a
 // row whose first column is empty (or merged away) starts in cell 1 with its
 // first entry, so each row still starts at the margin.

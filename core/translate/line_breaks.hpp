@@ -23,6 +23,9 @@ enum class BreakBefore : std::uint8_t {
     allowed,        // print allows a break here with nothing added (after a hyphen or
                     // dash, between CJK characters)
     forced,         // a divided word goes on here: the line ends before cell i
+    paragraph,      // cell i starts the next paragraph of a table cell (document.hpp,
+                    // table_cell): the line ends before it and the next line starts
+                    // at the block's first-line indent
 };
 
 using LineBreaks = std::vector<BreakBefore>;
@@ -36,9 +39,10 @@ LineBreaks find_line_breaks(std::u32string_view text, const document::BrailleLin
 // ICU's line break iterator); entry 0 and entry text.size() are true.
 std::vector<bool> print_break_opportunities(std::u32string_view text);
 
-// May a line end before cell i? (blank, allowed or forced)
+// May a line end before cell i? (blank, allowed, forced or paragraph)
 constexpr bool is_line_break(BreakBefore b) {
-    return b == BreakBefore::blank || b == BreakBefore::allowed || b == BreakBefore::forced;
+    return b == BreakBefore::blank || b == BreakBefore::allowed || b == BreakBefore::forced ||
+           b == BreakBefore::paragraph;
 }
 
 }  // namespace tactus::translate

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "common/utf8.hpp"
+#include "document/cell_paragraphs.hpp"
 #include "document/soft_break.hpp"
 #include "translate/code_switch.hpp"
 #include "translate/language_switch.hpp"
@@ -460,6 +461,20 @@ Result<void> translate_spans(const Translator& tr, std::span<const document::Spa
     return {};
 }
 
+// Each paragraph of a table cell translated on its own; the first cell of each
+// after the first starts a line (BreakBefore::paragraph). An empty paragraph
+// leaves nothing.
+Result<void> translate_cell(const Translator& tr, std::span<const document::Span> spans, std::size_t room,
+                            TranslatedBlock& out, const std::function<void(std::size_t)>& progress) {
+    if (!document::has_cell_paragraphs(spans)) return translate_spans(tr, spans, room, out, progress);
+    for (const auto& paragraph : document::cell_paragraphs(spans)) {
+        const auto at = out.cells.size();
+        if (auto ok = translate_spans(tr, paragraph, room, out, progress); !ok) return ok;
+        if (at > 0 && at < out.cells.size()) out.breaks[at] = BreakBefore::paragraph;
+    }
+    return {};
+}
+
 }  // namespace
 
 Result<TranslatedBlock> translate_block(const document::Block& block, const Translator& translator,
@@ -495,8 +510,11 @@ Result<TranslatedBlock> translate_block(const document::Block& block, const Tran
         case document::BlockKind::list_item:
         case document::BlockKind::quote:
         case document::BlockKind::note:
-        case document::BlockKind::table_cell:
             if (auto ok = translate_spans(translator, block.spans, word_room, tb, progress); !ok)
+                return std::unexpected(located(ok.error(), where));
+            break;
+        case document::BlockKind::table_cell:
+            if (auto ok = translate_cell(translator, block.spans, word_room, tb, progress); !ok)
                 return std::unexpected(located(ok.error(), where));
             break;
     }

@@ -5,12 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <random>
 #include <stdexcept>
 
 #include "../common/edit_fixtures.hpp"
 #include "edit/editor_lines.hpp"
 #include "export/export.hpp"
+#include "export/text_export.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
 
@@ -219,4 +222,21 @@ TEST(LiveLayout, AShortTableRowLaysOutAsTheReopenedFile) {
     ASSERT_TRUE(expected.has_value());
     ASSERT_EQ(live.paged().pages.size(), expected->pages.size());
     EXPECT_TRUE(live.paged().pages == expected->pages);
+}
+
+// A real DOCX whose table cells hold several paragraphs: the editor's lines
+// for it (pipe-table rows, <br> between an entry's paragraphs) lay out as the
+// file itself does, each paragraph on a line of its own.
+TEST(LiveLayout, CellParagraphsLayOutInTheEditorAsInTheFile) {
+    const auto path = std::filesystem::path(TACTUS_TEST_DATA) / "import/public/pandoc-tables.docx";
+    const auto doc = import::import_file(path);
+    ASSERT_TRUE(doc.has_value());
+    const auto lines = exporter::markdown_lines(*doc);
+    ASSERT_TRUE(std::ranges::any_of(lines, [](const std::string& l) { return l.find("Simple<br>") != std::string::npos; }));
+    pipeline::PipelineOptions options;
+    options.tables = "en-ueb-g2.ctb";
+    const auto expected = pipeline::lay_out_file(path, options);
+    ASSERT_TRUE(expected.has_value());
+    const auto live = make(lines, options.tables);
+    EXPECT_EQ(*exporter::to_brf(live.paged()), *exporter::to_brf(*expected));
 }

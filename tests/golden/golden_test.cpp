@@ -37,6 +37,7 @@ std::string render(const GoldenCase& c) {
     o.layout.geometry.interpoint = c.interpoint;
     const auto dir = c.input.starts_with("structure") ? kStructure
                      : c.input.starts_with("mixed/") ? fs::path(TACTUS_GOLDEN_DIR) / ".."
+                     : c.input.starts_with("public/") ? fs::path(TACTUS_TEST_DATA) / "import"
                                                      : kSamples;
     auto doc = pipeline::lay_out_file(dir / c.input, o);
     EXPECT_TRUE(doc) << doc.error().to_string();
@@ -106,6 +107,16 @@ INSTANTIATE_TEST_SUITE_P(
         // notes inside a quote and a list; the note reference indicator of UEB
         // and of EBAE (en-us-g2.ctb), and the parentheses of a code without
         // one (zh-tw.ctb).
+        // Real files whose table cells hold several paragraphs or a list: each
+        // paragraph of an entry on a line of its own, in listed format.
+        GoldenCase{"cell-paragraphs-docx.brf", "public/pandoc-tables.docx", "en-ueb-g2.ctb", false,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"cell-paragraphs-list-docx.brf", "public/pandoc-table_with_list_cell.docx", "en-ueb-g2.ctb", false,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"cell-paragraphs-odt.brf", "public/odfdo-table.odt", "en-ueb-g2.ctb", false,
+                   exporter::ExportFormat::brf},
+        GoldenCase{"cell-paragraphs-html.brf", "public/pandoc-table_with_list_cell.html", "en-ueb-g2.ctb", false,
+                   exporter::ExportFormat::brf},
         GoldenCase{"structure-formats.brf", "structure-formats.md", "en-ueb-g2.ctb", true,
                    exporter::ExportFormat::brf},
         GoldenCase{"structure-formats-ebae.brf", "structure-formats.md", "en-us-g2.ctb", true,

@@ -75,6 +75,36 @@ TEST(HtmlImport, StructureOfAnHtml5Page) {
     EXPECT_THAT(doc.warnings[1], ::testing::HasSubstr("<video> left out"));
 }
 
+// A table cell's paragraphs, list items and <br>s stay apart, a line break
+// between them (document/cell_paragraphs.hpp); inline elements and white
+// space run on. pandoc's HTML of its own table_with_list_cell.docx.
+TEST(HtmlImport, TableCellParagraphsStayApart) {
+    const auto doc = import_data_file("public/pandoc-table_with_list_cell.html");
+    std::vector<std::string> cells;
+    for (const auto& b : doc.blocks)
+        if (b.kind == C) cells.push_back(b.text());
+    EXPECT_EQ(cells, (std::vector<std::string>{"Cell with text", "Cell with text", "\u2022 Cell with\n\u2022 A\n\u2022 Bullet list",
+                                                "1. Cell with\n2. A\n3. Numbered list."}));
+    const auto small = import::import_bytes(
+        "<table><tr><td><p>One <em>two</em></p><p>three</p></td><td>four<br>five <b>six</b></td>"
+        "<td><ol start=\"3\"><li>x</li><li><p>y</p></li></ol></td></tr></table>",
+        "cells.html");
+    ASSERT_TRUE(small) << small.error().to_string();
+    std::vector<std::string> texts;
+    for (const auto& b : small->blocks)
+        if (b.kind == C) texts.push_back(b.text());
+    EXPECT_EQ(texts, (std::vector<std::string>{"One two\nthree", "four\nfive six", "3. x\n4. y"}));
+}
+
+TEST(MarkdownImport, BrInAPipeTableCellIsALineBreak) {
+    const auto doc = import::import_bytes("| a | b |\n|---|---|\n| one<br>two | x<BR/>*y* |\n", "t.md");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    std::vector<std::string> texts;
+    for (const auto& b : doc->blocks)
+        if (b.kind == C) texts.push_back(b.text());
+    EXPECT_EQ(texts, (std::vector<std::string>{"a", "b", "one\ntwo", "x\ny"}));
+}
+
 TEST(HtmlImport, BlocksKeepTheirSourceLines) {
     const auto doc = import_data_file("markup/structure.html");
     ASSERT_FALSE(doc.blocks.empty());
