@@ -24,8 +24,6 @@ set(ENV{PKG_CONFIG_LIBDIR} "${TACTUS_WINDOWS_DEPS}/lib/pkgconfig:/usr/${TACTUS_M
 set(ENV{PKG_CONFIG_SYSROOT_DIR} "")
 # The third-party libraries are static: their own dependencies (libzip's zlib) come with them.
 set(PKG_CONFIG_ARGN "--static" CACHE STRING "Arguments pkg-config is given")
-# Static archives only (libz.a, not zlib1.dll's import library).
-set(CMAKE_FIND_LIBRARY_SUFFIXES .a)
 
 # The executables carry libgcc, libstdc++, winpthread and zlib inside, so they
 # run without MinGW's DLLs beside them.

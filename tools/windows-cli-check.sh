@@ -18,6 +18,12 @@ wine=$(command -v wine64 || command -v wine || { [ -x /usr/lib/wine/wine64 ] && 
 [ -f "$windows" ] || { echo "windows-cli-check: no Windows CLI at $windows (tools/windows-build.sh)" >&2; exit 2; }
 [ -n "$wine" ] || { echo "windows-cli-check: no Wine (apt-get install wine64)" >&2; exit 2; }
 export WINEPREFIX="${WINEPREFIX:-$root/build/wineprefix}" WINEDEBUG="${WINEDEBUG:--all}"
+# The Windows CLI reads "/x" as a Windows-style option (CLI11): an absolute
+# path goes to it through Wine's drive Z:, which is /.
+case $input in
+    /*) win_input="Z:$input" ;;
+    *) win_input=$input ;;
+esac
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 status=0
@@ -31,13 +37,13 @@ same() {  # same WHAT FILE_A FILE_B
     fi
 }
 "$linux" plan "$input" >"$out/plan.linux"
-"$wine" "$windows" plan "$input" >"$out/plan.windows"
+"$wine" "$windows" plan "$win_input" >"$out/plan.windows"
 same "plan" "$out/plan.linux" "$out/plan.windows"
 "$linux" plan --json "$input" >"$out/plan-json.linux"
-"$wine" "$windows" plan --json "$input" >"$out/plan-json.windows"
+"$wine" "$windows" plan --json "$win_input" >"$out/plan-json.windows"
 same "plan --json" "$out/plan-json.linux" "$out/plan-json.windows"
 "$linux" emboss --device sim "$input" 2>&1 | grep '^embossed ' >"$out/emboss.linux" || true
-"$wine" "$windows" emboss --device sim "$input" 2>&1 | tr -d '\r' | grep '^embossed ' >"$out/emboss.windows" || true
+"$wine" "$windows" emboss --device sim "$win_input" 2>&1 | tr -d '\r' | grep '^embossed ' >"$out/emboss.windows" || true
 [ -s "$out/emboss.linux" ] || { echo "windows-cli-check: the Linux CLI printed no 'embossed' line" >&2; status=1; }
 same "emboss --device sim: $(cat "$out/emboss.linux")" "$out/emboss.linux" "$out/emboss.windows"
 exit $status
