@@ -43,9 +43,9 @@ OsResult<std::vector<bool>> system_line_breaks(std::u32string_view text) {
         if (FAILED(hr)) return os_fail("ScriptItemize failed", OsErrorKind::other);
         break;
     }
-    // Runs are broken separately; a script change between them is a break
-    // opportunity only when the rules say so, which ScriptBreak decides at the
-    // run's first character (fSoftBreak) as it does inside a run.
+    // Uniscribe breaks each script run on its own: at a run's first character
+    // it sees no context before it, so a break there is what ScriptBreak says
+    // for the run alone (ICU would look across the run boundary).
     std::vector<SCRIPT_LOGATTR> attrs(u16.size());
     for (int r = 0; r < count; ++r) {
         const int begin = items[static_cast<std::size_t>(r)].iCharPos;
