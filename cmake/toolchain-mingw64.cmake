@@ -22,9 +22,12 @@ set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 # pkg-config reads the Windows libraries' .pc files only.
 set(ENV{PKG_CONFIG_LIBDIR} "${TACTUS_WINDOWS_DEPS}/lib/pkgconfig:/usr/${TACTUS_MINGW_TRIPLE}/lib/pkgconfig")
 set(ENV{PKG_CONFIG_SYSROOT_DIR} "")
+# The third-party libraries are static: their own dependencies (libzip's zlib) come with them.
+set(PKG_CONFIG_ARGN "--static" CACHE STRING "Arguments pkg-config is given")
 
-# The executables carry libgcc and libstdc++ inside, so they run without MinGW's DLLs beside them.
-set(CMAKE_EXE_LINKER_FLAGS_INIT "-static-libgcc -static-libstdc++")
+# The executables carry libgcc, libstdc++, winpthread and zlib inside, so they
+# run without MinGW's DLLs beside them.
+set(CMAKE_EXE_LINKER_FLAGS_INIT "-static")
 # Tests run under Wine when one is installed.
 find_program(TACTUS_WINE NAMES wine64 wine)
 if(TACTUS_WINE)

@@ -182,8 +182,16 @@ void print_bar(std::size_t done, std::size_t total, const link::PassExecuted& e)
 }
 
 void run_emboss(const EmbossArgs& a, const CLI::App& cmd) {
-    if (ipp::is_queue_uri(a.device))
+    if (ipp::is_queue_uri(a.device)) {
+#if TACTUS_HAVE_IPP
         return emboss_remote(a.layout, a.device, cmd, a.queue.copies, a.queue.title);
+#else
+        // The address is refused as such: sending needs libcups.
+        (void)cmd;
+        const auto refused = ipp::parse_queue_uri(a.device);
+        throw CommandFailed(exit_usage, "emboss: " + refused.error().to_string());
+#endif
+    }
     if (a.queue.enabled) {
         if (a.plan_file)
             throw CommandFailed(exit_usage, "emboss: --queue stores the document, laid out again with the queue "

@@ -9,6 +9,7 @@
 #include "export/export.hpp"
 #include "layout_args.hpp"
 #include "pipeline/pipeline.hpp"
+#include "platform/clock.hpp"
 #include "translate/catalogue.hpp"
 
 namespace tactus::cli {
@@ -24,8 +25,7 @@ struct LayoutCommandArgs {
 
 std::string today() {
     const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    ::gmtime_r(&now, &tm);
+    const std::tm tm = platform::utc_time(now);
     char buf[16];
     std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
     return buf;

@@ -9,6 +9,9 @@
 #include "ipp/remote_job.hpp"
 #include "platform/termination.hpp"
 
+// Without libcups the emboss command refuses an ipp:// device itself
+// (cmd_emboss.cpp) and nothing here is built.
+#if TACTUS_HAVE_IPP
 namespace tactus::cli {
 namespace {
 
@@ -98,3 +101,4 @@ void emboss_remote(const LayoutArgs& layout, const std::string& uri, const CLI::
 }
 
 }  // namespace tactus::cli
+#endif

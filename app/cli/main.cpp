@@ -3,9 +3,11 @@
 
 #include "command.hpp"
 #include "lpt_emulator.hpp"
+#include "platform/console.hpp"
 
 int main(int argc, char** argv) {
     using namespace tactus::cli;
+    tactus::platform::binary_standard_streams();  // the same bytes out on every system
     register_emulated_lpt();  // lpt:emu?fw=...: the firmware's pins in s51
     CLI::App app{"Tactus: translate, lay out and emboss braille", "tactus-cli"};
     app.set_version_flag("--version", "tactus-cli 0.1.0");

@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "command.hpp"
+#include "platform/clock.hpp"
 #include "spool/db_path.hpp"
 
 namespace tactus::cli {
@@ -15,8 +16,7 @@ spool::Spool open_spool(const std::string& db, bool create, bool read_only_ok) {
 
 std::string local_time(double seconds) {
     const auto t = static_cast<std::time_t>(seconds);
-    std::tm tm{};
-    localtime_r(&t, &tm);
+    const std::tm tm = platform::local_time(t);
     char buf[32];
     std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
     return buf;

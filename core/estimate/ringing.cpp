@@ -112,7 +112,8 @@ constexpr std::size_t kPad = (1 + kDampingValues * kFrequencyValues + 7) / 8 * 8
 using V4 = double __attribute__((vector_size(32)));
 using U4 = std::uint64_t __attribute__((vector_size(32)));
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// Windows executables have no ifunc to pick a clone at load time.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(_WIN32)
 #define TACTUS_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define TACTUS_SIMD_CLONES

@@ -2,9 +2,14 @@
 // A text file written back in the encoding it was read in: ICU, the
 // converter the importer decoded it with, stopping at the first character the
 // encoding cannot hold instead of writing a substitute.
+// Without ICU (TACTUS_WITH_ICU off) only UTF-8 is written.
+#if TACTUS_HAVE_ICU
 #include <unicode/ucnv.h>
 #include <unicode/ustring.h>
 #include <unicode/utf16.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <array>
 #include <cctype>
@@ -20,10 +25,12 @@ namespace {
 
 constexpr std::string_view kUnrepresentable = "cannot be written in ";
 
+#if TACTUS_HAVE_ICU
 struct ConverterCloser {
     void operator()(UConverter* c) const { ucnv_close(c); }
 };
 using Converter = std::unique_ptr<UConverter, ConverterCloser>;
+#endif
 
 bool is_utf8_name(std::string_view name) {
     std::string n;
@@ -32,6 +39,7 @@ bool is_utf8_name(std::string_view name) {
     return n.empty() || n == "UTF8";
 }
 
+#if TACTUS_HAVE_ICU
 // line:column (1-based, in characters) of UTF-16 offset `at`.
 std::string position_of(const std::u16string& text, std::size_t at) {
     std::size_t line = 1, column = 1;
@@ -45,12 +53,16 @@ std::string position_of(const std::u16string& text, std::size_t at) {
     }
     return std::to_string(line) + ":" + std::to_string(column);
 }
+#endif
 
 }  // namespace
 
 Result<std::string> encode_text(std::string_view utf8, std::string_view encoding, bool byte_order_mark) {
     if (is_utf8_name(encoding)) return byte_order_mark ? "\xEF\xBB\xBF" + std::string(utf8) : std::string(utf8);
     const std::string name(encoding);
+#if !TACTUS_HAVE_ICU
+    return unavailable("writing text in " + name + " (only UTF-8 is written)", "ICU", "encoding");
+#else
     UErrorCode err = U_ZERO_ERROR;
     Converter cnv(ucnv_open(name.c_str(), &err));
     if (U_FAILURE(err) || !cnv) return fail(ErrorKind::input, "unknown encoding '" + name + "'", "encoding");
@@ -108,6 +120,7 @@ Result<std::string> encode_text(std::string_view utf8, std::string_view encoding
         break;
     }
     return out;
+#endif
 }
 
 bool is_unrepresentable_error(const Error& error) {

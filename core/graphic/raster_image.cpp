@@ -9,8 +9,14 @@
 #include <cstdio>  // jpeglib.h needs FILE
 #include <cstdlib>
 #include <cstring>
+// Without libpng and libjpeg (TACTUS_WITH_RASTER off) a picture is still
+// recognised by its first bytes, then refused.
+#if TACTUS_HAVE_RASTER
 #include <jpeglib.h>
 #include <png.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <algorithm>
 #include <cctype>
@@ -22,11 +28,12 @@ namespace {
 
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
+const unsigned char* bytes_of(std::string_view s) { return reinterpret_cast<const unsigned char*>(s.data()); }
+
+#if TACTUS_HAVE_RASTER
 std::uint32_t be32(const unsigned char* p) {
     return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]};
 }
-
-const unsigned char* bytes_of(std::string_view s) { return reinterpret_cast<const unsigned char*>(s.data()); }
 
 Result<void> check_size(std::uint64_t width, std::uint64_t height) {
     if (width == 0 || height == 0)
@@ -133,6 +140,7 @@ int decode_jpeg(const unsigned char* data, unsigned long size, JpegErrors* error
     jpeg_destroy_decompress(&info);
     return errors->warning[0] != '\0' ? 1 : 0;
 }
+#endif
 
 std::string ascii_lower(std::string s) {
     for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -151,6 +159,9 @@ RasterFormat raster_format(std::string_view bytes) {
 Result<GreyImage> read_png(std::string_view bytes) {
     if (raster_format(bytes) != RasterFormat::png)
         return fail(ErrorKind::input, "not a PNG file (its first 8 bytes are not the PNG signature)");
+#if !TACTUS_HAVE_RASTER
+    return unavailable("reading PNG pictures", "libpng");
+#else
     png_image image;
     std::memset(&image, 0, sizeof image);
     image.version = PNG_IMAGE_VERSION;
@@ -171,11 +182,15 @@ Result<GreyImage> read_png(std::string_view bytes) {
         return fail(ErrorKind::input, std::string("unreadable PNG (damaged or cut short): ") + image.message);
     png_resolution(bytes, out);
     return out;
+#endif
 }
 
 Result<GreyImage> read_jpeg(std::string_view bytes) {
     if (raster_format(bytes) != RasterFormat::jpeg)
         return fail(ErrorKind::input, "not a JPEG file (it does not start with a JPEG start-of-image marker)");
+#if !TACTUS_HAVE_RASTER
+    return unavailable("reading JPEG pictures", "libjpeg");
+#else
     JpegErrors errors;
     std::memset(&errors, 0, sizeof errors);
     JpegOut out;
@@ -197,6 +212,7 @@ Result<GreyImage> read_jpeg(std::string_view bytes) {
     if (errors.warning[0] != '\0')
         return fail(ErrorKind::input, std::string("damaged JPEG: ") + errors.warning);
     return fail(ErrorKind::input, std::string("unreadable JPEG: ") + errors.message);
+#endif
 }
 
 Result<GreyImage> read_raster(std::string_view bytes) {

@@ -1,9 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/encoding.hpp"
 
+// Without ICU (TACTUS_WITH_ICU off) only UTF-8 is read; without uchardet
+// (TACTUS_WITH_UCHARDET off) an encoding is never guessed. Other text is
+// refused, naming what is missing.
+#if TACTUS_HAVE_ICU
 #include <unicode/ucnv.h>
 #include <unicode/utf16.h>
+#endif
+#if TACTUS_HAVE_UCHARDET
 #include <uchardet.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -14,19 +21,24 @@
 #include "common/utf8.hpp"
 #include "import/text_position.hpp"
 #include "common/try.hpp"
+#include "common/unavailable.hpp"
 
 namespace tactus::import::detail {
 namespace {
 
+#if TACTUS_HAVE_ICU
 struct ConverterCloser {
     void operator()(UConverter* c) const { ucnv_close(c); }
 };
 using Converter = std::unique_ptr<UConverter, ConverterCloser>;
+#endif
 
+#if TACTUS_HAVE_UCHARDET
 struct DetectorFree {
     void operator()(uchardet_t d) const { uchardet_delete(d); }
 };
 using Detector = std::unique_ptr<std::remove_pointer_t<uchardet_t>, DetectorFree>;
+#endif
 
 std::string upper(std::string_view s) {
     std::string out(s);
@@ -52,6 +64,7 @@ Bom sniff_bom(std::string_view b) {
     return {};
 }
 
+#if TACTUS_HAVE_ICU
 Result<Converter> open_converter(const std::string& name) {
     UErrorCode err = U_ZERO_ERROR;
     Converter cnv(ucnv_open(name.c_str(), &err));
@@ -120,6 +133,9 @@ Result<std::string> convert(std::string_view bytes, UConverter* cnv, const std::
     return out;
 }
 
+#endif
+
+#if TACTUS_HAVE_UCHARDET
 // uchardet returns "" when unsure; it may be fed in pieces and settles early.
 std::string detect_with_uchardet(std::string_view bytes) {
     Detector det(uchardet_new());
@@ -171,6 +187,7 @@ bool non_ascii_comes_in_runs(std::string_view bytes) {
     }
     return high > 0 && paired * 2 >= high;
 }
+#endif
 
 // Control characters mean binary data or a wrong decoding, never teacher text.
 Result<void> check_controls(std::string_view utf8) {
@@ -208,6 +225,11 @@ Result<DecodedText> decode_utf8(std::string_view bytes, std::size_t bom, std::st
 
 Result<DecodedText> decode_with(std::string_view bytes, const std::string& name,
                                 std::string label) {
+#if !TACTUS_HAVE_ICU
+    if (upper(name) == "UTF-8" || upper(name) == "UTF8")
+        return decode_utf8(bytes, sniff_bom(bytes).encoding == "UTF-8" ? 3 : 0, std::move(label));
+    return unavailable("reading text in " + name + " (only UTF-8 is read)", "ICU", "encoding");
+#else
     TACTUS_TRY(cnv, open_converter(name));
     if (is_utf8_converter(cnv.get()))
         return decode_utf8(bytes, sniff_bom(bytes).encoding == "UTF-8" ? 3 : 0, std::move(label));
@@ -222,6 +244,7 @@ Result<DecodedText> decode_with(std::string_view bytes, const std::string& name,
     out.is_copy = true;
     out.encoding = std::move(label);
     return out;
+#endif
 }
 
 Result<DecodedText> detect_and_decode(std::string_view bytes) {
@@ -239,6 +262,10 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
     }
     const auto invalid = find_invalid_utf8(bytes);
     if (invalid == std::string_view::npos) return decode_utf8(bytes, 0, "UTF-8");
+#if !TACTUS_HAVE_UCHARDET
+    return unavailable("guessing the encoding of text that is not UTF-8 (invalid UTF-8 at " + byte_at(invalid) + ")",
+                       "uchardet");
+#else
 
     std::string detected = upper(detect_with_uchardet(bytes));
     const bool runs = non_ascii_comes_in_runs(bytes);
@@ -258,6 +285,7 @@ Result<DecodedText> detect_and_decode(std::string_view bytes) {
                         " is not supported; convert the file to UTF-8 or name the encoding",
                     byte_at(invalid));
     return decoded;
+#endif
 }
 
 }  // namespace

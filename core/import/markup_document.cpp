@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/markup_document.hpp"
 
+// Without gumbo (TACTUS_WITH_GUMBO off) HTML that is not well-formed XHTML is refused.
+#if TACTUS_HAVE_GUMBO
 #include <gumbo.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <algorithm>
 #include <array>
@@ -52,6 +57,7 @@ std::size_t tag_depth_bound(std::string_view text) {
     return most;
 }
 
+#if TACTUS_HAVE_GUMBO
 std::string tag_name(const GumboNode* node) {
     const auto& e = node->v.element;
     if (e.tag != GUMBO_TAG_UNKNOWN) return gumbo_normalized_tagname(e.tag);
@@ -63,6 +69,7 @@ std::string tag_name(const GumboNode* node) {
     const auto end = name.find_first_of(" \t\r\n/>");
     return lower(name.substr(0, end));
 }
+#endif
 
 }  // namespace
 
@@ -90,6 +97,9 @@ Result<std::unique_ptr<MarkupDocument>> parse_html_markup(std::string text, std:
     auto doc = std::make_unique<MarkupDocument>();
     doc->text = std::move(text);
     doc->html = true;
+#if !TACTUS_HAVE_GUMBO
+    return unavailable("reading HTML that is not well-formed XHTML", "gumbo", std::string(part));
+#else
     GumboOutput* output = gumbo_parse_with_options(&kGumboDefaultOptions, doc->text.data(), doc->text.size());
     if (!output) return fail(ErrorKind::input, "the HTML parser gave up on this document", std::string(part));
     // Copy the tree without recursion; the walk bounds the depth it reads.
@@ -135,6 +145,7 @@ Result<std::unique_ptr<MarkupDocument>> parse_html_markup(std::string text, std:
     gumbo_destroy_output(&kGumboDefaultOptions, output);
     if (!error.empty()) return fail(ErrorKind::input, error, std::string(part));
     return doc;
+#endif
 }
 
 namespace {

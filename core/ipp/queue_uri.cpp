@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ipp/queue_uri.hpp"
 
+#if TACTUS_HAVE_IPP
 #include <cups/cups.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <array>
 
@@ -16,6 +20,9 @@ Result<QueueUri> parse_queue_uri(std::string_view uri) {
     if (!is_queue_uri(text))
         return fail(ErrorKind::usage,
                     "a CUPS queue is ipp://host[:port]/printers/NAME or ipps://...", text);
+#if !TACTUS_HAVE_IPP
+    return unavailable("sending to a CUPS queue (ipp://)", "libcups", text);
+#else
     // libcups splits the URI, with its percent-decoding and default port.
     std::array<char, 32> scheme{};
     std::array<char, 256> userpass{};
@@ -36,6 +43,7 @@ Result<QueueUri> parse_queue_uri(std::string_view uri) {
         return fail(ErrorKind::usage, "the address names no queue: it must end in /printers/NAME",
                     text);
     return QueueUri{text, host.data(), port, path, std::string_view(scheme.data()) == "ipps"};
+#endif
 }
 
 }  // namespace tactus::ipp

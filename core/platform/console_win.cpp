@@ -3,6 +3,10 @@
 
 #include <windows.h>
 
+#include <fcntl.h>
+#include <io.h>
+#include <cstdio>
+
 namespace tactus::platform {
 
 bool stderr_is_terminal() {
@@ -13,6 +17,11 @@ bool stderr_is_terminal() {
 void write_stderr(std::string_view text) {
     DWORD wrote = 0;
     (void)WriteFile(GetStdHandle(STD_ERROR_HANDLE), text.data(), static_cast<DWORD>(text.size()), &wrote, nullptr);
+}
+
+void binary_standard_streams() {
+    ::_setmode(::_fileno(stdin), _O_BINARY);
+    ::_setmode(::_fileno(stdout), _O_BINARY);
 }
 
 }  // namespace tactus::platform

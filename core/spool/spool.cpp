@@ -13,6 +13,7 @@
 #include <random>
 #include <system_error>
 
+#include "platform/clock.hpp"
 #include "spool/runner_token.hpp"
 #include "spool/schema.hpp"
 #include "common/try.hpp"
@@ -847,8 +848,7 @@ Result<std::filesystem::path> set_aside(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return fail(ErrorKind::input, "no file to set aside", path.string());
     const std::time_t t = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&t, &tm);
+    const std::tm tm = platform::utc_time(t);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
     const std::filesystem::path aside = path.string() + ".broken-" + stamp;

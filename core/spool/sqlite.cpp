@@ -51,7 +51,9 @@ Result<Database> Database::open(const std::filesystem::path& path, bool create,
     sqlite3* db = nullptr;
     const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) |
                       SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE;
-    const int rc = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
+    // SQLite takes the name in UTF-8 on every system (a Windows path is UTF-16).
+    const auto name = path.u8string();
+    const int rc = sqlite3_open_v2(reinterpret_cast<const char*>(name.c_str()), &db, flags, nullptr);
     if (rc != SQLITE_OK) {
         std::string why = explain(rc, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
         sqlite3_close_v2(db);

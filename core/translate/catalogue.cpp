@@ -2,8 +2,11 @@
 #include "translate/catalogue.hpp"
 
 #include <liblouis/liblouis.h>
+// Without ICU (TACTUS_WITH_ICU off) a language is shown as its tag ("en-US").
+#if TACTUS_HAVE_ICU
 #include <unicode/locid.h>
 #include <unicode/unistr.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -35,8 +38,18 @@ std::string info(const char* table, const char* key) {
 
 // "cmn-TW" -> "Chinese (Taiwan)" (or "中文（台灣）" for a zh-TW reader) via
 // ICU's locale display names; falls back to the tag.
-std::string language_name(const std::string& tag, const icu::Locale& reader) {
+#if TACTUS_HAVE_ICU
+using Reader = icu::Locale;
+#else
+using Reader = std::string_view;
+#endif
+
+std::string language_name(const std::string& tag, const Reader& reader) {
     if (tag.empty()) return "Other";
+#if !TACTUS_HAVE_ICU
+    (void)reader;
+    return tag;
+#else
     UErrorCode status = U_ZERO_ERROR;
     const icu::Locale locale = icu::Locale::forLanguageTag(tag, status);
     if (U_FAILURE(status)) return tag;
@@ -45,14 +58,19 @@ std::string language_name(const std::string& tag, const icu::Locale& reader) {
     std::string out;
     display.toUTF8String(out);
     return out.empty() ? tag : out;
+#endif
 }
 
 }  // namespace
 
 std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
+#if TACTUS_HAVE_ICU
     UErrorCode status = U_ZERO_ERROR;
     icu::Locale reader = icu::Locale::forLanguageTag(std::string(display_locale), status);
     if (U_FAILURE(status) || reader.isBogus()) reader = icu::Locale::getEnglish();
+#else
+    const Reader reader = display_locale;
+#endif
     louis::install_log_capture();
     std::vector<TableInfo> out;
     std::lock_guard guard(louis::lock());

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "translate/language_switch.hpp"
 
+// Without ICU (TACTUS_WITH_ICU off) Simplified and Traditional characters
+// are not told apart: Chinese passages take the Traditional table.
+#if TACTUS_HAVE_ICU
 #include <unicode/translit.h>
-#include <unicode/uscript.h>
+#endif
 
 #include <algorithm>
 #include <map>
@@ -10,17 +13,12 @@
 
 #include "common/utf8.hpp"
 #include "translate/catalogue.hpp"
+#include "translate/script_of.hpp"
 
 namespace tactus::translate {
 namespace {
 
 constexpr std::size_t slot_index(TableSlot s) { return static_cast<std::size_t>(s); }
-
-UScriptCode script_of(char32_t c) {
-    UErrorCode status = U_ZERO_ERROR;
-    const auto script = uscript_getScript(static_cast<UChar32>(c), &status);
-    return U_FAILURE(status) ? USCRIPT_COMMON : script;
-}
 
 bool is_mainland_tag(std::string_view tag) {
     std::string lower;
@@ -134,15 +132,15 @@ std::vector<LanguageRun> LanguageSwitch::split(std::u32string_view text, std::sp
             slot[i] = marks[i];
         } else {
             switch (script_of(text[i])) {
-                case USCRIPT_HAN:
-                case USCRIPT_BOPOMOFO:
+                case Script::han:
+                case Script::bopomofo:
                     slot[i] = primary_chinese_ ? TableSlot::primary : TableSlot::chinese_tw;
                     break;
-                case USCRIPT_LATIN:
+                case Script::latin:
                     slot[i] = primary_chinese_ ? TableSlot::english : TableSlot::primary;
                     break;
-                case USCRIPT_COMMON:
-                case USCRIPT_INHERITED:
+                case Script::common:
+                case Script::inherited:
                     break;  // decided by its neighbours below
                 default:
                     slot[i] = TableSlot::primary;
@@ -202,11 +200,19 @@ std::vector<LanguageRun> LanguageSwitch::split(std::u32string_view text, std::sp
 // Simplified characters are those ICU's Simplified-to-Traditional
 // transliteration changes, Traditional ones those Traditional-to-Simplified
 // changes (as translate/script_check.cpp counts them).
+#if TACTUS_HAVE_ICU
 struct LanguageSwitch::Transliterators {
     std::unique_ptr<icu::Transliterator> to_traditional, to_simplified;
 };
+#else
+struct LanguageSwitch::Transliterators {};
+#endif
 
 bool LanguageSwitch::simplified_only(std::u32string_view han) const {
+#if !TACTUS_HAVE_ICU
+    (void)han;
+    return false;
+#else
     std::lock_guard guard(mutex_);
     if (!transliterators_) {
         auto t = std::make_shared<Transliterators>();
@@ -222,7 +228,7 @@ bool LanguageSwitch::simplified_only(std::u32string_view han) const {
     if (!to_traditional_ || !to_simplified_) return false;
     bool simplified = false;
     for (char32_t c : han) {
-        if (script_of(c) != USCRIPT_HAN) continue;
+        if (script_of(c) != Script::han) continue;
         const icu::UnicodeString original(static_cast<UChar32>(c));
         icu::UnicodeString s = original;
         to_simplified_->transliterate(s);
@@ -232,6 +238,7 @@ bool LanguageSwitch::simplified_only(std::u32string_view han) const {
         simplified = simplified || t != original;
     }
     return simplified;
+#endif
 }
 
 Result<const Translator*> LanguageSwitch::translator(TableSlot slot) const {

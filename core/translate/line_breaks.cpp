@@ -2,9 +2,15 @@
 #include "translate/line_breaks.hpp"
 #include "translate/break_space.hpp"
 
+// Without ICU (TACTUS_WITH_ICU off) the system's line-breaking service
+// (platform/text_breaks.hpp) applies the same rules.
+#if TACTUS_HAVE_ICU
 #include <unicode/brkiter.h>
 #include <unicode/locid.h>
 #include <unicode/unistr.h>
+#else
+#include "platform/text_breaks.hpp"
+#endif
 
 #include <algorithm>
 #include <memory>
@@ -20,6 +26,12 @@ std::vector<bool> print_break_opportunities(std::u32string_view text) {
     out.front() = true;
     out.back() = true;
     if (text.empty()) return out;
+#if !TACTUS_HAVE_ICU
+    if (auto system = platform::system_line_breaks(text)) return std::move(*system);
+    for (std::size_t i = 1; i < text.size(); ++i)
+        out[i] = text[i - 1] == U' ' && text[i] != U' ';
+    return out;
+#else
     // ICU works in UTF-16: remember which UTF-16 unit starts which code point.
     std::vector<std::uint32_t> cp_of_unit;
     cp_of_unit.reserve(text.size() + 1);
@@ -45,6 +57,7 @@ std::vector<bool> print_break_opportunities(std::u32string_view text) {
     for (int32_t b = it->first(); b != icu::BreakIterator::DONE; b = it->next())
         out[cp_of_unit[static_cast<std::size_t>(b)]] = true;
     return out;
+#endif
 }
 
 LineBreaks find_line_breaks(std::u32string_view text, const document::BrailleLine& cells,

@@ -38,6 +38,9 @@ void install_log_capture() {
         std::lock_guard guard(lock());
         lou_registerLogCallback(on_log);
         lou_setLogLevel(LOU_LOG_WARN);
+#ifdef TACTUS_LOUIS_DATA_PATH
+        lou_setDataPath(TACTUS_LOUIS_DATA_PATH);
+#endif
     });
 }
 

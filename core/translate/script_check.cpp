@@ -2,9 +2,14 @@
 #include "translate/script_check.hpp"
 
 #include <liblouis/liblouis.h>
+// Without ICU (TACTUS_WITH_ICU off) Traditional Chinese is not told from
+// Simplified; the warning then says so.
+#if TACTUS_HAVE_ICU
 #include <unicode/translit.h>
-#include <unicode/uscript.h>
 #include <unicode/unistr.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <cstdlib>
 #include <memory>
@@ -12,6 +17,7 @@
 
 #include "common/utf8.hpp"
 #include "translate/louis.hpp"
+#include "translate/script_of.hpp"
 
 namespace tactus::translate {
 namespace {
@@ -49,19 +55,18 @@ ScriptCounts count_scripts(const document::Document& document) {
             const auto text = utf8_to_utf32(span.text);
             if (!text) continue;
             for (char32_t c : *text) {
-                UErrorCode status = U_ZERO_ERROR;
-                const auto script = uscript_getScript(static_cast<UChar32>(c), &status);
-                if (U_FAILURE(status)) continue;
-                if (script == USCRIPT_HAN) {
+                const auto script = script_of(c);
+                if (script == Script::han) {
                     ++counts.han;
                     han.push_back(c);
-                } else if (script == USCRIPT_LATIN) {
+                } else if (script == Script::latin) {
                     ++counts.latin;
                 }
             }
         }
     }
     if (han.empty()) return counts;
+#if TACTUS_HAVE_ICU
     // Traditional characters are those ICU's Traditional-to-Simplified
     // transliteration changes; Simplified text passes through unchanged.
     UErrorCode status = U_ZERO_ERROR;
@@ -74,6 +79,7 @@ ScriptCounts count_scripts(const document::Document& document) {
         to_simplified->transliterate(s);
         if (s != before) ++counts.traditional_only;
     }
+#endif
     return counts;
 }
 
@@ -93,6 +99,12 @@ std::optional<ScriptMismatch> find_script_mismatch(const document::Document& doc
 std::optional<std::string> check_script(const document::Document& document, const std::string& tables) {
     const auto m = find_script_mismatch(document, tables);
     if (!m) return std::nullopt;
+#if !TACTUS_HAVE_ICU
+    if (m->chinese_text)
+        return "the text is mostly Chinese but " + tables + " is not a Chinese table; zh-tw.ctb (Traditional) or "
+               "zhcn-g2.ctb (Simplified) suits it (" +
+               unavailable_message("telling Traditional from Simplified Chinese", "ICU") + ")";
+#endif
     if (m->chinese_text)
         return "the text is mostly Chinese (" + std::string(m->traditional ? "Traditional" : "Simplified") +
                ") but " + tables + " is not a Chinese table; " + m->better +

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The libieee1284 backend of ParallelPortLines: the real port via ppdev or
-// direct I/O, whichever libieee1284 finds.
+// direct I/O, whichever libieee1284 finds. Without libieee1284
+// (TACTUS_WITH_PARALLEL off) only the registered cables remain.
+#if TACTUS_HAVE_PARALLEL
 #include <ieee1284.h>
+#else
+#include "common/unavailable.hpp"
+#endif
 
 #include <thread>
 
@@ -9,6 +14,7 @@
 #include "common/try.hpp"
 
 namespace tactus::transport {
+#if TACTUS_HAVE_PARALLEL
 namespace {
 
 std::string error_text(int rc) {
@@ -79,6 +85,7 @@ std::string port_list(const parport_list& list) {
 }
 
 }  // namespace
+#endif
 
 Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
     const std::string where = "lpt:" + spec.path;
@@ -89,6 +96,9 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
         return std::unique_ptr<ByteStream>(std::move(*p));
     }
     if (!spec.options.empty()) return fail(ErrorKind::usage, "lpt takes no options", where);
+#if !TACTUS_HAVE_PARALLEL
+    return unavailable("the parallel port (lpt:)", "libieee1284", where);
+#else
     const std::string wanted = spec.path;
     auto opener = [wanted, where]() -> Result<std::unique_ptr<ParallelPortLines>> {
         parport_list list{};
@@ -120,9 +130,13 @@ Result<std::unique_ptr<ByteStream>> open_lpt(const DeviceSpec& spec) {
     };
     TACTUS_TRY(p, LptPort::open(opener, where));
     return std::unique_ptr<ByteStream>(std::move(p));
+#endif
 }
 
 Result<std::vector<PortInfo>> list_parallel_ports() {
+#if !TACTUS_HAVE_PARALLEL
+    return unavailable("listing parallel ports", "libieee1284");
+#else
     parport_list list{};
     if (ieee1284_find_ports(&list, 0) != E1284_OK) return std::vector<PortInfo>{};
     std::vector<PortInfo> out;
@@ -135,6 +149,7 @@ Result<std::vector<PortInfo>> list_parallel_ports() {
     }
     ieee1284_free_ports(&list);
     return out;
+#endif
 }
 
 }  // namespace tactus::transport
