@@ -53,9 +53,10 @@ std::vector<document::BrailleLine> break_lines(const document::BrailleLine& cell
         }
         std::size_t j = unit_end(i);
         if (kind(i) == translate::BreakBefore::paragraph && line_has_word) {
-            // The next paragraph of a table cell: a line of its own at the first-line indent.
+            // The next paragraph of a table cell: a line of its own at the
+            // runover indent, under its entry. At the entry's own indent it
+            // would read as the next entry (cell 3) or the next row (cell 1).
             new_line();
-            line.assign(first, document::Cell{});
             space_before = false;
         }
         if (kind(i) == translate::BreakBefore::forced && line_has_word) new_line();

@@ -14,7 +14,7 @@ namespace tactus::layout {
 // forced break (a divided word's next piece). The first line starts after
 // `first_indent` blank cells, the others after `runover_indent`; a paragraph
 // break (the next paragraph of a table cell) ends the line and starts the next
-// one after `first_indent` again. Runs of blank
+// one after `runover_indent`, under its entry. Runs of blank
 // cells become one. A unit longer than a line (only braille without the
 // translator's division) is cut between print characters; no cell is dropped.
 std::vector<document::BrailleLine> break_lines(const document::BrailleLine& cells, std::span<const translate::BreakBefore> breaks,

@@ -25,7 +25,7 @@ enum class BreakBefore : std::uint8_t {
     forced,         // a divided word goes on here: the line ends before cell i
     paragraph,      // cell i starts the next paragraph of a table cell (document.hpp,
                     // table_cell): the line ends before it and the next line starts
-                    // at the block's first-line indent
+                    // at the block's runover indent
 };
 
 using LineBreaks = std::vector<BreakBefore>;
