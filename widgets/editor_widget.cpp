@@ -194,9 +194,14 @@ void EditorWidget::adopt(edit::LiveLayout layout) {
     show_lines(print);
     braille_->document()->setPlainText(braille.join(QLatin1Char('\n')));
     known_blocks_ = print_->document()->blockCount();
-    // An empty document is one empty line for the widget: keep the layout in step.
-    if (layout_->line_count() != static_cast<std::size_t>(known_blocks_))
-        layout_->replace(0, layout_->line_count(), std::vector<std::string>(static_cast<std::size_t>(known_blocks_)));
+    // An empty document is one empty line for the widget: keep the layout in
+    // step. Should the view ever show a line as more than one block, its
+    // lines are read back from the view: never replaced by empty ones.
+    if (layout_->line_count() != static_cast<std::size_t>(known_blocks_)) {
+        std::vector<std::string> shown;
+        for (auto b = print_->document()->begin(); b.isValid(); b = b.next()) shown.push_back(line_text(b));
+        layout_->replace(0, layout_->line_count(), std::move(shown));
+    }
     undo_->clear();
     undo_->setClean();
     print_->document()->clearUndoRedoStacks();

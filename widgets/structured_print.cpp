@@ -94,7 +94,11 @@ std::vector<std::vector<Span>> spans_of(const QTextBlock& block, bool cells) {
             const bool end = i == text.size();
             if (!end && !(cells && text[i] == kCellSeparator) && text[i] != QChar::LineSeparator) continue;
             append(out.back(), span_of(text.mid(from, i - from), format));
-            if (!end && text[i] == QChar::LineSeparator) append(out.back(), span_of(QStringLiteral(" "), format));
+            // A line break: in a table cell the break between the cell's
+            // paragraphs ("\n", document.hpp), elsewhere a space (a soft
+            // break typed with Shift+Enter has no block of its own).
+            if (!end && text[i] == QChar::LineSeparator)
+                append(out.back(), span_of(cells ? QStringLiteral("\n") : QStringLiteral(" "), format));
             else if (!end) out.emplace_back();
             from = i + 1;
         }
@@ -346,7 +350,11 @@ void render(QTextDocument* doc, std::span<const std::string> lines, const QFont&
                 const auto cells = edit::parse_table_cells(lines[i]);
                 for (std::size_t k = 0; k < cells.size(); ++k) {
                     if (k) c.insertText(QString(kCellSeparator), cf);
-                    insert_spans(c, cells[k].spans, cf);
+                    // A cell's paragraphs are apart by "\n", which insertText
+                    // would make a block of its own: one line is one block, so
+                    // they are shown as line breaks inside the row's block.
+                    for (const auto& sp : cells[k].spans)
+                        c.insertText(qs(sp.text).replace(QLatin1Char('\n'), QChar::LineSeparator), span_format(sp, cf));
                 }
                 break;
             }
