@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "../common/edit_fixtures.hpp"
+#include "../common/office_files.hpp"
 #include "document/soft_break.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/live_layout.hpp"
@@ -168,22 +169,11 @@ document::Document through_lines(const document::Document& doc) {
     return layout.document();
 }
 
-std::vector<std::filesystem::path> office_files() {
-    std::vector<std::filesystem::path> out;
-    for (const auto* dir : {"import/public", "import/constructs", "import"})
-        for (const auto& e : std::filesystem::directory_iterator(data / dir)) {
-            const auto ext = e.path().extension();
-            if (ext == ".docx" || ext == ".odt") out.push_back(e.path());
-        }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 }  // namespace office_lines
 
 TEST(OfficeLines, RealOfficeFilesComeBackFromTheEditorLines) {
     int files = 0;
-    for (const auto& path : office_lines::office_files()) {
+    for (const auto& path : test::real_office_files(office_lines::data)) {
         auto doc = import::import_file(path);
         if (!doc) continue;  // the importer's own error files (truncated, invalid XML)
         ++files;

@@ -20,6 +20,7 @@
 #include "export/text_export.hpp"
 #include "import/import.hpp"
 #include "../common/process.hpp"
+#include "../common/office_files.hpp"
 
 using namespace tactus;
 using document::Block;
@@ -217,17 +218,6 @@ std::size_t occurrences(std::string_view text, std::string_view what) {
     return n;
 }
 
-std::vector<std::filesystem::path> real_files() {
-    std::vector<std::filesystem::path> out;
-    for (const auto* dir : {"import/public", "import/constructs", "import"})
-        for (const auto& e : std::filesystem::directory_iterator(data / dir)) {
-            const auto ext = e.path().extension();
-            if (ext == ".docx" || ext == ".odt") out.push_back(e.path());
-        }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 }  // namespace
 
 TEST(OfficeExport, EveryConstructComesBackFromDocxAndOdt) {
@@ -296,7 +286,7 @@ TEST(OfficeExport, PlainTextComesBackFromText) {
 // opened again, each gives the blocks it gave the first time.
 TEST(OfficeExport, RealDocumentsComeBackTheSame) {
     int files = 0;
-    for (const auto& path : real_files()) {
+    for (const auto& path : test::real_office_files(data)) {
         auto doc = import::import_file(path);
         if (!doc) continue;  // the importer's own error files (truncated, invalid XML)
         ++files;

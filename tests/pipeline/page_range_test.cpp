@@ -53,17 +53,26 @@ TEST(PageRange, FindsPagesByTheirLabels) {
     EXPECT_NE(backwards.error().message.find("comes before"), std::string::npos);
 }
 
-// Jekyll and Hyde (Standard Ebooks, public domain) in volumes of 20 sheets:
-// each volume's pages are t1, then p1, ..., then body numbers that go on.
-TEST(PageLabels, ARealBookInVolumes) {
-    const auto path = std::filesystem::path(TACTUS_TEST_DATA) / "import" / "books" / "jekyll-and-hyde.epub";
-    const auto doc = import::import_file(path);
-    ASSERT_TRUE(doc) << doc.error().to_string();
-    const auto table = translate::Translator::open(translate::kDefaultTable);
-    ASSERT_TRUE(table);
+// Jekyll and Hyde (Standard Ebooks, public domain) in volumes of 20 sheets.
+class JekyllInVolumes : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(doc) << doc.error().to_string();
+        ASSERT_TRUE(table);
+        book.sheets_per_volume = 20;
+    }
+    const decltype(import::import_file(std::filesystem::path{})) doc =
+        import::import_file(std::filesystem::path(TACTUS_TEST_DATA) / "import" / "books" / "jekyll-and-hyde.epub");
+    const decltype(translate::Translator::open(translate::kDefaultTable)) table =
+        translate::Translator::open(translate::kDefaultTable);
     pipeline::BookOptions book;
-    book.sheets_per_volume = 20;
-    layout::LayoutOptions layout;
+    const layout::LayoutOptions layout;
+};
+using PageLabels = JekyllInVolumes;
+using BookProgress = JekyllInVolumes;
+
+// Each volume's pages are t1, then p1, ..., then body numbers that go on.
+TEST_F(PageLabels, ARealBookInVolumes) {
     const auto laid = pipeline::lay_out_book(*doc, layout, book, *table);
     ASSERT_TRUE(laid) << laid.error().to_string();
     ASSERT_GE(laid->volumes.size(), 2u);
@@ -116,15 +125,7 @@ namespace {
 // The book layout tells its progress block by block, to the last, gives the
 // same pages as without progress, and stops when progress says so (the app
 // lays books out on a worker and stops one the editor has overtaken).
-TEST(BookProgress, CountsEveryBlockAndStopsWhenAsked) {
-    const auto path = std::filesystem::path(TACTUS_TEST_DATA) / "import" / "books" / "jekyll-and-hyde.epub";
-    const auto doc = import::import_file(path);
-    ASSERT_TRUE(doc) << doc.error().to_string();
-    const auto table = translate::Translator::open(translate::kDefaultTable);
-    ASSERT_TRUE(table);
-    pipeline::BookOptions book;
-    book.sheets_per_volume = 20;
-    layout::LayoutOptions layout;
+TEST_F(BookProgress, CountsEveryBlockAndStopsWhenAsked) {
     const auto plain = pipeline::lay_out_book(*doc, layout, book, *table);
     ASSERT_TRUE(plain);
 
