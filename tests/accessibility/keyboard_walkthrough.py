@@ -38,6 +38,18 @@ def type_text(text):
     time.sleep(0.3)
 
 
+def focused_window_name():
+    out = subprocess.run(["xdotool", "getwindowfocus", "getwindowname"], capture_output=True, text=True, timeout=20)
+    return out.stdout.strip() if out.returncode == 0 else ""
+
+
+def wait_keyboard_in(title):
+    # Keys typed before a dialog holds the keyboard land in the main window
+    # (a path typed into the document); under load a dialog can take seconds
+    # to appear, so wait for the X input focus to be on it, never for a time.
+    wait_for(lambda: title in focused_window_name(), f"the {title!r} dialog to take the keyboard", 60)
+
+
 def objects_of(app):
     out = []
     walk(app, ["app"], out)
@@ -77,7 +89,7 @@ def main():
 
         # 1. Open the sample: Ctrl+O, type the path, Enter.
         key("ctrl+o")
-        time.sleep(1.0)
+        wait_keyboard_in("Open or import")
         type_text(sample)
         key("Return")
         wait_for(lambda: "Opened" in announcement(app), "the sample to open", 30)
@@ -86,7 +98,11 @@ def main():
         # 2. Table picker (Ctrl+T opens its list); uncontracted English is just above contracted.
         focus_main()
         key("ctrl+t")
-        time.sleep(0.8)
+        # The list must be open before Up: on the closed combo box Up would
+        # already change the table, and Return then do nothing.
+        wait_for(lambda: any(o.getRole() == pyatspi.ROLE_COMBO_BOX and o.name == "Braille table"
+                             and o.getState().contains(pyatspi.STATE_EXPANDED) for o, _ in objects_of(app)),
+                 "the table list to open", 60)
         if shots:
             subprocess.run(["import", "-window", "root", os.path.join(shots, "walkthrough-tables.png")], check=False)
         key("Up", "Return")
@@ -106,7 +122,7 @@ def main():
         # 4. Export BRF (Ctrl+E), typing the file name into the dialog.
         focus_main()
         key("ctrl+e")
-        time.sleep(1.0)
+        wait_keyboard_in("Export")
         key("ctrl+a")
         type_text(brf)
         key("Return")
