@@ -7,6 +7,7 @@
 #include <QLineEdit>
 #include <QVBoxLayout>
 
+#include "entry_focus.hpp"
 #include "pipeline/page_range.hpp"
 #include "status_label.hpp"
 
@@ -24,6 +25,7 @@ EmbossChoice::EmbossChoice(QWidget* parent) : QWidget(parent) {
     range_->setAccessibleDescription(
         tr("As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents"));
     range_->setPlaceholderText(tr("e.g. 3-10, 5-, p1-p2"));
+    speak_entry_on_focus(range_);
     auto* range_label = new QLabel(tr("Pages:"), this);
     range_label->setBuddy(range_);
     auto* scope_label = new QLabel(tr("Em&boss:"), this);

@@ -13,6 +13,8 @@
 #include <QTextDocument>
 #include <QVBoxLayout>
 
+#include "entry_focus.hpp"
+
 namespace tactus::gui {
 
 FindReplaceDialog::FindReplaceDialog(QTextEdit* editor, QWidget* parent)
@@ -24,6 +26,8 @@ FindReplaceDialog::FindReplaceDialog(QTextEdit* editor, QWidget* parent)
     find_->setAccessibleName(tr("Find"));
     replace_ = new QLineEdit(this);
     replace_->setAccessibleName(tr("Replace with"));
+    speak_entry_on_focus(find_);
+    speak_entry_on_focus(replace_);
     case_ = new QCheckBox(tr("&Match case"), this);
     words_ = new QCheckBox(tr("&Whole words"), this);
     status_ = new QLabel(this);

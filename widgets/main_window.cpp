@@ -37,6 +37,7 @@
 #include "atomic_write.hpp"
 #include "braille_pane.hpp"
 #include "editor_widget.hpp"
+#include "emboss_choice.hpp"
 #include "edit/braille_carrier.hpp"
 #include "edit/editor_lines.hpp"
 #include "edit/print_word.hpp"
