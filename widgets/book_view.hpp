@@ -43,6 +43,8 @@ public:
     void set_source(std::function<const edit::LiveLayout*()> layout, std::function<QString()> file_name);
     // The book's options (sheets per volume, ...); lays the book out again.
     void set_options(const pipeline::BookOptions& options);
+    // The same, for the next layout: none is started (the caller starts one).
+    void keep_options(const pipeline::BookOptions& options) { options_ = options; }
     [[nodiscard]] const pipeline::BookOptions& options() const { return options_; }
 
     // The editor's layout changed: the book follows shortly (edits come in bursts).

@@ -32,6 +32,7 @@
 
 #include "announcer.hpp"
 #include "book_progress.hpp"
+#include "book_settings.hpp"
 #include "book_view.hpp"
 #include "ask.hpp"
 #include "atomic_write.hpp"
@@ -241,6 +242,8 @@ void MainWindow::build_actions() {
                        [this] { export_dialog(QStringLiteral("brf")); });
     export_pef_ = make(tr("Export &PEF..."), QKeySequence(tr("Ctrl+Shift+E")), QStringLiteral("exportPef"),
                        [this] { export_dialog(QStringLiteral("pef")); });
+    book_settings_ = make(tr("Boo&k Settings..."), QKeySequence(tr("Ctrl+Shift+B")), QStringLiteral("fileBookSettings"),
+                          [this] { book_settings(); });
     quit_ = make(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), QStringLiteral("fileQuit"), [this] { close(); });
     undo_ = editor_->undo_stack()->createUndoAction(this, tr("&Undo"));
     undo_->setShortcut(QKeySequence::Undo);
@@ -355,6 +358,8 @@ void MainWindow::build_menus() {
     recent_menu_->setObjectName(QStringLiteral("recentMenu"));
     file->addSeparator();
     file->addActions({save_, save_as_, export_brf_, export_pef_, preview_->pdf_action()});
+    file->addSeparator();
+    file->addAction(book_settings_);
     if (emboss_) file->addAction(emboss_);
     file->addSeparator();
     file->addAction(quit_);
@@ -390,6 +395,7 @@ QList<QAction*> MainWindow::all_actions() const {
 
 void MainWindow::restore_settings() {
     QSettings s;
+    book_->keep_options(load_book_rules(s));
     resize(1280, 800);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {700}, Qt::Horizontal);
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
@@ -580,6 +586,8 @@ void MainWindow::finish_load(const LoadResultPtr& r, bool replace_text) {
         path_ = saved_in_place(info.filePath()) ? info.absoluteFilePath() : QString();
         source_name_ = info.fileName();
         book_progress_->forget_opened();
+        // The title page's lines typed for the document before are not this one's.
+        book_->keep_options(without_title_lines(book_->options()));
         book_->start();  // now, not after the edits' pause: and no other document's book meanwhile
         add_recent(info.absoluteFilePath());
         update_title();
@@ -1215,6 +1223,19 @@ QList<QPair<QString, QString>> MainWindow::shortcut_rows() const {
     rows.append({tr("Preview: previous / next sheet"), tr("PgUp / PgDown")});
     rows.append({tr("Move between panes"), tr("Tab / Shift+Tab")});
     return rows;
+}
+
+void MainWindow::book_settings() {
+    BookSettingsDialog dialog(book_->options(), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    apply_book_settings(dialog.options());
+}
+
+void MainWindow::apply_book_settings(const pipeline::BookOptions& options) {
+    QSettings s;
+    save_book_rules(s, options);
+    book_->set_options(options);
+    report(tr("Book settings: about %n sheet(s) per volume", nullptr, options.sheets_per_volume));
 }
 
 void MainWindow::show_about() {

@@ -12,6 +12,7 @@
 #include "autosave.hpp"
 #include "document_loader.hpp"
 #include "motion_model.hpp"
+#include "pipeline/book_layout.hpp"
 
 class QDockWidget;
 class QLabel;
@@ -65,6 +66,9 @@ public:
     [[nodiscard]] Announcer* announcer() const { return announcer_; }
     // The book layout the preview shows and the printer embosses, when the document reads as a book.
     [[nodiscard]] BookView* book_view() const { return book_; }
+    // What Book Settings does on OK: the rules kept for every book, the book
+    // laid out again with them.
+    void apply_book_settings(const pipeline::BookOptions& options);
     [[nodiscard]] TablePicker* table_picker() const { return tables_; }
     [[nodiscard]] MotionView* motion_view() const { return motion_; }
     [[nodiscard]] VibrationView* vibration_view() const { return vibration_; }
@@ -127,6 +131,7 @@ private:
     void print_pdf_dialog();
     void show_shortcuts();
     void show_about();
+    void book_settings();
     void update_status();
     void update_title();
     void update_recent_menu();
@@ -182,7 +187,7 @@ private:
     static constexpr int kWordAfterBurstMs = 1500;
     bool word_after_burst_ = false;  // where the focus goes when the background work ends
 
-    QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *quit_;
+    QAction *new_, *open_, *save_, *save_as_, *export_brf_, *export_pef_, *book_settings_, *quit_;
     MotionView* motion_ = nullptr;
     VibrationView* vibration_ = nullptr;
     ProfileEditor* profile_ = nullptr;

@@ -23,7 +23,7 @@
 <context>
     <name>tactus::gui::EmbossChoice</name>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="124"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="126"/>
         <source>Whole document: %n sheet(s)</source>
         <translation>
             <numerusform>Whole document: %n sheet</numerusform>
@@ -31,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="126"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="128"/>
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation>
             <numerusform>Volume %1 of %2: %n sheet</numerusform>
@@ -39,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="131"/>
+        <location filename="../../widgets/emboss_choice.cpp" line="133"/>
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation>
             <numerusform>Pages %1 to %2: %n sheet</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>tactus::gui::FindReplaceDialog</name>
     <message numerus="yes">
-        <location filename="../../widgets/find_replace.cpp" line="114"/>
+        <location filename="../../widgets/find_replace.cpp" line="118"/>
         <source>%n replaced</source>
         <translation>
             <numerusform>%n replaced</numerusform>
@@ -73,7 +73,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="587"/>
+        <location filename="../../widgets/main_window.cpp" line="596"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -81,7 +81,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="602"/>
+        <location filename="../../widgets/main_window.cpp" line="611"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -89,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="629"/>
+        <location filename="../../widgets/main_window.cpp" line="638"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>Graphic %1 | %n sheet</numerusform>
@@ -97,11 +97,19 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="791"/>
+        <location filename="../../widgets/main_window.cpp" line="800"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>
             <numerusform>Exported %1 (%n sheets)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1238"/>
+        <source>Book settings: about %n sheet(s) per volume</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
         </translation>
     </message>
 </context>

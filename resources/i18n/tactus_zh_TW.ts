@@ -297,6 +297,144 @@
     </message>
 </context>
 <context>
+    <name>tactus::gui::BookSettingsDialog</name>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="37" />
+        <source>From the document</source>
+        <translation>取自文件</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="48" />
+        <source>Book Settings</source>
+        <translation>書籍設定</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="51" />
+        <source>How a book is divided into volumes and what each volume starts with. A document is laid out as a book when it is an EPUB, HTML or DAISY book, or longer than one volume.</source>
+        <translation>書籍如何分冊，以及每冊開頭放些什麼。文件為 EPUB、HTML 或 DAISY 書籍，或長度超過一冊時，會以書籍版面編排。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="54" />
+        <source>Sheets per volume</source>
+        <translation>每冊張數</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="55" />
+        <source>About this many sheets in each volume, its title page and contents included</source>
+        <translation>每冊約這麼多張，含書名頁與目錄</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="57" />
+        <source>Volumes start at heading level</source>
+        <translation>分冊起點的標題層級</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="58" />
+        <source>1: only at chapters; 2: at chapters and sections</source>
+        <translation>1：只在章；2：在章與節</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="60" />
+        <source>&amp;Title page in each volume</source>
+        <translation>每冊都有書名頁(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="62" />
+        <source>&amp;Contents pages in each volume</source>
+        <translation>每冊都有目錄頁(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="64" />
+        <source>Heading levels in the contents</source>
+        <translation>目錄列出的標題層級</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="64" />
+        <source>1: chapters only</source>
+        <translation>1：只列章</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="66" />
+        <source>Runnin&amp;g heads</source>
+        <translation>書眉(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="70" />
+        <source>Title</source>
+        <translation>書名</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="72" />
+        <source>Author</source>
+        <translation>作者</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="73" />
+        <source>Publisher</source>
+        <translation>出版者</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="74" />
+        <source>Year</source>
+        <translation>年份</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="76" />
+        <source>Transcribed by</source>
+        <translation>點字轉譯</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="77" />
+        <source>No such line</source>
+        <translation>不加此行</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="81" />
+        <source>&amp;Sheets per volume:</source>
+        <translation>每冊張數(&amp;S)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="82" />
+        <source>&amp;Volumes start at heading level:</source>
+        <translation>分冊起點的標題層級(&amp;V)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="85" />
+        <source>&amp;Heading levels in the contents:</source>
+        <translation>目錄列出的標題層級(&amp;H)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="88" />
+        <source>Title page (this document only)</source>
+        <translation>書名頁（僅限此文件）</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="90" />
+        <source>T&amp;itle:</source>
+        <translation>書名(&amp;I)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="91" />
+        <source>&amp;Author:</source>
+        <translation>作者(&amp;A)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="92" />
+        <source>&amp;Publisher:</source>
+        <translation>出版者(&amp;P)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="93" />
+        <source>&amp;Year:</source>
+        <translation>年份(&amp;Y)：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/book_settings.cpp" line="94" />
+        <source>Transcri&amp;bed by:</source>
+        <translation>點字轉譯(&amp;B)：</translation>
+    </message>
+</context>
+<context>
     <name>tactus::gui::BookView</name>
     <message>
         <location filename="../../widgets/book_view.cpp" line="205" />
@@ -325,7 +463,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="704" />
+        <location filename="../../widgets/editor_widget.cpp" line="709" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -391,7 +529,7 @@
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="700" />
+        <location filename="../../widgets/editor_widget.cpp" line="705" />
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -399,77 +537,77 @@
 <context>
     <name>tactus::gui::EmbossChoice</name>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="19" />
+        <location filename="../../widgets/emboss_choice.cpp" line="20" />
         <source>Emboss</source>
         <translation>列印範圍</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="20" />
+        <location filename="../../widgets/emboss_choice.cpp" line="21" />
         <source>The whole document, one volume of a book, or a range of braille pages</source>
         <translation>整份文件、書的其中一冊，或一段點字頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="23" />
+        <location filename="../../widgets/emboss_choice.cpp" line="24" />
         <source>Braille pages to emboss</source>
         <translation>要列印的點字頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="25" />
+        <location filename="../../widgets/emboss_choice.cpp" line="26" />
         <source>As the pages are numbered: 3-10, 5- (to the end), 7; in a book t1 for the title page, p1-p2 for the contents</source>
         <translation>依頁面上的頁碼：3-10、5-（到最後）、7；書中 t1 為書名頁，p1-p2 為目錄</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="26" />
+        <location filename="../../widgets/emboss_choice.cpp" line="27" />
         <source>e.g. 3-10, 5-, p1-p2</source>
         <translation>例如 3-10、5-、p1-p2</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="27" />
+        <location filename="../../widgets/emboss_choice.cpp" line="29" />
         <source>Pages:</source>
         <translation>頁：</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="29" />
+        <location filename="../../widgets/emboss_choice.cpp" line="31" />
         <source>Em&amp;boss:</source>
         <translation>列印(&amp;B)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="34" />
+        <location filename="../../widgets/emboss_choice.cpp" line="36" />
         <source>To emboss</source>
         <translation>要列印的內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="78" />
+        <location filename="../../widgets/emboss_choice.cpp" line="80" />
         <source>Whole document</source>
         <translation>整份文件</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="81" />
+        <location filename="../../widgets/emboss_choice.cpp" line="83" />
         <source>Volume %1 of %2</source>
         <translation>第 %1 冊，共 %2 冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="82" />
+        <location filename="../../widgets/emboss_choice.cpp" line="84" />
         <source>Page range</source>
         <translation>頁碼範圍</translation>
     </message>
     <message>
-        <location filename="../../widgets/emboss_choice.cpp" line="118" />
+        <location filename="../../widgets/emboss_choice.cpp" line="120" />
         <source>No pages chosen: %1</source>
         <translation>未選擇任何頁：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="124" />
+        <location filename="../../widgets/emboss_choice.cpp" line="126" />
         <source>Whole document: %n sheet(s)</source>
         <translation><numerusform>整份文件：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="126" />
+        <location filename="../../widgets/emboss_choice.cpp" line="128" />
         <source>Volume %1 of %2: %n sheet(s)</source>
         <translation><numerusform>第 %1 冊，共 %2 冊：%n 張</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/emboss_choice.cpp" line="131" />
+        <location filename="../../widgets/emboss_choice.cpp" line="133" />
         <source>Pages %1 to %2: %n sheet(s)</source>
         <translation><numerusform>第 %1 頁到第 %2 頁：%n 張</numerusform></translation>
     </message>
@@ -477,77 +615,77 @@
 <context>
     <name>tactus::gui::FindReplaceDialog</name>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="21" />
+        <location filename="../../widgets/find_replace.cpp" line="23" />
         <source>Find and Replace</source>
         <translation>尋找與取代</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="24" />
+        <location filename="../../widgets/find_replace.cpp" line="26" />
         <source>Find</source>
         <translation>尋找</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="26" />
+        <location filename="../../widgets/find_replace.cpp" line="28" />
         <source>Replace with</source>
         <translation>取代為</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="27" />
+        <location filename="../../widgets/find_replace.cpp" line="31" />
         <source>&amp;Match case</source>
         <translation>大小寫須相符(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="28" />
+        <location filename="../../widgets/find_replace.cpp" line="32" />
         <source>&amp;Whole words</source>
         <translation>全字拼寫須相符(&amp;W)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="30" />
+        <location filename="../../widgets/find_replace.cpp" line="34" />
         <source>Search result</source>
         <translation>搜尋結果</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="32" />
+        <location filename="../../widgets/find_replace.cpp" line="36" />
         <source>F&amp;ind:</source>
         <translation>尋找(&amp;I)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="33" />
+        <location filename="../../widgets/find_replace.cpp" line="37" />
         <source>Re&amp;place with:</source>
         <translation>取代為(&amp;P)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="37" />
+        <location filename="../../widgets/find_replace.cpp" line="41" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="38" />
+        <location filename="../../widgets/find_replace.cpp" line="42" />
         <source>Find Pre&amp;vious</source>
         <translation>找上一個(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="39" />
+        <location filename="../../widgets/find_replace.cpp" line="43" />
         <source>&amp;Replace</source>
         <translation>取代(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="40" />
+        <location filename="../../widgets/find_replace.cpp" line="44" />
         <source>Replace &amp;All</source>
         <translation>全部取代(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="74" />
+        <location filename="../../widgets/find_replace.cpp" line="78" />
         <source>“%1” not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>
-        <location filename="../../widgets/find_replace.cpp" line="79" />
+        <location filename="../../widgets/find_replace.cpp" line="83" />
         <source>Found on line %1</source>
         <translation>在第 %1 行找到</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/find_replace.cpp" line="114" />
+        <location filename="../../widgets/find_replace.cpp" line="118" />
         <source>%n replaced</source>
         <translation><numerusform>已取代 %n 處</numerusform></translation>
     </message>
@@ -574,869 +712,884 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="73" />
-        <location filename="../../widgets/main_window.cpp" line="676" />
-        <location filename="../../widgets/main_window.cpp" line="845" />
-        <location filename="../../widgets/main_window.cpp" line="899" />
-        <location filename="../../widgets/main_window.cpp" line="925" />
-        <location filename="../../widgets/main_window.cpp" line="942" />
+        <location filename="../../widgets/main_window.cpp" line="75" />
+        <location filename="../../widgets/main_window.cpp" line="685" />
+        <location filename="../../widgets/main_window.cpp" line="854" />
+        <location filename="../../widgets/main_window.cpp" line="908" />
+        <location filename="../../widgets/main_window.cpp" line="934" />
+        <location filename="../../widgets/main_window.cpp" line="951" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="83" />
+        <location filename="../../widgets/main_window.cpp" line="85" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="90" />
+        <location filename="../../widgets/main_window.cpp" line="92" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="91" />
+        <location filename="../../widgets/main_window.cpp" line="93" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="92" />
+        <location filename="../../widgets/main_window.cpp" line="94" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="97" />
+        <location filename="../../widgets/main_window.cpp" line="99" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="129" />
+        <location filename="../../widgets/main_window.cpp" line="131" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="131" />
+        <location filename="../../widgets/main_window.cpp" line="133" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="132" />
+        <location filename="../../widgets/main_window.cpp" line="134" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="139" />
+        <location filename="../../widgets/main_window.cpp" line="141" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="144" />
+        <location filename="../../widgets/main_window.cpp" line="146" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="233" />
+        <location filename="../../widgets/main_window.cpp" line="235" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="238" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="239" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="240" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="238" />
+        <location filename="../../widgets/main_window.cpp" line="240" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="239" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="239" />
+        <location filename="../../widgets/main_window.cpp" line="241" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="243" />
-        <location filename="../../widgets/main_window.cpp" line="949" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
+        <source>Boo&amp;k Settings...</source>
+        <translation>書籍設定(&amp;K)...</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="245" />
+        <source>Ctrl+Shift+B</source>
+        <translation>Ctrl+Shift+B</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="247" />
+        <location filename="../../widgets/main_window.cpp" line="958" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="243" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="244" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="247" />
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="252" />
+        <location filename="../../widgets/main_window.cpp" line="256" />
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="254" />
+        <location filename="../../widgets/main_window.cpp" line="258" />
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="256" />
+        <location filename="../../widgets/main_window.cpp" line="260" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="266" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="264" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="264" />
+        <location filename="../../widgets/main_window.cpp" line="268" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="266" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="266" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273" />
+        <location filename="../../widgets/main_window.cpp" line="277" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273" />
+        <location filename="../../widgets/main_window.cpp" line="277" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="277" />
+        <location filename="../../widgets/main_window.cpp" line="281" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="277" />
+        <location filename="../../widgets/main_window.cpp" line="281" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="281" />
+        <location filename="../../widgets/main_window.cpp" line="285" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="281" />
+        <location filename="../../widgets/main_window.cpp" line="285" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="285" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="285" />
+        <location filename="../../widgets/main_window.cpp" line="289" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="289" />
+        <location filename="../../widgets/main_window.cpp" line="293" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="298" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="298" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="295" />
+        <location filename="../../widgets/main_window.cpp" line="299" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="295" />
+        <location filename="../../widgets/main_window.cpp" line="299" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="297" />
+        <location filename="../../widgets/main_window.cpp" line="301" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="297" />
+        <location filename="../../widgets/main_window.cpp" line="301" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="300" />
+        <location filename="../../widgets/main_window.cpp" line="304" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="318" />
+        <location filename="../../widgets/main_window.cpp" line="322" />
         <source>&amp;Body text</source>
         <translation>內文(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="318" />
+        <location filename="../../widgets/main_window.cpp" line="322" />
         <source>Ctrl+Alt+0</source>
         <translation>Ctrl+Alt+0</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="321" />
+        <location filename="../../widgets/main_window.cpp" line="325" />
         <source>Heading &amp;%1</source>
         <translation>標題 %1(&amp;%1)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="321" />
+        <location filename="../../widgets/main_window.cpp" line="325" />
         <source>Ctrl+Alt+%1</source>
         <translation>Ctrl+Alt+%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="323" />
+        <location filename="../../widgets/main_window.cpp" line="327" />
         <source>B&amp;ulleted list</source>
         <translation>項目符號清單(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="323" />
+        <location filename="../../widgets/main_window.cpp" line="327" />
         <source>Ctrl+Alt+L</source>
         <translation>Ctrl+Alt+L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="325" />
+        <location filename="../../widgets/main_window.cpp" line="329" />
         <source>&amp;Numbered list</source>
         <translation>編號清單(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="325" />
+        <location filename="../../widgets/main_window.cpp" line="329" />
         <source>Ctrl+Alt+N</source>
         <translation>Ctrl+Alt+N</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="327" />
+        <location filename="../../widgets/main_window.cpp" line="331" />
         <source>&amp;Quotation</source>
         <translation>引文(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="327" />
+        <location filename="../../widgets/main_window.cpp" line="331" />
         <source>Ctrl+Alt+Q</source>
         <translation>Ctrl+Alt+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
+        <location filename="../../widgets/main_window.cpp" line="333" />
         <source>&amp;Page break</source>
         <translation>分頁(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
+        <location filename="../../widgets/main_window.cpp" line="333" />
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330" />
+        <location filename="../../widgets/main_window.cpp" line="334" />
         <source>Bol&amp;d</source>
         <translation>粗體(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330" />
+        <location filename="../../widgets/main_window.cpp" line="334" />
         <source>Ctrl+B</source>
         <translation>Ctrl+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="332" />
+        <location filename="../../widgets/main_window.cpp" line="336" />
         <source>&amp;Italic</source>
         <translation>斜體(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="332" />
+        <location filename="../../widgets/main_window.cpp" line="336" />
         <source>Ctrl+I</source>
         <translation>Ctrl+I</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="334" />
+        <location filename="../../widgets/main_window.cpp" line="338" />
         <source>Und&amp;erline</source>
         <translation>底線(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="334" />
+        <location filename="../../widgets/main_window.cpp" line="338" />
         <source>Ctrl+U</source>
         <translation>Ctrl+U</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="336" />
+        <location filename="../../widgets/main_window.cpp" line="340" />
         <source>Bo&amp;x</source>
         <translation>方框(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="336" />
+        <location filename="../../widgets/main_window.cpp" line="340" />
         <source>Ctrl+Alt+X</source>
         <translation>Ctrl+Alt+X</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="341" />
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="340" />
+        <location filename="../../widgets/main_window.cpp" line="344" />
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
+        <location filename="../../widgets/main_window.cpp" line="345" />
         <source>Show the print text's Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="351" />
+        <location filename="../../widgets/main_window.cpp" line="355" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="353" />
+        <location filename="../../widgets/main_window.cpp" line="357" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="360" />
+        <location filename="../../widgets/main_window.cpp" line="366" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="365" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="368" />
+        <location filename="../../widgets/main_window.cpp" line="374" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="377" />
+        <location filename="../../widgets/main_window.cpp" line="383" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="419" />
+        <location filename="../../widgets/main_window.cpp" line="426" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="426" />
+        <location filename="../../widgets/main_window.cpp" line="433" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="431" />
-        <location filename="../../widgets/main_window.cpp" line="608" />
+        <location filename="../../widgets/main_window.cpp" line="438" />
+        <location filename="../../widgets/main_window.cpp" line="617" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="441" />
+        <location filename="../../widgets/main_window.cpp" line="448" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="443" />
+        <location filename="../../widgets/main_window.cpp" line="450" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="444" />
+        <location filename="../../widgets/main_window.cpp" line="451" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="447" />
+        <location filename="../../widgets/main_window.cpp" line="454" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="468" />
+        <location filename="../../widgets/main_window.cpp" line="475" />
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="470" />
+        <location filename="../../widgets/main_window.cpp" line="477" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="494" />
+        <location filename="../../widgets/main_window.cpp" line="501" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="495" />
+        <location filename="../../widgets/main_window.cpp" line="502" />
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="502" />
+        <location filename="../../widgets/main_window.cpp" line="509" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="517" />
+        <location filename="../../widgets/main_window.cpp" line="524" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
+        <location filename="../../widgets/main_window.cpp" line="536" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="559" />
+        <location filename="../../widgets/main_window.cpp" line="566" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="564" />
+        <location filename="../../widgets/main_window.cpp" line="571" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="565" />
+        <location filename="../../widgets/main_window.cpp" line="572" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="587" />
+        <location filename="../../widgets/main_window.cpp" line="596" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="590" />
+        <location filename="../../widgets/main_window.cpp" line="599" />
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="593" />
+        <location filename="../../widgets/main_window.cpp" line="602" />
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="602" />
+        <location filename="../../widgets/main_window.cpp" line="611" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="629" />
+        <location filename="../../widgets/main_window.cpp" line="638" />
         <source>Graphic %1 | %n sheet(s)</source>
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="637" />
+        <location filename="../../widgets/main_window.cpp" line="646" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="640" />
+        <location filename="../../widgets/main_window.cpp" line="649" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="640" />
+        <location filename="../../widgets/main_window.cpp" line="649" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="651" />
-        <location filename="../../widgets/main_window.cpp" line="846" />
-        <location filename="../../widgets/main_window.cpp" line="857" />
-        <location filename="../../widgets/main_window.cpp" line="999" />
+        <location filename="../../widgets/main_window.cpp" line="660" />
+        <location filename="../../widgets/main_window.cpp" line="855" />
+        <location filename="../../widgets/main_window.cpp" line="866" />
+        <location filename="../../widgets/main_window.cpp" line="1008" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="656" />
+        <location filename="../../widgets/main_window.cpp" line="665" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="686" />
+        <location filename="../../widgets/main_window.cpp" line="695" />
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="699" />
+        <location filename="../../widgets/main_window.cpp" line="708" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="750" />
+        <location filename="../../widgets/main_window.cpp" line="759" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="995" />
+        <location filename="../../widgets/main_window.cpp" line="1004" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="758" />
+        <location filename="../../widgets/main_window.cpp" line="767" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="758" />
+        <location filename="../../widgets/main_window.cpp" line="767" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="760" />
+        <location filename="../../widgets/main_window.cpp" line="769" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="782" />
+        <location filename="../../widgets/main_window.cpp" line="791" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="791" />
+        <location filename="../../widgets/main_window.cpp" line="800" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="798" />
+        <location filename="../../widgets/main_window.cpp" line="807" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="799" />
+        <location filename="../../widgets/main_window.cpp" line="808" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="810" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="845" />
+        <location filename="../../widgets/main_window.cpp" line="854" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="943" />
+        <location filename="../../widgets/main_window.cpp" line="952" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="944" />
+        <location filename="../../widgets/main_window.cpp" line="953" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="950" />
+        <location filename="../../widgets/main_window.cpp" line="959" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="858" />
+        <location filename="../../widgets/main_window.cpp" line="867" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="872" />
+        <location filename="../../widgets/main_window.cpp" line="881" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="890" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="885" />
+        <location filename="../../widgets/main_window.cpp" line="894" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1023" />
+        <location filename="../../widgets/main_window.cpp" line="1032" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="886" />
+        <location filename="../../widgets/main_window.cpp" line="895" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891" />
+        <location filename="../../widgets/main_window.cpp" line="900" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="115" />
+        <location filename="../../widgets/main_window.cpp" line="117" />
         <source>The document cannot be laid out for this printer's page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="734" />
+        <location filename="../../widgets/main_window.cpp" line="743" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="915" />
+        <location filename="../../widgets/main_window.cpp" line="924" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="916" />
+        <location filename="../../widgets/main_window.cpp" line="925" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="928" />
+        <location filename="../../widgets/main_window.cpp" line="937" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="930" />
+        <location filename="../../widgets/main_window.cpp" line="939" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="931" />
+        <location filename="../../widgets/main_window.cpp" line="940" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="932" />
+        <location filename="../../widgets/main_window.cpp" line="941" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="934" />
+        <location filename="../../widgets/main_window.cpp" line="943" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="902" />
+        <location filename="../../widgets/main_window.cpp" line="911" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="904" />
+        <location filename="../../widgets/main_window.cpp" line="913" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="915" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="914" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="915" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="908" />
+        <location filename="../../widgets/main_window.cpp" line="917" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="620" />
+        <location filename="../../widgets/main_window.cpp" line="629" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="621" />
+        <location filename="../../widgets/main_window.cpp" line="630" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1015" />
+        <location filename="../../widgets/main_window.cpp" line="1024" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1091" />
+        <location filename="../../widgets/main_window.cpp" line="1100" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1124" />
         <location filename="../../widgets/main_window.cpp" line="1133" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1157" />
+        <location filename="../../widgets/main_window.cpp" line="1166" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1162" />
+        <location filename="../../widgets/main_window.cpp" line="1171" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1175" />
+        <location filename="../../widgets/main_window.cpp" line="1184" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1179" />
+        <location filename="../../widgets/main_window.cpp" line="1188" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1181" />
+        <location filename="../../widgets/main_window.cpp" line="1190" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1181" />
+        <location filename="../../widgets/main_window.cpp" line="1190" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1210" />
+        <location filename="../../widgets/main_window.cpp" line="1219" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1210" />
+        <location filename="../../widgets/main_window.cpp" line="1219" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1211" />
+        <location filename="../../widgets/main_window.cpp" line="1220" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1211" />
+        <location filename="../../widgets/main_window.cpp" line="1220" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1212" />
+        <location filename="../../widgets/main_window.cpp" line="1221" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1212" />
+        <location filename="../../widgets/main_window.cpp" line="1221" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1213" />
+        <location filename="../../widgets/main_window.cpp" line="1222" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1213" />
+        <location filename="../../widgets/main_window.cpp" line="1222" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1214" />
+        <location filename="../../widgets/main_window.cpp" line="1223" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1214" />
+        <location filename="../../widgets/main_window.cpp" line="1223" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1215" />
+        <location filename="../../widgets/main_window.cpp" line="1224" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1215" />
+        <location filename="../../widgets/main_window.cpp" line="1224" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1238" />
+        <source>Book settings: about %n sheet(s) per volume</source>
+        <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1221" />
+        <location filename="../../widgets/main_window.cpp" line="1243" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1222" />
+        <location filename="../../widgets/main_window.cpp" line="1244" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

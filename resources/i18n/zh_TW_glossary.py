@@ -379,6 +379,23 @@ T = {
     "Laying out the book: %1 percent": "正在排版書籍：百分之 %1",
     "%n volume(s)": "%n 冊", "%n sheet(s)": "%n 張", "Opened %1: %2": "已開啟 %1：%2", "Book: %1": "書籍：%1",
     "The book could not be laid out: %1": "無法排版書籍：%1", "Book layout cancelled": "已取消書籍排版",
+    # Book Settings: the book layout's rules and the title page's lines.
+    "Boo&k Settings...": "書籍設定(&K)...", "Book Settings": "書籍設定",
+    "Book settings: about %n sheet(s) per volume": "書籍設定：每冊約 %n 張",
+    "How a book is divided into volumes and what each volume starts with. A document is laid out as a book when it is an EPUB, HTML or DAISY book, or longer than one volume.":
+        "書籍如何分冊，以及每冊開頭放些什麼。文件為 EPUB、HTML 或 DAISY 書籍，或長度超過一冊時，會以書籍版面編排。",
+    "Sheets per volume": "每冊張數", "&Sheets per volume:": "每冊張數(&S)：",
+    "About this many sheets in each volume, its title page and contents included": "每冊約這麼多張，含書名頁與目錄",
+    "Volumes start at heading level": "分冊起點的標題層級", "&Volumes start at heading level:": "分冊起點的標題層級(&V)：",
+    "1: only at chapters; 2: at chapters and sections": "1：只在章；2：在章與節",
+    "&Title page in each volume": "每冊都有書名頁(&T)", "&Contents pages in each volume": "每冊都有目錄頁(&C)",
+    "Heading levels in the contents": "目錄列出的標題層級", "&Heading levels in the contents:": "目錄列出的標題層級(&H)：",
+    "1: chapters only": "1：只列章", "Runnin&g heads": "書眉(&G)",
+    "Title page (this document only)": "書名頁（僅限此文件）",
+    "Title": "書名", "T&itle:": "書名(&I)：", "Author": "作者", "&Author:": "作者(&A)：",
+    "Publisher": "出版者", "&Publisher:": "出版者(&P)：", "Year": "年份", "&Year:": "年份(&Y)：",
+    "Transcribed by": "點字轉譯", "Transcri&bed by:": "點字轉譯(&B)：",
+    "From the document": "取自文件", "No such line": "不加此行",
 }
 
 

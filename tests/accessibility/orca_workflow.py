@@ -601,6 +601,12 @@ def scenario_book(tactus, sample, work):
         s.step("typing a range", type_text="3-10", allow_silent=True, quiet=0.8)
         s.step("Enter says the range with its sheets", keys=["Return"],
                expect=[r"Pages 3 to 10: 4 sheets"], once=[r"Pages 3 to 10: 4 sheets"])
+        # Book Settings from the File menu (F10, Down, its mnemonic K).
+        s.step("F10 opens the menu bar", keys=["F10"], expect=[r"File"])
+        s.step("Down opens the File menu", keys=["Down"], expect=[r"New"])
+        s.step("K opens Book Settings", keys=["k"], expect=[r"Book Settings", r"Sheets per volume", r"70"])
+        s.step("Tab names the next rule", keys=["Tab"], expect=[r"Volumes start at heading level"])
+        s.step("Escape closes Book Settings", keys=["Escape"], forbid=[r"Book settings: about"])
         print(s.summary())
     return 0
 

@@ -3,10 +3,12 @@
 // domain) opens in the book layout; the preview moves by volume and says
 // "Volume 2 of N, page t1"; the printer panel embosses a chosen volume or
 // page range, and the built-in simulator strikes exactly those sheets.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThreadPool>
@@ -16,6 +18,7 @@
 #include <set>
 
 #include "announcer.hpp"
+#include "book_settings.hpp"
 #include "book_view.hpp"
 #include "controller/builtin_sim.hpp"
 #include "emboss_choice.hpp"
@@ -79,6 +82,107 @@ private Q_SLOTS:
         install_accessibility();
     }
     void init() { test::fresh_spool(dir_.path()); }
+
+    // Every rule and title line the dialog shows comes back from it as
+    // given; the rules (not the title page's lines) are kept in the settings,
+    // and a value out of range there is the rule's default.
+    void book_settings_keep_every_rule() {
+        pipeline::BookOptions o;
+        o.sheets_per_volume = 33;
+        o.split_level = 1;
+        o.title_page = false;
+        o.contents = false;
+        o.contents_depth = 4;
+        o.running_heads = false;
+        o.title = "The Strange Case";
+        o.author = "R. L. Stevenson";
+        o.publisher = "Standard Ebooks";
+        o.year = "1886";
+        o.transcriber = "A Teacher";
+        BookSettingsDialog dialog(o);
+        const auto shown = dialog.options();
+        QCOMPARE(shown.sheets_per_volume, 33);
+        QCOMPARE(shown.split_level, 1);
+        QCOMPARE(shown.title_page, false);
+        QCOMPARE(shown.contents, false);
+        QCOMPARE(shown.contents_depth, 4);
+        QCOMPARE(shown.running_heads, false);
+        QCOMPARE(shown.title, o.title);
+        QCOMPARE(shown.author, o.author);
+        QCOMPARE(shown.publisher, o.publisher);
+        QCOMPARE(shown.year, o.year);
+        QCOMPARE(shown.transcriber, o.transcriber);
+        auto* depth = dialog.findChild<QSpinBox*>(QStringLiteral("bookContentsDepth"));
+        QVERIFY(depth && !depth->isEnabled());  // no contents, no depth to choose
+        dialog.findChild<QCheckBox*>(QStringLiteral("bookContents"))->setChecked(true);
+        QVERIFY(depth->isEnabled());
+
+        QSettings s;
+        save_book_rules(s, o);
+        auto back = load_book_rules(s);
+        QCOMPARE(back.sheets_per_volume, 33);
+        QCOMPARE(back.split_level, 1);
+        QCOMPARE(back.title_page, false);
+        QCOMPARE(back.contents, false);
+        QCOMPARE(back.contents_depth, 4);
+        QCOMPARE(back.running_heads, false);
+        QVERIFY(back.title.empty() && back.author.empty() && back.transcriber.empty());
+        s.setValue(QStringLiteral("book/sheets_per_volume"), 1);
+        s.setValue(QStringLiteral("book/contents_depth"), QStringLiteral("deep"));
+        back = load_book_rules(s);
+        QCOMPARE(back.sheets_per_volume, pipeline::BookOptions{}.sheets_per_volume);
+        QCOMPARE(back.contents_depth, pipeline::BookOptions{}.contents_depth);
+        s.remove(QStringLiteral("book"));
+    }
+
+    // Book Settings lays the open book out again: smaller volumes give more
+    // of them, and the title typed is on every volume's title page; the
+    // rules stay for the next window, the title does not stay for the next
+    // document.
+    void book_settings_lay_the_book_out_again() {
+        QSettings().remove(QStringLiteral("book"));
+        std::size_t volumes_before = 0;
+        {
+            MainWindow w;
+            QVERIFY(w.open_file_now(jekyll()));
+            auto* book = w.book_view();
+            QSignalSpy ended(book, &BookView::ended);
+            book->start();
+            QVERIFY(ended.wait(60000));
+            QVERIFY(book->active());
+            volumes_before = book->volumes().size();
+            QCOMPARE(book->options().sheets_per_volume, pipeline::BookOptions{}.sheets_per_volume);
+
+            auto options = book->options();
+            options.sheets_per_volume = 20;
+            w.apply_book_settings(options);
+            QVERIFY(ended.wait(60000));
+            QVERIFY2(book->active(), qPrintable(book->error()));
+            QVERIFY2(book->volumes().size() > volumes_before,
+                     qPrintable(QStringLiteral("%1 volumes, %2 before").arg(book->volumes().size()).arg(volumes_before)));
+            const auto from_metadata = book->shown(nullptr)->pages[book->volumes()[0].first_page].lines;
+            const auto volumes = book->volumes().size();
+            options.title = "A Teacher's Copy";
+            w.apply_book_settings(options);
+            QVERIFY(ended.wait(60000));
+            QCOMPARE(book->volumes().size(), volumes);
+            // The title page (t1) is no longer the one made from the EPUB's metadata.
+            QVERIFY(book->shown(nullptr)->pages[book->volumes()[0].first_page].lines != from_metadata);
+        }
+        MainWindow again;
+        QCOMPARE(again.book_view()->options().sheets_per_volume, 20);
+        QVERIFY(again.book_view()->options().title.empty());
+        {
+            MainWindow w;
+            auto options = w.book_view()->options();
+            options.title = "Not for the next document";
+            w.apply_book_settings(options);
+            QVERIFY(w.open_file_now(jekyll()));
+            QVERIFY(w.book_view()->options().title.empty());
+            QCOMPARE(w.book_view()->options().sheets_per_volume, 20);
+        }
+        QSettings().remove(QStringLiteral("book"));
+    }
 
     void a_short_text_is_not_a_book() {
         MainWindow w;
