@@ -603,7 +603,7 @@ document::Document reopen_with_pictures(const document::Document& doc, exporter:
 }
 
 // The blocks with their pictures' names left out: a saved picture is named
-// by the part the new file keeps it in ("word/media/image1.png").
+// by the part the saved file keeps it in ("word/media/image1.png").
 std::vector<Block> unnamed(const document::Document& d) {
     auto blocks = blocks_of(d);
     for (auto& b : blocks)
