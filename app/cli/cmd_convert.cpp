@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // tactus-cli convert: a document saved in another print format (Markdown,
-// text, DOCX, ODT), as the app's Save As does; what the format does not keep
-// is named on stderr.
+// text, DOCX, ODT), as the app's Save As does, pictures kept in DOCX and ODT;
+// what the format does not keep is named on stderr.
 #include <iostream>
 
 #include "command.hpp"
@@ -33,7 +33,12 @@ void add_convert_command(CLI::App& app) {
             fail_with(exit_usage, Error{"cannot tell the format from the name; give --to md, txt, docx or odt",
                                         args->output, ErrorKind::usage});
         }
-        const auto document = require(import::import_file(args->input));
+        // DOCX and ODT keep pictures (docs/import.md, "Saving DOCX and ODT"):
+        // opened with them, they are saved; Markdown and text keep their
+        // descriptions only.
+        import::ImportOptions options;
+        options.images = format == exporter::DocumentFormat::docx || format == exporter::DocumentFormat::odt;
+        const auto document = require(import::import_file(args->input, options));
         for (const auto& w : document.warnings) std::cerr << "tactus-cli: " << args->input << ": " << w << '\n';
         const auto warnings = require(exporter::save_document(document, format, args->output));
         for (const auto& w : warnings) std::cerr << "tactus-cli: " << args->output << ": " << w << '\n';

@@ -38,6 +38,7 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
         if (b.kind == document::BlockKind::table_cell && b.span > 1)
             losses.add("a merged cell is written as its columns", i);
         if (text && b.box != 0) losses.add("a box is written as the blocks in it, without the box", i);
+        if (!b.images.empty()) losses.add("a picture is left out (its description stays)", i);
         if (!text && b.kind == document::BlockKind::list_item && !has_item_mark(b))
             losses.add("a list item without a bullet or number is written with a bullet", i);
         if (text) {

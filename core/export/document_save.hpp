@@ -27,7 +27,8 @@ std::string_view document_format_name(DocumentFormat format);
 // file). Markdown and text are written in the document's own encoding
 // (Document::encoding, UTF-8 when empty). Gives the warnings: what the format
 // does not keep (Markdown: boxes, underline, raised text, an image's
-// description as such, languages; text: every style).
+// description as such, languages, the pictures; text: every style and the
+// pictures).
 Result<std::vector<std::string>> save_document(const document::Document& document, DocumentFormat format,
                                                const std::filesystem::path& path);
 

@@ -4,13 +4,15 @@
 // LibreOffice to show them as what they are: headings in the "heading N"
 // styles, list items numbered by word/numbering.xml, quotes in the "Quote"
 // style, tables with header rows (w:tblHeader), notes in word/footnotes.xml,
-// boxes as text boxes (wps:txbx), an image's description on a placeholder
-// picture (wp:docPr descr), page breaks as pageBreakBefore or w:br.
+// boxes as text boxes (wps:txbx), pictures as inline pictures in
+// word/media with their descriptions (wp:docPr descr), page breaks as
+// pageBreakBefore or w:br.
 #include <algorithm>
 #include <array>
 #include <map>
 
 #include "document/cell_paragraphs.hpp"
+#include "document/placeholder_picture.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
 #include "export/zip_writer.hpp"
@@ -72,8 +74,17 @@ public:
         parts.push_back({"word/styles.xml", styles_part(), false});
         parts.push_back({"word/numbering.xml", numbering_part(), false});
         parts.push_back({"word/footnotes.xml", footnotes_part(), false});
+        // A relationship belongs to its part: the notes' pictures name theirs
+        // in the notes' own relationships, the same ids as the text's.
+        if (const auto pictures = picture_rels(); !pictures.empty())
+            parts.push_back({"word/_rels/footnotes.xml.rels",
+                             std::string(kXmlDeclaration) +
+                                 "<Relationships xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\">" +
+                                 pictures + "</Relationships>",
+                             false});
         parts.push_back({"word/settings.xml", settings_part(), false});
-        if (pictures_ > 0) parts.push_back({"word/media/placeholder.png", std::string(office::placeholder_png()), false});
+        if (pictures_ > 0) parts.push_back({"word/media/placeholder.png", std::string(document::placeholder_png()), false});
+        for (const auto& m : media_) parts.push_back({"word/media/" + m.file, m.image->bytes, false});
         auto bytes = zip_package(parts);
         if (!bytes) return std::unexpected(bytes.error());
         return OfficeFile{std::move(*bytes), losses_.lines("DOCX")};
@@ -169,7 +180,9 @@ private:
         ppr += numbering;
         out += "<w:p>";
         if (!ppr.empty()) out += "<w:pPr>" + ppr + "</w:pPr>";
-        runs(out, spans, index);
+        office::BlockPictures pictures(b);
+        runs(out, spans, index, pictures);
+        rest(out, pictures, index);
         out += "</w:p>";
     }
 
@@ -196,14 +209,14 @@ private:
         return num;
     }
 
-    void runs(std::string& out, const std::vector<Span>& spans, std::size_t index) {
+    void runs(std::string& out, const std::vector<Span>& spans, std::size_t index, office::BlockPictures& pictures) {
         for (const auto& s : spans) {
             if (s.note_reference) {
-                reference(out, s, index);
+                reference(out, s, index, pictures);
                 continue;
             }
             if (s.transcriber_note) {
-                picture(out, s.text);
+                picture(out, s.text, pictures.next(), index);
                 continue;
             }
             std::string rpr;
@@ -237,14 +250,14 @@ private:
         }
     }
 
-    void reference(std::string& out, const Span& s, std::size_t index) {
+    void reference(std::string& out, const Span& s, std::size_t index, office::BlockPictures& pictures) {
         const auto it = notes_.by_label.find(s.text);
         if (it == notes_.by_label.end()) {
             losses_.add("a note reference without its note is written as raised text", index);
             Span raised = s;
             raised.note_reference = false;
             raised.position = document::Position::superscript;
-            runs(out, {raised}, index);
+            runs(out, {raised}, index, pictures);
             return;
         }
         const int id = footnote(doc_.blocks[it->second]);
@@ -260,23 +273,59 @@ private:
                       "w:val=\"FootnoteReference\"/></w:rPr><w:footnoteRef/></w:r><w:r><w:t xml:space=\"preserve\"> "
                       "</w:t></w:r>";
         std::string body;
-        runs(body, office::note_body(note), index);
+        office::BlockPictures pictures(note);
+        runs(body, office::note_body(note), index, pictures);
+        rest(body, pictures, index);
         footnotes_ += body + "</w:p></w:footnote>";
         return id;
     }
 
-    // An image's description, on a picture of one transparent pixel.
-    void picture(std::string& out, const std::string& description) {
-        ++pictures_;
+    // The pictures of a block that no description took, after its text.
+    void rest(std::string& out, office::BlockPictures& pictures, std::size_t index) {
+        for (const auto& image : pictures.rest()) picture(out, {}, &image, index);
+    }
+
+    // A picture in a run of its own, inline (wp:inline: in the text, where
+    // the importer reads it back in order), its description on wp:docPr
+    // descr, which the importer reads (else title). A description without a
+    // picture stands on the placeholder (document/placeholder_picture.hpp).
+    void picture(std::string& out, std::string_view description, const document::Image* image, std::size_t index) {
+        std::string relationship = "rIdPicture";
+        office::Extent extent{9525, 9525};  // the placeholder's one pixel
+        std::string svg;
+        if (image) {
+            auto file = office::picture_file_name(static_cast<int>(media_.size()) + 1, image->media_type);
+            if (file.empty()) {
+                losses_.add("a picture not PNG, JPEG or SVG is left out (its description stays)", index);
+                image = nullptr;
+            } else {
+                media_.push_back({std::move(file), image});
+                relationship = "rIdImage" + std::to_string(media_.size());
+                extent = office::picture_extent(*image);
+                // Word draws an SVG from its svgBlip extension (Office 2016
+                // on); the blip itself names the SVG too, which LibreOffice
+                // and the importer read (there is no PNG to fall back on).
+                if (image->media_type == "image/svg+xml")
+                    svg = "<a:extLst><a:ext uri=\"{96DAC541-7B7A-43D3-8B79-37D633B846F1}\"><asvg:svgBlip "
+                          "xmlns:asvg=\"http://schemas.microsoft.com/office/drawing/2016/SVG/main\" r:embed=\"" +
+                          relationship + "\"/></a:ext></a:extLst>";
+            }
+        }
+        if (!image) {
+            if (description.empty()) return;
+            ++pictures_;
+        }
         const auto id = std::to_string(++drawings_);
-        const auto descr = escape(description, &dropped_controls_);
-        out += "<w:r><w:drawing><wp:inline distT=\"0\" distB=\"0\" distL=\"0\" distR=\"0\"><wp:extent cx=\"9525\" "
-               "cy=\"9525\"/><wp:docPr id=\"" + id + "\" name=\"Picture " + id + "\" descr=\"" + descr +
-               "\"/><a:graphic><a:graphicData uri=\"http://schemas.openxmlformats.org/drawingml/2006/picture\">"
-               "<pic:pic><pic:nvPicPr><pic:cNvPr id=\"" + id + "\" name=\"Picture " + id + "\" descr=\"" + descr +
-               "\"/><pic:cNvPicPr/></pic:nvPicPr><pic:blipFill><a:blip r:embed=\"rIdPicture\"/><a:stretch>"
-               "<a:fillRect/></a:stretch></pic:blipFill><pic:spPr><a:xfrm><a:off x=\"0\" y=\"0\"/><a:ext "
-               "cx=\"9525\" cy=\"9525\"/></a:xfrm><a:prstGeom prst=\"rect\"><a:avLst/></a:prstGeom></pic:spPr>"
+        const auto descr =
+            description.empty() ? std::string() : " descr=\"" + escape(description, &dropped_controls_) + "\"";
+        const auto size = "cx=\"" + std::to_string(extent.cx) + "\" cy=\"" + std::to_string(extent.cy) + "\"";
+        out += "<w:r><w:drawing><wp:inline distT=\"0\" distB=\"0\" distL=\"0\" distR=\"0\"><wp:extent " + size +
+               "/><wp:docPr id=\"" + id + "\" name=\"Picture " + id + "\"" + descr +
+               "/><a:graphic><a:graphicData uri=\"http://schemas.openxmlformats.org/drawingml/2006/picture\">"
+               "<pic:pic><pic:nvPicPr><pic:cNvPr id=\"" + id + "\" name=\"Picture " + id + "\"" + descr +
+               "/><pic:cNvPicPr/></pic:nvPicPr><pic:blipFill><a:blip r:embed=\"" + relationship + "\">" + svg +
+               "</a:blip><a:stretch><a:fillRect/></a:stretch></pic:blipFill><pic:spPr><a:xfrm><a:off x=\"0\" "
+               "y=\"0\"/><a:ext " + size + "/></a:xfrm><a:prstGeom prst=\"rect\"><a:avLst/></a:prstGeom></pic:spPr>"
                "</pic:pic></a:graphicData></a:graphic></wp:inline></w:drawing></w:r>";
     }
 
@@ -345,10 +394,15 @@ private:
                     ppr = "<w:pPr><w:jc w:val=\"left\"/></w:pPr>";
                     losses_.add("a column aligned left comes back as not aligned (left is DOCX's default)", k);
                 }
-                // Each of the cell's paragraphs a w:p of its own (document/cell_paragraphs.hpp).
-                for (const auto& paragraph : document::cell_paragraphs(cell.spans)) {
+                // Each of the cell's paragraphs a w:p of its own
+                // (document/cell_paragraphs.hpp), its pictures no
+                // description took in the last.
+                office::BlockPictures pictures(cell);
+                const auto paragraphs = document::cell_paragraphs(cell.spans);
+                for (std::size_t p = 0; p < paragraphs.size(); ++p) {
                     out += "<w:p>" + ppr;
-                    runs(out, paragraph, k);
+                    runs(out, paragraphs[p], k, pictures);
+                    if (p + 1 == paragraphs.size()) rest(out, pictures, k);
                     out += "</w:p>";
                 }
                 out += "</w:tc>";
@@ -367,8 +421,13 @@ private:
         out += "<Types xmlns=\"http://schemas.openxmlformats.org/package/2006/content-types\">"
                "<Default Extension=\"rels\" ContentType=\"application/vnd.openxmlformats-package.relationships+xml\"/>"
                "<Default Extension=\"xml\" ContentType=\"application/xml\"/>"
-               "<Default Extension=\"png\" ContentType=\"image/png\"/>"
-               "<Override PartName=\"/word/document.xml\" "
+               "<Default Extension=\"png\" ContentType=\"image/png\"/>";
+        for (const auto& [extension, type] : {std::pair<std::string_view, std::string_view>{".jpeg", "image/jpeg"},
+                                              {".svg", "image/svg+xml"}})
+            if (std::ranges::any_of(media_, [&](const Media& m) { return m.file.ends_with(extension); }))
+                out += "<Default Extension=\"" + std::string(extension.substr(1)) + "\" ContentType=\"" +
+                       std::string(type) + "\"/>";
+        out += "<Override PartName=\"/word/document.xml\" "
                "ContentType=\"application/vnd.openxmlformats-officedocument.wordprocessingml.document.main+xml\"/>"
                "<Override PartName=\"/word/styles.xml\" "
                "ContentType=\"application/vnd.openxmlformats-officedocument.wordprocessingml.styles+xml\"/>"
@@ -402,9 +461,19 @@ private:
                                                              {"rIdSettings", "settings", "settings.xml"}}})
             out += "<Relationship Id=\"" + std::string(id) + "\" Type=\"" + base + std::string(type) +
                    "\" Target=\"" + std::string(target) + "\"/>";
-        if (pictures_ > 0)
-            out += "<Relationship Id=\"rIdPicture\" Type=\"" + base + "image\" Target=\"media/placeholder.png\"/>";
-        out += "</Relationships>";
+        out += picture_rels() + "</Relationships>";
+        return out;
+    }
+
+    // The relationships of the pictures (rIdPicture the placeholder's,
+    // rIdImageN each picture's), for document.xml and footnotes.xml alike.
+    [[nodiscard]] std::string picture_rels() const {
+        const std::string type = "http://schemas.openxmlformats.org/officeDocument/2006/relationships/image";
+        std::string out;
+        if (pictures_ > 0) out += "<Relationship Id=\"rIdPicture\" Type=\"" + type + "\" Target=\"media/placeholder.png\"/>";
+        for (std::size_t k = 0; k < media_.size(); ++k)
+            out += "<Relationship Id=\"rIdImage" + std::to_string(k + 1) + "\" Type=\"" + type +
+                   "\" Target=\"media/" + media_[k].file + "\"/>";
         return out;
     }
 
@@ -508,6 +577,12 @@ private:
         return out;
     }
 
+    // A picture stored in word/media, in the order written.
+    struct Media {
+        std::string file;  // "image1.png"
+        const document::Image* image;
+    };
+
     struct Override {
         int abstract;
         int ilvl;
@@ -520,7 +595,8 @@ private:
     std::string footnotes_;
     int footnote_count_ = 0;
     int drawings_ = 0;
-    int pictures_ = 0;
+    int pictures_ = 0;  // descriptions on the placeholder
+    std::vector<Media> media_;
     std::size_t dropped_controls_ = 0;
     std::map<int, std::array<int, kMaxListLevel>> counters_;  // per w:abstractNum, as the importer counts
     std::map<int, bool> counters_started_;

@@ -5,13 +5,15 @@
 // headings in the "Heading N" styles, nested text:list lists (a number
 // that does not follow on is an item's text:start-value), the "Quotations"
 // style, tables with table:table-header-rows, text:note footnotes, boxes as
-// text boxes (draw:text-box), an image's description on a placeholder
-// picture (svg:desc), page breaks as paragraph styles breaking before.
+// text boxes (draw:text-box), pictures as frames of images in Pictures/
+// with their descriptions (svg:desc), page breaks as paragraph styles
+// breaking before.
 #include <algorithm>
 #include <array>
 #include <map>
 
 #include "document/cell_paragraphs.hpp"
+#include "document/placeholder_picture.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
 #include "export/zip_writer.hpp"
@@ -77,7 +79,8 @@ public:
         parts.push_back({"content.xml", content_part(body), false});
         parts.push_back({"styles.xml", styles_part(), false});
         parts.push_back({"META-INF/manifest.xml", manifest(), false});
-        if (pictures_ > 0) parts.push_back({"Pictures/placeholder.png", std::string(office::placeholder_png()), false});
+        if (pictures_ > 0) parts.push_back({"Pictures/placeholder.png", std::string(document::placeholder_png()), false});
+        for (const auto& m : media_) parts.push_back({"Pictures/" + m.file, m.image->bytes, false});
         auto bytes = zip_package(parts);
         if (!bytes) return std::unexpected(bytes.error());
         return OfficeFile{std::move(*bytes), losses_.lines("ODT")};
@@ -167,7 +170,10 @@ private:
         return it->second;
     }
 
-    void paragraph(std::string& out, const Block& b, std::size_t index, bool break_before) {
+    // `pictures`: a table cell's, shared by its paragraphs, the rest placed
+    // in the last (`last`); else the block's own.
+    void paragraph(std::string& out, const Block& b, std::size_t index, bool break_before,
+                   office::BlockPictures* pictures = nullptr, bool last = true) {
         std::string style = "Standard";
         std::string element = "text:p";
         std::string attributes;
@@ -187,7 +193,10 @@ private:
         }
         if (break_before) style = breaking(style);
         out += "<" + element + " text:style-name=\"" + style + "\"" + attributes + ">";
-        runs(out, b.spans, index);
+        office::BlockPictures own(b);
+        if (!pictures) pictures = &own;
+        runs(out, b.spans, index, *pictures);
+        if (last) rest(out, *pictures, index);
         out += "</" + element + ">";
     }
 
@@ -293,7 +302,9 @@ private:
         std::fill(counters_.begin() + static_cast<std::ptrdiff_t>(depth) + 1, counters_.end(), 0);
         lists_.back().item_open = true;
         out += "<text:p text:style-name=\"" + (break_before ? breaking("List_20_Paragraph") : "List_20_Paragraph") + "\">";
-        runs(out, office::without_label(b, label), index);
+        office::BlockPictures pictures(b);
+        runs(out, office::without_label(b, label), index, pictures);
+        rest(out, pictures, index);
         out += "</text:p>";
     }
 
@@ -345,7 +356,7 @@ private:
         out += escape(chunk, &dropped_controls_);
     }
 
-    void runs(std::string& out, const std::vector<Span>& spans, std::size_t index) {
+    void runs(std::string& out, const std::vector<Span>& spans, std::size_t index, office::BlockPictures& pictures) {
         for (const auto& s : spans) {
             if (s.note_reference) {
                 const auto it = notes_.by_label.find(s.text);
@@ -357,11 +368,11 @@ private:
                 Span raised = s;
                 raised.note_reference = false;
                 raised.position = document::Position::superscript;
-                runs(out, {raised}, index);
+                runs(out, {raised}, index, pictures);
                 continue;
             }
             if (s.transcriber_note) {
-                picture(out, s.text);
+                picture(out, s.text, pictures.next(), index);
                 continue;
             }
             if (!s.language.empty()) losses_.add("a passage's language is written (fo:language) but not read back", index);
@@ -376,18 +387,47 @@ private:
         const auto id = std::to_string(++notes_written_);
         out += "<text:note text:id=\"ftn" + id + "\" text:note-class=\"footnote\"><text:note-citation>" + id +
                "</text:note-citation><text:note-body><text:p text:style-name=\"Footnote\">";
-        runs(out, office::note_body(b), index);
+        office::BlockPictures pictures(b);
+        runs(out, office::note_body(b), index, pictures);
+        rest(out, pictures, index);
         out += "</text:p></text:note-body></text:note>";
     }
 
-    // An image's description, on a picture of one transparent pixel.
-    void picture(std::string& out, const std::string& description) {
-        ++pictures_;
+    // The pictures of a block that no description took, after its text.
+    void rest(std::string& out, office::BlockPictures& pictures, std::size_t index) {
+        for (const auto& image : pictures.rest()) picture(out, {}, &image, index);
+    }
+
+    // A picture in a frame anchored as a character (in the text, where the
+    // importer reads it back in order), its description in svg:desc, which
+    // the importer reads (else svg:title). A description without a picture
+    // stands on the placeholder (document/placeholder_picture.hpp).
+    void picture(std::string& out, std::string_view description, const document::Image* image, std::size_t index) {
+        std::string href = "Pictures/placeholder.png", type = "image/png";
+        office::Extent extent{9525, 9525};  // the placeholder's one pixel
+        if (image) {
+            auto file = office::picture_file_name(static_cast<int>(media_.size()) + 1, image->media_type);
+            if (file.empty()) {
+                losses_.add("a picture not PNG, JPEG or SVG is left out (its description stays)", index);
+                image = nullptr;
+            } else {
+                href = "Pictures/" + file;
+                type = image->media_type;
+                extent = office::picture_extent(*image);
+                media_.push_back({std::move(file), image});
+            }
+        }
+        if (!image) {
+            if (description.empty()) return;
+            ++pictures_;
+        }
         out += "<draw:frame draw:name=\"Picture " + std::to_string(++frames_) +
-               "\" text:anchor-type=\"as-char\" svg:width=\"0.03cm\" svg:height=\"0.03cm\" draw:z-index=\"0\">"
-               "<draw:image xlink:href=\"Pictures/placeholder.png\" xlink:type=\"simple\" xlink:show=\"embed\" "
-               "xlink:actuate=\"onLoad\"/><svg:desc>" +
-               escape(description, &dropped_controls_) + "</svg:desc></draw:frame>";
+               "\" text:anchor-type=\"as-char\" svg:width=\"" + office::odf_length(extent.cx) + "\" svg:height=\"" +
+               office::odf_length(extent.cy) + "\" draw:z-index=\"0\"><draw:image xlink:href=\"" + href +
+               "\" xlink:type=\"simple\" xlink:show=\"embed\" xlink:actuate=\"onLoad\" draw:mime-type=\"" + type +
+               "\"/>";
+        if (!description.empty()) out += "<svg:desc>" + escape(description, &dropped_controls_) + "</svg:desc>";
+        out += "</draw:frame>";
     }
 
     void text_box(std::string& out, std::size_t begin, std::size_t end) {
@@ -439,10 +479,13 @@ private:
                 if (cell.align == document::Align::left)
                     losses_.add("a column aligned left comes back as not aligned (left is ODT's default)", k);
                 // Each of the cell's paragraphs a text:p of its own (document/cell_paragraphs.hpp).
-                for (auto& spans : document::cell_paragraphs(cell.spans)) {
+                // Its pictures no description took in the last.
+                office::BlockPictures pictures(cell);
+                auto paragraphs = document::cell_paragraphs(cell.spans);
+                for (std::size_t p = 0; p < paragraphs.size(); ++p) {
                     Block piece = cell;
-                    piece.spans = std::move(spans);
-                    paragraph(out, piece, k, false);
+                    piece.spans = std::move(paragraphs[p]);
+                    paragraph(out, piece, k, false, &pictures, p + 1 == paragraphs.size());
                 }
                 out += "</table:table-cell>";
                 for (int c = 1; c < span; ++c) out += "<table:covered-table-cell/>";
@@ -566,9 +609,18 @@ private:
         if (pictures_ > 0)
             out += "<manifest:file-entry manifest:full-path=\"Pictures/placeholder.png\" "
                    "manifest:media-type=\"image/png\"/>";
+        for (const auto& m : media_)
+            out += "<manifest:file-entry manifest:full-path=\"Pictures/" + m.file + "\" manifest:media-type=\"" +
+                   m.image->media_type + "\"/>";
         out += "</manifest:manifest>";
         return out;
     }
+
+    // A picture stored in Pictures/, in the order written.
+    struct Media {
+        std::string file;  // "image1.png"
+        const document::Image* image;
+    };
 
     const document::Document& doc_;
     office::Notes notes_;
@@ -579,7 +631,8 @@ private:
     std::map<Signature, std::string> list_styles_;    // list style -> its name
     std::map<std::string, std::pair<std::string, Span>> text_styles_;
     int notes_written_ = 0;
-    int pictures_ = 0;
+    int pictures_ = 0;  // descriptions on the placeholder
+    std::vector<Media> media_;
     int frames_ = 0;
     int tables_ = 0;
     std::size_t dropped_controls_ = 0;

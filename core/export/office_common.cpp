@@ -2,8 +2,10 @@
 #include "export/office_common.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "export/markdown_syntax.hpp"
+#include "export/picture_size.hpp"
 
 namespace tactus::exporter::office {
 
@@ -105,12 +107,42 @@ std::vector<std::string> Losses::lines(std::string_view format) const {
     return out;
 }
 
-std::string_view placeholder_png() {
-    static constexpr char png[] =
-        "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x01\x00\x00\x00\x01\x08\x06"
-        "\x00\x00\x00\x1f\x15\xc4\x89\x00\x00\x00\x0b\x49\x44\x41\x54\x78\xda\x63\x60\x00\x02\x00\x00\x05\x00\x01"
-        "\xe9\xfa\xdc\xd8\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82";
-    return {png, sizeof png - 1};
+std::string picture_file_name(int number, std::string_view media_type) {
+    const std::string_view extension = media_type == "image/png"       ? "png"
+                                       : media_type == "image/jpeg"    ? "jpeg"
+                                       : media_type == "image/svg+xml" ? "svg"
+                                                                       : "";
+    if (extension.empty()) return {};
+    return "image" + std::to_string(number) + "." + std::string(extension);
+}
+
+Extent picture_extent(const document::Image& image) {
+    constexpr double emu_per_px = 914400.0 / 96;
+    // The text's width on the writers' page (A4, 2.54 cm margins): wider
+    // pictures are narrowed to it, keeping their shape, as Word does.
+    constexpr double text_width = (11906 - 2 * 1440) * 635.0;
+    // A picture is written at its own pixel size at 96 to the inch, what
+    // Word and LibreOffice give a picture inserted with no size of its own;
+    // the model keeps the bytes and not a print size. One that does not say
+    // its size (an SVG without width, height or viewBox) is a square of
+    // 8 cm, about a third of the text's width, visible without hiding the
+    // text around it.
+    const auto own = picture_pixel_size(image.bytes, image.media_type);
+    double cx = own ? own->width * emu_per_px : 8 * 360000.0;
+    double cy = own ? own->height * emu_per_px : 8 * 360000.0;
+    if (cx > text_width) {
+        cy = cy * text_width / cx;
+        cx = text_width;
+    }
+    const auto at_least_one = [](double v) { return std::max(1LL, static_cast<long long>(std::llround(v))); };
+    return {at_least_one(cx), at_least_one(cy)};
+}
+
+std::string odf_length(long long emu) {
+    const long long thousandths = (emu + 180) / 360;  // 360000 EMU to the centimetre
+    std::string fraction = std::to_string(thousandths % 1000);
+    fraction.insert(0, 3 - fraction.size(), '0');
+    return std::to_string(thousandths / 1000) + "." + fraction + "cm";
 }
 
 const document::Block* next_shown(const std::vector<document::Block>& blocks, std::size_t i, std::size_t end) {

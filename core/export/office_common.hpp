@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the DOCX and ODT writers share: XML escaping, a list item's label read
-// back into a list style and number, the notes of a document by label, and
-// the warnings for what a format does not keep. Each writer only writes its
+// back into a list style and number, the notes of a document by label, a
+// block's pictures paired with their descriptions and sized, and the
+// warnings for what a format does not keep. Each writer only writes its
 // own XML.
 #include <cstddef>
 #include <map>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "document/document.hpp"
@@ -64,10 +67,46 @@ private:
     std::vector<std::pair<std::string, Count>> kinds_;
 };
 
-// A 1x1 transparent PNG: a picture for an image's description to belong to
-// (DOCX wp:docPr descr, ODT svg:desc), since the model keeps the description
-// and not the picture.
-std::string_view placeholder_png();
+// A block's pictures (document::Block::images) as the writers place them:
+// each transcriber's note takes the block's next picture and is written as
+// its description; the pictures left when the notes run out follow the
+// block's text, undescribed. The model does not say which note describes
+// which picture, but the importers give a described picture its note where
+// it stands, so pairing them in order reads back as the same spans and the
+// same pictures in the same order.
+class BlockPictures {
+public:
+    explicit BlockPictures(const document::Block& block) : images_(block.images) {}
+    // The picture for the next transcriber's note; nullptr once all are placed.
+    const document::Image* next() { return next_ < images_.size() ? &images_[next_++] : nullptr; }
+    // The pictures no note took; afterwards there are none.
+    std::span<const document::Image> rest() {
+        const auto from = std::exchange(next_, images_.size());
+        return std::span<const document::Image>(images_).subspan(from);
+    }
+
+private:
+    const std::vector<document::Image>& images_;
+    std::size_t next_ = 0;
+};
+
+// A picture's file name in the package, numbered in the order written
+// ("image3.png", "image4.jpeg", "image5.svg"), or "" for a type the importers
+// would not read back as a picture (only PNG, JPEG and SVG make a graphic):
+// such a picture is left out with a warning, and its description stays.
+std::string picture_file_name(int number, std::string_view media_type);
+
+// How large a picture is written, in EMU (914400 to the inch; DOCX's unit,
+// ODT's lengths are written from it).
+struct Extent {
+    long long cx = 0;
+    long long cy = 0;
+};
+Extent picture_extent(const document::Image& image);
+
+// An EMU length as ODF writes it, in centimetres ("2.540cm"), the same in
+// every locale.
+std::string odf_length(long long emu);
 
 // The next block after `i` (before `end`) that the text shows: notes are
 // written where they are referred to, not where they stand.

@@ -31,6 +31,7 @@
 #include "import/importers.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "document/placeholder_picture.hpp"
 #include "import/picture_part.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
@@ -325,6 +326,9 @@ private:
             out_.warn("picture " + target->second + ": " + bytes.error().message + "; its description stays");
             return std::nullopt;
         }
+        // The writers' stand-in for a description with no picture: the
+        // description is the picture (document/placeholder_picture.hpp).
+        if (*bytes == document::placeholder_png()) return std::nullopt;
         auto type = picture_media_type(*bytes, target->second);
         if (type.empty()) {
             out_.warn(unsupported_picture_warning(target->second));

@@ -37,6 +37,7 @@
 #include "import/importers.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "document/placeholder_picture.hpp"
 #include "import/picture_part.hpp"
 #include "import/text_position.hpp"
 #include "import/xml_util.hpp"
@@ -465,6 +466,9 @@ private:
             out_.warn("picture " + href + ": " + bytes.error().message + "; its description stays");
             return std::nullopt;
         }
+        // The writers' stand-in for a description with no picture: the
+        // description is the picture (document/placeholder_picture.hpp).
+        if (*bytes == document::placeholder_png()) return std::nullopt;
         auto type = picture_media_type(*bytes, href);
         if (type.empty()) {
             out_.warn(unsupported_picture_warning(href));
