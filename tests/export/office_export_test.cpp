@@ -465,6 +465,15 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
         // The importers count list numbers: take the document they give,
         // and check it is a fixed point of a save and an open.
         const auto once = reopen(doc, exporter::OfficeFormat::odt);
+        // The passages in another language come back, each in its language.
+        const auto marked = [](const document::Document& d) {
+            std::vector<std::string> out;
+            for (const auto& b : d.blocks)
+                for (const auto& s : b.spans)
+                    if (!s.language.empty()) out.push_back(s.language + ":" + s.text);
+            return out;
+        };
+        EXPECT_EQ(marked(once), marked(doc)) << round;
         for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt}) {
             SCOPED_TRACE(round);
             EXPECT_SAME_BLOCKS(blocks_of(reopen(once, format)), blocks_of(once));
