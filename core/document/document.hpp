@@ -38,8 +38,8 @@ struct Span {
     // (docs/layout.md, "Transcriber's notes").
     bool transcriber_note = false;
     // The passage's language as the source marks it (BCP 47, from HTML lang,
-    // xml:lang); empty = the document's own. Kept for choosing a table per
-    // passage; the translator does not act on it yet.
+    // xml:lang, DOCX w:lang, ODT fo:language); empty = the document's own.
+    // The translator gives it its language's table (translate/language_switch.hpp).
     std::string language = {};
     bool operator==(const Span&) const = default;
 };

@@ -6,7 +6,7 @@
 // style, tables with header rows (w:tblHeader), notes in word/footnotes.xml,
 // boxes as text boxes (wps:txbx), pictures as inline pictures in
 // word/media with their descriptions (wp:docPr descr), page breaks as
-// pageBreakBefore or w:br.
+// pageBreakBefore or w:br, a passage's language as w:lang.
 #include <algorithm>
 #include <array>
 #include <map>
@@ -225,9 +225,13 @@ private:
             if (s.emphasis & document::emphasis_underline) rpr += "<w:u w:val=\"single\"/>";
             if (s.position == document::Position::superscript) rpr += "<w:vertAlign w:val=\"superscript\"/>";
             if (s.position == document::Position::subscript) rpr += "<w:vertAlign w:val=\"subscript\"/>";
+            // The passage's language for every script (Latin, East Asian,
+            // complex): Word and the importer take one of the three by each
+            // character's script, and the passage is in this language
+            // whatever its characters are.
             if (!s.language.empty()) {
-                rpr += "<w:lang w:val=\"" + escape(s.language) + "\"/>";
-                losses_.add("a passage's language is written (w:lang) but not read back", index);
+                const auto tag = escape(s.language);
+                rpr += "<w:lang w:val=\"" + tag + "\" w:eastAsia=\"" + tag + "\" w:bidi=\"" + tag + "\"/>";
             }
             out += "<w:r>";
             if (!rpr.empty()) out += "<w:rPr>" + rpr + "</w:rPr>";

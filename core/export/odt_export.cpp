@@ -7,9 +7,10 @@
 // style, tables with table:table-header-rows, text:note footnotes, boxes as
 // text boxes (draw:text-box), pictures as frames of images in Pictures/
 // with their descriptions (svg:desc), page breaks as paragraph styles
-// breaking before.
+// breaking before, a passage's language in its automatic text style.
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <map>
 
 #include "document/cell_paragraphs.hpp"
@@ -375,7 +376,6 @@ private:
                 picture(out, s.text, pictures.next(), index);
                 continue;
             }
-            if (!s.language.empty()) losses_.add("a passage's language is written (fo:language) but not read back", index);
             const auto style = text_style(s);
             if (!style.empty()) out += "<text:span text:style-name=\"" + style + "\">";
             text(out, s.text);
@@ -503,6 +503,29 @@ private:
         out += "</table:table>";
     }
 
+    // A passage's language for every script (Latin, Asian, complex: the
+    // importer and LibreOffice take one of the three by each character's
+    // script, and the passage is in this language whatever its characters
+    // are): language and country, and the whole tag as
+    // style:rfc-language-tag when it says more ("zh-Hant-TW", "sr-Latn").
+    [[nodiscard]] static std::string language_attributes(const std::string& tag) {
+        const auto dash = tag.find('-');
+        const std::string language = tag.substr(0, dash);
+        const std::string rest = dash == std::string::npos ? std::string{} : tag.substr(dash + 1);
+        const bool region = (rest.size() == 2 && std::isalpha(static_cast<unsigned char>(rest[0])) &&
+                             std::isalpha(static_cast<unsigned char>(rest[1]))) ||
+                            (rest.size() == 3 && std::all_of(rest.begin(), rest.end(), [](char c) { return c >= '0' && c <= '9'; }));
+        std::string out;
+        for (const std::string_view suffix : {"", "-asian", "-complex"}) {
+            const std::string prefix = suffix.empty() ? "fo:" : "style:";
+            out += " " + prefix + "language" + std::string(suffix) + "=\"" + escape(language) + "\"";
+            if (region) out += " " + prefix + "country" + std::string(suffix) + "=\"" + escape(rest) + "\"";
+            if (!rest.empty() && !region)
+                out += " style:rfc-language-tag" + std::string(suffix) + "=\"" + escape(tag) + "\"";
+        }
+        return out;
+    }
+
     // ---- Parts ----
 
     [[nodiscard]] std::string content_part(const std::string& body) const {
@@ -523,11 +546,7 @@ private:
                        "style:text-underline-color=\"font-color\"";
             if (s.position == document::Position::superscript) out += " style:text-position=\"super 58%\"";
             if (s.position == document::Position::subscript) out += " style:text-position=\"sub 58%\"";
-            if (!s.language.empty()) {
-                const auto dash = s.language.find('-');
-                out += " fo:language=\"" + escape(s.language.substr(0, dash)) + "\"";
-                if (dash != std::string::npos) out += " fo:country=\"" + escape(s.language.substr(dash + 1)) + "\"";
-            }
+            if (!s.language.empty()) out += language_attributes(s.language);
             out += "/></style:style>";
         }
         for (const auto& [name, align] : {std::pair<std::string_view, std::string_view>{"P_centre", "center"},

@@ -16,7 +16,10 @@
 // picture is, and a picture without one is named in a warning. Ruby
 // (w:ruby) keeps its base and, by choice, its guide as a transcriber's note;
 // w:vertAlign raises and lowers runs; equations (m:oMath) are linear text
-// (office_math.hpp).
+// (office_math.hpp). A passage's language is w:lang's for each character's
+// script (office_language.hpp), from direct formatting, character and
+// paragraph styles and the document defaults; only a language other than
+// the document's own for that script is kept on the text.
 // Not imported, deliberately: headers and footers (braille pages carry their
 // own numbers, and a running head repeated on every print page is not text),
 // comments.
@@ -29,6 +32,7 @@
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_language.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
 #include "document/placeholder_picture.hpp"
@@ -96,7 +100,8 @@ public:
                const pugi::xml_node& endnotes, RubyGuide ruby, std::string_view part, std::string_view bytes)
         : styles_(styles), numbering_(numbering), footnotes_(notes_by_id(footnotes)),
           endnotes_(notes_by_id(endnotes)), footnotes_root_(footnotes), endnotes_root_(endnotes),
-          ruby_(ruby), part_(part), bytes_(bytes) {}
+          ruby_(ruby), part_(part), bytes_(bytes), document_languages_(styles.document_languages()),
+          paragraph_languages_(document_languages_) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
@@ -195,7 +200,10 @@ private:
         out_.begin_paragraph(kind, level, numbering ? numbering_.next_label(*numbering) : std::string{});
         std::vector<pugi::xml_node> boxes;
         std::swap(boxes, boxes_);
-        inline_content(p);
+        {
+            const ParagraphLanguages languages(*this, p);
+            inline_content(p);
+        }
         out_.end_paragraph();
         std::swap(boxes, boxes_);
         text_boxes(boxes);
@@ -364,11 +372,14 @@ private:
         // typeform indicator there would tell the reader of emphasis that is not).
         if (in_hyperlink_ > 0 || attribute(child(rPr, "rStyle"), "val") == "Hyperlink")
             emphasis = static_cast<std::uint8_t>(emphasis & ~document::emphasis_underline);
+        auto languages = paragraph_languages_;
+        languages.apply(format.languages);
+        const auto baseline = document::Position::baseline;
         for (const auto& c : r.children()) {
             if (c.type() != pugi::node_element) continue;
             const auto name = local_name(c);
             if (name == "t")
-                out_.text(c.child_value(), emphasis, position);
+                text(c.child_value(), emphasis, position, languages);
             else if (name == "drawing")
                 drawing(c);
             else if (name == "pict")
@@ -378,11 +389,11 @@ private:
             else if (name == "ruby")
                 ruby(c);
             else if (name == "tab")
-                out_.text("\t", emphasis);
+                text("\t", emphasis, baseline, languages);
             else if (name == "cr")
-                out_.text("\n", emphasis);
+                text("\n", emphasis, baseline, languages);
             else if (name == "noBreakHyphen")
-                out_.text("\xE2\x80\x91", emphasis);  // U+2011 non-breaking hyphen
+                text("\xE2\x80\x91", emphasis, baseline, languages);  // U+2011 non-breaking hyphen
             else if (name == "footnoteReference")
                 note(footnotes_, attribute(c, "id"));
             else if (name == "endnoteReference")
@@ -392,7 +403,7 @@ private:
                 if (type == "page")
                     out_.page_break_inside();
                 else if (type != "column")
-                    out_.text("\n", emphasis);
+                    text("\n", emphasis, baseline, languages);
             }
         }
     }
@@ -413,9 +424,39 @@ private:
         for (const auto& p : note.children())
             if (local_name(p) == "p") {
                 out_.begin_paragraph(document::BlockKind::paragraph, 0, {});
+                const ParagraphLanguages languages(*this, p);
                 inline_content(p);
                 out_.end_paragraph();
             }
+    }
+
+    // The languages of a paragraph's text while it is read; the paragraph
+    // around it (a note's reference stands in one) has its own again after.
+    class ParagraphLanguages {
+    public:
+        ParagraphLanguages(BodyReader& reader, const pugi::xml_node& p)
+            : reader_(reader), outer_(std::move(reader.paragraph_languages_)) {
+            reader_.paragraph_languages_ =
+                reader_.styles_.paragraph_languages(attribute(child(child(p, "pPr"), "pStyle"), "val"));
+        }
+        ~ParagraphLanguages() { reader_.paragraph_languages_ = std::move(outer_); }
+        ParagraphLanguages(const ParagraphLanguages&) = delete;
+        ParagraphLanguages& operator=(const ParagraphLanguages&) = delete;
+
+    private:
+        BodyReader& reader_;
+        OfficeLanguages outer_;
+    };
+
+    // A run's text in pieces of one language each (office_language.hpp): the
+    // run's characters decide which of its three languages applies, as in
+    // Word, so a run is cut where its script changes class, and only a
+    // language other than the document's own is marked. Cutting (rather than
+    // one language per run) keeps the Latin words of a run marked Chinese
+    // for its East Asian text in the Latin language, as Word shows them.
+    void text(std::string_view t, std::uint8_t emphasis, document::Position position, const OfficeLanguages& languages) {
+        for (const auto& piece : language_pieces(t, languages, document_languages_))
+            out_.text(piece.text, emphasis, position, piece.language);
     }
 
     const DocxStyles& styles_;
@@ -431,6 +472,8 @@ private:
     int box_depth_ = 0;
     OfficeText out_;
     int in_hyperlink_ = 0;  // inside w:hyperlink (nested ones count)
+    const OfficeLanguages document_languages_;  // the defaults' and the default paragraph style's
+    OfficeLanguages paragraph_languages_;       // the paragraph being read: defaults, then its style
 };
 
 // The main part's relationships by id, their targets as part names.

@@ -77,6 +77,7 @@ void RunFormat::apply(const RunFormat& over) {
     if (over.bold) bold = over.bold;
     if (over.italic) italic = over.italic;
     if (over.underline) underline = over.underline;
+    languages.apply(over.languages);
 }
 
 std::uint8_t RunFormat::emphasis() const {
@@ -97,6 +98,19 @@ RunFormat read_run_format(const pugi::xml_node& rPr) {
     f.bold = read_toggle(child(rPr, "b"));
     f.italic = read_toggle(child(rPr, "i"));
     f.underline = read_toggle(child(rPr, "u"));  // w:val="none" switches it off
+    // <w:lang w:val="en-US" w:eastAsia="zh-TW" w:bidi="ar-SA"/>: an absent
+    // attribute inherits, a present one sets its class's language.
+    for (const auto& a : child(rPr, "lang").attributes()) {
+        std::string_view name = a.name();
+        name = name.substr(name.find(':') == std::string_view::npos ? 0 : name.find(':') + 1);
+        if (name == "val") f.languages.latin = language_tag(a.value());
+        if (name == "eastAsia") f.languages.east_asian = language_tag(a.value());
+        if (name == "bidi") f.languages.complex = language_tag(a.value());
+    }
+    // Right-to-left or complex-script formatting: the run is complex script.
+    const auto rtl = read_toggle(child(rPr, "rtl"));
+    const auto cs = read_toggle(child(rPr, "cs"));
+    if (rtl || cs) f.languages.complex_run = rtl.value_or(false) || cs.value_or(false);
     return f;
 }
 
@@ -111,6 +125,7 @@ std::optional<NumberingRef> read_numbering_ref(const pugi::xml_node& pPr) {
 }
 
 DocxStyles::DocxStyles(const pugi::xml_node& root) {
+    defaults_ = read_run_format(child(child(child(root, "docDefaults"), "rPrDefault"), "rPr")).languages;
     for (const auto& s : root.children()) {
         if (local_name(s) != "style") continue;
         const std::string id(attribute(s, "styleId"));
@@ -136,10 +151,23 @@ const DocxStyles::Style* DocxStyles::find(std::string_view id) const {
     return it == styles_.end() ? nullptr : &it->second;
 }
 
+const DocxStyles::Style* DocxStyles::find_paragraph(std::string_view id) const {
+    const Style* s = find(id.empty() ? std::string_view(default_paragraph_) : id);
+    return s ? s : find(default_paragraph_);
+}
+
+OfficeLanguages DocxStyles::paragraph_languages(std::string_view style_id) const {
+    std::vector<const Style*> chain;
+    const Style* s = find_paragraph(style_id);
+    for (int depth = 0; s && depth < 32; ++depth, s = find(s->based_on)) chain.push_back(s);
+    OfficeLanguages out = defaults_;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) out.apply((*it)->run.languages);
+    return out;
+}
+
 ParagraphStyle DocxStyles::paragraph(std::string_view style_id) const {
     ParagraphStyle out;
-    const Style* s = find(style_id.empty() ? std::string_view(default_paragraph_) : style_id);
-    if (!s) s = find(default_paragraph_);
+    const Style* s = find_paragraph(style_id);
     // Walk from the style to its ancestors; the nearest definition wins. The
     // depth bound stops a basedOn cycle in a hand-made file.
     std::vector<const Style*> chain;

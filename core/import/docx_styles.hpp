@@ -2,7 +2,7 @@
 #pragma once
 // WordprocessingML styles (word/styles.xml) and list numbering (word/numbering.xml),
 // resolved to what the document model needs: heading level, list membership,
-// page-break-before and bold/italic/underline.
+// page-break-before, bold/italic/underline and the languages of the text.
 #include <pugixml.hpp>
 
 #include <array>
@@ -14,12 +14,14 @@
 #include <unordered_set>
 
 #include "document/document.hpp"
+#include "import/office_language.hpp"
 
 namespace tactus::import::detail {
 
-// Toggle properties; unset = inherit.
+// Toggle properties and w:lang; unset = inherit.
 struct RunFormat {
     std::optional<bool> bold, italic, underline;
+    OfficeLanguages languages;  // w:lang w:val, w:eastAsia, w:bidi; w:rtl, w:cs
     void apply(const RunFormat& over);
     [[nodiscard]] std::uint8_t emphasis() const;
 };
@@ -51,6 +53,14 @@ public:
     // Empty id = the default paragraph style. Unknown ids resolve like the default.
     [[nodiscard]] ParagraphStyle paragraph(std::string_view style_id) const;
     [[nodiscard]] RunFormat character(std::string_view style_id) const;
+    // The languages of a paragraph's text before its runs' own: the
+    // document defaults (w:docDefaults), then the paragraph style's chain
+    // (empty id = the default paragraph style). Unlike bold or italic, a
+    // paragraph style's language is the text's.
+    [[nodiscard]] OfficeLanguages paragraph_languages(std::string_view style_id) const;
+    // The document's own languages: those of a paragraph in the default
+    // paragraph style with no language of its own.
+    [[nodiscard]] OfficeLanguages document_languages() const { return paragraph_languages({}); }
 
 private:
     struct Style {
@@ -62,7 +72,9 @@ private:
         RunFormat run;
     };
     [[nodiscard]] const Style* find(std::string_view id) const;
+    [[nodiscard]] const Style* find_paragraph(std::string_view id) const;
     std::unordered_map<std::string, Style> styles_;
+    OfficeLanguages defaults_;  // w:docDefaults/w:rPrDefault
     std::string default_paragraph_;
 };
 

@@ -16,7 +16,10 @@
 // without either is named in a warning), a formula object (draw:object) its
 // StarMath annotation, else its MathML as linear text (office_math.hpp).
 // Raised and lowered text from style:text-position; ruby (text:ruby) as for
-// DOCX. List labels follow the list style's number format (1, i, I, a, A),
+// DOCX. A passage's language is the one its text, paragraph and default
+// styles give each character's script (fo:language, style:language-asian,
+// style:language-complex; office_language.hpp), kept only where it is not
+// the document's own. List labels follow the list style's number format (1, i, I, a, A),
 // start values (the level's text:start-value, an item's text:start-value)
 // and continued numbering (text:continue-numbering, text:continue-list).
 // Not imported: headers and footers (in styles.xml, as for DOCX), annotations,
@@ -35,6 +38,7 @@
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
 #include "import/importers.hpp"
+#include "import/office_language.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
 #include "document/placeholder_picture.hpp"
@@ -79,7 +83,35 @@ struct OdtStyle {
     bool quote = false;  // "Quotations" (by name or display name)
     document::Align align = document::Align::none;  // fo:text-align; start/left is the default
     document::Position position = document::Position::baseline;
+    OfficeLanguages languages;
 };
+
+// fo:language and fo:country (Latin), style:language-asian and
+// style:country-asian, style:language-complex and style:country-complex; a
+// style:rfc-language-tag(-asian, -complex) names what a language and country
+// cannot ("zh-Hant-TW") and wins.
+OfficeLanguages read_languages(const pugi::xml_node& text_properties) {
+    OfficeLanguages out;
+    for (const auto& [suffix, tag] : {std::pair<std::string_view, std::optional<std::string>*>{"", &out.latin},
+                                      {"-asian", &out.east_asian},
+                                      {"-complex", &out.complex}}) {
+        std::optional<std::string_view> language, country, rfc;
+        for (const auto& a : text_properties.attributes()) {
+            std::string_view name = a.name();
+            if (const auto colon = name.find(':'); colon != std::string_view::npos) name.remove_prefix(colon + 1);
+            if (!name.ends_with(suffix)) continue;
+            name.remove_suffix(suffix.size());
+            if (name == "language") language = a.value();
+            if (name == "country") country = a.value();
+            if (name == "rfc-language-tag") rfc = a.value();
+        }
+        if (rfc)
+            *tag = language_tag(*rfc);
+        else if (language)
+            *tag = language_tag(*language, country.value_or(std::string_view{}));
+    }
+    return out;
+}
 
 // Paragraph and text styles by name (automatic styles in content.xml, common
 // ones in styles.xml); a style inherits what its parent sets.
@@ -87,6 +119,10 @@ class OdtStyles {
 public:
     void read(const pugi::xml_node& styles_parent) {
         for (const auto& s : styles_parent.children()) {
+            // The paragraph family's default style: what every paragraph
+            // style starts from (LibreOffice keeps the document's languages there).
+            if (local_name(s) == "default-style" && attribute(s, "family") == "paragraph")
+                default_languages_.apply(read_languages(child(s, "text-properties")));
             if (local_name(s) != "style") continue;
             OdtStyle style;
             style.parent = std::string(attribute(s, "parent-style-name"));
@@ -107,6 +143,7 @@ public:
                 else if (pos.starts_with("sub") || pos.starts_with("-"))
                     style.position = document::Position::subscript;
             }
+            style.languages = read_languages(text);
             const auto underline = attribute(text, "text-underline-style");
             if (!underline.empty() && underline != "none") style.emphasis |= emphasis_underline;
             else if (underline == "none") style.cleared |= emphasis_underline;
@@ -162,6 +199,22 @@ public:
         const auto* s = find(name);
         return s && s->break_after;
     }
+    // A text style's languages (with its parents') over `languages`.
+    void apply_languages(std::string_view name, OfficeLanguages& languages) const {
+        std::vector<const OdtStyle*> chain;
+        for (auto s = find(name); s && chain.size() < 16; s = find(s->parent)) chain.push_back(s);
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) languages.apply((*it)->languages);
+    }
+    // The languages of a paragraph's text before its spans': the default
+    // style's, then the paragraph style's chain.
+    [[nodiscard]] OfficeLanguages paragraph_languages(std::string_view name) const {
+        auto out = default_languages_;
+        apply_languages(name, out);
+        return out;
+    }
+    // The document's own: those of LibreOffice's default paragraph style,
+    // "Standard", which the other paragraph styles are based on.
+    [[nodiscard]] OfficeLanguages document_languages() const { return paragraph_languages("Standard"); }
 
 private:
     [[nodiscard]] const OdtStyle* find(std::string_view name) const {
@@ -170,6 +223,7 @@ private:
         return it == styles_.end() ? nullptr : &it->second;
     }
     std::map<std::string, OdtStyle> styles_;
+    OfficeLanguages default_languages_;
 };
 
 // A number in a list style's format (style:num-format): "1" decimal, "i"/"I"
@@ -253,7 +307,8 @@ class OdtReader {
 public:
     OdtReader(const OdtStyles& styles, const OdtListStyles& lists, const XmlPackage& package, RubyGuide ruby,
               std::string_view content)
-        : styles_(styles), lists_(lists), package_(package), ruby_(ruby), content_(content) {}
+        : styles_(styles), lists_(lists), package_(package), ruby_(ruby), content_(content),
+          document_languages_(styles.document_languages()) {}
 
     void container(const pugi::xml_node& node) {
         for (const auto& c : node.children()) {
@@ -406,7 +461,7 @@ private:
         // paragraph's typeface (a heading, a quote), as for DOCX.
         std::vector<pugi::xml_node> boxes;
         std::swap(boxes, boxes_);
-        inline_content(p, emphasis_none);
+        inline_content(p, emphasis_none, styles_.paragraph_languages(style));
         out_.end_paragraph();
         std::swap(boxes, boxes_);
         text_boxes(std::move(boxes));
@@ -509,11 +564,22 @@ private:
         return true;
     }
 
-    void inline_content(const pugi::xml_node& node, std::uint8_t emphasis,
+    // Text in pieces of one language each (office_language.hpp): each
+    // character in the language its script takes, marked only where that is
+    // not the document's own. A span is cut where its script changes class,
+    // as LibreOffice shows it: the Latin words of a span set in Chinese for
+    // Asian text stay in the Latin language.
+    void text(std::string_view t, std::uint8_t emphasis, document::Position position,
+              const OfficeLanguages& languages) {
+        for (const auto& piece : language_pieces(t, languages, document_languages_))
+            out_.text(piece.text, emphasis, position, piece.language);
+    }
+
+    void inline_content(const pugi::xml_node& node, std::uint8_t emphasis, const OfficeLanguages& languages,
                         document::Position position = document::Position::baseline, int depth = 0) {
         for (const auto& c : node.children()) {
             if (c.type() == pugi::node_pcdata) {
-                out_.text(collapse_white_space(c.value()), emphasis, position);
+                text(collapse_white_space(c.value()), emphasis, position, languages);
                 continue;
             }
             if (c.type() != pugi::node_element) continue;
@@ -522,21 +588,23 @@ private:
             if (name == "span") {
                 const auto own = styles_.emphasis(attribute(c, "style-name"));
                 const auto raised = styles_.position(attribute(c, "style-name"));
-                inline_content(c, static_cast<std::uint8_t>(emphasis | own),
+                auto inner = languages;
+                styles_.apply_languages(attribute(c, "style-name"), inner);
+                inline_content(c, static_cast<std::uint8_t>(emphasis | own), inner,
                                raised == document::Position::baseline ? position : raised, depth + 1);
             } else if (name == "frame") {
                 frame(c);
             } else if (name == "ruby") {
-                inline_content(child(c, "ruby-base"), emphasis, position, depth + 1);
+                inline_content(child(c, "ruby-base"), emphasis, languages, position, depth + 1);
                 if (ruby_ == RubyGuide::after) out_.transcriber_note(collapse_white_space(child(c, "ruby-text").child_value()));
             } else if (name == "s") {
                 const auto n = attribute(c, "c");
                 const int count = n.empty() ? 1 : std::clamp(std::atoi(std::string(n).c_str()), 1, 1000);
-                out_.text(std::string(static_cast<std::size_t>(count), ' '), emphasis);
+                text(std::string(static_cast<std::size_t>(count), ' '), emphasis, document::Position::baseline, languages);
             } else if (name == "tab") {
-                out_.text("\t", emphasis);
+                text("\t", emphasis, document::Position::baseline, languages);
             } else if (name == "line-break") {
-                out_.text("\n", emphasis);
+                text("\n", emphasis, document::Position::baseline, languages);
             } else if (name == "note") {
                 note(c);
             } else if (name == "annotation" || name == "tracked-changes" ||
@@ -544,7 +612,7 @@ private:
                        name == "bookmark-end" || name == "reference-mark") {
                 continue;
             } else {
-                inline_content(c, emphasis, position, depth + 1);  // text:a, draw:a (links), fields, meta
+                inline_content(c, emphasis, languages, position, depth + 1);  // text:a, draw:a (links), fields, meta
             }
         }
     }
@@ -557,7 +625,7 @@ private:
             const auto name = local_name(p);
             if (name == "p" || name == "h") {
                 out_.begin_paragraph(BlockKind::paragraph, 0, {});
-                inline_content(p, emphasis_none);
+                inline_content(p, emphasis_none, styles_.paragraph_languages(attribute(p, "style-name")));
                 out_.end_paragraph();
             }
         }
@@ -575,6 +643,7 @@ private:
     std::map<std::string, std::shared_ptr<Counters>> lists_by_id_;
     std::map<std::string, std::shared_ptr<Counters>> last_of_style_;
     OfficeText out_;
+    const OfficeLanguages document_languages_;  // the default style's and "Standard"'s
 };
 
 }  // namespace

@@ -49,14 +49,15 @@ void OfficeText::begin_paragraph(document::BlockKind kind, int level, std::strin
     builder_.begin(kind_, level_, 0);
 }
 
-void OfficeText::text(std::string_view s, std::uint8_t emphasis, document::Position position) {
+void OfficeText::text(std::string_view s, std::uint8_t emphasis, document::Position position,
+                      std::string_view language) {
     if (s.empty()) return;
     if (!builder_.is_open() && note_depth_ == 0 && table_depth_ == 0) builder_.begin(kind_, level_, 0);
     if (!label_.empty()) {
         builder_.add_text(label_);
         label_.clear();
     }
-    builder_.add_text(s, emphasis, position);
+    builder_.add_text(s, emphasis, position, language);
     cell_has_text_ = true;
 }
 

@@ -50,8 +50,9 @@ private:
 class OfficeText {
 public:
     void begin_paragraph(document::BlockKind kind, int level, std::string label);
+    // `language`: the passage's, when it is not the document's own (Span::language).
     void text(std::string_view utf8, std::uint8_t emphasis,
-              document::Position position = document::Position::baseline);
+              document::Position position = document::Position::baseline, std::string_view language = {});
     // Text the transcriber adds (an image's description, a ruby guide): a
     // transcriber's note at this place in the text.
     void transcriber_note(std::string_view utf8);

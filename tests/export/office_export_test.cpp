@@ -238,6 +238,49 @@ TEST(OfficeExport, EveryConstructComesBackFromDocxAndOdt) {
     }
 }
 
+Span in_language(std::string t, std::string language, std::uint8_t emphasis = document::emphasis_none) {
+    auto s = text(std::move(t), emphasis);
+    s.language = std::move(language);
+    return s;
+}
+
+// Passages in another language: an English document with a Chinese (Taiwan)
+// passage, a Chinese one with English passages. Each passage holds
+// characters of every script class (Han, CJK punctuation, Latin, spaces,
+// digits) and comes back whole, in its language, from DOCX (w:lang) and ODT
+// (fo:language, style:language-asian, style:language-complex); the text
+// around it keeps none, and nothing is named lost.
+TEST(OfficeExport, LanguagesComeBackFromDocxAndOdt) {
+    document::Document english;
+    english.blocks.push_back(block(BlockKind::heading, 1, {text("Words in "), in_language("中文", "zh-TW")}));
+    english.blocks.push_back(block(BlockKind::paragraph, 0,
+                                   {text("The word "), in_language("中文，好 2024", "zh-TW"), text(" means "),
+                                    in_language("Chinese", "zh-TW", document::emphasis_italic), text(".")}));
+    english.blocks.push_back(block(BlockKind::paragraph, 0,
+                                   {text("Pinyin: "), in_language("Zhōngwén", "zh-Latn-pinyin"), text(" and "),
+                                    in_language("漢字", "zh-Hant-TW"), text(".")}));
+    document::Document chinese;
+    chinese.blocks.push_back(block(BlockKind::paragraph, 0,
+                                   {text("我住在"), in_language("New York, 2024", "en"), text("，"),
+                                    in_language("colour", "en-GB", document::emphasis_bold), text("。")}));
+    chinese.blocks.push_back(block(BlockKind::list_item, 1, {text("\u2022 "), in_language("Apple 蘋果", "en-US")}));
+    Block row;
+    row.kind = BlockKind::table_row;
+    chinese.blocks.push_back(row);
+    chinese.blocks.push_back(block(BlockKind::table_cell, 0, {text("中文")}));
+    chinese.blocks.push_back(block(BlockKind::table_cell, 1, {in_language("English words", "en")}));
+    for (const auto* doc : {&english, &chinese})
+        for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt}) {
+            SCOPED_TRACE(std::string(doc == &english ? "english" : "chinese") +
+                         (format == exporter::OfficeFormat::docx ? " -> docx" : " -> odt"));
+            auto file = exporter::to_office(*doc, format);
+            ASSERT_TRUE(file) << file.error().to_string();
+            EXPECT_TRUE(file->warnings.empty()) << file->warnings.front();
+            expect_well_formed(file->bytes);
+            EXPECT_SAME_BLOCKS(blocks_of(reopen(*doc, format)), doc->blocks);
+        }
+}
+
 TEST(OfficeExport, EveryConstructComesBackFromMarkdown) {
     auto doc = every_construct();
     doc.blocks.push_back(block(BlockKind::paragraph, 0, {text("Say ")}));
@@ -267,13 +310,9 @@ TEST(OfficeExport, EveryConstructComesBackFromMarkdown) {
     auto twice = import::import_bytes(exporter::to_markdown(*once), "saved.md");
     ASSERT_TRUE(twice);
     EXPECT_SAME_BLOCKS(blocks_of(*twice), blocks_of(*once));
-    // And Markdown's document through DOCX and ODT (whose importers read no
-    // language: the writers name that loss).
-    auto no_language = *once;
-    for (auto& b : no_language.blocks)
-        for (auto& s : b.spans) s.language.clear();
+    // And Markdown's document through DOCX and ODT, its language included.
     for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt})
-        EXPECT_SAME_BLOCKS(blocks_of(reopen(no_language, format)), blocks_of(no_language));
+        EXPECT_SAME_BLOCKS(blocks_of(reopen(*once, format)), blocks_of(*once));
 }
 
 TEST(OfficeExport, PlainTextComesBackFromText) {
@@ -370,6 +409,9 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
                 // Adjacent spans of the same emphasis are one span.
                 if (!spans.empty() && spans.back().emphasis == e) e = static_cast<std::uint8_t>(e ^ 1u);
                 spans.push_back(text((k == 0 ? "" : " ") + words[pick(words.size())], e));
+                // A passage in another language (never the first span: a
+                // list item's label stands there).
+                if (k > 0 && pick(4) == 0) spans.back().language = pick(2) ? "zh-TW" : "en";
             }
             if (pick(4) == 0) {
                 // Raised text, an image's description, a note reference.
@@ -427,6 +469,15 @@ TEST(OfficeExport, RandomDocumentsComeBackTheSame) {
         // The importers count list numbers: take the document they give,
         // and check it is a fixed point of a save and an open.
         const auto once = reopen(doc, exporter::OfficeFormat::odt);
+        // The passages in another language come back, each in its language.
+        const auto marked = [](const document::Document& d) {
+            std::vector<std::string> out;
+            for (const auto& b : d.blocks)
+                for (const auto& s : b.spans)
+                    if (!s.language.empty()) out.push_back(s.language + ":" + s.text);
+            return out;
+        };
+        EXPECT_EQ(marked(once), marked(doc)) << round;
         for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt}) {
             SCOPED_TRACE(round);
             EXPECT_SAME_BLOCKS(blocks_of(reopen(once, format)), blocks_of(once));

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_test_util.hpp"
 
+#include "export/zip_writer.hpp"
+#include "import/office_language.hpp"
+#include "../common/office_files.hpp"
+
 namespace tactus::test {
 namespace {
 
@@ -58,6 +62,132 @@ TEST(DocxImport, StylesNumberingBreaksAndRevisions) {
         text_block(H, 4, {{"Outline four"}}),
     };
     EXPECT_EQ(doc.blocks, expected);
+}
+
+// The per-script rule of DOCX and ODT languages (import/office_language.hpp)
+// on its own, with a Taiwanese Word's defaults: each character takes the
+// language of its script's class, a character of no script the class of
+// the letter before it (else after it, else Latin), and only a language
+// other than the document's own for that class is marked.
+TEST(OfficeLanguage, EachCharacterTakesTheLanguageOfItsScript) {
+    using import::detail::language_pieces;
+    using import::detail::OfficeLanguages;
+    const auto pieces = [](std::string_view text, const OfficeLanguages& run, const OfficeLanguages& doc) {
+        std::vector<std::pair<std::string, std::string>> out;
+        for (const auto& p : language_pieces(text, run, doc)) out.emplace_back(std::string(p.text), p.language);
+        return out;
+    };
+    using Pieces = std::vector<std::pair<std::string, std::string>>;
+    OfficeLanguages doc;
+    doc.latin = "en-US";
+    doc.east_asian = "zh-TW";
+    doc.complex = "ar-SA";
+    EXPECT_EQ(pieces("Hello 你好, world", doc, doc), (Pieces{{"Hello 你好, world", ""}}));
+    auto mainland = doc;
+    mainland.east_asian = "zh-CN";
+    EXPECT_EQ(pieces("Hello 你好, world", mainland, doc),
+              (Pieces{{"Hello ", ""}, {"你好, ", "zh-CN"}, {"world", ""}}));
+    EXPECT_EQ(pieces("(2024) 中文。", mainland, doc), (Pieces{{"(2024) 中文。", "zh-CN"}}));
+    EXPECT_EQ(pieces(" 2024\t", mainland, doc), (Pieces{{" 2024\t", ""}}));
+    auto german = doc;
+    german.latin = "de-DE";
+    EXPECT_EQ(pieces("Guten Tag 中文", german, doc), (Pieces{{"Guten Tag ", "de-DE"}, {"中文", ""}}));
+    // A run in one language for every class (as Tactus writes a passage) is
+    // that language whatever its characters.
+    OfficeLanguages english;
+    english.latin = english.east_asian = english.complex = "en";
+    EXPECT_EQ(pieces("A 中 \u0628 2", english, doc), (Pieces{{"A 中 \u0628 2", "en"}}));
+    // Arabic letters, and every character of a right-to-left run, are complex script.
+    auto hebrew = doc;
+    hebrew.complex = "he-IL";
+    EXPECT_EQ(pieces("abc \u05D0", hebrew, doc), (Pieces{{"abc ", ""}, {"\u05D0", "he-IL"}}));
+    hebrew.complex_run = true;
+    EXPECT_EQ(pieces("abc", hebrew, doc), (Pieces{{"abc", "he-IL"}}));
+    // No defaults: every language a run names is marked.
+    EXPECT_EQ(pieces("x", german, OfficeLanguages{}), (Pieces{{"x", "de-DE"}}));
+    EXPECT_EQ(import::detail::language_tag("zh", "TW"), "zh-TW");
+    EXPECT_EQ(import::detail::language_tag("zxx", "none"), "");
+    EXPECT_EQ(import::detail::language_tag("fr", "none"), "fr");
+}
+
+// The text and its languages, span by span.
+std::vector<std::pair<std::string, std::string>> languages_of(const document::Document& doc) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& b : doc.blocks)
+        for (const auto& s : b.spans) out.emplace_back(s.text, s.language);
+    return out;
+}
+
+// pandoc's i18n_blocks.docx (tests/data/import/public), made by a Russian
+// Word: its defaults say Russian (w:docDefaults w:lang w:val="ru-RU"), and
+// every run is set to English (w:lang w:val="en-US"). So each block's text is
+// an English passage in a Russian document; a list item's bullet, which the
+// importer adds, is the document's.
+TEST(DocxImport, LanguagesOfARealDocument) {
+    const auto doc = import_data_file("public/pandoc-i18n_blocks.docx");
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"This is Heading 1", "en-US"}, {"This is Heading 2", "en-US"},  {"This is Quote", "en-US"},
+        {"This is Block Text", "en-US"}, {"\u2022 ", ""},                 {"This is list item 1", "en-US"},
+        {"\u2022 ", ""},                  {"This is list item 2", "en-US"},
+    };
+    EXPECT_EQ(languages_of(doc), expected);
+}
+
+// Every other real DOCX and ODT of the test data is written in the languages
+// its defaults name (LibreOffice's ODTs: German, French or English in the
+// paragraph default style; pandoc-unicode.docx's Japanese is only its
+// paragraph mark's, w:pPr/w:rPr, not its text's): no span is marked.
+TEST(OfficeLanguage, RealDocumentsInTheirDefaultLanguagesCarryNoMarks) {
+    int files = 0;
+    for (const auto& path : real_office_files(std::filesystem::path(TACTUS_TEST_DATA))) {
+        if (path.filename() == "pandoc-i18n_blocks.docx") continue;
+        auto doc = import::import_file(path);
+        if (!doc) continue;  // the importer's own error files
+        ++files;
+        for (const auto& [text, language] : languages_of(*doc))
+            EXPECT_EQ(language, "") << path.filename().string() << ": '" << text << "'";
+    }
+    EXPECT_GE(files, 40);
+}
+
+// Languages from styles (hand-made, as Word writes them): the document
+// defaults (English, Chinese (Taiwan) for East Asian text), a paragraph
+// style based on one that sets German, a character style that sets
+// Chinese (PRC) for East Asian text, and direct formatting over both.
+TEST(DocxImport, LanguagesComeFromStylesAndDefaults) {
+    constexpr std::string_view w = R"( xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main")";
+    const std::string styles = std::string("<w:styles") + std::string(w) +
+        R"(><w:docDefaults><w:rPrDefault><w:rPr><w:lang w:val="en-US" w:eastAsia="zh-TW" w:bidi="ar-SA"/></w:rPr>)"
+        R"(</w:rPrDefault></w:docDefaults>)"
+        R"(<w:style w:type="paragraph" w:default="1" w:styleId="Normal"><w:name w:val="Normal"/></w:style>)"
+        R"(<w:style w:type="paragraph" w:styleId="German"><w:name w:val="German"/><w:basedOn w:val="Normal"/>)"
+        R"(<w:rPr><w:lang w:val="de-DE"/></w:rPr></w:style>)"
+        R"(<w:style w:type="paragraph" w:styleId="GermanQuote"><w:name w:val="German quote"/><w:basedOn w:val="German"/></w:style>)"
+        R"(<w:style w:type="character" w:styleId="Mainland"><w:name w:val="Mainland"/>)"
+        R"(<w:rPr><w:lang w:eastAsia="zh-CN"/></w:rPr></w:style></w:styles>)";
+    const std::string body = std::string("<w:document") + std::string(w) + "><w:body>" +
+        R"(<w:p><w:r><w:t xml:space="preserve">English 中文 </w:t></w:r>)"
+        R"(<w:r><w:rPr><w:rStyle w:val="Mainland"/></w:rPr><w:t>汉语 and words</w:t></w:r></w:p>)"
+        R"(<w:p><w:pPr><w:pStyle w:val="GermanQuote"/></w:pPr><w:r><w:t xml:space="preserve">Guten Tag 中文 </w:t></w:r>)"
+        R"(<w:r><w:rPr><w:lang w:val="en-US"/></w:rPr><w:t>hello</w:t></w:r></w:p>)"
+        "</w:body></w:document>";
+    constexpr std::string_view rels = "http://schemas.openxmlformats.org/officeDocument/2006/relationships";
+    const std::string head = R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)";
+    auto package = exporter::zip_package(
+        {{"_rels/.rels", head + R"(<Relationship Id="r1" Type=")" + std::string(rels) +
+                             R"(/officeDocument" Target="word/document.xml"/></Relationships>)", false},
+         {"word/_rels/document.xml.rels", head + R"(<Relationship Id="r1" Type=")" + std::string(rels) +
+                                              R"(/styles" Target="styles.xml"/></Relationships>)", false},
+         {"word/document.xml", body, false},
+         {"word/styles.xml", styles, false}});
+    ASSERT_TRUE(package) << package.error().to_string();
+    auto doc = import::import_bytes(*package, "styles.docx");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"English 中文 ", ""}, {"汉语 ", "zh-CN"}, {"and words", ""},
+        {"Guten Tag ", "de-DE"}, {"中文 hello", ""},
+    };
+    EXPECT_EQ(languages_of(*doc), expected);
 }
 
 TEST(DocxImport, TruncatedZipIsAClearError) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_test_util.hpp"
 
+#include "export/zip_writer.hpp"
+
 namespace tactus::test {
 namespace {
 
@@ -33,6 +35,52 @@ TEST(OdtImport, TheSameLessonAsTheDocx) {
         text_block(C, 1, {{"雲"}}),
     };
     EXPECT_EQ(doc.blocks, expected);
+}
+
+// Languages from styles (hand-made, as LibreOffice writes them): the
+// paragraph default style (English, Chinese (PRC) for Asian text), a common
+// paragraph style for German, an automatic one based on it, and automatic
+// text styles for Chinese (Taiwan) and, by style:rfc-language-tag, Serbian in
+// Latin letters.
+TEST(OdtImport, LanguagesComeFromStylesAndDefaults) {
+    constexpr std::string_view ns =
+        R"( xmlns:office="urn:oasis:names:tc:opendocument:xmlns:office:1.0")"
+        R"( xmlns:style="urn:oasis:names:tc:opendocument:xmlns:style:1.0")"
+        R"( xmlns:text="urn:oasis:names:tc:opendocument:xmlns:text:1.0")"
+        R"( xmlns:fo="urn:oasis:names:tc:opendocument:xmlns:xsl-fo-compatible:1.0")";
+    const std::string styles = std::string("<office:document-styles") + std::string(ns) + "><office:styles>" +
+        R"(<style:default-style style:family="paragraph"><style:text-properties fo:language="en" fo:country="US")"
+        R"( style:language-asian="zh" style:country-asian="CN" style:language-complex="hi" style:country-complex="IN"/>)"
+        R"(</style:default-style>)"
+        R"(<style:style style:name="Standard" style:family="paragraph"/>)"
+        R"(<style:style style:name="Deutsch" style:family="paragraph" style:parent-style-name="Standard">)"
+        R"(<style:text-properties fo:language="de" fo:country="DE"/></style:style>)"
+        "</office:styles></office:document-styles>";
+    const std::string content = std::string("<office:document-content") + std::string(ns) +
+        "><office:automatic-styles>" +
+        R"(<style:style style:name="P1" style:family="paragraph" style:parent-style-name="Deutsch"/>)"
+        R"(<style:style style:name="T1" style:family="text"><style:text-properties style:language-asian="zh")"
+        R"( style:country-asian="TW"/></style:style>)"
+        R"(<style:style style:name="T2" style:family="text"><style:text-properties fo:language="sr")"
+        R"( style:rfc-language-tag="sr-Latn"/></style:style>)"
+        "</office:automatic-styles><office:body><office:text>" +
+        R"(<text:p text:style-name="Standard">English 中文 <text:span text:style-name="T1">漢語 and words</text:span></text:p>)"
+        R"(<text:p text:style-name="P1">Guten Tag 中文 <text:span text:style-name="T2">zdravo</text:span></text:p>)"
+        "</office:text></office:body></office:document-content>";
+    auto package = exporter::zip_package({{"mimetype", "application/vnd.oasis.opendocument.text", true},
+                                          {"content.xml", content, false},
+                                          {"styles.xml", styles, false}});
+    ASSERT_TRUE(package) << package.error().to_string();
+    auto doc = import::import_bytes(*package, "styles.odt");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    std::vector<std::pair<std::string, std::string>> got;
+    for (const auto& b : doc->blocks)
+        for (const auto& s : b.spans) got.emplace_back(s.text, s.language);
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"English 中文 ", ""}, {"漢語 ", "zh-TW"}, {"and words", ""},
+        {"Guten Tag ", "de-DE"}, {"中文 ", ""}, {"zdravo", "sr-Latn"},
+    };
+    EXPECT_EQ(got, expected);
 }
 
 TEST(OdtImport, DetectedByExtensionAndContent) {

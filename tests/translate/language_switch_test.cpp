@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/utf8.hpp"
 #include "document/document.hpp"
+#include "export/zip_writer.hpp"
 #include "import/import.hpp"
 #include "pipeline/pipeline.hpp"
 #include "translate/code_switch.hpp"
@@ -296,4 +298,57 @@ TEST(LanguageSwitch, LessonChineseLineGivesNoDotsSevenEightWarning) {
     };
     EXPECT_EQ(dots_warnings(true), 0u);
     EXPECT_EQ(dots_warnings(false), 1u);
+}
+
+// A Word document with an English paragraph holding a passage marked Chinese
+// (Taiwan) for East Asian text (w:eastAsia="zh-TW"), the rest English by the
+// document defaults, as Word writes them. The package is made here, part by
+// part: no real file marks a Chinese passage. The passage is in Simplified
+// characters, which unmarked would go to the mainland table (see
+// SimplifiedChineseGoesToTheMainlandTable): marked, it is laid out with
+// Taiwan's table, the braille of the passage alone in zh-tw.ctb.
+TEST(LanguageSwitch, DocxPassageMarkedChineseIsLaidOutWithItsTable) {
+    constexpr std::string_view w = R"( xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main")";
+    const std::string document_xml =
+        std::string(R"(<?xml version="1.0" encoding="UTF-8"?><w:document)") + std::string(w) +
+        R"(><w:body><w:p><w:r><w:t xml:space="preserve">Say </w:t></w:r>)"
+        R"(<w:r><w:rPr><w:lang w:eastAsia="zh-TW"/></w:rPr><w:t>汉语</w:t></w:r>)"
+        R"(<w:r><w:t xml:space="preserve"> now.</w:t></w:r></w:p></w:body></w:document>)";
+    const std::string styles_xml =
+        std::string(R"(<?xml version="1.0" encoding="UTF-8"?><w:styles)") + std::string(w) +
+        R"(><w:docDefaults><w:rPrDefault><w:rPr><w:lang w:val="en-US" w:eastAsia="en-US" w:bidi="ar-SA"/>)"
+        R"(</w:rPr></w:rPrDefault></w:docDefaults></w:styles>)";
+    constexpr std::string_view rels = "http://schemas.openxmlformats.org/officeDocument/2006/relationships";
+    const std::string package_rels =
+        std::string(R"(<?xml version="1.0" encoding="UTF-8"?><Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)") +
+        R"(<Relationship Id="rId1" Type=")" + std::string(rels) + R"(/officeDocument" Target="word/document.xml"/></Relationships>)";
+    const std::string document_rels =
+        std::string(R"(<?xml version="1.0" encoding="UTF-8"?><Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)") +
+        R"(<Relationship Id="rId1" Type=")" + std::string(rels) + R"(/styles" Target="styles.xml"/></Relationships>)";
+    auto package = exporter::zip_package({{"_rels/.rels", package_rels, false},
+                                          {"word/document.xml", document_xml, false},
+                                          {"word/_rels/document.xml.rels", document_rels, false},
+                                          {"word/styles.xml", styles_xml, false}});
+    ASSERT_TRUE(package) << package.error().to_string();
+    auto doc = import::import_bytes(*package, "passage.docx");
+    ASSERT_TRUE(doc) << doc.error().to_string();
+    std::vector<std::pair<std::string, std::string>> spans;
+    for (const auto& b : doc->blocks)
+        for (const auto& s : b.spans) spans.emplace_back(s.text, s.language);
+    EXPECT_EQ(spans, (std::vector<std::pair<std::string, std::string>>{{"Say ", ""}, {"汉语", "zh-TW"}, {" now.", ""}}));
+
+    pipeline::PipelineOptions o;
+    o.tables = "en-ueb-g2.ctb";
+    o.translation_workers = 1;
+    auto paged = pipeline::lay_out(*doc, o);
+    ASSERT_TRUE(paged) << paged.error().to_string();
+    document::BrailleLine all;
+    for (const auto& page : paged->pages)
+        for (const auto& line : page.lines) all.insert(all.end(), line.begin(), line.end());
+    const auto tw = cells_of(open_one("zh-tw.ctb"), U"汉语");
+    const auto cn = cells_of(open_one("zhcn-g1.ctb"), U"汉语");
+    ASSERT_NE(tw, cn);
+    EXPECT_FALSE(has_dots_78(tw)) << "zh-tw.ctb writes the passage";
+    EXPECT_TRUE(contains(all, tw)) << document::to_unicode_text(all);
+    EXPECT_FALSE(contains(all, cn)) << document::to_unicode_text(all);
 }
