@@ -44,6 +44,7 @@
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "export/text_export.hpp"
+#include "import/import.hpp"
 #include "layout/braille_pages.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
@@ -724,6 +725,7 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
 
 bool MainWindow::save_to(const QString& path) {
     if (refuse_saving_graphic()) return false;
+    if (!may_replace_pictures(path)) return false;
     // In the file's format and, for a text file, its own encoding (core's writer).
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
@@ -941,6 +943,56 @@ bool MainWindow::may_save_as_utf8(const QString& path, const Error& why) {
                    .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
         return true;
     report(tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
+    return false;
+}
+
+namespace {
+
+// The pictures a file about to be replaced holds: the editor's lines hold
+// none (a picture is its description), so saving over such a file loses them.
+// Only the formats that keep pictures; a file that cannot be read has none
+// to lose here (the save itself says what is wrong).
+std::size_t pictures_in(const QString& path) {
+    const QFileInfo info(path);
+    static const QStringList holding = {QStringLiteral("docx"), QStringLiteral("odt"), QStringLiteral("md"),
+                                        QStringLiteral("markdown")};
+    if (!info.isFile() || !holding.contains(info.suffix().toLower())) return 0;
+    import::ImportOptions options;
+    options.images = true;
+    const auto doc = import::import_file(path.toStdString(), options);
+    if (!doc) return 0;
+    std::size_t n = 0;
+    for (const auto& block : doc->blocks) n += block.images.size();
+    return n;
+}
+
+}  // namespace
+
+bool MainWindow::may_replace_pictures(const QString& path) {
+    const auto pictures = pictures_in(path);
+    if (pictures == 0) return true;
+    const auto name = QFileInfo(path).fileName();
+    const auto n = static_cast<int>(pictures);
+    const auto question = tr("%1 holds %n picture(s) that the editor does not keep. Replace it?", nullptr, n).arg(name);
+    const auto detail = tr("Nothing has been saved. The editor shows each picture as its description, so saving over %1 "
+                           "keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As "
+                           "keeps it and writes the edited document beside it.")
+                            .arg(name);
+    if (!interactive_) {
+        report(question + QLatin1Char(' ') + detail, true);
+        return false;
+    }
+    FocusReturn back(this, editor_->print_pane());
+    if (ask(this, {.title = tr("Tactus"),
+                   .text = question,
+                   .detail = detail,
+                   .accessible_name = tr("Saving would lose pictures"),
+                   .object_name = QStringLiteral("picturesQuestion"),
+                   .go = {tr("&Replace"), QStringLiteral("replacePicturesButton"),
+                          tr("Save over the file with the pictures' descriptions only")},
+                   .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
+        return true;
+    report(tr("Not saved: %1 keeps its %n picture(s)", nullptr, n).arg(name));
     return false;
 }
 

@@ -148,6 +148,9 @@ private:
     // A character the text file's encoding cannot hold: asks whether to save
     // as UTF-8 (true) or not at all.
     bool may_save_as_utf8(const QString& path, const Error& why);
+    // Before saving over a file whose pictures the editor does not hold: asks
+    // (refuses when not interactive), as nothing is lost unasked.
+    bool may_replace_pictures(const QString& path);
     // The open drawing laid out again, for a new profile or table (its dots
     // depend on both), as the CLI lays it out for them.
     void lay_out_graphic_again();

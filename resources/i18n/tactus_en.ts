@@ -73,7 +73,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="596"/>
+        <location filename="../../widgets/main_window.cpp" line="597"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -81,7 +81,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="611"/>
+        <location filename="../../widgets/main_window.cpp" line="612"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -89,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="638"/>
+        <location filename="../../widgets/main_window.cpp" line="639"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>Graphic %1 | %n sheet</numerusform>
@@ -97,7 +97,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="800"/>
+        <location filename="../../widgets/main_window.cpp" line="802"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>
@@ -105,7 +105,23 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1238"/>
+        <location filename="../../widgets/main_window.cpp" line="976"/>
+        <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="995"/>
+        <source>Not saved: %1 keeps its %n picture(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1290"/>
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation type="unfinished">
             <numerusform></numerusform>

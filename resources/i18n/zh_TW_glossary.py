@@ -396,6 +396,13 @@ T = {
     "Publisher": "出版者", "&Publisher:": "出版者(&P)：", "Year": "年份", "&Year:": "年份(&Y)：",
     "Transcribed by": "點字轉譯", "Transcri&bed by:": "點字轉譯(&B)：",
     "From the document": "取自文件", "No such line": "不加此行",
+    # Saving over a file whose pictures the editor does not hold.
+    "%1 holds %n picture(s) that the editor does not keep. Replace it?": "%1 含有 %n 張編輯器不保留的圖片。要取代它嗎？",
+    "Nothing has been saved. The editor shows each picture as its description, so saving over %1 keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As keeps it and writes the edited document beside it.":
+        "尚未儲存任何內容。編輯器以描述文字呈現每張圖片，因此覆寫 %1 會保留描述、失去圖片。按「取消」保留檔案原狀；「另存新檔」會保留原檔，並把編輯後的文件存在旁邊。",
+    "Saving would lose pictures": "儲存會失去圖片",
+    "Save over the file with the pictures' descriptions only": "覆寫檔案，只保留圖片的描述",
+    "Not saved: %1 keeps its %n picture(s)": "未儲存：%1 保留其 %n 張圖片",
 }
 
 

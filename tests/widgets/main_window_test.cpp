@@ -642,6 +642,71 @@ private Q_SLOTS:
         }
     }
 
+    // A file whose pictures the editor does not hold (pandoc's inline_images:
+    // three pictures) is not saved over unasked: refused without someone to
+    // ask; asked, Cancel leaves its bytes, Replace writes the descriptions;
+    // Save As beside it asks nothing and leaves it whole.
+    void saving_over_pictures_is_asked_first() {
+        for (const auto* name : {"pandoc-inline_images.docx", "pandoc-image.odt"}) {
+            const auto path = dir.filePath(QString::fromLatin1(name));
+            QFile::remove(path);
+            QVERIFY(QFile::copy(QStringLiteral(TACTUS_TEST_DATA "/import/public/") + QString::fromLatin1(name), path));
+            QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+            const auto bytes_of = [](const QString& p) {
+                QFile f(p);
+                return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+            };
+            const auto original = bytes_of(path);
+            MainWindow w;
+            QVERIFY(w.open_file_now(path));
+            QTest::keyClicks(w.editor()->print_pane(), "x");
+            QVERIFY(!w.save_to(path));
+            QCOMPARE(bytes_of(path), original);
+            QVERIFY(w.isWindowModified());
+            auto said = w.announcer()->message();
+            QVERIFY2(said.contains(QStringLiteral("picture")) && said.contains(QString::fromLatin1(name)), qPrintable(said));
+
+            const auto beside = dir.filePath(QStringLiteral("beside-") + QString::fromLatin1(name));
+            QFile::remove(beside);
+            QVERIFY(w.save_to(beside));
+            QCOMPARE(bytes_of(path), original);
+
+            w.set_interactive(true);
+            w.show();
+            struct Seen {
+                bool asked = false;
+                QString name;
+            };
+            const auto answer = [](Seen& seen, bool replace) {
+                QTimer::singleShot(200, [&seen, replace] {
+                    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                    if (!box) return;
+                    seen.asked = box->objectName() == QLatin1String("picturesQuestion");
+                    if (auto* a = QAccessible::queryAccessibleInterface(box)) seen.name = a->text(QAccessible::Name);
+                    (replace ? box->findChild<QPushButton*>(QStringLiteral("replacePicturesButton"))
+                             : box->button(QMessageBox::Cancel))
+                        ->click();
+                });
+            };
+            Seen cancel;
+            answer(cancel, false);
+            QVERIFY(!w.save_to(path));
+            QVERIFY(cancel.asked);
+            QCOMPARE(cancel.name, QStringLiteral("Saving would lose pictures"));
+            QCOMPARE(bytes_of(path), original);
+            Seen replace;
+            answer(replace, true);
+            QVERIFY(w.save_to(path));
+            QVERIFY(replace.asked);
+            QVERIFY(bytes_of(path) != original);
+            QVERIFY(!w.isWindowModified());
+            // Nothing left to lose: the next save asks nothing.
+            w.set_interactive(false);
+            QTest::keyClicks(w.editor()->print_pane(), "y");
+            QVERIFY(w.save_to(path));
+        }
+    }
+
     // A save that cannot be written says which file and why (core's atomic
     // write: the temporary copy beside the file could not be made), keeps the
     // document unsaved, and leaves nothing behind.
