@@ -412,6 +412,51 @@ void EditorWidget::insert_page_break() {
     edit.endEditBlock();
 }
 
+QString EditorWidget::insert_note() {
+    if (!structured() || !layout_ || print_->isReadOnly()) return {};
+    using structured::Style;
+    auto* doc = print_->document();
+    auto c = print_->textCursor();
+    if (c.hasSelection()) c.setPosition(c.selectionEnd());
+    // Not inside a line that stands for no text (a page break, a box line),
+    // nor a note's own text: a note has no notes.
+    const auto here = structured::style_of(c.block());
+    if (here == Style::note || here == Style::print_page_break || here == Style::braille_page_break ||
+        here == Style::box_start || here == Style::box_end || here == Style::table_delimiter || here == Style::braille)
+        return {};
+    // The next number after every numbered reference in the document.
+    int next = 1;
+    for (auto b = doc->begin(); b.isValid(); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const auto frag = it.fragment();
+            if (!frag.charFormat().boolProperty(structured::kNoteRef)) continue;
+            bool ok = false;
+            const int n = frag.text().toInt(&ok);
+            if (ok && n >= next) next = n + 1;
+        }
+    const auto reference = QString::number(next);
+    const auto raised = [](QTextCharFormat f) {
+        f.setProperty(structured::kNoteRef, true);
+        f.setVerticalAlignment(QTextCharFormat::AlignSuperScript);
+        return f;
+    };
+    c.beginEditBlock();
+    auto ref_format = c.charFormat();
+    ref_format.clearProperty(structured::kPosition);
+    c.insertText(reference, raised(ref_format));
+    QTextCursor at(c.block());
+    at.movePosition(QTextCursor::EndOfBlock);
+    const auto base = structured::base_char_format(Style::note, 0, print_->font());
+    at.insertBlock(structured::block_format(Style::note, 0), base);
+    if (auto* list = at.block().textList()) list->remove(at.block());
+    at.insertText(reference, raised(base));
+    at.insertText(QStringLiteral(" "), base);
+    c.endEditBlock();
+    print_->setTextCursor(at);
+    print_->setCurrentCharFormat(base);  // the note's text, not its raised reference
+    return reference;
+}
+
 void EditorWidget::toggle_box() {
     if (!structured() || !layout_) return;
     using structured::Style;

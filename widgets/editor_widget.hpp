@@ -62,6 +62,11 @@ public:
     void toggle_box();
     // A print page break as a paragraph of its own before the cursor's paragraph.
     void insert_page_break();
+    // A footnote, as word processors insert one: its reference (the next
+    // number) raised at the cursor, its text a note paragraph after the
+    // cursor's paragraph, where the cursor goes to type it. One undo step.
+    // Returns the reference, empty when nothing was inserted.
+    QString insert_note();
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }

@@ -339,6 +339,10 @@ void MainWindow::build_format_actions() {
     make(tr("Und&erline"), tr("Ctrl+U"), QStringLiteral("formatUnderline"),
          [this] { editor_->toggle_emphasis(document::emphasis_underline); });
     make(tr("Bo&x"), tr("Ctrl+Alt+X"), QStringLiteral("formatBox"), [this] { editor_->toggle_box(); });
+    make(tr("No&te"), tr("Ctrl+Alt+E"), QStringLiteral("formatNote"), [this] {
+        if (const auto reference = editor_->insert_note(); !reference.isEmpty())
+            report(tr("Note %1: type its text").arg(reference));
+    });
     show_codes_ = new QAction(tr("Show &codes"), this);
     show_codes_->setObjectName(QStringLiteral("viewShowCodes"));
     show_codes_->setCheckable(true);

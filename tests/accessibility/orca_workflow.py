@@ -289,6 +289,13 @@ def scenario_structure(tactus, sample, work):
                forbid=[r"#"])
         s.step("Down to a numbered item says its number", keys=["Down"], expect=[r"Look at the sky", r"List item 1"])
         s.step("Down to the next item says the next number", keys=["Down"], expect=[r"List item 2"])
+        # A footnote from the Styles menu's key: its number said, the cursor
+        # in the note's paragraph, which the cursor then says is a note.
+        s.step("End, Ctrl+Alt+E inserts a note", keys=["End", "ctrl+alt+e"], expect=[r"Note 1: type its text"],
+               once=[r"Note 1: type its text"])
+        s.step("typing the note's text", type_text="Cirrus.", allow_silent=True, quiet=0.8)
+        s.step("Up says the paragraph with its reference", keys=["Up"], expect=[r"Write what you see"])
+        s.step("Down says the note and its text", keys=["Down"], expect=[r"Note", r"Cirrus"])
         print(s.summary())
     return 0
 

@@ -1343,6 +1343,18 @@ private Q_SLOTS:
         const auto rows = w.shortcut_rows();
         for (auto* a : w.all_actions()) QVERIFY2(!a->shortcut().isEmpty(), qPrintable(a->text()));
         QVERIFY(rows.size() >= w.all_actions().size());
+        // No two actions share a key: Qt then runs neither ("Ambiguous
+        // shortcut overload") and the key does nothing.
+        QHash<QString, QString> owner;
+        for (auto* a : w.findChildren<QAction*>()) {
+            for (const auto& key : a->shortcuts()) {
+                const auto k = key.toString();
+                const auto name = a->text().remove(QLatin1Char('&'));
+                QVERIFY2(!owner.contains(k) || owner[k] == name,
+                         qPrintable(QStringLiteral("%1 is both %2 and %3").arg(k, owner.value(k), name)));
+                owner[k] = name;
+            }
+        }
         // Tab moves through the focusable widgets; each has an accessible name.
         w.editor()->print_pane()->setFocus();
         QSet<QWidget*> seen;

@@ -12,6 +12,7 @@
 #include <cctype>
 #include <QtTest>
 
+#include "announcer.hpp"
 #include "braille_pane.hpp"
 #include "document_loader.hpp"
 #include "edit/editor_lines.hpp"
@@ -260,6 +261,59 @@ private Q_SLOTS:
         QCOMPARE(e->text(), before);
     }
 
+    // Styles > Note inserts a footnote as a word processor does: the next
+    // number raised at the cursor, the note's paragraph after the cursor's,
+    // the cursor in it; the model has the reference and the note; one undo
+    // step takes both away.
+    void a_note_is_inserted_where_the_cursor_is() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(data("public/pandoc-headers.docx")));
+        auto* e = w.editor();
+        auto* print = e->print_pane();
+        const auto before = e->text();
+        const auto lines = model_lines(*e);
+        int body = -1;
+        for (std::size_t i = 0; i < lines.size() && body < 0; ++i)
+            if (const auto p = edit::parse_editor_line(lines[i]); p && p->kind == document::BlockKind::paragraph)
+                body = static_cast<int>(i);
+        QVERIFY(body >= 0);
+        const auto b = static_cast<std::size_t>(body);
+        auto c = QTextCursor(print->document()->findBlockByNumber(body));
+        c.movePosition(QTextCursor::EndOfWord);
+        const auto word = print->document()->findBlockByNumber(body).text().left(c.positionInBlock());
+        print->setTextCursor(c);
+        auto* note = w.findChild<QAction*>(QStringLiteral("formatNote"));
+        QVERIFY(note && note->isEnabled() && !note->shortcut().isEmpty());
+        note->trigger();
+        QCOMPARE(w.announcer()->message(), QStringLiteral("Note 1: type its text"));
+        QVERIFY2(model_lines(*e)[b].starts_with(word.toStdString() + "[^1]"), model_lines(*e)[b].c_str());
+        QCOMPARE(model_lines(*e)[b + 1], std::string("[^1]: "));
+        QCOMPARE(print->textCursor().blockNumber(), body + 1);
+        QTest::keyClicks(print, "A note typed here.");
+        QCOMPARE(model_lines(*e)[b + 1], std::string("[^1]: A note typed here."));
+        // The model: a reference in the paragraph, a note block after it.
+        const auto& blocks = e->layout().document().blocks;
+        const auto is_note = [](const document::Block& k) { return k.kind == document::BlockKind::note; };
+        const auto n = std::find_if(blocks.begin(), blocks.end(), is_note);
+        QVERIFY(n != blocks.end());
+        QVERIFY(!n->spans.empty() && n->spans.front().note_reference && n->spans.front().text == "1");
+        QCOMPARE(n->text(), std::string("1 A note typed here."));
+        QCOMPARE(e->braille_pane()->document()->blockCount(), print->document()->blockCount());
+        // A second note, in the same paragraph, is number 2.
+        print->setTextCursor(QTextCursor(print->document()->findBlockByNumber(body)));
+        note->trigger();
+        QCOMPARE(w.announcer()->message(), QStringLiteral("Note 2: type its text"));
+        QVERIFY(model_lines(*e)[b].starts_with("[^2]"));
+        // Not in a note's own text.
+        print->setTextCursor(QTextCursor(print->document()->findBlockByNumber(body + 1)));
+        const auto with_two = e->text();
+        note->trigger();
+        QCOMPARE(e->text(), with_two);
+        // Undo takes every step back, to the file as opened.
+        while (e->undo_stack()->canUndo()) e->undo_stack()->undo();
+        QCOMPARE(e->text(), before);
+    }
+
     // A screen reader hears what a paragraph is as the cursor comes to it:
     // Qt's text interface gives a heading's font, not its level.
     void the_cursor_says_what_a_paragraph_is() {
@@ -438,13 +492,16 @@ private Q_SLOTS:
         QCOMPARE(e->text(), before_box);
         act("formatBox");
 
-        QVERIFY(w.save_to(path));
+        // Saved beside the file: saving over it would be refused, as the
+        // editor does not hold its picture (MainWindowTest::saving_over_pictures_is_asked_first).
+        const auto saved = dir.filePath(QStringLiteral("saved.docx"));
+        QVERIFY(w.save_to(saved));
         MainWindow again;
-        QVERIFY(again.open_file_now(path));
+        QVERIFY(again.open_file_now(saved));
         QVERIFY(again.editor()->layout().document().blocks == e->layout().document().blocks);
         QCOMPARE(again.editor()->text(), e->text());
         // What the file held is there, and the new underline and box besides.
-        const auto reopened = import::import_file(path.toStdString());
+        const auto reopened = import::import_file(saved.toStdString());
         QVERIFY(reopened.has_value());
         const auto texts = [](const document::Document& d, auto&& has) {
             QStringList out;
