@@ -9,9 +9,17 @@
 # Needs g++-mingw-w64-x86-64 (the -posix compilers), libz-mingw-w64-dev, cmake,
 # ninja and the header-only libraries (nlohmann-json3-dev, libcli11-dev,
 # libeigen3-dev) and liblouis-data (the tables).
-# Usage: tools/windows-build.sh [TARGET...]   (default target: tactus-cli)
+# Usage: tools/windows-build.sh [package] [TARGET...]   (default target: tactus-cli)
+#   package: then the NSIS installer (CPack, packaging/windows; needs nsis):
+#   build/windows/package/tactus-<version>-win64.exe
 # Environment: TACTUS_WINDOWS_DEPS (default build/windows-deps), JOBS (default 2).
 set -eu
+package=0
+if [ "${1:-}" = package ]; then
+    package=1
+    shift
+    command -v makensis >/dev/null 2>&1 || { echo "windows-build: makensis not found (apt-get install nsis)" >&2; exit 2; }
+fi
 root=$(cd "$(dirname "$0")/.." && pwd)
 deps=${TACTUS_WINDOWS_DEPS:-"$root/build/windows-deps"}
 jobs=${JOBS:-2}
@@ -87,3 +95,13 @@ step "Tactus build"
 if [ $# -eq 0 ]; then set -- tactus-cli; fi
 nice -n 5 cmake --build build/windows -j"$jobs" --target "$@"
 step_done
+if [ $package = 1 ]; then
+    step "Tactus package"
+    # `all` first, at this script's -j (cpack's own build of it would use
+    # every core); cpack installs into its staging folder and runs makensis.
+    nice -n 5 cmake --build build/windows -j"$jobs"
+    (cd build/windows && nice -n 5 cpack --config CPackConfig.cmake) >build/windows/cpack.log 2>&1 ||
+        { tail -30 build/windows/cpack.log >&2; exit 1; }
+    step_done
+    ls -l build/windows/package/*.exe
+fi
