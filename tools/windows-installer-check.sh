@@ -106,6 +106,27 @@ for sample in "$dir"/samples/*; do
         fail "Windows plan of $name failed: $(tr -d '\r' <"$out/$name.err.windows")"
     same "plan --table $table $name" "$out/$name.plan.linux" "$out/$name.plan.windows"
 done
+# What Tactus itself reads from the tables folder, beside what liblouis reads
+# (liblouis on Windows falls back on <program folder>/share/liblouis/tables by
+# itself): with en-us-g2.ctb, a table without metadata of its own, EBAE's note
+# indicator comes from the metadata of the table it includes, and whether a
+# word may switch to computer braille as a whole (its compbrl rules) from the
+# table files; on a 27- and a 12-cell line (long words divided). A program
+# that reads only the folder it was built for writes the wrong note indicator
+# once drive Z: is gone (checked). No "http://": a line may break after its
+# "//" with ICU and not with Wine's Uniscribe (docs/windows.md).
+printf '%s\n\n%s\n\n%s\n' \
+    'Transcribers characteristically hyphenate extraordinarily incomprehensible constitutional arrangements.' \
+    'Write to example.com or tactus.org for more.[^1]' '[^1]: A note.' >"$out/tables.md"
+cp "$out/tables.md" "$WINEPREFIX/drive_c/tables.md"
+for cells in 12 27; do
+    what="layout --table en-us-g2.ctb --cells $cells --to brf (long words, web names, a note)"
+    "$linux" layout --table en-us-g2.ctb --cells $cells --to brf "$out/tables.md" >"$out/tables.$cells.linux" 2>/dev/null ||
+        fail "Linux $what failed"
+    "$wine" "$cli" layout --table en-us-g2.ctb --cells $cells --to brf 'C:\tables.md' >"$out/tables.$cells.windows" 2>"$out/tables.err.windows" ||
+        fail "Windows $what failed: $(tr -d '\r' <"$out/tables.err.windows")"
+    same "$what" "$out/tables.$cells.linux" "$out/tables.$cells.windows"
+done
 "$linux" emboss --device sim "$root/resources/samples/firmware-note.md" 2>&1 | grep '^embossed ' >"$out/emboss.linux" || true
 "$wine" "$cli" emboss --device sim 'C:\Tactus\samples\firmware-note.md' 2>&1 | tr -d '\r' | grep '^embossed ' >"$out/emboss.windows" || true
 [ -s "$out/emboss.linux" ] || fail "the Linux CLI printed no 'embossed' line"
