@@ -9,9 +9,26 @@
 # Needs g++-mingw-w64-x86-64 (the -posix compilers), libz-mingw-w64-dev, cmake,
 # ninja and the header-only libraries (nlohmann-json3-dev, libcli11-dev,
 # libeigen3-dev) and liblouis-data (the tables).
-# Usage: tools/windows-build.sh [TARGET...]   (default target: tactus-cli)
+# Usage: tools/windows-build.sh [package] [TARGET...]   (default target: tactus-cli)
+#   package: then the NSIS installer (CPack, packaging/windows; needs nsis):
+#   build/windows/package/tactus-<version>-win64.exe
+# Usage: tools/windows-build.sh tests [TARGET...]
+#   GoogleTest (Debian's googletest sources) into the prefix too, and the test
+#   executables in build/windows-tests (default: translate_tests layout_tests);
+#   tools/windows-core-tests.sh runs them under Wine.
 # Environment: TACTUS_WINDOWS_DEPS (default build/windows-deps), JOBS (default 2).
 set -eu
+package=0
+tests=0
+if [ "${1:-}" = tests ]; then
+    tests=1
+    shift
+    [ -d /usr/src/googletest ] || { echo "windows-build: no /usr/src/googletest (apt-get install googletest)" >&2; exit 2; }
+elif [ "${1:-}" = package ]; then
+    package=1
+    shift
+    command -v makensis >/dev/null 2>&1 || { echo "windows-build: makensis not found (apt-get install nsis)" >&2; exit 2; }
+fi
 root=$(cd "$(dirname "$0")/.." && pwd)
 deps=${TACTUS_WINDOWS_DEPS:-"$root/build/windows-deps"}
 jobs=${JOBS:-2}
@@ -37,7 +54,9 @@ step_done() {
 dep() {
     name=$1 version=$2 src=$3
     shift 3
-    stamp="$version $( (cd "$tp/$name" && find . -type f | LC_ALL=C sort | xargs cat; \
+    hashed="$tp/$name"
+    [ -d "$hashed" ] || hashed=$src
+    stamp="$version $( (cd "$hashed" && find . -type f | LC_ALL=C sort | xargs cat; \
         cat "$own/$name/CMakeLists.txt" 2>/dev/null; echo "$*") | sha256sum | cut -c1-16)"
     if [ -f "$deps/stamps/$name" ] && [ "$(cat "$deps/stamps/$name")" = "$stamp" ]; then
         echo "windows-build: $name $version: cached"
@@ -68,6 +87,9 @@ dep libzip 1.9.2 "$tp/libzip" -DBUILD_TOOLS=OFF -DBUILD_REGRESS=OFF -DBUILD_EXAM
     -DENABLE_ZSTD=OFF
 # The tables stay Debian's (liblouis-data), read by the Windows program through Wine's Z: drive.
 dep liblouis 3.24.0 "$own/liblouis" -DLOUIS_TABLESDIR=/usr/share/liblouis/tables
+if [ $tests = 1 ]; then
+    dep googletest 1.12.1 /usr/src/googletest -DBUILD_GMOCK=ON -DINSTALL_GTEST=ON
+fi
 
 # The header-only libraries, used from /usr/include through a prefix that holds
 # only them (never the build machine's whole /usr/include), with their CMake
@@ -79,11 +101,36 @@ ln -sfn /usr/include/eigen3 "$deps/include/eigen3"
 cp -r /usr/share/cmake/nlohmann_json /usr/share/cmake/CLI11 "$deps/share/cmake/"
 cp -r /usr/share/eigen3/cmake "$deps/share/eigen3/"
 
-step "Tactus configure"
 cd "$root"
+if [ $tests = 1 ]; then
+    # A build folder of its own: `all` there holds every test, which the
+    # installer's build must not compile. Tests are listed when ctest runs
+    # them (under Wine), not at build time.
+    step "Tactus configure (tests)"
+    TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -B build/windows-tests -DTACTUS_WINDOWS_DEPS="$deps" \
+        -DTACTUS_BUILD_TESTS=ON -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST \
+        -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan}" >/dev/null
+    step_done
+    step "Tactus tests build"
+    if [ $# -eq 0 ]; then set -- translate_tests layout_tests; fi
+    nice -n 5 cmake --build build/windows-tests -j"$jobs" --target "$@"
+    step_done
+    exit 0
+fi
+step "Tactus configure"
 TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -DTACTUS_WINDOWS_DEPS="$deps" >/dev/null
 step_done
 step "Tactus build"
 if [ $# -eq 0 ]; then set -- tactus-cli; fi
 nice -n 5 cmake --build build/windows -j"$jobs" --target "$@"
 step_done
+if [ $package = 1 ]; then
+    step "Tactus package"
+    # `all` first, at this script's -j (cpack's own build of it would use
+    # every core); cpack installs into its staging folder and runs makensis.
+    nice -n 5 cmake --build build/windows -j"$jobs"
+    (cd build/windows && nice -n 5 cpack --config CPackConfig.cmake) >build/windows/cpack.log 2>&1 ||
+        { tail -30 build/windows/cpack.log >&2; exit 1; }
+    step_done
+    ls -l build/windows/package/*.exe
+fi

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Cross-compiles the platform layer's Windows side (core/platform/*_win.cpp) and
+# Cross-compiles the platform layer's Windows side (core/platform/, *_win.cpp) and
 # tests/platform/platform_test.cpp with MinGW-w64, links them with GoogleTest
 # built from Debian's sources (/usr/src/googletest, kept in the cache folder for
 # later runs), and runs the tests under Wine (docs/windows.md).
@@ -20,13 +20,16 @@ for f in gtest-all gtest_main; do
     [ -f "$out/$f.o" ] || $cxx $flags -I"$gtest/include" -I"$gtest" -c "$gtest/src/$f.cc" -o "$out/$f.o"
 done
 objs=""
-for f in "$root"/core/platform/*_win.cpp "$root"/tests/platform/platform_test.cpp; do
+# The layer's Windows side: every source but the POSIX ones (the shared
+# worker_process.cpp too), as core/platform/CMakeLists.txt picks them.
+for f in "$root"/core/platform/*.cpp "$root"/tests/platform/platform_test.cpp; do
+    case $f in *_posix.cpp) continue ;; esac
     o="$out/$(basename "$f" .cpp).o"
     $cxx $flags -Wall -Wextra -Werror -I"$root/core" -I"$gtest/include" -c "$f" -o "$o"
     objs="$objs $o"
 done
 # shellcheck disable=SC2086
-$cxx -static -o "$out/platform_tests.exe" $objs "$out/gtest-all.o" "$out/gtest_main.o" -ladvapi32
+$cxx -static -o "$out/platform_tests.exe" $objs "$out/gtest-all.o" "$out/gtest_main.o" -ladvapi32 -lusp10
 echo "windows-platform-tests: built $out/platform_tests.exe"
 if [ -z "$wine" ]; then
     echo "windows-platform-tests: no Wine (apt-get install wine64): not run" >&2

@@ -115,7 +115,7 @@ std::string table_info(const std::string& table, const char* key) {
 // A table's file: a name as liblouis finds it in its data folder, or a path.
 std::filesystem::path table_path(const std::string& table) {
     return table.find('/') != std::string::npos ? std::filesystem::path(table)
-                                                : std::filesystem::path(TACTUS_LOUIS_DATADIR) / table;
+                                                : louis::tables_dir() / table;
 }
 
 // A metadata value of a table (liblouis reads a table's own `#+key:` lines
@@ -170,7 +170,7 @@ std::string find_hyphenation(const std::string& first_table, const std::string& 
     const auto lang = language.substr(0, language.find('-'));
     std::vector<std::string> candidates;
     std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(TACTUS_LOUIS_DATADIR, ec)) {
+    for (const auto& e : std::filesystem::directory_iterator(louis::tables_dir(), ec)) {
         const auto name = e.path().filename().string();
         if (name.ends_with(".dic") &&
             (name == "hyph_" + lang + ".dic" || name.starts_with("hyph_" + lang + "_")))

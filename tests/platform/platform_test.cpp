@@ -15,6 +15,7 @@
 #include "platform/child_process.hpp"
 #include "platform/durable_file.hpp"
 #include "platform/process_info.hpp"
+#include "platform/program_file.hpp"
 #include "platform/sim_endpoint.hpp"
 #include "platform/terminal.hpp"
 #include "platform/user_dirs.hpp"
@@ -333,3 +334,14 @@ TEST(UserDirs, DataHomeIsTheLocalAppDataFolder) {
     EXPECT_TRUE(fs::is_directory(*d)) << d->string();
 }
 #endif
+
+// The program's own file: an absolute path to this test executable, whatever
+// folder the test runs in (an installed program finds its tables from it).
+TEST(ProgramFile, NamesThisExecutableAbsolutely) {
+    const auto file = program_file();
+    ASSERT_TRUE(file) << file.error().what;
+    EXPECT_TRUE(file->is_absolute()) << file->string();
+    EXPECT_TRUE(fs::is_regular_file(*file)) << file->string();
+    EXPECT_TRUE(file->filename().string().starts_with("platform_tests")) << file->string();
+}
+
