@@ -28,6 +28,9 @@ packages=(
   orca openbox
   # The 89C52 firmware (firmware/): SDCC, and the s51 emulator with its pty bridge.
   sdcc sdcc-ucsim socat
+  # The Windows build made here and its installer checked under Wine
+  # (tools/windows-build.sh, tools/windows-installer-check.sh).
+  g++-mingw-w64-x86-64 libz-mingw-w64-dev nsis wine64
 )
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
