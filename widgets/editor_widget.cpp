@@ -362,6 +362,25 @@ void EditorWidget::set_paragraph_style(ParagraphStyle style, int level) {
     edit.endEditBlock();
 }
 
+namespace {
+
+// Whether all of the cursor's selection (or, without one, what is typed next)
+// has a char format property. A style is turned on when any of the
+// selection lacks it, as word processors do.
+template <typename Has>
+bool all_of_selection(const QTextCursor& c, QTextDocument* doc, Has has) {
+    if (!c.hasSelection()) return has(c.charFormat());
+    for (auto b = doc->findBlock(c.selectionStart()); b.isValid() && b.position() < c.selectionEnd(); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const auto frag = it.fragment();
+            if (frag.position() + frag.length() <= c.selectionStart() || frag.position() >= c.selectionEnd()) continue;
+            if (!has(frag.charFormat())) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
 void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     if (!structured() || !layout_) return;
     auto c = print_->textCursor();
@@ -370,19 +389,7 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
                : emphasis == document::emphasis_underline ? f.fontUnderline()
                                                           : f.fontItalic();
     };
-    // On when any of the selection lacks it (as word processors do).
-    bool all = c.hasSelection();
-    if (c.hasSelection()) {
-        auto* doc = print_->document();
-        for (auto b = doc->findBlock(c.selectionStart()); b.isValid() && b.position() < c.selectionEnd(); b = b.next())
-            for (auto it = b.begin(); !it.atEnd(); ++it) {
-                const auto frag = it.fragment();
-                if (frag.position() + frag.length() <= c.selectionStart() || frag.position() >= c.selectionEnd()) continue;
-                if (!has(frag.charFormat())) all = false;
-            }
-    } else {
-        all = has(c.charFormat());
-    }
+    const bool all = all_of_selection(c, print_->document(), has);
     QTextCharFormat f;
     if (emphasis == document::emphasis_bold) {
         const bool heading = structured::style_of(c.block()) == structured::Style::heading;
@@ -394,6 +401,25 @@ void EditorWidget::toggle_emphasis(std::uint8_t emphasis) {
     }
     if (c.hasSelection()) c.mergeCharFormat(f);
     else print_->mergeCurrentCharFormat(f);  // what is typed next
+}
+
+void EditorWidget::toggle_position(document::Position position) {
+    if (!structured() || !layout_ || position == document::Position::baseline) return;
+    auto c = print_->textCursor();
+    const auto has = [position](const QTextCharFormat& f) {
+        return !f.boolProperty(structured::kNoteRef) && f.hasProperty(structured::kPosition) &&
+               f.intProperty(structured::kPosition) == static_cast<int>(position);
+    };
+    const bool all = all_of_selection(c, print_->document(), has);
+    // Off is the baseline, said as a property (a merge cannot take one away).
+    const auto now = all ? document::Position::baseline : position;
+    QTextCharFormat f;
+    f.setProperty(structured::kPosition, static_cast<int>(now));
+    f.setVerticalAlignment(now == document::Position::superscript ? QTextCharFormat::AlignSuperScript
+                           : now == document::Position::subscript ? QTextCharFormat::AlignSubScript
+                                                                  : QTextCharFormat::AlignNormal);
+    if (c.hasSelection()) c.mergeCharFormat(f);
+    else print_->mergeCurrentCharFormat(f);
 }
 
 void EditorWidget::insert_page_break() {

@@ -56,6 +56,9 @@ public:
     // Bold, italic or underline (document::Emphasis) on the selection, or off
     // when all of it has it already.
     void toggle_emphasis(std::uint8_t emphasis);
+    // Raised (superscript) or lowered (subscript) on the selection, or back
+    // on the line when all of it is so already; what is typed next without one.
+    void toggle_position(document::Position position);
     // The paragraphs the selection touches put in a box (a box line above
     // them and one below), or, when the first of them is in a box already,
     // that box's lines taken away. One step of undo.

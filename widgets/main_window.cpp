@@ -243,7 +243,7 @@ void MainWindow::build_actions() {
                        [this] { export_dialog(QStringLiteral("brf")); });
     export_pef_ = make(tr("Export &PEF..."), QKeySequence(tr("Ctrl+Shift+E")), QStringLiteral("exportPef"),
                        [this] { export_dialog(QStringLiteral("pef")); });
-    book_settings_ = make(tr("Boo&k Settings..."), QKeySequence(tr("Ctrl+Shift+B")), QStringLiteral("fileBookSettings"),
+    book_settings_ = make(tr("Boo&k Settings..."), QKeySequence(tr("Ctrl+Shift+K")), QStringLiteral("fileBookSettings"),
                           [this] { book_settings(); });
     quit_ = make(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), QStringLiteral("fileQuit"), [this] { close(); });
     undo_ = editor_->undo_stack()->createUndoAction(this, tr("&Undo"));
@@ -338,6 +338,10 @@ void MainWindow::build_format_actions() {
          [this] { editor_->toggle_emphasis(document::emphasis_italic); });
     make(tr("Und&erline"), tr("Ctrl+U"), QStringLiteral("formatUnderline"),
          [this] { editor_->toggle_emphasis(document::emphasis_underline); });
+    make(tr("&Raised"), tr("Ctrl+Shift+P"), QStringLiteral("formatRaised"),
+         [this] { editor_->toggle_position(document::Position::superscript); });
+    make(tr("&Lowered"), tr("Ctrl+Shift+B"), QStringLiteral("formatLowered"),
+         [this] { editor_->toggle_position(document::Position::subscript); });
     make(tr("Bo&x"), tr("Ctrl+Alt+X"), QStringLiteral("formatBox"), [this] { editor_->toggle_box(); });
     make(tr("No&te"), tr("Ctrl+Alt+E"), QStringLiteral("formatNote"), [this] {
         if (const auto reference = editor_->insert_note(); !reference.isEmpty())

@@ -463,7 +463,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="754" />
+        <location filename="../../widgets/editor_widget.cpp" line="780" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -529,7 +529,7 @@
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="750" />
+        <location filename="../../widgets/editor_widget.cpp" line="776" />
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -713,12 +713,12 @@
     <name>tactus::gui::MainWindow</name>
     <message>
         <location filename="../../widgets/main_window.cpp" line="76" />
-        <location filename="../../widgets/main_window.cpp" line="690" />
-        <location filename="../../widgets/main_window.cpp" line="860" />
-        <location filename="../../widgets/main_window.cpp" line="914" />
-        <location filename="../../widgets/main_window.cpp" line="940" />
-        <location filename="../../widgets/main_window.cpp" line="990" />
-        <location filename="../../widgets/main_window.cpp" line="1007" />
+        <location filename="../../widgets/main_window.cpp" line="694" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="918" />
+        <location filename="../../widgets/main_window.cpp" line="944" />
+        <location filename="../../widgets/main_window.cpp" line="994" />
+        <location filename="../../widgets/main_window.cpp" line="1011" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -823,15 +823,20 @@
         <translation>書籍設定(&amp;K)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246" />
+        <location filename="../../widgets/main_window.cpp" line="343" />
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="248" />
-        <location filename="../../widgets/main_window.cpp" line="1014" />
+        <location filename="../../widgets/main_window.cpp" line="1018" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="246" />
+        <source>Ctrl+Shift+K</source>
+        <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="248" />
@@ -1075,356 +1080,366 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="341" />
+        <source>&amp;Raised</source>
+        <translation>上標(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="343" />
+        <source>&amp;Lowered</source>
+        <translation>下標(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="345" />
         <source>Bo&amp;x</source>
         <translation>方框(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
+        <location filename="../../widgets/main_window.cpp" line="345" />
         <source>Ctrl+Alt+X</source>
         <translation>Ctrl+Alt+X</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342" />
+        <location filename="../../widgets/main_window.cpp" line="346" />
         <source>No&amp;te</source>
         <translation>註解(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="344" />
+        <location filename="../../widgets/main_window.cpp" line="348" />
         <source>Note %1: type its text</source>
         <translation>註解 %1：請輸入內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="350" />
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="349" />
+        <location filename="../../widgets/main_window.cpp" line="353" />
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="350" />
+        <location filename="../../widgets/main_window.cpp" line="354" />
         <source>Show the print text's Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="360" />
+        <location filename="../../widgets/main_window.cpp" line="364" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="362" />
+        <location filename="../../widgets/main_window.cpp" line="366" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="371" />
+        <location filename="../../widgets/main_window.cpp" line="375" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="376" />
+        <location filename="../../widgets/main_window.cpp" line="380" />
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="379" />
+        <location filename="../../widgets/main_window.cpp" line="383" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="388" />
+        <location filename="../../widgets/main_window.cpp" line="392" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="431" />
+        <location filename="../../widgets/main_window.cpp" line="435" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="438" />
+        <location filename="../../widgets/main_window.cpp" line="442" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="443" />
-        <location filename="../../widgets/main_window.cpp" line="622" />
+        <location filename="../../widgets/main_window.cpp" line="447" />
+        <location filename="../../widgets/main_window.cpp" line="626" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="453" />
+        <location filename="../../widgets/main_window.cpp" line="457" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="455" />
+        <location filename="../../widgets/main_window.cpp" line="459" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="456" />
+        <location filename="../../widgets/main_window.cpp" line="460" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459" />
+        <location filename="../../widgets/main_window.cpp" line="463" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="480" />
+        <location filename="../../widgets/main_window.cpp" line="484" />
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="482" />
+        <location filename="../../widgets/main_window.cpp" line="486" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="506" />
+        <location filename="../../widgets/main_window.cpp" line="510" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="507" />
+        <location filename="../../widgets/main_window.cpp" line="511" />
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="514" />
+        <location filename="../../widgets/main_window.cpp" line="518" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="529" />
+        <location filename="../../widgets/main_window.cpp" line="533" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="541" />
+        <location filename="../../widgets/main_window.cpp" line="545" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="571" />
+        <location filename="../../widgets/main_window.cpp" line="575" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="576" />
+        <location filename="../../widgets/main_window.cpp" line="580" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="577" />
+        <location filename="../../widgets/main_window.cpp" line="581" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="601" />
+        <location filename="../../widgets/main_window.cpp" line="605" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="604" />
+        <location filename="../../widgets/main_window.cpp" line="608" />
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="607" />
+        <location filename="../../widgets/main_window.cpp" line="611" />
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="616" />
+        <location filename="../../widgets/main_window.cpp" line="620" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="643" />
+        <location filename="../../widgets/main_window.cpp" line="647" />
         <source>Graphic %1 | %n sheet(s)</source>
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="651" />
+        <location filename="../../widgets/main_window.cpp" line="655" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="654" />
+        <location filename="../../widgets/main_window.cpp" line="658" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="654" />
+        <location filename="../../widgets/main_window.cpp" line="658" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="665" />
-        <location filename="../../widgets/main_window.cpp" line="861" />
-        <location filename="../../widgets/main_window.cpp" line="872" />
-        <location filename="../../widgets/main_window.cpp" line="1064" />
+        <location filename="../../widgets/main_window.cpp" line="669" />
+        <location filename="../../widgets/main_window.cpp" line="865" />
+        <location filename="../../widgets/main_window.cpp" line="876" />
+        <location filename="../../widgets/main_window.cpp" line="1068" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="670" />
+        <location filename="../../widgets/main_window.cpp" line="674" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="700" />
+        <location filename="../../widgets/main_window.cpp" line="704" />
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="713" />
+        <location filename="../../widgets/main_window.cpp" line="717" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="765" />
+        <location filename="../../widgets/main_window.cpp" line="769" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="980" />
+        <location filename="../../widgets/main_window.cpp" line="984" />
         <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
         <translation><numerusform>%1 含有 %n 張編輯器不保留的圖片。要取代它嗎？</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="981" />
+        <location filename="../../widgets/main_window.cpp" line="985" />
         <source>Nothing has been saved. The editor shows each picture as its description, so saving over %1 keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As keeps it and writes the edited document beside it.</source>
         <translation>尚未儲存任何內容。編輯器以描述文字呈現每張圖片，因此覆寫 %1 會保留描述、失去圖片。按「取消」保留檔案原狀；「另存新檔」會保留原檔，並把編輯後的文件存在旁邊。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="993" />
+        <location filename="../../widgets/main_window.cpp" line="997" />
         <source>Saving would lose pictures</source>
         <translation>儲存會失去圖片</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="995" />
+        <location filename="../../widgets/main_window.cpp" line="999" />
         <source>&amp;Replace</source>
         <translation>取代(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="996" />
+        <location filename="../../widgets/main_window.cpp" line="1000" />
         <source>Save over the file with the pictures' descriptions only</source>
         <translation>覆寫檔案，只保留圖片的描述</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="999" />
+        <location filename="../../widgets/main_window.cpp" line="1003" />
         <source>Not saved: %1 keeps its %n picture(s)</source>
         <translation><numerusform>未儲存：%1 保留其 %n 張圖片</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1060" />
+        <location filename="../../widgets/main_window.cpp" line="1064" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="773" />
+        <location filename="../../widgets/main_window.cpp" line="777" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="773" />
+        <location filename="../../widgets/main_window.cpp" line="777" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="775" />
+        <location filename="../../widgets/main_window.cpp" line="779" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="797" />
+        <location filename="../../widgets/main_window.cpp" line="801" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="806" />
+        <location filename="../../widgets/main_window.cpp" line="810" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="813" />
+        <location filename="../../widgets/main_window.cpp" line="817" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="814" />
+        <location filename="../../widgets/main_window.cpp" line="818" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="825" />
+        <location filename="../../widgets/main_window.cpp" line="829" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="860" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1008" />
+        <location filename="../../widgets/main_window.cpp" line="1012" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1009" />
+        <location filename="../../widgets/main_window.cpp" line="1013" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1015" />
+        <location filename="../../widgets/main_window.cpp" line="1019" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="873" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="887" />
+        <location filename="../../widgets/main_window.cpp" line="891" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="896" />
+        <location filename="../../widgets/main_window.cpp" line="900" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="896" />
+        <location filename="../../widgets/main_window.cpp" line="900" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="900" />
+        <location filename="../../widgets/main_window.cpp" line="904" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1088" />
+        <location filename="../../widgets/main_window.cpp" line="1092" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="901" />
+        <location filename="../../widgets/main_window.cpp" line="905" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="910" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1434,209 +1449,214 @@
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="749" />
+        <location filename="../../widgets/main_window.cpp" line="753" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="930" />
+        <location filename="../../widgets/main_window.cpp" line="934" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="931" />
+        <location filename="../../widgets/main_window.cpp" line="935" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="943" />
+        <location filename="../../widgets/main_window.cpp" line="947" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="945" />
+        <location filename="../../widgets/main_window.cpp" line="949" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="946" />
+        <location filename="../../widgets/main_window.cpp" line="950" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="947" />
-        <location filename="../../widgets/main_window.cpp" line="997" />
+        <location filename="../../widgets/main_window.cpp" line="951" />
+        <location filename="../../widgets/main_window.cpp" line="1001" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="949" />
+        <location filename="../../widgets/main_window.cpp" line="953" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="917" />
+        <location filename="../../widgets/main_window.cpp" line="921" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="919" />
+        <location filename="../../widgets/main_window.cpp" line="923" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="921" />
+        <location filename="../../widgets/main_window.cpp" line="925" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="920" />
+        <location filename="../../widgets/main_window.cpp" line="924" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="921" />
+        <location filename="../../widgets/main_window.cpp" line="925" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="923" />
+        <location filename="../../widgets/main_window.cpp" line="927" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="634" />
+        <location filename="../../widgets/main_window.cpp" line="638" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342" />
+        <location filename="../../widgets/main_window.cpp" line="341" />
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="346" />
         <source>Ctrl+Alt+E</source>
         <translation>Ctrl+Alt+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="635" />
+        <location filename="../../widgets/main_window.cpp" line="639" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1080" />
+        <location filename="../../widgets/main_window.cpp" line="1084" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1156" />
+        <location filename="../../widgets/main_window.cpp" line="1160" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1189" />
-        <location filename="../../widgets/main_window.cpp" line="1198" />
+        <location filename="../../widgets/main_window.cpp" line="1193" />
+        <location filename="../../widgets/main_window.cpp" line="1202" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1222" />
+        <location filename="../../widgets/main_window.cpp" line="1226" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1227" />
+        <location filename="../../widgets/main_window.cpp" line="1231" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1240" />
+        <location filename="../../widgets/main_window.cpp" line="1244" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1244" />
+        <location filename="../../widgets/main_window.cpp" line="1248" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1246" />
+        <location filename="../../widgets/main_window.cpp" line="1250" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1246" />
+        <location filename="../../widgets/main_window.cpp" line="1250" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1275" />
+        <location filename="../../widgets/main_window.cpp" line="1279" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1275" />
+        <location filename="../../widgets/main_window.cpp" line="1279" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1276" />
+        <location filename="../../widgets/main_window.cpp" line="1280" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1276" />
+        <location filename="../../widgets/main_window.cpp" line="1280" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1277" />
+        <location filename="../../widgets/main_window.cpp" line="1281" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1277" />
+        <location filename="../../widgets/main_window.cpp" line="1281" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1278" />
+        <location filename="../../widgets/main_window.cpp" line="1282" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1278" />
+        <location filename="../../widgets/main_window.cpp" line="1282" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1279" />
+        <location filename="../../widgets/main_window.cpp" line="1283" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1279" />
+        <location filename="../../widgets/main_window.cpp" line="1283" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1280" />
+        <location filename="../../widgets/main_window.cpp" line="1284" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1280" />
+        <location filename="../../widgets/main_window.cpp" line="1284" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1294" />
+        <location filename="../../widgets/main_window.cpp" line="1298" />
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1299" />
+        <location filename="../../widgets/main_window.cpp" line="1303" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1300" />
+        <location filename="../../widgets/main_window.cpp" line="1304" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

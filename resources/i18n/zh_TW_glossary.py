@@ -404,6 +404,7 @@ T = {
     "Save over the file with the pictures' descriptions only": "覆寫檔案，只保留圖片的描述",
     "Not saved: %1 keeps its %n picture(s)": "未儲存：%1 保留其 %n 張圖片",
     "No&te": "註解(&T)", "Note %1: type its text": "註解 %1：請輸入內容",
+    "&Raised": "上標(&R)", "&Lowered": "下標(&L)",
 }
 
 

@@ -232,6 +232,23 @@ private Q_SLOTS:
         QVERIFY2(line().starts_with("*" + word.toStdString() + "*"), line().c_str());
         act("formatItalic");
         QCOMPARE(QString::fromStdString(line()), text);
+        // Raised and lowered: on, off, and one in place of the other; the
+        // model's span and the braille (its level indicator) follow.
+        const auto braille_before = braille_line();
+        act("formatRaised");
+        QVERIFY2(line().starts_with("<sup>" + word.toStdString() + "</sup>"), line().c_str());
+        QCOMPARE(e->layout().document().blocks[static_cast<std::size_t>(body)].spans.front().position,
+                 document::Position::superscript);
+        QVERIFY(braille_line() != braille_before);
+        act("formatRaised");
+        QCOMPARE(QString::fromStdString(line()), text);
+        QCOMPARE(braille_line(), braille_before);
+        act("formatLowered");
+        QVERIFY2(line().starts_with("<sub>" + word.toStdString() + "</sub>"), line().c_str());
+        act("formatRaised");
+        QVERIFY2(line().starts_with("<sup>" + word.toStdString() + "</sup>"), line().c_str());
+        act("formatRaised");
+        QCOMPARE(QString::fromStdString(line()), text);
 
         // A page break before the paragraph: a line of its own, shown as no text.
         print->setTextCursor(QTextCursor(print->document()->findBlockByNumber(body)));
