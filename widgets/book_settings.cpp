@@ -98,17 +98,9 @@ BookSettingsDialog::BookSettingsDialog(const pipeline::BookOptions& current, QWi
                                          this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this, [this] {
-        // The rules' defaults; the title page's lines stay as typed.
-        auto defaults = pipeline::BookOptions{};
-        const auto now = options();
-        defaults.title = now.title;
-        defaults.author = now.author;
-        defaults.publisher = now.publisher;
-        defaults.year = now.year;
-        defaults.transcriber = now.transcriber;
-        show_options(defaults);
-    });
+    // The rules' defaults; the title page's lines stay as typed.
+    connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this,
+            [this] { show_rules(pipeline::BookOptions{}); });
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(rules);
@@ -118,6 +110,15 @@ BookSettingsDialog::BookSettingsDialog(const pipeline::BookOptions& current, QWi
 }
 
 void BookSettingsDialog::show_options(const pipeline::BookOptions& o) {
+    show_rules(o);
+    title_->setText(QString::fromStdString(o.title));
+    author_->setText(QString::fromStdString(o.author));
+    publisher_->setText(QString::fromStdString(o.publisher));
+    year_->setText(QString::fromStdString(o.year));
+    transcriber_->setText(QString::fromStdString(o.transcriber));
+}
+
+void BookSettingsDialog::show_rules(const pipeline::BookOptions& o) {
     sheets_->setValue(o.sheets_per_volume);
     split_level_->setValue(o.split_level);
     title_page_->setChecked(o.title_page);
@@ -125,11 +126,6 @@ void BookSettingsDialog::show_options(const pipeline::BookOptions& o) {
     contents_depth_->setValue(o.contents_depth);
     contents_depth_->setEnabled(o.contents);
     running_heads_->setChecked(o.running_heads);
-    title_->setText(QString::fromStdString(o.title));
-    author_->setText(QString::fromStdString(o.author));
-    publisher_->setText(QString::fromStdString(o.publisher));
-    year_->setText(QString::fromStdString(o.year));
-    transcriber_->setText(QString::fromStdString(o.transcriber));
 }
 
 pipeline::BookOptions BookSettingsDialog::options() const {

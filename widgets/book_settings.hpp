@@ -22,10 +22,13 @@ class BookSettingsDialog : public QDialog {
 public:
     explicit BookSettingsDialog(const pipeline::BookOptions& current, QWidget* parent = nullptr);
     [[nodiscard]] pipeline::BookOptions options() const;
-    // Shows these options (the defaults, for "Restore Defaults").
+    // Shows these options.
     void show_options(const pipeline::BookOptions& options);
 
 private:
+    // Only the rules ("Restore Defaults" leaves the title page's lines).
+    void show_rules(const pipeline::BookOptions& options);
+
     QSpinBox* sheets_;
     QSpinBox* split_level_;
     QCheckBox* title_page_;

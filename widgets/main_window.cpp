@@ -760,6 +760,7 @@ bool MainWindow::save_to(const QString& path) {
         return false;
     }
     path_ = QFileInfo(path).absoluteFilePath();
+    written_ = {path_, QFileInfo(path).lastModified()};
     source_name_ = QFileInfo(path).fileName();
     editor_->undo_stack()->setClean();
     autosave_.remove();
@@ -936,21 +937,26 @@ bool MainWindow::may_save_as_utf8(const QString& path, const Error& why) {
                            "expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character "
                            "to keep %3.")
                             .arg(QString::fromStdString(why.where), QString::fromStdString(why.message), encoding);
+    return ask_before_saving({.title = tr("Tactus"),
+                              .text = question,
+                              .detail = detail,
+                              .accessible_name = tr("A character does not fit the file's encoding"),
+                              .object_name = QStringLiteral("encodingQuestion"),
+                              .go = {tr("Save as &UTF-8"), QStringLiteral("saveUtf8Button"),
+                                     tr("Save the whole file as UTF-8 from now on")},
+                              .stay = {{}, {}, tr("Save nothing")}},  // the standard Cancel
+                             tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
+}
+
+bool MainWindow::ask_before_saving(const Question& question, const QString& not_saved) {
+    // With nobody to ask (tests, scripts), the question and its detail are the refusal.
     if (!interactive_) {
-        report(question + QLatin1Char(' ') + detail, true);
+        report(question.text + QLatin1Char(' ') + question.detail, true);
         return false;
     }
     FocusReturn back(this, editor_->print_pane());
-    if (ask(this, {.title = tr("Tactus"),
-                   .text = question,
-                   .detail = detail,
-                   .accessible_name = tr("A character does not fit the file's encoding"),
-                   .object_name = QStringLiteral("encodingQuestion"),
-                   .go = {tr("Save as &UTF-8"), QStringLiteral("saveUtf8Button"),
-                          tr("Save the whole file as UTF-8 from now on")},
-                   .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
-        return true;
-    report(tr("Not saved: %1 has a character that %2 cannot hold").arg(name, encoding));
+    if (ask(this, question)) return true;
+    report(not_saved);
     return false;
 }
 
@@ -977,31 +983,27 @@ std::size_t pictures_in(const QString& path) {
 }  // namespace
 
 bool MainWindow::may_replace_pictures(const QString& path) {
+    // A file this window wrote and nobody changed since holds no picture (the
+    // editor writes none): not read again at every save.
+    const QFileInfo info(path);
+    if (info.absoluteFilePath() == written_.path && info.lastModified() == written_.at) return true;
     const auto pictures = pictures_in(path);
     if (pictures == 0) return true;
-    const auto name = QFileInfo(path).fileName();
+    const auto name = info.fileName();
     const auto n = static_cast<int>(pictures);
-    const auto question = tr("%1 holds %n picture(s) that the editor does not keep. Replace it?", nullptr, n).arg(name);
-    const auto detail = tr("Nothing has been saved. The editor shows each picture as its description, so saving over %1 "
-                           "keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As "
-                           "keeps it and writes the edited document beside it.")
-                            .arg(name);
-    if (!interactive_) {
-        report(question + QLatin1Char(' ') + detail, true);
-        return false;
-    }
-    FocusReturn back(this, editor_->print_pane());
-    if (ask(this, {.title = tr("Tactus"),
-                   .text = question,
-                   .detail = detail,
-                   .accessible_name = tr("Saving would lose pictures"),
-                   .object_name = QStringLiteral("picturesQuestion"),
-                   .go = {tr("&Replace"), QStringLiteral("replacePicturesButton"),
-                          tr("Save over the file with the pictures' descriptions only")},
-                   .stay = {{}, {}, tr("Save nothing")}}))  // the standard Cancel
-        return true;
-    report(tr("Not saved: %1 keeps its %n picture(s)", nullptr, n).arg(name));
-    return false;
+    return ask_before_saving(
+        {.title = tr("Tactus"),
+         .text = tr("%1 holds %n picture(s) that the editor does not keep. Replace it?", nullptr, n).arg(name),
+         .detail = tr("Nothing has been saved. The editor shows each picture as its description, so saving over %1 "
+                      "keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As "
+                      "keeps it and writes the edited document beside it.")
+                       .arg(name),
+         .accessible_name = tr("Saving would lose pictures"),
+         .object_name = QStringLiteral("picturesQuestion"),
+         .go = {tr("&Replace"), QStringLiteral("replacePicturesButton"),
+                tr("Save over the file with the pictures' descriptions only")},
+         .stay = {{}, {}, tr("Save nothing")}},  // the standard Cancel
+        tr("Not saved: %1 keeps its %n picture(s)", nullptr, n).arg(name));
 }
 
 bool MainWindow::may_stop_embossing() {

@@ -3,12 +3,14 @@
 // The Tactus window: the editor in the middle, the interpoint preview (and, as
 // their cores land, the motion and printer panels) in docks; every action has a
 // shortcut and an accessible name; long work runs off the GUI thread.
+#include <QDateTime>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QPointer>
 #include <QTimer>
 #include <memory>
 
+#include "ask.hpp"
 #include "autosave.hpp"
 #include "document_loader.hpp"
 #include "motion_model.hpp"
@@ -151,6 +153,9 @@ private:
     // Before saving over a file whose pictures the editor does not hold: asks
     // (refuses when not interactive), as nothing is lost unasked.
     bool may_replace_pictures(const QString& path);
+    // Asks a question before saving (true: go on); with nobody to ask, or on
+    // the answer that stays, nothing is saved and the window says why.
+    bool ask_before_saving(const Question& question, const QString& not_saved);
     // The open drawing laid out again, for a new profile or table (its dots
     // depend on both), as the CLI lays it out for them.
     void lay_out_graphic_again();
@@ -177,6 +182,11 @@ private:
     std::optional<GraphicView> graphic_;
     QString graphic_path_;
     bool interactive_ = false;
+    // The file last saved by this window, as it was then (may_replace_pictures).
+    struct Written {
+        QString path;
+        QDateTime at;
+    } written_;
     bool pages_kept_ = false;  // the layout kept ready-made braille's own pages when it last changed
     // Says so when an edit makes ready-made braille be laid out again (its own
     // pages, sections and volumes no longer kept), and when they are kept again.

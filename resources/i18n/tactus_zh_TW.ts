@@ -714,11 +714,11 @@
     <message>
         <location filename="../../widgets/main_window.cpp" line="76" />
         <location filename="../../widgets/main_window.cpp" line="694" />
-        <location filename="../../widgets/main_window.cpp" line="864" />
-        <location filename="../../widgets/main_window.cpp" line="918" />
-        <location filename="../../widgets/main_window.cpp" line="944" />
-        <location filename="../../widgets/main_window.cpp" line="994" />
-        <location filename="../../widgets/main_window.cpp" line="1011" />
+        <location filename="../../widgets/main_window.cpp" line="865" />
+        <location filename="../../widgets/main_window.cpp" line="919" />
+        <location filename="../../widgets/main_window.cpp" line="940" />
+        <location filename="../../widgets/main_window.cpp" line="995" />
+        <location filename="../../widgets/main_window.cpp" line="1013" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -829,7 +829,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="248" />
-        <location filename="../../widgets/main_window.cpp" line="1018" />
+        <location filename="../../widgets/main_window.cpp" line="1020" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -1282,9 +1282,9 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="669" />
-        <location filename="../../widgets/main_window.cpp" line="865" />
-        <location filename="../../widgets/main_window.cpp" line="876" />
-        <location filename="../../widgets/main_window.cpp" line="1068" />
+        <location filename="../../widgets/main_window.cpp" line="866" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
+        <location filename="../../widgets/main_window.cpp" line="1070" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -1304,142 +1304,142 @@
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="769" />
+        <location filename="../../widgets/main_window.cpp" line="770" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="984" />
+        <location filename="../../widgets/main_window.cpp" line="996" />
         <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
         <translation><numerusform>%1 含有 %n 張編輯器不保留的圖片。要取代它嗎？</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="985" />
+        <location filename="../../widgets/main_window.cpp" line="997" />
         <source>Nothing has been saved. The editor shows each picture as its description, so saving over %1 keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As keeps it and writes the edited document beside it.</source>
         <translation>尚未儲存任何內容。編輯器以描述文字呈現每張圖片，因此覆寫 %1 會保留描述、失去圖片。按「取消」保留檔案原狀；「另存新檔」會保留原檔，並把編輯後的文件存在旁邊。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="997" />
+        <location filename="../../widgets/main_window.cpp" line="1001" />
         <source>Saving would lose pictures</source>
         <translation>儲存會失去圖片</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="999" />
+        <location filename="../../widgets/main_window.cpp" line="1003" />
         <source>&amp;Replace</source>
         <translation>取代(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1000" />
+        <location filename="../../widgets/main_window.cpp" line="1004" />
         <source>Save over the file with the pictures' descriptions only</source>
         <translation>覆寫檔案，只保留圖片的描述</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1003" />
+        <location filename="../../widgets/main_window.cpp" line="1006" />
         <source>Not saved: %1 keeps its %n picture(s)</source>
         <translation><numerusform>未儲存：%1 保留其 %n 張圖片</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1064" />
+        <location filename="../../widgets/main_window.cpp" line="1066" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="777" />
+        <location filename="../../widgets/main_window.cpp" line="778" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="777" />
+        <location filename="../../widgets/main_window.cpp" line="778" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="779" />
+        <location filename="../../widgets/main_window.cpp" line="780" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="801" />
+        <location filename="../../widgets/main_window.cpp" line="802" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="810" />
+        <location filename="../../widgets/main_window.cpp" line="811" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="817" />
+        <location filename="../../widgets/main_window.cpp" line="818" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="818" />
+        <location filename="../../widgets/main_window.cpp" line="819" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="829" />
+        <location filename="../../widgets/main_window.cpp" line="830" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="865" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1012" />
+        <location filename="../../widgets/main_window.cpp" line="1014" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1013" />
+        <location filename="../../widgets/main_window.cpp" line="1015" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1019" />
+        <location filename="../../widgets/main_window.cpp" line="1021" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="877" />
+        <location filename="../../widgets/main_window.cpp" line="878" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="891" />
+        <location filename="../../widgets/main_window.cpp" line="892" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="900" />
+        <location filename="../../widgets/main_window.cpp" line="901" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="900" />
+        <location filename="../../widgets/main_window.cpp" line="901" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="904" />
+        <location filename="../../widgets/main_window.cpp" line="905" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1092" />
+        <location filename="../../widgets/main_window.cpp" line="1094" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="906" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="910" />
+        <location filename="../../widgets/main_window.cpp" line="911" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1454,68 +1454,68 @@
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="934" />
+        <location filename="../../widgets/main_window.cpp" line="935" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="935" />
+        <location filename="../../widgets/main_window.cpp" line="936" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="947" />
+        <location filename="../../widgets/main_window.cpp" line="943" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="949" />
+        <location filename="../../widgets/main_window.cpp" line="945" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="950" />
+        <location filename="../../widgets/main_window.cpp" line="946" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="951" />
-        <location filename="../../widgets/main_window.cpp" line="1001" />
+        <location filename="../../widgets/main_window.cpp" line="947" />
+        <location filename="../../widgets/main_window.cpp" line="1005" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="953" />
+        <location filename="../../widgets/main_window.cpp" line="948" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="921" />
+        <location filename="../../widgets/main_window.cpp" line="922" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="923" />
+        <location filename="../../widgets/main_window.cpp" line="924" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="925" />
+        <location filename="../../widgets/main_window.cpp" line="926" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="924" />
+        <location filename="../../widgets/main_window.cpp" line="925" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="925" />
+        <location filename="../../widgets/main_window.cpp" line="926" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="927" />
+        <location filename="../../widgets/main_window.cpp" line="928" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
@@ -1540,123 +1540,123 @@
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1084" />
+        <location filename="../../widgets/main_window.cpp" line="1086" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1160" />
+        <location filename="../../widgets/main_window.cpp" line="1162" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1193" />
-        <location filename="../../widgets/main_window.cpp" line="1202" />
+        <location filename="../../widgets/main_window.cpp" line="1195" />
+        <location filename="../../widgets/main_window.cpp" line="1204" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1226" />
+        <location filename="../../widgets/main_window.cpp" line="1228" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1231" />
+        <location filename="../../widgets/main_window.cpp" line="1233" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1244" />
+        <location filename="../../widgets/main_window.cpp" line="1246" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1248" />
+        <location filename="../../widgets/main_window.cpp" line="1250" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1250" />
+        <location filename="../../widgets/main_window.cpp" line="1252" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1250" />
+        <location filename="../../widgets/main_window.cpp" line="1252" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1279" />
+        <location filename="../../widgets/main_window.cpp" line="1281" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1279" />
+        <location filename="../../widgets/main_window.cpp" line="1281" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1280" />
+        <location filename="../../widgets/main_window.cpp" line="1282" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1280" />
+        <location filename="../../widgets/main_window.cpp" line="1282" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1281" />
+        <location filename="../../widgets/main_window.cpp" line="1283" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1281" />
+        <location filename="../../widgets/main_window.cpp" line="1283" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1282" />
+        <location filename="../../widgets/main_window.cpp" line="1284" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1282" />
+        <location filename="../../widgets/main_window.cpp" line="1284" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1283" />
+        <location filename="../../widgets/main_window.cpp" line="1285" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1283" />
+        <location filename="../../widgets/main_window.cpp" line="1285" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1284" />
+        <location filename="../../widgets/main_window.cpp" line="1286" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1284" />
+        <location filename="../../widgets/main_window.cpp" line="1286" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1298" />
+        <location filename="../../widgets/main_window.cpp" line="1300" />
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1303" />
+        <location filename="../../widgets/main_window.cpp" line="1305" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1304" />
+        <location filename="../../widgets/main_window.cpp" line="1306" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

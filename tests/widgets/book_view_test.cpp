@@ -5,7 +5,9 @@
 // page range, and the built-in simulator strikes exactly those sheets.
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
+#include <QPushButton>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
@@ -116,6 +118,16 @@ private Q_SLOTS:
         QVERIFY(depth && !depth->isEnabled());  // no contents, no depth to choose
         dialog.findChild<QCheckBox*>(QStringLiteral("bookContents"))->setChecked(true);
         QVERIFY(depth->isEnabled());
+        // Restore Defaults: the rules' defaults, the title page's lines as typed.
+        auto* buttons = dialog.findChild<QDialogButtonBox*>();
+        QVERIFY(buttons);
+        buttons->button(QDialogButtonBox::RestoreDefaults)->click();
+        const auto restored = dialog.options();
+        QCOMPARE(restored.sheets_per_volume, pipeline::BookOptions{}.sheets_per_volume);
+        QCOMPARE(restored.contents_depth, pipeline::BookOptions{}.contents_depth);
+        QCOMPARE(restored.running_heads, true);
+        QCOMPARE(restored.title, o.title);
+        QCOMPARE(restored.transcriber, o.transcriber);
 
         QSettings s;
         save_book_rules(s, o);

@@ -28,6 +28,14 @@ using namespace tactus::gui;
 
 namespace {
 
+// The editor line of the first paragraph of body text; -1 when none.
+int first_paragraph(const std::vector<std::string>& lines) {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (const auto p = edit::parse_editor_line(lines[i]); p && p->kind == document::BlockKind::paragraph)
+            return static_cast<int>(i);
+    return -1;
+}
+
 QString data(const char* name) { return QStringLiteral(TACTUS_TEST_DATA "/import/") + QLatin1String(name); }
 
 std::vector<std::string> model_lines(const EditorWidget& e) {
@@ -185,10 +193,7 @@ private Q_SLOTS:
         const auto before = e->text();
         const auto lines = model_lines(*e);
         // The first paragraph of body text.
-        int body = -1;
-        for (std::size_t i = 0; i < lines.size() && body < 0; ++i)
-            if (const auto p = edit::parse_editor_line(lines[i]); p && p->kind == document::BlockKind::paragraph)
-                body = static_cast<int>(i);
+        const int body = first_paragraph(lines);
         QVERIFY(body >= 0);
         const auto text = print->document()->findBlockByNumber(body).text();
         const auto act = [&w](const char* name) {
@@ -289,10 +294,7 @@ private Q_SLOTS:
         auto* print = e->print_pane();
         const auto before = e->text();
         const auto lines = model_lines(*e);
-        int body = -1;
-        for (std::size_t i = 0; i < lines.size() && body < 0; ++i)
-            if (const auto p = edit::parse_editor_line(lines[i]); p && p->kind == document::BlockKind::paragraph)
-                body = static_cast<int>(i);
+        const int body = first_paragraph(lines);
         QVERIFY(body >= 0);
         const auto b = static_cast<std::size_t>(body);
         auto c = QTextCursor(print->document()->findBlockByNumber(body));
