@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/channel.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -48,10 +49,8 @@ OsResult<std::size_t> Channel::write_some(std::span<const std::uint8_t> bytes) {
 OsResult<std::vector<bool>> wait_readable(std::span<Channel* const> channels, std::chrono::nanoseconds timeout) {
     std::vector<pollfd> fds;
     for (const Channel* c : channels) fds.push_back({static_cast<int>(c->native()), POLLIN, 0});
-    const auto ns = std::max<std::int64_t>(0, timeout.count());
-    const timespec ts{static_cast<time_t>(ns / 1'000'000'000), static_cast<long>(ns % 1'000'000'000)};
     std::vector<bool> ready(channels.size(), false);
-    const int r = ::ppoll(fds.data(), fds.size(), &ts, nullptr);
+    const int r = poll_for(fds.data(), static_cast<nfds_t>(fds.size()), timeout);
     if (r < 0 && errno != EINTR) return std::unexpected(last_error());
     for (std::size_t i = 0; r > 0 && i < fds.size(); ++i) ready[i] = (fds[i].revents & POLLIN) != 0;
     return ready;
@@ -68,7 +67,7 @@ sockaddr_in loopback(std::uint16_t port) {
 }  // namespace
 
 OsResult<Channel> connect_loopback(std::uint16_t port) {
-    Channel c(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+    Channel c(cloexec_socket(AF_INET, SOCK_STREAM));
     if (!c.is_open()) return std::unexpected(last_error());
     const auto a = loopback(port);
     if (::connect(static_cast<int>(c.native()), reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0)
@@ -79,7 +78,7 @@ OsResult<Channel> connect_loopback(std::uint16_t port) {
 }
 
 OsResult<std::uint16_t> unused_loopback_port() {
-    Channel c(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+    Channel c(cloexec_socket(AF_INET, SOCK_STREAM));
     if (!c.is_open()) return std::unexpected(last_error());
     auto a = loopback(0);
     socklen_t len = sizeof a;

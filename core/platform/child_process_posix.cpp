@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/child_process.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -19,7 +20,7 @@ namespace tactus::platform {
 OsResult<ChildProcess> ChildProcess::spawn(const ChildOptions& o) {
     ChildProcess c;
     int input[2] = {-1, -1};
-    if (o.idle_input && ::pipe2(input, O_CLOEXEC) != 0) return std::unexpected(last_error());
+    if (o.idle_input && cloexec_pipe(input) != 0) return std::unexpected(last_error());
     c.input_[0] = input[0];
     c.input_[1] = input[1];
     std::vector<char*> argv;

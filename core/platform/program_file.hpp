@@ -2,7 +2,7 @@
 #pragma once
 // The running program's own file, to find what is installed beside it (an
 // installed Windows program carries liblouis's tables in its own folder).
-// /proc/self/exe on POSIX (Linux), GetModuleFileNameW on Windows.
+// /proc/self/exe on Linux, _NSGetExecutablePath on macOS, GetModuleFileNameW on Windows.
 #include <filesystem>
 
 #include "platform/os_error.hpp"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "platform/sim_endpoint.hpp"
+#include "platform/posix_fd.hpp"
 
 #include <fcntl.h>
 #include <termios.h>
@@ -11,7 +12,7 @@ namespace tactus::platform {
 
 OsResult<SimEndpoint> SimEndpoint::open(bool nonblocking) {
     SimEndpoint s;
-    const int master = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+    const int master = cloexec_pt_master();
     if (master < 0) return os_fail("cannot open a pseudo-terminal: " + last_error().what);
     s.line_ = Channel(master);
     if (grantpt(master) != 0 || unlockpt(master) != 0) return os_fail("cannot unlock the pseudo-terminal");

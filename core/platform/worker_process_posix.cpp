@@ -33,7 +33,7 @@ bool WorkerProcess::supported() { return true; }
 OsResult<WorkerProcess> WorkerProcess::start(const std::function<int(WorkerOutput&)>& body,
                                              std::span<const WorkerProcess> siblings) {
     int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) return os_fail("cannot create a pipe: " + last_error().what);
+    if (cloexec_pipe(fds) != 0) return os_fail("cannot create a pipe: " + last_error().what);
     const pid_t pid = ::fork();
     if (pid == 0) {
         ::close(fds[0]);
