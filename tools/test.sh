@@ -135,10 +135,12 @@ printf '%s\n' "${targets[@]}" | xargs -P "$parallel" -I{} bash -c 'fuzz_one "$1"
 # tactus-cli.exe cross-compiled with MinGW-w64, the NSIS installer, and that
 # installer installed silently under Wine into a fresh prefix without the
 # build machine's files, its CLI's BRF and plans compared byte for byte with
-# the Linux CLI's, and uninstalled. The core's tests under Wine
-# (tools/windows-core-tests.sh, about 9 more minutes cold) are not in this run.
-stage "Windows: MinGW-w64 build, NSIS installer, installed and checked under Wine"
+# the Linux CLI's, and uninstalled; then the core's translate, layout and
+# plan tests, built in the same folder (core is compiled once), under Wine.
+stage "Windows: MinGW-w64 build, NSIS installer, installed and checked under Wine; core tests under Wine"
 JOBS=$jobs tools/windows-build.sh package
 tools/windows-installer-check.sh
+JOBS=$jobs tools/windows-build.sh tests
+tools/windows-core-tests.sh
 
 echo "== all tests passed"

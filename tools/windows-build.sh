@@ -14,7 +14,8 @@
 #   build/windows/package/tactus-<version>-win64.exe
 # Usage: tools/windows-build.sh tests [TARGET...]
 #   GoogleTest (Debian's googletest sources) into the prefix too, and the test
-#   executables in build/windows-tests (default: translate_tests layout_tests);
+#   executables in build/windows/tests (default: translate_tests layout_tests
+#   plan_tests);
 #   tools/windows-core-tests.sh runs them under Wine.
 # Environment: TACTUS_WINDOWS_DEPS (default build/windows-deps), JOBS (default 2).
 set -eu
@@ -103,17 +104,19 @@ cp -r /usr/share/eigen3/cmake "$deps/share/eigen3/"
 
 cd "$root"
 if [ $tests = 1 ]; then
-    # A build folder of its own: `all` there holds every test, which the
-    # installer's build must not compile. Tests are listed when ctest runs
-    # them (under Wine), not at build time.
+    # The installer's build folder with the tests switched on, so core is
+    # compiled once for both (a later `package` run switches them off again
+    # through the preset, and compiles nothing more). Only the named test
+    # executables are built. Tests are listed when ctest runs them (under
+    # Wine), not at build time.
     step "Tactus configure (tests)"
-    TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -B build/windows-tests -DTACTUS_WINDOWS_DEPS="$deps" \
+    TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -DTACTUS_WINDOWS_DEPS="$deps" \
         -DTACTUS_BUILD_TESTS=ON -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST \
         -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan}" >/dev/null
     step_done
     step "Tactus tests build"
-    if [ $# -eq 0 ]; then set -- translate_tests layout_tests; fi
-    nice -n 5 cmake --build build/windows-tests -j"$jobs" --target "$@"
+    if [ $# -eq 0 ]; then set -- translate_tests layout_tests plan_tests; fi
+    nice -n 5 cmake --build build/windows -j"$jobs" --target "$@"
     step_done
     exit 0
 fi

@@ -4,14 +4,14 @@
 # run under Wine (docs/windows.md), each without the tests that cannot run
 # there (listed below with the reason).
 # Usage: tools/windows-core-tests.sh [TEST_EXE...]
-#        (default: every *_tests.exe under build/windows-tests/tests)
+#        (default: every *_tests.exe under build/windows/tests)
 # Exit status: 0 every test run passed, 1 a failure, 2 something missing.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 wine=$(command -v wine64 || command -v wine || { [ -x /usr/lib/wine/wine64 ] && echo /usr/lib/wine/wine64; } || true)
 [ -n "$wine" ] || { echo "windows-core-tests: no Wine (apt-get install wine64)" >&2; exit 2; }
 if [ $# -eq 0 ]; then
-    set -- $(find "$root/build/windows-tests/tests" -name '*_tests.exe' 2>/dev/null | sort)
+    set -- $(find "$root/build/windows/tests" -name '*_tests.exe' 2>/dev/null | sort)
 fi
 [ $# -gt 0 ] || { echo "windows-core-tests: no test executables (tools/windows-build.sh tests)" >&2; exit 2; }
 export WINEPREFIX="${WINEPREFIX:-$root/build/wineprefix}" WINEDEBUG="${WINEDEBUG:--all}"
