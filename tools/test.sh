@@ -135,8 +135,9 @@ printf '%s\n' "${targets[@]}" | xargs -P "$parallel" -I{} bash -c 'fuzz_one "$1"
 # tactus-cli.exe cross-compiled with MinGW-w64, the NSIS installer, and that
 # installer installed silently under Wine into a fresh prefix without the
 # build machine's files, its CLI's BRF and plans compared byte for byte with
-# the Linux CLI's, and uninstalled; then the core's translate, layout and
-# plan tests, built in the same folder (core is compiled once), under Wine.
+# the Linux CLI's, and uninstalled; then the core's translate, layout,
+# plan, edit, encode, estimate and motion tests, built in the same folder
+# (core is compiled once), under Wine two at a time.
 stage "Windows: MinGW-w64 build, NSIS installer, installed and checked under Wine; core tests under Wine"
 JOBS=$jobs tools/windows-build.sh package
 tools/windows-installer-check.sh

@@ -3,7 +3,7 @@
 # The core's test executables built for Windows (tools/windows-build.sh tests)
 # run under Wine (docs/windows.md), each without the tests that cannot run
 # there (listed below with the reason).
-# Usage: tools/windows-core-tests.sh [TEST_EXE...]
+# Usage: [JOBS=2] tools/windows-core-tests.sh [TEST_EXE...]
 #        (default: every *_tests.exe under build/windows/tests)
 # Exit status: 0 every test run passed, 1 a failure, 2 something missing.
 set -eu
@@ -35,22 +35,48 @@ cd "$root"
 #    file of lines made with ICU's breaks (GoldenUnspaced).
 # And one that needs the build machine: BraillePages' PEF round trips
 # validate with `xmllint`, a Linux program, through std::system.
+# edit: three TextEncoding cases open files that are not UTF-8, which needs
+# uchardet and ICU (left out of the Windows build: such a file is refused,
+# naming the missing library).
 skipped() {
     case $(basename "$1" .exe) in
         translate_tests) echo "PrintBreaks.SpacesHyphensAndChineseCharacters:LineBreakKinds.IndicatorsAndSignsAreNeverCut:WordDivision.RandomTextIsDividedWithoutLoss:LanguageSwitch.BreaksStayIndexedAcrossTheSwitch:Catalogue.NamesTheSpecifiedTablesByLanguage:Catalogue.NamesLanguagesInTheReadersLocale:LanguageSwitch.SimplifiedChineseGoesToTheMainlandTable" ;;
         layout_tests) echo "SymbolIntegrity.BreaksAfterAHyphen:SymbolIntegrity.RandomTextBreaksOnlyWherePrintAllows:GoldenUnspaced.LinesAreWhatTheDivisionGaveBeforeTheSpeedUp:BraillePages.PefRoundTripKeepsPagesSectionsAndMetadata:BraillePages.EachVolumeKeepsItsOwnGrid" ;;
+        edit_tests) echo "TextEncoding.AMarkdownFileOpenedAndSavedIsTheSameBytes:TextEncoding.AnEditedMarkdownFileIsSavedInItsEncoding:TextEncoding.AMarkdownFileNeverGetsASubstituteForACharacter" ;;
         *) echo "" ;;
     esac
 }
 
+# One executable: its log beside it, its summary in $exe.summary, its exit
+# status in $exe.status.
+run_one() {
+    exe=$1
+    filter=$(skipped "$exe")
+    start=$(date +%s)
+    rc=0
+    "$wine" "$exe" --gtest_brief=1 ${filter:+"--gtest_filter=-$filter"} >"$exe.log" 2>&1 || rc=1
+    {
+        echo "windows-core-tests: $(basename "$exe")${filter:+ without $(echo "$filter" | tr ':' ' ')}"
+        tr -d '\r' <"$exe.log" | grep -E '^\[  (PASSED|FAILED|SKIPPED) |^\[==========\]' || true
+        [ $rc = 0 ] || tr -d '\r' <"$exe.log" | grep -E '^\[  FAILED' | head -20 || true
+        echo "windows-core-tests: $(basename "$exe"): $(( $(date +%s) - start )) s"
+    } >"$exe.summary"
+    echo $rc >"$exe.status"
+}
+if [ "${1:-}" = --one ]; then
+    run_one "$2"
+    exit 0
+fi
+
+# JOBS executables at a time (one Wine server runs them all), each reported
+# whole and in order once all have ended.
+start=$(date +%s)
+for exe in "$@"; do rm -f "$exe.summary" "$exe.status"; done
+printf '%s\n' "$@" | xargs -P "${JOBS:-2}" -I{} "$0" --one {}
 status=0
 for exe in "$@"; do
-    filter=$(skipped "$exe")
-    echo "windows-core-tests: $(basename "$exe")${filter:+ without $(echo "$filter" | tr ':' ' ')}"
-    start=$(date +%s)
-    if "$wine" "$exe" --gtest_brief=1 ${filter:+"--gtest_filter=-$filter"} >"$exe.log" 2>&1; then :; else status=1; fi
-    tr -d '\r' <"$exe.log" | grep -E '^\[  (PASSED|FAILED|SKIPPED) |^\[==========\]' || true
-    [ $status = 0 ] || tr -d '\r' <"$exe.log" | grep -E '^\[  FAILED' | head -20 >&2 || true
-    echo "windows-core-tests: $(basename "$exe"): $(( $(date +%s) - start )) s"
+    cat "$exe.summary" 2>/dev/null || echo "windows-core-tests: $(basename "$exe"): did not run"
+    [ "$(cat "$exe.status" 2>/dev/null)" = 0 ] || status=1
 done
+echo "windows-core-tests: $# executables, $(( $(date +%s) - start )) s"
 exit $status
