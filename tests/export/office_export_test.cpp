@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 
+#include "document/main_language.hpp"
 #include "export/document_save.hpp"
 #include "export/picture_size.hpp"
 #include "export/text_export.hpp"
@@ -279,6 +280,66 @@ TEST(OfficeExport, LanguagesComeBackFromDocxAndOdt) {
             expect_well_formed(file->bytes);
             EXPECT_SAME_BLOCKS(blocks_of(reopen(*doc, format)), doc->blocks);
         }
+}
+
+// The document's main language (document/main_language.hpp) is written where
+// each format keeps it (DOCX's w:docDefaults, ODT's default style,
+// Markdown's front matter) and read back from there; its passages in
+// another language stay passages, its own text stays unmarked, and nothing
+// is named lost. Other metadata (a title) is still named.
+TEST(OfficeExport, TheMainLanguageComesBackFromDocxOdtAndMarkdown) {
+    for (const std::string main : {"zh-TW", "en-GB", "sr-Latn"}) {
+        document::Document doc;
+        document::set_main_language(doc, main);
+        doc.blocks.push_back(block(BlockKind::heading, 1, {text("中文 and English")}));
+        doc.blocks.push_back(block(BlockKind::paragraph, 0,
+                                   {text("我住在"), in_language("New York", "en"), text("，"), in_language("漢字", "ja")}));
+        for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt}) {
+            SCOPED_TRACE(main + (format == exporter::OfficeFormat::docx ? " -> docx" : " -> odt"));
+            auto file = exporter::to_office(doc, format);
+            ASSERT_TRUE(file) << file.error().to_string();
+            EXPECT_TRUE(file->warnings.empty()) << file->warnings.front();
+            expect_well_formed(file->bytes);
+            const auto back = reopen(doc, format);
+            EXPECT_EQ(document::main_language(back), main);
+            EXPECT_SAME_BLOCKS(blocks_of(back), doc.blocks);
+        }
+        SCOPED_TRACE(main + " -> md");
+        const auto markdown = exporter::to_markdown(doc);
+        EXPECT_TRUE(markdown.starts_with("---\nlang: " + main + "\n---\n\n# ")) << markdown;
+        auto back = import::import_bytes(markdown, "saved.md");
+        ASSERT_TRUE(back) << back.error().to_string();
+        EXPECT_EQ(document::main_language(*back), main);
+        EXPECT_EQ(dump(blocks_of(*back)), dump(blocks_of(doc)));
+    }
+    // A document without one writes none: no front matter, no default language.
+    document::Document plain;
+    plain.blocks.push_back(block(BlockKind::paragraph, 0, {text("Words")}));
+    EXPECT_EQ(exporter::to_markdown(plain), "Words\n");
+    EXPECT_EQ(document::main_language(reopen(plain, exporter::OfficeFormat::docx)), "");
+    EXPECT_EQ(document::main_language(reopen(plain, exporter::OfficeFormat::odt)), "");
+    // A title is not written by the office writers, and says so.
+    auto titled = plain;
+    document::set_main_language(titled, "en");
+    titled.metadata.push_back({"title", "A title"});
+    auto file = exporter::to_office(titled, exporter::OfficeFormat::docx);
+    ASSERT_TRUE(file);
+    ASSERT_EQ(file->warnings.size(), 1u);
+    EXPECT_NE(file->warnings.front().find("metadata"), std::string::npos);
+}
+
+// Real documents keep their main language through a DOCX and an ODT save.
+TEST(OfficeExport, RealDocumentsKeepTheirMainLanguage) {
+    int kept = 0;
+    for (const auto& path : test::real_office_files(data)) {
+        auto doc = import::import_file(path);
+        if (!doc || document::main_language(*doc).empty()) continue;
+        SCOPED_TRACE(path.filename().string());
+        for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt})
+            EXPECT_EQ(document::main_language(reopen(*doc, format)), document::main_language(*doc));
+        ++kept;
+    }
+    EXPECT_GE(kept, 20);
 }
 
 TEST(OfficeExport, EveryConstructComesBackFromMarkdown) {
