@@ -569,6 +569,21 @@ TEST(OfficeExport, MarkdownAndTextNameWhatTheyLeaveOut) {
         << said;
     for (const auto* what : {"a box is written", "underline is left out", "raised and lowered text"})
         EXPECT_NE(said.find(what), std::string::npos) << what << " in\n" << said;
+    // Metadata: Markdown keeps the main language (its front matter) and names
+    // the rest; text keeps none.
+    const auto metadata_said = [&](const document::Document& d, exporter::DocumentFormat format) {
+        auto w = exporter::save_document(d, format, dir / (format == exporter::DocumentFormat::text ? "m.txt" : "m.md"));
+        EXPECT_TRUE(w);
+        for (const auto& line : w.value_or(std::vector<std::string>{}))
+            if (line.find("metadata") != std::string::npos) return true;
+        return false;
+    };
+    auto in_chinese = doc;
+    document::set_main_language(in_chinese, "zh-TW");
+    EXPECT_FALSE(metadata_said(in_chinese, exporter::DocumentFormat::markdown));
+    EXPECT_TRUE(metadata_said(in_chinese, exporter::DocumentFormat::text));
+    in_chinese.metadata.push_back({"title", "A title"});
+    EXPECT_TRUE(metadata_said(in_chinese, exporter::DocumentFormat::markdown));
     std::filesystem::remove_all(dir);
 }
 
