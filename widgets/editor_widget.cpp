@@ -422,6 +422,51 @@ void EditorWidget::toggle_position(document::Position position) {
     else print_->mergeCurrentCharFormat(f);
 }
 
+void EditorWidget::set_language(const QString& tag, bool paragraph) {
+    if (!structured() || !layout_) return;
+    auto* doc = print_->document();
+    const auto c = print_->textCursor();
+    // The mark as a property with the tag; "" takes it away (a merge cannot
+    // take a property away, and an empty tag is no language: structured::line_of).
+    QTextCharFormat f;
+    f.setProperty(structured::kLanguage, tag);
+    QTextCursor edit(doc);
+    if (paragraph) {
+        const auto first = doc->findBlock(c.selectionStart());
+        const auto last = doc->findBlock(c.selectionEnd());
+        edit.setPosition(first.position());
+        edit.setPosition(last.position() + last.length() - 1, QTextCursor::KeepAnchor);
+    } else if (c.hasSelection()) {
+        edit = c;
+    } else {
+        // No selection: the word the cursor is in, as a word processor does;
+        // between words, what is typed next.
+        edit = c;
+        edit.select(QTextCursor::WordUnderCursor);
+        static const QRegularExpression letter(QStringLiteral("[\\p{L}\\p{N}]"));
+        if (!edit.selectedText().contains(letter)) {
+            print_->mergeCurrentCharFormat(f);
+            return;
+        }
+    }
+    edit.beginEditBlock();
+    if (edit.hasSelection()) edit.mergeCharFormat(f);
+    // An empty paragraph's own format: what is typed in it.
+    if (paragraph)
+        for (auto b = doc->findBlock(edit.selectionStart()); b.isValid() && b.position() <= edit.selectionEnd(); b = b.next())
+            if (b.length() <= 1) QTextCursor(b).mergeBlockCharFormat(f);
+    edit.endEditBlock();
+    if (!c.hasSelection()) print_->mergeCurrentCharFormat(f);  // typed at the cursor next
+}
+
+QString EditorWidget::language_at_cursor() const {
+    if (!structured()) return {};
+    auto c = print_->textCursor();
+    c.clearSelection();
+    if (!c.atBlockEnd()) c.movePosition(QTextCursor::NextCharacter);
+    return c.charFormat().stringProperty(structured::kLanguage);
+}
+
 void EditorWidget::insert_page_break() {
     if (!structured() || !layout_) return;
     const auto block = print_->textCursor().block();

@@ -59,6 +59,18 @@ public:
     // Raised (superscript) or lowered (subscript) on the selection, or back
     // on the line when all of it is so already; what is typed next without one.
     void toggle_position(document::Position position);
+    // A passage's language (BCP 47, document::Span::language; "" = the
+    // document's own, a mark taken away) on the selection; without one, on
+    // the word the cursor is in, else on what is typed next; with
+    // `paragraph`, on all of the paragraphs the selection touches
+    // (LibreOffice's Tools > Language > For Selection and For Paragraph).
+    // The braille of the passage comes from that language's table. One step
+    // of undo.
+    void set_language(const QString& tag, bool paragraph = false);
+    // The language of the character after the print cursor (the one a
+    // screen reader reads from there), else of the one before it; "" = the
+    // document's own, and in the codes view (the marks are read there).
+    [[nodiscard]] QString language_at_cursor() const;
     // The paragraphs the selection touches put in a box (a box line above
     // them and one below), or, when the first of them is in a box already,
     // that box's lines taken away. One step of undo.

@@ -49,6 +49,7 @@
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
 #include "focus_return.hpp"
+#include "language_choice.hpp"
 #include "motion_view.hpp"
 #include "printer_panel.hpp"
 #include "profile_editor.hpp"
@@ -342,6 +343,17 @@ void MainWindow::build_format_actions() {
          [this] { editor_->toggle_position(document::Position::superscript); });
     make(tr("&Lowered"), tr("Ctrl+Shift+B"), QStringLiteral("formatLowered"),
          [this] { editor_->toggle_position(document::Position::subscript); });
+    make(tr("Lan&guage..."), tr("Ctrl+Alt+G"), QStringLiteral("formatLanguage"), [this] {
+        if (!editor_->structured()) return;
+        std::optional<LanguageChoice> choice;
+        {
+            FocusReturn back(this, editor_->print_pane());
+            choice = ask_language(this, editor_->language_at_cursor());
+        }
+        if (!choice) return;
+        editor_->set_language(choice->tag, choice->paragraph);
+        report(language_set_text(choice->tag));
+    });
     make(tr("Bo&x"), tr("Ctrl+Alt+X"), QStringLiteral("formatBox"), [this] { editor_->toggle_box(); });
     make(tr("No&te"), tr("Ctrl+Alt+E"), QStringLiteral("formatNote"), [this] {
         if (const auto reference = editor_->insert_note(); !reference.isEmpty())
@@ -652,13 +664,17 @@ QString MainWindow::status_text() const {
     const auto sheet = paged.geometry.sheet_of_page(pos.page);
     auto print_page = QString::fromStdString(layout.print_page_at(static_cast<std::size_t>(editor_->current_line())));
     if (print_page.isEmpty()) print_page = QStringLiteral("-");
-    return tr("Sheet %1 of %2%3 | line %4 | cell %5 | print page %6")
-        .arg(sheet)
-        .arg(std::max<std::size_t>(1, paged.sheet_count()))
-        .arg(interpoint ? (paged.geometry.page_is_back(pos.page) ? tr(", back") : tr(", front")) : QString())
-        .arg(pos.line + 1)
-        .arg(pos.cell + 1)
-        .arg(print_page);
+    auto text = tr("Sheet %1 of %2%3 | line %4 | cell %5 | print page %6")
+                    .arg(sheet)
+                    .arg(std::max<std::size_t>(1, paged.sheet_count()))
+                    .arg(interpoint ? (paged.geometry.page_is_back(pos.page) ? tr(", back") : tr(", front")) : QString())
+                    .arg(pos.line + 1)
+                    .arg(pos.cell + 1)
+                    .arg(print_page);
+    // A passage marked in another language says so where the cursor is.
+    if (const auto language = language_status(editor_->language_at_cursor()); !language.isEmpty())
+        text += QStringLiteral(" | ") + language;
+    return text;
 }
 
 void MainWindow::update_status() {

@@ -380,7 +380,7 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
             else
                 kept.push_back(block || is_table_delimiter(l) || box_line(l) != 0 ? l : std::string());
         }
-        return with_line_ending(exporter::join_markdown_lines(kept), line_ending);
+        return with_line_ending(exporter::markdown_front_matter(blocks) + exporter::join_markdown_lines(kept), line_ending);
     }
     return with_line_ending(exporter::to_markdown(blocks), line_ending);
 }

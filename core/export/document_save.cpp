@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "common/file_io.hpp"
+#include "document/main_language.hpp"
 #include "export/markdown_syntax.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
@@ -61,6 +62,11 @@ std::vector<std::string> print_losses(const document::Document& document, Docume
             if (!s.language.empty()) losses.add("a passage's language is left out", i);
         }
     }
+    // Markdown's front matter holds the main language only (markdown_front_matter).
+    if (text ? !document.metadata.empty() : document::has_other_metadata(document))
+        losses.add(text ? "the document's metadata (title, author, language) is not written"
+                        : "the document's metadata (title, author) besides its language is not written",
+                   0);
     return losses.lines(text ? "text" : "Markdown");
 }
 

@@ -12,6 +12,7 @@
 #include <map>
 
 #include "document/cell_paragraphs.hpp"
+#include "document/main_language.hpp"
 #include "document/placeholder_picture.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
@@ -63,7 +64,7 @@ public:
         // the importer finds them (after the text).
         for (const auto& [label, index] : notes_.by_label)
             if (!notes_.referenced.contains(label)) footnote(doc_.blocks[index]);
-        if (!doc_.metadata.empty()) losses_.add("the document's metadata (title, author) is not written", 0);
+        if (document::has_other_metadata(doc_)) losses_.add("the document's metadata (title, author) is not written", 0);
         if (dropped_controls_ > 0) losses_.add("control characters XML cannot hold are left out", 0);
 
         std::vector<ZipPart> parts;
@@ -71,7 +72,7 @@ public:
         parts.push_back({"_rels/.rels", package_rels(), false});
         parts.push_back({"word/document.xml", document_part(body), false});
         parts.push_back({"word/_rels/document.xml.rels", document_rels(), false});
-        parts.push_back({"word/styles.xml", styles_part(), false});
+        parts.push_back({"word/styles.xml", styles_part(document::main_language(doc_)), false});
         parts.push_back({"word/numbering.xml", numbering_part(), false});
         parts.push_back({"word/footnotes.xml", footnotes_part(), false});
         // A relationship belongs to its part: the notes' pictures name theirs
@@ -229,10 +230,7 @@ private:
             // complex): Word and the importer take one of the three by each
             // character's script, and the passage is in this language
             // whatever its characters are.
-            if (!s.language.empty()) {
-                const auto tag = escape(s.language);
-                rpr += "<w:lang w:val=\"" + tag + "\" w:eastAsia=\"" + tag + "\" w:bidi=\"" + tag + "\"/>";
-            }
+            rpr += language_element(s.language);
             out += "<w:r>";
             if (!rpr.empty()) out += "<w:rPr>" + rpr + "</w:rPr>";
             std::string text;
@@ -297,23 +295,17 @@ private:
         std::string relationship = "rIdPicture";
         office::Extent extent{9525, 9525};  // the placeholder's one pixel
         std::string svg;
+        if (image && !office::add_picture_file(media_, *image, index, losses_)) image = nullptr;
         if (image) {
-            auto file = office::picture_file_name(static_cast<int>(media_.size()) + 1, image->media_type);
-            if (file.empty()) {
-                losses_.add("a picture not PNG, JPEG or SVG is left out (its description stays)", index);
-                image = nullptr;
-            } else {
-                media_.push_back({std::move(file), image});
-                relationship = "rIdImage" + std::to_string(media_.size());
-                extent = office::picture_extent(*image);
-                // Word draws an SVG from its svgBlip extension (Office 2016
-                // on); the blip itself names the SVG too, which LibreOffice
-                // and the importer read (there is no PNG to fall back on).
-                if (image->media_type == "image/svg+xml")
-                    svg = "<a:extLst><a:ext uri=\"{96DAC541-7B7A-43D3-8B79-37D633B846F1}\"><asvg:svgBlip "
-                          "xmlns:asvg=\"http://schemas.microsoft.com/office/drawing/2016/SVG/main\" r:embed=\"" +
-                          relationship + "\"/></a:ext></a:extLst>";
-            }
+            relationship = "rIdImage" + std::to_string(media_.size());
+            extent = office::picture_extent(*image);
+            // Word draws an SVG from its svgBlip extension (Office 2016
+            // on); the blip itself names the SVG too, which LibreOffice
+            // and the importer read (there is no PNG to fall back on).
+            if (image->media_type == "image/svg+xml")
+                svg = "<a:extLst><a:ext uri=\"{96DAC541-7B7A-43D3-8B79-37D633B846F1}\"><asvg:svgBlip "
+                      "xmlns:asvg=\"http://schemas.microsoft.com/office/drawing/2016/SVG/main\" r:embed=\"" +
+                      relationship + "\"/></a:ext></a:extLst>";
         }
         if (!image) {
             if (description.empty()) return;
@@ -428,7 +420,7 @@ private:
                "<Default Extension=\"png\" ContentType=\"image/png\"/>";
         for (const auto& [extension, type] : {std::pair<std::string_view, std::string_view>{".jpeg", "image/jpeg"},
                                               {".svg", "image/svg+xml"}})
-            if (std::ranges::any_of(media_, [&](const Media& m) { return m.file.ends_with(extension); }))
+            if (std::ranges::any_of(media_, [&](const office::PictureFile& m) { return m.file.ends_with(extension); }))
                 out += "<Default Extension=\"" + std::string(extension.substr(1)) + "\" ContentType=\"" +
                        std::string(type) + "\"/>";
         out += "<Override PartName=\"/word/document.xml\" "
@@ -492,10 +484,21 @@ private:
         return out;
     }
 
-    [[nodiscard]] static std::string styles_part() {
+    // w:lang for every script class, "" for no language.
+    [[nodiscard]] static std::string language_element(const std::string& language) {
+        if (language.empty()) return {};
+        const auto tag = escape(language);
+        return "<w:lang w:val=\"" + tag + "\" w:eastAsia=\"" + tag + "\" w:bidi=\"" + tag + "\"/>";
+    }
+
+    // The document's main language is the defaults' for every script, as a
+    // passage's is its run's (the importer reads it back from there).
+    [[nodiscard]] static std::string styles_part(const std::string& language) {
         std::string out(kXmlDeclaration);
         out += "<w:styles xmlns:w=\"http://schemas.openxmlformats.org/wordprocessingml/2006/main\">"
-               "<w:docDefaults><w:rPrDefault><w:rPr><w:sz w:val=\"24\"/></w:rPr></w:rPrDefault>"
+               "<w:docDefaults><w:rPrDefault><w:rPr><w:sz w:val=\"24\"/>";
+        out += language_element(language);
+        out += "</w:rPr></w:rPrDefault>"
                "<w:pPrDefault><w:pPr><w:spacing w:after=\"120\"/></w:pPr></w:pPrDefault></w:docDefaults>"
                "<w:style w:type=\"paragraph\" w:default=\"1\" w:styleId=\"Normal\"><w:name w:val=\"Normal\"/>"
                "<w:qFormat/></w:style>";
@@ -582,11 +585,6 @@ private:
     }
 
     // A picture stored in word/media, in the order written.
-    struct Media {
-        std::string file;  // "image1.png"
-        const document::Image* image;
-    };
-
     struct Override {
         int abstract;
         int ilvl;
@@ -600,7 +598,7 @@ private:
     int footnote_count_ = 0;
     int drawings_ = 0;
     int pictures_ = 0;  // descriptions on the placeholder
-    std::vector<Media> media_;
+    std::vector<office::PictureFile> media_;
     std::size_t dropped_controls_ = 0;
     std::map<int, std::array<int, kMaxListLevel>> counters_;  // per w:abstractNum, as the importer counts
     std::map<int, bool> counters_started_;

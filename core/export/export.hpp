@@ -28,7 +28,7 @@ struct PefMetadata {
 };
 
 // The metadata to write: the source's own (a PEF's dc: elements) when it has
-// any, else a title and date made for this export.
+// any besides its main language, else a title and date made for this export.
 // `language` (BCP 47, translate::table_language_tag) is written when the
 // source has no metadata of its own. The CLI and the app both ask here.
 PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std::string title, std::string date,

@@ -14,6 +14,7 @@
 #include <map>
 
 #include "document/cell_paragraphs.hpp"
+#include "document/main_language.hpp"
 #include "document/placeholder_picture.hpp"
 #include "export/office_common.hpp"
 #include "export/office_export.hpp"
@@ -73,12 +74,12 @@ public:
     Result<OfficeFile> write() {
         std::string body;
         blocks(body, 0, doc_.blocks.size(), false);
-        if (!doc_.metadata.empty()) losses_.add("the document's metadata (title, author) is not written", 0);
+        if (document::has_other_metadata(doc_)) losses_.add("the document's metadata (title, author) is not written", 0);
         if (dropped_controls_ > 0) losses_.add("control characters XML cannot hold are left out", 0);
         std::vector<ZipPart> parts;
         parts.push_back({"mimetype", std::string(kMimeType), true});
         parts.push_back({"content.xml", content_part(body), false});
-        parts.push_back({"styles.xml", styles_part(), false});
+        parts.push_back({"styles.xml", styles_part(document::main_language(doc_)), false});
         parts.push_back({"META-INF/manifest.xml", manifest(), false});
         if (pictures_ > 0) parts.push_back({"Pictures/placeholder.png", std::string(document::placeholder_png()), false});
         for (const auto& m : media_) parts.push_back({"Pictures/" + m.file, m.image->bytes, false});
@@ -405,17 +406,11 @@ private:
     void picture(std::string& out, std::string_view description, const document::Image* image, std::size_t index) {
         std::string href = "Pictures/placeholder.png", type = "image/png";
         office::Extent extent{9525, 9525};  // the placeholder's one pixel
+        if (image && !office::add_picture_file(media_, *image, index, losses_)) image = nullptr;
         if (image) {
-            auto file = office::picture_file_name(static_cast<int>(media_.size()) + 1, image->media_type);
-            if (file.empty()) {
-                losses_.add("a picture not PNG, JPEG or SVG is left out (its description stays)", index);
-                image = nullptr;
-            } else {
-                href = "Pictures/" + file;
-                type = image->media_type;
-                extent = office::picture_extent(*image);
-                media_.push_back({std::move(file), image});
-            }
+            href = "Pictures/" + media_.back().file;
+            type = image->media_type;
+            extent = office::picture_extent(*image);
         }
         if (!image) {
             if (description.empty()) return;
@@ -585,13 +580,16 @@ private:
         return out;
     }
 
-    [[nodiscard]] static std::string styles_part() {
+    // The document's main language is the default style's for every script,
+    // where LibreOffice keeps it and the importer reads it back.
+    [[nodiscard]] static std::string styles_part(const std::string& language) {
         std::string out(kXmlDeclaration);
         out += "<office:document-styles";
         out += kNamespaces;
         out += "><office:styles>"
-               "<style:default-style style:family=\"paragraph\"><style:text-properties fo:font-size=\"12pt\"/>"
-               "</style:default-style>"
+               "<style:default-style style:family=\"paragraph\"><style:text-properties fo:font-size=\"12pt\"";
+        if (!language.empty()) out += language_attributes(language);
+        out += "/></style:default-style>"
                "<style:style style:name=\"Standard\" style:family=\"paragraph\" style:class=\"text\"/>"
                "<style:style style:name=\"Heading\" style:family=\"paragraph\" style:parent-style-name=\"Standard\" "
                "style:next-style-name=\"Standard\" style:class=\"text\"><style:paragraph-properties "
@@ -636,11 +634,6 @@ private:
     }
 
     // A picture stored in Pictures/, in the order written.
-    struct Media {
-        std::string file;  // "image1.png"
-        const document::Image* image;
-    };
-
     const document::Document& doc_;
     office::Notes notes_;
     office::Losses losses_;
@@ -651,7 +644,7 @@ private:
     std::map<std::string, std::pair<std::string, Span>> text_styles_;
     int notes_written_ = 0;
     int pictures_ = 0;  // descriptions on the placeholder
-    std::vector<Media> media_;
+    std::vector<office::PictureFile> media_;
     int frames_ = 0;
     int tables_ = 0;
     std::size_t dropped_controls_ = 0;

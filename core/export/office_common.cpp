@@ -116,6 +116,16 @@ std::string picture_file_name(int number, std::string_view media_type) {
     return "image" + std::to_string(number) + "." + std::string(extension);
 }
 
+bool add_picture_file(std::vector<PictureFile>& files, const document::Image& image, std::size_t block, Losses& losses) {
+    auto file = picture_file_name(static_cast<int>(files.size()) + 1, image.media_type);
+    if (file.empty()) {
+        losses.add("a picture not PNG, JPEG or SVG is left out (its description stays)", block);
+        return false;
+    }
+    files.push_back({std::move(file), &image});
+    return true;
+}
+
 Extent picture_extent(const document::Image& image) {
     constexpr double emu_per_px = 914400.0 / 96;
     // The text's width on the writers' page (A4, 2.54 cm margins): wider

@@ -96,6 +96,17 @@ private:
 // such a picture is left out with a warning, and its description stays.
 std::string picture_file_name(int number, std::string_view media_type);
 
+// A picture a writer puts in its package: its file name there and its bytes.
+struct PictureFile {
+    std::string file;  // "image1.png"
+    const document::Image* image = nullptr;
+};
+
+// `image` added to `files` under the next picture_file_name, and true; for a
+// type the importers would not read back as a picture, nothing added, the loss
+// named at `block`, and false (the writer writes its description alone).
+bool add_picture_file(std::vector<PictureFile>& files, const document::Image& image, std::size_t block, Losses& losses);
+
 // How large a picture is written, in EMU (914400 to the inch; DOCX's unit,
 // ODT's lengths are written from it).
 struct Extent {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/utf8.hpp"
+#include "document/main_language.hpp"
 #include "export/export.hpp"
 #include "common/try.hpp"
 
@@ -60,7 +61,11 @@ PefMetadata pef_metadata(const std::vector<document::MetadataItem>& source, std:
     m.title = std::move(title);
     m.date = std::move(date);
     m.language = std::move(language);
-    m.source = source;
+    // A main language alone (a DOCX's, an ODT's) is the print's, not a head
+    // of the source's own: the head made for this export is written, its
+    // title, date and the braille's language kept.
+    if (std::ranges::any_of(source, [](const document::MetadataItem& i) { return i.name != document::kLanguageItem; }))
+        m.source = source;
     return m;
 }
 

@@ -3,6 +3,7 @@
 #include "export/text_export.hpp"
 
 #include "document/cell_paragraphs.hpp"
+#include "document/main_language.hpp"
 #include "document/markdown_html.hpp"
 #include "document/soft_break.hpp"
 
@@ -512,9 +513,22 @@ std::string join_markdown_lines(std::span<const std::string> lines) {
     return out;
 }
 
+std::string markdown_front_matter(const document::Document& document) {
+    const auto language = document::main_language(document);
+    if (language.empty()) return {};
+    // A tag is letters, digits and hyphens; anything else is quoted, so the
+    // YAML reads it as one string.
+    const bool plain = std::ranges::all_of(language, [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+    });
+    std::string value;
+    for (char c : language) value += c == '\n' || c == '\r' ? ' ' : c;
+    return "---\nlang: " + (plain ? value : "\"" + value + "\"") + "\n---\n\n";
+}
+
 std::string to_markdown(const document::Document& document) {
     const auto lines = markdown_lines(document);
-    return join_markdown_lines(lines);
+    return markdown_front_matter(document) + join_markdown_lines(lines);
 }
 
 std::string text_line(const document::Block& b) {

@@ -59,6 +59,12 @@ std::vector<std::string> markdown_lines(const document::Document& document);
 // the header).
 std::string join_markdown_lines(std::span<const std::string> lines);
 
+// The YAML front matter a Markdown file starts with for what the blocks do
+// not hold: the document's main language ("lang: zh-TW", which the importer
+// and pandoc read), else "" (no front matter).
+std::string markdown_front_matter(const document::Document& document);
+
+// The front matter, then the blocks (join_markdown_lines).
 std::string to_markdown(const document::Document& document);
 
 // ---- Plain text ----

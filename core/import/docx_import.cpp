@@ -28,6 +28,7 @@
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include "import/docx_styles.hpp"
 #include "import/import.hpp"
@@ -35,6 +36,7 @@
 #include "import/office_language.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "document/main_language.hpp"
 #include "document/placeholder_picture.hpp"
 #include "import/picture_part.hpp"
 #include "import/text_position.hpp"
@@ -154,6 +156,10 @@ private:
     }
 
     void table(const pugi::xml_node& tbl) {
+        // The table's style gives its text's languages (a table in another
+        // language); a table inside it has its own.
+        const auto outer_style =
+            std::exchange(table_style_, std::string(attribute(child(child(tbl, "tblPr"), "tblStyle"), "val")));
         out_.begin_table();
         std::vector<pugi::xml_node> rows;
         controlled(tbl, "tr", rows);
@@ -176,6 +182,7 @@ private:
             }
         }
         out_.end_table();
+        table_style_ = outer_style;
     }
 
     void paragraph(const pugi::xml_node& p) {
@@ -437,7 +444,8 @@ private:
         ParagraphLanguages(BodyReader& reader, const pugi::xml_node& p)
             : reader_(reader), outer_(std::move(reader.paragraph_languages_)) {
             reader_.paragraph_languages_ =
-                reader_.styles_.paragraph_languages(attribute(child(child(p, "pPr"), "pStyle"), "val"));
+                reader_.styles_.paragraph_languages(attribute(child(child(p, "pPr"), "pStyle"), "val"),
+                                                    reader_.table_style_);
         }
         ~ParagraphLanguages() { reader_.paragraph_languages_ = std::move(outer_); }
         ParagraphLanguages(const ParagraphLanguages&) = delete;
@@ -474,6 +482,7 @@ private:
     int in_hyperlink_ = 0;  // inside w:hyperlink (nested ones count)
     const OfficeLanguages document_languages_;  // the defaults' and the default paragraph style's
     OfficeLanguages paragraph_languages_;       // the paragraph being read: defaults, then its style
+    std::string table_style_;                   // the w:tblStyle of the table being read
 };
 
 // The main part's relationships by id, their targets as part names.
@@ -522,7 +531,9 @@ Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby, b
         reader.keep_images(package, std::move(targets));
     }
     reader.container(body);
-    return reader.finish();
+    auto doc = reader.finish();
+    if (doc) document::set_main_language(*doc, main_language(styles.document_languages(), *doc));
+    return doc;
 }
 
 }  // namespace tactus::import::detail

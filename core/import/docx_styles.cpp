@@ -156,12 +156,17 @@ const DocxStyles::Style* DocxStyles::find_paragraph(std::string_view id) const {
     return s ? s : find(default_paragraph_);
 }
 
-OfficeLanguages DocxStyles::paragraph_languages(std::string_view style_id) const {
-    std::vector<const Style*> chain;
-    const Style* s = find_paragraph(style_id);
-    for (int depth = 0; s && depth < 32; ++depth, s = find(s->based_on)) chain.push_back(s);
+OfficeLanguages DocxStyles::paragraph_languages(std::string_view style_id, std::string_view table_style_id) const {
+    // A style's languages over its ancestors' (the depth bound stops a
+    // basedOn cycle in a hand-made file).
+    const auto apply_chain = [this](const Style* s, OfficeLanguages& out) {
+        std::vector<const Style*> chain;
+        for (int depth = 0; s && depth < 32; ++depth, s = find(s->based_on)) chain.push_back(s);
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) out.apply((*it)->run.languages);
+    };
     OfficeLanguages out = defaults_;
-    for (auto it = chain.rbegin(); it != chain.rend(); ++it) out.apply((*it)->run.languages);
+    if (!table_style_id.empty()) apply_chain(find(table_style_id), out);
+    apply_chain(find_paragraph(style_id), out);
     return out;
 }
 

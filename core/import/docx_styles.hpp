@@ -54,10 +54,13 @@ public:
     [[nodiscard]] ParagraphStyle paragraph(std::string_view style_id) const;
     [[nodiscard]] RunFormat character(std::string_view style_id) const;
     // The languages of a paragraph's text before its runs' own: the
-    // document defaults (w:docDefaults), then the paragraph style's chain
-    // (empty id = the default paragraph style). Unlike bold or italic, a
-    // paragraph style's language is the text's.
-    [[nodiscard]] OfficeLanguages paragraph_languages(std::string_view style_id) const;
+    // document defaults (w:docDefaults), then, in a table, its table style's
+    // chain (w:tblStyle's run properties), then the paragraph style's chain
+    // (empty id = the default paragraph style): Word's order (ECMA-376 Part 1,
+    // 17.7.2, "Style hierarchy"). Unlike bold or italic, a paragraph style's
+    // language is the text's.
+    [[nodiscard]] OfficeLanguages paragraph_languages(std::string_view style_id,
+                                                      std::string_view table_style_id = {}) const;
     // The document's own languages: those of a paragraph in the default
     // paragraph style with no language of its own.
     [[nodiscard]] OfficeLanguages document_languages() const { return paragraph_languages({}); }

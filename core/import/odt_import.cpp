@@ -41,9 +41,11 @@
 #include "import/office_language.hpp"
 #include "import/office_math.hpp"
 #include "import/office_package.hpp"
+#include "document/main_language.hpp"
 #include "document/placeholder_picture.hpp"
 #include "import/picture_part.hpp"
 #include "import/text_position.hpp"
+#include "import/trim.hpp"
 #include "import/xml_util.hpp"
 #include "common/try.hpp"
 
@@ -675,7 +677,19 @@ Result<document::Document> import_odt(std::string_view bytes, RubyGuide ruby, bo
     OdtReader reader(styles, lists, package, ruby, content_xml.bytes);
     if (images) reader.keep_images();
     reader.container(text);
-    return reader.finish();
+    auto doc = reader.finish();
+    if (!doc) return doc;
+    // The main language is the default style's (what LibreOffice edits as
+    // the document's languages); meta.xml's dc:language names it for a
+    // document whose styles do not.
+    auto language = main_language(styles.document_languages(), *doc);
+    if (language.empty()) {
+        XmlPart meta_xml;
+        TACTUS_TRY(found, package.load("meta.xml", meta_xml, false));
+        if (found) language = language_tag(trim(child(child(meta_xml.root(), "meta"), "language").child_value()));
+    }
+    document::set_main_language(*doc, language);
+    return doc;
 }
 
 }  // namespace tactus::import::detail

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import/office_language.hpp"
 
+#include <array>
+
 namespace tactus::import::detail {
 namespace {
 
@@ -105,6 +107,25 @@ std::vector<LanguagePiece> language_pieces(std::string_view utf8, const OfficeLa
         out.back().text = utf8.substr(begin, ch.at + ch.length - begin);
     }
     return out;
+}
+
+std::string main_language(const OfficeLanguages& document, const document::Document& text) {
+    constexpr std::array classes = {ScriptClass::latin, ScriptClass::east_asian, ScriptClass::complex};
+    std::array<std::size_t, 3> count{};
+    for (const auto& b : text.blocks)
+        for (const auto& s : b.spans) {
+            if (!s.language.empty() || s.transcriber_note) continue;  // a passage's own, or not print's
+            for (std::size_t i = 0, n = 0; i < s.text.size(); i += n)
+                if (const auto c = script_class(decode(s.text, i, n))) ++count[static_cast<std::size_t>(*c)];
+        }
+    std::string best;
+    std::size_t most = 0;
+    for (const auto c : classes)
+        if (const auto tag = document.of(c); !tag.empty() && (best.empty() || count[static_cast<std::size_t>(c)] > most)) {
+            best = std::string(tag);
+            most = count[static_cast<std::size_t>(c)];
+        }
+    return best;
 }
 
 }  // namespace tactus::import::detail

@@ -14,6 +14,8 @@
 #include <string_view>
 #include <vector>
 
+#include "document/document.hpp"
+
 namespace tactus::import::detail {
 
 enum class ScriptClass : std::uint8_t { latin, east_asian, complex };
@@ -52,5 +54,12 @@ struct LanguagePiece {
 // (""), so an ordinary document carries no marks.
 std::vector<LanguagePiece> language_pieces(std::string_view utf8, const OfficeLanguages& run,
                                            const OfficeLanguages& document);
+
+// The document's main language (document/main_language.hpp) from its own
+// languages: that of the script class most of its unmarked text is in
+// (a Taiwanese document's defaults say English for Latin letters and Chinese
+// for Han, and its text is Han), else, without such text, the first class
+// that names one (Latin, East Asian, complex); "" when none does.
+std::string main_language(const OfficeLanguages& document, const document::Document& text);
 
 }  // namespace tactus::import::detail

@@ -61,16 +61,22 @@ std::string language_name(const std::string& tag, const Reader& reader) {
 #endif
 }
 
-}  // namespace
-
-std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
+// The locale names are given in: English for a tag ICU cannot read.
 #if TACTUS_HAVE_ICU
+Reader reader_for(std::string_view display_locale) {
     UErrorCode status = U_ZERO_ERROR;
     icu::Locale reader = icu::Locale::forLanguageTag(std::string(display_locale), status);
     if (U_FAILURE(status) || reader.isBogus()) reader = icu::Locale::getEnglish();
+    return reader;
+}
 #else
-    const Reader reader = display_locale;
+Reader reader_for(std::string_view display_locale) { return display_locale; }
 #endif
+
+}  // namespace
+
+std::vector<TableInfo> table_catalogue(std::string_view display_locale) {
+    const Reader reader = reader_for(display_locale);
     louis::install_log_capture();
     std::vector<TableInfo> out;
     std::lock_guard guard(louis::lock());
@@ -130,6 +136,25 @@ std::string recommended_table(std::string_view language_tag, std::string_view gr
         if (t.language_tag == wanted && (grade.empty() || t.grade == grade)) return t.file;
     }
     return {};
+}
+
+std::string language_display_name(std::string_view tag, std::string_view display_locale) {
+    if (tag.empty()) return {};
+    return language_name(std::string(tag), reader_for(display_locale));
+}
+
+std::vector<PassageLanguage> passage_languages(std::string_view display_locale) {
+    const auto reader = reader_for(display_locale);
+    std::vector<PassageLanguage> out;
+    for (const auto& t : table_catalogue()) {
+        if (!t.recommended) break;  // recommended tables come first
+        if (t.language_tag.empty()) continue;
+        auto tag = t.language_tag;
+        if (tag.starts_with("cmn-")) tag.replace(0, 3, "zh");
+        if (std::ranges::any_of(out, [&](const PassageLanguage& l) { return l.tag == tag; })) continue;
+        out.push_back({tag, language_name(tag, reader)});
+    }
+    return out;
 }
 
 std::string table_language_tag(std::string_view tables) {

@@ -36,6 +36,23 @@ std::string table_language_tag(std::string_view tables);
 // mainland region is China's. Empty when no recommended table is for it.
 std::string recommended_table(std::string_view language_tag, std::string_view grade = {});
 
+// A language a passage can be marked in (document::Span::language) for a
+// table of its own.
+struct PassageLanguage {
+    std::string tag;   // BCP 47 as word processors write it: "en", "zh-TW", "zh-CN"
+    std::string name;  // in the display locale: "Chinese (Taiwan)", "中文（台灣）"
+};
+
+// The languages of the recommended tables, one each, in the catalogue's
+// order: those recommended_table gives a table for, so a passage marked in
+// one is translated with it (translate/language_switch.hpp). A table's
+// "cmn" (Mandarin) is written "zh", the tag Word and LibreOffice use.
+std::vector<PassageLanguage> passage_languages(std::string_view display_locale = "en");
+
+// A BCP 47 tag's name in the display locale ("zh-TW" -> "Chinese (Taiwan)"),
+// from ICU; the tag itself without ICU or for one ICU cannot name.
+std::string language_display_name(std::string_view tag, std::string_view display_locale = "en");
+
 // True for a tag of Chinese ("zh", "cmn", "yue", ...).
 bool is_chinese_tag(std::string_view tag);
 

@@ -74,6 +74,21 @@ TEST(PefExport, SourceMetadataKeepsTheSchemasSingleElementsSingle) {
     EXPECT_EQ(pef->find("1818"), std::string::npos);
 }
 
+// A document whose metadata is its main language alone (a DOCX's, an ODT's)
+// has no head of its own: the PEF gets the one made for the export, with its
+// title, date and the braille's language; any other item makes it the source's.
+TEST(PefExport, AMainLanguageAloneIsNotTheSourcesHead) {
+    const auto made = exporter::pef_metadata({{"language", "zh-TW"}}, "lesson.docx", "2030-01-01", "en");
+    EXPECT_TRUE(made.source.empty());
+    const auto pef = exporter::to_pef(two_pages(true), made);
+    ASSERT_TRUE(pef);
+    EXPECT_NE(pef->find("<dc:title>lesson.docx</dc:title>"), std::string::npos);
+    EXPECT_NE(pef->find("<dc:language>en</dc:language>"), std::string::npos);
+    EXPECT_NE(pef->find("<dc:date>2030-01-01</dc:date>"), std::string::npos);
+    const auto own = exporter::pef_metadata({{"language", "zh-TW"}, {"title", "A book"}}, "x", "2030-01-01", "en");
+    EXPECT_EQ(own.source.size(), 2u);
+}
+
 TEST(PefExport, IdentifierIsStableAndContentDerived) {
     const auto a = exporter::to_pef(two_pages(true));
     const auto b = exporter::to_pef(two_pages(true));

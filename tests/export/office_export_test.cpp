@@ -17,6 +17,7 @@
 #include <random>
 #include <sstream>
 
+#include "document/main_language.hpp"
 #include "export/document_save.hpp"
 #include "export/picture_size.hpp"
 #include "export/text_export.hpp"
@@ -281,6 +282,66 @@ TEST(OfficeExport, LanguagesComeBackFromDocxAndOdt) {
         }
 }
 
+// The document's main language (document/main_language.hpp) is written where
+// each format keeps it (DOCX's w:docDefaults, ODT's default style,
+// Markdown's front matter) and read back from there; its passages in
+// another language stay passages, its own text stays unmarked, and nothing
+// is named lost. Other metadata (a title) is still named.
+TEST(OfficeExport, TheMainLanguageComesBackFromDocxOdtAndMarkdown) {
+    for (const std::string main : {"zh-TW", "en-GB", "sr-Latn"}) {
+        document::Document doc;
+        document::set_main_language(doc, main);
+        doc.blocks.push_back(block(BlockKind::heading, 1, {text("中文 and English")}));
+        doc.blocks.push_back(block(BlockKind::paragraph, 0,
+                                   {text("我住在"), in_language("New York", "en"), text("，"), in_language("漢字", "ja")}));
+        for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt}) {
+            SCOPED_TRACE(main + (format == exporter::OfficeFormat::docx ? " -> docx" : " -> odt"));
+            auto file = exporter::to_office(doc, format);
+            ASSERT_TRUE(file) << file.error().to_string();
+            EXPECT_TRUE(file->warnings.empty()) << file->warnings.front();
+            expect_well_formed(file->bytes);
+            const auto back = reopen(doc, format);
+            EXPECT_EQ(document::main_language(back), main);
+            EXPECT_SAME_BLOCKS(blocks_of(back), doc.blocks);
+        }
+        SCOPED_TRACE(main + " -> md");
+        const auto markdown = exporter::to_markdown(doc);
+        EXPECT_TRUE(markdown.starts_with("---\nlang: " + main + "\n---\n\n# ")) << markdown;
+        auto back = import::import_bytes(markdown, "saved.md");
+        ASSERT_TRUE(back) << back.error().to_string();
+        EXPECT_EQ(document::main_language(*back), main);
+        EXPECT_EQ(dump(blocks_of(*back)), dump(blocks_of(doc)));
+    }
+    // A document without one writes none: no front matter, no default language.
+    document::Document plain;
+    plain.blocks.push_back(block(BlockKind::paragraph, 0, {text("Words")}));
+    EXPECT_EQ(exporter::to_markdown(plain), "Words\n");
+    EXPECT_EQ(document::main_language(reopen(plain, exporter::OfficeFormat::docx)), "");
+    EXPECT_EQ(document::main_language(reopen(plain, exporter::OfficeFormat::odt)), "");
+    // A title is not written by the office writers, and says so.
+    auto titled = plain;
+    document::set_main_language(titled, "en");
+    titled.metadata.push_back({"title", "A title"});
+    auto file = exporter::to_office(titled, exporter::OfficeFormat::docx);
+    ASSERT_TRUE(file);
+    ASSERT_EQ(file->warnings.size(), 1u);
+    EXPECT_NE(file->warnings.front().find("metadata"), std::string::npos);
+}
+
+// Real documents keep their main language through a DOCX and an ODT save.
+TEST(OfficeExport, RealDocumentsKeepTheirMainLanguage) {
+    int kept = 0;
+    for (const auto& path : test::real_office_files(data)) {
+        auto doc = import::import_file(path);
+        if (!doc || document::main_language(*doc).empty()) continue;
+        SCOPED_TRACE(path.filename().string());
+        for (const auto format : {exporter::OfficeFormat::docx, exporter::OfficeFormat::odt})
+            EXPECT_EQ(document::main_language(reopen(*doc, format)), document::main_language(*doc));
+        ++kept;
+    }
+    EXPECT_GE(kept, 20);
+}
+
 TEST(OfficeExport, EveryConstructComesBackFromMarkdown) {
     auto doc = every_construct();
     doc.blocks.push_back(block(BlockKind::paragraph, 0, {text("Say ")}));
@@ -508,6 +569,21 @@ TEST(OfficeExport, MarkdownAndTextNameWhatTheyLeaveOut) {
         << said;
     for (const auto* what : {"a box is written", "underline is left out", "raised and lowered text"})
         EXPECT_NE(said.find(what), std::string::npos) << what << " in\n" << said;
+    // Metadata: Markdown keeps the main language (its front matter) and names
+    // the rest; text keeps none.
+    const auto metadata_said = [&](const document::Document& d, exporter::DocumentFormat format) {
+        auto w = exporter::save_document(d, format, dir / (format == exporter::DocumentFormat::text ? "m.txt" : "m.md"));
+        EXPECT_TRUE(w);
+        for (const auto& line : w.value_or(std::vector<std::string>{}))
+            if (line.find("metadata") != std::string::npos) return true;
+        return false;
+    };
+    auto in_chinese = doc;
+    document::set_main_language(in_chinese, "zh-TW");
+    EXPECT_FALSE(metadata_said(in_chinese, exporter::DocumentFormat::markdown));
+    EXPECT_TRUE(metadata_said(in_chinese, exporter::DocumentFormat::text));
+    in_chinese.metadata.push_back({"title", "A title"});
+    EXPECT_TRUE(metadata_said(in_chinese, exporter::DocumentFormat::markdown));
     std::filesystem::remove_all(dir);
 }
 

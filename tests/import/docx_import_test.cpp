@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_test_util.hpp"
 
+#include "document/main_language.hpp"
 #include "export/zip_writer.hpp"
 #include "import/office_language.hpp"
 #include "../common/office_files.hpp"
@@ -140,7 +141,8 @@ TEST(DocxImport, LanguagesOfARealDocument) {
 TEST(OfficeLanguage, RealDocumentsInTheirDefaultLanguagesCarryNoMarks) {
     int files = 0;
     for (const auto& path : real_office_files(std::filesystem::path(TACTUS_TEST_DATA))) {
-        if (path.filename() == "pandoc-i18n_blocks.docx") continue;
+        // Made to have passages in other languages: tested on their own.
+        if (path.filename() == "pandoc-i18n_blocks.docx" || path.filename() == "table_language.docx") continue;
         auto doc = import::import_file(path);
         if (!doc) continue;  // the importer's own error files
         ++files;
@@ -188,6 +190,63 @@ TEST(DocxImport, LanguagesComeFromStylesAndDefaults) {
         {"Guten Tag ", "de-DE"}, {"中文 hello", ""},
     };
     EXPECT_EQ(languages_of(*doc), expected);
+}
+
+// A table style's language is its text's (Word's order: the document
+// defaults, the table style, the paragraph style, the run): python-docx's
+// "Light Grid Accent 1" given French for Latin and Chinese (Taiwan) for East
+// Asian text (constructs/make_table_language.py), a run in it set to English
+// directly (the document's own), and a table in a style without a language.
+TEST(DocxImport, ATableStyleGivesItsTextItsLanguage) {
+    const auto doc = import_data_file("constructs/table_language.docx");
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"A paragraph before the tables.", ""}, {"Bonjour le monde", "fr-FR"}, {"中文字", "zh-TW"},
+        {"Au revoir", "fr-FR"}, {"Hello", ""}, {"Plain words", ""}, {"A paragraph after the tables.", ""},
+    };
+    EXPECT_EQ(languages_of(doc), expected);
+    EXPECT_EQ(document::main_language(doc), "en-US");
+}
+
+// The main language is the document's own language of the script class most
+// of its unmarked text is in; without text, the first class that names one.
+TEST(OfficeLanguage, TheMainLanguageIsThatOfMostOfTheText) {
+    using import::detail::main_language;
+    import::detail::OfficeLanguages own;
+    own.latin = "en-US";
+    own.east_asian = "zh-TW";
+    own.complex = "ar-SA";
+    const auto doc_of = [](std::vector<document::Span> spans) {
+        document::Document d;
+        d.blocks.push_back(document::Block{});
+        d.blocks.back().spans = std::move(spans);
+        return d;
+    };
+    EXPECT_EQ(main_language(own, doc_of({{.text = "我住在台北市的中心區, in Taipei."}})), "zh-TW");
+    EXPECT_EQ(main_language(own, doc_of({{.text = "I live in 台北."}})), "en-US");
+    EXPECT_EQ(main_language(own, doc_of({{.text = "مرحبا"}})), "ar-SA");
+    // A passage in its own language does not count.
+    EXPECT_EQ(main_language(own, doc_of({{.text = "Hi "}, {.text = "我住在台北", .language = "zh-CN"}})), "en-US");
+    EXPECT_EQ(main_language(own, document::Document{}), "en-US");
+    import::detail::OfficeLanguages asian_only;
+    asian_only.east_asian = "ja-JP";
+    EXPECT_EQ(main_language(asian_only, doc_of({{.text = "Latin words"}})), "ja-JP");
+    EXPECT_EQ(main_language({}, doc_of({{.text = "Latin words"}})), "");
+}
+
+// Real documents' main languages, as each format names it: DOCX's
+// w:docDefaults, ODT's default style, EPUB's first dc:language, HTML's lang.
+TEST(OfficeLanguage, TheMainLanguageOfRealDocuments) {
+    for (const auto& [file, language] : std::vector<std::pair<std::string, std::string>>{
+             {"public/pandoc-i18n_blocks.docx", "ru-RU"},
+             {"public/python-docx-tbl-having-applied-style.docx", "en-US"},
+             {"public/pandoc-headers.docx", "en-US"},  // its default paragraph style's
+             {"public/pandoc-unicode.odt", "en-US"},
+             {"public/odfdo-table.odt", "fr-FR"},
+             {"public/pandoc-footnote.odt", "de-DE"},
+             {"public/pandoc-img_no_cover.epub", "en"},
+             {"lesson.html", "en"},
+         })
+        EXPECT_EQ(document::main_language(import_data_file(file)), language) << file;
 }
 
 TEST(DocxImport, TruncatedZipIsAClearError) {

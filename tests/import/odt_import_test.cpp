@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "import_test_util.hpp"
 
+#include "document/main_language.hpp"
 #include "export/zip_writer.hpp"
 
 namespace tactus::test {
@@ -81,6 +82,39 @@ TEST(OdtImport, LanguagesComeFromStylesAndDefaults) {
         {"Guten Tag ", "de-DE"}, {"中文 ", ""}, {"zdravo", "sr-Latn"},
     };
     EXPECT_EQ(got, expected);
+}
+
+// The document's main language: the default style's where it names one
+// (as LibreOffice writes it), else meta.xml's dc:language.
+TEST(OdtImport, TheMainLanguageComesFromTheDefaultStyleElseTheMeta) {
+    constexpr std::string_view ns =
+        R"( xmlns:office="urn:oasis:names:tc:opendocument:xmlns:office:1.0")"
+        R"( xmlns:style="urn:oasis:names:tc:opendocument:xmlns:style:1.0")"
+        R"( xmlns:text="urn:oasis:names:tc:opendocument:xmlns:text:1.0")"
+        R"( xmlns:fo="urn:oasis:names:tc:opendocument:xmlns:xsl-fo-compatible:1.0")"
+        R"( xmlns:dc="http://purl.org/dc/elements/1.1/")";
+    const std::string content = "<office:document-content" + std::string(ns) +
+        "><office:body><office:text><text:p>我住在台北。</text:p></office:text></office:body></office:document-content>";
+    const std::string meta = "<office:document-meta" + std::string(ns) +
+        "><office:meta><dc:language> zh-TW </dc:language></office:meta></office:document-meta>";
+    const std::string styles = "<office:document-styles" + std::string(ns) +
+        R"(><office:styles><style:default-style style:family="paragraph"><style:text-properties)"
+        R"( fo:language="en" fo:country="US" style:language-asian="zh" style:country-asian="HK"/>)"
+        "</style:default-style></office:styles></office:document-styles>";
+    const auto main_language_of = [&](bool with_styles) {
+        std::vector<exporter::ZipPart> parts = {{"mimetype", "application/vnd.oasis.opendocument.text", true},
+                                                {"content.xml", content, false},
+                                                {"meta.xml", meta, false}};
+        if (with_styles) parts.push_back({"styles.xml", styles, false});
+        auto package = exporter::zip_package(parts);
+        EXPECT_TRUE(package);
+        auto doc = import::import_bytes(package.value_or(std::string()), "language.odt");
+        EXPECT_TRUE(doc) << doc.error().to_string();
+        return doc ? document::main_language(*doc) : std::string("?");
+    };
+    EXPECT_EQ(main_language_of(false), "zh-TW");
+    // The styles' language for Han text (the text's script), not the Latin one.
+    EXPECT_EQ(main_language_of(true), "zh-HK");
 }
 
 TEST(OdtImport, DetectedByExtensionAndContent) {

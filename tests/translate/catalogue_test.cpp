@@ -47,3 +47,22 @@ TEST(Catalogue, NamesLanguagesInTheReadersLocale) {
     const auto fallback = translate::table_catalogue("not a locale!");
     EXPECT_EQ(std::ranges::find(fallback, "en-ueb-g2.ctb", &translate::TableInfo::file)->language, "English");
 }
+
+// The languages a passage can be marked in are the recommended tables'
+// languages, one each, as word processors tag them; each has its table
+// (the same rule that picks the table for a marked passage), and each is
+// named in the reader's locale.
+TEST(Catalogue, PassageLanguagesAreThoseOfTheTables) {
+    const auto languages = translate::passage_languages();
+    std::vector<std::string> tags;
+    for (const auto& l : languages) tags.push_back(l.tag);
+    EXPECT_EQ(tags, (std::vector<std::string>{"en", "zh-TW", "zh-CN"}));
+    EXPECT_EQ(translate::recommended_table("zh-TW"), "zh-tw.ctb");
+    EXPECT_EQ(translate::recommended_table("zh-CN"), "zhcn-g1.ctb");
+    for (const auto& l : languages) EXPECT_FALSE(translate::recommended_table(l.tag).empty()) << l.tag;
+    ASSERT_EQ(languages.size(), 3u);
+    EXPECT_EQ(languages[1].name, "Chinese (Taiwan)");
+    EXPECT_EQ(translate::passage_languages("zh-TW")[1].name, "中文（台灣）");
+    EXPECT_EQ(translate::language_display_name("de-DE"), "German (Germany)");
+    EXPECT_EQ(translate::language_display_name(""), "");
+}

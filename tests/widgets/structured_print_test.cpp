@@ -5,6 +5,12 @@
 // the view read back gives the same document model; styles set from the
 // Styles menu change the model, keep the braille pane in step and undo.
 #include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialog>
+#include <QLabel>
+#include <QStatusBar>
+#include <QTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTextList>
@@ -280,6 +286,112 @@ private Q_SLOTS:
         w.findChild<QAction*>(QStringLiteral("viewShowCodes"))->setChecked(true);
         QVERIFY(print->toPlainText().startsWith(QLatin1Char('#')));
         QVERIFY(!w.findChild<QAction*>(QStringLiteral("formatHeading1"))->isEnabled());
+        QCOMPARE(e->text(), before);
+    }
+
+    // Styles > Language marks a passage as a word processor does (the
+    // selection, else the word at the cursor, or the whole paragraph): the
+    // model's span has the language, the braille of the passage comes from
+    // that language's table, the status bar names the language at the
+    // cursor, the change is said and is one step of undo; "document
+    // default" takes the mark away.
+    void a_passage_is_marked_in_a_language() {
+        MainWindow w;
+        QVERIFY(w.open_file_now(data("public/pandoc-headers.docx")));
+        auto* e = w.editor();
+        auto* print = e->print_pane();
+        const auto before = e->text();
+        const int body = first_paragraph(model_lines(*e));
+        QVERIFY(body >= 0);
+        const auto text = print->document()->findBlockByNumber(body).text();
+        const auto line = [e, body] { return model_lines(*e)[static_cast<std::size_t>(body)]; };
+        const auto braille_line = [e, body] { return e->braille_pane()->document()->findBlockByNumber(body).text(); };
+        const auto laid_out = [e, body] {
+            return QString::fromStdString(document::to_unicode_text(e->layout().braille_of(static_cast<std::size_t>(body))));
+        };
+        const auto spans = [e, body] { return e->layout().document().blocks[static_cast<std::size_t>(body)].spans; };
+        auto* status = w.statusBar()->findChild<QLabel*>(QStringLiteral("positionLabel"));
+        QVERIFY(status);
+        const auto braille_before = braille_line();
+
+        // The action, reached by its key, asks in a dialog that lists the
+        // languages of the tables (the catalogue's, none other).
+        auto* action = w.findChild<QAction*>(QStringLiteral("formatLanguage"));
+        QVERIFY(action && action->isEnabled());
+        QCOMPARE(action->shortcut(), QKeySequence(QStringLiteral("Ctrl+Alt+G")));
+        QStringList listed;
+        const auto choose = [&](const QString& tag, bool paragraph) {
+            QTimer::singleShot(50, [&, tag, paragraph] {
+                auto* dialog = w.findChild<QDialog*>(QStringLiteral("languageDialog"));
+                QVERIFY(dialog && dialog->isVisible());
+                auto* list = dialog->findChild<QComboBox*>(QStringLiteral("languageList"));
+                listed.clear();
+                for (int i = 0; i < list->count(); ++i) listed << list->itemData(i).toString();
+                list->setCurrentIndex(list->findData(tag));
+                dialog->findChild<QCheckBox*>(QStringLiteral("languageParagraph"))->setChecked(paragraph);
+                dialog->accept();
+            });
+            action->trigger();
+        };
+
+        // The first word selected, marked Chinese (Taiwan).
+        auto c = QTextCursor(print->document()->findBlockByNumber(body));
+        c.movePosition(QTextCursor::EndOfWord, QTextCursor::KeepAnchor);
+        const auto word = c.selectedText();
+        print->setTextCursor(c);
+        const int steps = e->undo_stack()->count();
+        QSignalSpy spoken(w.announcer(), &Announcer::announced);
+        choose(QStringLiteral("zh-TW"), false);
+        QCOMPARE(listed, (QStringList{QString(), QStringLiteral("en"), QStringLiteral("zh-TW"), QStringLiteral("zh-CN")}));
+        QVERIFY2(line() == "<span lang=\"zh-TW\">" + word.toStdString() + "</span>" + text.mid(word.size()).toStdString(),
+                 line().c_str());
+        QCOMPARE(spans().front().text, word.toStdString());
+        QCOMPARE(spans().front().language, std::string("zh-TW"));
+        QCOMPARE(spans().back().language, std::string());
+        // Its braille is the Chinese table's, as layout gives it.
+        QVERIFY(braille_line() != braille_before);
+        QCOMPARE(braille_line(), laid_out());
+        QVERIFY2(braille_line().contains(braille("zh-tw.ctb", word.toStdString())), qPrintable(braille_line()));
+        QCOMPARE(e->undo_stack()->count(), steps + 1);
+        QVERIFY(w.announcer()->message().contains(QStringLiteral("Language: Chinese (Taiwan)")));
+        QVERIFY(!spoken.isEmpty());
+        // At the cursor in the passage the status bar names its language, after it not.
+        c.setPosition(c.selectionStart() + 1);
+        print->setTextCursor(c);
+        QTRY_VERIFY2(status->text().endsWith(QStringLiteral(" | Language: Chinese (Taiwan)")), qPrintable(status->text()));
+        QCOMPARE(e->language_at_cursor(), QStringLiteral("zh-TW"));
+        print->moveCursor(QTextCursor::EndOfBlock);
+        QTRY_VERIFY2(!status->text().contains(QStringLiteral("Language")), qPrintable(status->text()));
+
+        // One undo takes it away, braille and all.
+        e->undo_stack()->undo();
+        QCOMPARE(QString::fromStdString(line()), text);
+        QCOMPARE(braille_line(), braille_before);
+
+        // No selection: the word the cursor is in (the second word).
+        c = QTextCursor(print->document()->findBlockByNumber(body));
+        c.movePosition(QTextCursor::NextWord);
+        c.movePosition(QTextCursor::NextCharacter);
+        print->setTextCursor(c);
+        auto second = c;
+        second.select(QTextCursor::WordUnderCursor);
+        e->set_language(QStringLiteral("zh-CN"));
+        QVERIFY2(line().find("<span lang=\"zh-CN\">" + second.selectedText().toStdString() + "</span>") != std::string::npos,
+                 line().c_str());
+        QCOMPARE(std::ranges::count_if(spans(), [](const document::Span& s) { return !s.language.empty(); }), 1);
+        QCOMPARE(braille_line(), laid_out());
+        e->undo_stack()->undo();
+
+        // The whole paragraph, then "document default" on it: no mark left.
+        print->setTextCursor(QTextCursor(print->document()->findBlockByNumber(body)));
+        choose(QStringLiteral("zh-TW"), true);
+        QCOMPARE(line(), "<span lang=\"zh-TW\">" + text.toStdString() + "</span>");
+        QCOMPARE(braille_line(), laid_out());
+        choose(QString(), true);
+        QCOMPARE(QString::fromStdString(line()), text);
+        QVERIFY(w.announcer()->message().contains(QStringLiteral("Language: document default")));
+        QCOMPARE(braille_line(), braille_before);
+        while (e->undo_stack()->canUndo()) e->undo_stack()->undo();
         QCOMPARE(e->text(), before);
     }
 
