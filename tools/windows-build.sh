@@ -14,7 +14,7 @@
 #   build/windows/package/tactus-<version>-win64.exe
 # Usage: tools/windows-build.sh tests [TARGET...]
 #   GoogleTest (Debian's googletest sources) into the prefix too, and the test
-#   executables in build/windows-tests (default: translate_tests layout_tests);
+#   executables in build/windows-tests (default: translate_tests layout_tests workers_tests);
 #   tools/windows-core-tests.sh runs them under Wine.
 # Environment: TACTUS_WINDOWS_DEPS (default build/windows-deps), JOBS (default 2).
 set -eu
@@ -109,10 +109,10 @@ if [ $tests = 1 ]; then
     step "Tactus configure (tests)"
     TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -B build/windows-tests -DTACTUS_WINDOWS_DEPS="$deps" \
         -DTACTUS_BUILD_TESTS=ON -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST \
-        -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan}" >/dev/null
+        -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan;workers}" >/dev/null
     step_done
     step "Tactus tests build"
-    if [ $# -eq 0 ]; then set -- translate_tests layout_tests; fi
+    if [ $# -eq 0 ]; then set -- translate_tests layout_tests workers_tests; fi
     nice -n 5 cmake --build build/windows-tests -j"$jobs" --target "$@"
     step_done
     exit 0
