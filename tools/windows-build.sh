@@ -15,7 +15,7 @@
 # Usage: tools/windows-build.sh tests [TARGET...]
 #   GoogleTest (Debian's googletest sources) into the prefix too, and the test
 #   executables in build/windows/tests (default: translate, layout, plan,
-#   edit, encode, estimate and motion tests);
+#   edit, encode, estimate, motion and workers tests);
 #   tools/windows-core-tests.sh runs them under Wine.
 # Environment: TACTUS_WINDOWS_DEPS (default build/windows-deps), JOBS (default 2).
 set -eu
@@ -112,10 +112,10 @@ if [ $tests = 1 ]; then
     step "Tactus configure (tests)"
     TACTUS_WINDOWS_DEPS="$deps" nice -n 5 cmake --preset windows -DTACTUS_WINDOWS_DEPS="$deps" \
         -DTACTUS_BUILD_TESTS=ON -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST \
-        -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan;edit;encode;estimate;motion}" >/dev/null
+        -DTACTUS_TEST_DIRS="${TACTUS_TEST_DIRS:-translate;layout;plan;edit;encode;estimate;motion;workers}" >/dev/null
     step_done
     step "Tactus tests build"
-    if [ $# -eq 0 ]; then set -- translate_tests layout_tests plan_tests edit_tests encode_tests estimate_tests motion_tests; fi
+    if [ $# -eq 0 ]; then set -- translate_tests layout_tests plan_tests edit_tests encode_tests estimate_tests motion_tests workers_tests; fi
     nice -n 5 cmake --build build/windows -j"$jobs" --target "$@"
     step_done
     exit 0

@@ -11,7 +11,9 @@
 #  3. its `--version` and, on every installed sample document, `layout --to brf` (BRF)
 #     and `plan` must be byte-identical to the Linux CLI's on the same files,
 #     and `emboss --device sim` of firmware-note.md must end with the same
-#     "embossed N passes" line;
+#     "embossed N passes" line; a document of 4893 blocks (Genesis to Numbers,
+#     bible-kjv) laid out with 1 and with 2 translation workers (on Windows,
+#     the installed program started again) must give the Linux BRF;
 #  4. `Uninstall.exe /S` removes the installed folder.
 # Usage: tools/windows-installer-check.sh [INSTALLER]
 #        (default: the one build/windows/package holds; tools/windows-build.sh package)
@@ -127,6 +129,25 @@ for cells in 12 27; do
         fail "Windows $what failed: $(tr -d '\r' <"$out/tables.err.windows")"
     same "$what" "$out/tables.$cells.linux" "$out/tables.$cells.windows"
 done
+# A document big enough for translation workers (4000 blocks or more): the
+# first four books of the King James Version (Debian's bible-kjv), 4893
+# verses. On Windows a worker is the installed tactus-cli.exe started again,
+# finding its tables beside itself: with 1 and with 2 workers, the Linux BRF.
+if command -v bible >/dev/null 2>&1; then
+    start=$(date +%s)
+    bible -f gen1:1-num36:13 >"$out/kjv.txt"
+    cp "$out/kjv.txt" "$WINEPREFIX/drive_c/kjv.txt"
+    "$linux" layout --to brf "$out/kjv.txt" >"$out/kjv.linux" 2>/dev/null || fail "Linux layout of kjv.txt failed"
+    for n in 1 2; do
+        "$wine" "$cli" layout --workers $n --to brf 'C:\kjv.txt' >"$out/kjv.$n.windows" 2>"$out/kjv.err.windows" ||
+            fail "Windows layout --workers $n of kjv.txt failed: $(tr -d '\r' <"$out/kjv.err.windows")"
+        same "layout --workers $n --to brf kjv.txt (Genesis to Numbers, $(wc -l <"$out/kjv.txt") verses)" \
+            "$out/kjv.linux" "$out/kjv.$n.windows"
+    done
+    say "translation workers: $(( $(date +%s) - start )) s"
+else
+    fail "no bible-kjv (apt-get install bible-kjv) for the translation workers' document"
+fi
 "$linux" emboss --device sim "$root/resources/samples/firmware-note.md" 2>&1 | grep '^embossed ' >"$out/emboss.linux" || true
 "$wine" "$cli" emboss --device sim 'C:\Tactus\samples\firmware-note.md' 2>&1 | tr -d '\r' | grep '^embossed ' >"$out/emboss.windows" || true
 [ -s "$out/emboss.linux" ] || fail "the Linux CLI printed no 'embossed' line"

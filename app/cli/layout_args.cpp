@@ -75,6 +75,11 @@ void LayoutArgs::add_to(CLI::App& cmd, bool with_interpoint) {
     cmd.add_option("--book-publisher", book.publisher, "With --volumes: the publisher (default: the document's)");
     cmd.add_option("--book-year", book.year, "With --volumes: the year (default: the document's date)");
     cmd.add_option("--transcriber", book.transcriber, "With --volumes: \"Transcribed by\" on the title page");
+    cmd.add_option("--workers", workers,
+                   "Translation processes for a big document: 0 picks by its size and the cores, 1 translates "
+                   "in this process (the pages are the same either way)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 64));
     cmd.add_option("--encoding", encoding,
                    "Text encoding override (e.g. UTF-8, Big5, GB18030, windows-1252); default: detect");
     cmd.add_option("--ruby", ruby,
@@ -100,6 +105,7 @@ pipeline::PipelineOptions LayoutArgs::pipeline_options() const {
     if (interpoint) o.layout.geometry.interpoint = true;
     if (single_sided) o.layout.geometry.interpoint = false;
     o.reflow_braille = reflow;
+    o.translation_workers = static_cast<unsigned>(workers);
     o.allow_empty = blank_page;
     if (cells > 0) o.layout.geometry.cells_per_line = cells;
     if (lines > 0) o.layout.geometry.lines_per_page = lines;

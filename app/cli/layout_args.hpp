@@ -36,6 +36,7 @@ struct LayoutArgs {
     bool eight_dot = false;
     bool no_print_pages = false;
     int indent = 2;
+    int workers = 0;  // translation processes (PipelineOptions::translation_workers)
     int margin_left = 0, margin_right = 0, margin_top = 0, margin_bottom = 0;
     // Book layout (pipeline/book_layout.hpp): --volumes and its rules.
     bool volumes = false;

@@ -3,9 +3,12 @@
 
 #include "command.hpp"
 #include "lpt_emulator.hpp"
+#include "pipeline/translation_workers.hpp"
 #include "platform/console.hpp"
 
 int main(int argc, char** argv) {
+    // Started again as a translation worker (Windows): that and nothing else.
+    if (const auto worker = tactus::pipeline::run_translation_worker(argc, argv)) return *worker;
     using namespace tactus::cli;
     tactus::platform::binary_standard_streams();  // the same bytes out on every system
     register_emulated_lpt();  // lpt:emu?fw=...: the firmware's pins in s51

@@ -14,6 +14,7 @@
 #include "announcer.hpp"
 #include "editor_widget.hpp"
 #include "main_window.hpp"
+#include "pipeline/translation_workers.hpp"
 #include "platform/termination.hpp"
 #include "preview_panel.hpp"
 #include "printer_panel.hpp"
@@ -34,6 +35,8 @@ bool wants_text_only(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Started again as a translation worker (Windows): that and nothing else, no window.
+    if (const auto worker = tactus::pipeline::run_translation_worker(argc, argv)) return *worker;
     if (wants_text_only(argc, argv)) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Tactus"));

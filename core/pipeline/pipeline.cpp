@@ -111,10 +111,10 @@ Result<layout::PagedDocument> lay_out_pages(const document::Document& document, 
     if (layout::is_ready_braille(document) && !options.reflow_braille)
         return layout::keep_braille_pages(document, options.layout);
     TACTUS_TRY(translator, translate::open_translator(options.tables, options.language_switch));
-    // The second language's tables are compiled once, here, not in every worker.
+    // The second language's tables are compiled once, here, not in every forked worker.
     if (const auto* sw = translator.language_switch()) TACTUS_TRY_VOID(sw->prepare(document));
     std::string first_book_warning;
-    // Forked workers translate a big document, for the book layout and the plain one alike.
+    // Worker processes translate a big document, for the book layout and the plain one alike.
     const unsigned workers = options.translation_workers != 0
                                  ? options.translation_workers
                                  : TranslationWorkers::suggested_workers(document);

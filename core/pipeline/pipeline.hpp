@@ -3,7 +3,7 @@
 // The front half of the pipeline in one call: import -> translate -> layout.
 // Translation (liblouis, one thread at a time) and layout run concurrently: a
 // translator thread hands finished blocks to the paginator on the caller's thread
-// through a bounded queue; a big document is translated by several forked
+// through a bounded queue; a big document is translated by several
 // worker processes instead (pipeline/translation_workers.hpp).
 #include <filesystem>
 #include <functional>

@@ -2,12 +2,16 @@
 #include "pipeline/translation_workers.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <thread>
 
-#include "translate/louis.hpp"
 #include "common/try.hpp"
+#include "pipeline/translation_job.hpp"
+#include "translate/language_switch.hpp"
+#include "translate/louis.hpp"
 
 namespace tactus::pipeline {
 namespace {
@@ -15,36 +19,100 @@ namespace {
 // Record header: cell count, or kErrorBit | length of the error (its kind, where, NUL, message).
 constexpr std::uint32_t kErrorBit = 0x8000'0000u;
 
-// The worker: translate my chunks, write one record per block; the exit status.
-int work(const document::Document& doc, const translate::Translator& translator, unsigned index,
-         unsigned workers, std::size_t chunk, platform::WorkerOutput& out,
-         const TranslationWorkers::WordRoom& word_room) {
-    const std::size_t n = doc.blocks.size();
-    for (std::size_t c = index; c * chunk < n; c += workers) {
-        for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) {
-            auto tb = translate::translate_block(doc.blocks[i], translator,
-                                      word_room ? word_room(doc.blocks[i]) : 0);
-            if (!tb) {
-                const auto e = located(tb.error(), doc.source_name);
-                const std::string msg = static_cast<char>(e.kind) + e.where + '\0' + e.message;
-                const std::uint32_t header = kErrorBit | static_cast<std::uint32_t>(msg.size());
-                out.write_all(&header, sizeof header);
-                out.write_all(msg.data(), msg.size());
-                return 1;
-            }
-            const bool label = tb->kind == document::BlockKind::print_page_break;
-            tb->breaks.resize(tb->cells.size(), translate::BreakBefore::never);
-            const auto& cells = label ? tb->label : tb->cells;
-            const auto header = static_cast<std::uint32_t>(cells.size());
-            static_assert(sizeof(document::Cell) == 1 && sizeof(translate::BreakBefore) == 1);
-            // The cells, then one break kind per cell (none for a page label).
-            if (!out.write_all(&header, sizeof header) ||
-                !out.write_all(cells.data(), cells.size()) ||
-                (!label && !out.write_all(tb->breaks.data(), cells.size())))
-                return 2;  // the reader is gone: nothing left to do
+// A worker's error record: its kind, where, NUL, message.
+void write_error(platform::WorkerOutput& out, const Error& e) {
+    const std::string msg = static_cast<char>(e.kind) + e.where + '\0' + e.message;
+    const std::uint32_t header = kErrorBit | static_cast<std::uint32_t>(msg.size());
+    out.write_all(&header, sizeof header);
+    out.write_all(msg.data(), msg.size());
+}
+
+// The blocks worker `index` of `workers` translates: chunks index, index + N, ...
+std::vector<std::size_t> share_of(std::size_t n, unsigned index, unsigned workers, std::size_t chunk) {
+    std::vector<std::size_t> share;
+    for (std::size_t c = index; c * chunk < n; c += workers)
+        for (std::size_t i = c * chunk; i < std::min(n, (c + 1) * chunk); ++i) share.push_back(i);
+    return share;
+}
+
+// The worker, however it was started: translate these blocks, write one
+// record per block; the exit status. `room(k)` is the word room of blocks[k].
+int work(std::span<const document::Block* const> blocks, const std::function<std::size_t(std::size_t)>& room,
+         const translate::Translator& translator, const std::string& source_name, platform::WorkerOutput& out) {
+    std::string record;
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+        auto tb = translate::translate_block(*blocks[k], translator, room(k));
+        if (!tb) {
+            write_error(out, located(tb.error(), source_name));
+            return 1;
         }
+        const bool label = tb->kind == document::BlockKind::print_page_break;
+        tb->breaks.resize(tb->cells.size(), translate::BreakBefore::never);
+        const auto& cells = label ? tb->label : tb->cells;
+        const auto header = static_cast<std::uint32_t>(cells.size());
+        static_assert(sizeof(document::Cell) == 1 && sizeof(translate::BreakBefore) == 1);
+        // The cells, then one break kind per cell (none for a page label), in
+        // one write: a pipe write costs a call into the system (under Wine, a
+        // round trip to its server) whatever its size.
+        record.assign(reinterpret_cast<const char*>(&header), sizeof header);
+        record.append(reinterpret_cast<const char*>(cells.data()), cells.size());
+        if (!label) record.append(reinterpret_cast<const char*>(tb->breaks.data()), cells.size());
+        if (!out.write_all(record.data(), record.size())) return 2;  // the reader is gone: nothing left to do
     }
     return 0;
+}
+
+// Where workers are copies (POSIX): each runs work() on the document in its memory.
+Result<void> start_copies(const document::Document& document, const translate::Translator& translator,
+                          unsigned workers, std::size_t chunk, const TranslationWorkers::WordRoom& word_room,
+                          std::vector<platform::WorkerProcess>& started) {
+    for (unsigned w = 0; w < workers; ++w) {
+        auto body = [&, w](platform::WorkerOutput& out) {
+            // The child's copy of the lock is held by this (its only) thread.
+            translate::louis::lock().unlock();
+            std::vector<const document::Block*> blocks;
+            for (const auto i : share_of(document.blocks.size(), w, workers, chunk))
+                blocks.push_back(&document.blocks[i]);
+            // The word room is worked out here, in the worker, as translation is.
+            const auto room = [&](std::size_t k) { return word_room ? word_room(*blocks[k]) : 0; };
+            return work(blocks, room, translator, document.source_name, out);
+        };
+        // No other thread may be inside liblouis while its memory is copied.
+        std::lock_guard guard(translate::louis::lock());
+        auto worker = platform::WorkerProcess::start(body, started);
+        if (!worker) return fail(ErrorKind::internal, "cannot start a translation worker: " + worker.error().what);
+        started.push_back(std::move(*worker));
+    }
+    return {};
+}
+
+// Where a worker is this program started again (Windows): each is sent its
+// job, which its main() hands to run_translation_worker().
+Result<void> start_programs(const document::Document& document, const translate::Translator& translator,
+                            unsigned workers, std::size_t chunk, const TranslationWorkers::WordRoom& word_room,
+                            std::vector<platform::WorkerProcess>& started) {
+    // Every worker first, so that they start up side by side while the jobs are written.
+    for (unsigned w = 0; w < workers; ++w) {
+        auto worker = platform::WorkerProcess::start_program();
+        if (!worker) return fail(ErrorKind::internal, "cannot start a translation worker: " + worker.error().what);
+        started.push_back(std::move(*worker));
+    }
+    TranslationJob job;
+    job.tables = translator.tables();
+    job.language.enabled = translator.language_switch() != nullptr;
+    if (const auto* sw = translator.language_switch()) job.language = sw->options();
+    job.source_name = document.source_name;
+    for (unsigned w = 0; w < workers; ++w) {
+        job.blocks.clear();
+        job.word_rooms.clear();
+        for (const auto i : share_of(document.blocks.size(), w, workers, chunk)) {
+            job.blocks.push_back(document.blocks[i]);
+            job.word_rooms.push_back(word_room ? word_room(document.blocks[i]) : 0);
+        }
+        if (auto sent = started[w].send_input(serialize(job)); !sent)
+            return fail(ErrorKind::internal, "cannot send a translation worker its blocks: " + sent.error().what);
+    }
+    return {};
 }
 
 }  // namespace
@@ -52,7 +120,8 @@ int work(const document::Document& doc, const translate::Translator& translator,
 bool TranslationWorkers::available() { return platform::WorkerProcess::supported(); }
 
 unsigned TranslationWorkers::suggested_workers(const document::Document& document) {
-    // Forking pays off only when translation takes a while: a few thousand blocks.
+    // Workers pay off only when translation takes a while (a few thousand
+    // blocks): on Windows each also compiles the table again.
     if (document.blocks.size() < 4000 || !available()) return 1;
     return std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
 }
@@ -63,19 +132,13 @@ Result<TranslationWorkers> TranslationWorkers::start(const document::Document& d
                                                      WordRoom word_room) {
     TranslationWorkers pool(document, std::max<std::size_t>(chunk_blocks, 1));
     workers = std::max(workers, 1u);
-    // Compile the table before forking, so no worker compiles it again.
+    // Compile the table first: a copied worker then does not compile it again,
+    // and a table that does not compile fails here, not in every worker.
     TACTUS_TRY_VOID(translator.translate(U"a"));
-    for (unsigned w = 0; w < workers; ++w) {
-        auto body = [&, w](platform::WorkerOutput& out) {
-            // The child's copy of the lock is held by this (its only) thread.
-            translate::louis::lock().unlock();
-            return work(document, translator, w, workers, pool.chunk_blocks_, out, word_room);
-        };
-        // No other thread may be inside liblouis while its memory is copied.
-        std::lock_guard guard(translate::louis::lock());
-        auto worker = platform::WorkerProcess::start(body, pool.workers_);
-        if (!worker) return fail(ErrorKind::internal, "cannot start a translation worker: " + worker.error().what);
-        pool.workers_.push_back(std::move(*worker));
+    if (platform::WorkerProcess::how() == platform::WorkerStart::copy) {
+        TACTUS_TRY_VOID(start_copies(document, translator, workers, pool.chunk_blocks_, word_room, pool.workers_));
+    } else {
+        TACTUS_TRY_VOID(start_programs(document, translator, workers, pool.chunk_blocks_, word_room, pool.workers_));
     }
     return pool;
 }
@@ -141,6 +204,34 @@ Result<std::optional<translate::TranslatedBlock>> TranslationWorkers::next() {
     else tb.cells = std::move(cells);
     tb.breaks = std::move(breaks);
     return std::optional<translate::TranslatedBlock>(std::move(tb));
+}
+
+
+std::optional<int> run_translation_worker(int argc, char** argv, const BeforeBlock& before_block) {
+    auto side = platform::WorkerProcess::worker_side(argc, argv);
+    if (!side) return std::nullopt;
+    if (!*side) {
+        std::fprintf(stderr, "tactus translation worker: %s\n", side->error().what.c_str());
+        return 70;
+    }
+    auto& out = (*side)->output;
+    auto job = parse_translation_job((*side)->input);
+    if (!job) {
+        write_error(out, job.error());
+        return 1;
+    }
+    auto translator = translate::open_translator(job->tables, job->language);
+    if (!translator) {
+        write_error(out, translator.error());
+        return 1;
+    }
+    std::vector<const document::Block*> blocks;
+    for (const auto& b : job->blocks) blocks.push_back(&b);
+    const auto room = [&](std::size_t k) {
+        if (before_block) before_block(job->blocks[k]);
+        return job->word_rooms[k];
+    };
+    return work(blocks, room, *translator, job->source_name, out);
 }
 
 }  // namespace tactus::pipeline

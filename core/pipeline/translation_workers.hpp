@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Parallel translation for big documents. liblouis cannot be called from two
-// threads (docs/translation.md), but it can run in two processes: the workers
-// are forked after the table is compiled, so each starts with the document and
-// the compiled table already in memory (copy-on-write) and has its own liblouis
-// globals. Worker w translates chunks w, w+N, w+2N, ... and streams the cells
-// back through a pipe; the caller reads the chunks in document order, so the
-// pipes' own buffers are the only look-ahead and memory stays bounded.
+// threads (docs/translation.md), but it can run in two processes, each with
+// its own liblouis globals. POSIX: the workers are forked after the table is
+// compiled, so each starts with the document and the compiled table already in
+// memory (copy-on-write). Windows: a worker is this program started again; it
+// reads its job (pipeline/translation_job.hpp: the tables, its blocks and
+// their word rooms) from a pipe and compiles the table itself. Worker w
+// translates chunks w, w+N, w+2N, ... and streams the cells back through a
+// pipe, in the same records on both systems; the caller reads the chunks in
+// document order, so the pipes' own buffers are the only look-ahead and
+// memory stays bounded.
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -52,5 +56,15 @@ private:
     std::vector<platform::WorkerProcess> workers_;
     std::size_t next_block_ = 0;
 };
+
+// Called with each block a worker started as a program is about to translate;
+// tests use it to make one crash.
+using BeforeBlock = std::function<void(const document::Block&)>;
+
+// Every main() that may start translation workers calls this before anything
+// else (tactus-cli, the app, the test executables): when this process was
+// started as a worker (platform::WorkerProcess::worker_side()), it translates
+// the job its pipe brings and returns the exit status; nullopt otherwise.
+std::optional<int> run_translation_worker(int argc, char** argv, const BeforeBlock& before_block = {});
 
 }  // namespace tactus::pipeline

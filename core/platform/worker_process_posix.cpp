@@ -11,10 +11,6 @@
 #include <utility>
 
 namespace tactus::platform {
-namespace {
-
-
-}  // namespace
 
 bool WorkerOutput::write_all(const void* data, std::size_t n) {
     const auto* p = static_cast<const char*>(data);
@@ -29,6 +25,20 @@ bool WorkerOutput::write_all(const void* data, std::size_t n) {
 }
 
 bool WorkerProcess::supported() { return true; }
+
+WorkerStart WorkerProcess::how() { return WorkerStart::copy; }
+
+// A POSIX worker is a copy (fork): the program is never started again as one.
+OsResult<WorkerProcess> WorkerProcess::start_program() {
+    return os_fail("a worker here is a copy of this process (fork), not the program started again",
+                   OsErrorKind::unsupported);
+}
+
+OsResult<void> WorkerProcess::send_input(std::string_view) {
+    return os_fail("a copied worker has no input pipe", OsErrorKind::unsupported);
+}
+
+std::optional<OsResult<WorkerSide>> WorkerProcess::worker_side(int, char**) { return std::nullopt; }
 
 OsResult<WorkerProcess> WorkerProcess::start(const std::function<int(WorkerOutput&)>& body,
                                              std::span<const WorkerProcess> siblings) {

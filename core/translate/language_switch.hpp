@@ -44,6 +44,7 @@ struct LanguageSwitchOptions {
     // English inside Chinese without a second_table: UEB grade "1" or "2".
     std::string english_grade = "1";
     SwitchIndicators indicators = SwitchIndicators::automatic;
+    bool operator==(const LanguageSwitchOptions&) const = default;
 };
 
 // Which table a print character goes to.
