@@ -463,7 +463,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="780" />
+        <location filename="../../widgets/editor_widget.cpp" line="818" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -483,53 +483,63 @@
         <translation>原書換頁，第 %1 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="138" />
+        <location filename="../../widgets/editor_widget.cpp" line="139" />
+        <source>Picture without a description</source>
+        <translation>沒有描述的圖片</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="139" />
+        <source>Picture: %1</source>
+        <translation>圖片：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="147" />
         <source>Heading level %1</source>
         <translation>標題層級 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="143" />
+        <location filename="../../widgets/editor_widget.cpp" line="152" />
         <source>List item %1</source>
         <translation>清單項目 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="144" />
-        <location filename="../../widgets/editor_widget.cpp" line="145" />
+        <location filename="../../widgets/editor_widget.cpp" line="153" />
+        <location filename="../../widgets/editor_widget.cpp" line="154" />
         <source>List item</source>
         <translation>清單項目</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="147" />
+        <location filename="../../widgets/editor_widget.cpp" line="156" />
         <source>Quotation</source>
         <translation>引文</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="149" />
+        <location filename="../../widgets/editor_widget.cpp" line="158" />
         <source>Note</source>
         <translation>註解</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="151" />
+        <location filename="../../widgets/editor_widget.cpp" line="160" />
         <source>Box</source>
         <translation>方框</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="153" />
+        <location filename="../../widgets/editor_widget.cpp" line="162" />
         <source>End of box</source>
         <translation>方框結束</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="170" />
+        <location filename="../../widgets/editor_widget.cpp" line="179" />
         <source>Table header row, %1 columns</source>
         <translation>表格標題列，%1 欄</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="171" />
+        <location filename="../../widgets/editor_widget.cpp" line="180" />
         <source>Table row %1 of %2</source>
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="776" />
+        <location filename="../../widgets/editor_widget.cpp" line="814" />
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -693,17 +703,17 @@
 <context>
     <name>tactus::gui::GraphicView</name>
     <message>
-        <location filename="../../widgets/document_loader.cpp" line="132" />
+        <location filename="../../widgets/document_loader.cpp" line="141" />
         <source>Graphic: %1.</source>
         <translation>圖形：%1。</translation>
     </message>
     <message>
-        <location filename="../../widgets/document_loader.cpp" line="136" />
+        <location filename="../../widgets/document_loader.cpp" line="145" />
         <source>Labels: %1.</source>
         <translation>標籤：%1。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/document_loader.cpp" line="139" />
+        <location filename="../../widgets/document_loader.cpp" line="148" />
         <source>%n dot(s).</source>
         <comment>on all the graphic's pages</comment>
         <translation><numerusform>%n 點。</numerusform></translation>
@@ -712,951 +722,1022 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="76" />
-        <location filename="../../widgets/main_window.cpp" line="694" />
-        <location filename="../../widgets/main_window.cpp" line="865" />
-        <location filename="../../widgets/main_window.cpp" line="919" />
-        <location filename="../../widgets/main_window.cpp" line="940" />
-        <location filename="../../widgets/main_window.cpp" line="995" />
-        <location filename="../../widgets/main_window.cpp" line="1013" />
+        <location filename="../../widgets/main_window.cpp" line="81" />
+        <location filename="../../widgets/main_window.cpp" line="781" />
+        <location filename="../../widgets/main_window.cpp" line="951" />
+        <location filename="../../widgets/main_window.cpp" line="1005" />
+        <location filename="../../widgets/main_window.cpp" line="1026" />
+        <location filename="../../widgets/main_window.cpp" line="1058" />
+        <location filename="../../widgets/main_window.cpp" line="1075" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="86" />
+        <location filename="../../widgets/main_window.cpp" line="91" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="93" />
+        <location filename="../../widgets/main_window.cpp" line="98" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="94" />
+        <location filename="../../widgets/main_window.cpp" line="99" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="95" />
+        <location filename="../../widgets/main_window.cpp" line="100" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="100" />
+        <location filename="../../widgets/main_window.cpp" line="105" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="132" />
+        <location filename="../../widgets/main_window.cpp" line="137" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="134" />
+        <location filename="../../widgets/main_window.cpp" line="139" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="135" />
+        <location filename="../../widgets/main_window.cpp" line="140" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="142" />
+        <location filename="../../widgets/main_window.cpp" line="147" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="147" />
+        <location filename="../../widgets/main_window.cpp" line="152" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="236" />
+        <location filename="../../widgets/main_window.cpp" line="242" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="239" />
+        <location filename="../../widgets/main_window.cpp" line="245" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="240" />
+        <location filename="../../widgets/main_window.cpp" line="246" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="244" />
+        <location filename="../../widgets/main_window.cpp" line="250" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="244" />
+        <location filename="../../widgets/main_window.cpp" line="250" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246" />
+        <location filename="../../widgets/main_window.cpp" line="252" />
         <source>Boo&amp;k Settings...</source>
         <translation>書籍設定(&amp;K)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="343" />
+        <location filename="../../widgets/main_window.cpp" line="356" />
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="248" />
-        <location filename="../../widgets/main_window.cpp" line="1020" />
+        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="1082" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="246" />
+        <location filename="../../widgets/main_window.cpp" line="252" />
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="248" />
+        <location filename="../../widgets/main_window.cpp" line="254" />
+        <source>&amp;Graphic...</source>
+        <translation>圖形(&amp;G)...</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="254" />
+        <source>Ctrl+Alt+G</source>
+        <translation>Ctrl+Alt+G</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="256" />
+        <source>Emboss Pictures as &amp;Graphics</source>
+        <translation>將圖片列印為觸覺圖形(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="256" />
+        <source>Ctrl+Shift+G</source>
+        <translation>Ctrl+Shift+G</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="261" />
         <source>Ctrl+Q</source>
         <translation>Ctrl+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
+        <location filename="../../widgets/main_window.cpp" line="262" />
         <source>&amp;Undo</source>
         <translation>復原(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="252" />
+        <location filename="../../widgets/main_window.cpp" line="265" />
         <source>&amp;Redo</source>
         <translation>重做(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="257" />
+        <location filename="../../widgets/main_window.cpp" line="270" />
         <source>Undone: %1</source>
         <translation>已復原：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="259" />
+        <location filename="../../widgets/main_window.cpp" line="272" />
         <source>Redone: %1</source>
         <translation>已重做：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="261" />
+        <location filename="../../widgets/main_window.cpp" line="274" />
         <source>&amp;Find and Replace...</source>
         <translation>尋找與取代(&amp;F)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="267" />
+        <location filename="../../widgets/main_window.cpp" line="280" />
         <source>Find &amp;Next</source>
         <translation>找下一個(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="269" />
+        <location filename="../../widgets/main_window.cpp" line="282" />
         <source>Go to &amp;print text</source>
         <translation>移到明眼字(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="269" />
+        <location filename="../../widgets/main_window.cpp" line="282" />
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="271" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Go to &amp;braille</source>
         <translation>移到點字(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="271" />
+        <location filename="../../widgets/main_window.cpp" line="284" />
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273" />
+        <location filename="../../widgets/main_window.cpp" line="286" />
         <source>Go to pre&amp;view</source>
         <translation>移到預覽(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="273" />
+        <location filename="../../widgets/main_window.cpp" line="286" />
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="278" />
+        <location filename="../../widgets/main_window.cpp" line="291" />
         <source>Choose braille &amp;table</source>
         <translation>選擇點字表(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="278" />
+        <location filename="../../widgets/main_window.cpp" line="291" />
         <source>Ctrl+T</source>
         <translation>Ctrl+T</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="282" />
+        <location filename="../../widgets/main_window.cpp" line="295" />
         <source>Go to &amp;motion</source>
         <translation>移到運動(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="282" />
+        <location filename="../../widgets/main_window.cpp" line="295" />
         <source>Ctrl+4</source>
         <translation>Ctrl+4</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="286" />
+        <location filename="../../widgets/main_window.cpp" line="299" />
         <source>Go to vibratio&amp;n</source>
         <translation>移到振動(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="286" />
+        <location filename="../../widgets/main_window.cpp" line="299" />
         <source>Ctrl+5</source>
         <translation>Ctrl+5</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="290" />
+        <location filename="../../widgets/main_window.cpp" line="303" />
         <source>Go to printer pro&amp;file</source>
         <translation>移到印表機設定檔(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="290" />
+        <location filename="../../widgets/main_window.cpp" line="303" />
         <source>Ctrl+6</source>
         <translation>Ctrl+6</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="307" />
         <source>Go to p&amp;rinter</source>
         <translation>前往印表機(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="294" />
+        <location filename="../../widgets/main_window.cpp" line="307" />
         <source>Ctrl+7</source>
         <translation>Ctrl+7</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="299" />
+        <location filename="../../widgets/main_window.cpp" line="312" />
         <source>&amp;Emboss</source>
         <translation>列印點字(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="299" />
+        <location filename="../../widgets/main_window.cpp" line="312" />
         <source>Ctrl+P</source>
         <translation>Ctrl+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="300" />
+        <location filename="../../widgets/main_window.cpp" line="313" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="300" />
+        <location filename="../../widgets/main_window.cpp" line="313" />
         <source>Ctrl+F1</source>
         <translation>Ctrl+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="302" />
+        <location filename="../../widgets/main_window.cpp" line="315" />
         <source>&amp;About Tactus</source>
         <translation>關於 Tactus(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="302" />
+        <location filename="../../widgets/main_window.cpp" line="315" />
         <source>Shift+F1</source>
         <translation>Shift+F1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="305" />
+        <location filename="../../widgets/main_window.cpp" line="318" />
         <source>Open the menu bar</source>
         <translation>開啟選單列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="323" />
+        <location filename="../../widgets/main_window.cpp" line="336" />
         <source>&amp;Body text</source>
         <translation>內文(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="323" />
+        <location filename="../../widgets/main_window.cpp" line="336" />
         <source>Ctrl+Alt+0</source>
         <translation>Ctrl+Alt+0</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="326" />
+        <location filename="../../widgets/main_window.cpp" line="339" />
         <source>Heading &amp;%1</source>
         <translation>標題 %1(&amp;%1)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="326" />
+        <location filename="../../widgets/main_window.cpp" line="339" />
         <source>Ctrl+Alt+%1</source>
         <translation>Ctrl+Alt+%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="328" />
+        <location filename="../../widgets/main_window.cpp" line="341" />
         <source>B&amp;ulleted list</source>
         <translation>項目符號清單(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="328" />
+        <location filename="../../widgets/main_window.cpp" line="341" />
         <source>Ctrl+Alt+L</source>
         <translation>Ctrl+Alt+L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330" />
+        <location filename="../../widgets/main_window.cpp" line="343" />
         <source>&amp;Numbered list</source>
         <translation>編號清單(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="330" />
+        <location filename="../../widgets/main_window.cpp" line="343" />
         <source>Ctrl+Alt+N</source>
         <translation>Ctrl+Alt+N</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="332" />
+        <location filename="../../widgets/main_window.cpp" line="345" />
         <source>&amp;Quotation</source>
         <translation>引文(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="332" />
+        <location filename="../../widgets/main_window.cpp" line="345" />
         <source>Ctrl+Alt+Q</source>
         <translation>Ctrl+Alt+Q</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="334" />
+        <location filename="../../widgets/main_window.cpp" line="347" />
         <source>&amp;Page break</source>
         <translation>分頁(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="334" />
+        <location filename="../../widgets/main_window.cpp" line="347" />
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="335" />
+        <location filename="../../widgets/main_window.cpp" line="348" />
         <source>Bol&amp;d</source>
         <translation>粗體(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="335" />
+        <location filename="../../widgets/main_window.cpp" line="348" />
         <source>Ctrl+B</source>
         <translation>Ctrl+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="350" />
         <source>&amp;Italic</source>
         <translation>斜體(&amp;I)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="337" />
+        <location filename="../../widgets/main_window.cpp" line="350" />
         <source>Ctrl+I</source>
         <translation>Ctrl+I</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="339" />
+        <location filename="../../widgets/main_window.cpp" line="352" />
         <source>Und&amp;erline</source>
         <translation>底線(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="339" />
+        <location filename="../../widgets/main_window.cpp" line="352" />
         <source>Ctrl+U</source>
         <translation>Ctrl+U</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
+        <location filename="../../widgets/main_window.cpp" line="354" />
         <source>&amp;Raised</source>
         <translation>上標(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="343" />
+        <location filename="../../widgets/main_window.cpp" line="356" />
         <source>&amp;Lowered</source>
         <translation>下標(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="345" />
+        <location filename="../../widgets/main_window.cpp" line="358" />
         <source>Bo&amp;x</source>
         <translation>方框(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="345" />
+        <location filename="../../widgets/main_window.cpp" line="358" />
         <source>Ctrl+Alt+X</source>
         <translation>Ctrl+Alt+X</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="359" />
         <source>No&amp;te</source>
         <translation>註解(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="348" />
+        <location filename="../../widgets/main_window.cpp" line="361" />
         <source>Note %1: type its text</source>
         <translation>註解 %1：請輸入內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="350" />
+        <location filename="../../widgets/main_window.cpp" line="363" />
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="353" />
+        <location filename="../../widgets/main_window.cpp" line="366" />
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="354" />
+        <location filename="../../widgets/main_window.cpp" line="367" />
         <source>Show the print text's Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="364" />
+        <location filename="../../widgets/main_window.cpp" line="377" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="366" />
+        <location filename="../../widgets/main_window.cpp" line="379" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="375" />
+        <location filename="../../widgets/main_window.cpp" line="388" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="380" />
+        <location filename="../../widgets/main_window.cpp" line="393" />
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="383" />
+        <location filename="../../widgets/main_window.cpp" line="398" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="392" />
+        <location filename="../../widgets/main_window.cpp" line="407" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="435" />
+        <location filename="../../widgets/main_window.cpp" line="452" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="442" />
+        <location filename="../../widgets/main_window.cpp" line="459" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="447" />
-        <location filename="../../widgets/main_window.cpp" line="626" />
+        <location filename="../../widgets/main_window.cpp" line="464" />
+        <location filename="../../widgets/main_window.cpp" line="713" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="457" />
+        <location filename="../../widgets/main_window.cpp" line="474" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459" />
+        <location filename="../../widgets/main_window.cpp" line="476" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="460" />
+        <location filename="../../widgets/main_window.cpp" line="477" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="463" />
+        <location filename="../../widgets/main_window.cpp" line="480" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="484" />
+        <location filename="../../widgets/main_window.cpp" line="495" />
+        <source>Pictures not embossed as graphics: %1</source>
+        <translation>圖片未列印為觸覺圖形：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="512" />
+        <source>Pictures are embossed as graphics, each after its description</source>
+        <translation>圖片將列印為觸覺圖形，各接在其描述之後</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="513" />
+        <source>Pictures are embossed as their descriptions only</source>
+        <translation>圖片只列印其描述</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="519" />
+        <location filename="../../widgets/main_window.cpp" line="524" />
+        <source>Insert graphic</source>
+        <translation>插入圖形</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="520" />
+        <source>Pictures (*.svg *.png *.jpg *.jpeg)</source>
+        <translation>圖片 (*.svg *.png *.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="525" />
+        <source>Description of %1 (what a reader who cannot see it needs to know):</source>
+        <translation>%1 的描述（看不見圖片的讀者需要知道的內容）：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="537" />
+        <source>Not inserted: %1 needs a description, which is what a braille reader reads of it</source>
+        <translation>未插入：%1 需要描述，點字讀者讀到的就是這段描述</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="546" />
+        <source>Cannot insert %1: %2</source>
+        <translation>無法插入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="550" />
+        <source>Cannot insert %1: only a document (not a text file or a graphic) holds pictures</source>
+        <translation>無法插入 %1：只有文件（不是純文字檔或圖形）能含有圖片</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="554" />
+        <source>Graphic %1 inserted: %2</source>
+        <translation>已插入圖形 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="571" />
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="486" />
+        <location filename="../../widgets/main_window.cpp" line="573" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="510" />
+        <location filename="../../widgets/main_window.cpp" line="597" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="511" />
+        <location filename="../../widgets/main_window.cpp" line="598" />
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="518" />
+        <location filename="../../widgets/main_window.cpp" line="605" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="533" />
+        <location filename="../../widgets/main_window.cpp" line="620" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="545" />
+        <location filename="../../widgets/main_window.cpp" line="632" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="575" />
+        <location filename="../../widgets/main_window.cpp" line="662" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="580" />
+        <location filename="../../widgets/main_window.cpp" line="667" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="581" />
+        <location filename="../../widgets/main_window.cpp" line="668" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="605" />
+        <location filename="../../widgets/main_window.cpp" line="692" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="608" />
+        <location filename="../../widgets/main_window.cpp" line="695" />
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="611" />
+        <location filename="../../widgets/main_window.cpp" line="698" />
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="620" />
+        <location filename="../../widgets/main_window.cpp" line="707" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="647" />
+        <location filename="../../widgets/main_window.cpp" line="734" />
         <source>Graphic %1 | %n sheet(s)</source>
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="655" />
+        <location filename="../../widgets/main_window.cpp" line="742" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="658" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="658" />
+        <location filename="../../widgets/main_window.cpp" line="745" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="669" />
-        <location filename="../../widgets/main_window.cpp" line="866" />
-        <location filename="../../widgets/main_window.cpp" line="877" />
-        <location filename="../../widgets/main_window.cpp" line="1070" />
+        <location filename="../../widgets/main_window.cpp" line="756" />
+        <location filename="../../widgets/main_window.cpp" line="952" />
+        <location filename="../../widgets/main_window.cpp" line="963" />
+        <location filename="../../widgets/main_window.cpp" line="1132" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="674" />
+        <location filename="../../widgets/main_window.cpp" line="761" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="704" />
+        <location filename="../../widgets/main_window.cpp" line="791" />
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="717" />
+        <location filename="../../widgets/main_window.cpp" line="804" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="770" />
+        <location filename="../../widgets/main_window.cpp" line="856" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="996" />
-        <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
-        <translation><numerusform>%1 含有 %n 張編輯器不保留的圖片。要取代它嗎？</numerusform></translation>
-    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="997" />
-        <source>Nothing has been saved. The editor shows each picture as its description, so saving over %1 keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As keeps it and writes the edited document beside it.</source>
-        <translation>尚未儲存任何內容。編輯器以描述文字呈現每張圖片，因此覆寫 %1 會保留描述、失去圖片。按「取消」保留檔案原狀；「另存新檔」會保留原檔，並把編輯後的文件存在旁邊。</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1001" />
+        <location filename="../../widgets/main_window.cpp" line="1063" />
         <source>Saving would lose pictures</source>
         <translation>儲存會失去圖片</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1003" />
-        <source>&amp;Replace</source>
-        <translation>取代(&amp;R)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1004" />
-        <source>Save over the file with the pictures' descriptions only</source>
-        <translation>覆寫檔案，只保留圖片的描述</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1006" />
-        <source>Not saved: %1 keeps its %n picture(s)</source>
-        <translation><numerusform>未儲存：%1 保留其 %n 張圖片</numerusform></translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1066" />
+        <location filename="../../widgets/main_window.cpp" line="1128" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="778" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="778" />
+        <location filename="../../widgets/main_window.cpp" line="864" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="780" />
+        <location filename="../../widgets/main_window.cpp" line="866" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="802" />
+        <location filename="../../widgets/main_window.cpp" line="888" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="811" />
+        <location filename="../../widgets/main_window.cpp" line="897" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="818" />
+        <location filename="../../widgets/main_window.cpp" line="904" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="819" />
+        <location filename="../../widgets/main_window.cpp" line="905" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="830" />
+        <location filename="../../widgets/main_window.cpp" line="916" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="865" />
+        <location filename="../../widgets/main_window.cpp" line="951" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1014" />
+        <location filename="../../widgets/main_window.cpp" line="1076" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1015" />
+        <location filename="../../widgets/main_window.cpp" line="1077" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1021" />
+        <location filename="../../widgets/main_window.cpp" line="1083" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="878" />
+        <location filename="../../widgets/main_window.cpp" line="964" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="892" />
+        <location filename="../../widgets/main_window.cpp" line="978" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="901" />
+        <location filename="../../widgets/main_window.cpp" line="987" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="901" />
+        <location filename="../../widgets/main_window.cpp" line="987" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="991" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1094" />
+        <location filename="../../widgets/main_window.cpp" line="1156" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="906" />
+        <location filename="../../widgets/main_window.cpp" line="992" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="911" />
+        <location filename="../../widgets/main_window.cpp" line="997" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="118" />
+        <location filename="../../widgets/main_window.cpp" line="123" />
         <source>The document cannot be laid out for this printer's page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="753" />
+        <location filename="../../widgets/main_window.cpp" line="840" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="935" />
+        <location filename="../../widgets/main_window.cpp" line="1021" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="936" />
+        <location filename="../../widgets/main_window.cpp" line="1022" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="943" />
+        <location filename="../../widgets/main_window.cpp" line="1029" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="945" />
+        <location filename="../../widgets/main_window.cpp" line="1031" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="946" />
+        <location filename="../../widgets/main_window.cpp" line="1032" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="947" />
-        <location filename="../../widgets/main_window.cpp" line="1005" />
+        <location filename="../../widgets/main_window.cpp" line="1033" />
+        <location filename="../../widgets/main_window.cpp" line="1067" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="948" />
+        <location filename="../../widgets/main_window.cpp" line="1034" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="922" />
+        <location filename="../../widgets/main_window.cpp" line="1008" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="924" />
+        <location filename="../../widgets/main_window.cpp" line="1010" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="926" />
+        <location filename="../../widgets/main_window.cpp" line="1012" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="925" />
+        <location filename="../../widgets/main_window.cpp" line="1011" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="926" />
+        <location filename="../../widgets/main_window.cpp" line="1012" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="928" />
+        <location filename="../../widgets/main_window.cpp" line="1014" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="638" />
+        <location filename="../../widgets/main_window.cpp" line="725" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="341" />
+        <location filename="../../widgets/main_window.cpp" line="354" />
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="359" />
         <source>Ctrl+Alt+E</source>
         <translation>Ctrl+Alt+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="639" />
+        <location filename="../../widgets/main_window.cpp" line="726" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1059" />
+        <source>%1 cannot keep %n of the document's pictures. Save anyway?</source>
+        <translation><numerusform>%1 無法保留文件中的 %n 張圖片。仍要儲存嗎？</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1086" />
+        <location filename="../../widgets/main_window.cpp" line="1060" />
+        <source>Nothing has been saved. In %1 each of these pictures would be its description only. Cancel saves nothing; a DOCX or ODT file keeps every picture.</source>
+        <translation>尚未儲存任何內容。在 %1 中，這些圖片都只會剩下描述文字。按「取消」不儲存任何內容；DOCX 或 ODT 檔會保留每張圖片。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1065" />
+        <source>&amp;Save Without Them</source>
+        <translation>不含圖片儲存(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1066" />
+        <source>Save with the pictures' descriptions only</source>
+        <translation>儲存時只保留圖片的描述</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1068" />
+        <source>Not saved: %1 cannot keep %n picture(s)</source>
+        <translation><numerusform>未儲存：%1 無法保留 %n 張圖片</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1148" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1162" />
+        <location filename="../../widgets/main_window.cpp" line="1224" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1195" />
-        <location filename="../../widgets/main_window.cpp" line="1204" />
+        <location filename="../../widgets/main_window.cpp" line="1257" />
+        <location filename="../../widgets/main_window.cpp" line="1266" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1228" />
+        <location filename="../../widgets/main_window.cpp" line="1290" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1233" />
+        <location filename="../../widgets/main_window.cpp" line="1295" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1246" />
+        <location filename="../../widgets/main_window.cpp" line="1308" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1250" />
+        <location filename="../../widgets/main_window.cpp" line="1312" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1252" />
+        <location filename="../../widgets/main_window.cpp" line="1314" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1252" />
+        <location filename="../../widgets/main_window.cpp" line="1314" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1281" />
+        <location filename="../../widgets/main_window.cpp" line="1343" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1281" />
+        <location filename="../../widgets/main_window.cpp" line="1343" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1282" />
+        <location filename="../../widgets/main_window.cpp" line="1344" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1282" />
+        <location filename="../../widgets/main_window.cpp" line="1344" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1283" />
+        <location filename="../../widgets/main_window.cpp" line="1345" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1283" />
+        <location filename="../../widgets/main_window.cpp" line="1345" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1284" />
+        <location filename="../../widgets/main_window.cpp" line="1346" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1284" />
+        <location filename="../../widgets/main_window.cpp" line="1346" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1285" />
+        <location filename="../../widgets/main_window.cpp" line="1347" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1285" />
+        <location filename="../../widgets/main_window.cpp" line="1347" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1286" />
+        <location filename="../../widgets/main_window.cpp" line="1348" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1286" />
+        <location filename="../../widgets/main_window.cpp" line="1348" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1300" />
+        <location filename="../../widgets/main_window.cpp" line="1362" />
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1305" />
+        <location filename="../../widgets/main_window.cpp" line="1367" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1306" />
+        <location filename="../../widgets/main_window.cpp" line="1368" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -3443,6 +3524,14 @@
         <location filename="../../widgets/vibration_view.cpp" line="207" />
         <source>OVER TOLERANCE</source>
         <translation>超出容許範圍</translation>
+    </message>
+</context>
+<context>
+    <name>tactus::gui::structured</name>
+    <message>
+        <location filename="../../widgets/structured_print.cpp" line="157" />
+        <source>Picture</source>
+        <translation>圖片</translation>
     </message>
 </context>
 </TS>
