@@ -842,6 +842,17 @@ bool MainWindow::save_to(const QString& path) {
         return false;
     }
     QString error;
+    // A Markdown file's pictures are files beside it: the ones it lacks are
+    // written first, so the file saved finds its pictures there.
+    const auto beside = edit::picture_files(editor_->layout().document(), std::filesystem::path(path.toStdString()));
+    for (const auto& f : beside) {
+        const auto file = QString::fromStdString(f.path.string());
+        QDir().mkpath(QFileInfo(file).absolutePath());
+        if (!write_atomically(file, QByteArray::fromStdString(f.bytes), &error)) {
+            report(error, true);
+            return false;
+        }
+    }
     if (!write_atomically(path, QByteArray::fromStdString(*bytes), &error)) {
         report(error, true);
         return false;
@@ -854,6 +865,8 @@ bool MainWindow::save_to(const QString& path) {
     update_title();
     // One message: what the format does not keep follows the file's name.
     auto said = tr("Saved %1").arg(QFileInfo(path).fileName());
+    if (!beside.empty())
+        said += QLatin1Char(' ') + tr("with %n picture file(s) beside it", nullptr, static_cast<int>(beside.size()));
     if (!warnings.empty()) said += QLatin1Char(' ') + QString::fromStdString(warnings.front());
     report(said);
     return true;
@@ -1048,8 +1061,9 @@ bool MainWindow::ask_before_saving(const Question& question, const QString& not_
 
 bool MainWindow::may_lose_pictures(const QString& path) {
     // The editor keeps the document's pictures (edit/editor_pictures.hpp): a
-    // DOCX or ODT writes them all, a Markdown file keeps those beside it; a
-    // text file keeps only their descriptions.
+    // DOCX or ODT writes them all, a Markdown file has them beside it (written
+    // with it, unless another file there has the name); a text file keeps
+    // only their descriptions.
     const auto lost = edit::pictures_lost(editor_->layout().document(), std::filesystem::path(path.toStdString()));
     if (lost == 0) return true;
     const auto name = QFileInfo(path).fileName();

@@ -162,7 +162,7 @@ private:
     // as UTF-8 (true) or not at all.
     bool may_save_as_utf8(const QString& path, const Error& why);
     // Before saving the document's pictures to a file that cannot keep them
-    // (a text file; a Markdown file without their files beside it): asks
+    // (a text file; a Markdown file where another file has a picture's name): asks
     // (refuses when not interactive), as nothing is lost unasked.
     bool may_lose_pictures(const QString& path);
     // Asks a question before saving (true: go on); with nobody to ask, or on

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <string_view>
 
+#include "common/file_io.hpp"
 #include "common/utf8.hpp"
 #include "edit/editor_lines.hpp"
 #include "export/document_save.hpp"
@@ -131,16 +132,53 @@ std::vector<std::string> render_with_picture_marks(
     return lines;
 }
 
+namespace {
+
+enum class Beside { there, missing, other, outside };
+
+// Whether the picture's file is beside `file` already, missing, a different
+// file, or would be outside its folder.
+Beside beside(const document::Image& image, const std::filesystem::path& file) {
+    const std::filesystem::path name(image.name);
+    if (name.empty() || name.is_absolute() ||
+        std::any_of(name.begin(), name.end(), [](const std::filesystem::path& part) { return part == ".."; }))
+        return Beside::outside;
+    const auto path = file.parent_path() / name;
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) return Beside::missing;
+    if (!std::filesystem::is_regular_file(path, error)) return Beside::other;
+    auto bytes = read_file(path);
+    return bytes && *bytes == image.bytes ? Beside::there : Beside::other;
+}
+
+}  // namespace
+
+std::vector<PictureFile> picture_files(const document::Document& document, const std::filesystem::path& file) {
+    std::vector<PictureFile> out;
+    const auto format = exporter::document_format_for(file);
+    if (format == exporter::DocumentFormat::docx || format == exporter::DocumentFormat::odt ||
+        dialect_for(file.filename().string()) != Dialect::markdown)
+        return out;
+    for (const auto& block : document.blocks)
+        for (const auto& image : block.images)
+            if (beside(image, file) == Beside::missing &&
+                std::none_of(out.begin(), out.end(), [&](const PictureFile& f) { return f.path == file.parent_path() / image.name; }))
+                out.push_back({file.parent_path() / image.name, image.bytes});
+    return out;
+}
+
 std::size_t pictures_lost(const document::Document& document, const std::filesystem::path& file) {
     const auto format = exporter::document_format_for(file);
     if (format == exporter::DocumentFormat::docx || format == exporter::DocumentFormat::odt) return 0;
     const bool markdown = dialect_for(file.filename().string()) == Dialect::markdown;
     std::size_t lost = 0;
     for (const auto& block : document.blocks)
-        for (const auto& image : block.images) {
-            std::error_code error;
-            if (!markdown || !std::filesystem::is_regular_file(file.parent_path() / image.name, error)) ++lost;
-        }
+        for (const auto& image : block.images)
+            if (!markdown) {
+                ++lost;
+            } else if (const auto b = beside(image, file); b == Beside::other || b == Beside::outside) {
+                ++lost;
+            }
     return lost;
 }
 

@@ -58,10 +58,24 @@ void fill_pictures(document::Block& block, const PictureStore& store, std::vecto
 std::vector<std::string> render_with_picture_marks(
     const document::Document& document, std::vector<std::string> (*write)(const document::Document&));
 
+// A picture file a Markdown file needs beside it: where, and its bytes.
+struct PictureFile {
+    std::filesystem::path path;
+    std::string bytes;
+};
+
+// The picture files a Markdown file named `file` needs beside it and lacks
+// (none for another format):
+// each picture by the name its mark gives, in the file's folder. Saving
+// writes them with the file, so it keeps every picture (a DOCX's, an
+// inserted one); a Markdown file's own are there already. A name that would
+// leave the folder is none of them (pictures_lost counts it).
+std::vector<PictureFile> picture_files(const document::Document& document, const std::filesystem::path& file);
+
 // The document's pictures a print file named `file` would not keep: a DOCX
-// or ODT keeps them all; a Markdown file those that are files beside it, as
-// its marks name them (a picture from a DOCX has no file there); a text
-// file none (it keeps their descriptions).
+// or ODT keeps them all, a Markdown file those it has or gets beside it
+// (picture_files; not one whose name a different file beside it holds
+// already), a text file none (it keeps their descriptions).
 std::size_t pictures_lost(const document::Document& document, const std::filesystem::path& file);
 
 }  // namespace tactus::edit

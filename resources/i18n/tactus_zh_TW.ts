@@ -724,11 +724,11 @@
     <message>
         <location filename="../../widgets/main_window.cpp" line="81" />
         <location filename="../../widgets/main_window.cpp" line="781" />
-        <location filename="../../widgets/main_window.cpp" line="951" />
-        <location filename="../../widgets/main_window.cpp" line="1005" />
-        <location filename="../../widgets/main_window.cpp" line="1026" />
-        <location filename="../../widgets/main_window.cpp" line="1058" />
-        <location filename="../../widgets/main_window.cpp" line="1075" />
+        <location filename="../../widgets/main_window.cpp" line="964" />
+        <location filename="../../widgets/main_window.cpp" line="1018" />
+        <location filename="../../widgets/main_window.cpp" line="1039" />
+        <location filename="../../widgets/main_window.cpp" line="1072" />
+        <location filename="../../widgets/main_window.cpp" line="1089" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
@@ -839,7 +839,7 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="261" />
-        <location filename="../../widgets/main_window.cpp" line="1082" />
+        <location filename="../../widgets/main_window.cpp" line="1096" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
@@ -1363,9 +1363,9 @@
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="756" />
-        <location filename="../../widgets/main_window.cpp" line="952" />
-        <location filename="../../widgets/main_window.cpp" line="963" />
-        <location filename="../../widgets/main_window.cpp" line="1132" />
+        <location filename="../../widgets/main_window.cpp" line="965" />
+        <location filename="../../widgets/main_window.cpp" line="976" />
+        <location filename="../../widgets/main_window.cpp" line="1146" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -1385,117 +1385,122 @@
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="856" />
+        <location filename="../../widgets/main_window.cpp" line="867" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="869" />
+        <source>with %n picture file(s) beside it</source>
+        <translation><numerusform>並在旁邊存入 %n 個圖片檔</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1063" />
+        <location filename="../../widgets/main_window.cpp" line="1077" />
         <source>Saving would lose pictures</source>
         <translation>儲存會失去圖片</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1128" />
+        <location filename="../../widgets/main_window.cpp" line="1142" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="864" />
+        <location filename="../../widgets/main_window.cpp" line="877" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="866" />
+        <location filename="../../widgets/main_window.cpp" line="879" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="888" />
+        <location filename="../../widgets/main_window.cpp" line="901" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="897" />
+        <location filename="../../widgets/main_window.cpp" line="910" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="904" />
+        <location filename="../../widgets/main_window.cpp" line="917" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="905" />
+        <location filename="../../widgets/main_window.cpp" line="918" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="916" />
+        <location filename="../../widgets/main_window.cpp" line="929" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="951" />
+        <location filename="../../widgets/main_window.cpp" line="964" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1076" />
+        <location filename="../../widgets/main_window.cpp" line="1090" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1077" />
+        <location filename="../../widgets/main_window.cpp" line="1091" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1083" />
+        <location filename="../../widgets/main_window.cpp" line="1097" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="964" />
+        <location filename="../../widgets/main_window.cpp" line="977" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="978" />
+        <location filename="../../widgets/main_window.cpp" line="991" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="987" />
+        <location filename="../../widgets/main_window.cpp" line="1000" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="987" />
+        <location filename="../../widgets/main_window.cpp" line="1000" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="991" />
+        <location filename="../../widgets/main_window.cpp" line="1004" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1156" />
+        <location filename="../../widgets/main_window.cpp" line="1170" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="992" />
+        <location filename="../../widgets/main_window.cpp" line="1005" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="997" />
+        <location filename="../../widgets/main_window.cpp" line="1010" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
@@ -1510,68 +1515,68 @@
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1021" />
+        <location filename="../../widgets/main_window.cpp" line="1034" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1022" />
+        <location filename="../../widgets/main_window.cpp" line="1035" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1029" />
+        <location filename="../../widgets/main_window.cpp" line="1042" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1031" />
+        <location filename="../../widgets/main_window.cpp" line="1044" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1032" />
+        <location filename="../../widgets/main_window.cpp" line="1045" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1033" />
-        <location filename="../../widgets/main_window.cpp" line="1067" />
+        <location filename="../../widgets/main_window.cpp" line="1046" />
+        <location filename="../../widgets/main_window.cpp" line="1081" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1034" />
+        <location filename="../../widgets/main_window.cpp" line="1047" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1008" />
+        <location filename="../../widgets/main_window.cpp" line="1021" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1010" />
+        <location filename="../../widgets/main_window.cpp" line="1023" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1012" />
+        <location filename="../../widgets/main_window.cpp" line="1025" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1011" />
+        <location filename="../../widgets/main_window.cpp" line="1024" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1012" />
+        <location filename="../../widgets/main_window.cpp" line="1025" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1014" />
+        <location filename="../../widgets/main_window.cpp" line="1027" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
@@ -1596,148 +1601,148 @@
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1059" />
+        <location filename="../../widgets/main_window.cpp" line="1073" />
         <source>%1 cannot keep %n of the document's pictures. Save anyway?</source>
         <translation><numerusform>%1 無法保留文件中的 %n 張圖片。仍要儲存嗎？</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1060" />
+        <location filename="../../widgets/main_window.cpp" line="1074" />
         <source>Nothing has been saved. In %1 each of these pictures would be its description only. Cancel saves nothing; a DOCX or ODT file keeps every picture.</source>
         <translation>尚未儲存任何內容。在 %1 中，這些圖片都只會剩下描述文字。按「取消」不儲存任何內容；DOCX 或 ODT 檔會保留每張圖片。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1065" />
+        <location filename="../../widgets/main_window.cpp" line="1079" />
         <source>&amp;Save Without Them</source>
         <translation>不含圖片儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1066" />
+        <location filename="../../widgets/main_window.cpp" line="1080" />
         <source>Save with the pictures' descriptions only</source>
         <translation>儲存時只保留圖片的描述</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1068" />
+        <location filename="../../widgets/main_window.cpp" line="1082" />
         <source>Not saved: %1 cannot keep %n picture(s)</source>
         <translation><numerusform>未儲存：%1 無法保留 %n 張圖片</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1148" />
+        <location filename="../../widgets/main_window.cpp" line="1162" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1224" />
+        <location filename="../../widgets/main_window.cpp" line="1238" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1257" />
-        <location filename="../../widgets/main_window.cpp" line="1266" />
+        <location filename="../../widgets/main_window.cpp" line="1271" />
+        <location filename="../../widgets/main_window.cpp" line="1280" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1290" />
+        <location filename="../../widgets/main_window.cpp" line="1304" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1295" />
+        <location filename="../../widgets/main_window.cpp" line="1309" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1308" />
+        <location filename="../../widgets/main_window.cpp" line="1322" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1312" />
+        <location filename="../../widgets/main_window.cpp" line="1326" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1314" />
+        <location filename="../../widgets/main_window.cpp" line="1328" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1314" />
+        <location filename="../../widgets/main_window.cpp" line="1328" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1343" />
+        <location filename="../../widgets/main_window.cpp" line="1357" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1343" />
+        <location filename="../../widgets/main_window.cpp" line="1357" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1344" />
+        <location filename="../../widgets/main_window.cpp" line="1358" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1344" />
+        <location filename="../../widgets/main_window.cpp" line="1358" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1345" />
+        <location filename="../../widgets/main_window.cpp" line="1359" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1345" />
+        <location filename="../../widgets/main_window.cpp" line="1359" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1346" />
+        <location filename="../../widgets/main_window.cpp" line="1360" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1346" />
+        <location filename="../../widgets/main_window.cpp" line="1360" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1347" />
+        <location filename="../../widgets/main_window.cpp" line="1361" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1347" />
+        <location filename="../../widgets/main_window.cpp" line="1361" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1348" />
+        <location filename="../../widgets/main_window.cpp" line="1362" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1348" />
+        <location filename="../../widgets/main_window.cpp" line="1362" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1362" />
+        <location filename="../../widgets/main_window.cpp" line="1376" />
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1367" />
+        <location filename="../../widgets/main_window.cpp" line="1381" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1368" />
+        <location filename="../../widgets/main_window.cpp" line="1382" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>

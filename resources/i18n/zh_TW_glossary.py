@@ -420,6 +420,7 @@ T = {
     "Cannot insert %1: %2": "無法插入 %1：%2",
     "Cannot insert %1: only a document (not a text file or a graphic) holds pictures": "無法插入 %1：只有文件（不是純文字檔或圖形）能含有圖片",
     "Graphic %1 inserted: %2": "已插入圖形 %1：%2",
+    "with %n picture file(s) beside it": "並在旁邊存入 %n 個圖片檔",
     "No&te": "註解(&T)", "Note %1: type its text": "註解 %1：請輸入內容",
     "&Raised": "上標(&R)", "&Lowered": "下標(&L)",
 }

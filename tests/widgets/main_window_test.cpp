@@ -651,6 +651,7 @@ private:
     static QStringList pictures_of(const QString& path) {
         import::ImportOptions options;
         options.images = true;
+        options.picture_marks = true;  // a Markdown image as the app reads it: its alt text its description
         const auto doc = import::import_file(path.toStdString(), options);
         if (!doc) return {QStringLiteral("unreadable")};
         QStringList out;
@@ -716,6 +717,14 @@ private Q_SLOTS:
             QVERIFY(again.open_file_now(path));
             QCOMPARE(picture_objects(again.editor()->print_pane()->document()), static_cast<int>(original.size()));
             QVERIFY(again.editor()->text().startsWith(QStringLiteral("Edited ")));
+            // Saved as Markdown in a folder of its own: the pictures are files beside it.
+            const QString folder = dir.filePath(QStringLiteral("md-") + QString::fromLatin1(name));
+            QVERIFY(QDir().mkpath(folder));
+            const auto md = folder + QStringLiteral("/saved.md");
+            QVERIFY(again.save_to(md));
+            QVERIFY2(again.announcer()->message().contains(QStringLiteral("picture file")), qPrintable(again.announcer()->message()));
+            QVERIFY(!QDir(folder).entryList({QStringLiteral("picture1.*")}).isEmpty());
+            QCOMPARE(pictures_of(md), original);
         }
     }
 
@@ -730,13 +739,25 @@ private Q_SLOTS:
         QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
         MainWindow w;
         QVERIFY(w.open_file_now(path));
-        for (const auto* target : {"lost-pictures.txt", "lost-pictures.md"}) {
-            const auto to = dir.filePath(QString::fromLatin1(target));
+        // A Markdown file where another file has a picture's name would name the wrong picture.
+        const QString taken = dir.filePath(QStringLiteral("taken"));
+        QVERIFY(QDir().mkpath(taken));
+        {
+            std::string first;  // the first picture's name, as its mark gives it
+            for (const auto& b : w.editor()->layout().document().blocks)
+                if (first.empty() && !b.images.empty()) first = b.images.front().name;
+            QVERIFY(!first.empty());
+            QFile other(taken + QLatin1Char('/') + QString::fromStdString(first));
+            QVERIFY(other.open(QIODevice::WriteOnly));
+            other.write("another picture");
+        }
+        for (const auto& to : {dir.filePath(QStringLiteral("lost-pictures.txt")), taken + QStringLiteral("/lost-pictures.md")}) {
+            const auto target = QFileInfo(to).fileName();
             QFile::remove(to);
             QVERIFY(!w.save_to(to));
             QVERIFY(!QFile::exists(to));
             const auto said = w.announcer()->message();
-            QVERIFY2(said.contains(QStringLiteral("picture")) && said.contains(QString::fromLatin1(target)), qPrintable(said));
+            QVERIFY2(said.contains(QStringLiteral("picture")) && said.contains(target), qPrintable(said));
         }
         const auto text = dir.filePath(QStringLiteral("lost-pictures.txt"));
         w.set_interactive(true);
@@ -805,6 +826,13 @@ private Q_SLOTS:
         QCOMPARE(picture_objects(print->document()), 0);
         w.editor()->undo_stack()->redo();
         QCOMPARE(images().size(), std::size_t{1});
+        // Saved as Markdown, the picture is a file beside it.
+        QVERIFY(w.save_to(path));
+        QCOMPARE(pictures_of(path).size(), 1);
+        QVERIFY(pictures_of(path).front().endsWith(QStringLiteral(": A circle, a square and a triangle")));
+        QFile beside(dir.filePath(QStringLiteral("shapes.svg")));
+        QVERIFY(beside.open(QIODevice::ReadOnly));
+        QVERIFY(beside.readAll().toStdString() == bytes);
         const auto docx = dir.filePath(QStringLiteral("inserted.docx"));
         QVERIFY(w.save_to(docx));
         const auto saved = pictures_of(docx);
