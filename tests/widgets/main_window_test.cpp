@@ -876,6 +876,22 @@ private Q_SLOTS:
         QCOMPARE(w.paged().pages.size(), cli->pages.size());
         QCOMPARE(graphic_pages(w.paged()), graphic_pages(*cli));
         QVERIFY(w.paged().pages.size() > described);
+        // And what tactus-cli layout --images graphics says of the same file.
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--images"), QStringLiteral("graphics"),
+                                             QStringLiteral("-t"), QString::fromStdString(o.tables),
+                                             QStringLiteral("--summary"), path});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        const auto summary = QString::fromUtf8(p.readAllStandardOutput());
+        const auto pages = QRegularExpression(QStringLiteral("pages: +(\\d+) braille pages")).match(summary);
+        const auto graphic = QRegularExpression(QStringLiteral("graphic: +(\\d+) dots on (\\d+) graphic page")).match(summary);
+        QVERIFY2(pages.hasMatch() && graphic.hasMatch(), qPrintable(summary));
+        std::size_t dots = 0;
+        for (const auto& page : w.paged().pages) dots += page.graphic.size();
+        QCOMPARE(w.paged().pages.size(), pages.captured(1).toULongLong());
+        QCOMPARE(static_cast<qulonglong>(graphic_pages(w.paged())), graphic.captured(2).toULongLong());
+        QCOMPARE(static_cast<qulonglong>(dots), graphic.captured(1).toULongLong());
         QCOMPARE(QSettings().value(QStringLiteral("layout/images")).toString(), QStringLiteral("graphics"));
         {
             MainWindow next;
