@@ -119,6 +119,10 @@ private:
     QString shown() const {
         auto text = pane()->toPlainText();
         if (blank_cells_as_spaces_) text.replace(QChar(0x2800), QLatin1Char(' '));
+        // A picture (an image object) is a space: its description is said when
+        // the cursor comes to its paragraph (EditorWidget::structure_text), and
+        // the bare object character is read as "object". Same length.
+        text.replace(QChar::ObjectReplacementCharacter, QLatin1Char(' '));
         return text;
     }
     int clamped(int offset) const { return std::clamp(offset, 0, characterCount()); }

@@ -94,7 +94,12 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
     if (const auto kind = graphic::drawing_kind(path.toStdString()); kind != graphic::DrawingKind::none)
         return load_drawing(path, kind, tables, options, machine, progress);
     if (edit::dialect_for(path.toStdString()) == edit::Dialect::text) return load_text(path, tables, options, progress);
-    auto doc = import::import_file(path.toStdString());
+    // With its pictures, each a mark in its line whose bytes the layout
+    // keeps (edit/editor_pictures.hpp), so saving writes them again.
+    import::ImportOptions import_options;
+    import_options.images = true;
+    import_options.picture_marks = true;
+    auto doc = import::import_file(path.toStdString(), import_options);
     if (!doc) {
         auto r = std::make_shared<LoadResult>();
         r->error = doc.error();
@@ -106,9 +111,13 @@ LoadResultPtr load(const QString& path, const std::string& tables, const layout:
         r->cancelled = true;
         return r;
     }
+    if (import::detect_source_format({}, path.toStdString()) != import::SourceFormat::markdown) edit::number_pictures(*doc);
+    edit::PictureStore pictures;
+    edit::store_pictures(*doc, pictures);
     // Ready-made braille's sections, volumes, grid and metadata go with its lines (core's one rule).
     auto r = build(edit::render_editor_lines(*doc, edit::Dialect::markdown), tables, options, edit::Dialect::markdown,
                    progress, edit::braille_structure(*doc));
+    if (r->layout) r->layout->set_pictures(std::move(pictures));
     // A Markdown file is saved in the encoding it was read in, with its line
     // end, as a text file is (edit::file_bytes); a DOCX, PEF or BRF has neither
     // and is saved as UTF-8 with LF.

@@ -132,6 +132,15 @@ QString EditorWidget::structure_text(int line) const {
     if (!structured() || !layout_) return {};
     const auto block = print_->document()->findBlockByNumber(line);
     if (!block.isValid()) return {};
+    // A picture shows no text a screen reader could read: its description is said.
+    QStringList said;
+    if (const auto kind = paragraph_text(block); !kind.isEmpty()) said << kind;
+    for (const auto& description : structured::picture_descriptions(block))
+        said << (description.isEmpty() ? tr("Picture without a description") : tr("Picture: %1").arg(description));
+    return said.join(QStringLiteral(". "));
+}
+
+QString EditorWidget::paragraph_text(const QTextBlock& block) const {
     using structured::Style;
     switch (structured::style_of(block)) {
         case Style::heading:
@@ -215,6 +224,7 @@ void EditorWidget::swap_layout(edit::LiveLayout layout) {
     if (layout_) {  // the same file
         layout.set_line_ending(layout_->line_ending());
         layout.set_encoding(layout_->encoding(), layout_->byte_order_mark());
+        layout.set_pictures(layout_->pictures());  // the lines' marks name them
     }
     layout_ = std::move(layout);
     refresh_braille();
@@ -264,7 +274,7 @@ void EditorWidget::show_lines(const QStringList& lines) {
         std::vector<std::string> model;
         model.reserve(static_cast<std::size_t>(lines.size()));
         for (const auto& l : lines) model.push_back(l.toStdString());
-        structured::render(print_->document(), model, print_->font());
+        structured::render(print_->document(), model, print_->font(), layout_ ? &layout_->pictures() : nullptr);
     } else {
         print_->document()->setPlainText(lines.join(QLatin1Char('\n')));
         // Codes are shown in the pane's own font, whatever the structured view set.
@@ -481,6 +491,34 @@ void EditorWidget::insert_page_break() {
     edit.setBlockFormat(bf);
     edit.setBlockCharFormat(structured::base_char_format(structured::Style::body, 0, print_->font()));
     edit.endEditBlock();
+}
+
+bool EditorWidget::insert_picture(document::Image image, const QString& description) {
+    if (!layout_ || layout_->dialect() != edit::Dialect::markdown || print_->isReadOnly()) return false;
+    const auto name = layout_->add_picture(std::move(image));
+    auto c = print_->textCursor();
+    if (c.hasSelection()) c.setPosition(c.selectionEnd());
+    c.beginEditBlock();
+    if (!structured()) {
+        // The codes view: the picture's mark, a line of its own.
+        c.movePosition(QTextCursor::EndOfBlock);
+        c.insertText(QStringLiteral("\n") + QString::fromStdString(edit::picture_mark(description.toStdString(), name)));
+        c.endEditBlock();
+        print_->setTextCursor(c);
+        return true;
+    }
+    using structured::Style;
+    const auto base = structured::base_char_format(Style::body, 0, print_->font());
+    if (!c.block().text().isEmpty() || structured::style_of(c.block()) != Style::body) {
+        c.movePosition(QTextCursor::EndOfBlock);
+        c.insertBlock(structured::block_format(Style::body, 0), base);
+        if (auto* list = c.block().textList()) list->remove(c.block());
+    }
+    structured::insert_picture(c, name, description.toStdString(), &layout_->pictures());
+    c.endEditBlock();
+    print_->setTextCursor(c);
+    print_->setCurrentCharFormat(base);
+    return true;
 }
 
 QString EditorWidget::insert_note() {

@@ -82,6 +82,11 @@ public:
     // cursor's paragraph, where the cursor goes to type it. One undo step.
     // Returns the reference, empty when nothing was inserted.
     QString insert_note();
+    // A picture as a paragraph of its own after the cursor's (in the cursor's
+    // paragraph when it is empty): kept in the layout's pictures, shown as
+    // itself, its description its transcriber's note (edit/editor_pictures.hpp).
+    // One undo step. False when the view cannot hold one (a text file).
+    bool insert_picture(document::Image image, const QString& description);
     [[nodiscard]] PrintPane* print_pane() const { return print_; }
     [[nodiscard]] BraillePane* braille_pane() const { return braille_; }
     [[nodiscard]] QUndoStack* undo_stack() const { return undo_; }
@@ -124,6 +129,8 @@ protected:
 private:
     void refresh_braille();
     void show_lines(const QStringList& lines);
+    // What a structured paragraph's kind is, in words (structure_text without its pictures).
+    [[nodiscard]] QString paragraph_text(const QTextBlock& block) const;
     // The editor line a print block stands for now.
     [[nodiscard]] std::string line_text(const QTextBlock& block) const;
     // A position in a print block <-> the braille cell it maps to on its line.

@@ -13,6 +13,8 @@
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
@@ -29,6 +31,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "announcer.hpp"
 #include "book_progress.hpp"
@@ -41,10 +44,12 @@
 #include "emboss_choice.hpp"
 #include "edit/braille_carrier.hpp"
 #include "edit/editor_lines.hpp"
+#include "edit/editor_pictures.hpp"
 #include "edit/print_word.hpp"
 #include "export/export.hpp"
 #include "export/text_export.hpp"
 #include "import/import.hpp"
+#include "import/picture_part.hpp"
 #include "layout/braille_pages.hpp"
 #include "profile/page_geometry.hpp"
 #include "find_replace.hpp"
@@ -179,6 +184,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    : QString{};
     });
     connect(editor_, &EditorWidget::layout_changed, this, [this, sp] {
+        lay_out_pictures();
         sp->set_document(book_->shown(&paged()));
         book_->schedule();
         update_status();
@@ -246,6 +252,13 @@ void MainWindow::build_actions() {
                        [this] { export_dialog(QStringLiteral("pef")); });
     book_settings_ = make(tr("Boo&k Settings..."), QKeySequence(tr("Ctrl+Shift+K")), QStringLiteral("fileBookSettings"),
                           [this] { book_settings(); });
+    insert_graphic_ = make(tr("&Graphic..."), QKeySequence(tr("Ctrl+Alt+I")), QStringLiteral("insertGraphic"),
+                           [this] { insert_graphic_dialog(); });
+    pictures_as_graphics_ = make(tr("Emboss Pictures as &Graphics"), QKeySequence(tr("Ctrl+Shift+G")),
+                                 QStringLiteral("filePicturesAsGraphics"), [this](bool on) {
+                                     set_picture_choice(on ? PictureChoice::graphics : PictureChoice::descriptions);
+                                 });
+    pictures_as_graphics_->setCheckable(true);
     quit_ = make(tr("&Quit"), QKeySequence(tr("Ctrl+Q")), QStringLiteral("fileQuit"), [this] { close(); });
     undo_ = editor_->undo_stack()->createUndoAction(this, tr("&Undo"));
     undo_->setShortcut(QKeySequence::Undo);
@@ -380,7 +393,7 @@ void MainWindow::build_menus() {
     file->addSeparator();
     file->addActions({save_, save_as_, export_brf_, export_pef_, preview_->pdf_action()});
     file->addSeparator();
-    file->addAction(book_settings_);
+    file->addActions({book_settings_, pictures_as_graphics_});
     if (emboss_) file->addAction(emboss_);
     file->addSeparator();
     file->addAction(quit_);
@@ -392,6 +405,8 @@ void MainWindow::build_menus() {
     auto* format = menuBar()->addMenu(tr("St&yles"));
     format->addActions(format_actions_);
     editor_->print_pane()->addActions(format_actions_);
+    format->addSeparator();
+    format->addAction(insert_graphic_);
     auto* view = menuBar()->addMenu(tr("&View"));
     view->addAction(show_codes_);
     view->addSeparator();
@@ -417,6 +432,8 @@ QList<QAction*> MainWindow::all_actions() const {
 void MainWindow::restore_settings() {
     QSettings s;
     book_->keep_options(load_book_rules(s));
+    picture_choice_ = picture_choice_named(s.value(QStringLiteral("layout/images")).toString());
+    pictures_as_graphics_->setChecked(picture_choice_ == PictureChoice::graphics);
     resize(1280, 800);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("previewDock"))}, {700}, Qt::Horizontal);
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
@@ -477,7 +494,77 @@ QString MainWindow::table_warning(const QString& detail) const {
 }
 
 const layout::PagedDocument& MainWindow::paged() const {
-    return graphic_ ? graphic_->paged : editor_->layout().paged();
+    if (graphic_) return graphic_->paged;
+    return pictured_ ? *pictured_ : editor_->layout().paged();
+}
+
+void MainWindow::lay_out_pictures() {
+    pictured_.reset();
+    if (picture_choice_ != PictureChoice::graphics || graphic_ || !editor_->has_layout()) return;
+    auto laid = lay_out_with_pictures(editor_->layout(), profile_->profile());
+    if (!laid) return;  // no picture: the editor's pages
+    if (!*laid) {
+        report(tr("Pictures not embossed as graphics: %1").arg(QString::fromStdString(laid->error().to_string())), true);
+        return;
+    }
+    pictured_ = std::move(**laid);
+}
+
+void MainWindow::set_picture_choice(PictureChoice choice) {
+    picture_choice_ = choice;
+    QSettings().setValue(QStringLiteral("layout/images"), picture_choice_name(choice));
+    if (pictures_as_graphics_) {
+        const QSignalBlocker quiet(pictures_as_graphics_);
+        pictures_as_graphics_->setChecked(choice == PictureChoice::graphics);
+    }
+    lay_out_pictures();
+    preview_->preview()->set_document(book_->shown(&paged()));
+    update_status();
+    schedule_plan();
+    report(choice == PictureChoice::graphics ? tr("Pictures are embossed as graphics, each after its description")
+                                             : tr("Pictures are embossed as their descriptions only"));
+}
+
+void MainWindow::insert_graphic_dialog() {
+    if (graphic_) return;
+    FocusReturn back(this, editor_->print_pane());
+    const auto path = QFileDialog::getOpenFileName(this, tr("Insert graphic"), {},
+                                                   tr("Pictures (*.svg *.png *.jpg *.jpeg)"));
+    if (path.isEmpty()) return;
+    bool ok = false;
+    const auto description =
+        QInputDialog::getText(this, tr("Insert graphic"),
+                              tr("Description of %1 (what a reader who cannot see it needs to know):")
+                                  .arg(QFileInfo(path).fileName()),
+                              QLineEdit::Normal, {}, &ok);
+    if (!ok) return;
+    insert_graphic(path, description);
+}
+
+bool MainWindow::insert_graphic(const QString& path, const QString& description) {
+    const QFileInfo info(path);
+    const auto text = description.simplified();
+    // A picture's description is what the braille reader gets of it: it is required.
+    if (text.isEmpty()) {
+        report(tr("Not inserted: %1 needs a description, which is what a braille reader reads of it")
+                   .arg(info.fileName()),
+               true);
+        return false;
+    }
+    // The importers' rule for a picture a document names: PNG, JPEG or SVG.
+    std::string why;
+    auto image = import::detail::picture_file(info.absolutePath().toStdString(), info.fileName().toStdString(), why);
+    if (!image) {
+        report(tr("Cannot insert %1: %2").arg(info.fileName(), QString::fromStdString(why)), true);
+        return false;
+    }
+    if (graphic_ || !editor_->insert_picture(std::move(*image), text)) {
+        report(tr("Cannot insert %1: only a document (not a text file or a graphic) holds pictures").arg(info.fileName()),
+               true);
+        return false;
+    }
+    report(tr("Graphic %1 inserted: %2").arg(info.fileName(), text));
+    return true;
 }
 
 void MainWindow::show_graphic(std::optional<GraphicView> graphic, const QString& path) {
@@ -749,7 +836,7 @@ QByteArray MainWindow::file_bytes(const QString& file_name) const {
 
 bool MainWindow::save_to(const QString& path) {
     if (refuse_saving_graphic()) return false;
-    if (!may_replace_pictures(path)) return false;
+    if (!may_lose_pictures(path)) return false;
     // In the file's format and, for a text file, its own encoding (core's writer).
     std::vector<std::string> lines;
     for (const auto& line : editor_->text().split(QLatin1Char('\n'))) lines.push_back(line.toStdString());
@@ -771,12 +858,22 @@ bool MainWindow::save_to(const QString& path) {
         return false;
     }
     QString error;
+    // A Markdown file's pictures are files beside it: the ones it lacks are
+    // written first, so the file saved finds its pictures there.
+    const auto beside = edit::picture_files(editor_->layout().document(), std::filesystem::path(path.toStdString()));
+    for (const auto& f : beside) {
+        const auto file = QString::fromStdString(f.path.string());
+        QDir().mkpath(QFileInfo(file).absolutePath());
+        if (!write_atomically(file, QByteArray::fromStdString(f.bytes), &error)) {
+            report(error, true);
+            return false;
+        }
+    }
     if (!write_atomically(path, QByteArray::fromStdString(*bytes), &error)) {
         report(error, true);
         return false;
     }
     path_ = QFileInfo(path).absoluteFilePath();
-    written_ = {path_, QFileInfo(path).lastModified()};
     source_name_ = QFileInfo(path).fileName();
     editor_->undo_stack()->setClean();
     autosave_.remove();
@@ -784,6 +881,8 @@ bool MainWindow::save_to(const QString& path) {
     update_title();
     // One message: what the format does not keep follows the file's name.
     auto said = tr("Saved %1").arg(QFileInfo(path).fileName());
+    if (!beside.empty())
+        said += QLatin1Char(' ') + tr("with %n picture file(s) beside it", nullptr, static_cast<int>(beside.size()));
     if (!warnings.empty()) said += QLatin1Char(' ') + QString::fromStdString(warnings.front());
     report(said);
     return true;
@@ -976,50 +1075,27 @@ bool MainWindow::ask_before_saving(const Question& question, const QString& not_
     return false;
 }
 
-namespace {
-
-// The pictures a file about to be replaced holds: the editor's lines hold
-// none (a picture is its description), so saving over such a file loses them.
-// Only the formats that keep pictures; a file that cannot be read has none
-// to lose here (the save itself says what is wrong).
-std::size_t pictures_in(const QString& path) {
-    const QFileInfo info(path);
-    static const QStringList holding = {QStringLiteral("docx"), QStringLiteral("odt"), QStringLiteral("md"),
-                                        QStringLiteral("markdown")};
-    if (!info.isFile() || !holding.contains(info.suffix().toLower())) return 0;
-    import::ImportOptions options;
-    options.images = true;
-    const auto doc = import::import_file(path.toStdString(), options);
-    if (!doc) return 0;
-    std::size_t n = 0;
-    for (const auto& block : doc->blocks) n += block.images.size();
-    return n;
-}
-
-}  // namespace
-
-bool MainWindow::may_replace_pictures(const QString& path) {
-    // A file this window wrote and nobody changed since holds no picture (the
-    // editor writes none): not read again at every save.
-    const QFileInfo info(path);
-    if (info.absoluteFilePath() == written_.path && info.lastModified() == written_.at) return true;
-    const auto pictures = pictures_in(path);
-    if (pictures == 0) return true;
-    const auto name = info.fileName();
-    const auto n = static_cast<int>(pictures);
+bool MainWindow::may_lose_pictures(const QString& path) {
+    // The editor keeps the document's pictures (edit/editor_pictures.hpp): a
+    // DOCX or ODT writes them all, a Markdown file has them beside it (written
+    // with it, unless another file there has the name); a text file keeps
+    // only their descriptions.
+    const auto lost = edit::pictures_lost(editor_->layout().document(), std::filesystem::path(path.toStdString()));
+    if (lost == 0) return true;
+    const auto name = QFileInfo(path).fileName();
+    const auto n = static_cast<int>(lost);
     return ask_before_saving(
         {.title = tr("Tactus"),
-         .text = tr("%1 holds %n picture(s) that the editor does not keep. Replace it?", nullptr, n).arg(name),
-         .detail = tr("Nothing has been saved. The editor shows each picture as its description, so saving over %1 "
-                      "keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As "
-                      "keeps it and writes the edited document beside it.")
+         .text = tr("%1 cannot keep %n of the document's pictures. Save anyway?", nullptr, n).arg(name),
+         .detail = tr("Nothing has been saved. In %1 each of these pictures would be its description only. "
+                      "Cancel saves nothing; a DOCX or ODT file keeps every picture.")
                        .arg(name),
          .accessible_name = tr("Saving would lose pictures"),
          .object_name = QStringLiteral("picturesQuestion"),
-         .go = {tr("&Replace"), QStringLiteral("replacePicturesButton"),
-                tr("Save over the file with the pictures' descriptions only")},
+         .go = {tr("&Save Without Them"), QStringLiteral("replacePicturesButton"),
+                tr("Save with the pictures' descriptions only")},
          .stay = {{}, {}, tr("Save nothing")}},  // the standard Cancel
-        tr("Not saved: %1 keeps its %n picture(s)", nullptr, n).arg(name));
+        tr("Not saved: %1 cannot keep %n picture(s)", nullptr, n).arg(name));
 }
 
 bool MainWindow::may_stop_embossing() {

@@ -14,6 +14,7 @@
 #include "autosave.hpp"
 #include "document_loader.hpp"
 #include "motion_model.hpp"
+#include "picture_pages.hpp"
 #include "pipeline/book_layout.hpp"
 
 class QDockWidget;
@@ -57,10 +58,20 @@ public:
     bool export_to(const QString& path);  // .brf, .pef (by extension)
     bool print_pdf_to(const QString& path);
     void set_table(const QString& table);
+    // Styles > Graphic: the picture file (.svg, .png, .jpg) as a paragraph
+    // after the cursor's, with its description (required); announced. False,
+    // with a message, when it cannot be.
+    bool insert_graphic(const QString& path, const QString& description);
+    // File > Emboss Pictures as Graphics: the document's pictures as graphic
+    // pages (as `tactus-cli layout --images graphics`), or their descriptions
+    // only; kept as a setting.
+    void set_picture_choice(PictureChoice choice);
+    [[nodiscard]] PictureChoice picture_choice() const { return picture_choice_; }
 
     [[nodiscard]] EditorWidget* editor() const { return editor_; }
     // The pages shown, exported, planned and embossed: the open graphic's,
-    // else the editor's document laid out.
+    // else the editor's document laid out (with its pictures' graphic pages
+    // when they are embossed as graphics).
     [[nodiscard]] const layout::PagedDocument& paged() const;
     // The open drawing (File > Open of an .svg, .png, .jpg), or null.
     [[nodiscard]] const GraphicView* graphic() const { return graphic_ ? &*graphic_ : nullptr; }
@@ -150,9 +161,10 @@ private:
     // A character the text file's encoding cannot hold: asks whether to save
     // as UTF-8 (true) or not at all.
     bool may_save_as_utf8(const QString& path, const Error& why);
-    // Before saving over a file whose pictures the editor does not hold: asks
+    // Before saving the document's pictures to a file that cannot keep them
+    // (a text file; a Markdown file where another file has a picture's name): asks
     // (refuses when not interactive), as nothing is lost unasked.
-    bool may_replace_pictures(const QString& path);
+    bool may_lose_pictures(const QString& path);
     // Asks a question before saving (true: go on); with nobody to ask, or on
     // the answer that stays, nothing is saved and the window says why.
     bool ask_before_saving(const Question& question, const QString& not_saved);
@@ -182,11 +194,6 @@ private:
     std::optional<GraphicView> graphic_;
     QString graphic_path_;
     bool interactive_ = false;
-    // The file last saved by this window, as it was then (may_replace_pictures).
-    struct Written {
-        QString path;
-        QDateTime at;
-    } written_;
     bool pages_kept_ = false;  // the layout kept ready-made braille's own pages when it last changed
     // Says so when an edit makes ready-made braille be laid out again (its own
     // pages, sections and volumes no longer kept), and when they are kept again.
@@ -211,6 +218,14 @@ private:
     // The Styles menu's styles and emphasis, and View's "Show codes".
     QList<QAction*> format_actions_;
     QAction* show_codes_ = nullptr;
+    QAction* insert_graphic_ = nullptr;
+    QAction* pictures_as_graphics_ = nullptr;
+    PictureChoice picture_choice_ = PictureChoice::descriptions;
+    // The document laid out with its pictures as graphic pages (picture_choice_
+    // graphics and the document holds pictures), else nothing.
+    std::optional<layout::PagedDocument> pictured_;
+    void lay_out_pictures();
+    void insert_graphic_dialog();
     void build_format_actions();
     QAction *undo_, *redo_, *find_action_, *find_next_, *focus_print_, *focus_braille_, *focus_preview_,
         *focus_table_, *shortcuts_, *about_, *menus_ = nullptr;

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "structured_print.hpp"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
+#include <QImage>
+#include <QPainter>
 #include <QTextCursor>
 #include <QTextDocument>
+#include <QTextImageFormat>
 #include <QTextList>
+#include <QUrl>
 #include <algorithm>
 #include <optional>
 
@@ -81,14 +86,35 @@ void append(std::vector<Span>& spans, Span s) {
     spans.push_back(std::move(s));
 }
 
-// The block's text as spans; with `cells`, split into one list per table cell.
-std::vector<std::vector<Span>> spans_of(const QTextBlock& block, bool cells) {
+// The block's text as spans; with `cells`, split into one list per table
+// cell. A picture is its description, a transcriber's note, and its name in
+// `images` (one list per cell), as a picture's mark reads (edit/editor_pictures.hpp).
+std::vector<std::vector<Span>> spans_of(const QTextBlock& block, bool cells,
+                                        std::vector<std::vector<document::Image>>* images = nullptr) {
     std::vector<std::vector<Span>> out(1);
+    std::vector<std::vector<document::Image>> pictures(1);
     for (auto it = block.begin(); !it.atEnd(); ++it) {
         const auto frag = it.fragment();
         if (!frag.isValid()) continue;
         const auto text = frag.text();
         const auto format = frag.charFormat();
+        if (format.hasProperty(kPicture)) {
+            for (const auto ch : text) {
+                if (ch == QChar::ObjectReplacementCharacter) {
+                    Span note{format.stringProperty(kPictureDescription).toStdString()};
+                    note.transcriber_note = true;
+                    if (!note.text.empty()) out.back().push_back(std::move(note));
+                    pictures.back().push_back(document::Image{.bytes = {}, .media_type = {},
+                                                              .name = format.stringProperty(kPicture).toStdString()});
+                } else {
+                    // Text typed with the picture's format: text.
+                    auto plain = format;
+                    plain.clearProperty(kPicture);
+                    append(out.back(), span_of(QString(ch), plain));
+                }
+            }
+            continue;
+        }
         qsizetype from = 0;
         for (qsizetype i = 0; i <= text.size(); ++i) {
             const bool end = i == text.size();
@@ -99,15 +125,55 @@ std::vector<std::vector<Span>> spans_of(const QTextBlock& block, bool cells) {
             // break typed with Shift+Enter has no block of its own).
             if (!end && text[i] == QChar::LineSeparator)
                 append(out.back(), span_of(cells ? QStringLiteral("\n") : QStringLiteral(" "), format));
-            else if (!end) out.emplace_back();
+            else if (!end) {
+                out.emplace_back();
+                pictures.emplace_back();
+            }
             from = i + 1;
         }
     }
+    if (images) *images = std::move(pictures);
     return out;
 }
 
-void insert_spans(QTextCursor& c, const std::vector<Span>& spans, const QTextCharFormat& base) {
-    for (const auto& s : spans) c.insertText(qs(s.text), span_format(s, base));
+// What a picture is shown as: itself, at most kPictureWidth wide; or, when
+// there is none to draw, a framed box with its description.
+QImage picture_image(const document::Image* image, const QString& description, const QFont& font) {
+    QImage shown;
+    if (image)
+        shown.loadFromData(QByteArray::fromStdString(image->bytes), image->media_type == "image/svg+xml" ? "SVG" : nullptr);
+    if (!shown.isNull()) {
+        if (shown.width() > kPictureWidth) shown = shown.scaledToWidth(kPictureWidth, Qt::SmoothTransformation);
+        return shown;
+    }
+    QImage box(kPictureWidth, kPictureWidth / 2, QImage::Format_ARGB32);
+    box.fill(Qt::white);
+    QPainter p(&box);
+    p.setPen(QPen(Qt::darkGray, 2));
+    p.drawRect(box.rect().adjusted(1, 1, -2, -2));
+    p.setFont(font);
+    p.setPen(Qt::black);
+    p.drawText(box.rect().adjusted(6, 6, -6, -6), Qt::AlignCenter | Qt::TextWordWrap,
+               description.isEmpty() ? QCoreApplication::translate("tactus::gui::structured", "Picture") : description);
+    return box;
+}
+
+void insert_spans(QTextCursor& c, const std::vector<Span>& spans, const QTextCharFormat& base,
+                  const std::vector<document::Image>& images = {}, const edit::PictureStore* pictures = nullptr,
+                  bool cell = false) {
+    std::size_t next = 0;
+    for (const auto& s : spans) {
+        if (s.transcriber_note && next < images.size()) {
+            insert_picture(c, images[next++].name, s.text, pictures);
+            continue;
+        }
+        // A cell's paragraphs are apart by "\n", which insertText would make a
+        // block of its own: one line is one block, so they are shown as line
+        // breaks inside the row's block.
+        c.insertText(cell ? qs(s.text).replace(QLatin1Char('\n'), QChar::LineSeparator) : qs(s.text),
+                     span_format(s, base));
+    }
+    for (; next < images.size(); ++next) insert_picture(c, images[next].name, {}, pictures);
 }
 
 // A list item's number or bullet, taken off its text (the QTextList shows it).
@@ -252,7 +318,38 @@ Style style_of(const QTextBlock& block) {
     return f.hasProperty(kStyle) ? static_cast<Style>(f.intProperty(kStyle)) : Style::body;
 }
 
-void render(QTextDocument* doc, std::span<const std::string> lines, const QFont& base) {
+void insert_picture(QTextCursor& cursor, const std::string& name, const std::string& description,
+                    const edit::PictureStore* pictures) {
+    const document::Image* image = nullptr;
+    if (pictures)
+        if (const auto it = pictures->find(name); it != pictures->end()) image = &it->second;
+    const auto text = qs(description);
+    const auto shown = picture_image(image, text, cursor.document()->defaultFont());
+    const QString url = QStringLiteral("tactus-picture:") + qs(name);
+    cursor.document()->addResource(QTextDocument::ImageResource, QUrl(url), shown);
+    QTextImageFormat f;
+    f.setName(url);
+    f.setWidth(shown.width());
+    f.setHeight(shown.height());
+    f.setProperty(kPicture, qs(name));
+    f.setProperty(kPictureDescription, text);
+    f.setToolTip(text);
+    cursor.insertImage(f);
+}
+
+QStringList picture_descriptions(const QTextBlock& block) {
+    QStringList out;
+    for (auto it = block.begin(); !it.atEnd(); ++it) {
+        const auto frag = it.fragment();
+        if (!frag.isValid() || !frag.charFormat().hasProperty(kPicture)) continue;
+        for (const auto ch : frag.text())
+            if (ch == QChar::ObjectReplacementCharacter) out << frag.charFormat().stringProperty(kPictureDescription);
+    }
+    return out;
+}
+
+void render(QTextDocument* doc, std::span<const std::string> lines, const QFont& base,
+            const edit::PictureStore* pictures) {
     doc->clear();
     QTextCursor c(doc);
     c.beginEditBlock();
@@ -304,10 +401,10 @@ void render(QTextDocument* doc, std::span<const std::string> lines, const QFont&
             case Style::heading:
             case Style::quote:
             case Style::body:
-                insert_spans(c, b->spans, cf);
+                insert_spans(c, b->spans, cf, b->images, pictures);
                 break;
             case Style::note:
-                insert_spans(c, b->spans, cf);
+                insert_spans(c, b->spans, cf, b->images, pictures);
                 break;
             case Style::bullet_item:
             case Style::number_item: {
@@ -320,7 +417,7 @@ void render(QTextDocument* doc, std::span<const std::string> lines, const QFont&
                         numbered.setProperty(kNumberText, true);
                         numbered.setIndent(std::max(shown.level, 1));
                         c.setBlockFormat(numbered);
-                        insert_spans(c, b->spans, cf);
+                        insert_spans(c, b->spans, cf, b->images, pictures);
                         break;
                     }
                 }
@@ -343,18 +440,14 @@ void render(QTextDocument* doc, std::span<const std::string> lines, const QFont&
                     list_bullet = mark.bullet;
                 }
                 next_number = mark.number + 1;
-                insert_spans(c, b->spans, cf);
+                insert_spans(c, b->spans, cf, b->images, pictures);
                 continue;  // the list goes on
             }
             case Style::table_row: {
                 const auto cells = edit::parse_table_cells(lines[i]);
                 for (std::size_t k = 0; k < cells.size(); ++k) {
                     if (k) c.insertText(QString(kCellSeparator), cf);
-                    // A cell's paragraphs are apart by "\n", which insertText
-                    // would make a block of its own: one line is one block, so
-                    // they are shown as line breaks inside the row's block.
-                    for (const auto& sp : cells[k].spans)
-                        c.insertText(qs(sp.text).replace(QLatin1Char('\n'), QChar::LineSeparator), span_format(sp, cf));
+                    insert_spans(c, cells[k].spans, cf, cells[k].images, pictures, true);
                 }
                 break;
             }
@@ -384,18 +477,25 @@ std::string line_of(const QTextBlock& block) {
     }
     Block b;
     b.level = level;
+    std::vector<std::vector<document::Image>> images;
     if (style == Style::table_row) {
-        std::vector<Block> cells;
-        for (auto& spans : spans_of(block, true)) {
+        document::Document row;
+        auto spans = spans_of(block, true, &images);
+        for (std::size_t k = 0; k < spans.size(); ++k) {
             Block cell;
             cell.kind = BlockKind::table_cell;
-            cell.level = static_cast<int>(cells.size());
-            cell.spans = std::move(spans);
-            cells.push_back(std::move(cell));
+            cell.level = static_cast<int>(k);
+            cell.spans = std::move(spans[k]);
+            cell.images = std::move(images[k]);
+            row.blocks.push_back(std::move(cell));
         }
-        return exporter::markdown_table_row(cells);
+        // A picture in a cell as its mark (edit/editor_pictures.hpp).
+        return edit::render_with_picture_marks(row, [](const document::Document& d) {
+            return std::vector<std::string>{exporter::markdown_table_row(d.blocks)};
+        }).front();
     }
-    b.spans = std::move(spans_of(block, false).front());
+    b.spans = std::move(spans_of(block, false, &images).front());
+    b.images = std::move(images.front());
     switch (style) {
         case Style::heading:
             b.kind = BlockKind::heading;
@@ -417,7 +517,8 @@ std::string line_of(const QTextBlock& block) {
             b.level = std::max(list->format().indent(), 1);
             const bool bullet = list->format().style() != QTextListFormat::ListDecimal;
             const auto mark = bullet ? std::string(kBullet) : list->itemText(block).toStdString() + " ";
-            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none && !b.spans.front().note_reference)
+            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none &&
+                !b.spans.front().note_reference && !b.spans.front().transcriber_note)
                 b.spans.front().text.insert(0, mark);
             else
                 b.spans.insert(b.spans.begin(), Span{mark});
@@ -434,8 +535,8 @@ std::string line_of(const QTextBlock& block) {
             b.kind = BlockKind::paragraph;
             break;
     }
-    if (b.kind == BlockKind::paragraph && b.spans.empty()) return {};
-    return exporter::markdown_line(b);
+    if (b.kind == BlockKind::paragraph && b.spans.empty() && b.images.empty()) return {};
+    return edit::render_editor_line(b);
 }
 
 namespace {

@@ -6,15 +6,20 @@
 // or bullets from a QTextList, emphasis as char formats, a table row as its
 // cells at tab stops, a page break as an empty block the pane draws as a
 // rule, a box as its box lines around its blocks, underline and raised or
-// lowered text as char formats) and no markup characters; and the way back, a block to its line
+// lowered text as char formats, a picture as an image object showing it, its
+// description its tooltip and the words the pane says for it) and no markup
+// characters; and the way back, a block to its line
 // through core's Markdown writer. One block per line keeps the braille pane,
 // the cursor map and the live layout working line by line (docs/editor.md).
 #include <QFont>
 #include <QString>
 #include <QTextBlock>
 #include <QTextFormat>
+#include <QStringList>
 #include <span>
 #include <string>
+
+#include "edit/editor_pictures.hpp"
 
 class QTextDocument;
 
@@ -47,9 +52,26 @@ inline constexpr int kLanguage = QTextFormat::UserProperty + 6;   // char: the p
 inline constexpr int kPosition = QTextFormat::UserProperty + 7;   // char: document::Position
 // block: a numbered item whose number is its text (Qt 6.4's lists all count from 1).
 inline constexpr int kNumberText = QTextFormat::UserProperty + 8;
+// image: a picture's name in the editor's pictures (edit/editor_pictures.hpp) and its description.
+inline constexpr int kPicture = QTextFormat::UserProperty + 9;
+inline constexpr int kPictureDescription = QTextFormat::UserProperty + 10;
 
-// Replaces the document's text with `lines` shown structured, in `base`'s size.
-void render(QTextDocument* doc, std::span<const std::string> lines, const QFont& base);
+// The widest a picture is shown in the print pane, in pixels: a thumbnail
+// that says what the picture is without pushing the text away.
+inline constexpr int kPictureWidth = 160;
+
+// Replaces the document's text with `lines` shown structured, in `base`'s
+// size; a picture's mark as the picture `pictures` holds under its name (a
+// framed box with its description when it holds none or it cannot be drawn).
+void render(QTextDocument* doc, std::span<const std::string> lines, const QFont& base,
+            const edit::PictureStore* pictures = nullptr);
+
+// A picture as an image object at the cursor: shown as `render` shows it.
+void insert_picture(QTextCursor& cursor, const std::string& name, const std::string& description,
+                    const edit::PictureStore* pictures);
+
+// The descriptions of the pictures in a block, in order ("" for one without).
+QStringList picture_descriptions(const QTextBlock& block);
 
 // The editor line a block stands for now (after edits), in the Markdown dialect.
 std::string line_of(const QTextBlock& block);

@@ -204,13 +204,7 @@ layout::PagedDocument lay_out_for_cli(const LayoutArgs& args, const pipeline::Pi
             const graphic::DrawingFileOptions drawing_options{.image_threshold = args.image_threshold,
                                                               .firmware = firmware ? &*firmware : nullptr,
                                                               .legacy_protocol = legacy_protocol};
-            with_progress.graphic_pages = [table, m, drawing_options,
-                                           geometry = options.layout.geometry](const document::Image& image)
-                -> Result<layout::PagedDocument> {
-                auto pictured = graphic::lay_out_picture(image, m, geometry, *table, drawing_options);
-                if (!pictured) return std::unexpected(pictured.error());
-                return std::move(pictured->document);
-            };
+            with_progress.graphic_pages = graphic::picture_pages(table, m, options.layout.geometry, drawing_options);
         }
         laid = pipeline::lay_out(doc, with_progress, labels);
     }

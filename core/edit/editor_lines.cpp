@@ -7,6 +7,7 @@
 
 #include "common/utf8.hpp"
 #include "document/markdown_html.hpp"
+#include "edit/editor_pictures.hpp"
 #include "export/document_save.hpp"
 #include "export/office_export.hpp"
 #include "export/markdown_syntax.hpp"
@@ -51,7 +52,10 @@ std::optional<std::string> comment_argument(std::string_view s, std::string_view
 // real book.
 // `whole_line`: `content` is a heading's whole line, read as the importer
 // reads it in a file (its closing "#"s, raw HTML in it), not as a paragraph.
-std::vector<document::Span> parse_inline(std::string_view content, bool whole_line = false) {
+// A picture's mark (edit/editor_pictures.hpp) is its description, a
+// transcriber's note, and its picture, by name, added to `images`.
+std::vector<document::Span> parse_inline(std::string_view content, bool whole_line = false,
+                                         std::vector<document::Image>* images = nullptr) {
     // The references' labels, in order; the importer numbers them 1, 2, 3 so.
     std::vector<std::string> labels;
     for (auto i = content.find("[^"); i != std::string_view::npos; i = content.find("[^", i + 1))
@@ -62,6 +66,7 @@ std::vector<document::Span> parse_inline(std::string_view content, bool whole_li
     import::ImportOptions options;
     options.format = import::SourceFormat::markdown;
     options.encoding = "UTF-8";
+    options.picture_marks = true;
     // Read as the text of a paragraph: a no-break space in front keeps "- *x*"
     // or "# *x*" from starting a list or a heading (it is Unicode whitespace, so
     // emphasis opens after it as at a line start), and is taken off again.
@@ -74,6 +79,7 @@ std::vector<document::Span> parse_inline(std::string_view content, bool whole_li
     std::vector<document::Span> spans;
     for (const auto& b : doc->blocks) {
         if (b.kind == document::BlockKind::note) continue;
+        if (images) images->insert(images->end(), b.images.begin(), b.images.end());
         for (auto s : b.spans) {
             if (s.note_reference) {
                 // The importer's number back to the line's own label.
@@ -82,7 +88,7 @@ std::vector<document::Span> parse_inline(std::string_view content, bool whole_li
                 spans.push_back(std::move(s));
             } else if (!spans.empty() && !spans.back().note_reference && spans.back().emphasis == s.emphasis &&
                        spans.back().position == s.position && spans.back().language == s.language &&
-                       spans.back().transcriber_note == s.transcriber_note) {
+                       spans.back().transcriber_note == s.transcriber_note && !s.transcriber_note) {
                 spans.back().text += s.text;
             } else {
                 spans.push_back(std::move(s));
@@ -132,7 +138,7 @@ std::vector<document::Block> parse_table_cells(std::string_view line) {
         document::Block c;
         c.kind = document::BlockKind::table_cell;
         c.level = static_cast<int>(cells.size());
-        c.spans = parse_inline(trim(t.substr(from, end - from)));
+        c.spans = parse_inline(trim(t.substr(from, end - from)), false, &c.images);
         cells.push_back(std::move(c));
     };
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -162,7 +168,8 @@ std::vector<document::Span> text_from_first_word(std::vector<document::Span> spa
 }
 
 bool visible(const document::Block& b) {
-    return std::ranges::any_of(b.spans, [](const document::Span& s) {
+    // A picture is seen, described or not.
+    return !b.images.empty() || std::ranges::any_of(b.spans, [](const document::Span& s) {
         return s.note_reference || s.text.find_first_not_of(" \t\n\r\f\v") != std::string::npos;
     });
 }
@@ -232,7 +239,7 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         b.level = static_cast<int>(hashes);
         // The whole line through the importer, as the file is read: a closing
         // run of "#"s is no text, nor raw HTML ("# \&  # <b>" reads "&").
-        b.spans = parse_inline(t, true);
+        b.spans = parse_inline(t, true, &b.images);
         return b;
     }
     if (t.starts_with('>')) {
@@ -243,7 +250,7 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
             ++b.level;
             rest = trim(rest.substr(1));
         }
-        b.spans = parse_inline(rest);
+        b.spans = parse_inline(rest, false, &b.images);
         return b;
     }
     if (t.starts_with("[^")) {
@@ -257,7 +264,8 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
             b.spans.push_back(std::move(reference));
             b.spans.push_back(document::Span{" "});
             // The note's text starts at its first word, as the importer joins it.
-            for (auto& s : text_from_first_word(parse_inline(trim(t.substr(close + 2))))) b.spans.push_back(std::move(s));
+            for (auto& s : text_from_first_word(parse_inline(trim(t.substr(close + 2)), false, &b.images)))
+                b.spans.push_back(std::move(s));
             return b;
         }
     }
@@ -275,11 +283,14 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         document::Block text;
         text.spans = parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)));
         if (!visible(text)) return std::nullopt;  // an empty item
-        const auto item_text = [&] { return text_from_first_word(parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)))); };
+        const auto item_text = [&] {
+            return text_from_first_word(parse_inline(trim(rest.substr(bullet ? 2 : ordinal + 1)), false, &b.images));
+        };
         if (bullet) {
             // Bullets are kept as the bullet sign, as core's Markdown import does.
             b.spans = item_text();
-            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none && !b.spans.front().note_reference)
+            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none &&
+                !b.spans.front().note_reference && !b.spans.front().transcriber_note)
                 b.spans.front().text.insert(0, kBullet);
             else
                 b.spans.insert(b.spans.begin(), document::Span{std::string(kBullet)});
@@ -287,7 +298,8 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
             // Numbered items keep their number as text, as core's Markdown import does.
             b.spans = item_text();
             const auto number = std::string(rest.substr(0, ordinal)) + " ";
-            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none)
+            if (!b.spans.empty() && b.spans.front().emphasis == document::emphasis_none &&
+                !b.spans.front().transcriber_note)
                 b.spans.front().text.insert(0, number);
             else
                 b.spans.insert(b.spans.begin(), document::Span{number});
@@ -295,18 +307,24 @@ std::optional<document::Block> parse_line(std::string_view line, Dialect dialect
         return b;
     }
     b.kind = document::BlockKind::paragraph;
-    b.spans = parse_inline(t);
+    b.spans = parse_inline(t, false, &b.images);
     return b;
 }
 
 }  // namespace
 
 std::string render_editor_line(const document::Block& b, Dialect dialect) {
-    return dialect == Dialect::text ? exporter::text_line(b) : exporter::markdown_line(b);
+    if (dialect == Dialect::text) return exporter::text_line(b);
+    if (b.images.empty()) return exporter::markdown_line(b);
+    document::Document one;
+    one.blocks.push_back(b);
+    return render_with_picture_marks(one, [](const document::Document& d) {
+        return std::vector<std::string>{exporter::markdown_line(d.blocks.front())};
+    }).front();
 }
 
 std::vector<std::string> render_editor_lines(const document::Document& document, Dialect dialect) {
-    if (dialect == Dialect::markdown) return exporter::markdown_lines(document);
+    if (dialect == Dialect::markdown) return render_with_picture_marks(document, &exporter::markdown_lines);
     // The lines of the file core's text writer writes: a hard-wrapped
     // paragraph is its lines, as the author wrote them.
     return import::split_text_lines(exporter::to_text(document));
@@ -376,7 +394,7 @@ std::string file_text(std::span<const std::string> lines, Dialect dialect, const
                 // In a file this text could open a block of its own (an HTML
                 // block, a code fence, a list inside an item): the writer's
                 // escaped form, which reads back as the same block.
-                kept.push_back(exporter::markdown_line(*block));
+                kept.push_back(render_editor_line(*block, dialect));
             else
                 kept.push_back(block || is_table_delimiter(l) || box_line(l) != 0 ? l : std::string());
         }

@@ -7,6 +7,7 @@
 //   delimiter row "|---|---|" under it makes it the header row), a paragraph
 //   with *italic* and **bold**, <u>underline</u>, <sup>raised</sup> and
 //   <sub>lowered</sub> text, <span lang="de">a passage's language</span>,
+//   "![description](name)" a picture (edit/editor_pictures.hpp),
 //   "<!-- box -->" ... "<!-- /box -->" lines around a box's blocks (the HTML
 //   core's Markdown writer and importer share, document/markdown_html.hpp);
 //   the lines are core's Markdown writer's

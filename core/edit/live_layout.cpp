@@ -48,7 +48,10 @@ BrailleStructure braille_structure(const document::Document& doc) {
 }
 
 bool LiveLayout::reset(const document::Document& document, const Progress& progress) {
-    return reset(render_editor_lines(document, dialect_), progress, edit::braille_structure(document));
+    auto named = document;
+    pictures_.clear();
+    if (dialect_ == Dialect::markdown) store_pictures(named, pictures_);
+    return reset(render_editor_lines(named, dialect_), progress, edit::braille_structure(named));
 }
 
 bool LiveLayout::reset(std::vector<std::string> lines, const Progress& progress, BrailleStructure structure) {
@@ -186,6 +189,12 @@ document::Document LiveLayout::document() const {
         doc.braille_sections.front().first_block = 0;
         doc.braille_sections.front().starts_volume = true;
     }
+    std::vector<std::string> missing;
+    for (auto& b : doc.blocks)
+        if (!b.images.empty()) fill_pictures(b, pictures_, missing);
+    if (!missing.empty())
+        doc.warnings.push_back(std::to_string(missing.size()) + " picture mark(s) name no picture this document holds (" +
+                               missing.front() + "...): their descriptions stay");
     return doc;
 }
 

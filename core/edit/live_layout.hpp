@@ -17,6 +17,7 @@
 
 #include "common/result.hpp"
 #include "edit/editor_lines.hpp"
+#include "edit/editor_pictures.hpp"
 #include "layout/layout_options.hpp"
 #include "layout/page.hpp"
 #include "translate/translated_document.hpp"
@@ -91,14 +92,24 @@ public:
     // block's source_line its 1-based editor line; a ready-made braille
     // document's sections (a section starts at the first block at or after its
     // mark), grid and metadata. What is saved, exported and embossed.
+    // A picture's bytes are the editor's (pictures()), found by the name its
+    // line's mark gives (edit/editor_pictures.hpp); a mark whose name it
+    // does not hold is left out with a warning (Document::warnings).
     [[nodiscard]] document::Document document() const;
+
+    // The pictures the lines' marks name. reset(document) keeps the
+    // document's; an inserted picture is added here and its mark typed in.
+    [[nodiscard]] const PictureStore& pictures() const { return pictures_; }
+    void set_pictures(PictureStore pictures) { pictures_ = std::move(pictures); }
+    // Keeps one picture under a free name; returns the name its mark gives.
+    std::string add_picture(document::Image image) { return store_picture(std::move(image), pictures_); }
 
     // Replaces everything; translates every line. Returns false when cancelled.
     // `structure`: a ready-made braille document's sections, volumes, grid
     // and metadata (braille_structure), marked on these lines.
     bool reset(std::vector<std::string> lines, const Progress& progress = {}, BrailleStructure structure = {});
     // The same from a document: its editor lines (render_editor_lines, in
-    // this layout's dialect) and its braille structure.
+    // this layout's dialect), its pictures (pictures()) and its braille structure.
     bool reset(const document::Document& document, const Progress& progress = {});
     // Replaces `removed` lines starting at `first` with `lines`.
     // The braille structure follows the lines: a line edited keeps its
@@ -224,6 +235,7 @@ private:
     // The braille structure's grid and metadata (the sections are the entries' marks).
     std::optional<document::BrailleGrid> braille_grid_;
     std::vector<document::MetadataItem> metadata_;
+    PictureStore pictures_;
     // paged_ is layout::keep_braille_pages's: entries' pages_before and
     // lines_before are the page and row their block landed on.
     bool kept_ = false;

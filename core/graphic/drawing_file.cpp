@@ -69,4 +69,15 @@ Result<GraphicLayout> lay_out_picture(const document::Image& image, const profil
         machine, geometry, table, options);
 }
 
+std::function<Result<layout::PagedDocument>(const document::Image&)> picture_pages(
+    std::shared_ptr<const translate::Translator> table, profile::PrinterProfile machine, layout::PageGeometry geometry,
+    DrawingFileOptions options) {
+    return [table = std::move(table), machine = std::move(machine), geometry, options](
+               const document::Image& image) -> Result<layout::PagedDocument> {
+        auto pictured = lay_out_picture(image, machine, geometry, *table, options);
+        if (!pictured) return std::unexpected(pictured.error());
+        return std::move(pictured->document);
+    };
+}
+
 }  // namespace tactus::graphic

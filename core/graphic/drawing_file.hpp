@@ -4,6 +4,8 @@
 // braille pages for a machine: what `tactus-cli layout/plan/emboss drawing.svg`
 // and the app's File > Open both do, so the two place the same dots.
 #include <filesystem>
+#include <functional>
+#include <memory>
 
 #include "common/result.hpp"
 #include "document/document.hpp"
@@ -40,5 +42,14 @@ Result<GraphicLayout> lay_out_drawing_file(const std::filesystem::path& path, Dr
 Result<GraphicLayout> lay_out_picture(const document::Image& image, const profile::PrinterProfile& machine,
                                       const layout::PageGeometry& geometry, const translate::Translator& table,
                                       const DrawingFileOptions& options = {});
+
+// A document's pictures as graphic pages, the callback the pipeline takes
+// (pipeline::PipelineOptions::graphic_pages): each picture laid out by
+// lay_out_picture on `machine`'s page in `geometry`, its labels in `table`'s
+// braille. The CLI's `--images graphics` and the app's "Emboss Pictures as
+// Graphics" both lay pictures out with it.
+std::function<Result<layout::PagedDocument>(const document::Image&)> picture_pages(
+    std::shared_ptr<const translate::Translator> table, profile::PrinterProfile machine, layout::PageGeometry geometry,
+    DrawingFileOptions options = {});
 
 }  // namespace tactus::graphic

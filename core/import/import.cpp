@@ -177,7 +177,8 @@ Result<document::Document> import_bytes(std::string_view bytes, std::string_view
             if (parent.empty()) parent = ".";
             const auto folder = std::filesystem::absolute(parent, folder_error);
             doc = format == SourceFormat::text ? detail::import_text(text)
-                                               : detail::import_markdown(text, options.images ? &folder : nullptr);
+                                               : detail::import_markdown(text, options.images ? &folder : nullptr,
+                                                                         options.picture_marks);
             encoding = decoded->encoding;
             byte_order_mark = decoded->byte_order_mark;
             line_ending = line_ending_of(text);

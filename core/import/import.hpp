@@ -30,6 +30,11 @@ struct ImportOptions {
     // HTML and EPUB.
     // A picture of another type keeps only its description, with a warning.
     bool images = false;
+    // Markdown only: the editor's line dialect (edit/editor_pictures.hpp). An
+    // image's alt text is its description, a transcriber's note as a DOCX
+    // picture's is, and its src is kept as the picture's name
+    // (document::Image::name) with no bytes: the editor holds the bytes.
+    bool picture_marks = false;
 };
 
 // "after", "omit".

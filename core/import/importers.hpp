@@ -15,7 +15,9 @@ namespace tactus::import::detail {
 // `utf8` is already decoded and validated (see encoding.hpp).
 Result<document::Document> import_text(std::string_view utf8);
 // `image_folder`: keep the pictures found in it or below (ImportOptions::images).
-Result<document::Document> import_markdown(std::string_view utf8, const std::filesystem::path* image_folder = nullptr);
+// picture_marks: ImportOptions::picture_marks.
+Result<document::Document> import_markdown(std::string_view utf8, const std::filesystem::path* image_folder = nullptr,
+                                           bool picture_marks = false);
 Result<document::Document> import_docx(std::string_view bytes, RubyGuide ruby = RubyGuide::after, bool images = false);
 Result<document::Document> import_brf(std::string_view bytes);
 Result<document::Document> import_pef(std::string_view bytes);

@@ -139,9 +139,21 @@ public:
     // Pictures are kept (ImportOptions::images) from files in `folder`, the
     // document's own, or below it.
     void keep_images(std::filesystem::path folder) { image_folder_ = std::move(folder); }
+    // ImportOptions::picture_marks: an image is its description and its src.
+    void mark_pictures() { picture_marks_ = true; }
 
     void enter_image(const MD_SPAN_IMG_DETAIL& d) {
         pending_image_.reset();
+        if (picture_marks_) {
+            // The picture by name, with its file's bytes when there is a folder to read it from.
+            in_alt_ = true;
+            alt_.clear();
+            const std::string src(d.src.text, d.src.size);
+            std::string why;
+            if (image_folder_) pending_image_ = picture_file(*image_folder_, src, why);
+            if (!pending_image_) pending_image_ = document::Image{.bytes = {}, .media_type = {}, .name = src};
+            return;
+        }
         if (!image_folder_) return;
         const std::string src(d.src.text, d.src.size);
         const int line = line_of(d.src.text);
@@ -154,6 +166,11 @@ public:
     }
 
     void leave_image() {
+        if (in_alt_) {
+            in_alt_ = false;
+            begin_text();
+            builder_.add_transcriber_note(alt_);
+        }
         if (pending_image_) builder_.add_image(std::move(*pending_image_));
         pending_image_.reset();
     }
@@ -161,6 +178,9 @@ public:
 private:
     std::optional<std::filesystem::path> image_folder_;
     std::optional<document::Image> pending_image_;
+    bool picture_marks_ = false;
+    bool in_alt_ = false;  // picture_marks_: inside an image, whose text is its description
+    std::string alt_;
     struct List {
         bool ordered = false;
         unsigned next = 1;
@@ -361,6 +381,10 @@ private:
     // Text with footnote markers in it: each marker is a reference, and the
     // first reference to a note brings its text.
     void add(std::string_view s, std::string_view where) {
+        if (in_alt_) {
+            alt_.append(s);
+            return;
+        }
         for (std::size_t i = 0; i < s.size(); ++i) {
             const auto marker = read_footnote_marker(s.substr(i));
             if (!marker || marker->first >= notes_.size()) continue;
@@ -514,7 +538,8 @@ private:
 
 }  // namespace
 
-Result<document::Document> import_markdown(std::string_view source, const std::filesystem::path* image_folder) {
+Result<document::Document> import_markdown(std::string_view source, const std::filesystem::path* image_folder,
+                                           bool picture_marks) {
     // Front matter is metadata: left out of the text, its lines kept as blank
     // lines so every line after it keeps its number in messages.
     const auto front = front_matter(source);
@@ -529,6 +554,7 @@ Result<document::Document> import_markdown(std::string_view source, const std::f
     const LineIndex lines(utf8);
     MarkdownReader reader(utf8, lines, prepared.notes);
     if (image_folder) reader.keep_images(*image_folder);
+    if (picture_marks) reader.mark_pictures();
     // CommonMark treats a form feed as blank space; as the print page break of
     // plain text it splits the input, and each piece is parsed on its own.
     std::size_t start = 0;

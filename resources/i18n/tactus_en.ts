@@ -61,7 +61,7 @@
 <context>
     <name>tactus::gui::GraphicView</name>
     <message numerus="yes">
-        <location filename="../../widgets/document_loader.cpp" line="139"/>
+        <location filename="../../widgets/document_loader.cpp" line="148"/>
         <source>%n dot(s).</source>
         <comment>on all the graphic&apos;s pages</comment>
         <translation>
@@ -73,7 +73,7 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="597"/>
+        <location filename="../../widgets/main_window.cpp" line="704"/>
         <source>Opened %1: %n sheet(s)</source>
         <translation>
             <numerusform>Opened %1: %n sheet</numerusform>
@@ -81,7 +81,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="612"/>
+        <location filename="../../widgets/main_window.cpp" line="719"/>
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation>
             <numerusform>%n line could not be translated; it is left out of the braille</numerusform>
@@ -89,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="639"/>
+        <location filename="../../widgets/main_window.cpp" line="746"/>
         <source>Graphic %1 | %n sheet(s)</source>
         <translation>
             <numerusform>Graphic %1 | %n sheet</numerusform>
@@ -97,7 +97,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="802"/>
+        <location filename="../../widgets/main_window.cpp" line="885"/>
+        <source>with %n picture file(s) beside it</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="926"/>
         <source>Exported %1 (%n sheet(s))</source>
         <translation>
             <numerusform>Exported %1 (%n sheet)</numerusform>
@@ -105,23 +113,23 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="976"/>
-        <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
+        <location filename="../../widgets/main_window.cpp" line="1089"/>
+        <source>%1 cannot keep %n of the document&apos;s pictures. Save anyway?</source>
         <translation type="unfinished">
             <numerusform></numerusform>
             <numerusform></numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="995"/>
-        <source>Not saved: %1 keeps its %n picture(s)</source>
+        <location filename="../../widgets/main_window.cpp" line="1098"/>
+        <source>Not saved: %1 cannot keep %n picture(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
             <numerusform></numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1290"/>
+        <location filename="../../widgets/main_window.cpp" line="1392"/>
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation type="unfinished">
             <numerusform></numerusform>

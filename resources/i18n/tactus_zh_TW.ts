@@ -169,57 +169,57 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../../app/gui/main.cpp" line="47" />
+        <location filename="../../app/gui/main.cpp" line="50" />
         <source>Braille editor and embosser print manager: edit print and braille side by side, preview interpoint sheets, emboss.</source>
         <translation>點字編輯器與點字印表機管理：並排編輯明眼字與點字、預覽雙面點字、送印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="53" />
+        <location filename="../../app/gui/main.cpp" line="56" />
         <source>Document to open (Markdown, text, DOCX, BRF, PEF).</source>
         <translation>要開啟的文件（Markdown、純文字、DOCX、BRF、PEF）。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="56" />
+        <location filename="../../app/gui/main.cpp" line="59" />
         <source>liblouis table, e.g. en-ueb-g2.ctb or zh-tw.ctb.</source>
         <translation>liblouis 點字表，例如 en-ueb-g2.ctb 或 zh-tw.ctb。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="59" />
+        <location filename="../../app/gui/main.cpp" line="62" />
         <source>Preview side: front, back or both.</source>
         <translation>預覽面：front、back 或 both。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="61" />
+        <location filename="../../app/gui/main.cpp" line="64" />
         <source>Sheet to preview.</source>
         <translation>要預覽的紙張。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="64" />
+        <location filename="../../app/gui/main.cpp" line="67" />
         <source>User interface language, e.g. zh_TW.</source>
         <translation>介面語言，例如 zh_TW。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="67" />
+        <location filename="../../app/gui/main.cpp" line="70" />
         <source>Save a picture of the window and quit.</source>
         <translation>儲存視窗畫面後結束。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="70" />
+        <location filename="../../app/gui/main.cpp" line="73" />
         <source>Panel to show: preview, motion, vibration, profile, printer.</source>
         <translation>要顯示的面板：preview、motion、vibration、profile、printer。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="73" />
+        <location filename="../../app/gui/main.cpp" line="76" />
         <source>Emboss the file on the last used embosser once it is open.</source>
         <translation>檔案開啟後，以上次使用的點字印表機列印。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="75" />
+        <location filename="../../app/gui/main.cpp" line="78" />
         <source>Do not offer to recover autosaved work.</source>
         <translation>不要詢問是否復原自動儲存的內容。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/main.cpp" line="77" />
+        <location filename="../../app/gui/main.cpp" line="80" />
         <source>Embosser device string for Ctrl+P and --emboss, e.g. sim, serial:/dev/ttyUSB0, pty:/dev/pts/3 or a CUPS queue ipp://server/printers/Embosser.</source>
         <translation>Ctrl+P 與 --emboss 使用的點字印表機裝置字串，例如 sim、serial:/dev/ttyUSB0、pty:/dev/pts/3 或 CUPS 佇列 ipp://server/printers/Embosser。</translation>
     </message>
@@ -463,7 +463,7 @@
 <context>
     <name>tactus::gui::EditorWidget</name>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="825" />
+        <location filename="../../widgets/editor_widget.cpp" line="863" />
         <source>dots %1</source>
         <translation>點 %1</translation>
     </message>
@@ -483,53 +483,63 @@
         <translation>原書換頁，第 %1 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="138" />
+        <location filename="../../widgets/editor_widget.cpp" line="139" />
+        <source>Picture without a description</source>
+        <translation>沒有描述的圖片</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="139" />
+        <source>Picture: %1</source>
+        <translation>圖片：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/editor_widget.cpp" line="147" />
         <source>Heading level %1</source>
         <translation>標題層級 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="143" />
+        <location filename="../../widgets/editor_widget.cpp" line="152" />
         <source>List item %1</source>
         <translation>清單項目 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="144" />
-        <location filename="../../widgets/editor_widget.cpp" line="145" />
+        <location filename="../../widgets/editor_widget.cpp" line="153" />
+        <location filename="../../widgets/editor_widget.cpp" line="154" />
         <source>List item</source>
         <translation>清單項目</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="147" />
+        <location filename="../../widgets/editor_widget.cpp" line="156" />
         <source>Quotation</source>
         <translation>引文</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="149" />
+        <location filename="../../widgets/editor_widget.cpp" line="158" />
         <source>Note</source>
         <translation>註解</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="151" />
+        <location filename="../../widgets/editor_widget.cpp" line="160" />
         <source>Box</source>
         <translation>方框</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="153" />
+        <location filename="../../widgets/editor_widget.cpp" line="162" />
         <source>End of box</source>
         <translation>方框結束</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="170" />
+        <location filename="../../widgets/editor_widget.cpp" line="179" />
         <source>Table header row, %1 columns</source>
         <translation>表格標題列，%1 欄</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="171" />
+        <location filename="../../widgets/editor_widget.cpp" line="180" />
         <source>Table row %1 of %2</source>
         <translation>表格第 %1 列，共 %2 列</translation>
     </message>
     <message>
-        <location filename="../../widgets/editor_widget.cpp" line="821" />
+        <location filename="../../widgets/editor_widget.cpp" line="859" />
         <source>blank cell</source>
         <translation>空方</translation>
     </message>
@@ -693,17 +703,17 @@
 <context>
     <name>tactus::gui::GraphicView</name>
     <message>
-        <location filename="../../widgets/document_loader.cpp" line="132" />
+        <location filename="../../widgets/document_loader.cpp" line="141" />
         <source>Graphic: %1.</source>
         <translation>圖形：%1。</translation>
     </message>
     <message>
-        <location filename="../../widgets/document_loader.cpp" line="136" />
+        <location filename="../../widgets/document_loader.cpp" line="145" />
         <source>Labels: %1.</source>
         <translation>標籤：%1。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/document_loader.cpp" line="139" />
+        <location filename="../../widgets/document_loader.cpp" line="148" />
         <source>%n dot(s).</source>
         <comment>on all the graphic's pages</comment>
         <translation><numerusform>%n 點。</numerusform></translation>
@@ -745,961 +755,1037 @@
 <context>
     <name>tactus::gui::MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="77" />
-        <location filename="../../widgets/main_window.cpp" line="710" />
-        <location filename="../../widgets/main_window.cpp" line="881" />
-        <location filename="../../widgets/main_window.cpp" line="935" />
-        <location filename="../../widgets/main_window.cpp" line="956" />
-        <location filename="../../widgets/main_window.cpp" line="1011" />
-        <location filename="../../widgets/main_window.cpp" line="1029" />
+        <location filename="../../widgets/main_window.cpp" line="82" />
+        <location filename="../../widgets/main_window.cpp" line="797" />
+        <location filename="../../widgets/main_window.cpp" line="980" />
+        <location filename="../../widgets/main_window.cpp" line="1034" />
+        <location filename="../../widgets/main_window.cpp" line="1055" />
+        <location filename="../../widgets/main_window.cpp" line="1088" />
+        <location filename="../../widgets/main_window.cpp" line="1105" />
         <source>Tactus</source>
         <translation>Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="87" />
+        <location filename="../../widgets/main_window.cpp" line="92" />
         <source>Preview</source>
         <translation>預覽</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="94" />
+        <location filename="../../widgets/main_window.cpp" line="99" />
         <source>Motion</source>
         <translation>運動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="95" />
+        <location filename="../../widgets/main_window.cpp" line="100" />
         <source>Vibration</source>
         <translation>振動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="96" />
+        <location filename="../../widgets/main_window.cpp" line="101" />
         <source>Printer profile</source>
         <translation>印表機設定檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="101" />
+        <location filename="../../widgets/main_window.cpp" line="106" />
         <source>Printer</source>
         <translation>印表機</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="133" />
+        <location filename="../../widgets/main_window.cpp" line="138" />
         <source>Braille</source>
         <translation>點字</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="135" />
+        <location filename="../../widgets/main_window.cpp" line="140" />
         <source>Braille toolbar</source>
         <translation>點字工具列</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="136" />
+        <location filename="../../widgets/main_window.cpp" line="141" />
         <source>&amp;Table:</source>
         <translation>點字表(&amp;T)：</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="143" />
+        <location filename="../../widgets/main_window.cpp" line="148" />
         <source>Position</source>
         <translation>位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="148" />
+        <location filename="../../widgets/main_window.cpp" line="153" />
         <source>Status</source>
         <translation>狀態</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="237" />
+        <location filename="../../widgets/main_window.cpp" line="243" />
         <source>&amp;New</source>
         <translation>新增(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="240" />
+        <location filename="../../widgets/main_window.cpp" line="246" />
         <source>&amp;Open or Import...</source>
         <translation>開啟或匯入(&amp;O)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="241" />
+        <location filename="../../widgets/main_window.cpp" line="247" />
         <source>&amp;Save</source>
         <translation>儲存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Save &amp;As...</source>
         <translation>另存新檔(&amp;A)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="242" />
+        <location filename="../../widgets/main_window.cpp" line="248" />
         <source>Ctrl+Shift+S</source>
         <translation>Ctrl+Shift+S</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="243" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Export &amp;BRF...</source>
         <translation>匯出 BRF(&amp;B)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="243" />
+        <location filename="../../widgets/main_window.cpp" line="249" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>Export &amp;PEF...</source>
         <translation>匯出 PEF(&amp;P)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="245" />
+        <location filename="../../widgets/main_window.cpp" line="251" />
         <source>Ctrl+Shift+E</source>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="247" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Boo&amp;k Settings...</source>
         <translation>書籍設定(&amp;K)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="344" />
+        <location filename="../../widgets/main_window.cpp" line="357" />
         <source>Ctrl+Shift+B</source>
         <translation>Ctrl+Shift+B</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
-        <location filename="../../widgets/main_window.cpp" line="1036" />
+        <location filename="../../widgets/main_window.cpp" line="262" />
+        <location filename="../../widgets/main_window.cpp" line="1112" />
         <source>&amp;Quit</source>
         <translation>結束(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="247" />
+        <location filename="../../widgets/main_window.cpp" line="253" />
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="249" />
-        <source>Ctrl+Q</source>
-        <translation>Ctrl+Q</translation>
+        <location filename="../../widgets/main_window.cpp" line="255" />
+        <source>&amp;Graphic...</source>
+        <translation>圖形(&amp;G)...</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="250" />
-        <source>&amp;Undo</source>
-        <translation>復原(&amp;U)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="253" />
-        <source>&amp;Redo</source>
-        <translation>重做(&amp;R)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="258" />
-        <source>Undone: %1</source>
-        <translation>已復原：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="260" />
-        <source>Redone: %1</source>
-        <translation>已重做：%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="262" />
-        <source>&amp;Find and Replace...</source>
-        <translation>尋找與取代(&amp;F)...</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="268" />
-        <source>Find &amp;Next</source>
-        <translation>找下一個(&amp;N)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="270" />
-        <source>Go to &amp;print text</source>
-        <translation>移到明眼字(&amp;P)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="270" />
-        <source>Ctrl+1</source>
-        <translation>Ctrl+1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
-        <source>Go to &amp;braille</source>
-        <translation>移到點字(&amp;B)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="272" />
-        <source>Ctrl+2</source>
-        <translation>Ctrl+2</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="274" />
-        <source>Go to pre&amp;view</source>
-        <translation>移到預覽(&amp;V)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="274" />
-        <source>Ctrl+3</source>
-        <translation>Ctrl+3</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="279" />
-        <source>Choose braille &amp;table</source>
-        <translation>選擇點字表(&amp;T)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="279" />
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="283" />
-        <source>Go to &amp;motion</source>
-        <translation>移到運動(&amp;M)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="283" />
-        <source>Ctrl+4</source>
-        <translation>Ctrl+4</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="287" />
-        <source>Go to vibratio&amp;n</source>
-        <translation>移到振動(&amp;N)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="287" />
-        <source>Ctrl+5</source>
-        <translation>Ctrl+5</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="291" />
-        <source>Go to printer pro&amp;file</source>
-        <translation>移到印表機設定檔(&amp;F)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="291" />
-        <source>Ctrl+6</source>
-        <translation>Ctrl+6</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="295" />
-        <source>Go to p&amp;rinter</source>
-        <translation>前往印表機(&amp;R)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="295" />
-        <source>Ctrl+7</source>
-        <translation>Ctrl+7</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="300" />
-        <source>&amp;Emboss</source>
-        <translation>列印點字(&amp;E)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="300" />
-        <source>Ctrl+P</source>
-        <translation>Ctrl+P</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="301" />
-        <source>&amp;Keyboard Shortcuts</source>
-        <translation>鍵盤快速鍵(&amp;K)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="301" />
-        <source>Ctrl+F1</source>
-        <translation>Ctrl+F1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="303" />
-        <source>&amp;About Tactus</source>
-        <translation>關於 Tactus(&amp;A)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="303" />
-        <source>Shift+F1</source>
-        <translation>Shift+F1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="306" />
-        <source>Open the menu bar</source>
-        <translation>開啟選單列</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="324" />
-        <source>&amp;Body text</source>
-        <translation>內文(&amp;B)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="324" />
-        <source>Ctrl+Alt+0</source>
-        <translation>Ctrl+Alt+0</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="327" />
-        <source>Heading &amp;%1</source>
-        <translation>標題 %1(&amp;%1)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="327" />
-        <source>Ctrl+Alt+%1</source>
-        <translation>Ctrl+Alt+%1</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
-        <source>B&amp;ulleted list</source>
-        <translation>項目符號清單(&amp;U)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="329" />
-        <source>Ctrl+Alt+L</source>
-        <translation>Ctrl+Alt+L</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="331" />
-        <source>&amp;Numbered list</source>
-        <translation>編號清單(&amp;N)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="331" />
-        <source>Ctrl+Alt+N</source>
-        <translation>Ctrl+Alt+N</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="333" />
-        <source>&amp;Quotation</source>
-        <translation>引文(&amp;Q)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="333" />
-        <source>Ctrl+Alt+Q</source>
-        <translation>Ctrl+Alt+Q</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="335" />
-        <source>&amp;Page break</source>
-        <translation>分頁(&amp;P)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="335" />
-        <source>Ctrl+Return</source>
-        <translation>Ctrl+Return</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="336" />
-        <source>Bol&amp;d</source>
-        <translation>粗體(&amp;D)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="336" />
-        <source>Ctrl+B</source>
-        <translation>Ctrl+B</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="338" />
-        <source>&amp;Italic</source>
-        <translation>斜體(&amp;I)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="338" />
-        <source>Ctrl+I</source>
-        <translation>Ctrl+I</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="340" />
-        <source>Und&amp;erline</source>
-        <translation>底線(&amp;E)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="340" />
-        <source>Ctrl+U</source>
-        <translation>Ctrl+U</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="342" />
-        <source>&amp;Raised</source>
-        <translation>上標(&amp;R)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="344" />
-        <source>&amp;Lowered</source>
-        <translation>下標(&amp;L)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
-        <source>Lan&amp;guage...</source>
-        <translation>語言(&amp;G)...</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="346" />
+        <location filename="../../widgets/main_window.cpp" line="359" />
         <source>Ctrl+Alt+G</source>
         <translation>Ctrl+Alt+G</translation>
     </message>
     <message>
+        <location filename="../../widgets/main_window.cpp" line="257" />
+        <source>Emboss Pictures as &amp;Graphics</source>
+        <translation>將圖片列印為觸覺圖形(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="255" />
+        <source>Ctrl+Alt+I</source>
+        <translation>Ctrl+Alt+I</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="257" />
+        <source>Ctrl+Shift+G</source>
+        <translation>Ctrl+Shift+G</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="262" />
+        <source>Ctrl+Q</source>
+        <translation>Ctrl+Q</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="263" />
+        <source>&amp;Undo</source>
+        <translation>復原(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="266" />
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="271" />
+        <source>Undone: %1</source>
+        <translation>已復原：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="273" />
+        <source>Redone: %1</source>
+        <translation>已重做：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="275" />
+        <source>&amp;Find and Replace...</source>
+        <translation>尋找與取代(&amp;F)...</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="281" />
+        <source>Find &amp;Next</source>
+        <translation>找下一個(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="283" />
+        <source>Go to &amp;print text</source>
+        <translation>移到明眼字(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="283" />
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="285" />
+        <source>Go to &amp;braille</source>
+        <translation>移到點字(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="285" />
+        <source>Ctrl+2</source>
+        <translation>Ctrl+2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="287" />
+        <source>Go to pre&amp;view</source>
+        <translation>移到預覽(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="287" />
+        <source>Ctrl+3</source>
+        <translation>Ctrl+3</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="292" />
+        <source>Choose braille &amp;table</source>
+        <translation>選擇點字表(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="292" />
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="296" />
+        <source>Go to &amp;motion</source>
+        <translation>移到運動(&amp;M)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="296" />
+        <source>Ctrl+4</source>
+        <translation>Ctrl+4</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="300" />
+        <source>Go to vibratio&amp;n</source>
+        <translation>移到振動(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="300" />
+        <source>Ctrl+5</source>
+        <translation>Ctrl+5</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="304" />
+        <source>Go to printer pro&amp;file</source>
+        <translation>移到印表機設定檔(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="304" />
+        <source>Ctrl+6</source>
+        <translation>Ctrl+6</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="308" />
+        <source>Go to p&amp;rinter</source>
+        <translation>前往印表機(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="308" />
+        <source>Ctrl+7</source>
+        <translation>Ctrl+7</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="313" />
+        <source>&amp;Emboss</source>
+        <translation>列印點字(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="313" />
+        <source>Ctrl+P</source>
+        <translation>Ctrl+P</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="314" />
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>鍵盤快速鍵(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="314" />
+        <source>Ctrl+F1</source>
+        <translation>Ctrl+F1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="316" />
+        <source>&amp;About Tactus</source>
+        <translation>關於 Tactus(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="316" />
+        <source>Shift+F1</source>
+        <translation>Shift+F1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="319" />
+        <source>Open the menu bar</source>
+        <translation>開啟選單列</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="337" />
+        <source>&amp;Body text</source>
+        <translation>內文(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="337" />
+        <source>Ctrl+Alt+0</source>
+        <translation>Ctrl+Alt+0</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="340" />
+        <source>Heading &amp;%1</source>
+        <translation>標題 %1(&amp;%1)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="340" />
+        <source>Ctrl+Alt+%1</source>
+        <translation>Ctrl+Alt+%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="342" />
+        <source>B&amp;ulleted list</source>
+        <translation>項目符號清單(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="342" />
+        <source>Ctrl+Alt+L</source>
+        <translation>Ctrl+Alt+L</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="344" />
+        <source>&amp;Numbered list</source>
+        <translation>編號清單(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="344" />
+        <source>Ctrl+Alt+N</source>
+        <translation>Ctrl+Alt+N</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="346" />
+        <source>&amp;Quotation</source>
+        <translation>引文(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="346" />
+        <source>Ctrl+Alt+Q</source>
+        <translation>Ctrl+Alt+Q</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="348" />
+        <source>&amp;Page break</source>
+        <translation>分頁(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="348" />
+        <source>Ctrl+Return</source>
+        <translation>Ctrl+Return</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="349" />
+        <source>Bol&amp;d</source>
+        <translation>粗體(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="349" />
+        <source>Ctrl+B</source>
+        <translation>Ctrl+B</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="351" />
+        <source>&amp;Italic</source>
+        <translation>斜體(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="351" />
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="353" />
+        <source>Und&amp;erline</source>
+        <translation>底線(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="353" />
+        <source>Ctrl+U</source>
+        <translation>Ctrl+U</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="355" />
+        <source>&amp;Raised</source>
+        <translation>上標(&amp;R)</translation>
+    </message>
+    <message>
         <location filename="../../widgets/main_window.cpp" line="357" />
+        <source>&amp;Lowered</source>
+        <translation>下標(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="359" />
+        <source>Lan&amp;guage...</source>
+        <translation>語言(&amp;G)...</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="370" />
         <source>Bo&amp;x</source>
         <translation>方框(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="357" />
+        <location filename="../../widgets/main_window.cpp" line="370" />
         <source>Ctrl+Alt+X</source>
         <translation>Ctrl+Alt+X</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="358" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>No&amp;te</source>
         <translation>註解(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="360" />
+        <location filename="../../widgets/main_window.cpp" line="373" />
         <source>Note %1: type its text</source>
         <translation>註解 %1：請輸入內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="362" />
+        <location filename="../../widgets/main_window.cpp" line="375" />
         <source>Show &amp;codes</source>
         <translation>顯示代碼(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="365" />
+        <location filename="../../widgets/main_window.cpp" line="378" />
         <source>Ctrl+Alt+C</source>
         <translation>Ctrl+Alt+C</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="366" />
+        <location filename="../../widgets/main_window.cpp" line="379" />
         <source>Show the print text's Markdown codes instead of its styles</source>
         <translation>以 Markdown 代碼顯示明眼字，而不是其樣式</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="376" />
+        <location filename="../../widgets/main_window.cpp" line="389" />
         <source>&amp;File</source>
         <translation>檔案(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="378" />
+        <location filename="../../widgets/main_window.cpp" line="391" />
         <source>Open &amp;Recent</source>
         <translation>最近開啟(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="387" />
+        <location filename="../../widgets/main_window.cpp" line="400" />
         <source>&amp;Edit</source>
         <translation>編輯(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="392" />
+        <location filename="../../widgets/main_window.cpp" line="405" />
         <source>St&amp;yles</source>
         <translation>樣式(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="395" />
+        <location filename="../../widgets/main_window.cpp" line="410" />
         <source>&amp;View</source>
         <translation>檢視(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="404" />
+        <location filename="../../widgets/main_window.cpp" line="419" />
         <source>&amp;Help</source>
         <translation>說明(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="447" />
+        <location filename="../../widgets/main_window.cpp" line="464" />
         <source>Translating with %1</source>
         <translation>正在以 %1 轉譯</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="454" />
+        <location filename="../../widgets/main_window.cpp" line="471" />
         <source>Cannot use table %1: %2</source>
         <translation>無法使用點字表 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="459" />
-        <location filename="../../widgets/main_window.cpp" line="638" />
+        <location filename="../../widgets/main_window.cpp" line="476" />
+        <location filename="../../widgets/main_window.cpp" line="725" />
         <source>Braille table: %1</source>
         <translation>點字表：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="469" />
+        <location filename="../../widgets/main_window.cpp" line="486" />
         <source>the text is mostly in Latin letters; for English, Unified English Braille (%1) suits it</source>
         <translation>文字大多是拉丁字母；英文適合用統一英文點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="471" />
+        <location filename="../../widgets/main_window.cpp" line="488" />
         <source>the text is mostly Traditional Chinese; Taiwanese bopomofo braille (%1) suits it</source>
         <translation>文字大多是繁體中文；適合用台灣注音點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="472" />
+        <location filename="../../widgets/main_window.cpp" line="489" />
         <source>the text is mostly Simplified Chinese; Chinese double-phonic braille (%1) suits it</source>
         <translation>文字大多是簡體中文；適合用中文雙拼點字（%1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="475" />
+        <location filename="../../widgets/main_window.cpp" line="492" />
         <source>Warning: the table %1 does not suit all of this text (%2). Ctrl+T chooses another table.</source>
         <translation>警告：點字表 %1 不適用於這份文字的全部內容（%2）。按 Ctrl+T 選擇其他點字表。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="496" />
+        <location filename="../../widgets/main_window.cpp" line="507" />
+        <source>Pictures not embossed as graphics: %1</source>
+        <translation>圖片未列印為觸覺圖形：%1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="524" />
+        <source>Pictures are embossed as graphics, each after its description</source>
+        <translation>圖片將列印為觸覺圖形，各接在其描述之後</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="525" />
+        <source>Pictures are embossed as their descriptions only</source>
+        <translation>圖片只列印其描述</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="531" />
+        <location filename="../../widgets/main_window.cpp" line="536" />
+        <source>Insert graphic</source>
+        <translation>插入圖形</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="532" />
+        <source>Pictures (*.svg *.png *.jpg *.jpeg)</source>
+        <translation>圖片 (*.svg *.png *.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="537" />
+        <source>Description of %1 (what a reader who cannot see it needs to know):</source>
+        <translation>%1 的描述（看不見圖片的讀者需要知道的內容）：</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="549" />
+        <source>Not inserted: %1 needs a description, which is what a braille reader reads of it</source>
+        <translation>未插入：%1 需要描述，點字讀者讀到的就是這段描述</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="558" />
+        <source>Cannot insert %1: %2</source>
+        <translation>無法插入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="562" />
+        <source>Cannot insert %1: only a document (not a text file or a graphic) holds pictures</source>
+        <translation>無法插入 %1：只有文件（不是純文字檔或圖形）能含有圖片</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="566" />
+        <source>Graphic %1 inserted: %2</source>
+        <translation>已插入圖形 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="583" />
         <source>Cannot lay out %1 again: %2</source>
         <translation>無法重新排版 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="498" />
+        <location filename="../../widgets/main_window.cpp" line="585" />
         <source>cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="522" />
+        <location filename="../../widgets/main_window.cpp" line="609" />
         <source>Open or import</source>
         <translation>開啟或匯入</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="523" />
+        <location filename="../../widgets/main_window.cpp" line="610" />
         <source>Documents (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;Tactile graphics (*.svg *.png *.jpg *.jpeg);;All files (*)</source>
         <translation>文件 (*.md *.markdown *.txt *.docx *.odt *.brf *.pef *.svg *.png *.jpg *.jpeg);;觸覺圖形 (*.svg *.png *.jpg *.jpeg);;所有檔案 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="530" />
+        <location filename="../../widgets/main_window.cpp" line="617" />
         <source>Opening %1</source>
         <translation>正在開啟 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="545" />
+        <location filename="../../widgets/main_window.cpp" line="632" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="557" />
+        <location filename="../../widgets/main_window.cpp" line="644" />
         <source>%1 percent</source>
         <translation>百分之 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="587" />
+        <location filename="../../widgets/main_window.cpp" line="674" />
         <source>Cancelled; the document is unchanged</source>
         <translation>已取消，文件未變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="592" />
+        <location filename="../../widgets/main_window.cpp" line="679" />
         <source>Cannot open %1: %2</source>
         <translation>無法開啟 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="593" />
+        <location filename="../../widgets/main_window.cpp" line="680" />
         <source>the document</source>
         <translation>文件</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="617" />
+        <location filename="../../widgets/main_window.cpp" line="704" />
         <source>Opened %1: %n sheet(s)</source>
         <translation><numerusform>已開啟 %1：%n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="620" />
+        <location filename="../../widgets/main_window.cpp" line="707" />
         <source>%1. %2</source>
         <comment>a message, then what the graphic is</comment>
         <translation>%1。%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="623" />
+        <location filename="../../widgets/main_window.cpp" line="710" />
         <source>Warning: %1</source>
         <translation>警告：%1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="632" />
+        <location filename="../../widgets/main_window.cpp" line="719" />
         <source>%n line(s) could not be translated; they are left out of the braille</source>
         <translation><numerusform>有 %n 行無法轉譯，未列入點字</numerusform></translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="659" />
+        <location filename="../../widgets/main_window.cpp" line="746" />
         <source>Graphic %1 | %n sheet(s)</source>
         <translation><numerusform>圖形 %1 | %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="667" />
+        <location filename="../../widgets/main_window.cpp" line="754" />
         <source>Sheet %1 of %2%3 | line %4 | cell %5 | print page %6</source>
         <translation>第 %1 張，共 %2 張%3 | 第 %4 行 | 第 %5 方 | 原書第 %6 頁</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="670" />
+        <location filename="../../widgets/main_window.cpp" line="757" />
         <source>, back</source>
         <translation>，背面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="670" />
+        <location filename="../../widgets/main_window.cpp" line="757" />
         <source>, front</source>
         <translation>，正面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="685" />
-        <location filename="../../widgets/main_window.cpp" line="882" />
-        <location filename="../../widgets/main_window.cpp" line="893" />
-        <location filename="../../widgets/main_window.cpp" line="1086" />
+        <location filename="../../widgets/main_window.cpp" line="772" />
+        <location filename="../../widgets/main_window.cpp" line="981" />
+        <location filename="../../widgets/main_window.cpp" line="992" />
+        <location filename="../../widgets/main_window.cpp" line="1162" />
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="690" />
+        <location filename="../../widgets/main_window.cpp" line="777" />
         <source>%1 — Tactus</source>
         <translation>%1 — Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="720" />
+        <location filename="../../widgets/main_window.cpp" line="807" />
         <source>Cannot save %1: a tactile graphic is kept in its own file; emboss or plan it, or open a document to save</source>
         <translation>無法儲存 %1：觸覺圖形保存在它自己的檔案中；請列印或規劃它，或開啟文件再儲存</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="733" />
+        <location filename="../../widgets/main_window.cpp" line="820" />
         <source>Save as</source>
         <translation>另存新檔</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="786" />
+        <location filename="../../widgets/main_window.cpp" line="883" />
         <source>Saved %1</source>
         <translation>已儲存 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1012" />
-        <source>%1 holds %n picture(s) that the editor does not keep. Replace it?</source>
-        <translation><numerusform>%1 含有 %n 張編輯器不保留的圖片。要取代它嗎？</numerusform></translation>
+        <location filename="../../widgets/main_window.cpp" line="885" />
+        <source>with %n picture file(s) beside it</source>
+        <translation><numerusform>並在旁邊存入 %n 個圖片檔</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1013" />
-        <source>Nothing has been saved. The editor shows each picture as its description, so saving over %1 keeps the descriptions and loses the pictures. Cancel leaves the file as it is; Save As keeps it and writes the edited document beside it.</source>
-        <translation>尚未儲存任何內容。編輯器以描述文字呈現每張圖片，因此覆寫 %1 會保留描述、失去圖片。按「取消」保留檔案原狀；「另存新檔」會保留原檔，並把編輯後的文件存在旁邊。</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1017" />
+        <location filename="../../widgets/main_window.cpp" line="1093" />
         <source>Saving would lose pictures</source>
         <translation>儲存會失去圖片</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1019" />
-        <source>&amp;Replace</source>
-        <translation>取代(&amp;R)</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1020" />
-        <source>Save over the file with the pictures' descriptions only</source>
-        <translation>覆寫檔案，只保留圖片的描述</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1022" />
-        <source>Not saved: %1 keeps its %n picture(s)</source>
-        <translation><numerusform>未儲存：%1 保留其 %n 張圖片</numerusform></translation>
-    </message>
-    <message>
-        <location filename="../../widgets/main_window.cpp" line="1082" />
+        <location filename="../../widgets/main_window.cpp" line="1158" />
         <source>untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="794" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>PEF (*.pef)</source>
         <translation>PEF (*.pef)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="794" />
+        <location filename="../../widgets/main_window.cpp" line="893" />
         <source>Braille ASCII (*.brf)</source>
         <translation>點字 ASCII (*.brf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="796" />
+        <location filename="../../widgets/main_window.cpp" line="895" />
         <source>Export</source>
         <translation>匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="818" />
+        <location filename="../../widgets/main_window.cpp" line="917" />
         <source>Cannot export %1: %2</source>
         <translation>無法匯出 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="827" />
+        <location filename="../../widgets/main_window.cpp" line="926" />
         <source>Exported %1 (%n sheet(s))</source>
         <translation><numerusform>已匯出 %1（%n 張）</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="834" />
+        <location filename="../../widgets/main_window.cpp" line="933" />
         <source>Print preview to PDF</source>
         <translation>將預覽列印為 PDF</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="835" />
+        <location filename="../../widgets/main_window.cpp" line="934" />
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="846" />
+        <location filename="../../widgets/main_window.cpp" line="945" />
         <source>Wrote proof %1</source>
         <translation>已寫出校稿 %1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="881" />
+        <location filename="../../widgets/main_window.cpp" line="980" />
         <source>Save the changes to %1?</source>
         <translation>要儲存對 %1 的變更嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1030" />
+        <location filename="../../widgets/main_window.cpp" line="1106" />
         <source>%1 is being embossed. Quit anyway?</source>
         <translation>%1 正在列印。仍要結束嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1031" />
+        <location filename="../../widgets/main_window.cpp" line="1107" />
         <source>The job stays in the print queue. The sheet in the embosser now is discarded; the rest is embossed when Tactus or tactus-cli serve runs printer %1 again.</source>
         <translation>工作會留在列印佇列中。點字印表機中目前這張紙會作廢；其餘部分會在 Tactus 或 tactus-cli serve 再次執行印表機 %1 時列印。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1037" />
+        <location filename="../../widgets/main_window.cpp" line="1113" />
         <source>&amp;Keep embossing</source>
         <translation>繼續列印(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="894" />
+        <location filename="../../widgets/main_window.cpp" line="993" />
         <source>The printer's page is too small for the pages of %1. Lay the braille out again on the printer's page?</source>
         <translation>印表機的頁面放不下 %1 的頁面。要在印表機的頁面上重新排版點字嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="908" />
+        <location filename="../../widgets/main_window.cpp" line="1007" />
         <source>The pages of %1 are %2 cells by %3 lines; the printer's page holds %4 cells by %5 lines.</source>
         <translation>%1 的頁面為每行 %2 方、每頁 %3 行；印表機的頁面只容納每行 %4 方、每頁 %5 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="917" />
+        <location filename="../../widgets/main_window.cpp" line="1016" />
         <source>volume %1, %2 cells by %3 lines</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="917" />
+        <location filename="../../widgets/main_window.cpp" line="1016" />
         <source>volume %1, %2 cells by %3 lines, too large</source>
         <translation>第 %1 冊，每行 %2 方、每頁 %3 行，太大</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="921" />
+        <location filename="../../widgets/main_window.cpp" line="1020" />
         <source>The pages of %1 differ by volume: %2. The printer's page holds %3 cells by %4 lines.</source>
         <translation>%1 各冊的頁面大小不同：%2。印表機的頁面只容納每行 %3 方、每頁 %4 行。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1110" />
+        <location filename="../../widgets/main_window.cpp" line="1186" />
         <source>Cannot send %1: %2</source>
         <translation>無法送出 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="922" />
+        <location filename="../../widgets/main_window.cpp" line="1021" />
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="927" />
+        <location filename="../../widgets/main_window.cpp" line="1026" />
         <source>Nothing has been embossed or exported. Reflow lays the braille out again on the printer's page, so its lines and pages change. Stop leaves it as it is; choose a printer whose page is large enough.</source>
         <translation>尚未列印或匯出任何內容。「重新排版」會在印表機的頁面上重新排版點字，行與頁都會改變。「停止」則保持原樣；請選擇頁面夠大的印表機。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="119" />
+        <location filename="../../widgets/main_window.cpp" line="124" />
         <source>The document cannot be laid out for this printer's page: %1</source>
         <translation>無法依此印表機的頁面排版文件：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="769" />
+        <location filename="../../widgets/main_window.cpp" line="856" />
         <source>Cannot save %1: %2</source>
         <translation>無法儲存 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="951" />
+        <location filename="../../widgets/main_window.cpp" line="1050" />
         <source>%1 cannot be saved in its encoding, %2. Save it as UTF-8?</source>
         <translation>%1 無法以原本的編碼 %2 儲存。要改存成 UTF-8 嗎？</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="952" />
+        <location filename="../../widgets/main_window.cpp" line="1051" />
         <source>At line:column %1, %2. Nothing has been saved. UTF-8 holds every character, but programs that expect %3 may show it wrongly. Cancel leaves the file as it is; remove the character to keep %3.</source>
         <translation>位於 行:欄 %1，%2。尚未儲存任何內容。UTF-8 能容納所有字元，但預期 %3 的程式可能顯示錯誤。按「取消」保留檔案原狀；刪除該字元即可維持 %3。</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="959" />
+        <location filename="../../widgets/main_window.cpp" line="1058" />
         <source>A character does not fit the file's encoding</source>
         <translation>有字元不符合檔案的編碼</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="961" />
+        <location filename="../../widgets/main_window.cpp" line="1060" />
         <source>Save as &amp;UTF-8</source>
         <translation>存成 UTF-8(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="962" />
+        <location filename="../../widgets/main_window.cpp" line="1061" />
         <source>Save the whole file as UTF-8 from now on</source>
         <translation>此後整個檔案都存成 UTF-8</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="963" />
-        <location filename="../../widgets/main_window.cpp" line="1021" />
+        <location filename="../../widgets/main_window.cpp" line="1062" />
+        <location filename="../../widgets/main_window.cpp" line="1097" />
         <source>Save nothing</source>
         <translation>不儲存任何內容</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="964" />
+        <location filename="../../widgets/main_window.cpp" line="1063" />
         <source>Not saved: %1 has a character that %2 cannot hold</source>
         <translation>未儲存：%1 含有 %2 無法容納的字元</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="938" />
+        <location filename="../../widgets/main_window.cpp" line="1037" />
         <source>The printer's page is too small</source>
         <translation>印表機的頁面太小</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="940" />
+        <location filename="../../widgets/main_window.cpp" line="1039" />
         <source>&amp;Reflow</source>
         <translation>重新排版(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="942" />
+        <location filename="../../widgets/main_window.cpp" line="1041" />
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="941" />
+        <location filename="../../widgets/main_window.cpp" line="1040" />
         <source>Lay the braille out again on the printer's page and go on</source>
         <translation>在印表機的頁面上重新排版點字並繼續</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="942" />
+        <location filename="../../widgets/main_window.cpp" line="1041" />
         <source>Emboss or export nothing</source>
         <translation>不列印也不匯出</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="944" />
+        <location filename="../../widgets/main_window.cpp" line="1043" />
         <source>Stopped: nothing was embossed or exported (the printer's page is too small for %1)</source>
         <translation>已停止：未列印或匯出任何內容（印表機的頁面放不下 %1）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="650" />
+        <location filename="../../widgets/main_window.cpp" line="737" />
         <source>The braille's own pages, sections and volumes are kept again</source>
         <translation>已恢復保留點字原有的頁面、段落與分冊</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="342" />
+        <location filename="../../widgets/main_window.cpp" line="355" />
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="358" />
+        <location filename="../../widgets/main_window.cpp" line="371" />
         <source>Ctrl+Alt+E</source>
         <translation>Ctrl+Alt+E</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="651" />
+        <location filename="../../widgets/main_window.cpp" line="738" />
         <source>The braille is laid out again on the printer's page: its own pages, sections and volumes are kept only while it holds nothing but braille rows that fit the page</source>
         <translation>點字已在印表機的頁面上重新排版：只有在文件只含放得下頁面的點字行時，才會保留原有的頁面、段落與分冊</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1089" />
+        <source>%1 cannot keep %n of the document's pictures. Save anyway?</source>
+        <translation><numerusform>%1 無法保留文件中的 %n 張圖片。仍要儲存嗎？</numerusform></translation>
+    </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1102" />
+        <location filename="../../widgets/main_window.cpp" line="1090" />
+        <source>Nothing has been saved. In %1 each of these pictures would be its description only. Cancel saves nothing; a DOCX or ODT file keeps every picture.</source>
+        <translation>尚未儲存任何內容。在 %1 中，這些圖片都只會剩下描述文字。按「取消」不儲存任何內容；DOCX 或 ODT 檔會保留每張圖片。</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1095" />
+        <source>&amp;Save Without Them</source>
+        <translation>不含圖片儲存(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1096" />
+        <source>Save with the pictures' descriptions only</source>
+        <translation>儲存時只保留圖片的描述</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../widgets/main_window.cpp" line="1098" />
+        <source>Not saved: %1 cannot keep %n picture(s)</source>
+        <translation><numerusform>未儲存：%1 無法保留 %n 張圖片</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="1178" />
         <source>Cannot send %1 to a CUPS queue: a tactile graphic is embossed on a device (choose it in the printer panel)</source>
         <translation>無法將 %1 送到 CUPS 佇列：觸覺圖形須在點字印表機上列印（請在印表機面板選擇裝置）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1178" />
+        <location filename="../../widgets/main_window.cpp" line="1254" />
         <source>Cannot plan the job: %1</source>
         <translation>無法規劃工作：%1</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1211" />
-        <location filename="../../widgets/main_window.cpp" line="1220" />
+        <location filename="../../widgets/main_window.cpp" line="1287" />
+        <location filename="../../widgets/main_window.cpp" line="1296" />
         <source>Cannot read the autosaved copy %1: %2</source>
         <translation>無法讀取自動儲存的副本 %1：%2</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1244" />
+        <location filename="../../widgets/main_window.cpp" line="1320" />
         <source>Recovered</source>
         <translation>已復原</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1249" />
+        <location filename="../../widgets/main_window.cpp" line="1325" />
         <source>Recovered unsaved changes to %1</source>
         <translation>已復原 %1 未儲存的變更</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1262" />
+        <location filename="../../widgets/main_window.cpp" line="1338" />
         <source>Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1266" />
+        <location filename="../../widgets/main_window.cpp" line="1342" />
         <source>Shortcuts</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1268" />
+        <location filename="../../widgets/main_window.cpp" line="1344" />
         <source>Action</source>
         <translation>動作</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1268" />
+        <location filename="../../widgets/main_window.cpp" line="1344" />
         <source>Shortcut</source>
         <translation>快速鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1297" />
+        <location filename="../../widgets/main_window.cpp" line="1373" />
         <source>Braille pane: dots 1 2 3 4 5 6 (chord, released together)</source>
         <translation>點字窗格：第 1 2 3 4 5 6 點（同時按下、一起放開）</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1297" />
+        <location filename="../../widgets/main_window.cpp" line="1373" />
         <source>F D S J K L</source>
         <translation>F D S J K L</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1298" />
+        <location filename="../../widgets/main_window.cpp" line="1374" />
         <source>Braille pane: blank cell / erase cell</source>
         <translation>點字窗格：空方 / 刪除點字方</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1298" />
+        <location filename="../../widgets/main_window.cpp" line="1374" />
         <source>Space / Backspace, Delete</source>
         <translation>空白鍵 / 退格鍵、刪除鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1299" />
+        <location filename="../../widgets/main_window.cpp" line="1375" />
         <source>Preview: move between cells / lines</source>
         <translation>預覽：在點字方 / 行之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1299" />
+        <location filename="../../widgets/main_window.cpp" line="1375" />
         <source>Arrow keys</source>
         <translation>方向鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1300" />
+        <location filename="../../widgets/main_window.cpp" line="1376" />
         <source>Preview: turn to the other side</source>
         <translation>預覽：翻到另一面</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1300" />
+        <location filename="../../widgets/main_window.cpp" line="1376" />
         <source>Space</source>
         <translation>空白鍵</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1301" />
+        <location filename="../../widgets/main_window.cpp" line="1377" />
         <source>Preview: previous / next sheet</source>
         <translation>預覽：上一張 / 下一張</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1301" />
+        <location filename="../../widgets/main_window.cpp" line="1377" />
         <source>PgUp / PgDown</source>
         <translation>PgUp / PgDown</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1302" />
+        <location filename="../../widgets/main_window.cpp" line="1378" />
         <source>Move between panes</source>
         <translation>在窗格之間移動</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1302" />
+        <location filename="../../widgets/main_window.cpp" line="1378" />
         <source>Tab / Shift+Tab</source>
         <translation>Tab / Shift+Tab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.cpp" line="1316" />
+        <location filename="../../widgets/main_window.cpp" line="1392" />
         <source>Book settings: about %n sheet(s) per volume</source>
         <translation><numerusform>書籍設定：每冊約 %n 張</numerusform></translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1321" />
+        <location filename="../../widgets/main_window.cpp" line="1397" />
         <source>About Tactus</source>
         <translation>關於 Tactus</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="1322" />
+        <location filename="../../widgets/main_window.cpp" line="1398" />
         <source>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Braille editor and embosser print manager.&lt;/p&gt;&lt;p&gt;Licensed under the GNU GPL, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;Tactus %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;點字編輯器與點字印表機管理程式。&lt;/p&gt;&lt;p&gt;依 GNU GPL 第 3 版或更新版本授權。&lt;/p&gt;</translation>
     </message>
@@ -3486,6 +3572,14 @@
         <location filename="../../widgets/vibration_view.cpp" line="207" />
         <source>OVER TOLERANCE</source>
         <translation>超出容許範圍</translation>
+    </message>
+</context>
+<context>
+    <name>tactus::gui::structured</name>
+    <message>
+        <location filename="../../widgets/structured_print.cpp" line="157" />
+        <source>Picture</source>
+        <translation>圖片</translation>
     </message>
 </context>
 </TS>

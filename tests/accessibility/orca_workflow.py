@@ -21,6 +21,8 @@ works the app by keyboard only, asserting after every key what Orca says:
   structure  a Markdown file in the structured print pane: the cursor coming to
           a heading says its level, to a numbered item its number, to body text
           nothing more (Qt's text interface has neither: docs/editor.md).
+  pictures  a Markdown file with a picture: the cursor coming to its
+          paragraph says "Picture: " and its description, never its mark.
   pagetoosmall  a 40 x 25 PEF on the default 27 x 24 profile: Ctrl+P reads the
           question with both sizes and the focused Stop button, Tab reads
           Reflow, Escape stops and says nothing was embossed.
@@ -296,6 +298,29 @@ def scenario_structure(tactus, sample, work):
         s.step("typing the note's text", type_text="Cirrus.", allow_silent=True, quiet=0.8)
         s.step("Up says the paragraph with its reference", keys=["Up"], expect=[r"Write what you see"])
         s.step("Down says the note and its text", keys=["Down"], expect=[r"Note", r"Cirrus"])
+        print(s.summary())
+    return 0
+
+
+def scenario_pictures(tactus, sample, work):
+    # A Markdown file with a picture beside it (tests/data/import/constructs/red.png).
+    here = os.path.dirname(os.path.abspath(__file__))
+    picture = os.path.join(here, "..", "data", "import", "constructs", "red.png")
+    with open(picture, "rb") as f, open(os.path.join(work, "red.png"), "wb") as out:
+        out.write(f.read())
+    doc = os.path.join(work, "pictures.md")
+    with open(doc, "w", encoding="utf-8") as f:
+        f.write("# Colours\n\nThis is red:\n\n![A red square](red.png)\n\nThe end.\n")
+    s = OrcaSession("tactus", work)
+    with s:
+        s.start()
+        s.launch([tactus, "--no-recovery", doc])
+        s.step("Ctrl+Home goes to the first line", keys=["ctrl+Home"], allow_silent=True, quiet=0.8)
+        s.step("Down reads body text", keys=["Down"], expect=[r"This is red"], forbid=[r"Picture"])
+        # The picture shows no text: its description is said, never its mark.
+        s.step("Down to the picture says its description", keys=["Down"], expect=[r"Picture: A red square"],
+               forbid=[r"red\.png", r"!\[", r"OBJ", r"[Oo]bject"])
+        s.step("Down reads the text after it", keys=["Down"], expect=[r"The end"])
         print(s.summary())
     return 0
 
@@ -619,7 +644,8 @@ def scenario_book(tactus, sample, work):
 
 
 SCENARIOS = {"book": scenario_book, "graphic": scenario_graphic, "braille_words": scenario_braille_words, "profile_error": scenario_profile_error, "select_typing": scenario_select_typing, "controls": scenario_controls, "corners": scenario_corners, "corners_zh": scenario_corners_zh, "open": scenario_open, "emboss": scenario_emboss, "focus": scenario_focus, "fault": scenario_fault,
-             "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall}
+             "formfeed": scenario_formfeed, "structure": scenario_structure, "pagetoosmall": scenario_pagetoosmall,
+             "pictures": scenario_pictures}
 
 
 def main():

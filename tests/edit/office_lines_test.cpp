@@ -195,6 +195,53 @@ TEST(OfficeLines, RealOfficeFilesComeBackFromTheEditorLines) {
     EXPECT_GE(files, 40);
 }
 
+// Pictures through the editor: every real DOCX and ODT opened with its
+// pictures (as the app opens it) is lines with a picture's mark where each
+// described picture stood, and the document the lines stand for has the same
+// pictures (bytes and type), each after the same description, on the same
+// blocks; an edit of another line keeps them.
+TEST(OfficeLines, RealOfficeFilesKeepTheirPicturesThroughTheEditorLines) {
+    const auto pictures = [](const document::Document& d) {
+        std::ostringstream o;
+        for (const auto& b : d.blocks) {
+            if (b.images.empty()) continue;
+            o << b.text() << ":";
+            std::size_t next = 0;
+            for (const auto& s : b.spans)
+                if (s.transcriber_note && next < b.images.size()) {
+                    const auto& image = b.images[next++];
+                    o << " [" << s.text << " " << image.media_type << " " << std::hash<std::string>{}(image.bytes) << "]";
+                }
+            for (; next < b.images.size(); ++next) o << " [undescribed " << b.images[next].bytes.size() << "]";
+            o << "\n";
+        }
+        return o.str();
+    };
+    import::ImportOptions options;
+    options.images = true;
+    options.picture_marks = true;
+    int files = 0, with_pictures = 0;
+    for (const auto& path : test::real_office_files(office_lines::data)) {
+        auto doc = import::import_file(path, options);
+        if (!doc) continue;
+        ++files;
+        SCOPED_TRACE(path.filename().string());
+        auto layout = edit::LiveLayout::create("en-ueb-g1.ctb", {});
+        ASSERT_TRUE(layout);
+        layout->reset(*doc);
+        const auto expected = pictures(*doc);
+        if (!expected.empty()) ++with_pictures;
+        EXPECT_EQ(pictures(layout->document()), expected);
+        EXPECT_TRUE(layout->document().warnings.empty());
+        // The lines show marks, never the bytes; a line added at the top keeps the pictures.
+        for (std::size_t i = 0; i < layout->line_count(); ++i) EXPECT_LT(layout->line(i).size(), 4096u);
+        layout->replace(0, 0, {"An edit above."});
+        EXPECT_EQ(pictures(layout->document()), expected);
+    }
+    EXPECT_GE(files, 40);
+    EXPECT_GE(with_pictures, 4);  // inline_images, image_vml, image.odt, textbox_image, ...
+}
+
 // The lines themselves: HTML a Markdown reader shows as such, and the
 // document they stand for is the one they were made from.
 TEST(OfficeLines, UnderlineRaisedTextLanguagesAndBoxesAreLines) {

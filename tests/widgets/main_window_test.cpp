@@ -3,6 +3,8 @@
 // status bar, tables, save/reopen, BRF/PEF export equal to the CLI's, bad input
 // that leaves the document alone, recent files, autosave and crash recovery.
 #include <QAccessible>
+#include <QCryptographicHash>
+#include <QSettings>
 #include <QJsonDocument>
 #include <QStandardPaths>
 #include <QJsonObject>
@@ -26,6 +28,7 @@
 #include "export/export.hpp"
 #include "gui_test_support.hpp"
 #include "import/import.hpp"
+#include "graphic/drawing_file.hpp"
 #include "pipeline/pipeline.hpp"
 #include "profile/page_geometry.hpp"
 #include "profile/profile_json.hpp"
@@ -642,69 +645,260 @@ private Q_SLOTS:
         }
     }
 
-    // A file whose pictures the editor does not hold (pandoc's inline_images:
-    // three pictures) is not saved over unasked: refused without someone to
-    // ask; asked, Cancel leaves its bytes, Replace writes the descriptions;
-    // Save As beside it asks nothing and leaves it whole.
-    void saving_over_pictures_is_asked_first() {
+private:
+    // A document's pictures as the file holds them: each picture's bytes and
+    // type with the description before it (its transcriber's note), in order.
+    static QStringList pictures_of(const QString& path) {
+        import::ImportOptions options;
+        options.images = true;
+        options.picture_marks = true;  // a Markdown image as the app reads it: its alt text its description
+        const auto doc = import::import_file(path.toStdString(), options);
+        if (!doc) return {QStringLiteral("unreadable")};
+        QStringList out;
+        for (const auto& b : doc->blocks) {
+            std::size_t next = 0;
+            for (const auto& s : b.spans)
+                if (s.transcriber_note && next < b.images.size()) {
+                    const auto& image = b.images[next++];
+                    out << QStringLiteral("%1 %2 bytes %3: %4")
+                               .arg(QString::fromStdString(image.media_type))
+                               .arg(image.bytes.size())
+                               .arg(QString::fromLatin1(QCryptographicHash::hash(QByteArray::fromStdString(image.bytes),
+                                                                                 QCryptographicHash::Sha1)
+                                                            .toHex()),
+                                    QString::fromStdString(s.text));
+                }
+            for (; next < b.images.size(); ++next) out << QStringLiteral("undescribed %1").arg(b.images[next].bytes.size());
+        }
+        return out;
+    }
+
+    static int picture_objects(const QTextDocument* doc) {
+        return static_cast<int>(doc->toPlainText().count(QChar::ObjectReplacementCharacter));
+    }
+
+private Q_SLOTS:
+    // The editor keeps a document's pictures (pandoc's inline_images: three
+    // in a DOCX; image.odt: one): shown as pictures, never as their marks;
+    // an edit, undo and redo keep them; Save over the file asks nothing and
+    // writes the same picture bytes with the same descriptions.
+    void pictures_are_kept_through_edit_and_save() {
         for (const auto* name : {"pandoc-inline_images.docx", "pandoc-image.odt"}) {
             const auto path = dir.filePath(QString::fromLatin1(name));
             QFile::remove(path);
             QVERIFY(QFile::copy(QStringLiteral(TACTUS_TEST_DATA "/import/public/") + QString::fromLatin1(name), path));
             QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
-            const auto bytes_of = [](const QString& p) {
-                QFile f(p);
-                return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-            };
-            const auto original = bytes_of(path);
+            const auto original = pictures_of(path);
+            QVERIFY(!original.isEmpty());
             MainWindow w;
             QVERIFY(w.open_file_now(path));
-            QTest::keyClicks(w.editor()->print_pane(), "x");
-            QVERIFY(!w.save_to(path));
-            QCOMPARE(bytes_of(path), original);
-            QVERIFY(w.isWindowModified());
-            auto said = w.announcer()->message();
-            QVERIFY2(said.contains(QStringLiteral("picture")) && said.contains(QString::fromLatin1(name)), qPrintable(said));
-
-            const auto beside = dir.filePath(QStringLiteral("beside-") + QString::fromLatin1(name));
-            QFile::remove(beside);
-            QVERIFY(w.save_to(beside));
-            QCOMPARE(bytes_of(path), original);
-
-            w.set_interactive(true);
-            w.show();
-            struct Seen {
-                bool asked = false;
-                QString name;
+            auto* print = w.editor()->print_pane();
+            QCOMPARE(picture_objects(print->document()), static_cast<int>(original.size()));
+            QVERIFY2(!print->document()->toPlainText().contains(QStringLiteral("![")), name);
+            const auto images = [&w] {
+                std::size_t n = 0;
+                for (const auto& b : w.editor()->layout().document().blocks) n += b.images.size();
+                return n;
             };
-            const auto answer = [](Seen& seen, bool replace) {
-                QTimer::singleShot(200, [&seen, replace] {
-                    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-                    if (!box) return;
-                    seen.asked = box->objectName() == QLatin1String("picturesQuestion");
-                    if (auto* a = QAccessible::queryAccessibleInterface(box)) seen.name = a->text(QAccessible::Name);
-                    (replace ? box->findChild<QPushButton*>(QStringLiteral("replacePicturesButton"))
-                             : box->button(QMessageBox::Cancel))
-                        ->click();
-                });
-            };
-            Seen cancel;
-            answer(cancel, false);
-            QVERIFY(!w.save_to(path));
-            QVERIFY(cancel.asked);
-            QCOMPARE(cancel.name, QStringLiteral("Saving would lose pictures"));
-            QCOMPARE(bytes_of(path), original);
-            Seen replace;
-            answer(replace, true);
-            QVERIFY(w.save_to(path));
-            QVERIFY(replace.asked);
-            QVERIFY(bytes_of(path) != original);
+            QCOMPARE(images(), static_cast<std::size_t>(original.size()));
+            // Edit the paragraph before the first picture, undo, redo.
+            QTextCursor c(print->document());
+            print->setTextCursor(c);
+            QTest::keyClicks(print, "Edited ");
+            QCOMPARE(images(), static_cast<std::size_t>(original.size()));
+            w.editor()->undo_stack()->undo();
+            QCOMPARE(images(), static_cast<std::size_t>(original.size()));
+            w.editor()->undo_stack()->redo();
+            QVERIFY(w.editor()->text().startsWith(QStringLiteral("Edited ")));
+            QVERIFY(w.save_to(path));  // not interactive: it would refuse if it had to ask
             QVERIFY(!w.isWindowModified());
-            // Nothing left to lose: the next save asks nothing.
-            w.set_interactive(false);
-            QTest::keyClicks(w.editor()->print_pane(), "y");
-            QVERIFY(w.save_to(path));
+            QCOMPARE(pictures_of(path), original);
+            MainWindow again;
+            QVERIFY(again.open_file_now(path));
+            QCOMPARE(picture_objects(again.editor()->print_pane()->document()), static_cast<int>(original.size()));
+            QVERIFY(again.editor()->text().startsWith(QStringLiteral("Edited ")));
+            // Saved as Markdown in a folder of its own: the pictures are files beside it.
+            const QString folder = dir.filePath(QStringLiteral("md-") + QString::fromLatin1(name));
+            QVERIFY(QDir().mkpath(folder));
+            const auto md = folder + QStringLiteral("/saved.md");
+            QVERIFY(again.save_to(md));
+            QVERIFY2(again.announcer()->message().contains(QStringLiteral("picture file")), qPrintable(again.announcer()->message()));
+            QVERIFY(!QDir(folder).entryList({QStringLiteral("picture1.*")}).isEmpty());
+            QCOMPARE(pictures_of(md), original);
         }
+    }
+
+    // Where pictures really are lost (a text file keeps descriptions only; a
+    // Markdown file has no picture files beside it) it asks first: refused
+    // without someone to ask; asked, Cancel saves nothing, the other button
+    // writes the descriptions.
+    void saving_pictures_where_they_are_lost_is_asked_first() {
+        const auto path = dir.filePath(QStringLiteral("lost-pictures.docx"));
+        QFile::remove(path);
+        QVERIFY(QFile::copy(QStringLiteral(TACTUS_TEST_DATA "/import/public/pandoc-inline_images.docx"), path));
+        QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        // A Markdown file where another file has a picture's name would name the wrong picture.
+        const QString taken = dir.filePath(QStringLiteral("taken"));
+        QVERIFY(QDir().mkpath(taken));
+        {
+            std::string first;  // the first picture's name, as its mark gives it
+            for (const auto& b : w.editor()->layout().document().blocks)
+                if (first.empty() && !b.images.empty()) first = b.images.front().name;
+            QVERIFY(!first.empty());
+            QFile other(taken + QLatin1Char('/') + QString::fromStdString(first));
+            QVERIFY(other.open(QIODevice::WriteOnly));
+            other.write("another picture");
+        }
+        for (const auto& to : {dir.filePath(QStringLiteral("lost-pictures.txt")), taken + QStringLiteral("/lost-pictures.md")}) {
+            const auto target = QFileInfo(to).fileName();
+            QFile::remove(to);
+            QVERIFY(!w.save_to(to));
+            QVERIFY(!QFile::exists(to));
+            const auto said = w.announcer()->message();
+            QVERIFY2(said.contains(QStringLiteral("picture")) && said.contains(target), qPrintable(said));
+        }
+        const auto text = dir.filePath(QStringLiteral("lost-pictures.txt"));
+        w.set_interactive(true);
+        w.show();
+        struct Seen {
+            bool asked = false;
+            QString name;
+        };
+        const auto answer = [](Seen& seen, bool go) {
+            QTimer::singleShot(200, [&seen, go] {
+                auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+                if (!box) return;
+                seen.asked = box->objectName() == QLatin1String("picturesQuestion");
+                if (auto* a = QAccessible::queryAccessibleInterface(box)) seen.name = a->text(QAccessible::Name);
+                (go ? box->findChild<QPushButton*>(QStringLiteral("replacePicturesButton")) : box->button(QMessageBox::Cancel))
+                    ->click();
+            });
+        };
+        Seen cancel;
+        answer(cancel, false);
+        QVERIFY(!w.save_to(text));
+        QVERIFY(cancel.asked);
+        QCOMPARE(cancel.name, QStringLiteral("Saving would lose pictures"));
+        QVERIFY(!QFile::exists(text));
+        Seen go;
+        answer(go, true);
+        QVERIFY(w.save_to(text));
+        QVERIFY(go.asked);
+        QVERIFY(QFile::exists(text));
+    }
+
+    // Insert > Graphic: the picture after the cursor's paragraph with its
+    // description, announced; one undo step takes it away, redo brings it
+    // back; saved as DOCX it is the file's bytes. No description, no picture.
+    void inserted_graphic_is_one_undo_step_and_saved() {
+        const auto path = dir.filePath(QStringLiteral("inserted.md"));
+        QFile::remove(path);
+        QVERIFY(QFile::copy(test::sample("welcome.md"), path));
+        QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        const auto picture = QStringLiteral(TACTUS_TEST_DATA "/graphics/shapes.svg");
+        QVERIFY(!w.insert_graphic(picture, QStringLiteral("  ")));
+        QVERIFY(w.announcer()->message().contains(QStringLiteral("description")));
+        const auto steps = w.editor()->undo_stack()->index();
+        QVERIFY(w.insert_graphic(picture, QStringLiteral("A circle, a square and a triangle")));
+        QVERIFY(w.announcer()->message().contains(QStringLiteral("A circle, a square and a triangle")));
+        QCOMPARE(w.editor()->undo_stack()->index(), steps + 1);
+        auto* print = w.editor()->print_pane();
+        QCOMPARE(picture_objects(print->document()), 1);
+        QVERIFY(!print->document()->toPlainText().contains(QStringLiteral("![")));
+        // The cursor's line says what the picture is, for the screen reader.
+        QVERIFY(w.editor()->structure_text(w.editor()->current_line()).contains(QStringLiteral("A circle")));
+        const auto images = [&w] {
+            std::vector<document::Image> out;
+            for (const auto& b : w.editor()->layout().document().blocks) out.insert(out.end(), b.images.begin(), b.images.end());
+            return out;
+        };
+        QFile svg(picture);
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        const auto bytes = svg.readAll().toStdString();
+        QCOMPARE(images().size(), std::size_t{1});
+        QVERIFY(images().front().bytes == bytes);
+        w.editor()->undo_stack()->undo();
+        QCOMPARE(images().size(), std::size_t{0});
+        QCOMPARE(picture_objects(print->document()), 0);
+        w.editor()->undo_stack()->redo();
+        QCOMPARE(images().size(), std::size_t{1});
+        // Saved as Markdown, the picture is a file beside it.
+        QVERIFY(w.save_to(path));
+        QCOMPARE(pictures_of(path).size(), 1);
+        QVERIFY(pictures_of(path).front().endsWith(QStringLiteral(": A circle, a square and a triangle")));
+        QFile beside(dir.filePath(QStringLiteral("shapes.svg")));
+        QVERIFY(beside.open(QIODevice::ReadOnly));
+        QVERIFY(beside.readAll().toStdString() == bytes);
+        const auto docx = dir.filePath(QStringLiteral("inserted.docx"));
+        QVERIFY(w.save_to(docx));
+        const auto saved = pictures_of(docx);
+        QCOMPARE(saved.size(), 1);
+        QVERIFY2(saved.front().startsWith(QStringLiteral("image/svg+xml %1 bytes").arg(bytes.size())) &&
+                     saved.front().endsWith(QStringLiteral(": A circle, a square and a triangle")),
+                 qPrintable(saved.front()));
+    }
+
+    // Emboss Pictures as Graphics: the preview's pages are the document's
+    // with each picture a graphic page, laid out by the core function the
+    // CLI's --images graphics calls; off, the editor's pages again. The
+    // choice is a setting kept for the next window.
+    void pictures_as_graphics_lay_out_as_the_cli() {
+        const auto path = dir.filePath(QStringLiteral("graphics.docx"));
+        QFile::remove(path);
+        QVERIFY(QFile::copy(QStringLiteral(TACTUS_TEST_DATA "/import/public/pandoc-inline_images.docx"), path));
+        MainWindow w;
+        QVERIFY(w.open_file_now(path));
+        const auto described = w.paged().pages.size();
+        const auto graphic_pages = [](const layout::PagedDocument& d) {
+            return std::count_if(d.pages.begin(), d.pages.end(), [](const layout::Page& p) { return !p.graphic.empty(); });
+        };
+        QCOMPARE(graphic_pages(w.paged()), 0);
+        w.set_picture_choice(PictureChoice::graphics);
+        // The CLI's way: the file imported with its pictures, each laid out by graphic::picture_pages.
+        import::ImportOptions io;
+        io.images = true;
+        const auto doc = import::import_file(path.toStdString(), io);
+        QVERIFY(doc);
+        pipeline::PipelineOptions o;
+        o.tables = w.editor()->layout().tables();
+        o.layout = w.editor()->layout().options();
+        auto table = translate::Translator::open(o.tables);
+        QVERIFY(table);
+        o.graphic_pages = graphic::picture_pages(std::make_shared<const translate::Translator>(std::move(*table)),
+                                                 w.profile_editor()->profile(), o.layout.geometry);
+        const auto cli = pipeline::lay_out(*doc, o);
+        QVERIFY(cli);
+        QVERIFY(graphic_pages(*cli) > 0);
+        QCOMPARE(w.paged().pages.size(), cli->pages.size());
+        QCOMPARE(graphic_pages(w.paged()), graphic_pages(*cli));
+        QVERIFY(w.paged().pages.size() > described);
+        // And what tactus-cli layout --images graphics says of the same file.
+        QProcess p;
+        p.start(QStringLiteral(TACTUS_CLI), {QStringLiteral("layout"), QStringLiteral("--images"), QStringLiteral("graphics"),
+                                             QStringLiteral("-t"), QString::fromStdString(o.tables),
+                                             QStringLiteral("--summary"), path});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        const auto summary = QString::fromUtf8(p.readAllStandardOutput());
+        const auto pages = QRegularExpression(QStringLiteral("pages: +(\\d+) braille pages")).match(summary);
+        const auto graphic = QRegularExpression(QStringLiteral("graphic: +(\\d+) dots on (\\d+) graphic page")).match(summary);
+        QVERIFY2(pages.hasMatch() && graphic.hasMatch(), qPrintable(summary));
+        std::size_t dots = 0;
+        for (const auto& page : w.paged().pages) dots += page.graphic.size();
+        QCOMPARE(w.paged().pages.size(), pages.captured(1).toULongLong());
+        QCOMPARE(static_cast<qulonglong>(graphic_pages(w.paged())), graphic.captured(2).toULongLong());
+        QCOMPARE(static_cast<qulonglong>(dots), graphic.captured(1).toULongLong());
+        QCOMPARE(QSettings().value(QStringLiteral("layout/images")).toString(), QStringLiteral("graphics"));
+        {
+            MainWindow next;
+            QCOMPARE(next.picture_choice(), PictureChoice::graphics);
+        }
+        w.set_picture_choice(PictureChoice::descriptions);
+        QCOMPARE(w.paged().pages.size(), described);
     }
 
     // A save that cannot be written says which file and why (core's atomic
