@@ -144,6 +144,9 @@ protected:
     }
     void TearDown() override {
         line_.reset();
+#ifdef TACTUS_FIRMWARE_IHX
+        cli::close_emulated_lpt();  // the next case's chip powers up afresh
+#endif
         if (server_) {
             server_->signal(SIGCONT);
             server_->signal(SIGTERM);
