@@ -274,7 +274,7 @@ private:
         if (!s51) return device_error("cannot start s51: " + s51.error().what);
         s51_.emplace(std::move(*s51));
         cmd_.emplace(console_pty_->line(), [this] { return s51_->running(); });
-        if (auto r = cmd_->sync(); !r) return r;
+        if (auto r = cmd_->sync(); !r) return device_error(r.error().message + ": " + log_tail());
         changed_ = true;  // the host's idle lines on the pins before the chip boots
         if (auto r = exchange("", kBootSteps); !r) return std::unexpected(r.error());
         return {};
@@ -419,6 +419,15 @@ private:
     double wall_s_ = 0;
 };
 
+// "FROM:TO", seconds with 0 <= FROM < TO.
+std::optional<std::pair<double, double>> seconds_span(const std::string& v) {
+    const auto colon = v.find(':');
+    if (colon == std::string::npos) return std::nullopt;
+    const auto from = transport::option_number(v.substr(0, colon)), to = transport::option_number(v.substr(colon + 1));
+    if (!from || !to || *from < 0 || *to <= *from) return std::nullopt;
+    return std::pair{*from, *to};
+}
+
 // The host's end of the cable: the port closes it when it reopens (the
 // link's reconnect), and the chip behind it runs on.
 class CableEnd final : public transport::ParallelPortLines {
@@ -457,12 +466,8 @@ Result<std::unique_ptr<transport::ParallelPortLines>> open_emulated(const transp
             o.reload_s = *number;
         else if ((k == "hammer" || k == "reset") && number && *number >= 1 && *number == std::floor(*number))
             (k == "hammer" ? o.hammer_at_strike : o.reset_at_strike) = static_cast<std::size_t>(*number);
-        else if (k == "pull" && v.find(':') != std::string::npos &&
-                 transport::option_number(v.substr(0, v.find(':'))) && transport::option_number(v.substr(v.find(':') + 1)) &&
-                 *transport::option_number(v.substr(0, v.find(':'))) >= 0 &&
-                 *transport::option_number(v.substr(v.find(':') + 1)) > *transport::option_number(v.substr(0, v.find(':'))))
-            o.pull = std::pair{*transport::option_number(v.substr(0, v.find(':'))),
-                               *transport::option_number(v.substr(v.find(':') + 1))};
+        else if (const auto span = k == "pull" ? seconds_span(v) : std::nullopt)
+            o.pull = span;
         else
             return fail(ErrorKind::usage,
                         "unknown option \"" + k + "=" + v +
