@@ -3,15 +3,16 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <functional>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "command.hpp"
@@ -20,6 +21,8 @@
 #include "platform/channel.hpp"
 #include "platform/child_process.hpp"
 #include "platform/durable_file.hpp"
+#include "platform/program_file.hpp"
+#include "platform/sim_endpoint.hpp"
 #include "platform/termination.hpp"
 #include "profile/profile.hpp"
 #include "transport/device.hpp"
@@ -47,11 +50,28 @@ constexpr long kBootSteps = 200000;
 
 Result<void> device_error(const std::string& what) { return fail(ErrorKind::device, what, "lpt:emu"); }
 
-// One s51 console over TCP, its prompts NUL bytes (-P): a line out, the
-// answer up to the next prompt back.
+constexpr const char* kWakeLibrary = "tactus-s51-wake.so";
+
+// The library preloaded into s51: beside the program (tactus-cli), else where
+// the build made it.
+std::optional<fs::path> wake_library() {
+    if (const auto self = platform::program_file()) {
+        const auto beside = self->parent_path() / kWakeLibrary;
+        if (fs::is_regular_file(beside)) return beside;
+    }
+#ifdef TACTUS_S51_WAKE
+    if (fs::is_regular_file(TACTUS_S51_WAKE)) return fs::path(TACTUS_S51_WAKE);
+#endif
+    return std::nullopt;
+}
+
+// s51's console on a pseudo-terminal (-c), its prompts NUL bytes (-P): a
+// line out, the answer up to the next prompt back.
 class Console {
 public:
-    explicit Console(platform::Channel c) : ch_(std::move(c)) {}
+    // `alive`: whether s51 still runs (the pseudo-terminal's other side is
+    // held open here, so its end shows as no answer, not as an end of file).
+    Console(platform::Channel& c, std::function<bool()> alive) : ch_(c), alive_(std::move(alive)) {}
     Result<std::string> command(const std::string& line) {
         const std::string out = line + "\n";
         std::span<const std::uint8_t> left(reinterpret_cast<const std::uint8_t*>(out.data()), out.size());
@@ -69,6 +89,13 @@ public:
                 buf_.erase(0, z + 1);
                 return out;
             }
+            platform::Channel* const chs[] = {&ch_};
+            auto ready = platform::wait_readable(chs, std::chrono::seconds(1));
+            if (!ready) return fail(ErrorKind::device, "s51's console: " + ready.error().what, "lpt:emu");
+            if (!(*ready)[0]) {
+                if (!alive_()) return fail(ErrorKind::device, "s51 closed its console", "lpt:emu");
+                continue;
+            }
             std::array<std::uint8_t, 4096> chunk{};
             auto n = ch_.read_some(chunk);
             if (!n || *n == 0) return fail(ErrorKind::device, "s51 closed its console", "lpt:emu");
@@ -82,10 +109,9 @@ public:
         if (!out) return std::unexpected(out.error());
         return {};
     }
-    platform::Channel& channel() { return ch_; }
-
 private:
-    platform::Channel ch_;
+    platform::Channel& ch_;
+    std::function<bool()> alive_;
     std::string buf_;
 };
 
@@ -108,28 +134,37 @@ struct EmuOptions {
     // With paper_out: the operator loads paper this long (chip time) after
     // the host's side first shows PError in compatibility mode.
     std::optional<double> reload_s;
+    // The hammer-home sensor (P3.7) reads low from the Nth strike read from
+    // the pins on: a hammer stuck down (0: never).
+    std::size_t hammer_at_strike = 0;
+    // A warm reset (RST: the SFRs cleared, RAM kept) just after the Nth
+    // strike, from an s51 breakpoint on the firmware's strike-fired label.
+    std::size_t reset_at_strike = 0;
+    // The cable out over [first, second) seconds of chip time: the chip runs
+    // on, its input pins float high, the host reads every status line high.
+    std::optional<std::pair<double, double>> pull;
 };
 
 class EmulatedLptLines final : public transport::ParallelPortLines {
 public:
-    static Result<std::unique_ptr<transport::ParallelPortLines>> open(const EmuOptions& o) {
-        std::unique_ptr<EmulatedLptLines> l(new EmulatedLptLines(o));
+    static Result<std::shared_ptr<EmulatedLptLines>> open(const EmuOptions& o) {
+        std::shared_ptr<EmulatedLptLines> l(new EmulatedLptLines(o));
         try {
             if (auto r = l->start(); !r) return std::unexpected(r.error());
         } catch (const CommandFailed& e) {
             return fail(ErrorKind::usage, e.what(), "lpt:emu");
         }
-        return std::unique_ptr<transport::ParallelPortLines>(std::move(l));
+        return l;
     }
     ~EmulatedLptLines() override {
-        stop_.store(true);
-        s51_.reset();  // the consoles close: the helper threads see their end
-        if (feeder_.joinable()) feeder_.join();
-        if (drainer_.joinable()) drainer_.join();
+        if (hammer_stuck_) say_condition();
+        cmd_.reset();
+        s51_.reset();
         drain_trace();
         if (std::getenv("TACTUS_LPT_EMU_STATS"))
-            std::fprintf(stderr, "lpt:emu: %ld console lines, %.2f ms a line, %.3f s simulated, %ld instructions\n",
-                         lines_, lines_ ? wall_s_ * 1000 / static_cast<double>(lines_) : 0.0, clock_s_, instructions_);
+            std::fprintf(stderr, "lpt:emu: %ld console lines, %.2f ms a line, %.3f s simulated, %ld instructions, %ld status reads with the cable out\n",
+                         lines_, lines_ ? wall_s_ * 1000 / static_cast<double>(lines_) : 0.0, clock_s_, instructions_,
+                         reads_while_pulled_);
         std::error_code ec;
         if (!dir_.empty() && !std::getenv("TACTUS_KEEP_EMULATOR_DIR")) fs::remove_all(dir_, ec);
     }
@@ -152,7 +187,12 @@ public:
         if (!out) return std::unexpected(out.error());
         const auto p2 = sfr_value(*out, "P2:"), p3 = sfr_value(*out, "P3:");
         if (!p2 || !p3) return fail(ErrorKind::device, "s51 did not show the port latches: " + out->substr(0, 200), "lpt:emu");
+        if (cable_out_) {
+            ++reads_while_pulled_;
+            return LptStatus{.n_ack = true, .busy = true, .paper_error = true, .select = true, .n_fault = true};
+        }
         operator_loads_paper(((*p2 >> 2) & 1U) != 0);
+
         return LptStatus{.n_ack = ((*p3 >> 5) & 1U) != 0,
                          .busy = ((*p2 >> 3) & 1U) != 0,
                          .paper_error = ((*p2 >> 2) & 1U) != 0,
@@ -192,7 +232,7 @@ private:
             log_.open(o_.log, std::ios::app);
             if (!log_) return fail(ErrorKind::usage, o_.log + ": cannot write the strike log", "lpt:emu");
         }
-        platform::ignore_broken_pipe();  // s51 may end while the feeder writes
+        platform::ignore_broken_pipe();  // s51 may end while a line is written
         auto dir = platform::make_private_dir("tactus-lpt-s51");
         if (!dir) return device_error("cannot make a temporary folder");
         dir_ = *dir;
@@ -205,63 +245,50 @@ private:
                  << "set hw vcd[0] add iram 0x" << std::hex << sheet_at << "\n"
                  << "set hw vcd[0] add iram 0x" << sheet_at + 1 << std::dec << "\n"
                  << "set hw vcd[0] start\n";
+            if (o_.reset_at_strike > 0) {
+                // Its Nth hit stops the chip just after the Nth strike (the
+                // head at rest), removes itself and resets: the step it ended
+                // says "Breakpoint" (exchange()).
+                const unsigned fired = firmware_map_symbol(fs::path(o_.ihx).replace_extension(".map"), "_fw_strike_fired");
+                cmds << "break 0x" << std::hex << fired << std::dec << " " << o_.reset_at_strike << "\n"
+                     << "commands 1 delete 1 ; reset\n";
+            }
         }
-        auto port = platform::unused_loopback_port();
-        if (!port) return device_error("no free TCP port for s51's console: " + port.error().what);
-        auto s51 = platform::ChildProcess::spawn({.args = {"s51", "-t", "C52", "-X", "11.0592M", "-b", "-P", "-Z",
-                                                           std::to_string(*port), "-C", "cmds"},
-                                                  .dir = dir_,
-                                                  .log = dir_ / "s51.log",
-                                                  .idle_input = true,
-                                                  .lower_priority = true});
+        // The console on a pseudo-terminal: no TCP segments to wait for, one
+        // read a line. s51 naps 100 ms whenever it finds no command waiting
+        // while the chip is stopped, and in lockstep nearly every line waits
+        // for a nap; the wake library turns the nap into a wait for the next
+        // line (firmware/tools/s51_wake.c, bench/firmware/lpt-bridge.md).
+        auto pty = platform::SimEndpoint::open(false);
+        if (!pty) return device_error("no pseudo-terminal for s51's console: " + pty.error().what);
+        console_pty_.emplace(std::move(*pty));
+        std::vector<std::string> args{"s51", "-t", "C52", "-X", "11.0592M", "-b", "-P",
+                                      "-c", console_pty_->path(), "-C", "cmds"};
+        if (const auto wake = wake_library())
+            args.insert(args.begin(), {"env", "LD_PRELOAD=" + wake->string()});
+        else
+            std::fprintf(stderr, "lpt:emu: %s is not beside the program: s51 naps 100 ms on every console line\n",
+                         kWakeLibrary);
+        auto s51 = platform::ChildProcess::spawn(
+            {.args = args, .dir = dir_, .log = dir_ / "s51.log", .idle_input = true, .lower_priority = true});
         if (!s51) return device_error("cannot start s51: " + s51.error().what);
         s51_.emplace(std::move(*s51));
-        auto a = connect(*port);
-        if (!a) return std::unexpected(a.error());
-        cmd_.emplace(std::move(*a));
-        if (auto r = cmd_->sync(); !r) return r;
-        auto b = connect(*port);
-        if (!b) return std::unexpected(b.error());
-        busy_.emplace(std::move(*b));
-        if (auto r = busy_->sync(); !r) return r;
-        // s51 naps 100 ms whenever it finds no command waiting while the chip
-        // is stopped; a second console kept full of no-ops keeps it awake, so
-        // each lockstep line costs what s51 takes to do it. Kept full: a few
-        // no-ops refilled as they are answered run dry between the host's
-        // lines and s51 naps again (bench/firmware/lpt-bridge.md). One thread
-        // writes, one reads, so neither side ever blocks the other.
-        feeder_ = std::thread([this] {
-            std::string batch;
-            for (int i = 0; i < 64; ++i) batch += "echo\n";
-            const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(batch.data()), batch.size());
-            while (!stop_.load()) {
-                auto n = busy_->channel().write_some(bytes);
-                if (!n || *n == 0) return;
-            }
-        });
-        drainer_ = std::thread([this] {
-            std::array<std::uint8_t, 4096> chunk{};
-            while (!stop_.load()) {
-                auto n = busy_->channel().read_some(chunk);
-                if (!n || *n == 0) return;
-            }
-        });
+        cmd_.emplace(console_pty_->line(), [this] { return s51_->running(); });
+        if (auto r = cmd_->sync(); !r) return device_error(r.error().message + ": " + log_tail());
         changed_ = true;  // the host's idle lines on the pins before the chip boots
         if (auto r = exchange("", kBootSteps); !r) return std::unexpected(r.error());
         return {};
     }
 
-    Result<platform::Channel> connect(std::uint16_t port) {
-        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-        for (;;) {
-            auto c = platform::connect_loopback(port);
-            if (c) return std::move(*c);
-            if (!s51_->running()) return fail(ErrorKind::device, "s51 ended before it took its console: " + log_tail(), "lpt:emu");
-            if (std::chrono::steady_clock::now() > until)
-                return fail(ErrorKind::device, "s51 did not open its console on port " + std::to_string(port), "lpt:emu");
-            // s51 listens once it has loaded the image: nothing to wait on but the port.
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
+    // What the status lines show in compatibility mode once the host has left
+    // the chip alone (its last reply read): a stuck hammer's fault on nFault.
+    void say_condition() {
+        if (ctl_.n_select_in || !exchange("", kReactSteps * 10)) return;
+        const auto out = exchange("get sfr 0xa0", 10);
+        const auto p2 = out ? sfr_value(*out, "P2:") : std::nullopt;
+        if (p2)
+            std::fprintf(stderr, "lpt:emu: at the end nFault is %s, PError %s\n", (*p2 & 1U) ? "high" : "low (a fault stands)",
+                         (*p2 & 4U) ? "high" : "low");
     }
 
     // PError in compatibility mode is paper out (in nibble mode it is a data
@@ -287,10 +314,13 @@ private:
         if (!ctl_.n_auto_fd) p2 &= ~0x10U;
         if (!ctl_.n_select_in) p2 &= ~0x20U;
         if (!ctl_.n_strobe) p3 &= ~0x04U;
+        unsigned data = data_;
+        if (cable_out_) p2 = 0xFF, p3 = 0xFF, data = 0xFF;  // the host's lines gone: pulled up
         if (o_.paper_out) p3 &= ~0x40U;  // the paper sensor
+        if (hammer_stuck_) p3 &= ~0x80U;  // the hammer-home sensor: not back
         char b[160];
         std::snprintf(b, sizeof b, "set memory port_0_cfg 1 0x%02x;set memory port_2_cfg 1 0x%02x;set memory port_3_cfg 1 0x%02x",
-                      static_cast<unsigned>(data_), p2, p3);
+                      data, p2, p3);
         return b;
     }
 
@@ -298,6 +328,13 @@ private:
     // `steps` instructions (s51 does a line's other commands before its step).
     Result<std::string> exchange(const std::string& reads, long steps) {
         if (failed_) return std::unexpected(*failed_);
+        if (const bool out = o_.pull && clock_s_ >= o_.pull->first && clock_s_ < o_.pull->second; out != cable_out_) {
+            cable_out_ = out;
+            changed_ = true;
+            if (!out)
+                std::fprintf(stderr, "lpt:emu: the cable is back in (%.3f s) after %ld status reads with it out\n",
+                             clock_s_, reads_while_pulled_);
+        }
         std::string line;
         if (changed_) line = pins() + ";";
         changed_ = control_changed_ = false;
@@ -309,14 +346,21 @@ private:
         ++lines_;
         instructions_ += steps;
         if (!out) return remember(out.error());
-        const auto at = out->find("stepped ");
+        // A step that ran out says "stepped N ticks"; one the reset's
+        // breakpoint ended (it has reset the chip) "Simulated N ticks".
+        auto at = out->find("stepped ");
+        std::size_t skip = 8;
+        if (at == std::string::npos && out->find("Breakpoint") != std::string::npos) {
+            at = out->find("Simulated ");
+            skip = 10;
+        }
         if (at == std::string::npos) {
             const auto stop = out->find("Stop at");
             return remember(Error{"the emulated chip stopped by itself: " +
                                       (stop == std::string::npos ? out->substr(0, 300) : out->substr(stop, 200)),
                                   "lpt:emu", ErrorKind::device});
         }
-        clock_s_ += static_cast<double>(std::strtoull(out->c_str() + at + 8, nullptr, 10)) / kXtalHz;
+        clock_s_ += static_cast<double>(std::strtoull(out->c_str() + at + skip, nullptr, 10)) / kXtalHz;
         drain_trace();
         return out;
     }
@@ -341,17 +385,22 @@ private:
                 failed_ = r.error();
                 break;
             }
-            for (const auto& s : strikes) write_strike_json(log_, s);
+            for (const auto& s : strikes) {
+                write_strike_json(log_, s);
+                if (++strikes_ == o_.hammer_at_strike) {
+                    hammer_stuck_ = true;
+                    changed_ = true;
+                }
+            }
         }
         vcd_.clear();  // at its end for now: the emulator appends more
     }
 
     EmuOptions o_;
     fs::path dir_, vcd_path_;
+    std::optional<platform::SimEndpoint> console_pty_;
     std::optional<platform::ChildProcess> s51_;
-    std::optional<Console> cmd_, busy_;
-    std::thread feeder_, drainer_;
-    std::atomic<bool> stop_{false};
+    std::optional<Console> cmd_;
     std::optional<controller::FirmwareTrace> trace_;
     std::ifstream vcd_;
     std::ofstream log_;
@@ -363,27 +412,83 @@ private:
     long steps_ = kReactSteps;
     double clock_s_ = 0;
     std::optional<double> perror_seen_s_;
-    long lines_ = 0, instructions_ = 0;  // for TACTUS_LPT_EMU_STATS
+    bool cable_out_ = false;
+    bool hammer_stuck_ = false;
+    std::size_t strikes_ = 0;
+    long lines_ = 0, instructions_ = 0, reads_while_pulled_ = 0;  // for TACTUS_LPT_EMU_STATS
     double wall_s_ = 0;
 };
 
+// "FROM:TO", seconds with 0 <= FROM < TO.
+std::optional<std::pair<double, double>> seconds_span(const std::string& v) {
+    const auto colon = v.find(':');
+    if (colon == std::string::npos) return std::nullopt;
+    const auto from = transport::option_number(v.substr(0, colon)), to = transport::option_number(v.substr(colon + 1));
+    if (!from || !to || *from < 0 || *to <= *from) return std::nullopt;
+    return std::pair{*from, *to};
+}
+
+// The host's end of the cable: the port closes it when it reopens (the
+// link's reconnect), and the chip behind it runs on.
+class CableEnd final : public transport::ParallelPortLines {
+public:
+    explicit CableEnd(std::shared_ptr<EmulatedLptLines> chip) : chip_(std::move(chip)) {}
+    Result<void> write_data(std::uint8_t v) override { return chip_->write_data(v); }
+    Result<void> write_control(const LptControl& c) override { return chip_->write_control(c); }
+    Result<LptStatus> read_status() override { return chip_->read_status(); }
+    void settle() override { chip_->settle(); }
+    [[nodiscard]] std::optional<double> clock() const override { return chip_->clock(); }
+    bool run_for(std::chrono::microseconds d) override { return chip_->run_for(d); }
+
+private:
+    std::shared_ptr<EmulatedLptLines> chip_;
+};
+
+// One chip per device string for the life of the program: opening the same
+// string again (a reconnect) finds the chip where the cable left it, running,
+// its RAM and job intact, as a cable put back would.
+std::map<std::string, std::shared_ptr<EmulatedLptLines>>& chips() {
+    static std::map<std::string, std::shared_ptr<EmulatedLptLines>> all;
+    return all;
+}
+
 Result<std::unique_ptr<transport::ParallelPortLines>> open_emulated(const transport::DeviceSpec& spec) {
     EmuOptions o;
+    std::string key = spec.path;
     for (const auto& [k, v] : spec.options) {
+        const auto number = transport::option_number(v);
+        key += "&" + k + "=" + v;
         if (k == "fw") o.ihx = v;
         else if (k == "log") o.log = v;
         else if (k == "trace") o.trace = v;
         else if (k == "paper" && (v == "out" || v == "in")) o.paper_out = v == "out";
-        else if (k == "reload" && transport::option_number(v) && *transport::option_number(v) >= 0)
-            o.reload_s = *transport::option_number(v);
+        else if (k == "reload" && number && *number >= 0)
+            o.reload_s = *number;
+        else if ((k == "hammer" || k == "reset") && number && *number >= 1 && *number == std::floor(*number))
+            (k == "hammer" ? o.hammer_at_strike : o.reset_at_strike) = static_cast<std::size_t>(*number);
+        else if (const auto span = k == "pull" ? seconds_span(v) : std::nullopt)
+            o.pull = span;
         else
-            return fail(ErrorKind::usage, "unknown option \"" + k + "=" + v + "\" (lpt:emu takes fw=, log=, trace=, paper=in|out, reload=SECONDS)",
+            return fail(ErrorKind::usage,
+                        "unknown option \"" + k + "=" + v +
+                            "\" (lpt:emu takes fw=, log=, trace=, paper=in|out, reload=SECONDS, hammer=N, reset=N, pull=FROM:TO)",
                         "lpt:emu");
     }
-    return EmulatedLptLines::open(o);
+    auto& chip = chips()[key];
+    if (!chip) {
+        auto c = EmulatedLptLines::open(o);
+        if (!c) {
+            chips().erase(key);
+            return std::unexpected(c.error());
+        }
+        chip = *c;
+    }
+    return std::make_unique<CableEnd>(chip);
 }
 
 }  // namespace
+
+void close_emulated_lpt() { chips().clear(); }
 
 void register_emulated_lpt() {
     transport::LptTimings t;

@@ -3,12 +3,18 @@
 """What one command on s51's console costs, the simulation stopped: the way
 into the chip's pins that the parallel-port bridge has (bench/firmware/lpt-bridge.md).
 
-    bench/firmware/lpt_console_latency.py build/default/firmware-emu/tactus-fw.ihx
+    bench/firmware/lpt_console_latency.py build/default/firmware-emu/tactus-fw.ihx \
+        [build/default/app/tactus-s51-wake.so]
 
 Modes: the console on a pty (-c), on TCP (-Z), and on TCP with a second
 console kept busy with no-op commands, so s51 never finds its input empty
-and never takes its 100 ms nap. Each prints the mean and worst round trip of
-a lockstep line (the host's lines set, the status read, a short step).
+and never takes its 100 ms nap. With the wake library (firmware/tools/s51_wake.c,
+preloaded: the nap becomes a wait for the next line) also the pty and the
+TCP console with it, TCP acknowledging each answer at once (TCP_QUICKACK:
+s51 writes its answer a byte at a time, and Nagle's rule held the rest of it
+for the host's delayed acknowledgement). Each prints the mean and worst round
+trip of a lockstep line (the host's lines set, the status read, a short step)
+and the CPU time s51 spent a line.
 """
 import os
 import pty
@@ -41,11 +47,19 @@ class Console:
         return out
 
 
-def start(ihx, args):
+def start(ihx, args, wake=None):
     d = tempfile.mkdtemp(prefix="tactus-lat-")
+    env = dict(os.environ)
+    if wake:
+        env["LD_PRELOAD"] = wake
     return subprocess.Popen(["s51", "-t", "C52", "-X", "11.0592M", "-b", "-P"] + args + [ihx],
                             stdin=subprocess.DEVNULL, stdout=open(os.path.join(d, "s51.log"), "w"),
-                            stderr=subprocess.STDOUT, cwd=d)
+                            stderr=subprocess.STDOUT, cwd=d, env=env)
+
+
+def cpu_seconds(pid):
+    f = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
+    return (int(f[11]) + int(f[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def tcp(port):
@@ -62,14 +76,15 @@ def tcp(port):
 def measure(name, con, s51):
     con.prompt()
     time.sleep(2.5)  # s51 never naps in its first two seconds: measure past them
-    worst, t0 = 0.0, time.monotonic()
+    worst, t0, c0 = 0.0, time.monotonic(), cpu_seconds(s51.pid)
     for _ in range(N):
         t = time.monotonic()
         con.wr(LINE)
         con.prompt()
         worst = max(worst, time.monotonic() - t)
     mean = (time.monotonic() - t0) / N
-    print(f"{name:44s} {mean * 1000:7.1f} ms mean {worst * 1000:7.1f} ms worst")
+    cpu = (cpu_seconds(s51.pid) - c0) / N
+    print(f"{name:44s} {mean * 1000:7.2f} ms mean {worst * 1000:7.1f} ms worst {cpu * 1000:6.2f} ms s51 CPU")
     s51.kill()
     s51.wait()
 
@@ -106,6 +121,22 @@ def main():
     threading.Thread(target=keep_busy, daemon=True).start()
     measure("TCP console, a second one kept busy", Console(lambda: a.recv(65536), a.sendall), s51)
     done = True
+    if len(sys.argv) < 3:
+        return
+    wake = os.path.abspath(sys.argv[2])
+    m, s = pty.openpty()
+    tty.setraw(s)
+    s51 = start(ihx, ["-c", os.ttyname(s)], wake)
+    measure("pty console, wake library", Console(lambda: os.read(m, 65536), lambda b: os.write(m, b)), s51)
+    port += 1
+    s51 = start(ihx, ["-Z", str(port)], wake)
+    c = tcp(port)
+
+    def quick_recv():
+        chunk = c.recv(65536)
+        c.setsockopt(socket.IPPROTO_TCP, socket.TCP_QUICKACK, 1)
+        return chunk
+    measure("TCP console, wake library, quick ACKs", Console(quick_recv, c.sendall), s51)
 
 
 if __name__ == "__main__":

@@ -60,6 +60,16 @@ void LptPeripheral::tick() {
             show_condition();
             return;
         case Mode::negotiating:
+            if (!ctl_.n_select_in) {
+                // The host gave the negotiation up (its handshake timed out,
+                // it reopened the port): compatibility mode again, nAck high.
+                // Waiting on for its strobe answered no later negotiation.
+                mode_ = Mode::compat;
+                st_.n_ack = true;
+                st_.busy = false;
+                show_condition();
+                return;
+            }
             if (!ctl_.n_strobe) saw_strobe_low_ = true;
             if (saw_strobe_low_ && ctl_.n_strobe && ctl_.n_auto_fd) {  // events 3-4 seen
                 // Events 5-6: nibble mode (request 0x00) accepted, XFlag low,

@@ -111,6 +111,13 @@ void lpt_poll(void) {
         return;
     }
     if (m == LM_NEGOTIATING) {
+        /* A host that gives the negotiation up (its handshake timed out, it
+         * reopened the port) drops 1284 Active without the strobe: back to
+         * compatibility mode, nAck high again. Waiting here for the strobe
+         * held the chip in the negotiation for good: the host's next bytes
+         * came in, but no later negotiation was answered (a warm reset
+         * while the host read a reply, lpt:emu?reset=N). */
+        if (!LPT_ACTIVE) goto compat;
         /* Events 3-4 seen: the strobe fell and rose, HostBusy is high. */
         if (lpt_strobe && LPT_STROBE && LPT_HOSTBUSY) goto avail;
         return;
@@ -146,6 +153,8 @@ void lpt_poll(void) {
          * already be negotiating again (1284 Active high, HostBusy low): the
          * event has no answer from this side, and a poll can miss it. */
         if (!LPT_HOSTBUSY && !LPT_ACTIVE) return;
+    compat:
+        LPT_ACK = 1;
         lpt_mode = LM_COMPAT;
         LPT_BUSY = 0; /* not LINES(0, ...): SDCC writes P2 |= 0 as MOV P2,P2,
                        * which copies the pins (the host's inputs, low) into

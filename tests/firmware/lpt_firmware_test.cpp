@@ -239,6 +239,28 @@ TEST_P(LptBothSides, StatusLinesCarryTheCondition) {
     EXPECT_TRUE(c->online);
 }
 
+// A host that gives a negotiation up (its handshake timed out, it reopened
+// the port) drops 1284 Active without the strobe of event 3: the controller
+// goes back to compatibility mode, nAck high, takes bytes and answers the
+// next negotiation. Both sides waited for that strobe for good before: the
+// host's bytes still came in, but no later read was answered (a warm reset
+// while the host read a reply over lpt:emu, FirmwareOverLpt).
+TEST_P(LptBothSides, ANegotiationTheHostGivesUpLeavesTheNextOneAnswered) {
+    side_->set_data(0x00);  // event 0: nibble mode requested, 1284 Active, HostBusy low
+    side_->set_control(LptControl{.n_strobe = true, .n_auto_fd = false, .n_init = true, .n_select_in = true});
+    side_->tick();
+    EXPECT_FALSE(side_->status().n_ack);  // event 2
+    ASSERT_TRUE(port_->reopen());        // the idle lines: 1284 inactive, no strobe
+    side_->tick();
+    EXPECT_TRUE(side_->status().n_ack);
+    const std::vector<std::uint8_t> bytes{0x7E, 0x01, 0x02};
+    ASSERT_TRUE(port_->write(bytes));
+    side_->tick();
+    EXPECT_EQ(side_->take_received(), bytes);
+    side_->send({0x55, 0xAA});
+    EXPECT_EQ(read_all(2), (std::vector<std::uint8_t>{0x55, 0xAA}));
+}
+
 INSTANTIATE_TEST_SUITE_P(Sides, LptBothSides, ::testing::Values(Impl::model, Impl::firmware),
                          [](const auto& p) { return std::string(p.param == Impl::model ? "Model" : "Firmware"); });
 

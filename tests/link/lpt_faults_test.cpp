@@ -145,8 +145,8 @@ TEST(LptFaults, AWarmResetMidPassResumesAtTheExactStrike) {
 // A real one-page document nobody here wrote (pandoc's test/docx
 // block_quotes.docx: 57 passes, 729 strikes), laid out, translated and
 // planned by the pipeline, embossed through the parallel port: every dot of
-// the plan struck once, in order. (Through the firmware in s51 a page would
-// take most of an hour; FirmwareOverLpt embosses a laid-out word there.)
+// the plan struck once, in order. (The same page through the firmware's pins
+// in s51: FirmwareOverLpt.AOnePageDocumentStrikesThePlanDotForDot.)
 TEST(LptDocument, AOnePageDocumentIsEmbossedDotForDot) {
     auto rig = make_rig(1, 1, 1, 1);
     rig.plan = test::plan_with_firmware_tables(std::string(TACTUS_TEST_DATA) + "/import/public/pandoc-block_quotes.docx",
