@@ -252,7 +252,7 @@ void MainWindow::build_actions() {
                        [this] { export_dialog(QStringLiteral("pef")); });
     book_settings_ = make(tr("Boo&k Settings..."), QKeySequence(tr("Ctrl+Shift+K")), QStringLiteral("fileBookSettings"),
                           [this] { book_settings(); });
-    insert_graphic_ = make(tr("&Graphic..."), QKeySequence(tr("Ctrl+Alt+I")), QStringLiteral("insertGraphic"),
+    insert_graphic_ = make(tr("Gr&aphic..."), QKeySequence(tr("Ctrl+Alt+I")), QStringLiteral("insertGraphic"),
                            [this] { insert_graphic_dialog(); });
     pictures_as_graphics_ = make(tr("Emboss Pictures as &Graphics"), QKeySequence(tr("Ctrl+Shift+G")),
                                  QStringLiteral("filePicturesAsGraphics"), [this](bool on) {

@@ -882,11 +882,6 @@
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.cpp" line="255" />
-        <source>&amp;Graphic...</source>
-        <translation>圖形(&amp;G)...</translation>
-    </message>
-    <message>
         <location filename="../../widgets/main_window.cpp" line="359" />
         <source>Ctrl+Alt+G</source>
         <translation>Ctrl+Alt+G</translation>
@@ -900,6 +895,11 @@
         <location filename="../../widgets/main_window.cpp" line="255" />
         <source>Ctrl+Alt+I</source>
         <translation>Ctrl+Alt+I</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/main_window.cpp" line="255" />
+        <source>Gr&amp;aphic...</source>
+        <translation>圖形(&amp;A)...</translation>
     </message>
     <message>
         <location filename="../../widgets/main_window.cpp" line="257" />

@@ -408,7 +408,7 @@ T = {
     "Picture without a description": "沒有描述的圖片",
     "Picture: %1": "圖片：%1",
     "Picture": "圖片",
-    "&Graphic...": "圖形(&G)...",
+    "Gr&aphic...": "圖形(&A)...",
     "Emboss Pictures as &Graphics": "將圖片列印為觸覺圖形(&G)",
     "Pictures not embossed as graphics: %1": "圖片未列印為觸覺圖形：%1",
     "Pictures are embossed as graphics, each after its description": "圖片將列印為觸覺圖形，各接在其描述之後",
