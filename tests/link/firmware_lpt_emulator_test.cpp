@@ -136,9 +136,9 @@ TEST_F(FirmwareOverLpt, ACablePulledMidJobReconnectsAndStrikesEachDotOnce) {
 // A warm reset of the chip (s51's RST: SFRs cleared, RAM kept) just after the
 // 20th strike, in the middle of a pass, while the host polls for replies in
 // nibble mode: the host's transfer fails, it reopens the port, opens a new
-// session and resumes the pass skipping what was struck. Before the firmware
-// left a negotiation the host gave up, the chip stayed in it and never
-// answered again (the job gave up after 30 s, 20 strikes made).
+// session and resumes the pass skipping what was struck. This needs the
+// firmware to leave a negotiation the host gave up: a chip that stayed in it
+// would never answer again (the job would give up after 30 s, 20 strikes made).
 TEST_F(FirmwareOverLpt, AWarmResetMidPassResumesAtTheExactStrike) {
     const auto [r, log] = emboss_note("&reset=20");
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
