@@ -69,8 +69,13 @@ if [ "${1:-}" = --one ]; then
 fi
 
 # JOBS executables at a time (one Wine server runs them all), each reported
-# whole and in order once all have ended.
+# whole and in order once all have ended. The prefix is made first, alone:
+# two Wine processes that find no prefix both start making it, and one of
+# them fails ("chdir to /tmp/wine-.../server-...: No such file").
 start=$(date +%s)
+wineserver=$(command -v wineserver || { [ -x /usr/lib/wine/wineserver64 ] && echo /usr/lib/wine/wineserver64; } || true)
+"$wine" wineboot --init >/dev/null 2>&1 || true
+[ -z "$wineserver" ] || "$wineserver" -w
 for exe in "$@"; do rm -f "$exe.summary" "$exe.status"; done
 printf '%s\n' "$@" | xargs -P "${JOBS:-2}" -I{} "$0" --one {}
 status=0
