@@ -107,6 +107,9 @@ Result<void> start_programs(const document::Document& document, const translate:
         job.word_rooms.clear();
         for (const auto i : share_of(document.blocks.size(), w, workers, chunk)) {
             job.blocks.push_back(document.blocks[i]);
+            // Translation reads a picture's description, never its bytes
+            // (megabytes a picture): the worker is not sent them.
+            job.blocks.back().images.clear();
             job.word_rooms.push_back(word_room ? word_room(document.blocks[i]) : 0);
         }
         if (auto sent = started[w].send_input(serialize(job)); !sent)
